@@ -1,0 +1,70 @@
+#include "consistency.h"
+
+#include "driver.h"
+#include "mat3.h"
+#include "refattitude.h"
+#include "so3.h"
+
+#include <math.h>
+
+int suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double tk, double eps)
+{
+    ref->tk = tk;
+    ref->eps = eps;
+    suslov_exact_omega(ex, tk, ref->w_k);
+    suslov_exact_omega(ex, tk + eps, ref->w_exact);
+    ref->w_k[2] = ref->w_exact[2] = 0.0;
+    ref->lambda_exact = suslov_lagmult(ex->model, ref->w_exact);
+    return suslov_refatt_increment(ex, tk, tk + eps, ref->Phi);
+}
+
+int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *stepper,
+                        const suslov_local_ref *ref, suslov_local_err *err)
+{
+    double w_next[3], lambda, I3[3][3], R_next[3][3];
+    const int status = stepper->apply(m, ref->eps, ref->w_k, w_next, &lambda, &err->stats);
+    const double d[3] = {ref->w_exact[0] - w_next[0], ref->w_exact[1] - w_next[1],
+                         ref->w_exact[2] - w_next[2]};
+    err->w = vec3_norm(d);
+    err->lambda_signed = ref->lambda_exact - lambda;
+    err->lambda = fabs(err->lambda_signed);
+    mat3_identity(I3);
+    for (int r = SUSLOV_RECON_CAYLEY; r <= SUSLOV_RECON_CAYLEY_MID; r++) {
+        suslov_reconstruct((suslov_recon)r, ref->eps, I3, ref->w_k, w_next, R_next);
+        err->so3[r] = so3_dist(ref->Phi, R_next);
+    }
+    return status;
+}
+
+typedef struct {
+    suslov_row last;
+    double max_constraint, max_defect;
+} global_ctx;
+
+static int keep_last(void *vctx, const suslov_row *row)
+{
+    global_ctx *ctx = vctx;
+    ctx->last = *row;
+    ctx->max_constraint = fmax(ctx->max_constraint, fabs(row->w[2]));
+    ctx->max_defect = fmax(ctx->max_defect, so3_orth_defect(row->R));
+    return 0;
+}
+
+int suslov_global_errors(const suslov_exact *ex, const suslov_stepper_type *stepper,
+                         suslov_recon recon, double T, long N, const double R_ref[3][3],
+                         suslov_global_err *err)
+{
+    const suslov_run_config cfg = {ex->model, stepper, recon, T / (double)N, N, 1};
+    global_ctx ctx = {.max_constraint = 0.0, .max_defect = 0.0};
+    suslov_run_report report;
+    if (suslov_run(&cfg, ex->w0, keep_last, &ctx, &report) != 0)
+        return 1;
+    double w[2];
+    suslov_exact_omega(ex, T, w);
+    err->w = hypot(ctx.last.w[0] - w[0], ctx.last.w[1] - w[1]);
+    err->lambda = fabs(ctx.last.lambda - suslov_lagmult(ex->model, w));
+    err->so3 = so3_dist(R_ref, ctx.last.R);
+    err->max_constraint = ctx.max_constraint;
+    err->max_defect = ctx.max_defect;
+    return 0;
+}

@@ -1,0 +1,79 @@
+#include "exact.h"
+
+#include <math.h>
+
+void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[2])
+{
+    const double (*I)[3] = m->I;
+    ex->model = m;
+    ex->w0[0] = w0[0];
+    ex->w0[1] = w0[1];
+    ex->l11 = sqrt(I[0][0]);
+    ex->l21 = I[1][0] / ex->l11;
+    ex->l22 = sqrt(I[1][1] - ex->l21 * ex->l21);
+    const double u1 = ex->l11 * w0[0] + ex->l21 * w0[1], u2 = ex->l22 * w0[1];
+    const double v1 = m->b[0] / ex->l11, v2 = (m->b[1] - ex->l21 * v1) / ex->l22;
+    const double vn = hypot(v1, v2);
+    ex->r = hypot(u1, u2);
+    ex->fixed = 0;
+    ex->cb = 1.0;
+    ex->sb = 0.0;
+    ex->k = 0.0;
+    ex->sigma = 1.0;
+    ex->s0 = 0.0;
+    if (ex->r == 0.0 || vn == 0.0) {
+        ex->fixed = 1;
+        return;
+    }
+    ex->cb = v1 / vn;
+    ex->sb = v2 / vn;
+    const double C = (ex->cb * u1 + ex->sb * u2) / ex->r;
+    const double S = (ex->cb * u2 - ex->sb * u1) / ex->r;
+    if (C == 0.0) {  /* an equilibrium: c(w0) = 0 */
+        ex->fixed = 1;
+        return;
+    }
+    ex->k = ex->r * vn / (ex->l11 * ex->l22);
+    ex->sigma = C > 0.0 ? 1.0 : -1.0;
+    ex->s0 = asinh(S / C);
+}
+
+/* w = L^{-T} u with u = r R(beta) (cos psi, sin psi). */
+static void omega_from_psi(const suslov_exact *ex, double cp, double sp, double w[2])
+{
+    const double u1 = ex->r * (ex->cb * cp - ex->sb * sp);
+    const double u2 = ex->r * (ex->sb * cp + ex->cb * sp);
+    w[1] = u2 / ex->l22;
+    w[0] = (u1 - ex->l21 * w[1]) / ex->l11;
+}
+
+void suslov_exact_omega(const suslov_exact *ex, double t, double w[2])
+{
+    if (ex->fixed) {
+        w[0] = ex->w0[0];
+        w[1] = ex->w0[1];
+        return;
+    }
+    const double s = ex->s0 + ex->sigma * ex->k * t;
+    const double e = exp(-fabs(s));
+    const double sech = 2.0 * e / (1.0 + e * e);
+    omega_from_psi(ex, ex->sigma * sech, ex->sigma * tanh(s), w);
+}
+
+/* The steady rotation w(t -> infinity): psi = pi/2. */
+void suslov_exact_limit(const suslov_exact *ex, double w[2])
+{
+    if (ex->fixed) {
+        w[0] = ex->w0[0];
+        w[1] = ex->w0[1];
+        return;
+    }
+    omega_from_psi(ex, 0.0, 1.0, w);
+}
+
+double suslov_exact_lambda(const suslov_exact *ex, double t)
+{
+    double w[2];
+    suslov_exact_omega(ex, t, w);
+    return suslov_lagmult(ex->model, w);
+}

@@ -1,0 +1,39 @@
+/* Closed-form solution of (ContDyn), used as the reference for w(t) and lambda(t).
+ *
+ * Derivation. E = 1/2 <I_m w, w> is conserved, so w stays on an ellipse. Let I_m = L L^T
+ * (Cholesky, L lower triangular) and u = L^T w, so E = |u|^2 / 2 and |u| = r is constant.
+ * (ContDyn) reads I_m w' = c(w) J w with J = [[0,-1],[1,0]] and c(w) = I_3i w_i, hence
+ *     u' = c L^{-1} J L^{-T} u = c J u / det L,
+ * because A J A^T = det(A) J for any 2x2 A. So u turns on a circle of radius r with angular
+ * speed theta' = c / det L. Writing c = <L^{-1} b, u> = r |v| cos(theta - beta) with
+ * v = L^{-1} (I31, I32) = |v| (cos beta, sin beta), the angle psi = theta - beta obeys
+ *     psi' = k cos psi,   k = r |v| / det L.
+ * For cos psi0 > 0: gd^{-1}(psi) = s0 + k t with gd the Gudermannian, so
+ *     cos psi = sech s,  sin psi = tanh s,  s = asinh(tan psi0) + k t.
+ * For cos psi0 < 0 the same holds for psi - pi with k -> -k. Both branches give
+ *     (cos psi, sin psi) = sigma (sech s, tanh s),  s = asinh(S/C) + sigma k t,
+ * with (C, S) = (cos psi0, sin psi0) and sigma = sign C. Every motion with C != 0 tends to
+ * psi = pi/2: the steady rotation with c(w) = 0 reached at the rate k. Nothing here
+ * overflows for any t: sech is evaluated as 2 e^{-|s|} / (1 + e^{-2|s|}). */
+#ifndef SUSLOV_EXACT_H
+#define SUSLOV_EXACT_H
+
+#include "model.h"
+
+typedef struct {
+    const suslov_model *model;
+    double l11, l21, l22;  /* Cholesky factor of I_m */
+    double r;              /* |u| = sqrt(2E) */
+    double cb, sb;         /* (cos beta, sin beta) */
+    double k;              /* rate of approach to the steady rotation */
+    double sigma, s0;
+    int fixed;             /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0) */
+    double w0[2];
+} suslov_exact;
+
+void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[2]);
+void suslov_exact_omega(const suslov_exact *ex, double t, double w[2]);
+void suslov_exact_limit(const suslov_exact *ex, double w[2]);
+double suslov_exact_lambda(const suslov_exact *ex, double t);
+
+#endif

@@ -1,0 +1,88 @@
+#include "model.h"
+
+#include <math.h>
+#include <stdio.h>
+
+const double SUSLOV_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
+const double SUSLOV_PAPER_OMEGA0[2] = {0.4, 0.5};
+
+int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errlen)
+{
+    for (int i = 0; i < 9; i++) {
+        if (!isfinite(I[i])) {
+            snprintf(err, errlen, "inertia entry %d is not finite", i + 1);
+            return -1;
+        }
+        m->I[i / 3][i % 3] = I[i];
+    }
+    const double scale = fabs(I[0]) + fabs(I[1]) + fabs(I[3]) + fabs(I[4]);
+    /* I_m must be symmetric for E to be conserved by (ContDyn); allow only round-off. */
+    if (fabs(I[1] - I[3]) > 4.0 * 2.220446049250313e-16 * scale) {
+        snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
+        return -1;
+    }
+    m->det_m = I[0] * I[4] - I[1] * I[3];
+    if (!(I[0] > 0.0) || !(m->det_m > 0.0)) {
+        snprintf(err, errlen, "I_m is not positive definite (I11 = %.17g, |I_m| = %.17g)",
+                 I[0], m->det_m);
+        return -1;
+    }
+    m->b[0] = I[6];
+    m->b[1] = I[7];
+    return 0;
+}
+
+/* c(w) = I_3i w_i, i in {1,2}: the factor shared by (ContDyn) and (LagMult). */
+double suslov_c(const suslov_model *m, const double w[2])
+{
+    return m->b[0] * w[0] + m->b[1] * w[1];
+}
+
+/* (ContDyn): w' = f(w). */
+void suslov_contdyn(const suslov_model *m, const double w[2], double f[2])
+{
+    const double (*I)[3] = m->I;
+    const double c = suslov_c(m, w) / m->det_m;
+    f[0] = -(I[1][1] * w[1] + I[0][1] * w[0]) * c;
+    f[1] = (I[1][0] * w[1] + I[0][0] * w[0]) * c;
+}
+
+/* Df of (ContDyn), for the Newton iterations and linear stability. */
+void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[2][2])
+{
+    const double (*I)[3] = m->I;
+    const double d = m->det_m, c = suslov_c(m, w);
+    const double p = I[1][1] * w[1] + I[0][1] * w[0];
+    const double q = I[1][0] * w[1] + I[0][0] * w[0];
+    J[0][0] = -(I[0][1] * c + p * m->b[0]) / d;
+    J[0][1] = -(I[1][1] * c + p * m->b[1]) / d;
+    J[1][0] = (I[0][0] * c + q * m->b[0]) / d;
+    J[1][1] = (I[1][0] * c + q * m->b[1]) / d;
+}
+
+/* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the
+ * O_0 of the proof of PropoFinal. */
+double suslov_lagmult_o0(const suslov_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    return suslov_c(m, w) / m->det_m
+         * ((I[2][1] * I[1][0] - I[2][0] * I[1][1]) * w[1]
+            + (I[2][1] * I[0][0] - I[2][0] * I[0][1]) * w[0]);
+}
+
+/* (LagMult): lambda(w). */
+double suslov_lagmult(const suslov_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
+         - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
+         + suslov_lagmult_o0(m, w);
+}
+
+/* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). */
+double suslov_energy(const suslov_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    return 0.5 * (w[0] * (I[0][0] * w[0] + I[0][1] * w[1])
+                  + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]));
+}

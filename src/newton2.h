@@ -1,0 +1,24 @@
+/* Newton's method for the 2x2 implicit step equations G(x) = 0 of the midpoint and
+ * variational DSPs, with an analytic Jacobian supplied by the caller. */
+#ifndef SUSLOV_NEWTON2_H
+#define SUSLOV_NEWTON2_H
+
+#include "stepper.h"
+
+/* Evaluates G(x), its Jacobian, and scale = sum of |terms| of G (the size against which
+ * the round-off in G is judged). */
+typedef void (*newton2_fn)(const void *ctx, const double x[2], double g[2], double J[2][2],
+                           double *scale);
+
+/* Iterates from the initial guess in x. Returns SUSLOV_STEP_OK when |G|_inf falls to
+ * NEWTON2_RTOL * scale and one more (polishing) correction has been applied, SUSLOV_STEP_SINGULAR when the Jacobian (the (REGLOC) block) is
+ * singular to working precision, SUSLOV_STEP_NO_CONVERGENCE after NEWTON2_MAXIT steps. */
+int newton2_solve(newton2_fn fn, const void *ctx, double x[2], suslov_step_stats *st);
+
+/* G is a sum of a handful of products; each carries a relative error of a few units of
+ * round-off, so at the root the computed |G| is a few u * scale. 16 u leaves room for that
+ * and no more. */
+#define NEWTON2_RTOL (16.0 * 2.220446049250313e-16)
+#define NEWTON2_MAXIT 50
+
+#endif

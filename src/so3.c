@@ -1,0 +1,114 @@
+#include "so3.h"
+#include "mat3.h"
+
+/* (Isom): w -> w^, so that w^ v = w x v. */
+void so3_hat(const double w[3], double W[3][3])
+{
+    W[0][0] = 0.0;   W[0][1] = -w[2]; W[0][2] = w[1];
+    W[1][0] = w[2];  W[1][1] = 0.0;   W[1][2] = -w[0];
+    W[2][0] = -w[1]; W[2][1] = w[0];  W[2][2] = 0.0;
+}
+
+/* Inverse of (Isom) on the skew part, so a matrix that is skew only up to round-off
+ * still gives the nearest vector. */
+void so3_vee(const double W[3][3], double w[3])
+{
+    w[0] = 0.5 * (W[2][1] - W[1][2]);
+    w[1] = 0.5 * (W[0][2] - W[2][0]);
+    w[2] = 0.5 * (W[1][0] - W[0][1]);
+}
+
+/* (caypart): cay(w^) = I + (w^ + w^2/2) / (1 + |w/2|^2). */
+void so3_cay(const double w[3], double R[3][3])
+{
+    double W[3][3], W2[3][3];
+    so3_hat(w, W);
+    mat3_mul(W2, W, W);
+    const double a = 1.0 / (1.0 + 0.25 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[i][j] = (i == j) + a * (W[i][j] + 0.5 * W2[i][j]);
+}
+
+/* Inverse of (caypart): w = 2 vee(R - R^T) / (1 + tr R), valid away from tr R = -1
+ * (rotations by pi, where the Cayley chart ends). */
+void so3_cay_inv(const double R[3][3], double w[3])
+{
+    const double s = 2.0 / (1.0 + R[0][0] + R[1][1] + R[2][2]);
+    w[0] = s * (R[2][1] - R[1][2]);
+    w[1] = s * (R[0][2] - R[2][0]);
+    w[2] = s * (R[1][0] - R[0][1]);
+}
+
+/* dcay_w = (I + w^/2) / (1 + |w/2|^2), the formula after (caypart). */
+void so3_dcay(const double w[3], double D[3][3])
+{
+    double W[3][3];
+    so3_hat(w, W);
+    const double a = 1.0 / (1.0 + 0.25 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            D[i][j] = a * ((i == j) + 0.5 * W[i][j]);
+}
+
+/* dcay_w^{-1} = I - w^/2 + w w^T / 4, the formula after (caypart). */
+void so3_dcay_inv(const double w[3], double D[3][3])
+{
+    double W[3][3];
+    so3_hat(w, W);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            D[i][j] = (i == j) - 0.5 * W[i][j] + 0.25 * w[i] * w[j];
+}
+
+/* (cayinver): dcay^{-1}_{eps w} for w_3 = 0, entry by entry as printed. Note the printed
+ * (3,3) entry is 0, whereas so3_dcay_inv gives 1 there; tests and the claims ledger
+ * measure what that single entry does to (taualg). */
+void so3_cayinver_printed(double eps, const double w[2], double D[3][3])
+{
+    const double e2 = 0.25 * eps * eps, e1 = 0.5 * eps;
+    D[0][0] = 1.0 + e2 * w[0] * w[0]; D[0][1] = e2 * w[0] * w[1];       D[0][2] = -e1 * w[1];
+    D[1][0] = e2 * w[0] * w[1];       D[1][1] = 1.0 + e2 * w[1] * w[1]; D[1][2] = e1 * w[0];
+    D[2][0] = e1 * w[1];              D[2][1] = -e1 * w[0];             D[2][2] = 0.0;
+}
+
+/* Rodrigues' formula for exp(w^); the series form near w = 0 keeps full accuracy. */
+void so3_exp(const double w[3], double R[3][3])
+{
+    double W[3][3], W2[3][3];
+    so3_hat(w, W);
+    mat3_mul(W2, W, W);
+    const double th2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    double a, b;
+    if (th2 < 1e-8) {
+        a = 1.0 - th2 / 6.0 * (1.0 - th2 / 20.0);
+        b = 0.5 - th2 / 24.0 * (1.0 - th2 / 30.0);
+    } else {
+        const double th = sqrt(th2);
+        a = sin(th) / th;
+        b = (1.0 - cos(th)) / th2;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[i][j] = (i == j) + a * W[i][j] + b * W2[i][j];
+}
+
+/* (MetMat): dist(R1, R2) = |I - R1 R2^T| in the Frobenius norm. */
+double so3_dist(const double R1[3][3], const double R2[3][3])
+{
+    double P[3][3];
+    mat3_mul_bt(P, R1, R2);
+    for (int i = 0; i < 3; i++)
+        P[i][i] -= 1.0;
+    return mat3_frobenius(P);
+}
+
+/* |R^T R - I|, how far a matrix is from the group (the self-distance of (Groudist)). */
+double so3_orth_defect(const double R[3][3])
+{
+    double P[3][3];
+    mat3_mul_at(P, R, R);
+    for (int i = 0; i < 3; i++)
+        P[i][i] -= 1.0;
+    return mat3_frobenius(P);
+}

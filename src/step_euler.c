@@ -1,0 +1,18 @@
+/* Explicit Euler as a general DSP (Discretization): l = I_m f(w^k), lambda_{k+1} = lambda(w^{k+1}). */
+#include "stepper.h"
+
+static int euler_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
+                       double *lambda_next, suslov_step_stats *st)
+{
+    double f[2];
+    suslov_contdyn(m, w, f);
+    w_next[0] = w[0] + eps * f[0];
+    w_next[1] = w[1] + eps * f[1];
+    w_next[2] = 0.0;
+    *lambda_next = suslov_lagmult(m, w_next);
+    *st = (suslov_step_stats){0};
+    return SUSLOV_STEP_OK;
+}
+
+static const suslov_stepper_type euler_type = {"euler", 1, 1, 0, euler_apply};
+const suslov_stepper_type *const suslov_step_euler = &euler_type;

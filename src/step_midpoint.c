@@ -1,0 +1,52 @@
+/* The midpoint DSP of the paper's Figures 1-2: (Discretization) with
+ *   l1 = -((w2^{k+1} + w2^k)/2) I_3i (w_i^{k+1} + w_i^k)/2,
+ *   l2 =  ((w1^{k+1} + w1^k)/2) I_3i (w_i^{k+1} + w_i^k)/2,
+ * and lambda_{k+1} = lambda(w^{k+1}) from (LagMult). The implicit equation
+ *   G(x) = I_m (x - w^k) - eps (l1, l2) = 0
+ * is solved by Newton from an explicit prediction. */
+#include "newton2.h"
+
+#include <math.h>
+
+typedef struct {
+    const suslov_model *m;
+    double eps;
+    const double *w;
+} mid_ctx;
+
+/* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. */
+static void mid_residual(const void *vctx, const double x[2], double g[2], double J[2][2],
+                         double *scale)
+{
+    const mid_ctx *ctx = vctx;
+    const double (*I)[3] = ctx->m->I;
+    const double *w = ctx->w, eps = ctx->eps;
+    const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
+    const double c = suslov_c(ctx->m, mid);
+    const double l1 = -mid[1] * c, l2 = mid[0] * c;
+    const double d0 = x[0] - w[0], d1 = x[1] - w[1];
+    g[0] = I[0][0] * d0 + I[0][1] * d1 - eps * l1;
+    g[1] = I[1][0] * d0 + I[1][1] * d1 - eps * l2;
+    const double *b = ctx->m->b;
+    J[0][0] = I[0][0] + 0.5 * eps * mid[1] * b[0];
+    J[0][1] = I[0][1] + 0.5 * eps * (c + mid[1] * b[1]);
+    J[1][0] = I[1][0] - 0.5 * eps * (c + mid[0] * b[0]);
+    J[1][1] = I[1][1] - 0.5 * eps * mid[0] * b[1];
+    const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
+    *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx
+           + eps * (fabs(l1) + fabs(l2));
+}
+
+static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
+                          double w_next[3], double *lambda_next, suslov_step_stats *st)
+{
+    const mid_ctx ctx = {m, eps, w};
+    suslov_predict(m, eps, w, w_next);
+    const int status = newton2_solve(mid_residual, &ctx, w_next, st);
+    w_next[2] = 0.0;
+    *lambda_next = suslov_lagmult(m, w_next);
+    return status;
+}
+
+static const suslov_stepper_type midpoint_type = {"midpoint", 2, 2, 1, midpoint_apply};
+const suslov_stepper_type *const suslov_step_midpoint = &midpoint_type;

@@ -1,0 +1,28 @@
+/* Classical Runge-Kutta 4 as a general DSP (Discretization), lambda_{k+1} = lambda(w^{k+1}). */
+#include "stepper.h"
+
+static int rk4_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
+                     double *lambda_next, suslov_step_stats *st)
+{
+    double k1[2], k2[2], k3[2], k4[2], y[2];
+    suslov_contdyn(m, w, k1);
+    y[0] = w[0] + 0.5 * eps * k1[0];
+    y[1] = w[1] + 0.5 * eps * k1[1];
+    suslov_contdyn(m, y, k2);
+    y[0] = w[0] + 0.5 * eps * k2[0];
+    y[1] = w[1] + 0.5 * eps * k2[1];
+    suslov_contdyn(m, y, k3);
+    y[0] = w[0] + eps * k3[0];
+    y[1] = w[1] + eps * k3[1];
+    suslov_contdyn(m, y, k4);
+    const double e6 = eps / 6.0;
+    w_next[0] = w[0] + e6 * (k1[0] + 2.0 * (k2[0] + k3[0]) + k4[0]);
+    w_next[1] = w[1] + e6 * (k1[1] + 2.0 * (k2[1] + k3[1]) + k4[1]);
+    w_next[2] = 0.0;
+    *lambda_next = suslov_lagmult(m, w_next);
+    *st = (suslov_step_stats){0};
+    return SUSLOV_STEP_OK;
+}
+
+static const suslov_stepper_type rk4_type = {"rk4", 4, 4, 0, rk4_apply};
+const suslov_stepper_type *const suslov_step_rk4 = &rk4_type;

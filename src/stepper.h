@@ -1,0 +1,42 @@
+/* One step of a Discrete Suslov Problem (DSP): (w^k) -> (w^{k+1}, lambda_{k+1}) with
+ * (w^{k+1})_3 = 0, in the spirit of GSL's gsl_odeiv2_step_type: a stepper is a constant
+ * struct with a name, the orders the paper proves, and an apply function; the driver knows
+ * only this struct. Steps keep all state on the stack: no allocation per step. */
+#ifndef SUSLOV_STEPPER_H
+#define SUSLOV_STEPPER_H
+
+#include "model.h"
+
+enum { SUSLOV_STEP_OK = 0, SUSLOV_STEP_NO_CONVERGENCE = 1, SUSLOV_STEP_SINGULAR = 2 };
+
+typedef struct {
+    int iterations;   /* Newton iterations (0 for explicit steps) */
+    double residual;  /* final |G|_inf of the implicit equation */
+    double scale;     /* sum of |terms| of G: the round-off yardstick for residual */
+    double det;       /* determinant of the 2x2 Jacobian, the (REGLOC) block */
+} suslov_step_stats;
+
+typedef struct {
+    const char *name;
+    int order;         /* p: local w error O(eps^{p+1}) */
+    int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
+    int implicit;
+    /* w and w_next are 3-vectors of so(3) ~ R^3; w[2] must be 0 and the step sets
+     * w_next[2] = 0, the second equation of (DSP). Returns SUSLOV_STEP_*. */
+    int (*apply)(const suslov_model *m, double eps, const double w[3], double w_next[3],
+                 double *lambda_next, suslov_step_stats *st);
+} suslov_stepper_type;
+
+extern const suslov_stepper_type *const suslov_step_euler;
+extern const suslov_stepper_type *const suslov_step_rk4;
+extern const suslov_stepper_type *const suslov_step_midpoint;
+extern const suslov_stepper_type *const suslov_step_variational;
+
+/* The i-th stepper (euler, midpoint, rk4, variational), NULL past the end. */
+const suslov_stepper_type *suslov_stepper_get(int i);
+const suslov_stepper_type *suslov_stepper_by_name(const char *name);
+
+/* Explicit midpoint (second order) prediction, the starting point of the Newton solves. */
+void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2]);
+
+#endif
