@@ -31,6 +31,7 @@ TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
 .PHONY: all deps check clean
+.SECONDARY:
 all: $(BUILD)/suslov $(TESTS) $(CLAIMS)
 
 deps:
@@ -58,7 +59,7 @@ $(CLAIMS): $(BUILD)/tobj/claims.o $(BUILD)/tobj/ledger.o $(LIB)
 	$(CC) $(LDFLAGS) $^ $(GSL_LIBS) -lm -o $@
 
 check: all
-	@sh tests/run.sh $(BUILD)
+	@SUSLOV_SAN=$(filter 1,$(SAN)) sh tests/run.sh $(BUILD)
 
 clean:
 	rm -rf build

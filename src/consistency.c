@@ -21,16 +21,18 @@ int suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double 
 int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *stepper,
                         const suslov_local_ref *ref, suslov_local_err *err)
 {
-    double w_next[3], lambda, I3[3][3], R_next[3][3];
+    double w_next[3], lambda, R_next[3][3];
     const int status = stepper->apply(m, ref->eps, ref->w_k, w_next, &lambda, &err->stats);
     const double d[3] = {ref->w_exact[0] - w_next[0], ref->w_exact[1] - w_next[1],
                          ref->w_exact[2] - w_next[2]};
     err->w = vec3_norm(d);
     err->lambda_signed = ref->lambda_exact - lambda;
     err->lambda = fabs(err->lambda_signed);
-    mat3_identity(I3);
     for (int r = SUSLOV_RECON_CAYLEY; r <= SUSLOV_RECON_CAYLEY_MID; r++) {
-        suslov_reconstruct((suslov_recon)r, ref->eps, I3, ref->w_k, w_next, R_next);
+        suslov_attitude att;
+        suslov_attitude_identity(&att);
+        suslov_reconstruct((suslov_recon)r, ref->eps, &att, ref->w_k, w_next);
+        suslov_attitude_get(&att, R_next);
         err->so3[r] = so3_dist(ref->Phi, R_next);
     }
     return status;

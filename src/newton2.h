@@ -5,15 +5,12 @@
 
 #include "stepper.h"
 
-/* Evaluates G(x), its Jacobian, and scale = sum of |terms| of G (the size against which
- * the round-off in G is judged). */
-typedef void (*newton2_fn)(const void *ctx, const double x[2], double g[2], double J[2][2],
-                           double *scale);
-
 /* Iterates from the initial guess in x. Returns SUSLOV_STEP_OK when |G|_inf falls to
- * NEWTON2_RTOL * scale and one more (polishing) correction has been applied, SUSLOV_STEP_SINGULAR when the Jacobian (the (REGLOC) block) is
+ * NEWTON2_RTOL * scale and one more (polishing) correction has been applied, or when a
+ * correction falls below the spacing of doubles at x, SUSLOV_STEP_SINGULAR when the Jacobian (the (REGLOC) block) is
  * singular to working precision, SUSLOV_STEP_NO_CONVERGENCE after NEWTON2_MAXIT steps. */
-int newton2_solve(newton2_fn fn, const void *ctx, double x[2], suslov_step_stats *st);
+int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[2],
+                  double x[2], suslov_step_stats *st);
 
 /* G is a sum of a handful of products; each carries a relative error of a few units of
  * round-off, so at the root the computed |G| is a few u * scale. 16 u leaves room for that

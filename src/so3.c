@@ -18,8 +18,9 @@ void so3_vee(const double W[3][3], double w[3])
     w[2] = 0.5 * (W[1][0] - W[0][1]);
 }
 
-/* (caypart): cay(w^) = I + (w^ + w^2/2) / (1 + |w/2|^2). */
-void so3_cay(const double w[3], double R[3][3])
+/* (caypart) without its leading I: cay(w^) - I = (w^ + w^2/2) / (1 + |w/2|^2). Small for
+ * small w, so it can be accumulated without losing its low-order bits against I. */
+void so3_cay_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];
     so3_hat(w, W);
@@ -27,7 +28,15 @@ void so3_cay(const double w[3], double R[3][3])
     const double a = 1.0 / (1.0 + 0.25 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            R[i][j] = (i == j) + a * (W[i][j] + 0.5 * W2[i][j]);
+            D[i][j] = a * (W[i][j] + 0.5 * W2[i][j]);
+}
+
+/* (caypart): cay(w^) = I + (w^ + w^2/2) / (1 + |w/2|^2). */
+void so3_cay(const double w[3], double R[3][3])
+{
+    so3_cay_minus_identity(w, R);
+    for (int i = 0; i < 3; i++)
+        R[i][i] += 1.0;
 }
 
 /* Inverse of (caypart): w = 2 vee(R - R^T) / (1 + tr R), valid away from tr R = -1

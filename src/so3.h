@@ -7,6 +7,7 @@
 void so3_hat(const double w[3], double W[3][3]);
 void so3_vee(const double W[3][3], double w[3]);
 void so3_cay(const double w[3], double R[3][3]);
+void so3_cay_minus_identity(const double w[3], double D[3][3]);
 void so3_cay_inv(const double R[3][3], double w[3]);
 void so3_dcay(const double w[3], double D[3][3]);
 void so3_dcay_inv(const double w[3], double D[3][3]);

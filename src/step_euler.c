@@ -14,5 +14,5 @@ static int euler_apply(const suslov_model *m, double eps, const double w[3], dou
     return SUSLOV_STEP_OK;
 }
 
-static const suslov_stepper_type euler_type = {"euler", 1, 1, 0, euler_apply};
+static const suslov_stepper_type euler_type = {"euler", 1, 1, euler_apply, NULL};
 const suslov_stepper_type *const suslov_step_euler = &euler_type;

@@ -8,26 +8,18 @@
 
 #include <math.h>
 
-typedef struct {
-    const suslov_model *m;
-    double eps;
-    const double *w;
-} mid_ctx;
-
 /* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. */
-static void mid_residual(const void *vctx, const double x[2], double g[2], double J[2][2],
-                         double *scale)
+static void mid_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
+                         double g[2], double J[2][2], double *scale)
 {
-    const mid_ctx *ctx = vctx;
-    const double (*I)[3] = ctx->m->I;
-    const double *w = ctx->w, eps = ctx->eps;
+    const double (*I)[3] = m->I;
     const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
-    const double c = suslov_c(ctx->m, mid);
+    const double c = suslov_c(m, mid);
     const double l1 = -mid[1] * c, l2 = mid[0] * c;
     const double d0 = x[0] - w[0], d1 = x[1] - w[1];
     g[0] = I[0][0] * d0 + I[0][1] * d1 - eps * l1;
     g[1] = I[1][0] * d0 + I[1][1] * d1 - eps * l2;
-    const double *b = ctx->m->b;
+    const double *b = m->b;
     J[0][0] = I[0][0] + 0.5 * eps * mid[1] * b[0];
     J[0][1] = I[0][1] + 0.5 * eps * (c + mid[1] * b[1]);
     J[1][0] = I[1][0] - 0.5 * eps * (c + mid[0] * b[0]);
@@ -40,13 +32,12 @@ static void mid_residual(const void *vctx, const double x[2], double g[2], doubl
 static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
                           double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    const mid_ctx ctx = {m, eps, w};
     suslov_predict(m, eps, w, w_next);
-    const int status = newton2_solve(mid_residual, &ctx, w_next, st);
+    const int status = newton2_solve(mid_residual, m, eps, w, w_next, st);
     w_next[2] = 0.0;
     *lambda_next = suslov_lagmult(m, w_next);
     return status;
 }
 
-static const suslov_stepper_type midpoint_type = {"midpoint", 2, 2, 1, midpoint_apply};
+static const suslov_stepper_type midpoint_type = {"midpoint", 2, 2, midpoint_apply, mid_residual};
 const suslov_stepper_type *const suslov_step_midpoint = &midpoint_type;

@@ -24,5 +24,5 @@ static int rk4_apply(const suslov_model *m, double eps, const double w[3], doubl
     return SUSLOV_STEP_OK;
 }
 
-static const suslov_stepper_type rk4_type = {"rk4", 4, 4, 0, rk4_apply};
+static const suslov_stepper_type rk4_type = {"rk4", 4, 4, rk4_apply, NULL};
 const suslov_stepper_type *const suslov_step_rk4 = &rk4_type;

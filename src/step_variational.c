@@ -4,12 +4,6 @@
 
 #include <math.h>
 
-typedef struct {
-    const suslov_model *m;
-    double eps;
-    const double *w;
-} var_ctx;
-
 /* y y^T I_m y = y <y, I_m y>, the eps^2/4 terms of (taudyn). */
 static void quartic_term(const double (*I)[3], const double y[2], double q[2])
 {
@@ -20,13 +14,12 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
 }
 
 /* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block). */
-static void taudyn_residual(const void *vctx, const double x[2], double g[2], double J[2][2],
-                            double *scale)
+static void taudyn_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
+                            double g[2], double J[2][2], double *scale)
 {
-    const var_ctx *ctx = vctx;
-    const double (*I)[3] = ctx->m->I;
-    const double *w = ctx->w, *b = ctx->m->b, eps = ctx->eps;
-    const double cx = suslov_c(ctx->m, x), cw = suslov_c(ctx->m, w);
+    const double (*I)[3] = m->I;
+    const double *b = m->b;
+    const double cx = suslov_c(m, x), cw = suslov_c(m, w);
     double qx[2], qw[2];
     quartic_term(I, x, qx);
     quartic_term(I, w, qw);
@@ -63,13 +56,12 @@ static double taualg(const suslov_model *m, const double x[2], const double w[2]
 static int variational_apply(const suslov_model *m, double eps, const double w[3],
                              double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    const var_ctx ctx = {m, eps, w};
     suslov_predict(m, eps, w, w_next);
-    const int status = newton2_solve(taudyn_residual, &ctx, w_next, st);
+    const int status = newton2_solve(taudyn_residual, m, eps, w, w_next, st);
     w_next[2] = 0.0;
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
 
-static const suslov_stepper_type variational_type = {"variational", 2, -1, 1, variational_apply};
+static const suslov_stepper_type variational_type = {"variational", 2, -1, variational_apply, taudyn_residual};
 const suslov_stepper_type *const suslov_step_variational = &variational_type;

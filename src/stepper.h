@@ -16,15 +16,21 @@ typedef struct {
     double det;       /* determinant of the 2x2 Jacobian, the (REGLOC) block */
 } suslov_step_stats;
 
+/* An implicit DSP's step equation G(x) = 0 for x = w^{k+1}, given w = w^k: the residual,
+ * its Jacobian in x (the upper-left block of (REGLOC)), and scale = sum of |terms| of G,
+ * the yardstick for its round-off. */
+typedef void (*suslov_residual_fn)(const suslov_model *m, double eps, const double w[2],
+                                   const double x[2], double g[2], double J[2][2], double *scale);
+
 typedef struct {
     const char *name;
     int order;         /* p: local w error O(eps^{p+1}) */
     int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
-    int implicit;
     /* w and w_next are 3-vectors of so(3) ~ R^3; w[2] must be 0 and the step sets
      * w_next[2] = 0, the second equation of (DSP). Returns SUSLOV_STEP_*. */
     int (*apply)(const suslov_model *m, double eps, const double w[3], double w_next[3],
                  double *lambda_next, suslov_step_stats *st);
+    suslov_residual_fn residual;  /* NULL for explicit steppers */
 } suslov_stepper_type;
 
 extern const suslov_stepper_type *const suslov_step_euler;

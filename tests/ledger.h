@@ -1,0 +1,26 @@
+/* The claims ledger: every claim of the paper we measure, with the number, what the paper
+ * (or, for an extension, our own analysis) expects, the tolerance, and the verdict. Written
+ * to build/claims.tsv with the columns
+ *     id  paper_ref  quantity  measured  expected  tolerance  verdict
+ * and printed as a table with a PASS/FAIL check per line. */
+#ifndef SUSLOV_LEDGER_H
+#define SUSLOV_LEDGER_H
+
+typedef enum {
+    LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
+    LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol */
+    LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
+    LEDGER_EXTENSION_MIN   /* our own claim that measured >= expected (a negative control); tol unused */
+} ledger_assert;
+
+/* Records one line. The verdict column follows from the numbers alone ("reproduced" or "not
+ * reproduced" for a claim of the paper, "extension" otherwise); the check passes when it is
+ * what `truth` asserts, which the caller states and justifies next to the call. */
+void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
+                double expected, double tol, ledger_assert truth);
+
+/* Writes the TSV (through a temporary file) and prints the table followed by
+ * "claims: N passed, N failed". Returns the number of failed checks, or -1 on a write error. */
+int ledger_finish(const char *tsv_path);
+
+#endif

@@ -1,0 +1,36 @@
+#!/bin/sh
+# make check: run every unit test, the CLI tests and the claims ledger; print the ledger and,
+# alone on the last line, "N passed, N failed" over all of them. Usage: run.sh BUILD_DIR
+set -u
+B=${1:-build}
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+status=0
+run() { # run NAME COMMAND...: show failures and the summary line, keep the counts
+    name=$1; shift
+    "$@" >"$log" 2>&1 || status=1
+    grep -E '^FAIL' "$log"
+    if ! grep -qE "^$name: [0-9]+ passed, [0-9]+ failed" "$log"; then
+        echo "$name: no summary line (crashed?); its output:"; cat "$log"; status=1
+        echo "$name: 0 passed, 1 failed" >>"$log"
+    fi
+    grep -E "^$name: [0-9]+ passed, [0-9]+ failed" "$log" >>"$B/check-summary.txt"
+}
+: >"$B/check-summary.txt"
+for t in "$B"/test_*; do
+    case $t in *.o|*.d) continue ;; esac
+    run "$(basename "$t")" "$t"
+done
+run test_cli sh tests/test_cli.sh "$B"
+
+# The claims ledger prints its own table.
+"$B/claims" "$B/claims.tsv" >"$log" 2>&1 || status=1
+if grep -q '^claims: [0-9]* passed' "$log"; then
+    sed '/^claims: [0-9]* passed/d' "$log"
+    grep '^claims: ' "$log" >>"$B/check-summary.txt"
+else
+    cat "$log"; echo "claims: 0 passed, 1 failed" >>"$B/check-summary.txt"; status=1
+fi
+cat "$B/check-summary.txt"
+awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$B/check-summary.txt" || status=1
+exit $status

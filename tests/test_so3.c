@@ -1,0 +1,168 @@
+/* SO(3) tools: (Isom), (caypart) and its derivatives, (cayinver), exp, (MetMat). */
+#include "check.h"
+#include "mat3.h"
+#include "so3.h"
+
+#include <gsl/gsl_rng.h>
+#include <math.h>
+
+/* Every check below compares quantities of size O(1) computed with a few dozen flops; the
+ * round-off is a few 1e-16, so 1e-14 is a tight but safe bound. */
+#define ROUNDOFF_TOL 1e-14
+
+static void random_vec(gsl_rng *r, double scale, double v[3])
+{
+    for (int i = 0; i < 3; i++)
+        v[i] = scale * (2.0 * gsl_rng_uniform(r) - 1.0);
+}
+
+static double diff_norm(const double A[3][3], const double B[3][3])
+{
+    double D[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            D[i][j] = A[i][j] - B[i][j];
+    return mat3_frobenius(D);
+}
+
+static double identity_defect(const double A[3][3])
+{
+    double I3[3][3];
+    mat3_identity(I3);
+    return diff_norm(A, I3);
+}
+
+int main(void)
+{
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 20261122);
+    double worst[10] = {0};
+    for (int n = 0; n < 200; n++) {
+        double xi[3], eta[3], W[3][3], v[3], a[3], b[3], C[3][3], Cm[3][3], P[3][3], D[3][3], Di[3][3];
+        random_vec(rng, 3.0, xi);
+        random_vec(rng, 1.0, eta);
+        random_vec(rng, 1.0, v);
+        /* (Isom): w^ v = w x v, and vee inverts hat */
+        so3_hat(xi, W);
+        mat3_vec(a, W, v);
+        vec3_cross(b, xi, v);
+        so3_vee(W, a);
+        worst[0] = fmax(worst[0], fabs(a[0] - xi[0]) + fabs(a[1] - xi[1]) + fabs(a[2] - xi[2]));
+        mat3_vec(a, W, v);
+        worst[0] = fmax(worst[0], fabs(a[0] - b[0]) + fabs(a[1] - b[1]) + fabs(a[2] - b[2]));
+        /* cay(xi) cay(-xi) = I and cay(xi) in SO(3) */
+        const double mxi[3] = {-xi[0], -xi[1], -xi[2]};
+        so3_cay(xi, C);
+        so3_cay(mxi, Cm);
+        mat3_mul(P, C, Cm);
+        worst[1] = fmax(worst[1], identity_defect(P));
+        worst[2] = fmax(worst[2], so3_orth_defect(C) + fabs(mat3_det(C) - 1.0));
+        /* the inverse chart */
+        so3_cay_inv(C, a);
+        worst[3] = fmax(worst[3], fabs(a[0] - xi[0]) + fabs(a[1] - xi[1]) + fabs(a[2] - xi[2]));
+        /* dcay^{-1} dcay = I */
+        so3_dcay(xi, D);
+        so3_dcay_inv(xi, Di);
+        mat3_mul(P, Di, D);
+        worst[4] = fmax(worst[4], identity_defect(P));
+        /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
+        const double h = 1e-5;
+        double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
+        for (int i = 0; i < 3; i++) {
+            xp[i] = xi[i] + h * eta[i];
+            xm[i] = xi[i] - h * eta[i];
+        }
+        so3_cay(xp, Cp);
+        so3_cay(xm, Cmm);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
+        mat3_vec(de, D, eta);
+        so3_hat(de, DE);
+        mat3_mul(AN, DE, C);
+        worst[5] = fmax(worst[5], diff_norm(FD, AN));
+        /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
+        double E[3][3], G[3][3], yp[3], ym[3], se[3];
+        for (int i = 0; i < 3; i++)
+            se[i] = h * eta[i];
+        so3_exp(se, E);
+        mat3_mul(G, E, C);
+        so3_cay_inv(G, yp);
+        for (int i = 0; i < 3; i++)
+            se[i] = -h * eta[i];
+        so3_exp(se, E);
+        mat3_mul(G, E, C);
+        so3_cay_inv(G, ym);
+        mat3_vec(de, Di, eta);
+        for (int i = 0; i < 3; i++)
+            worst[6] = fmax(worst[6], fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
+        /* exp: in SO(3), exp(w) exp(-w) = I */
+        so3_exp(xi, E);
+        so3_exp(mxi, G);
+        mat3_mul(P, E, G);
+        worst[7] = fmax(worst[7], identity_defect(P) + so3_orth_defect(E));
+    }
+    CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e", worst[0]);
+    CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e", worst[1]);
+    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e", worst[2]);
+    /* cay^{-1} divides by 1 + tr R, which is as small as ~0.2 for |xi| <= 5: allow 1e-13 */
+    CHECK(worst[3] < 1e-13, "cay^{-1}(cay(xi)) = xi; worst %.2e", worst[3]);
+    CHECK(worst[4] < ROUNDOFF_TOL, "dcay^{-1}_xi dcay_xi = I; worst %.2e", worst[4]);
+    /* central differences with h = 1e-5: truncation O(h^2) ~ 1e-10, cancellation ~ u/h ~ 1e-11 */
+    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central differences); worst %.2e", worst[5]);
+    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central differences); worst %.2e", worst[6]);
+    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e", worst[7]);
+
+    /* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
+    double off33 = 0.0, at33 = 0.0;
+    for (int n = 0; n < 50; n++) {
+        double w[3], M[3][3], D[3][3], ew[3];
+        random_vec(rng, 1.0, w);
+        w[2] = 0.0;
+        const double eps = 2.0 * gsl_rng_uniform(rng);
+        so3_cayinver_printed(eps, w, M);
+        for (int i = 0; i < 3; i++)
+            ew[i] = eps * w[i];
+        so3_dcay_inv(ew, D);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                if (i == 2 && j == 2)
+                    at33 = fmax(at33, fabs(D[i][j] - M[i][j]));
+                else
+                    off33 = fmax(off33, fabs(D[i][j] - M[i][j]));
+    }
+    CHECK(off33 < ROUNDOFF_TOL, "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
+    CHECK(fabs(at33 - 1.0) < ROUNDOFF_TOL,
+          "(cayinver) as printed has 0 at (3,3) where dcay^{-1} has 1; difference %.17g", at33);
+
+    /* (MetMat) is a metric on sampled rotations, and equals |R1 - R2| (Frobenius). */
+    double sym = 0.0, self = 0.0, tri = -INFINITY, chord = 0.0, minpos = INFINITY;
+    for (int n = 0; n < 300; n++) {
+        double a[3], b[3], c[3], A[3][3], B[3][3], C[3][3], D[3][3];
+        random_vec(rng, 3.0, a);
+        random_vec(rng, 3.0, b);
+        random_vec(rng, 3.0, c);
+        so3_exp(a, A);
+        so3_exp(b, B);
+        so3_exp(c, C);
+        const double ab = so3_dist(A, B), ba = so3_dist(B, A), ac = so3_dist(A, C), cb = so3_dist(C, B);
+        sym = fmax(sym, fabs(ab - ba));
+        self = fmax(self, so3_dist(A, A));
+        tri = fmax(tri, ab - (ac + cb));
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                D[i][j] = A[i][j] - B[i][j];
+        chord = fmax(chord, fabs(ab - mat3_frobenius(D)));
+        minpos = fmin(minpos, ab / mat3_frobenius(D));
+    }
+    CHECK(self < ROUNDOFF_TOL, "(MetMat): dist(R, R) = 0; worst %.2e", self);
+    CHECK(sym < ROUNDOFF_TOL, "(MetMat): symmetric; worst %.2e", sym);
+    CHECK(tri < ROUNDOFF_TOL, "(MetMat): triangle inequality on 300 triples; worst excess %.2e", tri);
+    CHECK(chord < ROUNDOFF_TOL && minpos > 0.999,
+          "(MetMat) on SO(3) equals |R1 - R2| (so it is positive for R1 != R2); worst %.2e", chord);
+    double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+    CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
+          "orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+    gsl_rng_free(rng);
+    return check_summary("test_so3");
+}

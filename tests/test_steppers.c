@@ -1,0 +1,163 @@
+/* The DSP steppers, the Newton solves, the driver and the unreduced integrator. */
+#include "check.h"
+#include "driver.h"
+#include "newton2.h"
+#include "mat3.h"
+#include "so3.h"
+#include "stepper.h"
+#include "unreduced.h"
+
+#include <gsl/gsl_errno.h>
+#include <math.h>
+
+/* (VSO3) written with a generic dcay^{-1} matrix D(eps w) (3x3), l~_d' = eps I w, and the
+ * sign convention of (PartCase): DSP = D(-eps w)^T l~'(w) - D(eps x)^T l~'(x) - lambda e3.
+ * Returns the first two components in g and the raw lambda solving the third. */
+static double vso3(const suslov_model *m, double eps, const double w[2], const double x[2],
+                   int printed, double g[2])
+{
+    double Dw[3][3], Dx[3][3], pw[3], px[3];
+    const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0}, ex[3] = {eps * x[0], eps * x[1], 0.0};
+    if (printed) {
+        so3_cayinver_printed(eps, mw, Dw);
+        so3_cayinver_printed(eps, x, Dx);
+    } else {
+        so3_dcay_inv(ew, Dw);
+        so3_dcay_inv(ex, Dx);
+    }
+    for (int i = 0; i < 3; i++) {
+        pw[i] = eps * (m->I[i][0] * w[0] + m->I[i][1] * w[1]);
+        px[i] = eps * (m->I[i][0] * x[0] + m->I[i][1] * x[1]);
+    }
+    double r[3];
+    for (int i = 0; i < 3; i++)
+        r[i] = Dw[0][i] * pw[0] + Dw[1][i] * pw[1] + Dw[2][i] * pw[2]
+             - (Dx[0][i] * px[0] + Dx[1][i] * px[1] + Dx[2][i] * px[2]);
+    g[0] = r[0];
+    g[1] = r[1];
+    return r[2];
+}
+
+typedef struct {
+    long rows, last_k;
+    double R0_defect;
+} count_ctx;
+
+static int count_rows(void *vctx, const suslov_row *row)
+{
+    count_ctx *c = vctx;
+    if (row->k == 0) {
+        double I3[3][3];
+        mat3_identity(I3);
+        c->R0_defect = so3_dist(row->R, I3);
+    }
+    c->rows++;
+    c->last_k = row->k;
+    return 0;
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    char err[256];
+    suslov_model m;
+    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+
+    /* Analytic Jacobians of the implicit step equations against central differences. */
+    const suslov_stepper_type *implicit[] = {suslov_step_midpoint, suslov_step_variational};
+    for (int s = 0; s < 2; s++) {
+        const suslov_stepper_type *st = implicit[s];
+        double worst = 0.0;
+        for (int n = 0; n < 30; n++) {
+            const double a = 0.37 * n, eps = 0.05 * (1 + n % 7);
+            const double w[2] = {0.6 * cos(a), 0.5 * sin(a)}, x[2] = {0.6 * cos(a + 0.1), 0.5 * sin(a + 0.1)};
+            double g[2], J[2][2], sc;
+            st->residual(&m, eps, w, x, g, J, &sc);
+            for (int j = 0; j < 2; j++) {
+                const double h = 1e-6;
+                double xp[2] = {x[0], x[1]}, xm[2] = {x[0], x[1]}, gp[2], gm[2], Jt[2][2];
+                xp[j] += h;
+                xm[j] -= h;
+                st->residual(&m, eps, w, xp, gp, Jt, &sc);
+                st->residual(&m, eps, w, xm, gm, Jt, &sc);
+                for (int i = 0; i < 2; i++)
+                    worst = fmax(worst, fabs((gp[i] - gm[i]) / (2.0 * h) - J[i][j]));
+            }
+        }
+        /* G is a cubic polynomial: central differences err by O(h^2) ~ 1e-12 plus u/h ~ 1e-10 */
+        CHECK(worst < 1e-8, "%s: analytic Jacobian of the step equation = central differences; worst %.2e", st->name, worst);
+    }
+
+    /* Each step solves its equation to round-off in a few Newton iterations at small eps. */
+    for (int s = 0; s < 2; s++) {
+        const suslov_stepper_type *st = implicit[s];
+        const double w[3] = {0.4, 0.5, 0.0};
+        double x[3], lam, g[2], J[2][2], sc;
+        suslov_step_stats stats;
+        const int status = st->apply(&m, 0.01, w, x, &lam, &stats);
+        st->residual(&m, 0.01, w, x, g, J, &sc);
+        CHECK(status == SUSLOV_STEP_OK && fmax(fabs(g[0]), fabs(g[1])) <= 16 * 2.2e-16 * sc && stats.iterations <= 4 && x[2] == 0.0,
+              "%s: eps = 0.01 step solved to |G| = %.1e (scale %.2f) in %d Newton iterations, w3 = 0",
+              st->name, fmax(fabs(g[0]), fabs(g[1])), sc, stats.iterations);
+    }
+
+    /* (taudyn) and (taualg) are (VSO3) with (cayinver) as printed, after lambda -> -lambda/eps^2;
+     * with the exact dcay^{-1} the multiplier gains (c(x) - c(w))/eps. */
+    double worst_dyn = 0.0, worst_alg = 0.0, worst_full = 0.0;
+    for (int n = 0; n < 20; n++) {
+        const double eps = 0.1 + 0.2 * n, w[3] = {0.4 - 0.03 * n, 0.5, 0.0};
+        double x[3], lam, g[2], gd[2], J[2][2], sc;
+        suslov_step_stats stats;
+        suslov_step_variational->apply(&m, eps, w, x, &lam, &stats);
+        const double raw = vso3(&m, eps, w, x, 1, g);
+        suslov_step_variational->residual(&m, eps, w, x, gd, J, &sc);
+        worst_dyn = fmax(worst_dyn, fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1]));
+        worst_alg = fmax(worst_alg, fabs(-raw / (eps * eps) - lam));
+        const double raw_full = vso3(&m, eps, w, x, 0, g);
+        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (suslov_c(&m, x) - suslov_c(&m, w)) / eps)));
+    }
+    CHECK(worst_dyn < 1e-14, "(taudyn) = -1/eps x first rows of (VSO3) with (cayinver) as printed; worst %.2e", worst_dyn);
+    CHECK(worst_alg < 1e-13, "(taualg) = -1/eps^2 x third row of (VSO3) with (cayinver) as printed; worst %.2e", worst_alg);
+    CHECK(worst_full < 1e-13, "with the exact dcay^{-1} ((3,3) = 1) the multiplier is (taualg) + (c(x) - c(w))/eps; worst %.2e", worst_full);
+
+    /* The midpoint DSP conserves E exactly in exact arithmetic: E(x) - E(w) = eps <f(mid), I_m mid> = 0. */
+    {
+        double w[3] = {0.4, 0.5, 0.0}, x[3], lam, dE = 0.0;
+        suslov_step_stats stats;
+        for (int k = 0; k < 100; k++) {
+            suslov_step_midpoint->apply(&m, 0.7, w, x, &lam, &stats);
+            dE = fmax(dE, fabs(suslov_energy(&m, x) - suslov_energy(&m, w)));
+            w[0] = x[0];
+            w[1] = x[1];
+        }
+        CHECK(dE < 1e-15, "midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = 0.7 (round-off)", dE);
+    }
+
+    /* The driver: rows 0, K, 2K, ... and always the last one; R_0 = I. */
+    const suslov_run_config cfg = {&m, suslov_step_rk4, SUSLOV_RECON_CAYLEY, 0.1, 1003, 100};
+    count_ctx cc = {0, -1, 1.0};
+    suslov_run_report rep;
+    const double w0[2] = {0.4, 0.5};
+    const int rc = suslov_run(&cfg, w0, count_rows, &cc, &rep);
+    CHECK(rc == 0 && cc.rows == 12 && cc.last_k == 1003 && cc.R0_defect == 0.0,
+          "driver: N = 1003, K = 100 gives %ld rows (0, 100, ..., 1000, 1003), R_0 = I", cc.rows);
+
+    /* A failing step is reported with its index and time, never accepted. */
+    const double w_big[2] = {4.0, 5.0};
+    const suslov_run_config bad = {&m, suslov_step_variational, SUSLOV_RECON_CAYLEY, 1000.0, 10, 1};
+    count_ctx cb = {0, -1, 1.0};
+    const int rb = suslov_run(&bad, w_big, count_rows, &cb, &rep);
+    CHECK(rb == 1 && rep.status == SUSLOV_STEP_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0 && cb.rows == 1 &&
+              rep.stats.residual > NEWTON2_RTOL * rep.stats.scale,
+          "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only row 0 emitted",
+          rep.step, rep.t, rep.stats.residual);
+
+    /* The unreduced integrator: its inverse inertia is right. */
+    suslov_unreduced u;
+    suslov_unreduced_init(&u, &m, err, sizeof err);
+    double P[3][3], I3[3][3];
+    mat3_mul(P, u.Iinv, m.I);
+    mat3_identity(I3);
+    CHECK(so3_dist(P, I3) < 1e-15, "unreduced: I^{-1} I = Id to %.1e", so3_dist(P, I3));
+    return check_summary("test_steppers");
+}
