@@ -38,6 +38,20 @@ static double vso3(const suslov_model *m, double eps, const double w[2], const d
     return r[2];
 }
 
+/* A step equation whose Jacobian is singular everywhere: the (REGLOC) failure path. */
+static void singular_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
+                              double g[2], double J[2][2], double *scale)
+{
+    (void)m;
+    (void)eps;
+    (void)w;
+    g[0] = x[0] + x[1] - 1.0;
+    g[1] = 2.0 * (x[0] + x[1]) - 3.0;
+    J[0][0] = J[0][1] = 1.0;
+    J[1][0] = J[1][1] = 2.0;
+    *scale = fabs(x[0]) + fabs(x[1]) + 3.0;
+}
+
 typedef struct {
     long rows, last_k;
     double R0_defect;
@@ -151,6 +165,16 @@ int main(void)
               rep.stats.residual > NEWTON2_RTOL * rep.stats.scale,
           "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only row 0 emitted",
           rep.step, rep.t, rep.stats.residual);
+
+    /* A singular (REGLOC) block is reported as such, not iterated on. */
+    {
+        double x[2] = {0.3, 0.3};
+        suslov_step_stats stats;
+        const double w[2] = {0.0, 0.0};
+        const int status = newton2_solve(singular_residual, &m, 0.1, w, x, &stats);
+        CHECK(status == SUSLOV_STEP_SINGULAR && stats.det == 0.0 && stats.iterations == 0,
+              "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUSLOV_STEP_SINGULAR", stats.det);
+    }
 
     /* The unreduced integrator: its inverse inertia is right. */
     suslov_unreduced u;
