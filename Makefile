@@ -1,8 +1,9 @@
 # Reproducible companion to Jimenez & Scheurle, "On some aspects of the discretization of the
 # Suslov problem". `make check` runs the tests and the claims ledger; see README.md.
 #
-#   make            build build/suslov and the test programs
+#   make            build build/suslov, the figure programs and the test programs
 #   make check      unit tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
+#   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make deps       install missing Debian packages
 #   WERROR=1        treat warnings as errors (CI)
 #   SAN=1           build into build/san with -fsanitize=address,undefined
@@ -19,20 +20,24 @@ BUILD   := build/san
 CFLAGS  += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 LDFLAGS += -fsanitize=address,undefined
 endif
-# Deferred (=) so that pkg-config runs after `deps` has installed GSL.
-GSL_CFLAGS = $(shell pkg-config --cflags gsl)
-GSL_LIBS   = $(shell pkg-config --libs gsl)
-ALL_CFLAGS = $(WARN) $(CFLAGS) -Isrc $(GSL_CFLAGS) -MMD -MP
+# Deferred (=) so that pkg-config runs after `deps` has installed the packages.
+PKGS       = gsl cairo
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
+PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
+ALL_CFLAGS = $(WARN) $(CFLAGS) -Isrc $(PKG_CFLAGS) -MMD -MP
 
-LIB_SRC  := $(filter-out src/suslov.c,$(wildcard src/*.c))
+FIG_SRC  := $(wildcard src/figure_*.c)
+FIGS     := $(FIG_SRC:src/figure_%.c=%)
+FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
+LIB_SRC  := $(filter-out src/suslov.c $(FIG_SRC),$(wildcard src/*.c))
 LIB_OBJ  := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libsuslov.a
 TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
-.PHONY: all deps check clean
+.PHONY: all deps check figures clean
 .SECONDARY:
-all: $(BUILD)/suslov $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 deps:
 	@sh tools/deps.sh
@@ -50,13 +55,24 @@ $(LIB): $(LIB_OBJ)
 	$(AR) rcs $@ $^
 
 $(BUILD)/suslov: $(BUILD)/obj/suslov.o $(LIB)
-	$(CC) $(LDFLAGS) $^ $(GSL_LIBS) -lm -o $@
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+
+$(BUILD)/figure_%: $(BUILD)/obj/figure_%.o $(LIB)
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 $(BUILD)/test_%: $(BUILD)/tobj/test_%.o $(LIB)
-	$(CC) $(LDFLAGS) $^ $(GSL_LIBS) -lm -o $@
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
-$(CLAIMS): $(BUILD)/tobj/claims.o $(BUILD)/tobj/ledger.o $(LIB)
-	$(CC) $(LDFLAGS) $^ $(GSL_LIBS) -lm -o $@
+$(CLAIMS): $(BUILD)/tobj/claims.o $(BUILD)/tobj/ledger.o $(BUILD)/tobj/claims_figures.o $(LIB)
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+
+# A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
+# only when the program (or anything it is linked from) changes.
+figures: $(FIGS:%=figures/%.pdf)
+
+figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_%
+	@mkdir -p figures data
+	$< figures data
 
 check: all
 	@SUSLOV_SAN=$(filter 1,$(SAN)) sh tests/run.sh $(BUILD)

@@ -7,10 +7,10 @@
  * motion settles on the steady rotation within t ~ 5/k ~ 35); the error at eps is the
  * largest over t_k. Orders are least-squares slopes of log error against log eps. */
 #include "consistency.h"
+#include "convergence.h"
 #include "driver.h"
 #include "exact.h"
 #include "ledger.h"
-#include "magnus4.h"
 #include "mat3.h"
 #include "orderfit.h"
 #include "refattitude.h"
@@ -25,8 +25,8 @@
 
 static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK ((int)(sizeof TK / sizeof TK[0]))
-#define NJ 11         /* eps = 2^-j, j = 0 .. 10 */
-#define NMETHOD 4
+#define NJ SUSLOV_CONV_NJ   /* eps = 2^-j, j = 0 .. 10 */
+#define NMETHOD SUSLOV_CONV_NMETHOD
 #define T_GLOBAL 10.0
 
 /* The fit window. eps <= 2^-2 keeps k eps <= 0.036 (k = 0.145 is the rate of the motion), so
@@ -84,31 +84,7 @@ static void order_line(const char *id, const char *ref, const char *what, double
 
 /* ---- local errors of the four DSPs, their multipliers and the reconstructions ---- */
 
-static double loc_w[NMETHOD][NJ], loc_l[NMETHOD][NJ], loc_so3[NMETHOD][2][NJ];
-static double ref_att_err;  /* max |Phi_rk8pd - Phi_magnus4| over every local reference */
-
-static void measure_local(void)
-{
-    for (int j = 0; j < NJ; j++)
-        for (int t = 0; t < NTK; t++) {
-            suslov_local_ref ref;
-            if (suslov_local_ref_init(&ref, &ex, TK[t], eps_of(j)) != 0)
-                die("reference attitude");
-            double M[3][3];
-            mat3_identity(M);
-            suslov_magnus4(&ex, TK[t], TK[t] + eps_of(j), 256, M);
-            ref_att_err = fmax(ref_att_err, so3_dist(ref.Phi, M));
-            for (int s = 0; s < NMETHOD; s++) {
-                suslov_local_err e;
-                if (suslov_local_errors(model, suslov_stepper_get(s), &ref, &e) != SUSLOV_STEP_OK)
-                    die("a local step");
-                loc_w[s][j] = fmax(loc_w[s][j], e.w);
-                loc_l[s][j] = fmax(loc_l[s][j], e.lambda);
-                for (int r = 0; r < 2; r++)
-                    loc_so3[s][r][j] = fmax(loc_so3[s][r][j], e.so3[r]);
-            }
-        }
-}
+static suslov_convergence conv;
 
 static void local_claims(void)
 {
@@ -117,23 +93,23 @@ static void local_claims(void)
     for (int s = 0; s < NMETHOD; s++) {
         const suslov_stepper_type *st = suslov_stepper_get(s);
         const char *ref = s == 3 ? "PropoFinal" : "Prop. general DSP (p,p)";
-        const double p = fit(loc_w[s], 1, SIZE_W);
+        const double p = fit(conv.loc_w[s], 1, SIZE_W);
         snprintf(id, sizeof id, "reduced-order-%s", st->name);
         snprintf(what, sizeof what, "p: local slope of |w(t_k+eps) - w^{k+1}| minus 1, %s", st->name);
         order_line(id, ref, what, p, st->order, LEDGER_REPRODUCED);
         if (st->lambda_order > 0) {
             snprintf(id, sizeof id, "lambda-order-%s", st->name);
             snprintf(what, sizeof what, "s: local slope of |lambda(t_k+eps) - lambda(w^{k+1})| minus 1, %s", st->name);
-            order_line(id, "Prop. general DSP (p,p)", what, fit(loc_l[s], 1, SIZE_LAMBDA), st->lambda_order, LEDGER_REPRODUCED);
+            order_line(id, "Prop. general DSP (p,p)", what, fit(conv.loc_lambda[s], 1, SIZE_LAMBDA), st->lambda_order, LEDGER_REPRODUCED);
         }
         /* TeoL: the unreduced order is min(r, l), r from (MetMat) on SO(3), l = p. */
-        const double r1 = fit(loc_so3[s][SUSLOV_RECON_CAYLEY], 1, SIZE_R);
+        const double r1 = fit(conv.loc_so3[s][SUSLOV_RECON_CAYLEY], 1, SIZE_R);
         snprintf(id, sizeof id, "unreduced-order-cayley-%s", st->name);
         snprintf(what, sizeof what, "min(r, p), r: local slope of (MetMat) dist minus 1, R_{k+1} = R_k cay(eps w_k), %s", st->name);
         order_line(id, "TeoL", what, fmin(r1, p), 1.0, LEDGER_REPRODUCED);
         unreduced_min = fmin(unreduced_min, fmin(r1, p));
         /* Our symmetric reconstruction: second order in R, so min(2, p). */
-        const double r2 = fit(loc_so3[s][SUSLOV_RECON_CAYLEY_MID], 1, SIZE_R);
+        const double r2 = fit(conv.loc_so3[s][SUSLOV_RECON_CAYLEY_MID], 1, SIZE_R);
         snprintf(id, sizeof id, "unreduced-order-cayley-mid-%s", st->name);
         snprintf(what, sizeof what, "min(r, p) with R_{k+1} = R_k cay(eps (w_k + w_{k+1})/2), %s", st->name);
         order_line(id, "TeoL (extension)", what, fmin(r2, p), fmin(2.0, st->order), LEDGER_EXTENSION);
@@ -218,29 +194,20 @@ static void cayinver_claim(void)
 
 /* ---- global errors at T = 10 ---- */
 
-static void global_claims(const double Rref[3][3])
+static void global_claims(void)
 {
     char id[64], what[192];
     for (int s = 0; s < NMETHOD; s++) {
         const suslov_stepper_type *st = suslov_stepper_get(s);
-        double gw[NJ], gr[2][NJ];
-        for (int j = 0; j < NJ; j++)
-            for (int r = 0; r < 2; r++) {
-                suslov_global_err g;
-                if (suslov_global_errors(&ex, st, (suslov_recon)r, T_GLOBAL, 10L << j, Rref, &g) != 0)
-                    die("global run");
-                gw[j] = g.w;
-                gr[r][j] = g.so3;
-            }
         snprintf(id, sizeof id, "global-order-%s", st->name);
         snprintf(what, sizeof what, "slope of the global error |w(10) - w_N|, %s", st->name);
-        order_line(id, "Prop. general DSP / PropoFinal", what, fit(gw, 0, SIZE_W), st->order, LEDGER_REPRODUCED);
+        order_line(id, "Prop. general DSP / PropoFinal", what, fit(conv.glob_w[s], 0, SIZE_W), st->order, LEDGER_REPRODUCED);
         snprintf(id, sizeof id, "global-so3-order-cayley-%s", st->name);
         snprintf(what, sizeof what, "slope of (MetMat) dist(R(10), R_N), R_{k+1} = R_k cay(eps w_k), %s", st->name);
-        order_line(id, "TeoL (extension)", what, fit(gr[0], 0, SIZE_R), 1.0, LEDGER_EXTENSION);
+        order_line(id, "TeoL (extension)", what, fit(conv.glob_so3[s][0], 0, SIZE_R), 1.0, LEDGER_EXTENSION);
         snprintf(id, sizeof id, "global-so3-order-cayley-mid-%s", st->name);
         snprintf(what, sizeof what, "slope of dist(R(10), R_N) with the cayley-mid reconstruction, %s", st->name);
-        order_line(id, "TeoL (extension)", what, fit(gr[1], 0, SIZE_R), fmin(2.0, st->order), LEDGER_EXTENSION);
+        order_line(id, "TeoL (extension)", what, fit(conv.glob_so3[s][1], 0, SIZE_R), fmin(2.0, st->order), LEDGER_EXTENSION);
     }
 }
 
@@ -404,20 +371,12 @@ int main(int argc, char **argv)
     model = &m;
     suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
 
-    double Rref[3][3], Rmag[3][3], I3[3][3];
-    suslov_refatt ra;
-    mat3_identity(I3);
-    mat3_identity(Rmag);
-    if (suslov_refatt_init(&ra, &ex, 0.0, I3, SUSLOV_REFATT_TOL) != 0 || suslov_refatt_advance(&ra, T_GLOBAL, Rref) != 0)
-        die("reference attitude");
-    suslov_refatt_free(&ra);
-    suslov_magnus4(&ex, 0.0, T_GLOBAL, 20000, Rmag);
-
-    measure_local();
+    if (suslov_convergence_run(&conv, &ex, TK, NTK, T_GLOBAL) != 0)
+        die("the convergence sweep");
     local_claims();
     variational_multiplier_claims();
     cayinver_claim();
-    global_claims(Rref);
+    global_claims();
     unreduced_claims();
     preservation_claims();
 
@@ -426,10 +385,10 @@ int main(int argc, char **argv)
      * increments and for R(10) alike. */
     ledger_add("reference-attitude-local", "(method)",
                "max |Phi_rk8pd - Phi_magnus4| over all one-step increments; tolerance = 1% of the smallest fitted local SO(3) error",
-               ref_att_err, 0.0, 0.01 * min_so3_fitted[1], LEDGER_EXTENSION);
+               conv.ref_local_err, 0.0, 0.01 * min_so3_fitted[1], LEDGER_EXTENSION);
     ledger_add("reference-attitude-global", "(method)",
                "|R_rk8pd(10) - R_magnus4(10)|; tolerance = 1% of the smallest fitted global SO(3) error",
-               so3_dist(Rref, Rmag), 0.0, 0.01 * min_so3_fitted[0], LEDGER_EXTENSION);
+               conv.ref_global_err, 0.0, 0.01 * min_so3_fitted[0], LEDGER_EXTENSION);
     const int failed = ledger_finish(tsv);
     return failed != 0;
 }

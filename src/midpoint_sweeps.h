@@ -1,0 +1,13 @@
+/* A reading of the paper's midpoint DSP for Figure 2: its implicit equation (Discretization)
+ * with the midpoint l1, l2 solved not by Newton but by a fixed number n of fixed-point sweeps
+ *     x <- w^k + eps I_m^{-1} (l1, l2)(w^k, x),   x_0 = w^k.
+ * One sweep is explicit Euler, two are the explicit midpoint rule (RK2), and as n grows the
+ * sweeps converge (for small eps) to the Newton solution, which conserves E exactly. */
+#ifndef SUSLOV_MIDPOINT_SWEEPS_H
+#define SUSLOV_MIDPOINT_SWEEPS_H
+
+#include "model.h"
+
+void suslov_midpoint_sweeps(const suslov_model *m, double eps, int n, const double w[2], double x[2]);
+
+#endif

@@ -1,0 +1,478 @@
+#define _POSIX_C_SOURCE 200809L
+#include "plot.h"
+
+#include <cairo-pdf.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#define PLOT_PI 3.14159265358979323846
+
+const double PLOT_RED[3] = {0.85, 0.15, 0.10}, PLOT_BLUE[3] = {0.12, 0.35, 0.80},
+             PLOT_GREEN[3] = {0.10, 0.60, 0.20}, PLOT_ORANGE[3] = {0.95, 0.55, 0.05},
+             PLOT_PURPLE[3] = {0.55, 0.25, 0.70}, PLOT_GREY[3] = {0.45, 0.45, 0.45},
+             PLOT_BLACK[3] = {0.0, 0.0, 0.0};
+
+#define TICK_FONT 8.0
+#define LABEL_FONT 9.5
+
+plot_style plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
+                         const char *label)
+{
+    return (plot_style){rgb[0], rgb[1], rgb[2], width, dash, marker, size, label};
+}
+
+void plot_extend(double *lo, double *hi, const double *v, size_t n, size_t stride, int log)
+{
+    for (size_t i = 0; i < n; i += stride) {
+        if (!isfinite(v[i]) || (log && !(v[i] > 0.0)))
+            continue;
+        *lo = fmin(*lo, v[i]);
+        *hi = fmax(*hi, v[i]);
+    }
+}
+
+void plot_pad(double *lo, double *hi, int log)
+{
+    if (!(*lo <= *hi)) { /* nothing to show */
+        *lo = log ? 0.1 : 0.0;
+        *hi = log ? 10.0 : 1.0;
+    }
+    if (log) {
+        *lo = pow(10.0, floor(log10(*lo) + 1e-9));
+        *hi = pow(10.0, ceil(log10(*hi) - 1e-9));
+        if (*hi <= *lo)
+            *hi = *lo * 10.0;
+        return;
+    }
+    double span = *hi - *lo;
+    if (span <= 1e-300 || span < 1e-12 * fmax(fabs(*lo), fabs(*hi))) {
+        const double c = 0.5 * (*lo + *hi), d = fmax(fabs(c) * 1e-3, 1e-300);
+        *lo = c - d;
+        *hi = c + d;
+        span = *hi - *lo;
+    }
+    *lo -= 0.05 * span;
+    *hi += 0.05 * span;
+}
+
+void plot_axes_init(plot_axes *ax, cairo_t *cr, double x, double y, double w, double h,
+                    double x0, double x1, double y0, double y1, int xlog, int ylog)
+{
+    *ax = (plot_axes){cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog};
+}
+
+void plot_cell(double width, double height, int rows, int cols, int idx, double *x, double *y,
+               double *w, double *h)
+{
+    const double left = 64.0, right = 14.0, top = 40.0, bottom = 36.0, hgap = 70.0, vgap = 50.0;
+    *w = (width - left - right - (cols - 1) * hgap) / cols;
+    *h = (height - top - bottom - (rows - 1) * vgap) / rows;
+    *x = left + (idx % cols) * (*w + hgap);
+    *y = top + (idx / cols) * (*h + vgap);
+}
+
+void plot_axes_cell(plot_axes *ax, cairo_t *cr, double width, double height, int rows, int cols,
+                    int idx, double x0, double x1, double y0, double y1, int xlog, int ylog)
+{
+    double x, y, w, h;
+    plot_cell(width, height, rows, cols, idx, &x, &y, &w, &h);
+    plot_pad(&y0, &y1, ylog);
+    if (xlog)
+        plot_pad(&x0, &x1, 1);
+    plot_axes_init(ax, cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog);
+}
+
+static double tx(double v, int log) { return log ? log10(v) : v; }
+
+static double map_x(const plot_axes *ax, double v)
+{
+    return ax->x + (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
+}
+
+static double map_y(const plot_axes *ax, double v)
+{
+    return ax->y + ax->h - (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
+}
+
+void plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
+               double valign, int bold)
+{
+    cairo_text_extents_t te;
+    cairo_select_font_face(cr, PLOT_FONT, CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents(cr, text, &te);
+    /* valign: 0 = top, 0.5 = middle, 1 = baseline-ish bottom of the cap height */
+    cairo_move_to(cr, x - halign * te.x_advance, y + (1.0 - valign) * size * 0.72);
+    cairo_show_text(cr, text);
+}
+
+/* Width of a text at a size, for layout. */
+static double text_width(cairo_t *cr, const char *text, double size)
+{
+    cairo_text_extents_t te;
+    cairo_select_font_face(cr, PLOT_FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents(cr, text, &te);
+    return te.x_advance;
+}
+
+/* "10" with a raised exponent, aligned like plot_text; returns nothing. */
+static void power_label(cairo_t *cr, double x, double y, int e, double halign, double valign)
+{
+    char ex[16];
+    snprintf(ex, sizeof ex, "%d", e);
+    const double w10 = text_width(cr, "10", TICK_FONT), we = text_width(cr, ex, TICK_FONT * 0.75);
+    const double x0 = x - halign * (w10 + we);
+    plot_text(cr, x0, y, "10", TICK_FONT, 0.0, valign, 0);
+    plot_text(cr, x0 + w10, y - TICK_FONT * 0.38, ex, TICK_FONT * 0.75, 0.0, valign, 0);
+}
+
+static double nice_step(double span)
+{
+    const double raw = span / 5.0, mag = pow(10.0, floor(log10(raw))), f = raw / mag;
+    return (f < 1.5 ? 1.0 : f < 3.0 ? 2.0 : f < 7.0 ? 5.0 : 10.0) * mag;
+}
+
+static void tick_label(char *buf, size_t len, double v, double step)
+{
+    if (fabs(v) < 1e-9 * step)
+        v = 0.0;
+    const double a = fabs(v);
+    if (v != 0.0 && (a < 1e-3 || a >= 1e5))
+        snprintf(buf, len, "%.3g", v);
+    else {
+        const int dec = step >= 1.0 ? 0 : (int)ceil(-log10(step) - 1e-9);
+        snprintf(buf, len, "%.*f", dec, v);
+    }
+}
+
+/* Draws the ticks of one axis (vertical = 0 for x, 1 for y). */
+static void axis_ticks(const plot_axes *ax, int vertical)
+{
+    cairo_t *cr = ax->cr;
+    const int log = vertical ? ax->ylog : ax->xlog;
+    const double lo = vertical ? ax->y0 : ax->x0, hi = vertical ? ax->y1 : ax->x1;
+    const double major = 4.0, minor = 2.0;
+    cairo_set_line_width(cr, 0.6);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    if (log) {
+        const int e0 = (int)ceil(log10(lo) - 1e-9), e1 = (int)floor(log10(hi) + 1e-9);
+        const int every = (e1 - e0) > 16 ? 4 : (e1 - e0) > 8 ? 2 : 1;
+        for (int e = (int)floor(log10(lo)); e <= e1; e++) {
+            for (int mnt = 1; mnt <= 9; mnt++) {
+                const double v = mnt * pow(10.0, e);
+                if (v < lo * (1 - 1e-9) || v > hi * (1 + 1e-9) || (mnt > 1 && e1 - e0 > 6))
+                    continue;
+                const double len = mnt == 1 ? major : minor;
+                if (vertical) {
+                    const double py = map_y(ax, v);
+                    cairo_move_to(cr, ax->x, py);
+                    cairo_line_to(cr, ax->x + len, py);
+                } else {
+                    const double px = map_x(ax, v);
+                    cairo_move_to(cr, px, ax->y + ax->h);
+                    cairo_line_to(cr, px, ax->y + ax->h - len);
+                }
+                cairo_stroke(cr);
+                if (mnt == 1 && (e - e0) % every == 0) {
+                    if (vertical)
+                        power_label(cr, ax->x - 3.0, map_y(ax, v), e, 1.0, 0.5);
+                    else
+                        power_label(cr, map_x(ax, v), ax->y + ax->h + 4.0, e, 0.5, 0.0);
+                }
+            }
+        }
+        return;
+    }
+    const double step = nice_step(hi - lo);
+    for (double v = ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) {
+        char buf[32];
+        tick_label(buf, sizeof buf, v, step);
+        if (vertical) {
+            const double py = map_y(ax, v);
+            cairo_move_to(cr, ax->x, py);
+            cairo_line_to(cr, ax->x + major, py);
+            cairo_stroke(cr);
+            plot_text(cr, ax->x - 3.0, py, buf, TICK_FONT, 1.0, 0.5, 0);
+        } else {
+            const double px = map_x(ax, v);
+            cairo_move_to(cr, px, ax->y + ax->h);
+            cairo_line_to(cr, px, ax->y + ax->h - major);
+            cairo_stroke(cr);
+            plot_text(cr, px, ax->y + ax->h + 4.0, buf, TICK_FONT, 0.5, 0.0, 0);
+        }
+    }
+}
+
+void plot_frame(const plot_axes *ax, const char *xlabel, const char *ylabel, const char *letter)
+{
+    cairo_t *cr = ax->cr;
+    cairo_save(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 0.8);
+    cairo_rectangle(cr, ax->x, ax->y, ax->w, ax->h);
+    cairo_stroke(cr);
+    axis_ticks(ax, 0);
+    axis_ticks(ax, 1);
+    if (xlabel)
+        plot_text(cr, ax->x + 0.5 * ax->w, ax->y + ax->h + 16.0, xlabel, LABEL_FONT, 0.5, 0.0, 0);
+    if (ylabel) {
+        cairo_save(cr);
+        cairo_translate(cr, ax->x - 40.0, ax->y + 0.5 * ax->h);
+        cairo_rotate(cr, -PLOT_PI / 2.0);
+        plot_text(cr, 0.0, 0.0, ylabel, LABEL_FONT, 0.5, 0.5, 0);
+        cairo_restore(cr);
+    }
+    if (letter)
+        plot_text(cr, ax->x - 44.0, ax->y - 6.0, letter, LABEL_FONT + 1.0, 0.0, 1.0, 1);
+    cairo_restore(cr);
+}
+
+static void set_style(cairo_t *cr, const plot_style *st)
+{
+    static const double dashed[] = {4.0, 2.5}, dotted[] = {1.0, 2.0};
+    cairo_set_source_rgb(cr, st->r, st->g, st->b);
+    cairo_set_line_width(cr, st->width > 0 ? st->width : 0.8);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    if (st->dash == 1)
+        cairo_set_dash(cr, dashed, 2, 0.0);
+    else if (st->dash == 2)
+        cairo_set_dash(cr, dotted, 2, 0.0);
+    else
+        cairo_set_dash(cr, NULL, 0, 0.0);
+}
+
+static int visible(const plot_axes *ax, double x, double y)
+{
+    return isfinite(x) && isfinite(y) && (!ax->xlog || x > 0.0) && (!ax->ylog || y > 0.0);
+}
+
+static void clip_to(const plot_axes *ax)
+{
+    cairo_rectangle(ax->cr, ax->x, ax->y, ax->w, ax->h);
+    cairo_clip(ax->cr);
+}
+
+static void marker(cairo_t *cr, int shape, double x, double y, double s)
+{
+    const double r = 0.5 * s;
+    cairo_new_sub_path(cr);
+    switch (shape) {
+    case PLOT_DOT:
+    case PLOT_CIRCLE:
+        cairo_arc(cr, x, y, r, 0.0, 2.0 * PLOT_PI);
+        break;
+    case PLOT_SQUARE:
+        cairo_rectangle(cr, x - r, y - r, s, s);
+        break;
+    case PLOT_TRIANGLE:
+        cairo_move_to(cr, x, y - 1.15 * r);
+        cairo_line_to(cr, x + r, y + 0.75 * r);
+        cairo_line_to(cr, x - r, y + 0.75 * r);
+        cairo_close_path(cr);
+        break;
+    case PLOT_DIAMOND:
+        cairo_move_to(cr, x, y - 1.2 * r);
+        cairo_line_to(cr, x + r, y);
+        cairo_line_to(cr, x, y + 1.2 * r);
+        cairo_line_to(cr, x - r, y);
+        cairo_close_path(cr);
+        break;
+    case PLOT_CROSS:
+        cairo_move_to(cr, x - r, y - r);
+        cairo_line_to(cr, x + r, y + r);
+        cairo_move_to(cr, x - r, y + r);
+        cairo_line_to(cr, x + r, y - r);
+        break;
+    default:
+        break;
+    }
+}
+
+static void stroke_marker(cairo_t *cr, int shape)
+{
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    if (shape == PLOT_DOT)
+        cairo_fill(cr);
+    else {
+        cairo_set_line_width(cr, 0.7);
+        cairo_stroke(cr);
+    }
+}
+
+void plot_series(const plot_axes *ax, const double *x, const double *y, size_t n, size_t stride,
+                 const plot_style *st)
+{
+    cairo_t *cr = ax->cr;
+    if (st->width <= 0)
+        return;
+    cairo_save(cr);
+    clip_to(ax);
+    set_style(cr, st);
+    int pen = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double xv = x[i * stride], yv = y[i * stride];
+        if (!visible(ax, xv, yv)) {
+            pen = 0;
+            continue;
+        }
+        if (pen)
+            cairo_line_to(cr, map_x(ax, xv), map_y(ax, yv));
+        else
+            cairo_move_to(cr, map_x(ax, xv), map_y(ax, yv));
+        pen = 1;
+    }
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}
+
+void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t n, size_t every,
+                  const plot_style *st)
+{
+    cairo_t *cr = ax->cr;
+    if (st->marker == PLOT_NONE)
+        return;
+    cairo_save(cr);
+    clip_to(ax);
+    set_style(cr, st);
+    for (size_t i = 0; i < n; i += every ? every : 1) {
+        if (!visible(ax, x[i], y[i]))
+            continue;
+        marker(cr, st->marker, map_x(ax, x[i]), map_y(ax, y[i]), st->size);
+        stroke_marker(cr, st->marker);
+    }
+    cairo_restore(cr);
+}
+
+void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
+{
+    cairo_t *cr = ax->cr;
+    const double row = 11.0, sample = 18.0, pad = 4.0, fs = 8.0;
+    double wmax = 0.0;
+    int rows = 0;
+    for (int i = 0; i < n; i++)
+        if (st[i].label) {
+            wmax = fmax(wmax, text_width(cr, st[i].label, fs));
+            rows++;
+        }
+    if (rows == 0)
+        return;
+    const double bw = sample + 3 * pad + wmax, bh = rows * row + pad;
+    const double bx = corner % 2 ? ax->x + ax->w - bw - 4.0 : ax->x + 4.0;
+    const double by = corner < 2 ? ax->y + 4.0 : corner < 4 ? ax->y + ax->h - bh - 4.0 : ax->y + 0.5 * (ax->h - bh);
+    cairo_save(cr);
+    cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+    cairo_rectangle(cr, bx, by, bw, bh);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr, 0.5);
+    cairo_stroke(cr);
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        if (!st[i].label)
+            continue;
+        const double cy = by + pad + (k + 0.5) * row;
+        set_style(cr, &st[i]);
+        if (st[i].width > 0) {
+            cairo_move_to(cr, bx + pad, cy);
+            cairo_line_to(cr, bx + pad + sample, cy);
+            cairo_stroke(cr);
+        }
+        if (st[i].marker) {
+            marker(cr, st[i].marker, bx + pad + 0.5 * sample, cy, st[i].size);
+            stroke_marker(cr, st[i].marker);
+        }
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        plot_text(cr, bx + 2 * pad + sample, cy, st[i].label, fs, 0.0, 0.5, 0);
+        k++;
+    }
+    cairo_restore(cr);
+}
+
+void plot_slope(const plot_axes *ax, double xa, double ya, double xb, double slope, const char *label)
+{
+    cairo_t *cr = ax->cr;
+    const double yb = ya * pow(xb / xa, slope);
+    cairo_save(cr);
+    clip_to(ax);
+    const plot_style st = plot_style_of(PLOT_GREY, 0.8, 1, PLOT_NONE, 0, NULL);
+    set_style(cr, &st);
+    cairo_move_to(cr, map_x(ax, xa), map_y(ax, ya));
+    cairo_line_to(cr, map_x(ax, xb), map_y(ax, yb));
+    cairo_stroke(cr);
+    if (label) {
+        cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+        plot_text(cr, map_x(ax, xb) + 2.0, map_y(ax, yb), label, 7.5, 0.0, 0.5, 0);
+    }
+    cairo_restore(cr);
+}
+
+/* ---- output ---- */
+
+static int finish_rename(const char *tmp, const char *path, char *err, size_t errlen)
+{
+    if (rename(tmp, path) != 0) {
+        snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, path, strerror(errno));
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
+               void *ctx, char *err, size_t errlen)
+{
+    char path[4096], tmp[4200];
+    /* PDF */
+    snprintf(path, sizeof path, "%s.pdf", base);
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    cairo_surface_t *pdf = cairo_pdf_surface_create(tmp, width, height);
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_MOD_DATE, "2000-01-01T00:00:00Z");
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATOR, "suslov companion (Cairo)");
+    cairo_t *cr = cairo_create(pdf);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    draw(cr, ctx);
+    cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(pdf);
+    if (st == CAIRO_STATUS_SUCCESS)
+        st = cairo_surface_status(pdf);
+    cairo_surface_destroy(pdf);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "drawing %s failed: %s", path, cairo_status_to_string(st));
+        unlink(tmp);
+        return -1;
+    }
+    if (finish_rename(tmp, path, err, errlen) != 0)
+        return -1;
+    /* PNG at PLOT_PNG_DPI */
+    const double s = PLOT_PNG_DPI / 72.0;
+    snprintf(path, sizeof path, "%s.png", base);
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
+    cr = cairo_create(img);
+    cairo_scale(cr, s, s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    draw(cr, ctx);
+    st = cairo_status(cr);
+    cairo_destroy(cr);
+    if (st == CAIRO_STATUS_SUCCESS)
+        st = cairo_surface_write_to_png(img, tmp);
+    cairo_surface_destroy(img);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
+        unlink(tmp);
+        return -1;
+    }
+    return finish_rename(tmp, path, err, errlen);
+}
