@@ -12,3 +12,19 @@ void suslov_midpoint_sweeps(const suslov_model *m, double eps, int n, const doub
         x[1] = w[1] + eps * f[1];
     }
 }
+
+void suslov_midpoint_sweeps_run(const suslov_model *m, double eps, int n, const double w0[2], long N,
+                                double *energy, double wN[2])
+{
+    double w[2] = {w0[0], w0[1]};
+    energy[0] = suslov_energy(m, w);
+    for (long k = 0; k < N; k++) {
+        double x[2];
+        suslov_midpoint_sweeps(m, eps, n, w, x);
+        w[0] = x[0];
+        w[1] = x[1];
+        energy[k + 1] = suslov_energy(m, w);
+    }
+    wN[0] = w[0];
+    wN[1] = w[1];
+}

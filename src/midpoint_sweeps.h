@@ -10,4 +10,8 @@
 
 void suslov_midpoint_sweeps(const suslov_model *m, double eps, int n, const double w[2], double x[2]);
 
+/* N steps from w0; energy[k] = E(w_k) for k = 0..N (caller's array, N+1 long), and w_N. */
+void suslov_midpoint_sweeps_run(const suslov_model *m, double eps, int n, const double w0[2], long N,
+                                double *energy, double wN[2]);
+
 #endif

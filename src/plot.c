@@ -80,8 +80,10 @@ void plot_axes_cell(plot_axes *ax, cairo_t *cr, double width, double height, int
     double x, y, w, h;
     plot_cell(width, height, rows, cols, idx, &x, &y, &w, &h);
     plot_pad(&y0, &y1, ylog);
-    if (xlog)
-        plot_pad(&x0, &x1, 1);
+    if (xlog) { /* a whole decade of padding would leave the data in a corner */
+        x0 /= 1.25;
+        x1 *= 1.25;
+    }
     plot_axes_init(ax, cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog);
 }
 
@@ -394,10 +396,10 @@ void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
     cairo_restore(cr);
 }
 
-void plot_slope(const plot_axes *ax, double xa, double ya, double xb, double slope, const char *label)
+void plot_slope(const plot_axes *ax, double xa, double xb, double yb, double slope, const char *label)
 {
     cairo_t *cr = ax->cr;
-    const double yb = ya * pow(xb / xa, slope);
+    const double ya = yb * pow(xa / xb, slope);
     cairo_save(cr);
     clip_to(ax);
     const plot_style st = plot_style_of(PLOT_GREY, 0.8, 1, PLOT_NONE, 0, NULL);
@@ -405,9 +407,9 @@ void plot_slope(const plot_axes *ax, double xa, double ya, double xb, double slo
     cairo_move_to(cr, map_x(ax, xa), map_y(ax, ya));
     cairo_line_to(cr, map_x(ax, xb), map_y(ax, yb));
     cairo_stroke(cr);
-    if (label) {
+    if (label) { /* at the left end, so that segments sharing a right end keep apart */
         cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-        plot_text(cr, map_x(ax, xb) + 2.0, map_y(ax, yb), label, 7.5, 0.0, 0.5, 0);
+        plot_text(cr, map_x(ax, xa) - 2.0, map_y(ax, ya), label, 7.5, 1.0, 0.5, 0);
     }
     cairo_restore(cr);
 }

@@ -60,8 +60,8 @@ void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t 
 /* A legend box: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right, 4 middle-left,
  * 5 middle-right. */
 void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner);
-/* A dashed segment of slope `slope` in log-log axes through (xa, ya) to xb, labelled. */
-void plot_slope(const plot_axes *ax, double xa, double ya, double xb, double slope, const char *label);
+/* A dashed grey segment of slope `slope` in log-log axes from xa to (xb, yb), labelled at xa. */
+void plot_slope(const plot_axes *ax, double xa, double xb, double yb, double slope, const char *label);
 void plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
                double valign, int bold);
 

@@ -10,6 +10,7 @@
 #include "convergence.h"
 #include "driver.h"
 #include "exact.h"
+#include "claims_figures.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "orderfit.h"
@@ -29,16 +30,11 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NMETHOD SUSLOV_CONV_NMETHOD
 #define T_GLOBAL 10.0
 
-/* The fit window. eps <= 2^-2 keeps k eps <= 0.036 (k = 0.145 is the rate of the motion), so
- * the next term of the error expansion bends the log-log line by a few percent at most.
- * Points below a thousand times the round-off of the quantity itself (u times its size:
- * |w| <= 0.8, |lambda| <= 0.04, |R| entries <= 1) are left out, so that round-off moves no
- * fitted point by more than 0.1%. */
-#define FIT_EPS_MAX 0.25
-#define FIT_FLOOR_REL (1000.0 * 2.220446049250313e-16)
-#define SIZE_W 0.8
-#define SIZE_LAMBDA 0.04
-#define SIZE_R 1.0
+#define FIT_EPS_MAX SUSLOV_FIT_EPS_MAX
+#define FIT_FLOOR_REL SUSLOV_FIT_FLOOR_REL
+#define SIZE_W SUSLOV_SIZE_W
+#define SIZE_LAMBDA SUSLOV_SIZE_LAMBDA
+#define SIZE_R SUSLOV_SIZE_R
 /* An order is an integer; a tenth of the gap between consecutive orders tells p from p +- 1
  * unambiguously and leaves room for the O(k eps) bend over the window. */
 #define ORDER_TOL 0.1
@@ -331,12 +327,12 @@ static void preservation_claims(void)
         defect = fmax(defect, so3_orth_defect(R));
     }
     /* A hundred times the bounds asserted above: the measurement can tell them apart. */
-    ledger_add("negative-control-unreduced-rk4", "(extension)",
+    ledger_add_bound("negative-control-unreduced-rk4", "(extension)",
                "RK4 on (LdAeqs), 1e6 steps of eps = 0.01: max |R^T R - I| must exceed 100x the 1e-12 bound above",
-               defect, 1e-10, 0.0, LEDGER_EXTENSION_MIN);
-    ledger_add("negative-control-unreduced-rk4-constraint", "(extension)",
+               defect, 1e-10, 1, LEDGER_EXTENSION);
+    ledger_add_bound("negative-control-unreduced-rk4-constraint", "(extension)",
                "RK4 on (LdAeqs), same run: max |<e3, vee(R^T V)>| must exceed 100x the 1e-14 bound above",
-               mu, 1e-12, 0.0, LEDGER_EXTENSION_MIN);
+               mu, 1e-12, 1, LEDGER_EXTENSION);
 
     /* Why the reconstruction is accumulated with compensated summation (reconstruct.h): the
      * plain product R_{k+1} = R_k cay(eps w_k) along the rk4 run drifts linearly, about u/2
@@ -355,9 +351,9 @@ static void preservation_claims(void)
         w[1] = x[1];
     }
     naive = so3_orth_defect(Rn);
-    ledger_add("so3-defect-plain-product", "(implementation)",
+    ledger_add_bound("so3-defect-plain-product", "(implementation)",
                "|R_N^T R_N - I| after 1e6 steps of rk4 with the plain product R_k cay(eps w_k): above the 1e-12 bound",
-               naive, 1e-12, 0.0, LEDGER_EXTENSION_MIN);
+               naive, 1e-12, 1, LEDGER_EXTENSION);
 }
 
 int main(int argc, char **argv)
@@ -379,6 +375,7 @@ int main(int argc, char **argv)
     global_claims();
     unreduced_claims();
     preservation_claims();
+    figure_claims(&m, &ex);
 
     /* The rk8pd reference attitude against an independent Magnus integrator: its error must
      * sit far (100x) below the smallest SO(3) error that entered an order fit, for the local

@@ -17,8 +17,8 @@ typedef struct {
 static ledger_row rows[LEDGER_MAX];
 static int nrows;
 
-void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
-                double expected, double tol, ledger_assert truth)
+static void add_row(const char *id, const char *paper_ref, const char *quantity, double measured,
+                    double expected, double tol, int holds, ledger_assert truth)
 {
     if (nrows == LEDGER_MAX) {
         fprintf(stderr, "ledger: more than %d lines\n", LEDGER_MAX);
@@ -31,14 +31,25 @@ void ledger_add(const char *id, const char *paper_ref, const char *quantity, dou
     r->measured = measured;
     r->expected = expected;
     r->tol = tol;
-    const int within = fabs(measured - expected) <= tol;  /* false for NaN */
-    if (truth == LEDGER_EXTENSION || truth == LEDGER_EXTENSION_MIN) {
+    if (truth == LEDGER_EXTENSION) {
         strcpy(r->verdict, "extension");
-        r->pass = truth == LEDGER_EXTENSION ? within : measured >= expected;
+        r->pass = holds;
     } else {
-        strcpy(r->verdict, within ? "reproduced" : "not reproduced");
-        r->pass = isfinite(measured) && within == (truth == LEDGER_REPRODUCED);
+        strcpy(r->verdict, holds ? "reproduced" : "not reproduced");
+        r->pass = isfinite(measured) && holds == (truth == LEDGER_REPRODUCED);
     }
+}
+
+void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
+                double expected, double tol, ledger_assert truth)
+{
+    add_row(id, paper_ref, quantity, measured, expected, tol, fabs(measured - expected) <= tol, truth);
+}
+
+void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
+                      double bound, int at_least, ledger_assert truth)
+{
+    add_row(id, paper_ref, quantity, measured, bound, 0.0, at_least ? measured >= bound : measured <= bound, truth);
 }
 
 int ledger_finish(const char *tsv_path)

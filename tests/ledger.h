@@ -9,8 +9,7 @@
 typedef enum {
     LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
     LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol */
-    LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
-    LEDGER_EXTENSION_MIN   /* our own claim that measured >= expected (a negative control); tol unused */
+    LEDGER_EXTENSION       /* our own claim beyond the paper: |measured - expected| <= tol */
 } ledger_assert;
 
 /* Records one line. The verdict column follows from the numbers alone ("reproduced" or "not
@@ -18,6 +17,12 @@ typedef enum {
  * what `truth` asserts, which the caller states and justifies next to the call. */
 void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
                 double expected, double tol, ledger_assert truth);
+
+/* The same for a one-sided claim: it holds when measured >= bound (at_least) or measured <=
+ * bound (otherwise); the TSV shows the bound as "expected" and tolerance 0, and the quantity
+ * text must say which side is claimed. */
+void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
+                      double bound, int at_least, ledger_assert truth);
 
 /* Writes the TSV (through a temporary file) and prints the table followed by
  * "claims: N passed, N failed". Returns the number of failed checks, or -1 on a write error. */
