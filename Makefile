@@ -4,6 +4,7 @@
 #   make            build build/suslov, the figure programs and the test programs
 #   make check      unit tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
+#   make bench      work-precision and per-step cost against GSL (data/bench.csv)
 #   make deps       install missing Debian packages
 #   WERROR=1        treat warnings as errors (CI)
 #   SAN=1           build into build/san with -fsanitize=address,undefined
@@ -29,15 +30,15 @@ ALL_CFLAGS = $(WARN) $(CFLAGS) -Isrc $(PKG_CFLAGS) -MMD -MP
 FIG_SRC  := $(wildcard src/figure_*.c)
 FIGS     := $(FIG_SRC:src/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
-LIB_SRC  := $(filter-out src/suslov.c $(FIG_SRC),$(wildcard src/*.c))
+LIB_SRC  := $(filter-out src/suslov.c src/bench.c $(FIG_SRC),$(wildcard src/*.c))
 LIB_OBJ  := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libsuslov.a
 TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
-.PHONY: all deps check figures clean
+.PHONY: all deps check figures bench clean
 .SECONDARY:
-all: $(BUILD)/suslov $(FIG_BIN) $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(BUILD)/bench $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 deps:
 	@sh tools/deps.sh
@@ -55,6 +56,9 @@ $(LIB): $(LIB_OBJ)
 	$(AR) rcs $@ $^
 
 $(BUILD)/suslov: $(BUILD)/obj/suslov.o $(LIB)
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+
+$(BUILD)/bench: $(BUILD)/obj/bench.o $(LIB)
 	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 $(BUILD)/figure_%: $(BUILD)/obj/figure_%.o $(LIB)
@@ -76,6 +80,12 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_%
 
 check: all
 	@SUSLOV_SAN=$(filter 1,$(SAN)) sh tests/run.sh $(BUILD)
+
+# Speed and accuracy: data/bench.csv, figures/work_precision and figures/step_cost, and the
+# PASS/MISS lines of the speed targets (never a failing test).
+bench: all
+	@mkdir -p figures data
+	@sh tools/bench.sh $(BUILD) "$(CFLAGS)"
 
 clean:
 	rm -rf build

@@ -29,22 +29,12 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
     }
     m->b[0] = I[6];
     m->b[1] = I[7];
+    m->inv_det_m = 1.0 / m->det_m;
+    m->fA[0][0] = -I[1] / m->det_m; /* -I12 */
+    m->fA[0][1] = -I[4] / m->det_m; /* -I22 */
+    m->fA[1][0] = I[0] / m->det_m;  /*  I11 */
+    m->fA[1][1] = I[3] / m->det_m;  /*  I21 */
     return 0;
-}
-
-/* c(w) = I_3i w_i, i in {1,2}: the factor shared by (ContDyn) and (LagMult). */
-double suslov_c(const suslov_model *m, const double w[2])
-{
-    return m->b[0] * w[0] + m->b[1] * w[1];
-}
-
-/* (ContDyn): w' = f(w). */
-void suslov_contdyn(const suslov_model *m, const double w[2], double f[2])
-{
-    const double (*I)[3] = m->I;
-    const double c = suslov_c(m, w) / m->det_m;
-    f[0] = -(I[1][1] * w[1] + I[0][1] * w[0]) * c;
-    f[1] = (I[1][0] * w[1] + I[0][0] * w[0]) * c;
 }
 
 /* Df of (ContDyn), for the Newton iterations and linear stability. */
@@ -58,25 +48,6 @@ void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[
     J[0][1] = -(I[1][1] * c + p * m->b[1]) / d;
     J[1][0] = (I[0][0] * c + q * m->b[0]) / d;
     J[1][1] = (I[1][0] * c + q * m->b[1]) / d;
-}
-
-/* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the
- * O_0 of the proof of PropoFinal. */
-double suslov_lagmult_o0(const suslov_model *m, const double w[2])
-{
-    const double (*I)[3] = m->I;
-    return suslov_c(m, w) / m->det_m
-         * ((I[2][1] * I[1][0] - I[2][0] * I[1][1]) * w[1]
-            + (I[2][1] * I[0][0] - I[2][0] * I[0][1]) * w[0]);
-}
-
-/* (LagMult): lambda(w). */
-double suslov_lagmult(const suslov_model *m, const double w[2])
-{
-    const double (*I)[3] = m->I;
-    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
-         - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
-         + suslov_lagmult_o0(m, w);
 }
 
 /* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). */

@@ -10,6 +10,8 @@ typedef struct {
     double I[3][3];  /* the inertia tensor, rows as printed */
     double det_m;    /* |I_m| */
     double b[2];     /* (I31, I32): c(w) = I_3i w_i drives the motion */
+    double fA[2][2]; /* (ContDyn) as f = c(w) fA w: the printed coefficients over |I_m| */
+    double inv_det_m;
 } suslov_model;
 
 /* The paper's body: I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] and w(0) = (0.4, 0.5). */
@@ -20,11 +22,41 @@ extern const double SUSLOV_PAPER_OMEGA0[2];
  * symmetric positive definite. */
 int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errlen);
 
-double suslov_c(const suslov_model *m, const double w[2]);
-void suslov_contdyn(const suslov_model *m, const double w[2], double f[2]);
+/* c(w) = I_3i w_i, i in {1,2}: the factor shared by (ContDyn) and (LagMult). */
+static inline double suslov_c(const suslov_model *m, const double w[2])
+{
+    return m->b[0] * w[0] + m->b[1] * w[1];
+}
+
+/* (ContDyn): w1' = -(I22 w2 + I12 w1) c / |I_m|,  w2' = (I21 w2 + I11 w1) c / |I_m|.
+ * Inline, with the division done once in suslov_model_init: every stepper evaluates it. */
+static inline void suslov_contdyn(const suslov_model *m, const double w[2], double f[2])
+{
+    const double c = suslov_c(m, w);
+    f[0] = c * (m->fA[0][0] * w[0] + m->fA[0][1] * w[1]);
+    f[1] = c * (m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
+}
+
 void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[2][2]);
-double suslov_lagmult(const suslov_model *m, const double w[2]);
-double suslov_lagmult_o0(const suslov_model *m, const double w[2]);
+
+/* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the
+ * O_0 of the proof of PropoFinal. */
+static inline double suslov_lagmult_o0(const suslov_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    return suslov_c(m, w) * m->inv_det_m
+         * ((I[2][1] * I[1][0] - I[2][0] * I[1][1]) * w[1]
+            + (I[2][1] * I[0][0] - I[2][0] * I[0][1]) * w[0]);
+}
+
+/* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
+static inline double suslov_lagmult(const suslov_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
+         - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
+         + suslov_lagmult_o0(m, w);
+}
 double suslov_energy(const suslov_model *m, const double w[2]);
 
 #endif

@@ -61,7 +61,7 @@ void plot_pad(double *lo, double *hi, int log)
 void plot_axes_init(plot_axes *ax, cairo_t *cr, double x, double y, double w, double h,
                     double x0, double x1, double y0, double y1, int xlog, int ylog)
 {
-    *ax = (plot_axes){cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog};
+    *ax = (plot_axes){cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog, 0};
 }
 
 void plot_cell(double width, double height, int rows, int cols, int idx, double *x, double *y,
@@ -218,7 +218,8 @@ void plot_frame(const plot_axes *ax, const char *xlabel, const char *ylabel, con
     cairo_set_line_width(cr, 0.8);
     cairo_rectangle(cr, ax->x, ax->y, ax->w, ax->h);
     cairo_stroke(cr);
-    axis_ticks(ax, 0);
+    if (!ax->no_xticks)
+        axis_ticks(ax, 0);
     axis_ticks(ax, 1);
     if (xlabel)
         plot_text(cr, ax->x + 0.5 * ax->w, ax->y + ax->h + 16.0, xlabel, LABEL_FONT, 0.5, 0.0, 0);

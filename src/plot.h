@@ -16,6 +16,7 @@ typedef struct {
     double x, y, w, h;      /* plot area on the page, points */
     double x0, x1, y0, y1;  /* data range */
     int xlog, ylog;
+    int no_xticks;  /* categories on x (a bar chart): no numeric ticks */
 } plot_axes;
 
 enum { PLOT_NONE = 0, PLOT_DOT, PLOT_CIRCLE, PLOT_SQUARE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS };

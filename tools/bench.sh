@@ -1,0 +1,23 @@
+#!/bin/sh
+# make bench: the benchmark program, then the wall-clock targets of `make check` and
+# `make figures`, with the machine described. Prints PASS/MISS lines; never fails on a MISS.
+set -eu
+B=${1:-build}
+CFLAGS_USED=${2:-}
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'),"
+echo "         $(cc --version | head -1), CFLAGS: $CFLAGS_USED"
+echo
+"$B/bench" figures data
+secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
+t0=$(date +%s.%N)
+sh tests/run.sh "$B" >/dev/null 2>&1 || echo "  (make check reported failures)"
+t1=$(date +%s.%N)
+tmp=$(mktemp -d)
+for f in "$B"/figure_*; do "$f" "$tmp" "$tmp" >/dev/null; done
+t2=$(date +%s.%N)
+rm -rf "$tmp"
+c=$(secs "$t0" "$t1") f=$(secs "$t1" "$t2")
+awk -v c="$c" -v f="$f" 'BEGIN {
+    printf "  %s make check (tests + claims ledger, built) in %s s (target < 60 s)\n", (c < 60 ? "PASS" : "MISS"), c
+    printf "  %s make figures (every figure program, built) in %s s (target < 120 s)\n", (f < 120 ? "PASS" : "MISS"), f
+}'
