@@ -67,7 +67,8 @@ $(BUILD)/figure_%: $(BUILD)/obj/figure_%.o $(LIB)
 $(BUILD)/test_%: $(BUILD)/tobj/test_%.o $(LIB)
 	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
-$(CLAIMS): $(BUILD)/tobj/claims.o $(BUILD)/tobj/ledger.o $(BUILD)/tobj/claims_figures.o $(LIB)
+CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/claims*.c) tests/ledger.c)
+$(CLAIMS): $(CLAIMS_OBJ) $(LIB)
 	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again

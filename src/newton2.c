@@ -21,6 +21,7 @@ int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const
                   double x[2], suslov_step_stats *st)
 {
     double g[2], J[2][2], scale = 0.0, x_ok[2] = {0.0, 0.0}, res_ok = INFINITY, scale_ok = 0.0;
+    double prev = INFINITY, x_best[2] = {x[0], x[1]}, res_best = INFINITY;
     int polishing = 0;
     st->iterations = 0;
     st->det = NAN;
@@ -41,6 +42,23 @@ int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const
         }
         if (!isfinite(st->residual) || !isfinite(scale))
             return SUSLOV_STEP_NO_CONVERGENCE;
+        if (st->residual < res_best) {
+            res_best = st->residual;
+            x_best[0] = x[0];
+            x_best[1] = x[1];
+        }
+        /* Stagnation at the round-off floor: near a large or ill-conditioned Jacobian |G| cannot
+         * fall below ~ |J| ulp(x) times a few, which may sit above NEWTON2_RTOL * scale. When
+         * an iteration no longer halves |G| and |G| is within NEWTON2_STAGNATION * scale, the
+         * best iterate is the root to working precision. */
+        if (!polishing && st->residual > NEWTON2_RTOL * scale && st->residual <= NEWTON2_STAGNATION * scale &&
+            st->residual > 0.5 * prev) {
+            x[0] = x_best[0];
+            x[1] = x_best[1];
+            st->residual = res_best;
+            return SUSLOV_STEP_OK;
+        }
+        prev = st->residual;
         /* Once the residual is at round-off, one more correction takes x from "within the
          * tolerance" to the round-off floor; without it the tolerance, not round-off, sets a
          * bias that accumulates over many steps. */

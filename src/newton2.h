@@ -7,7 +7,8 @@
 
 /* Iterates from the initial guess in x. Returns SUSLOV_STEP_OK when |G|_inf falls to
  * NEWTON2_RTOL * scale and one more (polishing) correction has been applied, or when a
- * correction falls below the spacing of doubles at x, SUSLOV_STEP_SINGULAR when the Jacobian (the (REGLOC) block) is
+ * correction falls below the spacing of doubles at x, or when the iteration stagnates at a
+ * residual within NEWTON2_STAGNATION * scale (round-off amplified by the Jacobian), SUSLOV_STEP_SINGULAR when the Jacobian (the (REGLOC) block) is
  * singular to working precision, SUSLOV_STEP_NO_CONVERGENCE after NEWTON2_MAXIT steps. */
 int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[2],
                   double x[2], suslov_step_stats *st);
@@ -17,5 +18,7 @@ int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const
  * and no more. */
 #define NEWTON2_RTOL (16.0 * 2.220446049250313e-16)
 #define NEWTON2_MAXIT 50
+/* The widest residual accepted as round-off when Newton stagnates: 1000 u times the scale. */
+#define NEWTON2_STAGNATION (1000.0 * 2.220446049250313e-16)
 
 #endif

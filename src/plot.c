@@ -352,6 +352,18 @@ void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t 
     cairo_restore(cr);
 }
 
+void plot_rect(const plot_axes *ax, double x0, double x1, double y0, double y1, const double rgb[3])
+{
+    cairo_t *cr = ax->cr;
+    cairo_save(cr);
+    clip_to(ax);
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    const double px0 = map_x(ax, x0), px1 = map_x(ax, x1), py0 = map_y(ax, y0), py1 = map_y(ax, y1);
+    cairo_rectangle(cr, fmin(px0, px1), fmin(py0, py1), fabs(px1 - px0), fabs(py1 - py0));
+    cairo_fill(cr);
+    cairo_restore(cr);
+}
+
 void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
 {
     cairo_t *cr = ax->cr;

@@ -58,6 +58,8 @@ void plot_series(const plot_axes *ax, const double *x, const double *y, size_t n
 /* Markers only, at every `every`-th point (so 10^5 points do not become a smear). */
 void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t n, size_t every,
                   const plot_style *st);
+/* A filled rectangle [x0, x1] x [y0, y1] in data coordinates (a cell of a map), clipped. */
+void plot_rect(const plot_axes *ax, double x0, double x1, double y0, double y1, const double rgb[3]);
 /* A legend box: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right, 4 middle-left,
  * 5 middle-right. */
 void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner);

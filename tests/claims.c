@@ -11,6 +11,7 @@
 #include "driver.h"
 #include "exact.h"
 #include "claims_figures.h"
+#include "claims_stability.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "orderfit.h"
@@ -376,6 +377,7 @@ int main(int argc, char **argv)
     unreduced_claims();
     preservation_claims();
     figure_claims(&m, &ex);
+    stability_claims(&ex);
 
     /* The rk8pd reference attitude against an independent Magnus integrator: its error must
      * sit far (100x) below the smallest SO(3) error that entered an order fit, for the local

@@ -86,6 +86,17 @@ check "solver failure: exit 3 and the message names step 1, t = 1000 and the res
 check "solver failure: the output file holds the header and row 0, complete" \
     sh -c "test \$(wc -l <'$T/fail.csv') = 2 && tail -1 '$T/fail.csv' | grep -q '^0,0,4,5,0,.*,1\$' && ! ls '$T'/fail.csv.tmp.* >/dev/null 2>&1"
 
+# a failure after many good steps (from the stability map, src/stability.h: the variational
+# step at h = eps k = 158, where the explicit predictor lands ~1e5 away and Newton runs out of
+# iterations): every row before it is in the file, complete
+"$S" --method variational --eps 1087.1941548935877 --steps 1000 --omega0 -0.37395729723339016,-0.52077483600674224 \
+    --output "$T/late.csv" 2>"$T/err"; rc=$?
+rows=$(tail -n +2 "$T/late.csv" | wc -l)
+last=$(tail -1 "$T/late.csv" | cut -d, -f1)
+nf=$(awk -F, 'NR > 1 && NF != 16 { bad++ } END { print bad + 0 }' "$T/late.csv")
+check "late solver failure: exit 3, 'variational step 175' in the message, rows k = 0..174 complete ($(cat "$T/err"))" \
+    sh -c "test $rc = 3 && grep -q 'variational step 175 (t = ' '$T/err' && test $rows = 175 -a $last = 174 -a $nf = 0"
+
 # --output to a device writes through and leaves the device alone
 "$S" --method rk4 --eps 0.1 --steps 5 --output /dev/null; rc=$?
 check "--output /dev/null works and /dev/null is still a character device" test "$rc" = 0 -a -c /dev/null

@@ -1,0 +1,145 @@
+/* Where each integrator stops working: a map over the dimensionless step h = eps k and the
+ * initial angle on the energy ellipse, coloured by the class of the run (stability.h), with
+ * the linear stability limits drawn on top. Usage: figure_stability FIGDIR DATADIR */
+#include "atomic_file.h"
+#include "fig_output.h"
+#include "plot.h"
+#include "stability.h"
+
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define NH 31      /* h = 10^(-3 + 0.2 i) */
+#define NANGLE 36  /* every 10 degrees */
+#define NM 4
+
+typedef struct {
+    double hs[NH];
+    stab_result res[NM][NH * NANGLE];
+    double limit[NM];
+} stab_fig;
+
+static const double CLASS_RGB[STAB_NCLASS][3] = {
+    {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
+
+static void draw(cairo_t *cr, void *vctx)
+{
+    const stab_fig *f = vctx;
+    const double W = 600, H = 520, step = pow(10.0, 0.1);
+    plot_text(cr, W / 2, 14, "Where each method stops working: step h = \xce\xb5k against the initial angle", 11, 0.5, 0.5, 1);
+    static const char *letters[NM] = {"(a)", "(b)", "(c)", "(d)"};
+    for (int m = 0; m < NM; m++) {
+        plot_axes ax;
+        plot_axes_cell(&ax, cr, W, H - 40, 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0, 360.0, 1, 0);
+        ax.x0 = f->hs[0] / step;
+        ax.x1 = f->hs[NH - 1] * step;
+        ax.y0 = 0.0;
+        ax.y1 = 360.0;
+        for (int i = 0; i < NH; i++)
+            for (int a = 0; a < NANGLE; a++)
+                plot_rect(&ax, f->hs[i] / step, f->hs[i] * step, 10.0 * a, 10.0 * (a + 1),
+                          CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
+        char title[96];
+        snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", suslov_stepper_get(m)->name);
+        plot_frame(&ax, title, "initial angle \xce\xb8\xe2\x82\x80 (degrees)", letters[m]);
+        if (isfinite(f->limit[m])) {
+            const double lx[2] = {f->limit[m], f->limit[m]}, ly[2] = {0.0, 360.0};
+            const plot_style ls = plot_style_of(PLOT_BLACK, 1.4, 1, PLOT_NONE, 0, NULL);
+            plot_series(&ax, lx, ly, 2, 1, &ls);
+            char lab[64];
+            snprintf(lab, sizeof lab, "linear limit h = %.4g", f->limit[m]);
+            plot_text(cr, ax.x + 4, ax.y + 10, lab, 8.0, 0.0, 0.5, 0);
+        } else {
+            plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
+        }
+    }
+    plot_style leg[STAB_NCLASS];
+    for (int c = 0; c < STAB_NCLASS; c++)
+        leg[c] = plot_style_of(CLASS_RGB[c], 0, 0, PLOT_DOT, 7, STAB_NAMES[c]);
+    for (int c = 0; c < STAB_NCLASS; c++) { /* a horizontal legend along the bottom */
+        plot_axes la;
+        plot_axes_init(&la, cr, 40 + 112 * c, H - 34, 110, 20, 0, 1, 0, 1, 0, 0);
+        plot_legend(&la, &leg[c], 1, 0);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: figure_stability FIGDIR DATADIR\n");
+        return 2;
+    }
+    gsl_set_error_handler_off();
+    char err[256], path[4096];
+    suslov_model model;
+    suslov_exact paper;
+    suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    suslov_exact_init(&paper, &model, SUSLOV_PAPER_OMEGA0);
+    stab_fig *f = malloc(sizeof *f);
+    if (!f)
+        return 1;
+    for (int i = 0; i < NH; i++)
+        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
+    int unclassified = 0;
+    for (int m = 0; m < NM; m++) {
+        suslov_stability_map(&paper, suslov_stepper_get(m), f->hs, NH, NANGLE, f->res[m]);
+        f->limit[m] = suslov_linear_limit(suslov_stepper_get(m));
+        for (int j = 0; j < NH * NANGLE; j++) {
+            const stab_result *r = &f->res[m][j];
+            unclassified += r->cls < STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+        }
+    }
+    if (unclassified) {
+        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n", unclassified);
+        return 1;
+    }
+    atomic_file af;
+    if (atomic_file_open(&af, fig_path(path, sizeof path, argv[2], "stability", "csv"), err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    fprintf(af.fp, "method,h,theta0_degrees,class,class_name,failed_step,final_relative_error\n");
+    for (int m = 0; m < NM; m++)
+        for (int i = 0; i < NH; i++)
+            for (int a = 0; a < NANGLE; a++) {
+                const stab_result *r = &f->res[m][i * NANGLE + a];
+                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", suslov_stepper_get(m)->name, f->hs[i],
+                        (2.0 * 3.14159265358979323846 * a / NANGLE + STAB_ANGLE0) * 180.0 / 3.14159265358979323846,
+                        r->cls, STAB_NAMES[r->cls], r->step, r->final_err);
+            }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    snprintf(path, sizeof path, "%s/stability", argv[1]);
+    if (plot_write(path, 600, 520, draw, f, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    char cap[3072];
+    snprintf(cap, sizeof cap,
+             "Stability map. Regenerate: make figures (src/figure_stability.c; classes in src/stability.h).\n"
+             "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
+             "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
+             "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run lasts\n"
+             "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
+             "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
+             "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = Newton fails or lands on another root than\n"
+             "the continued branch; regularity lost = the (REGLOC) block is singular or has changed sign.\n"
+             "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
+             "Euler is linearly stable for h < 2 and RK4 for h < %.6f (dashed lines; measured by bisection in the\n"
+             "claims ledger). Far from the rotation the nonlinear transient blows up earlier (h ~ 1 for Euler).\n"
+             "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
+             "conserves E: every run is good up to h ~ 3. From h ~ 4 on, for starts on part of the ellipse, its\n"
+             "quadratic step equation, solved by Newton from an explicit predictor whose error grows like h^3,\n"
+             "lands on another root than the branch continued from eps = 0 (solver failure) or on a root past a\n"
+             "fold of that branch (regularity lost); the runs that stay on the branch remain good. The variational\n"
+             "step has no linear limit either (its linearisation at the rotation has spectral radius < 1 for all\n"
+             "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
+             "its cubic step equation loses the continued branch from h ~ 150.\n"
+             "Data: data/stability.csv.\n",
+             paper.k, NH, STAB_BRANCH_H, f->limit[2]);
+    return fig_write_text(fig_path(path, sizeof path, argv[1], "stability", "txt"), cap) != 0;
+}

@@ -1,0 +1,162 @@
+#include "stability.h"
+
+#include "newton2.h"
+
+#include <gsl/gsl_poly.h>
+
+#include <math.h>
+
+const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure", "regularity lost"};
+
+/* Continuation of the implicit step in eps from 0 (root x = w) to eps: the physical branch.
+ * Returns 0 with the root in x, or -1 when a continuation step fails (a fold). */
+static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2], double x[2])
+{
+    double prev[2] = {w[0], w[1]}, cur[2] = {w[0], w[1]};
+    for (int j = 1; j <= STAB_CONTINUATION_STEPS; j++) {
+        const double e = eps * j / STAB_CONTINUATION_STEPS;
+        double guess[2] = {2.0 * cur[0] - prev[0], 2.0 * cur[1] - prev[1]}; /* linear extrapolation */
+        if (j == 1)
+            suslov_predict(m, e, w, guess);
+        suslov_step_stats s;
+        if (newton2_solve(st->residual, m, e, w, guess, &s) != SUSLOV_STEP_OK || !(s.det > 0.0))
+            return -1;
+        prev[0] = cur[0];
+        prev[1] = cur[1];
+        cur[0] = guess[0];
+        cur[1] = guess[1];
+    }
+    x[0] = cur[0];
+    x[1] = cur[1];
+    return 0;
+}
+
+void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st, double eps, long N,
+                          int check_branch, stab_result *res)
+{
+    const suslov_model *m = ex->model;
+    double w[3] = {ex->w0[0], ex->w0[1], 0.0}, winf[2];
+    const double r0 = hypot(w[0], w[1]);
+    suslov_exact_limit(ex, winf);
+    *res = (stab_result){STAB_GOOD, 0, NAN};
+    for (long k = 1; k <= N; k++) {
+        double x[3], lam;
+        suslov_step_stats s;
+        const int status = st->apply(m, eps, w, x, &lam, &s);
+        res->step = k;
+        if (status == SUSLOV_STEP_SINGULAR || (st->residual && status == SUSLOV_STEP_OK && !(s.det > 0.0))) {
+            res->cls = STAB_REGULARITY;
+            return;
+        }
+        if (status != SUSLOV_STEP_OK) {
+            res->cls = STAB_SOLVER;
+            return;
+        }
+        if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > STAB_BLOWUP_FACTOR * r0) {
+            res->cls = STAB_BLOWUP;
+            return;
+        }
+        if (check_branch && st->residual) {
+            double xc[2];
+            if (continue_root(m, st, eps, w, xc) != 0) {
+                res->cls = STAB_REGULARITY;
+                return;
+            }
+            if (hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + r0)) {
+                res->cls = STAB_SOLVER;
+                return;
+            }
+        }
+        w[0] = x[0];
+        w[1] = x[1];
+    }
+    res->step = 0;
+    res->final_err = hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
+    res->cls = res->final_err <= STAB_GOOD_TOL ? STAB_GOOD : STAB_WRONG_LIMIT;
+}
+
+void suslov_ellipse_point(const suslov_exact *ref, double theta, double w[2])
+{
+    const double u1 = ref->r * cos(theta), u2 = ref->r * sin(theta);
+    w[1] = u2 / ref->l22;
+    w[0] = (u1 - ref->l21 * w[1]) / ref->l11;
+}
+
+/* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? */
+static int returns(const suslov_exact *ex, const suslov_stepper_type *st, double h)
+{
+    const double theta = atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
+    double w[3] = {0.0, 0.0, 0.0};
+    suslov_ellipse_point(ex, theta, w);
+    const double c0 = fabs(suslov_c(ex->model, w)), eps = h / ex->k;
+    for (int k = 0; k < 4000; k++) {
+        double x[3], lam;
+        suslov_step_stats s;
+        if (st->apply(ex->model, eps, w, x, &lam, &s) != SUSLOV_STEP_OK || !isfinite(x[0]) || !isfinite(x[1]))
+            return 0;
+        w[0] = x[0];
+        w[1] = x[1];
+    }
+    return fabs(suslov_c(ex->model, w)) < c0;
+}
+
+double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type *st, double lo, double hi)
+{
+    if (!returns(ex, st, lo) || returns(ex, st, hi))
+        return NAN;
+    while (hi - lo > 1e-4 * lo) {
+        const double mid = 0.5 * (lo + hi);
+        if (returns(ex, st, mid))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+long suslov_stability_steps(double h)
+{
+    return (long)fmin(40000.0, fmax(40.0 / h, 10.0 * h) + 50.0);
+}
+
+void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *st, const double *hs, int nh,
+                          int nangle, stab_result *results)
+{
+    for (int i = 0; i < nh; i++)
+        for (int a = 0; a < nangle; a++) {
+            double w0[2];
+            suslov_exact ex;
+            suslov_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + STAB_ANGLE0, w0);
+            suslov_exact_init(&ex, paper->model, w0);
+            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]), hs[i] >= STAB_BRANCH_H,
+                                 &results[i * nangle + a]);
+        }
+}
+
+/* Smallest positive real root of the polynomial a[0] + a[1] h + ... (n coefficients), or NAN. */
+static double smallest_positive_root(const double *a, int n)
+{
+    double z[8], best = NAN;
+    gsl_poly_complex_workspace *wsp = gsl_poly_complex_workspace_alloc((size_t)n);
+    if (wsp && gsl_poly_complex_solve(a, (size_t)n, wsp, z) == 0)
+        for (int i = 0; i < n - 1; i++)
+            if (fabs(z[2 * i + 1]) < 1e-12 && z[2 * i] > 0 && !(z[2 * i] >= best))
+                best = z[2 * i];
+    if (wsp)
+        gsl_poly_complex_workspace_free(wsp);
+    return best;
+}
+
+double suslov_linear_limit(const suslov_stepper_type *st)
+{
+    if (st == suslov_step_euler)
+        return 2.0;
+    if (st != suslov_step_rk4)
+        return NAN;
+    /* R(-h) = 1 - h + h^2/2 - h^3/6 + h^4/24 reaches |R| = 1 where R(-h) = +1, i.e. (dividing by h)
+     * -1 + h/2 - h^2/6 + h^3/24 = 0, or where R(-h) = -1: 2 - h + h^2/2 - h^3/6 + h^4/24 = 0. */
+    const double plus[4] = {-1.0, 0.5, -1.0 / 6.0, 1.0 / 24.0};
+    const double minus[5] = {2.0, -1.0, 0.5, -1.0 / 6.0, 1.0 / 24.0};
+    const double a = smallest_positive_root(plus, 4), b = smallest_positive_root(minus, 5);
+    return isnan(a) ? b : isnan(b) ? a : fmin(a, b);
+}

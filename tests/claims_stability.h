@@ -1,0 +1,9 @@
+/* The stability boundaries of each integrator, for the ledger. */
+#ifndef SUSLOV_CLAIMS_STABILITY_H
+#define SUSLOV_CLAIMS_STABILITY_H
+
+#include "exact.h"
+
+void stability_claims(const suslov_exact *paper);
+
+#endif
