@@ -22,7 +22,7 @@ CFLAGS  += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-fram
 LDFLAGS += -fsanitize=address,undefined
 endif
 # Deferred (=) so that pkg-config runs after `deps` has installed the packages.
-PKGS       = gsl cairo
+PKGS       = gsl cairo osmesa
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
 ALL_CFLAGS = $(WARN) $(CFLAGS) -Isrc $(PKG_CFLAGS) -MMD -MP
@@ -30,15 +30,15 @@ ALL_CFLAGS = $(WARN) $(CFLAGS) -Isrc $(PKG_CFLAGS) -MMD -MP
 FIG_SRC  := $(wildcard src/figure_*.c)
 FIGS     := $(FIG_SRC:src/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
-LIB_SRC  := $(filter-out src/suslov.c src/bench.c $(FIG_SRC),$(wildcard src/*.c))
+LIB_SRC  := $(filter-out src/suslov.c src/bench.c src/animation.c $(FIG_SRC),$(wildcard src/*.c))
 LIB_OBJ  := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libsuslov.a
 TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
-.PHONY: all deps check figures bench clean
+.PHONY: all deps check figures animation bench clean
 .SECONDARY:
-all: $(BUILD)/suslov $(BUILD)/bench $(FIG_BIN) $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 deps:
 	@sh tools/deps.sh
@@ -58,6 +58,9 @@ $(LIB): $(LIB_OBJ)
 $(BUILD)/suslov: $(BUILD)/obj/suslov.o $(LIB)
 	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
+$(BUILD)/animation: $(BUILD)/obj/animation.o $(LIB)
+	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+
 $(BUILD)/bench: $(BUILD)/obj/bench.o $(LIB)
 	$(CC) $(LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
@@ -73,14 +76,23 @@ $(CLAIMS): $(CLAIMS_OBJ) $(LIB)
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
 # only when the program (or anything it is linked from) changes.
-figures: $(FIGS:%=figures/%.pdf)
+figures: $(FIGS:%=figures/%.pdf) animation
+
+# The attitude animation: frames, video (when ffmpeg is installed), filmstrip, caption and the
+# R_k it draws.
+animation: figures/attitude_filmstrip.png
+
+figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg
+	@mkdir -p figures data
+	$< data/animation.cfg figures data
 
 figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_%
 	@mkdir -p figures data
 	$< figures data
 
 check: all
-	@SUSLOV_SAN=$(filter 1,$(SAN)) sh tests/run.sh $(BUILD)
+	@SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	    sh tests/run.sh $(BUILD)
 
 # Speed and accuracy: data/bench.csv, figures/work_precision and figures/step_cost, and the
 # PASS/MISS lines of the speed targets (never a failing test).

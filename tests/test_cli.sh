@@ -106,6 +106,19 @@ check "--output /dev/null works and /dev/null is still a character device" test 
 "$S" --method midpoint --eps 0.2 --steps 50 --every 7 >"$T/s.csv"
 check "--output FILE writes exactly what stdout gets" cmp -s "$T/o.csv" "$T/s.csv"
 
+# the animation draws exactly the R_k that suslov prints for the same settings (same driver)
+printf 'width = 96\nheight = 54\nfps = 4\nseconds = 2\nt_end = 6\neps = 1\n' >"$T/anim.cfg"
+mkdir -p "$T/fig" "$T/dat"
+SUSLOV_NO_VIDEO=1 "$B/animation" "$T/anim.cfg" "$T/fig" "$T/dat" >/dev/null 2>&1; rc=$?
+same=1
+for m in midpoint variational; do
+    "$S" --method $m --eps 1 --steps 6 | tail -n +2 | cut -d, -f1,8- >"$T/cli_$m"
+    grep "^$m," "$T/dat/attitude.csv" | cut -d, -f2,4- >"$T/anim_$m"
+    cmp -s "$T/cli_$m" "$T/anim_$m" || same=0
+done
+check "animation: exit 0, 8 frames and a filmstrip; its R_k equal suslov's, digit for digit, for both integrators" \
+    test "$rc" = 0 -a "$same" = 1 -a -s "$T/fig/attitude_filmstrip.png" -a -s "$T/fig/attitude/frame_0007.png"
+
 # streaming: 2e7 steps in bounded memory (skipped under AddressSanitizer, which reserves
 # terabytes of virtual memory)
 if [ -z "${SUSLOV_SAN:-}" ]; then

@@ -8,12 +8,14 @@ have cc || missing="$missing gcc"
 have make || missing="$missing make"
 have pkg-config || missing="$missing pkg-config"
 # pkg-config module:Debian package
-for pair in gsl:libgsl-dev cairo:libcairo2-dev; do
+for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev; do
     mod=${pair%%:*} pkg=${pair#*:}
     { have pkg-config && pkg-config --exists "$mod"; } || missing="$missing $pkg"
 done
 # a font the figures can name (PLOT_FONT in src/plot.h)
 dpkg -s fonts-dejavu-core >/dev/null 2>&1 || missing="$missing fonts-dejavu-core"
+# the animation's video (optional at run time: without it the frames remain)
+have ffmpeg || missing="$missing ffmpeg"
 [ -z "$missing" ] && exit 0
 echo "deps: installing missing Debian packages:$missing"
 SUDO=""
