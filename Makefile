@@ -5,6 +5,7 @@
 #   make check      unit tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make bench      work-precision and per-step cost against GSL (data/bench.csv)
+#   make paper      the companion text, paper/companion.pdf
 #   make deps       install missing Debian packages
 #   WERROR=1        treat warnings as errors (CI)
 #   SAN=1           build into build/san with -fsanitize=address,undefined
@@ -36,7 +37,7 @@ LIB      := $(BUILD)/libsuslov.a
 TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
-.PHONY: all deps check figures animation bench clean
+.PHONY: all deps check figures animation bench paper clean
 .SECONDARY:
 all: $(BUILD)/suslov $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
 
@@ -99,6 +100,23 @@ check: all
 bench: all
 	@mkdir -p figures data
 	@sh tools/bench.sh $(BUILD) "$(CFLAGS)"
+
+# The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
+# (data/bench.tex), figures from the figure programs, listings and equation map from src/.
+$(BUILD)/claims.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex &: $(CLAIMS)
+	$(CLAIMS) $(BUILD)/claims.tsv >/dev/null
+
+data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &: $(BUILD)/bench
+	@mkdir -p figures data
+	$< figures data >/dev/null
+
+PAPER_IN := paper/companion.tex paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex data/bench.tex \
+            $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
+            $(wildcard src/*.c src/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh
+paper: paper/companion.pdf
+
+paper/companion.pdf: $(PAPER_IN) | deps
+	@sh tools/paper.sh $(BUILD)
 
 clean:
 	rm -rf build

@@ -17,6 +17,8 @@ static void fn_final(suslov_residual_fn G, const suslov_model *m, double eps, co
     st->residual = inf_norm2(g);
 }
 
+/* (REGLOC): Newton on the step equation; the block it inverts is the upper-left one of (REGLOC),
+ * and a singular block ends the step as a failure. */
 int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[2],
                   double x[2], suslov_step_stats *st)
 {

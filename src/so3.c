@@ -112,7 +112,7 @@ double so3_dist(const double R1[3][3], const double R2[3][3])
     return mat3_frobenius(P);
 }
 
-/* |R^T R - I|, how far a matrix is from the group (the self-distance of (Groudist)). */
+/* (Groudist): |R^T R - I| (= |I - R R^T| for square R), how far a matrix is from the group. */
 double so3_orth_defect(const double R[3][3])
 {
     double P[3][3];

@@ -1,6 +1,7 @@
 /* Explicit Euler as a general DSP (Discretization): l = I_m f(w^k), lambda_{k+1} = lambda(w^{k+1}). */
 #include "stepper.h"
 
+/* (Discretization) with l = I_m f(w^k): explicit Euler. */
 static int euler_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
                        double *lambda_next, suslov_step_stats *st)
 {

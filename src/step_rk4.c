@@ -1,6 +1,7 @@
 /* Classical Runge-Kutta 4 as a general DSP (Discretization), lambda_{k+1} = lambda(w^{k+1}). */
 #include "stepper.h"
 
+/* (Discretization) with l = I_m times the RK4 increment: classical Runge-Kutta. */
 static int rk4_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
                      double *lambda_next, suslov_step_stats *st)
 {

@@ -30,7 +30,7 @@ void suslov_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3
     so3_vee(P, xi);
 }
 
-/* The vector field of (LdAeqs) in the coordinates (R, V). */
+/* (LdAeqs): the vector field of the unreduced equations in the coordinates (R, V). */
 static void field(const suslov_unreduced *u, const double R[3][3], const double V[3][3],
                   double dR[3][3], double dV[3][3])
 {

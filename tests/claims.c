@@ -368,6 +368,12 @@ int main(int argc, char **argv)
     model = &m;
     suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
 
+    double winf[2];
+    suslov_exact_limit(&ex, winf);
+    ledger_number("RateK", ex.k);
+    ledger_number("EnergyZero", suslov_energy(&m, SUSLOV_PAPER_OMEGA0));
+    ledger_number("SteadyOmegaOne", winf[0]);
+    ledger_number("SteadyOmegaTwo", winf[1]);
     if (suslov_convergence_run(&conv, &ex, TK, NTK, T_GLOBAL) != 0)
         die("the convergence sweep");
     local_claims();

@@ -45,7 +45,7 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
                dw, 0.0, 1e-4, LEDGER_REPRODUCED);
     /* "...except with respect to the multipliers": the multipliers differ by O_0 of PropoFinal,
      * up to O(eps) = O(1e-3 |lambda'|) ~ 1e-5. */
-    double o0 = 0.0;
+    double o0 = 0.0; /* max over the run of |O_0(w(t))| */
     for (size_t i = 0; i < mid.n; i++) {
         double w[2];
         suslov_exact_omega(ex, mid.t[i], w);
@@ -53,6 +53,7 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
     }
     char q[256];
     snprintf(q, sizeof q, "max_k |lambda_mid - lambda_var| at eps = 1e-3: the multipliers differ, by max |O_0(w(t))| = %.4g (PropoFinal)", o0);
+    ledger_number("FigOneMaxOZero", o0);
     ledger_add("fig1-multipliers-differ", "Sec. 5.5 text, Fig. 1(c)-(d)", q,
                suslov_series_maxdiff(&mid, &var, FIELD(lambda)), o0, 1e-4, LEDGER_REPRODUCED);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
@@ -103,6 +104,7 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
         worst_loss = fmax(worst_loss, E[0] - E[N]);
     }
     free(E);
+    ledger_number("FigTwoReadingsWorstLoss", worst_loss);
     ledger_add_bound("fig2-energy-readings", "Fig. 2(d) (evidence)",
                      "largest energy loss at t = 200 over the readings of the midpoint rule (Newton; 1..8 fixed-point sweeps, incl. explicit Euler and explicit midpoint); the caption needs it above the variational loss (expected)",
                      worst_loss, loss_var, 1, LEDGER_NOT_REPRODUCED);
@@ -122,6 +124,9 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
              "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200]: 'quite well' read as within 5%% (the midpoint rule: %.2g)",
              err_mid / r0);
     ledger_add("fig2-accuracy", "Sec. 5.5 text", q_buf, err_var / r0, 0.0, 0.05, LEDGER_NOT_REPRODUCED);
+    ledger_number("FigTwoVarEnergyLossPercent", 100.0 * loss_var / E0);
+    ledger_number("FigTwoMidAccuracyPercent", 100.0 * err_mid / r0);
+    ledger_number("FigTwoVarAccuracyPercent", 100.0 * err_var / r0);
     const double lim_var = hypot(var.w1[last] - winf[0], var.w2[last] - winf[1]);
     const double lim_mid = hypot(mid.w1[last] - winf[0], mid.w2[last] - winf[1]);
     ledger_add_bound("fig2-longterm", "Fig. 2 caption",

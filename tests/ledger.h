@@ -24,8 +24,14 @@ void ledger_add(const char *id, const char *paper_ref, const char *quantity, dou
 void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
                       double bound, int at_least, ledger_assert truth);
 
+/* A further number for the companion text, as the macro \NAME (letters only). */
+void ledger_number(const char *name, double value);
+
 /* Writes the TSV (through a temporary file) and prints the table followed by
- * "claims: N passed, N failed". Returns the number of failed checks, or -1 on a write error. */
+ * "claims: N passed, N failed". Next to the TSV it writes numbers.tex (for each line \Id, \IdExpected,
+ * \IdTol and \IdVerdict, the id in CamelCase with digits spelled out, numbers for math mode; and
+ * every ledger_number) and ledger.tex (the ledger as a LaTeX table). Returns the number of
+ * failed checks, or -1 on a write error. */
 int ledger_finish(const char *tsv_path);
 
 #endif

@@ -22,6 +22,7 @@ for t in "$B"/test_*; do
     run "$(basename "$t")" "$t"
 done
 run test_cli sh tests/test_cli.sh "$B"
+run eqmap sh tools/eqmap.sh check
 
 # The claims ledger prints its own table.
 "$B/claims" "$B/claims.tsv" >"$log" 2>&1 || status=1

@@ -162,7 +162,7 @@ int main(void)
           "(MetMat) on SO(3) equals |R1 - R2| (so it is positive for R1 != R2); worst %.2e", chord);
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
     CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
-          "orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+          "(Groudist): orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
     gsl_rng_free(rng);
     return check_summary("test_so3");
 }

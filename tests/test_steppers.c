@@ -99,7 +99,7 @@ int main(void)
             }
         }
         /* G is a cubic polynomial: central differences err by O(h^2) ~ 1e-12 plus u/h ~ 1e-10 */
-        CHECK(worst < 1e-8, "%s: analytic Jacobian of the step equation = central differences; worst %.2e", st->name, worst);
+        CHECK(worst < 1e-8, "%s: analytic Jacobian of the step equation ((Discretization) or (taudyn)) = central differences; worst %.2e", st->name, worst);
     }
 
     /* Each step solves its equation to round-off in a few Newton iterations at small eps. */

@@ -14,6 +14,10 @@ for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev; do
 done
 # a font the figures can name (PLOT_FONT in src/plot.h)
 dpkg -s fonts-dejavu-core >/dev/null 2>&1 || missing="$missing fonts-dejavu-core"
+# make paper: pdflatex with the LaTeX packages the companion uses (booktabs, listings, ...)
+for pkg in texlive-latex-base texlive-latex-recommended; do
+    dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
+done
 # the animation's video (optional at run time: without it the frames remain)
 have ffmpeg || missing="$missing ffmpeg"
 [ -z "$missing" ] && exit 0

@@ -1,0 +1,51 @@
+#!/bin/sh
+# The equation map, generated from the source: a comment that starts with "/* (label)" right
+# before a function definition marks that function as the implementation of the paper's
+# \label{label}. Lists, for every label declared in paper/equations.txt, the files and functions
+# that implement it and the tests that name it.
+#   eqmap.sh tex OUT    write the LaTeX table
+#   eqmap.sh check      fail (and say why) when a declared label has no implementation or no
+#                       test, or an implemented label is not declared
+set -eu
+mode=${1:-check}
+impl=$(awk '
+    FNR == 1 { pending = "" }
+    /^\/\* \([A-Za-z]+\)/ { match($0, /\([A-Za-z]+\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
+    pending != "" && /^[a-z].*[a-z_0-9]+\(/ {
+        line = $0; sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
+        printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }
+    pending != "" && !/^ \*/ && !/^\/\*/ { pending = "" }
+' src/*.c src/*.h | sort -u)
+declared=$(grep -v '^#' paper/equations.txt | awk 'NF { print $1 }')
+tests_of() { grep -l -F "($1)" tests/*.c tests/*.sh 2>/dev/null | xargs -r -n1 basename | tr '\n' ' '; }
+fail=0 pass=0
+for l in $declared; do
+    if ! printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { f = 1 } END { exit !f }'; then
+        echo "FAIL eqmap: ($l) is declared in paper/equations.txt but no function is marked /* ($l) */"; fail=$((fail + 1))
+    elif [ -z "$(tests_of "$l")" ]; then
+        echo "FAIL eqmap: ($l) has no test that names it"; fail=$((fail + 1))
+    else
+        pass=$((pass + 1))
+    fi
+done
+for l in $(printf '%s\n' "$impl" | cut -f1 | sort -u); do
+    if ! printf '%s\n' "$declared" | grep -qx "$l"; then
+        echo "FAIL eqmap: ($l) is implemented but not declared in paper/equations.txt"; fail=$((fail + 1))
+    fi
+done
+if [ "$mode" = tex ]; then
+    out=$2
+    {
+        printf '%s\n' '\begin{longtable}{@{}l l l p{0.3\textwidth}@{}}'
+        printf '%s\n' '\toprule label & file & function & tests that name it\\ \midrule \endhead'
+        for l in $declared; do
+            printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { printf "%s\t%s\n", $2, $3 }' | while IFS="$(printf '\t')" read -r f fn; do
+                printf '(%s) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$(echo "$f" | sed 's/_/\\_/g')" "$(echo "$fn" | sed 's/_/\\_/g')" \
+                    "$(tests_of "$l" | sed 's/_/\\_/g')"
+            done
+        done
+        printf '%s\n' '\bottomrule\end{longtable}'
+    } >"$out.tmp" && mv "$out.tmp" "$out"
+fi
+echo "eqmap: $pass passed, $fail failed"
+[ "$fail" = 0 ]
