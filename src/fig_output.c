@@ -1,6 +1,7 @@
 #include "fig_output.h"
 
 #include "atomic_file.h"
+#include "plot.h"
 
 #include <stdio.h>
 
@@ -47,4 +48,16 @@ const char *fig_path(char *buf, size_t len, const char *dir, const char *name, c
 {
     snprintf(buf, len, "%s/%s.%s", dir, name, ext);
     return buf;
+}
+
+int fig_write_figure(const char *dir, const char *name, double width, double height,
+                     void (*draw)(cairo_t *, void *), void *ctx, const char *caption)
+{
+    char base[4096], err[512];
+    snprintf(base, sizeof base, "%s/%s", dir, name);
+    if (plot_write(base, width, height, draw, ctx, err, sizeof err) != 0) {
+        fprintf(stderr, "error: %s: %s\n", name, err);
+        return -1;
+    }
+    return fig_write_text(fig_path(base, sizeof base, dir, name, "txt"), caption);
 }

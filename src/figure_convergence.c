@@ -139,11 +139,6 @@ int main(int argc, char **argv)
     }
     if (fig_write_csv(fig_path(path, sizeof path, argv[2], "convergence", "csv"), header, 1 + 8 * NM, cols, NJ, 1) != 0)
         return 1;
-    snprintf(path, sizeof path, "%s/convergence", argv[1]);
-    if (plot_write(path, 560, 700, draw, f, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_convergence: %s\n", err);
-        return 1;
-    }
     char cap[2048];
     snprintf(cap, sizeof cap,
              "Convergence of the four DSPs (the order claims of the general-DSP proposition, PropoFinal and TeoL).\n"
@@ -158,5 +153,5 @@ int main(int argc, char **argv)
              "tends to |O_0| (up to %.4f over these t_k), as PropoFinal states.\n"
              "Data: data/convergence.csv. Fitted slopes with their windows: build/claims.tsv (make check).\n",
              f->o0max);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "convergence", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "convergence", 560, 700, draw, f, cap) != 0;
 }

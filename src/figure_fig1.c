@@ -119,11 +119,6 @@ int main(int argc, char **argv)
                       "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
                       17, cols, n, 1) != 0)
         return 1;
-    snprintf(path, sizeof path, "%s/fig1", argv[1]);
-    if (plot_write(path, 540, 660, draw, &f, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_fig1: %s\n", err);
-        return 1;
-    }
     char cap[4096];
     snprintf(cap, sizeof cap,
              "Figure 1 (the paper's Figure 1, reproduced). Regenerate: make figures (src/figure_fig1.c).\n"
@@ -148,5 +143,5 @@ int main(int argc, char **argv)
              suslov_series_maxdrift(&f.var, offsetof(suslov_series, energy)),
              fmax(suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w1)), suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w2))),
              suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, lambda)), EVERY);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "fig1", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "fig1", 540, 660, draw, &f, cap) != 0;
 }

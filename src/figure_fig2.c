@@ -128,11 +128,6 @@ int main(int argc, char **argv)
                       "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
                       17, cols, f.mid.n, 1) != 0)
         return 1;
-    snprintf(path, sizeof path, "%s/fig2", argv[1]);
-    if (plot_write(path, 540, 660, draw, &f, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_fig2: %s\n", err);
-        return 1;
-    }
     const size_t last = f.mid.n - 1;
     char cap[4096];
     snprintf(cap, sizeof cap,
@@ -152,5 +147,5 @@ int main(int argc, char **argv)
              T_END, N, f.winf[0], f.winf[1], suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
              f.dist[1][last], f.var.energy[0] - f.var.energy[last],
              100.0 * (f.var.energy[0] - f.var.energy[last]) / f.var.energy[0], f.dist[2][last]);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "fig2", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "fig2", 540, 660, draw, &f, cap) != 0;
 }

@@ -164,11 +164,6 @@ int main(int argc, char **argv)
                       "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_sweeps5,dE_variational",
                       7, cols, N_STEPS + 1, 1) != 0)
         return 1;
-    snprintf(path, sizeof path, "%s/fig2_energy", argv[1]);
-    if (plot_write(path, 560, 520, draw, r, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_fig2_energy: %s\n", err);
-        return 1;
-    }
     char cap[2048];
     snprintf(cap, sizeof cap,
              "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the fig2-energy lines of\n"
@@ -184,5 +179,5 @@ int main(int argc, char **argv)
              "Data: data/fig2_energy.csv.\n",
              T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
              r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "fig2_energy", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "fig2_energy", 560, 520, draw, r, cap) != 0;
 }

@@ -104,11 +104,6 @@ int main(int argc, char **argv)
     if (fig_write_csv(fig_path(path, sizeof path, argv[2], "inertia", "csv"),
                       "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n, 1) != 0)
         return 1;
-    snprintf(path, sizeof path, "%s/inertia", argv[1]);
-    if (plot_write(path, 560, 420, draw, &f, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_inertia: %s\n", err);
-        return 1;
-    }
     double maxd = 0.0;
     for (size_t i = 0; i < f.row.n; i++)
         maxd = fmax(maxd, f.dist[i]);
@@ -125,5 +120,5 @@ int main(int argc, char **argv)
              "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
              "Data: data/inertia.csv.\n",
              T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "inertia", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "inertia", 560, 420, draw, &f, cap) != 0;
 }

@@ -113,11 +113,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "figure_stability: %s\n", err);
         return 1;
     }
-    snprintf(path, sizeof path, "%s/stability", argv[1]);
-    if (plot_write(path, 600, 520, draw, f, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_stability: %s\n", err);
-        return 1;
-    }
     char cap[3072];
     snprintf(cap, sizeof cap,
              "Stability map. Regenerate: make figures (src/figure_stability.c; classes in src/stability.h).\n"
@@ -141,5 +136,5 @@ int main(int argc, char **argv)
              "its cubic step equation loses the continued branch from h ~ 150.\n"
              "Data: data/stability.csv.\n",
              paper.k, NH, STAB_BRANCH_H, f->limit[2]);
-    return fig_write_text(fig_path(path, sizeof path, argv[1], "stability", "txt"), cap) != 0;
+    return fig_write_figure(argv[1], "stability", 600, 520, draw, f, cap) != 0;
 }

@@ -91,3 +91,12 @@ int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const
         }
     }
 }
+
+int suslov_implicit_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[3],
+                          double w_next[3], suslov_step_stats *st)
+{
+    suslov_predict(m, eps, w, w_next);
+    const int status = newton2_solve(G, m, eps, w, w_next, st);
+    w_next[2] = 0.0;
+    return status;
+}

@@ -13,6 +13,11 @@
 int newton2_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[2],
                   double x[2], suslov_step_stats *st);
 
+/* The common step of the implicit DSPs: w_next = w^{k+1} by Newton on G from the explicit
+ * prediction, and (w^{k+1})_3 = 0, the second equation of (DSP). Returns as newton2_solve. */
+int suslov_implicit_solve(suslov_residual_fn G, const suslov_model *m, double eps, const double w[3],
+                          double w_next[3], suslov_step_stats *st);
+
 /* G is a sum of a handful of products; each carries a relative error of a few units of
  * round-off, so at the root the computed |G| is a few u * scale. 16 u leaves room for that
  * and no more. */

@@ -32,9 +32,7 @@ static void mid_residual(const suslov_model *m, double eps, const double w[2], c
 static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
                           double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    suslov_predict(m, eps, w, w_next);
-    const int status = newton2_solve(mid_residual, m, eps, w, w_next, st);
-    w_next[2] = 0.0;
+    const int status = suslov_implicit_solve(mid_residual, m, eps, w, w_next, st);
     *lambda_next = suslov_lagmult(m, w_next);
     return status;
 }

@@ -56,9 +56,7 @@ static double taualg(const suslov_model *m, const double x[2], const double w[2]
 static int variational_apply(const suslov_model *m, double eps, const double w[3],
                              double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    suslov_predict(m, eps, w, w_next);
-    const int status = newton2_solve(taudyn_residual, m, eps, w, w_next, st);
-    w_next[2] = 0.0;
+    const int status = suslov_implicit_solve(taudyn_residual, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
