@@ -1,7 +1,7 @@
 #!/bin/sh
 # The equation map, generated from the source: a comment that starts with "/* (label)" right
-# before a function definition marks that function as the implementation of the paper's
-# \label{label}. Lists, for every label declared in paper/equations.txt, the files and functions
+# before a function definition (in a .c file, or static inline in a header) marks that function
+# as the implementation of the paper's \label{label}. Lists, for every label declared in paper/equations.txt, the files and functions
 # that implement it and the tests that name it.
 #   eqmap.sh tex OUT    write the LaTeX table
 #   eqmap.sh check      fail (and say why) when a declared label has no implementation or no
@@ -11,7 +11,7 @@ mode=${1:-check}
 impl=$(awk '
     FNR == 1 { pending = "" }
     /^\/\* \([A-Za-z]+\)/ { match($0, /\([A-Za-z]+\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
-    pending != "" && /^[a-z].*[a-z_0-9]+\(/ {
+    pending != "" && /^[a-z].*[a-z_0-9]+\(/ && (FILENAME ~ /\.c$/ || /^static inline/) {
         line = $0; sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
         printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }
     pending != "" && !/^ \*/ && !/^\/\*/ { pending = "" }
