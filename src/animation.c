@@ -13,6 +13,7 @@
 #include "fig_output.h"
 #include "gl_context.h"
 #include "mat3.h"
+#include "monoclock.h"
 #include "refattitude.h"
 #include "scene.h"
 #include "so3.h"
@@ -26,7 +27,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 typedef struct {
@@ -175,13 +175,6 @@ static int write_png(const uint32_t *px, int W, int H, const char *path)
     return 0;
 }
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* Times of the filmstrip frames, as fractions of t_end. */
 static const double STRIP[6] = {0.0, 1.0 / 12, 1.0 / 6, 1.0 / 3, 2.0 / 3, 1.0};
 
@@ -257,7 +250,7 @@ int main(int argc, char **argv)
         return 1;
     uint32_t *strip_frames = malloc(6 * (size_t)W * H * sizeof(uint32_t));
     int strip_next = 0;
-    const double t0 = now();
+    const double t0 = suslov_now();
     for (int f = 0; f < nframes; f++) {
         const double time = cfg.t_end * f / (nframes > 1 ? nframes - 1 : 1);
         double wex[2];
@@ -291,7 +284,7 @@ int main(int argc, char **argv)
         while (strip_frames && strip_next < 6 && time >= STRIP[strip_next] * cfg.t_end - 1e-9)
             memcpy(strip_frames + (size_t)(strip_next++) * W * H, px, (size_t)W * H * sizeof(uint32_t));
     }
-    const double elapsed = now() - t0;
+    const double elapsed = suslov_now() - t0;
     suslov_refatt_free(&ra);
     if (video) {
         if (pclose(video) == 0 && rename(mp4tmp, mp4) == 0)

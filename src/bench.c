@@ -7,6 +7,7 @@
 #include "exact.h"
 #include "fig_output.h"
 #include "mat3.h"
+#include "monoclock.h"
 #include "plot.h"
 #include "refattitude.h"
 #include "so3.h"
@@ -20,7 +21,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #define T_END 50.0
@@ -30,13 +30,6 @@
 
 static volatile double sink; /* results are added here so that no run can be optimized away */
 static int progress_tty;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void progress(const char *what)
 {
@@ -240,9 +233,9 @@ static void sweep_gsl(const gsl_odeiv2_step_type *type, int fixed, const char *n
 static void time_points(void)
 {
     for (int p = 0; p < npoints; p++) { /* calibrate the batches */
-        const double t0 = now();
+        const double t0 = suslov_now();
         points[p].fn(points[p].ctx);
-        const double t1 = now() - t0;
+        const double t1 = suslov_now() - t0;
         points[p].batch = t1 >= BATCH_SECONDS ? 1 : (int)ceil(BATCH_SECONDS / fmax(t1, 1e-7));
     }
     for (int r = 0; r < WP_ROUNDS; r++) {
@@ -250,10 +243,10 @@ static void time_points(void)
         snprintf(msg, sizeof msg, "work-precision, round %d of %d (%d points)", r + 1, WP_ROUNDS, npoints);
         progress(msg);
         for (int p = 0; p < npoints; p++) {
-            const double t0 = now();
+            const double t0 = suslov_now();
             for (int b = 0; b < points[p].batch; b++)
                 points[p].fn(points[p].ctx);
-            points[p].t[r] = (now() - t0) / points[p].batch;
+            points[p].t[r] = (suslov_now() - t0) / points[p].batch;
         }
     }
     for (int p = 0; p < npoints; p++) {
@@ -365,9 +358,9 @@ static void measure_step_costs(void)
         snprintf(msg, sizeof msg, "per-step costs, round %d of %d", r + 1, ROUNDS);
         progress(msg);
         for (int c = 0; c < 10; c++) {
-            const double t0 = now();
+            const double t0 = suslov_now();
             cfg[c].fn(cfg[c].ctx);
-            cfg[c].t[r] = now() - t0;
+            cfg[c].t[r] = suslov_now() - t0;
         }
     }
     gsl_odeiv2_driver_free(g.d);
@@ -515,7 +508,7 @@ int main(int argc, char **argv)
             return 1;
         suslov_refatt_free(&ra);
     }
-    const double t_start = now();
+    const double t_start = suslov_now();
     sweep_ours(suslov_step_euler, SUSLOV_RECON_CAYLEY, "euler");
     sweep_ours(suslov_step_midpoint, SUSLOV_RECON_CAYLEY_MID, "midpoint + cayley-mid");
     sweep_ours(suslov_step_rk4, SUSLOV_RECON_CAYLEY_MID, "rk4 + cayley-mid");
@@ -578,7 +571,7 @@ int main(int argc, char **argv)
                ratio >= 2 ? "" : " (target 2x)");
     }
     printf("  (the exact solution gives w(50) to round-off in %.0f ns: no integration needed for w at all)\n", cost.ns_exact);
-    printf("\nbench ran for %.1f s\n", now() - t_start);
+    printf("\nbench ran for %.1f s\n", suslov_now() - t_start);
 
     if (write_csv(fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0)
         return 1;

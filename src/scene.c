@@ -196,9 +196,11 @@ void scene_draw(const scene *s, const scene_body *b, int x0, int y0, int vw, int
     glBegin(GL_POINTS);
     glVertex3dv(origin);
     glEnd();
-    /* the trail of the tip of e3, fading with age */
+    /* the trail of the tip of e3, fading with age. The frame's alpha must stay 1: Cairo reads
+     * the buffer as premultiplied ARGB, where a colour above its alpha turns into garbage. */
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     glLineWidth(2.0f);
     glBegin(GL_LINE_STRIP);
     for (int i = 0; i < b->ntrail; i++) {
@@ -206,6 +208,7 @@ void scene_draw(const scene *s, const scene_body *b, int x0, int y0, int vw, int
         glVertex3dv(b->trail[i]);
     }
     glEnd();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_BLEND);
     /* w in the space frame, R w */
     double ws[3], wtip[3];

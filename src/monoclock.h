@@ -1,0 +1,14 @@
+/* Seconds on the monotonic clock, for timing the benchmark and the renderer. */
+#ifndef SUSLOV_MONOCLOCK_H
+#define SUSLOV_MONOCLOCK_H
+
+#include <time.h>
+
+static inline double suslov_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+#endif
