@@ -34,8 +34,6 @@ int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *steppe
 
 typedef struct {
     double w, lambda, so3;
-    double max_constraint;  /* max |w_3| over the run */
-    double max_defect;      /* max |R^T R - I| over the run */
 } suslov_global_err;
 
 /* N steps of eps = T/N from w0 with R_0 = I, compared at T with the exact w(T) and the

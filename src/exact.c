@@ -70,10 +70,3 @@ void suslov_exact_limit(const suslov_exact *ex, double w[2])
     }
     omega_from_psi(ex, 0.0, 1.0, w);
 }
-
-double suslov_exact_lambda(const suslov_exact *ex, double t)
-{
-    double w[2];
-    suslov_exact_omega(ex, t, w);
-    return suslov_lagmult(ex->model, w);
-}

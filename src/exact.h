@@ -34,6 +34,5 @@ typedef struct {
 void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[2]);
 void suslov_exact_omega(const suslov_exact *ex, double t, double w[2]);
 void suslov_exact_limit(const suslov_exact *ex, double w[2]);
-double suslov_exact_lambda(const suslov_exact *ex, double t);
 
 #endif

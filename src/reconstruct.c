@@ -48,8 +48,3 @@ int suslov_recon_by_name(const char *name, suslov_recon *kind)
         return -1;
     return 0;
 }
-
-const char *suslov_recon_name(suslov_recon kind)
-{
-    return kind == SUSLOV_RECON_CAYLEY ? "cayley" : "cayley-mid";
-}

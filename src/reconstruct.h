@@ -22,6 +22,5 @@ void suslov_attitude_get(const suslov_attitude *a, double R[3][3]);
 void suslov_reconstruct(suslov_recon kind, double eps, suslov_attitude *a, const double w[3],
                         const double w_next[3]);
 int suslov_recon_by_name(const char *name, suslov_recon *kind);
-const char *suslov_recon_name(suslov_recon kind);
 
 #endif
