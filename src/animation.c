@@ -5,7 +5,9 @@
  * Writes FIGDIR/attitude/frame_NNNN.png, FIGDIR/attitude.mp4 (when ffmpeg is installed and
  * SUSLOV_NO_VIDEO is unset), FIGDIR/attitude_filmstrip.png, FIGDIR/attitude.txt, and
  * DATADIR/attitude.csv: the R_k of both integrators at every step, exactly as `suslov` prints
- * them for the same settings (the same driver). */
+ * them for the same settings (the same driver).
+ * On every exit path - an error, or SIGINT/SIGTERM/SIGHUP - the ffmpeg child is stopped and
+ * waited for, and the temporary video and frame files are removed. */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
 #include "driver.h"
@@ -22,12 +24,109 @@
 #include <cairo.h>
 #include <errno.h>
 #include <gsl/gsl_errno.h>
+#include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+/* ---- what must not outlive the program: the ffmpeg child and the temporary files ---- */
+
+static volatile pid_t video_pid = -1;      /* the running ffmpeg, or -1 */
+static char video_tmp[4200];                /* the video ffmpeg writes, renamed on success */
+static char frame_tmp[4200];                /* the PNG being written, renamed when complete */
+static volatile sig_atomic_t frame_tmp_live;
+
+/* Async-signal-safe: kill(), waitpid(), unlink(). SIGKILL, not SIGTERM: on SIGTERM ffmpeg
+ * finishes its output file, which could then appear after the unlink. */
+static void on_signal(int sig)
+{
+    if (video_pid > 0) {
+        kill(video_pid, SIGKILL);
+        waitpid(video_pid, NULL, 0);
+    }
+    if (video_tmp[0])
+        unlink(video_tmp);
+    if (frame_tmp_live)
+        unlink(frame_tmp);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+/* atexit: on an error exit the video is unfinished; stop ffmpeg, wait for it, remove its file. */
+static void stop_video(void)
+{
+    if (video_pid > 0) {
+        kill(video_pid, SIGKILL);
+        waitpid(video_pid, NULL, 0);
+        video_pid = -1;
+    }
+    if (video_tmp[0])
+        unlink(video_tmp);
+    video_tmp[0] = '\0';
+}
+
+/* What main allocates, released at exit on every path (an error return included). */
+static struct {
+    suslov_row *rows[2];
+    gl_context *gl;
+    uint32_t *strip;
+} owned;
+
+static void release_owned(void)
+{
+    for (int m = 0; m < 2; m++)
+        free(owned.rows[m]);
+    if (owned.gl)
+        gl_context_destroy(owned.gl);
+    free(owned.strip);
+    memset(&owned, 0, sizeof owned);
+}
+
+/* ffmpeg reading raw frames on a pipe; returns the write end as a stream, or NULL. */
+static FILE *start_video(int W, int H, int fps, const char *out)
+{
+    int fd[2];
+    if (pipe(fd) != 0)
+        return NULL;
+    char size[32], rate[16];
+    snprintf(size, sizeof size, "%dx%d", W, H);
+    snprintf(rate, sizeof rate, "%d", fps);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fd[0], 0);
+        close(fd[0]);
+        close(fd[1]);
+        execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pixel_format", "bgra",
+               "-video_size", size, "-framerate", rate, "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p",
+               out, (char *)NULL);
+        _exit(127);
+    }
+    close(fd[0]);
+    if (pid < 0) {
+        close(fd[1]);
+        return NULL;
+    }
+    video_pid = pid;
+    fcntl(fd[1], F_SETFD, FD_CLOEXEC);
+    return fdopen(fd[1], "w");
+}
+
+/* Closes the pipe and waits: 0 when ffmpeg exited with status 0. */
+static int finish_video(FILE *video)
+{
+    fclose(video);
+    int status = -1;
+    const pid_t pid = video_pid;
+    if (pid > 0 && waitpid(pid, &status, 0) != pid)
+        status = -1;
+    video_pid = -1;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
+}
 
 typedef struct {
     int width, height, fps;
@@ -160,19 +259,28 @@ static void label_frame(uint32_t *px, int W, int H, double time)
     cairo_surface_destroy(s);
 }
 
+/* Writes the surface to path through a temporary name (removed on failure or a signal). */
+static int write_surface_png(cairo_surface_t *s, const char *path)
+{
+    frame_tmp_live = 0;
+    snprintf(frame_tmp, sizeof frame_tmp, "%s.tmp.%ld", path, (long)getpid());
+    frame_tmp_live = 1;
+    const cairo_status_t st = cairo_surface_write_to_png(s, frame_tmp);
+    const int ok = st == CAIRO_STATUS_SUCCESS && rename(frame_tmp, path) == 0;
+    if (!ok) {
+        fprintf(stderr, "animation: writing %s failed\n", path);
+        unlink(frame_tmp);
+    }
+    frame_tmp_live = 0;
+    return ok ? 0 : -1;
+}
+
 static int write_png(const uint32_t *px, int W, int H, const char *path)
 {
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
     cairo_surface_t *s = cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-    const cairo_status_t st = cairo_surface_write_to_png(s, tmp);
+    const int r = write_surface_png(s, path);
     cairo_surface_destroy(s);
-    if (st != CAIRO_STATUS_SUCCESS || rename(tmp, path) != 0) {
-        fprintf(stderr, "animation: writing %s failed\n", path);
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    return r;
 }
 
 /* Times of the filmstrip frames, as fractions of t_end. */
@@ -192,8 +300,21 @@ int main(int argc, char **argv)
     char err[256], path[4096];
     suslov_model model;
     suslov_exact ex;
-    suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "animation: the paper's inertia is rejected: %s\n", err);
+        return 1;
+    }
     suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
+    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
+    signal(SIGPIPE, SIG_IGN);
+    atexit(release_owned);
+    atexit(stop_video);
+    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        struct sigaction sa = {.sa_handler = on_signal};
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
 
     /* the two integrators through the driver, every step kept (N is small) */
     const long N = (long)ceil(cfg.t_end / cfg.eps - 1e-9);
@@ -202,7 +323,7 @@ int main(int argc, char **argv)
     dsp_track track[2];
     for (int m = 0; m < 2; m++) {
         track[m].n = N;
-        track[m].rows = calloc((size_t)N + 1, sizeof(suslov_row));
+        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
         const suslov_run_config rc = {&model, st[m], SUSLOV_RECON_CAYLEY, cfg.eps, N, 1};
         suslov_run_report rep;
         if (!track[m].rows || suslov_run(&rc, ex.w0, store, &track[m], &rep) != 0) {
@@ -214,7 +335,7 @@ int main(int argc, char **argv)
         return 1;
 
     const int W = cfg.width, H = cfg.height, nframes = (int)lround(cfg.fps * cfg.seconds);
-    gl_context *gl = gl_context_create(W, H);
+    gl_context *gl = owned.gl = gl_context_create(W, H);
     scene sc;
     if (!gl || scene_init(&sc, &model, W / 3, H) != 0) {
         fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
@@ -228,16 +349,14 @@ int main(int argc, char **argv)
     }
     /* the video, through ffmpeg's standard input, when ffmpeg is there */
     FILE *video = NULL;
-    char mp4[4096], mp4tmp[4200];
+    char mp4[4096];
     snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
-    snprintf(mp4tmp, sizeof mp4tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
     const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
     if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
-        char cmd[9000];
-        snprintf(cmd, sizeof cmd,
-                 "ffmpeg -y -loglevel error -f rawvideo -pixel_format bgra -video_size %dx%d -framerate %d -i - "
-                 "-c:v libx264 -pix_fmt yuv420p '%s'", W, H, cfg.fps, mp4tmp);
-        video = popen(cmd, "w");
+        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
+        video = start_video(W, H, cfg.fps, video_tmp);
+        if (!video)
+            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
     } else if (want_video) {
         fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
     }
@@ -246,9 +365,8 @@ int main(int argc, char **argv)
     suslov_refatt ra;
     double I3[3][3];
     mat3_identity(I3);
-    if (suslov_refatt_init(&ra, &ex, 0.0, I3, SUSLOV_REFATT_TOL) != 0)
-        return 1;
-    uint32_t *strip_frames = malloc(6 * (size_t)W * H * sizeof(uint32_t));
+    suslov_refatt_init(&ra, &ex, 0.0, I3);
+    uint32_t *strip_frames = owned.strip = malloc(6 * (size_t)W * H * sizeof(uint32_t));
     int strip_next = 0;
     const double t0 = suslov_now();
     for (int f = 0; f < nframes; f++) {
@@ -257,10 +375,7 @@ int main(int argc, char **argv)
         suslov_exact_omega(&ex, time, wex);
         body[0].w[0] = wex[0];
         body[0].w[1] = wex[1];
-        if (suslov_refatt_advance(&ra, time, body[0].R) != 0) {
-            fprintf(stderr, "animation: the reference attitude failed at t = %g\n", time);
-            return 1;
-        }
+        suslov_refatt_advance(&ra, time, body[0].R);
         for (int m = 0; m < 2; m++)
             dsp_state(&track[m], cfg.eps, time, body[1 + m].R, body[1 + m].w);
         glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
@@ -276,21 +391,21 @@ int main(int argc, char **argv)
         if (write_png(px, W, H, path) != 0)
             return 1;
         if (video && fwrite(px, sizeof(uint32_t), (size_t)W * H, video) != (size_t)W * H) {
-            pclose(video);
+            finish_video(video);
             video = NULL;
-            unlink(mp4tmp);
+            stop_video();
             fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
         }
         while (strip_frames && strip_next < 6 && time >= STRIP[strip_next] * cfg.t_end - 1e-9)
             memcpy(strip_frames + (size_t)(strip_next++) * W * H, px, (size_t)W * H * sizeof(uint32_t));
     }
     const double elapsed = suslov_now() - t0;
-    suslov_refatt_free(&ra);
     if (video) {
-        if (pclose(video) == 0 && rename(mp4tmp, mp4) == 0)
+        if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
+            video_tmp[0] = '\0';
             fprintf(stderr, "animation: wrote %s\n", mp4);
-        else {
-            unlink(mp4tmp);
+        } else {
+            stop_video();
             fprintf(stderr, "animation: ffmpeg failed; no video\n");
         }
     }
@@ -327,15 +442,13 @@ int main(int argc, char **argv)
         cairo_show_text(cr, title);
         cairo_destroy(cr);
         snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
-        char tmp[4200];
-        snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-        if (cairo_surface_write_to_png(s, tmp) != CAIRO_STATUS_SUCCESS || rename(tmp, path) != 0) {
-            fprintf(stderr, "animation: writing %s failed\n", path);
-            return 1;
-        }
+        const int bad = write_surface_png(s, path);
         cairo_surface_destroy(s);
+        if (bad)
+            return 1;
     }
     free(strip_frames);
+    owned.strip = NULL;
 
     double dist[2];
     for (int m = 0; m < 2; m++)
@@ -343,7 +456,7 @@ int main(int argc, char **argv)
     char cap[2048];
     snprintf(cap, sizeof cap,
              "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
-             "Three copies of the body: the exact motion (R from GSL rk8pd along the closed-form w), the midpoint rule\n"
+             "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), the midpoint rule\n"
              "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm (algo)),\n"
              "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's own\n"
              "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` prints it\n"
@@ -358,8 +471,5 @@ int main(int argc, char **argv)
         return 1;
     printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes, W, H, elapsed,
            nframes / elapsed);
-    for (int m = 0; m < 2; m++)
-        free(track[m].rows);
-    gl_context_destroy(gl);
-    return 0;
+    return 0; /* the rows and the GL context are released at exit (release_owned) */
 }

@@ -7,7 +7,7 @@
 
 #include <math.h>
 
-int suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double tk, double eps)
+void suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double tk, double eps)
 {
     ref->tk = tk;
     ref->eps = eps;
@@ -15,7 +15,7 @@ int suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double 
     suslov_exact_omega(ex, tk + eps, ref->w_exact);
     ref->w_k[2] = ref->w_exact[2] = 0.0;
     ref->lambda_exact = suslov_lagmult(ex->model, ref->w_exact);
-    return suslov_refatt_increment(ex, tk, tk + eps, ref->Phi);
+    suslov_refatt_increment(ex, tk, tk + eps, ref->Phi);
 }
 
 int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *stepper,
@@ -28,20 +28,22 @@ int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *steppe
     err->w = vec3_norm(d);
     err->lambda_signed = ref->lambda_exact - lambda;
     err->lambda = fabs(err->lambda_signed);
-    for (int r = SUSLOV_RECON_CAYLEY; r <= SUSLOV_RECON_CAYLEY_MID; r++) {
+    for (int r = 0; r < SUSLOV_RECON_COUNT && status == SUSLOV_STEP_OK; r++) {
         suslov_attitude att;
         suslov_attitude_identity(&att);
-        suslov_reconstruct((suslov_recon)r, ref->eps, &att, ref->w_k, w_next);
+        if (stepper->apply_full) { /* the attitude is advanced inside the step (e.g. after every substep) */
+            double w_full[3], lambda_full;
+            suslov_step_stats st;
+            const int sf = stepper->apply_full(m, ref->eps, (suslov_recon)r, &att, ref->w_k, w_full, &lambda_full, &st);
+            if (sf != SUSLOV_STEP_OK)
+                return sf;
+        } else { /* (algo) after the w-step already taken */
+            suslov_reconstruct((suslov_recon)r, ref->eps, &att, ref->w_k, w_next);
+        }
         suslov_attitude_get(&att, R_next);
         err->so3[r] = so3_dist(ref->Phi, R_next);
     }
     return status;
-}
-
-static int keep_last(void *vctx, const suslov_row *row)
-{
-    *(suslov_row *)vctx = *row;
-    return 0;
 }
 
 int suslov_global_errors(const suslov_exact *ex, const suslov_stepper_type *stepper,
@@ -52,7 +54,7 @@ int suslov_global_errors(const suslov_exact *ex, const suslov_stepper_type *step
     const suslov_run_config cfg = {ex->model, stepper, recon, T / (double)N, N, N};
     suslov_row last;
     suslov_run_report report;
-    if (suslov_run(&cfg, ex->w0, keep_last, &last, &report) != 0)
+    if (suslov_run(&cfg, ex->w0, suslov_keep_last, &last, &report) != 0)
         return 1;
     double w[2];
     suslov_exact_omega(ex, T, w);

@@ -13,19 +13,19 @@ typedef struct {
     double w_k[3];        /* exact w(t_k) */
     double w_exact[3];    /* exact w(t_k + eps) */
     double lambda_exact;  /* lambda(t_k + eps) from (LagMult) */
-    double Phi[3][3];     /* R(t_k)^{-1} R(t_k + eps), rk8pd reference */
+    double Phi[3][3];     /* R(t_k)^{-1} R(t_k + eps), the reference attitude */
 } suslov_local_ref;
 
 typedef struct {
     double w;               /* |w(t_k + eps) - w^{k+1}| (Killing metric = Euclidean on R^3) */
     double lambda;          /* |lambda(t_k + eps) - lambda_{k+1}| */
     double lambda_signed;   /* lambda(t_k + eps) - lambda_{k+1} (PropoFinal's O_0 limit) */
-    double so3[2];          /* (MetMat) distance of R_{k+1} per suslov_recon */
+    double so3[SUSLOV_RECON_COUNT]; /* (MetMat) distance of R_{k+1} per suslov_recon */
     suslov_step_stats stats;
 } suslov_local_err;
 
-/* Returns 0, or a GSL status from the reference attitude. */
-int suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double tk, double eps);
+/* The exact data of one step: w(t_k), w(t_k + eps), lambda(t_k + eps) and R(t_k)^{-1} R(t_k + eps). */
+void suslov_local_ref_init(suslov_local_ref *ref, const suslov_exact *ex, double tk, double eps);
 
 /* Since (MetMat) is invariant under R -> R_k R, R_k = I without loss of generality.
  * Returns the step status (SUSLOV_STEP_*). */

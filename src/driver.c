@@ -1,5 +1,21 @@
 #include "driver.h"
 
+#include <math.h>
+
+int suslov_row_finite(const suslov_row *r)
+{
+    int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2]) && isfinite(r->lambda);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            ok = ok && isfinite(r->R[i][j]);
+    return ok;
+}
+
+int suslov_keep_last(void *ctx, const suslov_row *row)
+{
+    *(suslov_row *)ctx = *row;
+    return 0;
+}
 
 int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit, void *ctx,
                suslov_run_report *report)
@@ -10,12 +26,15 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
     suslov_attitude_identity(&att);
     suslov_attitude_get(&att, row.R);
     *report = (suslov_run_report){.status = SUSLOV_STEP_OK};
+    if (!suslov_row_finite(&row))
+        return SUSLOV_RUN_BLOWUP; /* report->step = 0, t = 0 */
     if (emit(ctx, &row))
-        return -1;
+        return SUSLOV_RUN_STOPPED;
     for (long k = 0; k < cfg->steps; k++) {
         double w_next[3], lambda;
         suslov_step_stats st;
-        const int status = cfg->stepper->apply(cfg->model, cfg->eps, row.w, w_next, &lambda, &st);
+        const int status = suslov_step_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w, w_next,
+                                            &lambda, &st);
         report->newton_iterations += st.iterations;
         if (st.iterations > report->max_iterations)
             report->max_iterations = st.iterations;
@@ -24,9 +43,8 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
             report->step = k + 1;
             report->t = (double)(k + 1) * cfg->eps;
             report->stats = st;
-            return 1;
+            return SUSLOV_RUN_STEP_FAILED;
         }
-        suslov_reconstruct(cfg->recon, cfg->eps, &att, row.w, w_next);
         row.k = k + 1;
         row.t = (double)(k + 1) * cfg->eps;
         row.w[0] = w_next[0];
@@ -34,8 +52,14 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
         row.w[2] = w_next[2];
         row.lambda = lambda;
         suslov_attitude_get(&att, row.R);
+        if (!suslov_row_finite(&row)) {
+            report->step = row.k;
+            report->t = row.t;
+            report->stats = st;
+            return SUSLOV_RUN_BLOWUP;
+        }
         if ((row.k % cfg->every == 0 || row.k == cfg->steps) && emit(ctx, &row))
-            return -1;
+            return SUSLOV_RUN_STOPPED;
     }
-    return 0;
+    return SUSLOV_RUN_OK;
 }

@@ -1,13 +1,16 @@
 /* The exact solution on the same grid and with the same row format as the integrators:
- * closed-form w(t_k) and lambda(w(t_k)), and the rk8pd reference R(t_k). */
+ * closed-form w(t_k) and lambda(w(t_k)), and the reference R(t_k) (refattitude.h). */
 #ifndef SUSLOV_EXACT_RUN_H
 #define SUSLOV_EXACT_RUN_H
 
 #include "driver.h"
 #include "exact.h"
 
-/* Rows at t_k = k eps for k = 0, K, 2K, ..., N. Returns 0, -1 when emit asked to stop, or a
- * positive GSL status when the reference attitude failed (report->step/t say where). */
+/* Rows at t_k = k eps for k = 0, K, 2K, ..., N. R(t) comes from the reference integration
+ * (refattitude.h) up to the time t_s after which w(t) is the steady rotation w* to within a
+ * total rotation angle of u = 2^-53, and from the closed form R(t_s) exp((t - t_s) w*^) beyond
+ * (exact_run.c): the cost is O(1) in T for large T. Returns a suslov_run_status (driver.h): _OK,
+ * _STOPPED or _BLOWUP (report->step, t). */
 int suslov_run_exact(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit,
                      void *ctx, suslov_run_report *report);
 

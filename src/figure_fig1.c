@@ -1,5 +1,6 @@
 /* Figure 1 of the paper: the midpoint DSP and the variational integrator at eps = 1e-3 against
  * the exact solution, the paper's body and w(0). Usage: figure_fig1 FIGDIR DATADIR */
+#include "experiments.h"
 #include "fig_output.h"
 #include "plot.h"
 #include "series.h"
@@ -10,9 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS 1e-3
-#define T_END 60.0     /* 8.7 / k: the transient has decayed to e^{-8.7} ~ 2e-4 */
-#define EVERY 10       /* rows kept: every 10th step */
+#define EPS SUSLOV_FIG1_EPS
+#define T_END SUSLOV_FIG1_T_END
+#define EVERY SUSLOV_FIG1_EVERY
 #define MARK_EVERY 50  /* markers: every 50th kept row = every 0.5 time units */
 
 typedef struct {
@@ -81,9 +82,12 @@ int main(int argc, char **argv)
     suslov_model m;
     suslov_exact ex;
     fig1 f;
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_fig1: the paper's inertia is rejected: %s\n", err);
+        return 1;
+    }
     suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
-    const long N = (long)llround(T_END / EPS);
+    const long N = suslov_experiment_steps(T_END, EPS);
     if (suslov_series_init(&f.ex, N, EVERY) || suslov_series_init(&f.mid, N, EVERY) || suslov_series_init(&f.var, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");
         return 1;

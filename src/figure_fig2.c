@@ -1,5 +1,6 @@
 /* Figure 2 of the paper: the midpoint DSP and the variational integrator at eps = 1 against the
  * exact solution, plus (f) the distance to the exact steady rotation. Usage: figure_fig2 FIGDIR DATADIR */
+#include "experiments.h"
 #include "fig_output.h"
 #include "plot.h"
 #include "series.h"
@@ -10,8 +11,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS 1.0
-#define T_END 200.0   /* 29/k: the exact solution is at its limit to round-off long before */
+#define EPS SUSLOV_FIG2_EPS
+#define T_END SUSLOV_FIG2_T_END
 #define FINE 0.05     /* the reference line is drawn on this finer grid */
 
 typedef struct {
@@ -82,10 +83,13 @@ int main(int argc, char **argv)
     suslov_model m;
     suslov_exact ex;
     fig2 f;
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_fig2: the paper's inertia is rejected: %s\n", err);
+        return 1;
+    }
     suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
     suslov_exact_limit(&ex, f.winf);
-    const long N = (long)llround(T_END / EPS), NF = (long)llround(T_END / FINE);
+    const long N = suslov_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
     if (suslov_series_init(&f.mid, N, 1) || suslov_series_init(&f.var, N, 1) || suslov_series_init(&f.ex, NF, 1)) {
         fprintf(stderr, "figure_fig2: out of memory\n");
         return 1;

@@ -2,6 +2,7 @@
  * the implicit equation solved by Newton, or by n fixed-point sweeps (n = 1 is explicit Euler,
  * n = 2 the explicit midpoint rule) - against the variational integrator.
  * Usage: figure_fig2_energy FIGDIR DATADIR */
+#include "experiments.h"
 #include "fig_output.h"
 #include "midpoint_sweeps.h"
 #include "plot.h"
@@ -12,10 +13,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS 1.0
-#define T_END 200.0
-#define N_STEPS 200
-#define NSWEEP 8      /* panel (d): n = 1 .. NSWEEP */
+#define EPS SUSLOV_FIG2_EPS
+#define T_END SUSLOV_FIG2_T_END
+#define N_STEPS 200   /* T_END / EPS, checked in main */
+#define NSWEEP SUSLOV_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
 #define NCURVE 6      /* Newton, n = 1, 2, 3, 5, variational */
 
 static const int curve_sweeps[NCURVE] = {0, 1, 2, 3, 5, -1}; /* 0 = Newton, -1 = variational */
@@ -122,7 +123,14 @@ int main(int argc, char **argv)
     gsl_set_error_handler_off();
     char err[256], path[4096];
     suslov_model m;
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_fig2_energy: the paper's inertia is rejected: %s\n", err);
+        return 1;
+    }
+    if (suslov_experiment_steps(T_END, EPS) != N_STEPS) {
+        fprintf(stderr, "figure_fig2_energy: N_STEPS does not match src/experiments.h\n");
+        return 1;
+    }
     readings *r = calloc(1, sizeof *r);
     if (!r)
         return 1;

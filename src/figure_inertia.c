@@ -1,6 +1,7 @@
 /* The inertia ambiguity: the printed I has I23 = 0.2 but I32 = 0.1. (RGB2)/(ContDyn) use the third
  * row; a symmetric body would have (I31, I32) = (I13, I23). Exact solutions for both.
  * Usage: figure_inertia FIGDIR DATADIR */
+#include "experiments.h"
 #include "fig_output.h"
 #include "plot.h"
 #include "series.h"
@@ -9,9 +10,9 @@
 #include <math.h>
 #include <stdio.h>
 
-#define T_END 60.0
-#define DT 0.05
-#define NPTS 1201
+#define T_END SUSLOV_INERTIA_T_END
+#define DT SUSLOV_INERTIA_DT
+#define NPTS 1201     /* T_END / DT + 1, checked in main */
 
 typedef struct {
     suslov_series row, col;
@@ -84,12 +85,15 @@ int main(int argc, char **argv)
     double Icol[9];
     suslov_model mr, mc;
     suslov_exact er, ec;
-    for (int i = 0; i < 9; i++)
-        Icol[i] = SUSLOV_PAPER_INERTIA[i];
-    Icol[6] = SUSLOV_PAPER_INERTIA[2]; /* (I31, I32) := (I13, I23) */
-    Icol[7] = SUSLOV_PAPER_INERTIA[5];
-    if (suslov_model_init(&mr, SUSLOV_PAPER_INERTIA, err, sizeof err) || suslov_model_init(&mc, Icol, err, sizeof err))
+    if (suslov_experiment_steps(T_END, DT) + 1 != NPTS) {
+        fprintf(stderr, "figure_inertia: NPTS does not match src/experiments.h\n");
         return 1;
+    }
+    suslov_inertia_column_swap(SUSLOV_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
+    if (suslov_model_init(&mr, SUSLOV_PAPER_INERTIA, err, sizeof err) || suslov_model_init(&mc, Icol, err, sizeof err)) {
+        fprintf(stderr, "figure_inertia: an inertia tensor is rejected: %s\n", err);
+        return 1;
+    }
     suslov_exact_init(&er, &mr, SUSLOV_PAPER_OMEGA0);
     suslov_exact_init(&ec, &mc, SUSLOV_PAPER_OMEGA0);
     f.k_row = er.k;

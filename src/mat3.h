@@ -57,6 +57,16 @@ static inline double mat3_frobenius(const double A[3][3])
     return sqrt(s);
 }
 
+/* |A - B| in the Frobenius norm. */
+static inline double mat3_dist(const double A[3][3], const double B[3][3])
+{
+    double s = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            s += (A[i][j] - B[i][j]) * (A[i][j] - B[i][j]);
+    return sqrt(s);
+}
+
 static inline double mat3_det(const double A[3][3])
 {
     return A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1])

@@ -12,8 +12,14 @@ int suslov_fit_order(const double *eps, const double *err, int n, double eps_max
     int m = 0;
     fit->eps_lo = INFINITY;
     fit->eps_hi = 0.0;
+    fit->used = 0;
+    fit->slope = fit->intercept = NAN;
     for (int i = 0; i < n && m < ORDERFIT_MAXPTS; i++) {
-        if (!(eps[i] <= eps_max && err[i] > floor && isfinite(err[i])))
+        if (!(eps[i] <= eps_max))
+            continue;
+        if (!isfinite(err[i])) /* a failed or blown-up run inside the window: no honest slope */
+            return -1;
+        if (!(err[i] > floor))
             continue;
         x[m] = log(eps[i]);
         y[m] = log(err[i]);
@@ -22,7 +28,6 @@ int suslov_fit_order(const double *eps, const double *err, int n, double eps_max
         m++;
     }
     fit->used = m;
-    fit->slope = fit->intercept = NAN;
     if (m < 3)
         return -1;
     gsl_fit_linear(x, 1, y, 1, (size_t)m, &fit->intercept, &fit->slope, &c00, &c01, &c11, &sumsq);

@@ -22,7 +22,7 @@ typedef struct {
 } suslov_order_fit;
 
 /* Fits the points with eps <= eps_max and floor < err. Returns 0, or -1 when fewer than
- * three points qualify (no honest slope then). */
+ * three points qualify or a point inside the window is not finite (no honest slope then). */
 int suslov_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
                      suslov_order_fit *fit);
 

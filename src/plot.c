@@ -10,6 +10,10 @@
 
 #define PLOT_PI 3.14159265358979323846
 
+const double PLOT_PALETTE[PLOT_PALETTE_N][3] = {
+    {0.90, 0.62, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65}, {0.00, 0.45, 0.70},
+    {0.84, 0.37, 0.00}, {0.34, 0.71, 0.91}, {0.60, 0.10, 0.15}, {0.20, 0.20, 0.20},
+    {0.55, 0.35, 0.10}, {0.40, 0.40, 0.85}, {0.10, 0.40, 0.20}, {0.65, 0.65, 0.00}};
 const double PLOT_RED[3] = {0.85, 0.15, 0.10}, PLOT_BLUE[3] = {0.12, 0.35, 0.80},
              PLOT_GREEN[3] = {0.10, 0.60, 0.20}, PLOT_ORANGE[3] = {0.95, 0.55, 0.05},
              PLOT_PURPLE[3] = {0.55, 0.25, 0.70}, PLOT_GREY[3] = {0.45, 0.45, 0.45},
@@ -122,15 +126,17 @@ static double text_width(cairo_t *cr, const char *text, double size)
     return te.x_advance;
 }
 
-/* "10" with a raised exponent, aligned like plot_text; returns nothing. */
+/* "10" with a raised exponent, aligned like plot_text. The exponent keeps the tick size: the
+ * figures print at 7/8 of their size in the companion, and 8 pt is the smallest that stays at
+ * 7 pt there. */
 static void power_label(cairo_t *cr, double x, double y, int e, double halign, double valign)
 {
     char ex[16];
     snprintf(ex, sizeof ex, "%d", e);
-    const double w10 = text_width(cr, "10", TICK_FONT), we = text_width(cr, ex, TICK_FONT * 0.75);
-    const double x0 = x - halign * (w10 + we);
+    const double w10 = text_width(cr, "10", TICK_FONT), we = text_width(cr, ex, TICK_FONT);
+    const double x0 = x - halign * (w10 + 0.5 + we);
     plot_text(cr, x0, y, "10", TICK_FONT, 0.0, valign, 0);
-    plot_text(cr, x0 + w10, y - TICK_FONT * 0.38, ex, TICK_FONT * 0.75, 0.0, valign, 0);
+    plot_text(cr, x0 + w10 + 0.5, y - TICK_FONT * 0.42, ex, TICK_FONT, 0.0, valign, 0);
 }
 
 static double nice_step(double span)
@@ -422,7 +428,7 @@ void plot_slope(const plot_axes *ax, double xa, double xb, double yb, double slo
     cairo_stroke(cr);
     if (label) { /* at the left end, so that segments sharing a right end keep apart */
         cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-        plot_text(cr, map_x(ax, xa) - 2.0, map_y(ax, ya), label, 7.5, 1.0, 0.5, 0);
+        plot_text(cr, map_x(ax, xa) - 2.0, map_y(ax, ya), label, TICK_FONT, 1.0, 0.5, 0);
     }
     cairo_restore(cr);
 }

@@ -33,6 +33,11 @@ typedef struct {
 /* The colours of the paper's Figure 2 and a few more, colour-blind distinguishable. */
 extern const double PLOT_RED[3], PLOT_BLUE[3], PLOT_GREEN[3], PLOT_ORANGE[3], PLOT_PURPLE[3],
     PLOT_GREY[3], PLOT_BLACK[3];
+/* Colours for one curve per method: Okabe-Ito first (told apart by colour-blind readers), then
+ * dark red, black, brown, slate blue, dark green and olive, and no grey (reference curves are
+ * grey); markers tell the rest apart. Curve i takes PLOT_PALETTE[i % PLOT_PALETTE_N]. */
+#define PLOT_PALETTE_N 12
+extern const double PLOT_PALETTE[PLOT_PALETTE_N][3];
 plot_style plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
                          const char *label);
 

@@ -1,14 +1,19 @@
 #include "reconstruct.h"
 
 #include "mat3.h"
+#include "quaternion.h"
 #include "so3.h"
 
+#include <math.h>
 #include <string.h>
 
 void suslov_attitude_identity(suslov_attitude *a)
 {
     mat3_identity(a->hi);
     memset(a->lo, 0, sizeof a->lo);
+    a->q[0] = 1.0;
+    a->q[1] = a->q[2] = a->q[3] = 0.0;
+    a->has_q = 1;
 }
 
 void suslov_attitude_get(const suslov_attitude *a, double R[3][3])
@@ -18,14 +23,50 @@ void suslov_attitude_get(const suslov_attitude *a, double R[3][3])
             R[i][j] = a->hi[i][j] + a->lo[i][j];
 }
 
-/* (algo), step 3, with tau = cay as in (caypart). */
+/* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
 void suslov_reconstruct(suslov_recon kind, double eps, suslov_attitude *a, const double w[3],
                         const double w_next[3])
 {
-    double xi[3], D[3][3], R[3][3], dR[3][3];
+    double xi[3], D[3][3];
     for (int i = 0; i < 3; i++)
         xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
-    so3_cay_minus_identity(xi, D);
+    if (kind == SUSLOV_RECON_EXP_MID)
+        so3_exp_minus_identity(xi, D);
+    else
+        so3_cay_minus_identity(xi, D);
+    suslov_attitude_increment(a, D);
+}
+
+/* (algo), step 3, on a quaternion of R_k (reconstruct.h). */
+void suslov_reconstruct_quat(suslov_recon kind, double eps, double q[4], const double w[3],
+                             const double w_next[3])
+{
+    double xi[3], dq[4], p[4];
+    for (int i = 0; i < 3; i++)
+        xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+    if (kind == SUSLOV_RECON_EXP_MID) {
+        const double th = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+        const double s = th > 0.0 ? 0.5 * sin(0.5 * th) / (0.5 * th) : 0.5; /* sin(th/2)/th */
+        dq[0] = cos(0.5 * th);
+        for (int i = 0; i < 3; i++)
+            dq[1 + i] = s * xi[i];
+    } else {
+        dq[0] = 1.0;
+        for (int i = 0; i < 3; i++)
+            dq[1 + i] = 0.5 * xi[i];
+        const double n = 1.0 / sqrt(1.0 + dq[1] * dq[1] + dq[2] * dq[2] + dq[3] * dq[3]);
+        for (int i = 0; i < 4; i++)
+            dq[i] *= n;
+    }
+    quat_mul(p, q, dq);
+    for (int i = 0; i < 4; i++)
+        q[i] = p[i];
+}
+
+void suslov_attitude_increment(suslov_attitude *a, const double D[3][3])
+{
+    double R[3][3], dR[3][3];
+    a->has_q = 0;
     suslov_attitude_get(a, R);
     mat3_mul(dR, R, D);
     /* Kahan: hi + lo + dR, keeping what the addition to hi rounds away in lo. */
@@ -38,13 +79,19 @@ void suslov_reconstruct(suslov_recon kind, double eps, suslov_attitude *a, const
         }
 }
 
+const char *const SUSLOV_RECON_NAMES[SUSLOV_RECON_COUNT] = {"cayley", "cayley-mid", "exp-mid"};
+const char *const SUSLOV_RECON_ABOUT[SUSLOV_RECON_COUNT] = {
+    "R_{k+1} = R_k cay(H w_k^), Algorithm (algo)",
+    "R_{k+1} = R_k cay(H (w_k^ + w_{k+1}^)/2) (extension)",
+    "R_{k+1} = R_k exp(H (w_k^ + w_{k+1}^)/2), Rodrigues (extension)",
+};
+
 int suslov_recon_by_name(const char *name, suslov_recon *kind)
 {
-    if (strcmp(name, "cayley") == 0)
-        *kind = SUSLOV_RECON_CAYLEY;
-    else if (strcmp(name, "cayley-mid") == 0)
-        *kind = SUSLOV_RECON_CAYLEY_MID;
-    else
-        return -1;
-    return 0;
+    for (int k = 0; k < SUSLOV_RECON_COUNT; k++)
+        if (strcmp(name, SUSLOV_RECON_NAMES[k]) == 0) {
+            *kind = (suslov_recon)k;
+            return 0;
+        }
+    return -1;
 }

@@ -81,25 +81,33 @@ void so3_cayinver_printed(double eps, const double w[2], double D[3][3])
     D[2][0] = e1 * w[1];              D[2][1] = -e1 * w[0];             D[2][2] = 0.0;
 }
 
-/* Rodrigues' formula for exp(w^); the series form near w = 0 keeps full accuracy. */
-void so3_exp(const double w[3], double R[3][3])
+/* Rodrigues' formula without its leading I: exp(w^) - I = a w^ + b w^2 with a = sin t / t and
+ * b = (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2, t = |w|. The half-angle form has no cancellation,
+ * so a and b keep full relative accuracy at every angle (1 - cos t loses them all near t = 0),
+ * and the result, small for small w, can be accumulated against I like the Cayley increment. */
+void so3_exp_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];
     so3_hat(w, W);
     mat3_mul(W2, W, W);
-    const double th2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-    double a, b;
-    if (th2 < 1e-8) {
-        a = 1.0 - th2 / 6.0 * (1.0 - th2 / 20.0);
-        b = 0.5 - th2 / 24.0 * (1.0 - th2 / 30.0);
-    } else {
-        const double th = sqrt(th2);
+    const double th = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    double a = 1.0, b = 0.5;
+    if (th > 0.0) {
+        const double s = sin(0.5 * th) / (0.5 * th);
         a = sin(th) / th;
-        b = (1.0 - cos(th)) / th2;
+        b = 0.5 * s * s;
     }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            R[i][j] = (i == j) + a * W[i][j] + b * W2[i][j];
+            D[i][j] = a * W[i][j] + b * W2[i][j];
+}
+
+/* Rodrigues' formula for exp(w^). */
+void so3_exp(const double w[3], double R[3][3])
+{
+    so3_exp_minus_identity(w, R);
+    for (int i = 0; i < 3; i++)
+        R[i][i] += 1.0;
 }
 
 /* (MetMat): dist(R1, R2) = |I - R1 R2^T| in the Frobenius norm. */

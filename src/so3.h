@@ -12,6 +12,7 @@ void so3_cay_inv(const double R[3][3], double w[3]);
 void so3_dcay(const double w[3], double D[3][3]);
 void so3_dcay_inv(const double w[3], double D[3][3]);
 void so3_cayinver_printed(double eps, const double w[2], double D[3][3]);
+void so3_exp_minus_identity(const double w[3], double D[3][3]);
 void so3_exp(const double w[3], double R[3][3]);
 double so3_dist(const double R1[3][3], const double R2[3][3]);
 double so3_orth_defect(const double R[3][3]);

@@ -2,7 +2,8 @@
 
 #include "newton2.h"
 
-#include <gsl/gsl_poly.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 
 #include <math.h>
 
@@ -102,8 +103,10 @@ static int returns(const suslov_exact *ex, const suslov_stepper_type *st, double
 
 double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type *st, double lo, double hi)
 {
-    if (!returns(ex, st, lo) || returns(ex, st, hi))
+    if (!returns(ex, st, lo))
         return NAN;
+    if (returns(ex, st, hi))
+        return INFINITY;
     while (hi - lo > 1e-4 * lo) {
         const double mid = 0.5 * (lo + hi);
         if (returns(ex, st, mid))
@@ -133,30 +136,40 @@ void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *
         }
 }
 
-/* Smallest positive real root of the polynomial a[0] + a[1] h + ... (n coefficients), or NAN. */
-static double smallest_positive_root(const double *a, int n)
+/* |R(-h)| - 1, whose first positive zero is the linear limit. */
+static double excess(double h, void *params)
 {
-    double z[8], best = NAN;
-    gsl_poly_complex_workspace *wsp = gsl_poly_complex_workspace_alloc((size_t)n);
-    if (wsp && gsl_poly_complex_solve(a, (size_t)n, wsp, z) == 0)
-        for (int i = 0; i < n - 1; i++)
-            if (fabs(z[2 * i + 1]) < 1e-12 && z[2 * i] > 0 && !(z[2 * i] >= best))
-                best = z[2 * i];
-    if (wsp)
-        gsl_poly_complex_workspace_free(wsp);
-    return best;
+    double (*R)(double) = *(double (**)(double))params;
+    return fabs(R(-h)) - 1.0;
 }
 
-double suslov_linear_limit(const suslov_stepper_type *st)
+double suslov_linear_limit(const suslov_method *me, double h_max)
 {
-    if (st == suslov_step_euler)
-        return 2.0;
-    if (st != suslov_step_rk4)
+    if (!me->stability)
         return NAN;
-    /* R(-h) = 1 - h + h^2/2 - h^3/6 + h^4/24 reaches |R| = 1 where R(-h) = +1, i.e. (dividing by h)
-     * -1 + h/2 - h^2/6 + h^3/24 = 0, or where R(-h) = -1: 2 - h + h^2/2 - h^3/6 + h^4/24 = 0. */
-    const double plus[4] = {-1.0, 0.5, -1.0 / 6.0, 1.0 / 24.0};
-    const double minus[5] = {2.0, -1.0, 0.5, -1.0 / 6.0, 1.0 / 24.0};
-    const double a = smallest_positive_root(plus, 4), b = smallest_positive_root(minus, 5);
-    return isnan(a) ? b : isnan(b) ? a : fmin(a, b);
+    /* Scan for the first sign change of |R(-h)| - 1 (a fine geometric grid: a stability
+     * interval is never narrower than a grid cell, 1% of h), then bracket it with Brent. */
+    double (*R)(double) = me->stability;
+    gsl_function F = {excess, &R};
+    double lo = 1e-3;
+    if (excess(lo, &R) > 0.0)
+        return NAN;
+    for (double hi = lo * 1.01; hi <= h_max * 1.01; lo = hi, hi *= 1.01) {
+        if (excess(hi, &R) <= 0.0)
+            continue;
+        gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+        double root = NAN;
+        if (s && gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS)
+            for (int it = 0; it < 100; it++) {
+                gsl_root_fsolver_iterate(s);
+                root = gsl_root_fsolver_root(s);
+                if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-14) ==
+                    GSL_SUCCESS)
+                    break;
+            }
+        if (s)
+            gsl_root_fsolver_free(s);
+        return root;
+    }
+    return INFINITY;
 }

@@ -5,7 +5,8 @@
  *   WRONG_LIMIT bounded, but ends elsewhere (a wrong steady rotation, a cycle, ...);
  *   BLOWUP      |w| exceeds STAB_BLOWUP_FACTOR |w0| or stops being finite;
  *   SOLVER      Newton did not converge, or converged to another root than the branch that
- *               continuation in eps from eps = 0 follows (checked when check_branch is set);
+ *               continuation in eps from eps = 0 follows (checked when check_branch is set),
+ *               or a Taylor step's series diverges (beyond its radius of convergence);
  *   REGULARITY  the (REGLOC) block is singular at the root or has changed sign from its
  *               eps -> 0 value (det I_m > 0), or the continuation in eps meets a fold: the
  *               discrete flow stops being defined. */
@@ -13,7 +14,7 @@
 #define SUSLOV_STABILITY_H
 
 #include "exact.h"
-#include "stepper.h"
+#include "registry.h"
 
 enum { STAB_GOOD, STAB_WRONG_LIMIT, STAB_BLOWUP, STAB_SOLVER, STAB_REGULARITY, STAB_NCLASS };
 extern const char *const STAB_NAMES[STAB_NCLASS];
@@ -37,7 +38,8 @@ void suslov_ellipse_point(const suslov_exact *ref, double theta, double w[2]);
 
 /* The linear stability limit of an explicit stepper at the attracting steady rotation,
  * measured: the largest h for which a start 1e-6 off the rotation returns to the line of
- * steady rotations (bisection to 1e-4 relative over [lo, hi]). Returns NAN if none in range. */
+ * steady rotations (bisection to 1e-4 relative over [lo, hi]). Returns INFINITY when it still
+ * returns at hi, NAN when it does not even return at lo. */
 double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type *st, double lo, double hi);
 
 /* The run length for step h: long enough for the exact motion (k t = 40) and for a method
@@ -51,9 +53,10 @@ long suslov_stability_steps(double h);
 void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *st, const double *hs, int nh,
                           int nangle, stab_result *results);
 
-/* Linear stability limits at the attracting rotation, where the transverse eigenvalue of Df is
- * -k: Euler |1 - h| = 1 gives 2; RK4 |1 - h + h^2/2 - h^3/6 + h^4/24| = 1 gives the root found
- * with gsl_poly_complex_solve; NAN for the implicit steps (the midpoint rule is A-stable). */
-double suslov_linear_limit(const suslov_stepper_type *st);
+/* The linear stability limit at the attracting rotation, where the transverse eigenvalue of Df is
+ * -k: the smallest h > 0 with |R(-h)| = 1 for the method's stability function R (Euler: 2; RK4:
+ * 2.7853); INFINITY when |R(-h)| <= 1 up to h_max (the midpoint rule is A-stable); NAN when the
+ * method has no stability function in the registry. */
+double suslov_linear_limit(const suslov_method *me, double h_max);
 
 #endif

@@ -15,5 +15,7 @@ static int euler_apply(const suslov_model *m, double eps, const double w[3], dou
     return SUSLOV_STEP_OK;
 }
 
-static const suslov_stepper_type euler_type = {"euler", 1, 1, euler_apply, NULL};
-const suslov_stepper_type *const suslov_step_euler = &euler_type;
+const suslov_stepper_type suslov_euler_type = {
+    .name = "euler", .order = 1, .lambda_order = 1,
+    .apply = euler_apply};
+const suslov_stepper_type *const suslov_step_euler = &suslov_euler_type;

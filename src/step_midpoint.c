@@ -37,5 +37,7 @@ static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
     return status;
 }
 
-static const suslov_stepper_type midpoint_type = {"midpoint", 2, 2, midpoint_apply, mid_residual};
-const suslov_stepper_type *const suslov_step_midpoint = &midpoint_type;
+const suslov_stepper_type suslov_midpoint_type = {
+    .name = "midpoint", .order = 2, .lambda_order = 2,
+    .apply = midpoint_apply, .residual = mid_residual};
+const suslov_stepper_type *const suslov_step_midpoint = &suslov_midpoint_type;

@@ -25,5 +25,7 @@ static int rk4_apply(const suslov_model *m, double eps, const double w[3], doubl
     return SUSLOV_STEP_OK;
 }
 
-static const suslov_stepper_type rk4_type = {"rk4", 4, 4, rk4_apply, NULL};
-const suslov_stepper_type *const suslov_step_rk4 = &rk4_type;
+const suslov_stepper_type suslov_rk4_type = {
+    .name = "rk4", .order = 4, .lambda_order = 4,
+    .apply = rk4_apply};
+const suslov_stepper_type *const suslov_step_rk4 = &suslov_rk4_type;

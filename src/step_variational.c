@@ -61,5 +61,7 @@ static int variational_apply(const suslov_model *m, double eps, const double w[3
     return status;
 }
 
-static const suslov_stepper_type variational_type = {"variational", 2, -1, variational_apply, taudyn_residual};
-const suslov_stepper_type *const suslov_step_variational = &variational_type;
+const suslov_stepper_type suslov_variational_type = {
+    .name = "variational", .order = 2, .lambda_order = -1,
+    .apply = variational_apply, .residual = taudyn_residual};
+const suslov_stepper_type *const suslov_step_variational = &suslov_variational_type;

@@ -1,21 +1,15 @@
 #include "stepper.h"
 
-#include <string.h>
-
-const suslov_stepper_type *suslov_stepper_get(int i)
+int suslov_step_full(const suslov_stepper_type *st, const suslov_model *m, double eps, suslov_recon recon,
+                     suslov_attitude *att, const double w[3], double w_next[3], double *lambda_next,
+                     suslov_step_stats *stats)
 {
-    const suslov_stepper_type *all[] = {suslov_step_euler, suslov_step_midpoint,
-                                        suslov_step_rk4, suslov_step_variational};
-    return i >= 0 && i < (int)(sizeof all / sizeof all[0]) ? all[i] : NULL;
-}
-
-const suslov_stepper_type *suslov_stepper_by_name(const char *name)
-{
-    const suslov_stepper_type *s;
-    for (int i = 0; (s = suslov_stepper_get(i)) != NULL; i++)
-        if (strcmp(s->name, name) == 0)
-            return s;
-    return NULL;
+    if (st->apply_full)
+        return st->apply_full(m, eps, recon, att, w, w_next, lambda_next, stats);
+    const int status = st->apply(m, eps, w, w_next, lambda_next, stats);
+    if (status == SUSLOV_STEP_OK)
+        suslov_reconstruct(recon, eps, att, w, w_next);
+    return status;
 }
 
 void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2])

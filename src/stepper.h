@@ -6,8 +6,11 @@
 #define SUSLOV_STEPPER_H
 
 #include "model.h"
+#include "reconstruct.h"
 
-enum { SUSLOV_STEP_OK = 0, SUSLOV_STEP_NO_CONVERGENCE = 1, SUSLOV_STEP_SINGULAR = 2 };
+/* SUSLOV_STEP_DIVERGED: an explicit series step beyond its radius of convergence (its last term
+ * in stats.residual, |w^k| in stats.scale). */
+enum { SUSLOV_STEP_OK = 0, SUSLOV_STEP_NO_CONVERGENCE = 1, SUSLOV_STEP_SINGULAR = 2, SUSLOV_STEP_DIVERGED = 3 };
 
 typedef struct {
     int iterations;   /* Newton iterations (0 for explicit steps) */
@@ -30,17 +33,29 @@ typedef struct {
      * w_next[2] = 0, the second equation of (DSP). Returns SUSLOV_STEP_*. */
     int (*apply)(const suslov_model *m, double eps, const double w[3], double w_next[3],
                  double *lambda_next, suslov_step_stats *st);
-    suslov_residual_fn residual;  /* NULL for explicit steppers */
+    suslov_residual_fn residual;  /* NULL unless the step is one 2x2 implicit equation */
+    /* Optional: one step of the whole state (w, R_k) -> (w^{k+1}, R_{k+1}). When set, the driver
+     * calls it instead of apply followed by suslov_reconstruct, and the method advances the
+     * attitude itself with the requested reconstruction (a composition reconstructs after every
+     * substep). apply must still give the w-only step. */
+    int (*apply_full)(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att,
+                      const double w[3], double w_next[3], double *lambda_next, suslov_step_stats *st);
 } suslov_stepper_type;
 
+/* The types by name (for the registry table, src/registry.c) and as pointers, like GSL's
+ * gsl_odeiv2_step_rk4. */
+extern const suslov_stepper_type suslov_euler_type, suslov_rk4_type, suslov_midpoint_type,
+    suslov_variational_type;
 extern const suslov_stepper_type *const suslov_step_euler;
 extern const suslov_stepper_type *const suslov_step_rk4;
 extern const suslov_stepper_type *const suslov_step_midpoint;
 extern const suslov_stepper_type *const suslov_step_variational;
 
-/* The i-th stepper (euler, midpoint, rk4, variational), NULL past the end. */
-const suslov_stepper_type *suslov_stepper_get(int i);
-const suslov_stepper_type *suslov_stepper_by_name(const char *name);
+/* One step of (w, R): apply_full when the type has it, else apply and then (algo)'s
+ * reconstruction of the given kind. */
+int suslov_step_full(const suslov_stepper_type *st, const suslov_model *m, double eps, suslov_recon recon,
+                     suslov_attitude *att, const double w[3], double w_next[3], double *lambda_next,
+                     suslov_step_stats *stats);
 
 /* Explicit midpoint (second order) prediction, the starting point of the Newton solves. */
 void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2]);

@@ -30,16 +30,23 @@ void suslov_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3
     so3_vee(P, xi);
 }
 
+/* (LdAeqs) left-trivialized: I xi' = (I xi) x xi + lambda(xi) e3, the velocity part of field(). */
+static void xi_field(const suslov_unreduced *u, const double xi[3], double d[3])
+{
+    double Iw[3], rhs[3];
+    mat3_vec(Iw, u->m->I, xi);
+    vec3_cross(rhs, Iw, xi);
+    rhs[2] += suslov_lagmult(u->m, xi);
+    mat3_vec(d, u->Iinv, rhs);
+}
+
 /* (LdAeqs): the vector field of the unreduced equations in the coordinates (R, V). */
 static void field(const suslov_unreduced *u, const double R[3][3], const double V[3][3],
                   double dR[3][3], double dV[3][3])
 {
-    double w[3], Iw[3], rhs[3], wdot[3], W[3][3], Wd[3][3], A[3][3], B[3][3];
+    double w[3], wdot[3], W[3][3], Wd[3][3], A[3][3], B[3][3];
     suslov_unreduced_xi(R, V, w);
-    mat3_vec(Iw, u->m->I, w);
-    vec3_cross(rhs, Iw, w);
-    rhs[2] += suslov_lagmult(u->m, w);
-    mat3_vec(wdot, u->Iinv, rhs);
+    xi_field(u, w, wdot);
     so3_hat(w, W);
     so3_hat(wdot, Wd);
     mat3_mul(A, V, W);
@@ -51,27 +58,93 @@ static void field(const suslov_unreduced *u, const double R[3][3], const double 
         }
 }
 
-void suslov_unreduced_rk4(const suslov_unreduced *u, double eps, double R[3][3], double V[3][3])
+/* The tables (Hairer, Norsett, Wanner, Solving ODEs I, Sect. II.1). */
+const suslov_butcher SUSLOV_BUTCHER_RK4 = {"rk4", 4, 4, {{0}, {0.5}, {0, 0.5}, {0, 0, 1}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6},
+                                           {0, 0.5, 0.5, 1}};
+const suslov_butcher SUSLOV_BUTCHER_KUTTA3 = {"kutta3", 3, 3, {{0}, {0.5}, {-1, 2}}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {0, 0.5, 1}};
+const suslov_butcher SUSLOV_BUTCHER_HEUN2 = {"heun2", 2, 2, {{0}, {1}}, {0.5, 0.5}, {0, 1}};
+
+/* (LdAeqs) stepped by an explicit Runge-Kutta table on (R, V). */
+void suslov_unreduced_rk(const suslov_unreduced *u, const suslov_butcher *tab, double eps, double R[3][3],
+                         double V[3][3])
 {
-    static const double a[3] = {0.5, 0.5, 1.0}, wt[4] = {1.0, 2.0, 2.0, 1.0};
-    double kR[3][3], kV[3][3], Rs[3][3], Vs[3][3], sR[3][3] = {{0}}, sV[3][3] = {{0}};
-    mat3_copy(Rs, R);
-    mat3_copy(Vs, V);
-    for (int s = 0; s < 4; s++) {
-        field(u, Rs, Vs, kR, kV);
+    double kR[4][3][3], kV[4][3][3], Rs[3][3], Vs[3][3];
+    for (int s = 0; s < tab->stages; s++) {
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) {
-                sR[i][j] += wt[s] * kR[i][j];
-                sV[i][j] += wt[s] * kV[i][j];
-                if (s < 3) {
-                    Rs[i][j] = R[i][j] + a[s] * eps * kR[i][j];
-                    Vs[i][j] = V[i][j] + a[s] * eps * kV[i][j];
+                double dr = 0.0, dv = 0.0;
+                for (int q = 0; q < s; q++) {
+                    dr += tab->a[s][q] * kR[q][i][j];
+                    dv += tab->a[s][q] * kV[q][i][j];
                 }
+                Rs[i][j] = R[i][j] + eps * dr;
+                Vs[i][j] = V[i][j] + eps * dv;
             }
+        field(u, Rs, Vs, kR[s], kV[s]);
     }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
-            R[i][j] += eps / 6.0 * sR[i][j];
-            V[i][j] += eps / 6.0 * sV[i][j];
+            double dr = 0.0, dv = 0.0;
+            for (int s = 0; s < tab->stages; s++) {
+                dr += tab->b[s] * kR[s][i][j];
+                dv += tab->b[s] * kV[s][i][j];
+            }
+            R[i][j] += eps * dr;
+            V[i][j] += eps * dv;
         }
+}
+
+void suslov_unreduced_rk4(const suslov_unreduced *u, double eps, double R[3][3], double V[3][3])
+{
+    suslov_unreduced_rk(u, &SUSLOV_BUTCHER_RK4, eps, R, V);
+}
+
+/* (LdAeqs) with the table on xi and the first-order reconstruction R_{k+1} = R_k cay(eps xi_k^). */
+void suslov_unreduced_rk_cayley(const suslov_unreduced *u, const suslov_butcher *tab, double eps, double R[3][3],
+                                double V[3][3])
+{
+    double xi[3], k[4][3], C[3][3], Rn[3][3], X[3][3];
+    suslov_unreduced_xi(R, V, xi);
+    for (int s = 0; s < tab->stages; s++) {
+        double y[3];
+        for (int i = 0; i < 3; i++) {
+            double d = 0.0;
+            for (int q = 0; q < s; q++)
+                d += tab->a[s][q] * k[q][i];
+            y[i] = xi[i] + eps * d;
+        }
+        xi_field(u, y, k[s]);
+    }
+    const double e[3] = {eps * xi[0], eps * xi[1], eps * xi[2]};
+    so3_cay(e, C);
+    mat3_mul(Rn, R, C);
+    for (int i = 0; i < 3; i++) {
+        double d = 0.0;
+        for (int s = 0; s < tab->stages; s++)
+            d += tab->b[s] * k[s][i];
+        xi[i] += eps * d;
+    }
+    so3_hat(xi, X);
+    mat3_copy(R, Rn);
+    mat3_mul(V, Rn, X);
+}
+
+/* (LdAeqs) stepped by the table on (R, V) in 3x3 coordinates (the velocity stages read R through
+ * w = vee(R^T V)); the new velocity is its left-trivialization xi_{k+1} = vee(R~^T V~) of that
+ * step, the attitude the first-order R_{k+1} = R_k cay(eps xi_k^), V_{k+1} = R_{k+1} xi_{k+1}^. */
+void suslov_unreduced_rk_recayley(const suslov_unreduced *u, const suslov_butcher *tab, double eps, double R[3][3],
+                                  double V[3][3])
+{
+    double xi0[3], xi[3], Rt[3][3], Vt[3][3], C[3][3], Rn[3][3], X[3][3];
+    suslov_unreduced_xi(R, V, xi0);
+    mat3_copy(Rt, R);
+    mat3_copy(Vt, V);
+    suslov_unreduced_rk(u, tab, eps, Rt, Vt);
+    suslov_unreduced_xi(Rt, Vt, xi);
+    const double e[3] = {eps * xi0[0], eps * xi0[1], eps * xi0[2]};
+    so3_cay(e, C);
+    mat3_mul(Rn, R, C);
+    so3_hat(xi, X);
+    mat3_copy(R, Rn);
+    mat3_mul(V, Rn, X);
 }

@@ -24,14 +24,31 @@ void ledger_add(const char *id, const char *paper_ref, const char *quantity, dou
 void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
                       double bound, int at_least, ledger_assert truth);
 
+/* The same, for a measurement that may be +-infinity meaning "beyond every value tested" (a
+ * stability limit that is never reached). Every other line fails on an infinite value. */
+void ledger_add_bound_unbounded(const char *id, const char *paper_ref, const char *quantity, double measured,
+                                double bound, int at_least, ledger_assert truth);
+
+/* Stops the claims program (exit 2) when a measurement a claim needs could not be made, with
+ * "claims: WHAT failed" on stderr: no line is recorded for a run that did not happen. */
+void ledger_die(const char *what);
+
 /* A further number for the companion text, as the macro \NAME (letters only). */
 void ledger_number(const char *name, double value);
 
 /* Writes the TSV (through a temporary file) and prints the table followed by
- * "claims: N passed, N failed". Next to the TSV it writes numbers.tex (for each line \Id, \IdExpected,
- * \IdTol and \IdVerdict, the id in CamelCase with digits spelled out, numbers for math mode; and
- * every ledger_number) and ledger.tex (the ledger as a LaTeX table). Returns the number of
- * failed checks, or -1 on a write error. */
+ * "claims: N passed, N failed". Next to the TSV it writes, for the companion (make paper):
+ *   numbers.tex  for each line \Id, \IdExpected, \IdTol, \IdVerdict and \IdTest (the
+ *                comparison, e.g. $|m-1|\le 0.1$ or $m\ge b$), the id in CamelCase with digits
+ *                spelled out, numbers for math mode; every ledger_number; and the counts
+ *                \LedgerLines, \LedgerPassed, \LedgerFailed, \LedgerReproduced,
+ *                \LedgerNotReproduced, \LedgerExtension, \LedgerPaperLines;
+ *   ledger.tex   the whole ledger as a longtable, the ASCII quantity strings typeset as math
+ *                and paper references as \PaperRefOr / \PaperRefParen (resolved by the
+ *                companion to the paper's published numbers, paper/labels.tsv);
+ *   summary.tex  the lines that test the paper, one row per claim (a claim tested on several
+ *                methods of the registry is one row).
+ * Returns the number of failed checks, or -1 on a write error. */
 int ledger_finish(const char *tsv_path);
 
 #endif

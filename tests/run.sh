@@ -9,7 +9,7 @@ status=0
 run() { # run NAME COMMAND...: show failures and the summary line, keep the counts
     name=$1; shift
     "$@" >"$log" 2>&1 || status=1
-    grep -E '^FAIL' "$log"
+    grep -E '^(FAIL|SKIP)' "$log"
     if ! grep -qE "^$name: [0-9]+ passed, [0-9]+ failed" "$log"; then
         echo "$name: no summary line (crashed?); its output:"; cat "$log"; status=1
         echo "$name: 0 passed, 1 failed" >>"$log"
@@ -22,6 +22,9 @@ for t in "$B"/test_*; do
     run "$(basename "$t")" "$t"
 done
 run test_cli sh tests/test_cli.sh "$B"
+run test_cli_values sh tests/test_cli_values.sh "$B"
+run test_animation_errors sh tests/test_animation_errors.sh "$B"
+run make_deps sh tests/make_deps.sh "$B"
 run eqmap sh tools/eqmap.sh check
 
 # The claims ledger prints its own table.

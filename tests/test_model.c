@@ -60,6 +60,35 @@ int main(void)
     CHECK(suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) == 0,
           "the paper's inertia tensor is accepted (its I_m is symmetric; I23 != I32 does not enter)");
 
+    /* Absolute values at the paper's w0 = (0.4, 0.5), worked out by hand from the printed
+     * formulas (the same arithmetic is written out in tests/test_cli_values.sh):
+     *   E = 1/2 (I11 w1^2 + 2 I12 w1 w2 + I22 w2^2) = 1/2 (0.16 + 0.04 + 0.25) = 0.225;
+     *   c = I31 w1 + I32 w2 = 0.08 + 0.05 = 0.13, |I_m| = 1 - 0.01 = 0.99;
+     *   (ContDyn) w1' = -(I22 w2 + I12 w1) c / |I_m| = -(0.54)(0.13)/0.99 = -0.0702/0.99,
+     *             w2' =  (I21 w2 + I11 w1) c / |I_m| =  (0.45)(0.13)/0.99 =  0.0585/0.99;
+     *   O_0 = c/|I_m| ((I32 I21 - I31 I22) w2 + (I32 I11 - I31 I12) w1)
+     *       = 0.13/0.99 (-0.19 (0.5) + 0.08 (0.4)) = -0.00819/0.99;
+     *   (LagMult) lambda = w1 (I21 w1 + I22 w2) - w2 (I11 w1 + I12 w2) + O_0
+     *       = 0.4 (0.54) - 0.5 (0.45) - 0.00819/0.99 = -(0.00891 + 0.00819)/0.99 = -19/1100.
+     * Each is a sum of a few products of size < 1: round-off a few u, so 1e-15. */
+    {
+        const double *w0 = SUSLOV_PAPER_OMEGA0;
+        double f[2];
+        suslov_contdyn(&m, w0, f);
+        const double E0 = suslov_energy(&m, w0), l0 = suslov_lagmult(&m, w0), o0 = suslov_lagmult_o0(&m, w0);
+        CHECK(fabs(E0 - 0.225) < 1e-15, "E(w0) = %.17g, by hand 0.225", E0);
+        CHECK(fabs(l0 + 19.0 / 1100.0) < 1e-15, "lambda(w0) = %.17g, by hand -19/1100", l0);
+        CHECK(fabs(o0 + 0.00819 / 0.99) < 1e-15, "O_0(w0) = %.17g, by hand -0.00819/0.99", o0);
+        CHECK(fabs(f[0] + 0.0702 / 0.99) < 1e-15 && fabs(f[1] - 0.0585 / 0.99) < 1e-15,
+              "(ContDyn) at w0 = (%.17g, %.17g), by hand (-0.0702, 0.0585)/0.99", f[0], f[1]);
+        /* The steady rotation: c = 0.2 w1 + 0.1 w2 = 0 gives w2 = -2 w1; on E = 0.225,
+         * 2.3 w1^2 = 0.225; there lambda = w1 (0.1 w1 - 2 w1) + 2 w1 (w1 - 0.2 w1) = -0.3 w1^2
+         * = -27/920 and O_0 = 0. */
+        const double a = sqrt(0.225 / 2.3), winf[2] = {a, -2.0 * a};
+        CHECK(fabs(suslov_lagmult(&m, winf) + 27.0 / 920.0) < 1e-15 && fabs(suslov_energy(&m, winf) - 0.225) < 1e-15,
+              "lambda(w_inf) = %.17g, by hand -27/920; E(w_inf) = 0.225", suslov_lagmult(&m, winf));
+    }
+
     /* (ContDyn) and (LagMult) solve the three rows of (RGB2) with w3 = 0, w3' = 0. */
     double worst_rgb = 0.0, worst_jac = 0.0, worst_e = 0.0;
     const double (*I)[3] = m.I;

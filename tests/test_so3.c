@@ -1,6 +1,7 @@
 /* SO(3) tools: (Isom), (caypart) and its derivatives, (cayinver), exp, (MetMat). */
 #include "check.h"
 #include "mat3.h"
+#include "reconstruct.h"
 #include "so3.h"
 
 #include <gsl/gsl_rng.h>
@@ -16,20 +17,77 @@ static void random_vec(gsl_rng *r, double scale, double v[3])
         v[i] = scale * (2.0 * gsl_rng_uniform(r) - 1.0);
 }
 
-static double diff_norm(const double A[3][3], const double B[3][3])
-{
-    double D[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            D[i][j] = A[i][j] - B[i][j];
-    return mat3_frobenius(D);
-}
-
 static double identity_defect(const double A[3][3])
 {
     double I3[3][3];
     mat3_identity(I3);
-    return diff_norm(A, I3);
+    return mat3_dist(A, I3);
+}
+
+/* cay(w^) by its definition (caypart), (I - w^/2)^{-1} (I + w^/2), the inverse by the adjugate:
+ * independent of the closed form in so3.c. */
+static void cay_by_definition(const double w[3], double C[3][3])
+{
+    double W[3][3], A[3][3], B[3][3], adj[3][3];
+    so3_hat(w, W);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            A[i][j] = (i == j) - 0.5 * W[i][j];
+            B[i][j] = (i == j) + 0.5 * W[i][j];
+        }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) /* adj[j][i] = cofactor (i, j) */
+            adj[j][i] = A[(i + 1) % 3][(j + 1) % 3] * A[(i + 2) % 3][(j + 2) % 3]
+                      - A[(i + 1) % 3][(j + 2) % 3] * A[(i + 2) % 3][(j + 1) % 3];
+    const double det = A[0][0] * adj[0][0] + A[0][1] * adj[1][0] + A[0][2] * adj[2][0];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            C[i][j] = (adj[i][0] * B[0][j] + adj[i][1] * B[1][j] + adj[i][2] * B[2][j]) / det;
+}
+
+/* exp(w^) by its power series (40 terms: |w| <= 2 here, so the remainder is below 1e-30). */
+static void exp_by_series(const double w[3], double E[3][3])
+{
+    double W[3][3], T[3][3], P[3][3];
+    so3_hat(w, W);
+    mat3_identity(E);
+    mat3_identity(T);
+    for (int n = 1; n <= 40; n++) {
+        mat3_mul(P, T, W);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                T[i][j] = P[i][j] / n;
+                E[i][j] += T[i][j];
+            }
+    }
+}
+
+/* Step 3 of (algo) and our two symmetric variants, two steps from R_0 = I: R_2 must be
+ * tau(xi_0) tau(xi_1) with the tau and xi of each kind, built here from the definitions. */
+static double reconstruct_vs_definition(suslov_recon kind, double eps, const double w[3][3])
+{
+    suslov_attitude a;
+    suslov_attitude_identity(&a);
+    double R[3][3], T[3][3], P[3][3];
+    mat3_identity(R);
+    for (int k = 0; k < 2; k++) {
+        double xi[3];
+        for (int i = 0; i < 3; i++)
+            xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[k][i] : 0.5 * eps * (w[k][i] + w[k + 1][i]);
+        if (kind == SUSLOV_RECON_EXP_MID)
+            exp_by_series(xi, T);
+        else
+            cay_by_definition(xi, T);
+        mat3_mul(P, R, T);
+        mat3_copy(R, P);
+        suslov_reconstruct(kind, eps, &a, w[k], w[k + 1]);
+    }
+    double got[3][3], d = 0.0;
+    suslov_attitude_get(&a, got);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            d = fmax(d, fabs(got[i][j] - R[i][j]));
+    return d;
 }
 
 int main(void)
@@ -80,7 +138,7 @@ int main(void)
         mat3_vec(de, D, eta);
         so3_hat(de, DE);
         mat3_mul(AN, DE, C);
-        worst[5] = fmax(worst[5], diff_norm(FD, AN));
+        worst[5] = fmax(worst[5], mat3_dist(FD, AN));
         /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
         double E[3][3], G[3][3], yp[3], ym[3], se[3];
         for (int i = 0; i < 3; i++)
@@ -163,6 +221,16 @@ int main(void)
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
     CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
           "(Groudist): orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+    /* The reconstructions against their definitions; entries of size 1 after two products of
+     * a few round-off each: 1e-15. */
+    {
+        const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
+        for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
+            const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
+            CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
+                  "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
+        }
+    }
     gsl_rng_free(rng);
     return check_summary("test_so3");
 }

@@ -4,7 +4,7 @@
 #include "newton2.h"
 #include "mat3.h"
 #include "so3.h"
-#include "stepper.h"
+#include "registry.h"
 #include "unreduced.h"
 
 #include <gsl/gsl_errno.h>
@@ -75,12 +75,17 @@ int main(void)
     gsl_set_error_handler_off();
     char err[256];
     suslov_model m;
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "test_steppers: %s\n", err);
+        return 1;
+    }
 
     /* Analytic Jacobians of the implicit step equations against central differences. */
-    const suslov_stepper_type *implicit[] = {suslov_step_midpoint, suslov_step_variational};
-    for (int s = 0; s < 2; s++) {
-        const suslov_stepper_type *st = implicit[s];
+    /* every registered step that is one 2x2 implicit equation */
+    for (int s = 0; s < suslov_method_count(); s++) {
+        const suslov_stepper_type *st = suslov_method_get(s)->type;
+        if (!st->residual)
+            continue;
         double worst = 0.0;
         for (int n = 0; n < 30; n++) {
             const double a = 0.37 * n, eps = 0.05 * (1 + n % 7);
@@ -103,8 +108,10 @@ int main(void)
     }
 
     /* Each step solves its equation to round-off in a few Newton iterations at small eps. */
-    for (int s = 0; s < 2; s++) {
-        const suslov_stepper_type *st = implicit[s];
+    for (int s = 0; s < suslov_method_count(); s++) {
+        const suslov_stepper_type *st = suslov_method_get(s)->type;
+        if (!st->residual)
+            continue;
         const double w[3] = {0.4, 0.5, 0.0};
         double x[3], lam, g[2], J[2][2], sc;
         suslov_step_stats stats;

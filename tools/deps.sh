@@ -1,7 +1,18 @@
 #!/bin/sh
 # make deps: check what the build needs and install the missing Debian packages with apt-get
 # (through sudo when not root), saying what it does. Quiet when nothing is missing.
+# Usage: deps.sh [PROFILE], PROFILE one of
+#   check    compiler, make, pkg-config, GSL, Cairo, OSMesa, a font (make check)
+#   figures  check + ffmpeg (make figures: the animation's video)
+#   paper    figures + TeX Live (make paper; the default). make paper also runs the bench,
+#            so the Makefile adds the bench profile there
+#   bench    check + g++ and Boost.Odeint headers (make bench: the Boost peers; never make check)
 set -eu
+profile=${1:-paper}
+case $profile in
+    check|figures|paper|bench) ;;
+    *) echo "deps: unknown profile '$profile' (check, figures, paper or bench)" >&2; exit 2 ;;
+esac
 have() { command -v "$1" >/dev/null 2>&1; }
 missing=""
 have cc || missing="$missing gcc"
@@ -15,19 +26,22 @@ done
 # a font the figures can name (PLOT_FONT in src/plot.h)
 dpkg -s fonts-dejavu-core >/dev/null 2>&1 || missing="$missing fonts-dejavu-core"
 # make paper: pdflatex with the LaTeX packages the companion uses (booktabs, listings, ...)
-for pkg in texlive-latex-base texlive-latex-recommended; do
-    dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
-done
-# the animation's video (optional at run time: without it the frames remain)
-have ffmpeg || missing="$missing ffmpeg"
-[ -z "$missing" ] && exit 0
-echo "deps: installing missing Debian packages:$missing"
-SUDO=""
-if [ "$(id -u)" != 0 ]; then
-    have sudo || { echo "deps: need root or sudo to install:$missing" >&2; exit 1; }
-    SUDO=sudo
+if [ "$profile" = paper ]; then
+    for pkg in texlive-latex-base texlive-latex-recommended; do
+        dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
+    done
+    # pdftotext, pdfinfo: tools/paper.sh finds where to split the tall stability figure
+    have pdftotext || missing="$missing poppler-utils"
 fi
-$SUDO apt-get update -qq
+# make bench: Boost.Odeint (header-only, in libboost1.74-dev) and a C++ compiler for the peers
+if [ "$profile" = bench ]; then
+    have g++ || missing="$missing g++"
+    [ -f /usr/include/boost/numeric/odeint.hpp ] || missing="$missing libboost1.74-dev"
+fi
+# the animation's video (optional at run time: without it the frames remain)
+if [ "$profile" != check ] && [ "$profile" != bench ]; then
+    have ffmpeg || missing="$missing ffmpeg"
+fi
+[ -z "$missing" ] && exit 0
 # shellcheck disable=SC2086
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing
-echo "deps: installed:$missing"
+exec sh "$(dirname "$0")/apt_install.sh" deps $missing

@@ -10,7 +10,7 @@ set -eu
 mode=${1:-check}
 impl=$(awk '
     FNR == 1 { pending = "" }
-    /^\/\* \([A-Za-z]+\)/ { match($0, /\([A-Za-z]+\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
+    /^\/\* \([A-Za-z][A-Za-z0-9]*\)/ { match($0, /\([A-Za-z][A-Za-z0-9]*\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
     pending != "" && /^[a-z].*[a-z_0-9]+\(/ && (FILENAME ~ /\.c$/ || /^static inline/) {
         line = $0; sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
         printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }
@@ -36,11 +36,11 @@ done
 if [ "$mode" = tex ]; then
     out=$2
     {
-        printf '%s\n' '\begin{longtable}{@{}l l l p{0.3\textwidth}@{}}'
-        printf '%s\n' '\toprule label & file & function & tests that name it\\ \midrule \endhead'
+        printf '%s\n' '\begin{longtable}{@{}l l >{\raggedright}p{0.2\textwidth} >{\raggedright}p{0.25\textwidth} >{\raggedright\arraybackslash}p{0.18\textwidth}@{}}'
+        printf '%s\n' '\toprule paper & label & file & function & tests that name it\\ \midrule \endhead'
         for l in $declared; do
             printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { printf "%s\t%s\n", $2, $3 }' | while IFS="$(printf '\t')" read -r f fn; do
-                printf '(%s) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$(echo "$f" | sed 's/_/\\_/g')" "$(echo "$fn" | sed 's/_/\\_/g')" \
+                printf '\\PaperRefOr{%s} & (\\textsf{%s}) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$l" "$(echo "$f" | sed 's/_/\\_/g')" "$(echo "$fn" | sed 's/_/\\_/g')" \
                     "$(tests_of "$l" | sed 's/_/\\_/g')"
             done
         done

@@ -1,0 +1,76 @@
+/* Section 6 made constructive: a one-step method phi(eps, .) of order p for (ContDyn) is the
+ * period map of an eps-periodic perturbation x' = h(x) + eps^p d(eps, t/eps, x) (TheoPer).
+ *
+ * Construction (one of many; the theorem only says one exists). On a period t in [0, eps],
+ * s = t/eps, the curve from x0 is the blend
+ *     X(t; x0) = (1 - chi(s)) F(t, x0) + chi(s) F(t - eps, phi(eps, x0)),
+ * F the exact flow (closed form, exact.h), chi a C^infinity weight that is 0 on [0, a] and 1 on
+ * [1 - a, 1]. So X(0) = x0, X(eps) = phi(eps, x0), and the perturbation g = X' - h(X) vanishes
+ * identically near both ends of the period: its eps-periodic continuation is smooth. Since
+ * F(t - eps, phi) - F(t, x0) = O(eps^{p+1}), g = chi'(s)/eps O(eps^{p+1}) = O(eps^p).
+ * To evaluate g at a point x (not only along one curve) the blend is inverted, x = X(t; x0),
+ * for x0 by Newton: that is d(eps, t/eps, x) as a function of x.
+ *
+ * The same on SO(3) x R^2 (Per11): the attitude blends R_A(t) = R0 Phi(t; x0) (exact) and
+ * R_B(t) = R1 Phi_1(t - eps) (exact, backward from the method's (R1, x1)) along the geodesic,
+ * R = R_A exp(chi log(R_A^T R_B)); the attitude perturbation is vee(R^T R') - w. */
+#ifndef SUSLOV_PERTURBATION_H
+#define SUSLOV_PERTURBATION_H
+
+#include "model.h"
+#include "reconstruct.h"
+#include "stepper.h"
+
+/* chi is flat (0 or 1) on the first and last tenth of the period. */
+#define SUSLOV_PERTURB_FLAT 0.1
+
+enum { SUSLOV_PERTURB_OK = 0, SUSLOV_PERTURB_STEP_FAILED = 1, SUSLOV_PERTURB_NEWTON_FAILED = 2,
+       SUSLOV_PERTURB_ODE_FAILED = 3 };
+
+typedef struct {
+    const suslov_model *m;
+    const suslov_stepper_type *st;  /* phi: its w-step (apply) */
+    double eps;
+    double Iinv[3][3];              /* the full inertia inverse, for (PerFin2) */
+    long newton_its, field_evals;   /* counters of the last period map */
+    double newton_res;              /* largest final Newton residual seen */
+} suslov_perturb;
+
+/* Returns 0, or -1 when the full inertia tensor is singular. */
+int suslov_perturb_init(suslov_perturb *P, const suslov_model *m, const suslov_stepper_type *st, double eps);
+
+/* The weight chi(s) and its derivative dchi/ds. */
+double suslov_perturb_chi(double s, double *dchi);
+
+/* The blended curve X(t; x0) and X'(t) for t in [0, eps], given x1 = phi(eps, x0). */
+void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2], double X[2],
+                          double Xdot[2]);
+
+/* eps^p d(eps, t/eps, x): the perturbation at time t (any t: reduced mod eps) and point x,
+ * with x0 such that x = X(t mod eps; x0) (may be NULL). Returns SUSLOV_PERTURB_*. */
+int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double g[2], double x0[2]);
+
+/* The period map of (Eq2) from x0: rk8pd at tolerance tol (abs and rel) over [0, eps] on the
+ * perturbed field, into x_end. Returns SUSLOV_PERTURB_*. */
+int suslov_perturb_period_map(suslov_perturb *P, const double x0[2], double tol, double x_end[2]);
+
+/* The solution of (Eq2) over one period from x0, sampled at t = i eps / n, i = 0 .. n, into
+ * x[i][0..1] (the last one is the period map). Returns SUSLOV_PERTURB_*. */
+int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol, int n, double (*x)[2]);
+
+/* The same on the three-dimensional (PerFin2): I xi' = (I xi) x xi + lambda e3 + dt, with the
+ * perturbing force dt = (I_m g, 0) in the constraint-free rows and lambda eliminated so that
+ * <e3, xi'> = 0. Integrates from (x0, 0) over [0, eps]; returns xi(eps), the largest |xi_3| seen
+ * and the largest |lambda - lambda(xi)| over the period (the multiplier shift). */
+int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3], double *max_xi3,
+                           double *max_dlambda);
+
+/* Along the curve from x0, sampled at n + 1 equally spaced times: the largest |g| (reduced
+ * perturbation, eps^p d); and on SO(3) with reconstruction recon (R0 = I, the method's own
+ * attitude step, suslov_step_full), the largest |vee(R^T R') - w| of the geodesic blend, at n + 1
+ * times where chi is not flat (n <= 64). Returns SUSLOV_PERTURB_*. */
+int suslov_perturb_sup_reduced(suslov_perturb *P, const double x0[2], int n, double *sup_g);
+int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x0[2], int n, double tol,
+                           double *sup_att, double *sup_g);
+
+#endif

@@ -1,0 +1,87 @@
+#include "quaternion.h"
+
+#include "mat3.h"
+
+#include <math.h>
+#include <string.h>
+
+void quat_rotation_minus_identity(const double q[4], double D[3][3])
+{
+    double V[3][3], V2[3][3];
+    const double v[3] = {q[1], q[2], q[3]};
+    so3_hat(v, V);
+    mat3_mul(V2, V, V);
+    const double a = 2.0 / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            D[i][j] = a * (q[0] * V[i][j] + V2[i][j]);
+}
+
+void quat_rotation(const double q[4], double R[3][3])
+{
+    quat_rotation_minus_identity(q, R);
+    for (int i = 0; i < 3; i++)
+        R[i][i] += 1.0;
+}
+
+void quat_from_rotation(const double R[3][3], double q[4])
+{
+    const double tr = R[0][0] + R[1][1] + R[2][2];
+    int k = -1; /* -1: the trace is the largest */
+    double best = tr;
+    for (int i = 0; i < 3; i++)
+        if (R[i][i] > best) {
+            best = R[i][i];
+            k = i;
+        }
+    if (k < 0) {
+        const double r = sqrt(1.0 + tr), f = 0.5 / r;
+        q[0] = 0.5 * r;
+        q[1] = f * (R[2][1] - R[1][2]);
+        q[2] = f * (R[0][2] - R[2][0]);
+        q[3] = f * (R[1][0] - R[0][1]);
+    } else {
+        const int i = k, j = (k + 1) % 3, l = (k + 2) % 3;
+        const double r = sqrt(1.0 + 2.0 * R[i][i] - tr), f = 0.5 / r;
+        q[1 + i] = 0.5 * r;
+        q[1 + j] = f * (R[j][i] + R[i][j]);
+        q[1 + l] = f * (R[l][i] + R[i][l]);
+        q[0] = f * (R[l][j] - R[j][l]);
+        if (q[0] < 0.0)
+            for (int m = 0; m < 4; m++)
+                q[m] = -q[m];
+    }
+}
+
+void quat_of_attitude(const suslov_attitude *a, double q[4])
+{
+    if (a->has_q) {
+        memcpy(q, a->q, sizeof a->q);
+        return;
+    }
+    double R[3][3];
+    suslov_attitude_get(a, R);
+    quat_from_rotation(R, q);
+}
+
+void quat_to_attitude(const double q[4], suslov_attitude *a)
+{
+    const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    const double s = q[0] * n, x = q[1] * n, y = q[2] * n, z = q[3] * n;
+    double (*R)[3] = a->hi;
+    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    R[0][1] = 2.0 * (x * y - s * z);
+    R[0][2] = 2.0 * (x * z + s * y);
+    R[1][0] = 2.0 * (x * y + s * z);
+    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    R[1][2] = 2.0 * (y * z - s * x);
+    R[2][0] = 2.0 * (x * z - s * y);
+    R[2][1] = 2.0 * (y * z + s * x);
+    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    memset(a->lo, 0, sizeof a->lo);
+    a->q[0] = s;
+    a->q[1] = x;
+    a->q[2] = y;
+    a->q[3] = z;
+    a->has_q = 1;
+}
