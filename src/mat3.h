@@ -74,6 +74,20 @@ static inline double mat3_det(const double A[3][3])
          + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
 }
 
+/* Ainv = A^{-1} by cofactors; returns -1 (Ainv untouched) when det A is 0 or not a number. */
+static inline int mat3_inverse(const double A[3][3], double Ainv[3][3])
+{
+    const double d = mat3_det(A);
+    if (!(fabs(d) > 0.0))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+            Ainv[i][j] = (A[i1][j1] * A[i2][j2] - A[i1][j2] * A[i2][j1]) / d;
+        }
+    return 0;
+}
+
 static inline void vec3_cross(double c[3], const double a[3], const double b[3])
 {
     c[0] = a[1] * b[2] - a[2] * b[1];

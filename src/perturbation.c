@@ -11,20 +11,11 @@
 
 int suslov_perturb_init(suslov_perturb *P, const suslov_model *m, const suslov_stepper_type *st, double eps)
 {
-    const double (*I)[3] = m->I;
-    const double d = mat3_det(I);
     memset(P, 0, sizeof *P);
     P->m = m;
     P->st = st;
     P->eps = eps;
-    if (!(fabs(d) > 0.0))
-        return -1;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-            P->Iinv[i][j] = (I[i1][j1] * I[i2][j2] - I[i1][j2] * I[i2][j1]) / d;
-        }
-    return 0;
+    return mat3_inverse(m->I, P->Iinv);
 }
 
 /* The standard C^infinity step: psi(u) = exp(-1/u) for u > 0, chi = psi(v) / (psi(v) + psi(1-v))

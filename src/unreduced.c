@@ -8,18 +8,11 @@
 
 int suslov_unreduced_init(suslov_unreduced *u, const suslov_model *m, char *err, size_t errlen)
 {
-    const double (*I)[3] = m->I;
-    const double d = mat3_det(I);
     u->m = m;
-    if (!(fabs(d) > 0.0)) {
+    if (mat3_inverse(m->I, u->Iinv) != 0) {
         snprintf(err, errlen, "the inertia tensor is singular");
         return -1;
     }
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-            u->Iinv[i][j] = (I[i1][j1] * I[i2][j2] - I[i1][j2] * I[i2][j1]) / d;
-        }
     return 0;
 }
 
