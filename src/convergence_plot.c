@@ -4,10 +4,10 @@
 #include "convergence_plot.h"
 
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "orderfit.h"
 #include "plot.h"
 
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -133,19 +133,12 @@ static void draw(cairo_t *cr, void *vctx)
 
 int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_%s FIGDIR DATADIR\n", spec->name);
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
     suslov_model m;
     suslov_exact ex;
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_%s: %s\n", spec->name, err);
-        return 1;
-    }
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
+    const int setup = fig_setup_paper(argc, spec->name, &m, &ex);
+    if (setup != 0)
+        return setup;
+    char path[4096];
     conv_fig *f = malloc(sizeof *f);
     if (!f || suslov_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
         return 1;

@@ -2,10 +2,10 @@
  * the exact solution, the paper's body and w(0). Usage: figure_fig1 FIGDIR DATADIR */
 #include "experiments.h"
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "plot.h"
 #include "series.h"
 
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -73,20 +73,13 @@ static void draw(cairo_t *cr, void *vctx)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_fig1 FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
     suslov_model m;
     suslov_exact ex;
+    const int setup = fig_setup_paper(argc, "fig1", &m, &ex);
+    if (setup != 0)
+        return setup;
+    char path[4096];
     fig1 f;
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_fig1: the paper's inertia is rejected: %s\n", err);
-        return 1;
-    }
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
     const long N = suslov_experiment_steps(T_END, EPS);
     if (suslov_series_init(&f.ex, N, EVERY) || suslov_series_init(&f.mid, N, EVERY) || suslov_series_init(&f.var, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");

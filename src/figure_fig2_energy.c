@@ -4,11 +4,11 @@
  * Usage: figure_fig2_energy FIGDIR DATADIR */
 #include "experiments.h"
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "midpoint_sweeps.h"
 #include "plot.h"
 #include "series.h"
 
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -116,17 +116,12 @@ static void draw(cairo_t *cr, void *vctx)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_fig2_energy FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
     suslov_model m;
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_fig2_energy: the paper's inertia is rejected: %s\n", err);
-        return 1;
-    }
+    suslov_exact ex;
+    const int setup = fig_setup_paper(argc, "fig2_energy", &m, &ex);
+    if (setup != 0)
+        return setup;
+    char path[4096];
     if (suslov_experiment_steps(T_END, EPS) != N_STEPS) {
         fprintf(stderr, "figure_fig2_energy: N_STEPS does not match src/experiments.h\n");
         return 1;

@@ -7,6 +7,7 @@
 #include "driver.h"
 #include "exact.h"
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "peers.h"
 #include "plot.h"
 #include "refattitude.h"
@@ -150,17 +151,10 @@ static void draw(cairo_t *cr, void *vctx)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_longrun FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
-    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_longrun: %s\n", err);
-        return 1;
-    }
-    suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
+    const int setup = fig_setup_paper(argc, "longrun", &model, &ex);
+    if (setup != 0)
+        return setup;
+    char path[4096];
     double w50[2];
     suslov_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
     for (int i = 0; i < suslov_method_count() && nc < MAXC - 2; i++) {

@@ -6,11 +6,11 @@
  * Usage: figure_perturbation FIGDIR DATADIR */
 #include "exact.h"
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "perturbation.h"
 #include "plot.h"
 #include "registry.h"
 
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -126,18 +126,13 @@ static void draw(cairo_t *cr, void *vctx)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_perturbation FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    static pert_fig f;
-    char err[256], path[4096];
     suslov_model m;
     suslov_exact ex;
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0)
-        die(err, 1);
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
+    const int setup = fig_setup_paper(argc, "perturbation", &m, &ex);
+    if (setup != 0)
+        return setup;
+    static pert_fig f;
+    char path[4096];
 
     /* (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point */
     suslov_perturb P;

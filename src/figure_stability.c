@@ -3,10 +3,10 @@
  * the linear stability limits drawn on top. Usage: figure_stability FIGDIR DATADIR */
 #include "atomic_file.h"
 #include "fig_output.h"
+#include "fig_setup.h"
 #include "plot.h"
 #include "stability.h"
 
-#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,19 +72,12 @@ static void draw(cairo_t *cr, void *vctx)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_stability FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
     suslov_model model;
     suslov_exact paper;
-    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_stability: %s\n", err);
-        return 1;
-    }
-    suslov_exact_init(&paper, &model, SUSLOV_PAPER_OMEGA0);
+    const int setup = fig_setup_paper(argc, "stability", &model, &paper);
+    if (setup != 0)
+        return setup;
+    char err[256], path[4096];
     stab_fig *f = malloc(sizeof *f);
     if (!f)
         return 1;
