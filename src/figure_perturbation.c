@@ -23,11 +23,9 @@
 #define NE_SO3 10     /* eps = 2 .. 2^-8 (claims_section6.c) */
 #define MAXM 32
 #define TOL 1e-14
-#define U 2.220446049250313e-16
-/* the round-off of a perturbation grows like 1/eps (claims_section6.c): points below 1000 times
- * it are not drawn */
-#define FLOOR_G (1000.0 * U * 0.8 * 3.0)
-#define FLOOR_ATT (100.0 * TOL / 0.0025)
+/* points below the ledger's round-off floors (perturbation.h) are not drawn */
+#define FLOOR_G SUSLOV_PERTURB_FLOOR_G
+#define FLOOR_ATT SUSLOV_PERTURB_FLOOR_ATT
 
 typedef struct {
     double t[NPA], w[NPA][2], ex[NPA][2];
@@ -204,7 +202,7 @@ int main(int argc, char **argv)
             for (int t = 0; t < 2; t++) {
                 double x0[2], a, g;
                 suslov_exact_omega(&ex, TK[t], x0);
-                if (suslov_perturb_sup_so3(&Q, (suslov_recon)r, x0, 32, TOL, &a, &g) != SUSLOV_PERTURB_OK)
+                if (suslov_perturb_sup_so3(&Q, (suslov_recon)r, x0, 32, SUSLOV_PERTURB_ATT_TOL, &a, &g) != SUSLOV_PERTURB_OK)
                     die("an attitude blend failed", 3);
                 s = fmax(s, a);
             }

@@ -18,11 +18,26 @@
 #define SUSLOV_PERTURBATION_H
 
 #include "model.h"
+#include "orderfit.h"
 #include "reconstruct.h"
 #include "stepper.h"
 
+#include <float.h>
+
 /* chi is flat (0 or 1) on the first and last tenth of the period. */
 #define SUSLOV_PERTURB_FLAT 0.1
+
+/* The round-off floors of the perturbation's sizes, shared by the ledger (claims_section6.c) and
+ * the figure; both grow like 1/eps, so a size at eps is compared with FLOOR / eps.
+ * FLOOR_G: g is chi'/eps times a difference of two flows each good to a few u |w| (|w| <= 0.8,
+ * chi' < 3); a fitted point must sit 1000 times above it (orderfit.h: round-off moves no fitted
+ * point by more than 0.1%).
+ * FLOOR_ATT: on SO(3) the attitudes come from rk8pd at ATT_TOL and enter a difference quotient
+ * over the stencil step 0.1 (1 - 2 FLAT) eps / 32 = 0.0025 eps of suslov_perturb_sup_so3 with 32
+ * samples; 100 ATT_TOL / (0.0025 eps) keeps that noise below 1% of a fitted point. */
+#define SUSLOV_PERTURB_ATT_TOL 1e-14
+#define SUSLOV_PERTURB_FLOOR_G (1000.0 * DBL_EPSILON * SUSLOV_SIZE_W * 3.0)
+#define SUSLOV_PERTURB_FLOOR_ATT (100.0 * SUSLOV_PERTURB_ATT_TOL / 0.0025)
 
 enum { SUSLOV_PERTURB_OK = 0, SUSLOV_PERTURB_STEP_FAILED = 1, SUSLOV_PERTURB_NEWTON_FAILED = 2,
        SUSLOV_PERTURB_ODE_FAILED = 3 };

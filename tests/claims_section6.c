@@ -20,27 +20,20 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define U 2.220446049250313e-16
 /* eps = 2^(1-j), j = 0 .. NJ6 - 1, i.e. 2 .. 2^-10; the SO(3) sizes stop at 2^-8, where the
  * attitude floor FLOOR_ATT / eps reaches the cayley-mid perturbation's size. */
 #define NJ6 12
 #define NJ_SO3 10
 #define ODE_TOL 1e-14
-/* the attitude integrations of Per11 */
-#define ATT_TOL 1e-14
 #define NSAMP 32
 /* Starting points: the exact w(t_k) on the transient (the fast part, t ~ 3, and the slow one). */
 static const double TK6[] = {0.0, 3.0, 7.0};
 #define NTK6 3
 
-/* The round-off of a perturbation: it is chi'/eps times a difference of two flows each good to a
- * few u |w| (|w| <= 0.8, chi' < 3), so it grows like 1/eps; a fitted point must sit 1000 times
- * above it (orderfit.h's rule: round-off moves no fitted point by more than 0.1%). */
-#define FLOOR_G (1000.0 * U * SUSLOV_SIZE_W * 3.0)
-/* On SO(3) the attitudes come from rk8pd at ATT_TOL and enter a difference quotient over the
- * stencil step 0.0025 eps (perturbation.c): 100 ATT_TOL / (0.0025 eps) keeps that noise below 1%
- * of a fitted point. */
-#define FLOOR_ATT (100.0 * ATT_TOL / 0.0025)
+/* the round-off floors, with their reasons (perturbation.h) */
+#define FLOOR_G SUSLOV_PERTURB_FLOOR_G
+#define FLOOR_ATT SUSLOV_PERTURB_FLOOR_ATT
+#define ATT_TOL SUSLOV_PERTURB_ATT_TOL
 
 static double norm2(const double a[2], const double b[2]) { return hypot(a[0] - b[0], a[1] - b[1]); }
 
