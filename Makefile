@@ -2,13 +2,14 @@
 # Suslov problem". `make check` runs the tests and the claims ledger; see README.md.
 #
 #   make            build build/suslov, the figure programs and the test programs
-#   make check      unit tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
+#   make test       unit, CLI and build tests (seconds); make ledger: the claims ledger
+#   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make bench      work-precision and per-step cost against GSL (data/bench.csv)
 #   make paper      the companion text, paper/companion.pdf
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
-#   make deps       install missing Debian packages (deps-check: only what make check needs)
+#   make deps       install missing Debian packages (make check installs only what it needs)
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
 #   WERROR=1        treat warnings as errors (CI)
@@ -32,60 +33,100 @@ endif
 PKGS       = gsl cairo osmesa
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
-ALL_CFLAGS = $(WARN) $(CFLAGS) $(SANFLAGS) -Isrc $(PKG_CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
+ifeq ($(strip $(BUILD)),)
+$(error BUILD is empty: give a directory, e.g. BUILD=build)
+endif
 
-FIG_SRC  := $(wildcard src/figure_*.c)
-FIGS     := $(FIG_SRC:src/figure_%.c=%)
+# The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is
+# compiled with only its own and the lower folders on the include path, so an include of a
+# higher layer does not build; each library layer is one archive, libsus_LAYER.a.
+LAYERS     := util core methods exp render prog
+LIB_LAYERS := util core methods exp render
+inc_util    := -Isrc/util
+inc_core    := $(inc_util) -Isrc/core
+inc_methods := $(inc_core) -Isrc/methods
+inc_exp     := $(inc_methods) -Isrc/exp
+inc_render  := $(inc_exp) -Isrc/render
+inc_prog    := $(inc_render) -Isrc/prog
+inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
+CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
+
+src_of  = $(sort $(wildcard src/$(1)/*.c))
+obj_of  = $(patsubst src/%.c,$(BUILD)/obj/%.o,$(call src_of,$(1)))
+lib_of  = $(BUILD)/libsus_$(1).a
+# Link order: higher layers first, so each archive resolves against the ones after it.
+LIBS_LINK := $(foreach l,render exp methods core util,$(call lib_of,$(l)))
+
+FIG_SRC  := $(wildcard src/prog/figure_*.c)
+FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
-LIB_SRC  := $(filter-out src/suslov.c src/bench.c src/animation.c $(FIG_SRC),$(wildcard src/*.c))
-LIB_OBJ  := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
-LIB      := $(BUILD)/libsuslov.a
-TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
+TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
-.PHONY: all deps deps-check deps-figures deps-paper deps-bench check figures animation bench paper clean distclean
+# Stamps that change only when their text does: the compile flags (a change of CFLAGS, WERROR or
+# SAN recompiles everything) and each archive's member list (a deleted source leaves no stale
+# object in its archive). A stamp whose file already holds its text has no rule and so is up to
+# date; otherwise it gets one that rewrites it. Nothing is written while the Makefile is read,
+# so `make -n` and `make -q` change nothing, and `make -q all` answers truthfully.
+define STAMP_RULE
+ifneq ($$(strip $$(shell cat $(1) 2>/dev/null)),$$(strip $(2)))
+$(1): FORCE
+	@mkdir -p $$(@D); echo '$$(strip $(2))' >$$@
+endif
+endef
+$(eval $(call STAMP_RULE,$(BUILD)/flags.stamp,$(CC) $(WARN) $(CFLAGS) $(SANFLAGS) $(LDFLAGS) | $(CXX)))
+$(foreach l,$(LIB_LAYERS),$(eval $(call STAMP_RULE,$(BUILD)/libsus_$(l).list,$(call obj_of,$(l)))))
+
+.PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench paper clean distclean
 all: $(BUILD)/suslov $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 # What each goal needs (tools/deps.sh PROFILE): check = compiler, GSL, Cairo, OSMesa, fonts;
-# figures adds ffmpeg; paper adds TeX. Objects wait only on deps-check.
+# figures adds ffmpeg; paper adds TeX. Objects wait only on the check profile, through a stamp
+# (an always-run rule would make `make -q` always answer "not up to date").
 deps: deps-paper deps-bench
-deps-check deps-figures deps-paper:
+deps-figures deps-paper:
 	@sh tools/deps.sh $(@:deps-%=%)
+DEPS_CHECK := $(BUILD)/deps-check.stamp
+$(DEPS_CHECK): tools/deps.sh
+	@sh tools/deps.sh check && mkdir -p $(@D) && touch $@
 
-$(BUILD)/obj/%.o: src/%.c | deps-check
+$(BUILD)/obj/%.o: src/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+	$(CC) $(call CFLAGS_OF,$(firstword $(subst /, ,$*))) -c $< -o $@
 
-$(BUILD)/tobj/%.o: tests/%.c | deps-check
+$(BUILD)/tobj/%.o: tests/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -c $< -o $@
+	$(CC) $(call CFLAGS_OF,tests) -c $< -o $@
 
-$(LIB): $(LIB_OBJ)
-	@rm -f $@
-	$(AR) rcs $@ $^
+define ARCHIVE_RULE
+$(call lib_of,$(1)): $(call obj_of,$(1)) $(BUILD)/libsus_$(1).list
+	@rm -f $$@
+	$$(AR) rcs $$@ $(call obj_of,$(1))
+endef
+$(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
-$(BUILD)/suslov: $(BUILD)/obj/suslov.o $(LIB)
+$(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
-# A program that draws files depends on the objects it links, not on the whole archive: the
+# A program that draws files depends on the objects it links, not on the whole archives: the
 # linker's --trace given twice names the archive members it pulled, and $@.link.d makes the
 # program depend on exactly those (a new reference can only come from a changed object already
-# linked). The archive is order-only, so a change to an object the program does not link
+# linked). The archives are order-only, so a change to an object the program does not link
 # relinks nothing and redraws nothing. If the trace names no member (another linker), depend
-# on the archive.
+# on the archives.
 DRAW_PROGS := $(BUILD)/animation $(BUILD)/bench $(FIG_BIN)
-$(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/%.o | $(LIB)
-	$(CC) $(ALL_LDFLAGS) $< $(LIB) $(PKG_LIBS) -lm -o $@ -Wl,--trace,--trace >$@.trace
-	@objs=$$(sed -n -e 's|^(.*libsuslov\.a)\(.*\.o\)$$|$(BUILD)/obj/\1|p' \
-	    -e 's|^.*libsuslov\.a(\(.*\.o\))$$|$(BUILD)/obj/\1|p' $@.trace | sort -u | tr '\n' ' '); \
-	    echo "$@: $${objs:-$(LIB)}" >$@.link.d; rm -f $@.trace
+$(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/prog/%.o | $(LIBS_LINK)
+	$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(PKG_LIBS) -lm -o $@ -Wl,--trace,--trace >$@.trace
+	@objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
+	    -e 's|^.*libsus_\([a-z]*\)\.a(\(.*\.o\))$$|$(BUILD)/obj/\1/\2|p' $@.trace | sort -u | tr '\n' ' '); \
+	    echo "$@: $${objs:-$(LIBS_LINK)}" >$@.link.d; rm -f $@.trace
 
-$(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/test_%.o $(LIB)
+$(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
-CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/claims*.c) tests/ledger.c tests/expected_orders.c)
-$(CLAIMS): $(CLAIMS_OBJ) $(LIB)
+CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
+$(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
@@ -104,25 +145,44 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-f
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
 
-check: all
-	@SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
-	    sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD)
+# make test: the unit tests, the CLI tests and the build checks, exactly $(TESTS) and the scripts
+# named in tests/run.sh (a few seconds). make ledger: the claims ledger, run again only when the
+# claims program changed (it reads no other input); its table is kept in $(BUILD)/claims.out.
+# make check: both, and "N passed, N failed" over all of them on the last line.
+SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS="suppressions=$(CURDIR)/tests/build/lsan.supp:print_suppressions=0"
+test: all
+	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
-# The fuzzer (tests/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
+ledger: $(BUILD)/claims.out
+	@sh tests/run.sh $(BUILD) ledger
+
+check: all $(BUILD)/claims.out
+	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
+
+# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
+# summary.tex, and prints its table (claims.out). A run that does not reach its summary line
+# (a crash, a measurement that could not be made) leaves no output, so it runs again.
+LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
+$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
+	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv >$@.tmp 2>&1; \
+	    if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
+	    else cat $@.tmp; rm -f $@.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
+
+# The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the
 # interface; last line "fuzz: N passed, N failed". CI runs it under SAN=1.
 T    ?= 60
 SEED ?= 20261122
 .PHONY: fuzz
 fuzz: $(BUILD)/suslov $(BUILD)/fuzz
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
+	@$(SAN_ENV) $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
 
-$(BUILD)/fuzz: $(BUILD)/tobj/fuzz.o
+$(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
 	$(CC) $(ALL_LDFLAGS) $^ -o $@
 
 # Speed and accuracy: data/bench.csv, figures/work_precision and figures/step_cost, and the
 # PASS/MISS lines of the speed targets (never a failing test). make bench also times the
-# Boost.Odeint peers: bench.c again with SUSLOV_WITH_ODEINT, linked with src/bench_odeint.cpp
+# Boost.Odeint peers: bench.c again with SUSLOV_WITH_ODEINT, linked with src/prog/bench_odeint.cpp
 # (g++ and the header-only Boost from `tools/deps.sh bench`, which make check never needs).
 bench: all $(BUILD)/bench_boost
 	@mkdir -p figures data
@@ -131,20 +191,17 @@ bench: all $(BUILD)/bench_boost
 CXXWARN := -std=c++17 -Wall -Wextra -Wshadow $(filter -Werror,$(WARN))
 deps-bench:
 	@sh tools/deps.sh bench
-$(BUILD)/obj/bench_odeint.o: src/bench_odeint.cpp | deps-bench
+$(BUILD)/obj/prog/bench_odeint.o: src/prog/bench_odeint.cpp $(BUILD)/flags.stamp | deps-bench
 	@mkdir -p $(@D)
-	$(CXX) $(CXXWARN) $(CFLAGS) $(SANFLAGS) -Isrc -MMD -MP -c $< -o $@
-$(BUILD)/obj/bench_boost.o: src/bench.c | deps-check
+	$(CXX) $(CXXWARN) $(CFLAGS) $(SANFLAGS) $(inc_prog) -MMD -MP -c $< -o $@
+$(BUILD)/obj/prog/bench_boost.o: src/prog/bench.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -DSUSLOV_WITH_ODEINT -c $< -o $@
-$(BUILD)/bench_boost: $(BUILD)/obj/bench_boost.o $(BUILD)/obj/bench_odeint.o $(LIB)
+	$(CC) $(call CFLAGS_OF,prog) -DSUSLOV_WITH_ODEINT -c $< -o $@
+$(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_odeint.o $(LIBS_LINK)
 	$(CXX) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 # The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
 # (data/bench.tex), figures from the figure programs, listings and equation map from src/.
-$(BUILD)/claims.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex &: $(CLAIMS)
-	$(CLAIMS) $(BUILD)/claims.tsv >/dev/null
-
 # The same program as make bench (with the Boost.Odeint peers), so that the companion quotes
 # the same comparison whichever of the two wrote data/bench.tex last.
 data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &: $(BUILD)/bench_boost
@@ -154,7 +211,7 @@ data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &
 PAPER_IN := paper/companion.tex paper/equations.txt paper/labels.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
             $(BUILD)/summary.tex data/bench.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
-            $(wildcard src/*.c src/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
+            $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh
 paper: paper/companion.pdf
 
@@ -173,7 +230,7 @@ paper/companion.pdf: $(PAPER_IN) | deps-paper
 WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
-WEB_IN    := $(wildcard src/*.c src/*.h tests/*.c tests/*.sh) paper/equations.txt $(wildcard paper/labels.tsv) \
+WEB_IN    := $(wildcard src/*/*.c src/*/*.h tests/*/*.c tests/*/*.h tests/*/*.sh tests/*.sh) paper/equations.txt $(wildcard paper/labels.tsv) \
              $(BUILD)/claims.tsv $(WEB)/inputs.list \
              $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) tools/web/package-lock.json
 .PHONY: web web-deps check-web FORCE
@@ -184,7 +241,7 @@ $(WEB)/index.html: $(WEB_IN) | web-deps
 
 $(WEB)/inputs.list: FORCE
 	@mkdir -p $(@D)
-	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; ls src tests; } >$@.tmp 2>/dev/null || true
+	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; ls src/* tests/*; } >$@.tmp 2>/dev/null || true
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 
 web-deps:
@@ -195,12 +252,12 @@ web-deps:
 check-web: web
 	node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv
 
-# The mutation check: each one-line mutant of tests/mutants is applied to a scratch copy of the
+# The mutation check: each one-line mutant of tests/build/mutants is applied to a scratch copy of the
 # tree, which is rebuilt and tested; every mutant must be killed (tools/mutants.sh). CI runs
 # the fixed subset MUTANTS_STRIDE=k: mutants 1, 1+k, 1+2k, ...
 .PHONY: mutants
-mutants: | deps-check
-	@sh tools/mutants.sh tests/mutants $(MUTANTS_STRIDE)
+mutants: | $(DEPS_CHECK)
+	@sh tools/mutants.sh tests/build/mutants $(MUTANTS_STRIDE)
 
 clean:
 	rm -rf $(BUILD)
@@ -217,4 +274,4 @@ distclean: clean
 	    done; \
 	fi
 
--include $(wildcard $(BUILD)/obj/*.d $(BUILD)/tobj/*.d $(BUILD)/*.link.d)
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/tobj/*/*.d $(BUILD)/*.link.d)

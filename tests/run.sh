@@ -1,40 +1,46 @@
 #!/bin/sh
-# make check: run every unit test, the CLI tests and the claims ledger; print the ledger and,
-# alone on the last line, "N passed, N failed" over all of them. Usage: run.sh BUILD_DIR
+# The test runner. Usage: run.sh BUILD_DIR MODE [TEST_PROGRAM...]
+#   test    run exactly the given unit test programs, then the CLI and build tests below
+#   ledger  print the claims ledger's table, kept by make in BUILD_DIR/claims.out
+#   check   both
+# Failing lines are shown; the last line is "N passed, N failed" over all that ran.
 set -u
 B=${1:-build}
+mode=${2:-check}
+shift 2 2>/dev/null || shift $#
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 status=0
-run() { # run NAME COMMAND...: show failures and the summary line, keep the counts
+sum="$B/$mode-summary.txt"
+: >"$sum"
+count() { # count NAME LOGFILE: append its summary line, or a failure when it has none
+    if ! grep -qE "^$1: [0-9]+ passed, [0-9]+ failed" "$2"; then
+        echo "$1: no summary line (crashed?); its output:"; cat "$2"; status=1
+        echo "$1: 0 passed, 1 failed" >>"$2"
+    fi
+    grep -E "^$1: [0-9]+ passed, [0-9]+ failed" "$2" >>"$sum"
+}
+run() { # run NAME COMMAND...: show failures and skips, keep the counts
     name=$1; shift
     "$@" >"$log" 2>&1 || status=1
     grep -E '^(FAIL|SKIP)' "$log"
-    if ! grep -qE "^$name: [0-9]+ passed, [0-9]+ failed" "$log"; then
-        echo "$name: no summary line (crashed?); its output:"; cat "$log"; status=1
-        echo "$name: 0 passed, 1 failed" >>"$log"
-    fi
-    grep -E "^$name: [0-9]+ passed, [0-9]+ failed" "$log" >>"$B/check-summary.txt"
+    count "$name" "$log"
 }
-: >"$B/check-summary.txt"
-for t in "$B"/test_*; do
-    case $t in *.o|*.d) continue ;; esac
-    run "$(basename "$t")" "$t"
-done
-run test_cli sh tests/test_cli.sh "$B"
-run test_cli_values sh tests/test_cli_values.sh "$B"
-run test_animation_errors sh tests/test_animation_errors.sh "$B"
-run make_deps sh tests/make_deps.sh "$B"
-run eqmap sh tools/eqmap.sh check
-
-# The claims ledger prints its own table.
-"$B/claims" "$B/claims.tsv" >"$log" 2>&1 || status=1
-if grep -q '^claims: [0-9]* passed' "$log"; then
-    sed '/^claims: [0-9]* passed/d' "$log"
-    grep '^claims: ' "$log" >>"$B/check-summary.txt"
-else
-    cat "$log"; echo "claims: 0 passed, 1 failed" >>"$B/check-summary.txt"; status=1
+if [ "$mode" != ledger ]; then
+    for t in "$@"; do run "$(basename "$t")" "$t"; done
+    run test_cli sh tests/cli/test_cli.sh "$B"
+    run test_cli_values sh tests/cli/test_cli_values.sh "$B"
+    run test_animation_errors sh tests/cli/test_animation_errors.sh "$B"
+    run make_deps sh tests/build/make_deps.sh "$B"
+    run layers sh tests/build/layers.sh
+    run eqmap sh tools/eqmap.sh check
 fi
-cat "$B/check-summary.txt"
-awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$B/check-summary.txt" || status=1
+if [ "$mode" != test ]; then
+    # The ledger prints its own table; make ran it only if the claims program changed.
+    sed '/^claims: [0-9]* passed/d' "$B/claims.out"
+    grep -q '^claims: [0-9]* passed, 0 failed' "$B/claims.out" || status=1
+    count claims "$B/claims.out"
+fi
+cat "$sum"
+awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$sum" || status=1
 exit $status

@@ -15,9 +15,9 @@ impl=$(awk '
         line = $0; sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
         printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }
     pending != "" && !/^ \*/ && !/^\/\*/ { pending = "" }
-' src/*.c src/*.h | sort -u)
+' src/*/*.c src/*/*.h | sort -u)
 declared=$(grep -v '^#' paper/equations.txt | awk 'NF { print $1 }')
-tests_of() { grep -l -F "($1)" tests/*.c tests/*.sh 2>/dev/null | xargs -r -n1 basename | tr '\n' ' '; }
+tests_of() { grep -l -F "($1)" tests/*/*.c tests/*/*.sh 2>/dev/null | xargs -r -n1 basename | tr '\n' ' '; }
 fail=0 pass=0
 for l in $declared; do
     if ! printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { f = 1 } END { exit !f }'; then

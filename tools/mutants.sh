@@ -47,8 +47,8 @@ tests() {
         case $t in *.d | *.o) continue ;; esac
         run_one "$(basename "$t")" 300 "$t" || { echo "$(basename "$t") ($why)"; return 1; }
     done
-    run_one test_cli_values 300 sh tests/test_cli_values.sh $B || { echo "test_cli_values ($why)"; return 1; }
-    run_one test_cli 300 sh tests/test_cli.sh $B || { echo "test_cli ($why)"; return 1; }
+    run_one test_cli_values 300 sh tests/cli/test_cli_values.sh $B || { echo "test_cli_values ($why)"; return 1; }
+    run_one test_cli 300 sh tests/cli/test_cli.sh $B || { echo "test_cli ($why)"; return 1; }
     run_one claims 900 $B/claims $B/claims.tsv || { echo "claims ($why)"; return 1; }
     return 0
 }
@@ -61,8 +61,8 @@ for t in $B/test_* test_cli_values test_cli claims; do
     case $t in *.d | *.o) continue ;; esac
     name=$(basename "$t")
     case $name in
-        test_cli_values) set -- sh tests/test_cli_values.sh $B ;;
-        test_cli) set -- sh tests/test_cli.sh $B ;;
+        test_cli_values) set -- sh tests/cli/test_cli_values.sh $B ;;
+        test_cli) set -- sh tests/cli/test_cli.sh $B ;;
         claims) set -- $B/claims $B/claims.tsv ;;
         *) set -- "$t" ;;
     esac

@@ -9,12 +9,12 @@ B=$1
 P="$B/paper"
 mkdir -p "$P"
 snip() { sh tools/snippet.sh "$1" "$2" >"$P/snip_$2.c"; }
-snip src/step_midpoint.c mid_residual
-snip src/step_variational.c taudyn_residual
-snip src/step_variational.c taualg
-snip src/reconstruct.c suslov_reconstruct
-snip src/exact.c suslov_exact_omega
-awk 'NR == 1, /\*\// { print }' src/exact.h >"$P/snip_exact_derivation.c"
+snip src/methods/step_midpoint.c mid_residual
+snip src/methods/step_variational.c taudyn_residual
+snip src/methods/step_variational.c taualg
+snip src/core/reconstruct.c suslov_reconstruct
+snip src/core/exact.c suslov_exact_omega
+awk 'NR == 1, /\*\// { print }' src/core/exact.h >"$P/snip_exact_derivation.c"
 # A gap in the equation map fails make check (tests/run.sh); here it is reported, not fatal.
 sh tools/eqmap.sh tex "$P/eqmap.tex" >/dev/null ||
     echo "paper: the equation map has gaps; run: sh tools/eqmap.sh check" >&2

@@ -40,7 +40,7 @@ def esc(s):
 
 
 def page_of(path):
-    """src/so3.c -> src-so3.c.html: one flat directory, so every link is a plain file name."""
+    """src/core/so3.c -> src-core-so3.c.html: one flat directory, so every link is a plain file name."""
     return path.replace("/", "-") + ".html"
 
 
@@ -379,8 +379,8 @@ class Site:
         self.restated = read_restatements(os.path.join(HERE, "equations.tex"))
         self.claims = read_claims(args.claims)
         self.figrules = read_figure_rules(os.path.join(HERE, "ledger_figures.tsv"))
-        self.files = sorted(glob.glob("src/*.c") + glob.glob("src/*.h")) + \
-            sorted(glob.glob("tests/*.c") + glob.glob("tests/*.sh"))
+        self.files = sorted(glob.glob("src/*/*.c") + glob.glob("src/*/*.h")) + \
+            sorted(glob.glob("tests/*/*.c") + glob.glob("tests/*/*.h") + glob.glob("tests/*/*.sh"))
         self.defs = function_definitions(self.files)
         self.sections = {f: split_sections(f) for f in self.files}
         self.figures = sorted(os.path.basename(p)[:-4] for p in glob.glob("figures/*.png"))
@@ -416,7 +416,7 @@ class Site:
         """method token -> src/step_NAME.c: a claim id names its method (reduced-order-rk4,
         stability-boundary-taylor12); the stepper file is step_NAME.c with NAME the token or its
         prefix (step_taylor.c defines taylor12, taylor16, ...)."""
-        return {os.path.basename(p)[5:-2]: p for p in glob.glob("src/step_*.c")}
+        return {os.path.basename(p)[5:-2]: p for p in glob.glob("src/methods/step_*.c")}
 
     def index_claims(self):
         steps = self.method_files()
@@ -576,8 +576,8 @@ class Site:
         return head + "".join(rows) + "</div>"
 
     def ledger_page(self):
-        writer = ("(<a href='%s'>tests/ledger.c</a>)" % page_of("tests/ledger.c")
-                  if "tests/ledger.c" in self.files else "")
+        writer = ("(<a href='%s'>tests/ledger/ledger.c</a>)" % page_of("tests/ledger/ledger.c")
+                  if "tests/ledger/ledger.c" in self.files else "")
         out = ["<main class='text' style='max-width:1400px'><h1>The claims ledger</h1>",
                "<p class='note'>build/claims.tsv as written by the claims program %s, one row per claim. The "
                "equation column links the labels the line refers to or measures (through the method its id "
@@ -599,9 +599,9 @@ class Site:
 
     def figure_program(self, name):
         """(source file, command) that draws figures/NAME.png."""
-        if os.path.exists("src/figure_%s.c" % name):
-            return "src/figure_%s.c" % name, "make figures/%s.pdf   # runs build/figure_%s figures data" % (name, name)
-        for f in sorted(glob.glob("src/*.c")):
+        if os.path.exists("src/prog/figure_%s.c" % name):
+            return "src/prog/figure_%s.c" % name, "make figures/%s.pdf   # runs build/figure_%s figures data" % (name, name)
+        for f in sorted(glob.glob("src/*/*.c")):
             with open(f, encoding="utf-8", errors="replace") as fh:
                 text = fh.read()
             if re.search(r'"%%s/%s(\.png)?"' % re.escape(name), text):

@@ -1,0 +1,151 @@
+/* Where each integrator stops working: a map over the dimensionless step h = eps k and the
+ * initial angle on the energy ellipse, coloured by the class of the run (stability.h), with
+ * the linear stability limits drawn on top. Usage: figure_stability FIGDIR DATADIR */
+#include "atomic_file.h"
+#include "fig_output.h"
+#include "fig_setup.h"
+#include "plot.h"
+#include "stability.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define NH 31      /* h = 10^(-3 + 0.2 i) */
+#define NANGLE 36  /* every 10 degrees */
+
+typedef struct {
+    double hs[NH];
+    int nm;                    /* every method of the registry, in its order */
+    stab_result (*res)[NH * NANGLE];
+    double *limit;
+} stab_fig;
+
+/* Panels two to a row, 240 points high, under a title and over the legend. */
+#define PANEL_H 240.0
+static double fig_height(int nm) { return 40.0 + PANEL_H * ((nm + 1) / 2); }
+
+static const double CLASS_RGB[STAB_NCLASS][3] = {
+    {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
+
+static void draw(cairo_t *cr, void *vctx)
+{
+    const stab_fig *f = vctx;
+    const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
+    plot_text(cr, W / 2, 14, "Where each method stops working: step h = \xce\xb5k against the initial angle", 11, 0.5, 0.5, 1);
+    for (int m = 0; m < f->nm; m++) {
+        plot_axes ax;
+        char letter[8];
+        snprintf(letter, sizeof letter, "(%c)", 'a' + m % 26);
+        plot_axes_cell(&ax, cr, W, H - 40, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0, 360.0, 1, 0);
+        ax.x0 = f->hs[0] / step;
+        ax.x1 = f->hs[NH - 1] * step;
+        ax.y0 = 0.0;
+        ax.y1 = 360.0;
+        for (int i = 0; i < NH; i++)
+            for (int a = 0; a < NANGLE; a++)
+                plot_rect(&ax, f->hs[i] / step, f->hs[i] * step, 10.0 * a, 10.0 * (a + 1),
+                          CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
+        char title[96];
+        snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", suslov_method_get(m)->type->name);
+        plot_frame(&ax, title, "initial angle \xce\xb8\xe2\x82\x80 (degrees)", letter);
+        if (isfinite(f->limit[m])) {
+            const double lx[2] = {f->limit[m], f->limit[m]}, ly[2] = {0.0, 360.0};
+            const plot_style ls = plot_style_of(PLOT_BLACK, 1.4, 1, PLOT_NONE, 0, NULL);
+            plot_series(&ax, lx, ly, 2, 1, &ls);
+            char lab[64];
+            snprintf(lab, sizeof lab, "linear limit h = %.4g", f->limit[m]);
+            plot_text(cr, ax.x + 4, ax.y + 10, lab, 8.0, 0.0, 0.5, 0);
+        } else {
+            plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
+        }
+    }
+    plot_style leg[STAB_NCLASS];
+    for (int c = 0; c < STAB_NCLASS; c++)
+        leg[c] = plot_style_of(CLASS_RGB[c], 0, 0, PLOT_DOT, 7, STAB_NAMES[c]);
+    for (int c = 0; c < STAB_NCLASS; c++) { /* a horizontal legend along the bottom */
+        plot_axes la;
+        plot_axes_init(&la, cr, 40 + 112 * c, H - 34, 110, 20, 0, 1, 0, 1, 0, 0);
+        plot_legend(&la, &leg[c], 1, 0);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    suslov_model model;
+    suslov_exact paper;
+    const int setup = fig_setup_paper(argc, "stability", &model, &paper);
+    if (setup != 0)
+        return setup;
+    char err[256], path[4096];
+    stab_fig *f = malloc(sizeof *f);
+    if (!f)
+        return 1;
+    f->nm = suslov_method_count();
+    f->res = calloc((size_t)f->nm, sizeof *f->res);
+    f->limit = calloc((size_t)f->nm, sizeof *f->limit);
+    if (!f->res || !f->limit)
+        return 1;
+    for (int i = 0; i < NH; i++)
+        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
+    int unclassified = 0;
+    for (int m = 0; m < f->nm; m++) {
+        suslov_stability_map(&paper, suslov_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
+        f->limit[m] = suslov_linear_limit(suslov_method_get(m), f->hs[NH - 1]);
+        for (int j = 0; j < NH * NANGLE; j++) {
+            const stab_result *r = &f->res[m][j];
+            unclassified += r->cls < STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+        }
+    }
+    if (unclassified) {
+        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n", unclassified);
+        return 1;
+    }
+    atomic_file af;
+    if (atomic_file_open(&af, fig_path(path, sizeof path, argv[2], "stability", "csv"), err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    fprintf(af.fp, "method,h,theta0_degrees,class,class_name,failed_step,final_relative_error\n");
+    for (int m = 0; m < f->nm; m++)
+        for (int i = 0; i < NH; i++)
+            for (int a = 0; a < NANGLE; a++) {
+                const stab_result *r = &f->res[m][i * NANGLE + a];
+                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", suslov_method_get(m)->type->name, f->hs[i],
+                        (2.0 * 3.14159265358979323846 * a / NANGLE + STAB_ANGLE0) * 180.0 / 3.14159265358979323846,
+                        r->cls, STAB_NAMES[r->cls], r->step, r->final_err);
+            }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    char limits[1024] = "";
+    for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
+        len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
+                        suslov_method_get(m)->type->name, f->limit[m]);
+    char cap[4096];
+    snprintf(cap, sizeof cap,
+             "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in src/exp/stability.h).\n"
+             "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
+             "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
+             "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run lasts\n"
+             "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
+             "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
+             "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = Newton fails or lands on another root than\n"
+             "the continued branch, or a Taylor step lies beyond its series' radius of convergence; regularity lost = the (REGLOC) block is singular or has changed sign.\n"
+             "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
+             "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; checked\n"
+             "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: no\n"
+             "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ 1 for Euler).\n"
+             "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
+             "conserves E: every run is good up to h ~ 3. From h ~ 4 on, for starts on part of the ellipse, its\n"
+             "quadratic step equation, solved by Newton from an explicit predictor whose error grows like h^3,\n"
+             "lands on another root than the branch continued from eps = 0 (solver failure) or on a root past a\n"
+             "fold of that branch (regularity lost); the runs that stay on the branch remain good. The variational\n"
+             "step has no linear limit either (its linearisation at the rotation has spectral radius < 1 for all\n"
+             "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
+             "its cubic step equation loses the continued branch from h ~ 150.\n"
+             "Data: data/stability.csv.\n",
+             paper.k, NH, STAB_BRANCH_H, limits);
+    return fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
+}

@@ -1,0 +1,243 @@
+/* Claims of issue 11, all extensions (the paper has no method of order above 4).
+ *
+ * Orders. The convergence sweep of claims.c fits over eps <= 2^-2 (orders up to 4 of the paper's
+ * DSPs); an order-8 method is at round-off there. Here each method runs to t = T_ORD with
+ * N = 4, 6, 8, 11, 16, ... steps (factors ~sqrt 2), and the slope of log error against log eps is
+ * fitted over the points between the round-off floor (1000 u times the size of the quantity, as in
+ * orderfit.h) and ERR_MAX = 1e-3 (0.1% of |R|: beyond it the step is so large that the next terms
+ * of the error expansion bend the slope; Cayley's error constant, 100-1000x exp's, pushes that
+ * regime to the smallest errors). w is compared with the closed form, R with the long-double reference (refattitude.h, good
+ * to ~1e-17, checked below).
+ * Every claim is "order at least p", the theorem's statement (nothing is claimed about a slope
+ * steeper than p, which the pre-asymptotic bend of the window produces: w's errors are 100-1000x
+ * smaller than R's, so its window holds coarser steps, and its slopes come out 0.1-0.4 steep).
+ * - Orders 4, 6, 8 (compositions): slope >= p - 0.3, less than a third of the gap to p - 1.
+ * - Taylor methods of every order (8 included): slope >= p - 1, for the reason below: their
+ *   windows reach h ~ 3, h / rho ~ 0.3, where the corrections bend the slope by a few tenths
+ *   (taylor8's attitude, measured: local slopes 7.0, 7.5, 7.9 for N = 10-20, 20-40, 40-80).
+ * - Orders 10, 12, 16: their asymptotic regime lies below double round-off (at order 12 the
+ *   error drops from 1e-2 to 1e-13 within a factor 3 of eps, in the pre-asymptotic range where
+ *   the error behaves like (h / rho)^p with rho ~ 10.8 and corrections of relative size h/rho).
+ *   The bound is slope >= p - 1, which a wrong coefficient (order 2 or 4) fails by far. */
+#include "claims_highorder.h"
+
+#include "composition.h"
+#include "driver.h"
+#include "expected_orders.h"
+#include "ledger.h"
+#include "magnus4.h"
+#include "orderfit.h"
+#include "reconstruct.h"
+#include "refattitude.h"
+#include "registry.h"
+#include "so3.h"
+#include "taylor.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define T_ORD 50.0
+#define ERR_MAX 1e-3
+#define MAXN 40
+
+typedef struct {
+    double R[3][3], w[3], e0, energy, w3, orth;
+    suslov_model const *m;
+} last_row;
+
+static int keep_row(void *vctx, const suslov_row *row)
+{
+    last_row *l = vctx;
+    memcpy(l->R, row->R, sizeof l->R);
+    memcpy(l->w, row->w, sizeof l->w);
+    l->energy = fmax(l->energy, fabs(suslov_energy(l->m, row->w) - l->e0));
+    l->w3 = fmax(l->w3, fabs(row->w[2]));
+    l->orth = fmax(l->orth, so3_orth_defect(row->R));
+    return 0;
+}
+
+/* Runs a method over [0, T] with N steps, every row tracked every `every` steps. */
+static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st, suslov_recon recon,
+               double T, long N, long every, last_row *out)
+{
+    *out = (last_row){.e0 = suslov_energy(m, ex->w0), .m = m};
+    const suslov_run_config cfg = {m, st, recon, T / (double)N, N, every};
+    suslov_run_report rep;
+    return suslov_run(&cfg, ex->w0, keep_row, out, &rep);
+}
+
+/* Midpoint substeps per step (1 for a Taylor step). */
+static int stages_of(const suslov_stepper_type *st)
+{
+    const struct {
+        const suslov_stepper_type *type;
+        const suslov_composition *table;
+    } comp[] = {{&suslov_comp4_s5_type, &suslov_comp_suzuki4},
+                {&suslov_comp6_kl_type, &suslov_comp_kahan_li6},
+                {&suslov_comp8_kl_type, &suslov_comp_kahan_li8},
+                {&suslov_comp10_ss_type, &suslov_comp_sofroniou10}};
+    for (size_t i = 0; i < sizeof comp / sizeof comp[0]; i++)
+        if (comp[i].type == st)
+            return suslov_composition_stages(comp[i].table);
+    return 1;
+}
+
+static void order_rows(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, const expected_order *eo,
+                       suslov_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
+{
+    double eps[MAXN], ew[MAXN], eR[MAXN];
+    const int stages = stages_of(me->type);
+    int n = 0;
+    long prev = 0;
+    for (double Nd = 4.0; n < MAXN && Nd < 1e5; Nd *= 1.4142135623730951) {
+        const long N = lround(Nd);
+        if (N == prev)
+            continue;
+        prev = N;
+        last_row l;
+        if (run(m, ex, me->type, recon, T_ORD, N, N, &l) != 0)
+            continue;
+        eps[n] = T_ORD / (double)N;
+        ew[n] = hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
+        eR[n] = so3_dist(R_T, l.R);
+        n++;
+        if (ew[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_W
+            && eR[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_R)
+            break; /* both at the round-off floor below */
+    }
+    for (int q = with_w ? 0 : 1; q < 2; q++) {
+        const double *err = q ? eR : ew;
+        const double size = q ? SUSLOV_SIZE_R : SUSLOV_SIZE_W;
+        /* keep the points below ERR_MAX and above the round-off of the run: 1000 u times the size
+         * (orderfit.h), and a hundred times N s u, the worst-case accumulation of one rounding per
+         * substep over N steps of s substeps (a run of 10^4 steps piles up more than 1000 u) */
+        double fe[MAXN], fr[MAXN];
+        int k = 0;
+        for (int j = 0; j < n; j++) {
+            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size, 100.0 * N * stages * 2.220446049250313e-16 * size);
+            if (err[j] <= ERR_MAX && err[j] > floor) {
+                fe[k] = eps[j];
+                fr[k] = err[j];
+                k++;
+            }
+        }
+        suslov_order_fit f;
+        const int ok = suslov_fit_order(fe, fr, k, INFINITY, 0.0, &f);
+        const double slope = ok == 0 ? f.slope : NAN;
+        const int expected = q ? eo->so3[recon] : eo->p;
+        char id[96], what[256];
+        if (q)
+            snprintf(id, sizeof id, "highorder-so3-order-%s-%s", SUSLOV_RECON_NAMES[recon], me->type->name);
+        else
+            snprintf(id, sizeof id, "highorder-w-order-%s", me->type->name);
+        snprintf(what, sizeof what, "slope of %s at t = 50 against eps, %s%s%s, errors in [max(1000 u, 100 N s u), 1e-3] (eps %.3g .. %.3g, %d points)",
+                 q ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|", me->type->name, q ? " + " : "", q ? SUSLOV_RECON_NAMES[recon] : "",
+                 ok == 0 ? f.eps_lo : NAN, ok == 0 ? f.eps_hi : NAN, ok == 0 ? f.used : 0);
+        if (ok != 0 && !q && expected >= 10)
+            continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
+                       * (its attitude, which integrates w, carries the order: the SO(3) row) */
+        const int taylor = strcmp(me->family, "taylor") == 0;
+        ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !taylor ? 0.3 : 1.0), 1, LEDGER_EXTENSION);
+    }
+}
+
+/* A Taylor method of order p against its own truncation at p - 1 (the control): one full step
+ * (w, R) from the exact w(t_k) at 8 starts, local w errors against the closed form. The slopes
+ * above cannot tell p from p - 1 (pre-asymptotic, 1-3 steep), the local errors can: theory gives
+ * e_p ~ C_{p+1} eps^{p+1} and e_{p-1} ~ C_p eps^p with C_{j+1} / C_j ~ 1 / rho (rho ~ 10.8, the
+ * series' radius in t), so max_t e_p / max_t e_{p-1} ~ eps / rho = 0.19 at eps = 2, where the
+ * control's errors stay 1000x above round-off up to p = 16 (single starts scatter: coefficients
+ * of either sign; the maxima over 8 starts do not by more than 2x). A method of order p - 1 gives
+ * 1. Asserted: <= 0.6. */
+static void taylor_control(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, int p)
+{
+    static const double tk[] = {0.0, 1.0, 2.0, 3.0, 5.0, 7.0, 12.0, 20.0};
+    const double eps = 2.0;
+    double em = 0.0, ec = 0.0;
+    for (int t = 0; t < 8; t++) {
+        double wk[2], we[2], wn[3], wc[3], lam;
+        suslov_attitude a1, a2;
+        suslov_step_stats ss;
+        suslov_exact_omega(ex, tk[t], wk);
+        suslov_exact_omega(ex, tk[t] + eps, we);
+        const double w[3] = {wk[0], wk[1], 0.0};
+        suslov_attitude_identity(&a1);
+        suslov_attitude_identity(&a2);
+        if (suslov_step_full(me->type, m, eps, me->recon, &a1, w, wn, &lam, &ss) != SUSLOV_STEP_OK ||
+            suslov_taylor_apply_full(p - 1, m, eps, &a2, w, wc, &lam, &ss) != SUSLOV_STEP_OK) {
+            em = NAN;
+            break;
+        }
+        em = fmax(em, hypot(wn[0] - we[0], wn[1] - we[1]));
+        ec = fmax(ec, hypot(wc[0] - we[0], wc[1] - we[1]));
+    }
+    char id[96], what[256];
+    snprintf(id, sizeof id, "highorder-control-%s", me->type->name);
+    snprintf(what, sizeof what, "max local w error of %s over that of its truncation at order %d (%.2g; the control), one step of eps = 2 from w(t), 8 t; theory ~eps/rho = 0.19",
+             me->type->name, p - 1, ec);
+    ledger_add_bound(id, "(extension)", what, em / ec, 0.6, 0, LEDGER_EXTENSION);
+}
+
+void highorder_claims(const suslov_model *m, const suslov_exact *ex)
+{
+    double w_T[2], R_T[3][3], w_ref[2];
+    char id[96], what[256];
+    suslov_exact_omega(ex, T_ORD, w_T);
+    suslov_refatt_precise(m, ex->w0, T_ORD, w_ref, R_T);
+
+    /* The reference R(50) against the independent long-double Magnus integration along the
+     * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17;
+     * each matrix is rounded to double once, so ~1e-16 is the floor of the comparison). The issue
+     * asks for <= 1e-15: a tenth of the 1e-14 that would blur errors of 1e-12 by 1%. */
+    {
+        double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        suslov_magnus4(ex, 0.0, T_ORD, 4000, Rm);
+        ledger_add("highorder-reference-attitude", "(method)",
+                   "dist(R_ref(50), R_magnus(50)): long-double Taylor (order 28) on (ContDyn) + quaternion vs long-double "
+                   "Magnus-4 (Richardson) along the closed form; claimed <= 1e-15",
+                   so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
+        ledger_add("highorder-reference-omega", "(method)",
+                   "|w_ref(50) - w_exact(50)|: the reference's w against the closed form, claimed <= 4 u |w| ~ 1e-15 "
+                   "(each side rounds a few times)",
+                   hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
+    }
+
+    for (int i = 0; i < suslov_method_count(); i++) {
+        const suslov_method *me = suslov_method_get(i);
+        const expected_order *eo = expected_order_of(me->type->name);
+        if (!eo || !eo->orders_in || strcmp(eo->orders_in, "tests/ledger/claims_highorder.c") != 0)
+            continue;
+        const int composition = strcmp(me->family, "composition") == 0;
+        order_rows(m, ex, me, eo, me->recon, 1, w_T, R_T);
+        if (strcmp(me->family, "taylor") == 0)
+            taylor_control(m, ex, me, eo->p);
+        if (composition) /* the paper's retraction, symmetrised, beside the exponential */
+            order_rows(m, ex, me, eo, SUSLOV_RECON_CAYLEY_MID, 0, w_T, R_T);
+
+        /* Structure over a long run at T = 1e4. 10^6 steps (eps = 0.01) for the cheapest method of
+         * each family (comp4-s5, taylor12); 10^5 steps (eps = 0.1) for the others, which share
+         * the same substep or the same recursion, to keep make check short. Yardsticks: w3 = 0
+         * exactly (the steps never compute it); E kept to round-off: at most one unit roundoff of E
+         * per midpoint substep or per Taylor step (N s u E, the worst case of a drift that never
+         * cancels); R^T R - I: R is rebuilt from a unit quaternion at every step, so it is one
+         * rounding, a few u over 9 entries, whatever N: <= 1e-14. */
+        const int cheap = strcmp(me->type->name, "comp4-s5") == 0 || strcmp(me->type->name, "taylor12") == 0;
+        const long N = cheap ? 1000000L : 100000L;
+        last_row l;
+        const int status = run(m, ex, me->type, me->recon, 1e4, N, 100, &l);
+        const int stages = stages_of(me->type);
+        const double yard = (double)N * stages * 1.1102230246251565e-16 * l.e0;
+        snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
+        snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = %.2g (s = %d substeps)",
+                 N, 1e4 / (double)N, me->type->name, yard, stages);
+        ledger_add_bound(id, "(extension)", what, status == 0 ? l.energy : NAN, yard, 0, LEDGER_EXTENSION);
+        snprintf(id, sizeof id, "highorder-w3-%s", me->type->name);
+        snprintf(what, sizeof what, "max |w3| over %ld steps to T = 1e4, %s: exactly 0", N, me->type->name);
+        ledger_add(id, "(extension)", what, status == 0 ? l.w3 : NAN, 0.0, 0.0, LEDGER_EXTENSION);
+        snprintf(id, sizeof id, "highorder-so3-%s", me->type->name);
+        snprintf(what, sizeof what, "max |R^T R - I| over %ld steps to T = 1e4, %s + %s; bound 1e-14 (one rounding)", N,
+                 me->type->name, SUSLOV_RECON_NAMES[me->recon]);
+        ledger_add_bound(id, "(extension)", what, status == 0 ? l.orth : NAN, 1e-14, 0, LEDGER_EXTENSION);
+    }
+}
