@@ -42,7 +42,7 @@ function visit(h, path,   m, t, i) {
     colour[h] = 1
     m = split(edge[h], t, " ")
     for (i = 1; i <= m; i++) {
-        if (colour[t[i]] == 1) { printf "FAIL include cycle: %s -> %s\n", path, t[i]; cyc++ }
+        if ((t[i] in colour) && colour[t[i]] == 1) { printf "FAIL include cycle: %s -> %s\n", path, t[i]; cyc++ }
         else if (!(t[i] in colour)) visit(t[i], path " -> " t[i])
     }
     colour[h] = 2
