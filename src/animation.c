@@ -319,7 +319,7 @@ int main(int argc, char **argv)
     /* the two integrators through the driver, every step kept (N is small) */
     const long N = (long)ceil(cfg.t_end / cfg.eps - 1e-9);
     const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
-    static const char *const names[2] = {"midpoint", "variational"};
+    const char *names[2] = {st[0]->name, st[1]->name};
     dsp_track track[2];
     for (int m = 0; m < 2; m++) {
         track[m].n = N;

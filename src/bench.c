@@ -258,17 +258,16 @@ static void sweep_ours(const suslov_method *me, suslov_recon recon)
 {
     wp_series *s = new_series();
     snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUSLOV_RECON_NAMES[recon]);
-    if (strcmp(me->family, "taylor") == 0) /* the attitude is its own: no reconstruction */
+    if (!me->type->follows_recon) /* the attitude is its own: no reconstruction */
         snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
     s->ours = 1;
     s->method = me->type->name;
     s->recon = recon;
     const int high = me->type->order > 4;
-    s->preserves = strcmp(me->family, "composition") == 0 || strcmp(me->family, "taylor") == 0
-                || strcmp(me->type->name, "midpoint") == 0;
+    s->preserves = me->type->conserves_energy;
     double Nd = high ? 4.0 : 50.0;
     long prevN = 0;
-    const int fine = strcmp(me->family, "taylor") == 0;
+    const int fine = !me->type->implicit && high; /* cheap steps of high order */
     if (fine)
         Nd = 2.0;
     for (; Nd <= (double)MAX_STEPS && s->n < MAXPTS;
@@ -906,10 +905,10 @@ int main(int argc, char **argv)
     for (int m = 0; m < suslov_method_count(); m++) {
         const suslov_method *me = suslov_method_get(m);
         sweep_ours(me, me->recon);
-        if (strcmp(me->family, "taylor") == 0)
+        if (!me->type->follows_recon)
             sweep_ours_w(me);
         /* the symmetric Cayley reconstruction beside the default one, where it differs */
-        if (strcmp(me->family, "taylor") != 0 && me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
+        if (me->type->follows_recon && me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
             sweep_ours(me, SUSLOV_RECON_CAYLEY_MID);
     }
     const gsl_odeiv2_step_type *gsl_types[4] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck, gsl_odeiv2_step_rkf45,
@@ -959,7 +958,7 @@ int main(int argc, char **argv)
     int implicit_pass = 1;
     for (int m = 0; m < cost.n; m++) {
         const suslov_method *me = suslov_method_get(m);
-        if (!me->implicit || strcmp(me->family, "composition") == 0)
+        if (!me->type->unknowns) /* a step with its own implicit equation */
             continue;
         const double r = cost.ns_raw[m] / cost.ns_raw[irk4];
         implicit_pass &= r <= 3;

@@ -6,11 +6,11 @@
 #include "convergence_plot.h"
 
 #include <stdio.h>
-#include <string.h>
 
+/* The extensions, and the paper's methods that conserve E (the midpoint DSP) as the baseline. */
 static int extension_or_baseline(const suslov_method *me)
 {
-    return me->paper_ref == NULL || strcmp(me->type->name, "midpoint") == 0;
+    return me->paper_ref == NULL || me->type->conserves_energy;
 }
 
 static void caption(char *buf, size_t len, const conv_fig *f)

@@ -79,9 +79,9 @@ static void ours(const suslov_method *me)
         N = (long)ceil(N * 1.189207115002721); /* 2^(1/4) */
     curve *c = &C[nc++];
     const double eps = T_MATCH / (double)N;
-    const int taylor = strcmp(me->family, "taylor") == 0; /* its own quaternion, whatever the recon */
-    snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, taylor ? "(quaternion)" : "+ ",
-             taylor ? "" : SUSLOV_RECON_NAMES[me->recon], eps);
+    const int own = !me->type->follows_recon; /* its own attitude, whatever the recon */
+    snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, own ? "(quaternion)" : "+ ",
+             own ? "" : SUSLOV_RECON_NAMES[me->recon], eps);
     c->ours = 1;
     c->param = eps;
     const long steps = lround(T_LONG / eps);
@@ -159,7 +159,7 @@ int main(int argc, char **argv)
     suslov_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
     for (int i = 0; i < suslov_method_count() && nc < MAXC - 2; i++) {
         const suslov_method *me = suslov_method_get(i);
-        if (strcmp(me->family, "composition") == 0 || strcmp(me->family, "taylor") == 0)
+        if (me->type->conserves_energy && me->type->order > 2) /* high order, structure-preserving */
             ours(me);
     }
     peer(11);

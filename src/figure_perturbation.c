@@ -134,7 +134,7 @@ int main(int argc, char **argv)
 
     /* (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point */
     suslov_perturb P;
-    if (suslov_perturb_init(&P, &m, suslov_method_by_name("euler")->type, EPS_A) != 0)
+    if (suslov_perturb_init(&P, &m, suslov_step_euler, EPS_A) != 0)
         die("singular inertia", 1);
     double x[2] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}, seg[NSUB + 1][2], gap = 0.0;
     f.tk[0] = 0.0;
