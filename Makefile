@@ -142,7 +142,7 @@ $(BUILD)/bench_boost: $(BUILD)/obj/bench_boost.o $(BUILD)/obj/bench_odeint.o $(L
 
 # The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
 # (data/bench.tex), figures from the figure programs, listings and equation map from src/.
-$(BUILD)/claims.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex &: $(CLAIMS)
+$(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex &: $(CLAIMS)
 	$(CLAIMS) $(BUILD)/claims.tsv >/dev/null
 
 # The same program as make bench (with the Boost.Odeint peers), so that the companion quotes

@@ -116,7 +116,8 @@ static void peer(size_t dim)
         if (k > 0 && gsl_odeiv2_driver_apply(d, &t, T_LONG * k / NS, y) != GSL_SUCCESS)
             break;
         suslov_peer_attitude(dim, y, R);
-        const double nq = dim == 6 ? fabs(sqrt(y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5]) - 1.0) : 0.0;
+        const double q2 = y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
+        const double nq = dim == 6 ? fabs(sqrt(q2) - 1.0) : 0.0;
         c->t[k] = t;
         c->orth[k] = fmax(dim == 11 ? so3_orth_defect(R) : nq, FLOOR);
         c->energy[k] = fmax(fabs(suslov_energy(&model, y) - e0), FLOOR);
@@ -128,7 +129,9 @@ static void draw(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     const double W = 760;
-    plot_text(cr, W / 2, 14, "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy (attitude 1e-10 at t = 50)", 11, 0.5,
+    plot_text(cr, W / 2, 14,
+              "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy (attitude 1e-10 at t = 50)",
+              11, 0.5,
               0.5, 1);
     plot_style st[nc > 0 ? nc : 1];
     int k = 0;
@@ -138,7 +141,10 @@ static void draw(cairo_t *cr, void *vctx)
     for (int p = 0; p < 2; p++) {
         plot_axes ax;
         plot_axes_init(&ax, cr, 60 + p * (W / 2), 40, W / 2 - 85, 250, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
-        plot_frame(&ax, "t", p ? "|E \xe2\x88\x92 E\xe2\x82\x80|" : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  (peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)",
+        const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
+                               : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
+                                 "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
+        plot_frame(&ax, "t", ylabel,
                    p ? "(b)" : "(a)");
         for (int i = 0; i < nc; i++)
             plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
@@ -175,11 +181,16 @@ static int write_data(const char *datadir)
 static void caption(char *cap, size_t size)
 {
     int len = snprintf(cap, size,
-                       "Structure over a long run, T = 1e4 (issue 11). Regenerate: make figures (src/figure_longrun.c).\n"
-                       "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches attitude error 1e-10\n"
-                       "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd on (w, q) the\n"
-                       "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn instead); (b) |E - E0|.\n"
-                       "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute it, the peers\n"
+                       "Structure over a long run, T = 1e4 (issue 11). Regenerate: make figures "
+                       "(src/figure_longrun.c).\n"
+                       "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches "
+                       "attitude error 1e-10\n"
+                       "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd "
+                       "on (w, q) the\n"
+                       "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn "
+                       "instead); (b) |E - E0|.\n"
+                       "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute "
+                       "it, the peers\n"
                        "integrate w1, w2 only. Curves (data/longrun.csv, column curve):\n");
     for (int i = 0; i < nc && len < (int)size; i++) {
         double mo = 0.0, me = 0.0;
@@ -187,7 +198,8 @@ static void caption(char *cap, size_t size)
             mo = fmax(mo, C[i].orth[k]);
             me = fmax(me, C[i].energy[k]);
         }
-        len += snprintf(cap + len, size - (size_t)len, "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i,
+        len += snprintf(cap + len, size - (size_t)len,
+                        "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i,
                         C[i].name, mo, me, C[i].ours ? (C[i].w3max == 0.0 ? ", w3 = 0" : ", w3 NOT 0") : "");
     }
 }

@@ -52,8 +52,10 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const pert_fig *f = vctx;
     const double W = 600, H = 560;
-    plot_text(cr, W / 2, 14, "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)", 11, 0.5, 0.5, 1);
-    const plot_style sp = plot_style_of(PLOT_BLUE, 1.2, 0, PLOT_NONE, 0, "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
+    plot_text(cr, W / 2, 14, "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)",
+              11, 0.5, 0.5, 1);
+    const plot_style sp =
+        plot_style_of(PLOT_BLUE, 1.2, 0, PLOT_NONE, 0, "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
     const plot_style se = plot_style_of(PLOT_GREY, 1.0, 1, PLOT_NONE, 0, "exact flow from \xcf\x89(0)");
     const plot_style sk = plot_style_of(PLOT_RED, 0, 0, PLOT_CIRCLE, 5.0, "euler steps, \xce\xb5 = 4");
     for (int c = 0; c < 2; c++) {
@@ -95,7 +97,8 @@ static void draw(cairo_t *cr, void *vctx)
                 drawn += isfinite(f->g[m][j]);
             if (drawn < 2) /* at round-off for every eps: said in the caption */
                 continue;
-            leg[nl] = plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]); /* dashed: colours reused */
+            /* dashed where the colours come round again */
+            leg[nl] = plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
             plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             nl++;
@@ -136,7 +139,9 @@ static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex
     f->wk[0][1] = x[1];
     for (int k = 0; k < NSTEP_A; k++) {
         if (suslov_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUSLOV_PERTURB_OK) {
-            fprintf(stderr, "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n", k,
+            fprintf(stderr,
+                    "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n",
+                    k,
                     EPS_A * k, EPS_A * (k + 1), P.newton_res);
             return 3;
         }
@@ -238,11 +243,12 @@ static int write_data(const pert_fig *f, const char *datadir)
         scols[nc++] = f->g[i];
     }
     for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-        used += snprintf(header + used, sizeof header - (size_t)used, ",attitude_midpoint_%s", SUSLOV_RECON_NAMES[r]);
+        used += snprintf(header + used, sizeof header - (size_t)used, ",attitude_midpoint_%s",
+                         SUSLOV_RECON_NAMES[r]);
         scols[nc++] = f->att[r];
     }
-    return fig_write_csv(fig_path(path, sizeof path, datadir, "perturbation_sizes", "csv"), header, nc, scols, NE, 1)
-           != 0;
+    fig_path(path, sizeof path, datadir, "perturbation_sizes", "csv");
+    return fig_write_csv(path, header, nc, scols, NE, 1) != 0;
 }
 
 int main(int argc, char **argv)
@@ -268,15 +274,24 @@ int main(int argc, char **argv)
         return 1;
     char cap[2048];
     snprintf(cap, sizeof cap,
-             "Section 6 made constructive. Regenerate: make figures (src/figure_perturbation.c, src/perturbation.c).\n"
-             "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and backward from the\n"
-             "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect against (ContDyn),\n"
-             "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by rk8pd (tol 1e-14)\n"
-             "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap %.1e); dashed:\n"
-             "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method of the registry;\n"
-             "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and methods with fewer\n"
-             "than two points left (their perturbation is at round-off for every eps <= 2). (d): the attitude\n"
-             "part of the perturbation on SO(3) (geodesic blend, Per11), midpoint DSP: order 1 with cayley, 2 with the\n"
+             "Section 6 made constructive. Regenerate: make figures (src/figure_perturbation.c, "
+             "src/perturbation.c).\n"
+             "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
+             "backward from the\n"
+             "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect "
+             "against (ContDyn),\n"
+             "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by "
+             "rk8pd (tol 1e-14)\n"
+             "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap "
+             "%.1e); dashed:\n"
+             "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method of the "
+             "registry;\n"
+             "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and "
+             "methods with fewer\n"
+             "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
+             "attitude\n"
+             "part of the perturbation on SO(3) (geodesic blend, Per11), midpoint DSP: order 1 with cayley, "
+             "2 with the\n"
              "symmetric reconstructions. Data: data/perturbation.csv, data/perturbation_sizes.csv.\n",
              NSTEP_A, EPS_A, gap, FLOOR_G);
     return fig_write_figure(argv[1], "perturbation", 600, 560, draw, &f, cap) != 0;

@@ -171,7 +171,8 @@ static const struct {
 
 /* (Discretization), and (taudyn) for the variational step: the series in eps of one step of the
  * method from w (lambda_shift.h). */
-int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2], suslov_wseries *s)
+int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2],
+                       suslov_wseries *s)
 {
     for (size_t i = 0; i < sizeof SERIES / sizeof SERIES[0]; i++)
         if (SERIES[i].type == st) {
@@ -204,8 +205,8 @@ void suslov_lagmult_grad(const suslov_model *m, const double w[2], double g[2])
 }
 
 /* (RemarkLambda): l_lambda = -grad lambda(w^{k+1}) . sum_{j=p+1}^{p+nterms} e_j(w^k) eps^j. */
-int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps, const double w[2],
-                        const double x[2], double *l_lambda)
+int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps,
+                        const double w[2], const double x[2], double *l_lambda)
 {
     suslov_wseries a, y;
     double g[2], d[2] = {0.0, 0.0};

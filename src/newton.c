@@ -157,8 +157,8 @@ int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, doub
     }
 }
 
-int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps, const double w[3],
-                          double w_next[3], suslov_step_stats *st)
+int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps,
+                          const double w[3], double w_next[3], suslov_step_stats *st)
 {
     double x[SUSLOV_MAX_UNKNOWNS];
     type->guess(m, eps, w, x);

@@ -17,8 +17,8 @@ int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, doub
 
 /* The common step of the implicit DSPs: Newton on type->residual from type->guess, w^{k+1} from
  * type->result, and (w^{k+1})_3 = 0, the second equation of (DSP). Returns as suslov_newton_solve. */
-int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps, const double w[3],
-                          double w_next[3], suslov_step_stats *st);
+int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps,
+                          const double w[3], double w_next[3], suslov_step_stats *st);
 
 /* dx = J^{-1} g and det J for n <= SUSLOV_MAX_UNKNOWNS (J row-major, overwritten). Returns -1,
  * leaving dx unset, when J is singular to working precision: |det| at or below 4 n u times the sum

@@ -6,22 +6,25 @@
 /* One line per method: its stepper type (suslov_ID_type, defined in its stepper file), a display
  * family, the \label of the statement it tests (NULL for an extension), its default
  * reconstruction, and one line for --help. Everything else a consumer needs is in the type. */
-#define SUSLOV_METHODS(M)                                                                                   \
-    M(euler, "paper DSP", "Discretization", CAYLEY, "(Discretization) with l = I_m f(w^k): explicit Euler")    \
-    M(midpoint, "paper DSP", "Discretization", CAYLEY, "(Discretization) with the midpoint l1, l2 (Figures 1-2)") \
-    M(rk4, "paper DSP", "Discretization", CAYLEY, "(Discretization) with the classical Runge-Kutta increment") \
-    M(variational, "variational", "PropoFinal", CAYLEY, "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}")      \
-    M(comp4_s5, "composition", NULL, EXP_MID, "midpoint DSP composed, Suzuki s=5, order 4")                  \
-    M(comp6_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=9, order 6")                \
-    M(comp8_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=17, order 8")               \
-    M(comp10_ss, "composition", NULL, EXP_MID, "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10")    \
-    M(taylor8, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(8))                                                    \
-    M(taylor10, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(10))                                                  \
-    M(taylor12, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(12))                                                  \
-    M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16))                                                  \
+#define SUSLOV_METHODS(M) \
+    M(euler, "paper DSP", "Discretization", CAYLEY, "(Discretization) with l = I_m f(w^k): explicit Euler") \
+    M(midpoint, "paper DSP", "Discretization", CAYLEY, \
+      "(Discretization) with the midpoint l1, l2 (Figures 1-2)") \
+    M(rk4, "paper DSP", "Discretization", CAYLEY, \
+      "(Discretization) with the classical Runge-Kutta increment") \
+    M(variational, "variational", "PropoFinal", CAYLEY, "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}") \
+    M(comp4_s5, "composition", NULL, EXP_MID, "midpoint DSP composed, Suzuki s=5, order 4") \
+    M(comp6_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=9, order 6") \
+    M(comp8_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=17, order 8") \
+    M(comp10_ss, "composition", NULL, EXP_MID, "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10") \
+    M(taylor8, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(8)) \
+    M(taylor10, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(10)) \
+    M(taylor12, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(12)) \
+    M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16)) \
     M(gauss4, "collocation", NULL, EXP_MID, "2-stage Gauss-Legendre collocation, order 4, conserves E")
 
-#define TAYLOR_ABOUT(P) "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
+#define TAYLOR_ABOUT(P) \
+    "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
 
 #define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const suslov_stepper_type suslov_##ID##_type;
 SUSLOV_METHODS(DECLARE)
@@ -67,9 +70,9 @@ int suslov_methods_write_tsv(FILE *fp)
     for (int i = 0; i < NMETHODS; i++) {
         const suslov_method *me = &METHODS[i];
         const suslov_stepper_type *t = me->type;
-        fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family, t->order,
-                t->lambda_order, t->implicit, t->unknowns, t->conserves_energy, ATTITUDE_NAMES[t->attitude],
-                t->follows_recon, t->substeps, t->stability != NULL, SUSLOV_RECON_NAMES[me->recon],
+        fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
+                t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
+                ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL, SUSLOV_RECON_NAMES[me->recon],
                 me->paper_ref ? me->paper_ref : "-", t->source, me->about);
     }
     return ferror(fp) ? -1 : 0;

@@ -1,8 +1,8 @@
 /* The one list of methods. Every consumer (the suslov command, the convergence sweep and its
  * figure, the stability map, the bench, the claims ledger) iterates over it, so adding a method
- * is one stepper file plus one line in src/registry.c (its SUSLOV_METHODS list). What the paper or theory says a method's
- * orders are is NOT here: the ledger keeps that in its own table (tests/expected_orders.c), so
- * that no expected value comes from the code under test. */
+ * is one stepper file plus one line in src/registry.c (its SUSLOV_METHODS list). What the paper
+ * or theory says a method's orders are is NOT here: the ledger keeps that in its own table
+ * (tests/expected_orders.c), so that no expected value comes from the code under test. */
 #ifndef SUSLOV_REGISTRY_H
 #define SUSLOV_REGISTRY_H
 

@@ -7,12 +7,14 @@
 
 #include <math.h>
 
-const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure", "regularity lost"};
+const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure",
+                                             "regularity lost"};
 
 /* Continuation of the implicit step in eps from 0 (where the root is the trivial one) to eps: the
  * physical branch. Returns 0 with w^{k+1} of that root in x, or -1 when a continuation step
  * fails or the Jacobian's determinant changes sign (a fold). */
-static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2], double x[2])
+static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2],
+                         double x[2])
 {
     const int n = st->unknowns;
     double prev[SUSLOV_MAX_UNKNOWNS], cur[SUSLOV_MAX_UNKNOWNS], guess[SUSLOV_MAX_UNKNOWNS];
@@ -137,8 +139,8 @@ void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *
             suslov_exact ex;
             suslov_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + STAB_ANGLE0, w0);
             suslov_exact_init(&ex, paper->model, w0);
-            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]), hs[i] >= STAB_BRANCH_H,
-                                 &results[i * nangle + a]);
+            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]),
+                                 hs[i] >= STAB_BRANCH_H, &results[i * nangle + a]);
         }
 }
 
@@ -169,8 +171,8 @@ double suslov_linear_limit(const suslov_method *me, double h_max)
             for (int it = 0; it < 100; it++) {
                 gsl_root_fsolver_iterate(s);
                 root = gsl_root_fsolver_root(s);
-                if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-14) ==
-                    GSL_SUCCESS)
+                const double lo_s = gsl_root_fsolver_x_lower(s), hi_s = gsl_root_fsolver_x_upper(s);
+                if (gsl_root_test_interval(lo_s, hi_s, 0.0, 1e-14) == GSL_SUCCESS)
                     break;
             }
         if (s)

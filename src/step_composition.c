@@ -3,21 +3,22 @@
  * apply is the w-step, apply_full advances (w, R) with the reconstruction after every substep. */
 #include "composition.h"
 
-#define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE)                                                        \
-    static int ID##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],           \
-                          double *lambda_next, suslov_step_stats *st)                                       \
-    {                                                                                                      \
-        return suslov_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st);                       \
-    }                                                                                                      \
+#define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE) \
+    static int ID##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3], \
+                          double *lambda_next, suslov_step_stats *st) \
+    { \
+        return suslov_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st); \
+    } \
     static int ID##_apply_full(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att, \
-                               const double w[3], double w_next[3], double *lambda_next,                   \
-                               suslov_step_stats *st)                                                      \
-    {                                                                                                      \
-        return suslov_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st);      \
-    }                                                                                                      \
-    const suslov_stepper_type suslov_##ID##_type = {                                                       \
-        .name = NAME, .order = ORDER, .lambda_order = ORDER, .apply = ID##_apply, .apply_full = ID##_apply_full, \
-        .implicit = 1, .conserves_energy = 1, .attitude = SUSLOV_ATTITUDE_QUAT, .follows_recon = 1,          \
+                               const double w[3], double w_next[3], double *lambda_next, \
+                               suslov_step_stats *st) \
+    { \
+        return suslov_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st); \
+    } \
+    const suslov_stepper_type suslov_##ID##_type = { \
+        .name = NAME, .order = ORDER, .lambda_order = ORDER, .apply = ID##_apply, \
+        .apply_full = ID##_apply_full, \
+        .implicit = 1, .conserves_energy = 1, .attitude = SUSLOV_ATTITUDE_QUAT, .follows_recon = 1, \
         .substeps = STAGES, .source = __FILE__};
 
 /* lambda_{k+1} = lambda(w^{k+1}) from (LagMult), as for the midpoint DSP: its order is p. Every

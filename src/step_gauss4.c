@@ -42,6 +42,7 @@ static void gauss4_residual(const suslov_model *m, double eps, const double w[2]
     l_of(m, x, l[0], dl[0]);
     l_of(m, x + 2, l[1], dl[1]);
     const double sI = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
+    const double sl = fabs(l[0][0]) + fabs(l[0][1]) + fabs(l[1][0]) + fabs(l[1][1]);
     *scale = 0.0;
     for (int i = 0; i < 2; i++) {
         const double *W = x + 2 * i, d0 = W[0] - w[0], d1 = W[1] - w[1];
@@ -54,7 +55,7 @@ static void gauss4_residual(const suslov_model *m, double eps, const double w[2]
                 for (int k = 0; k < 2; k++)
                     J[(2 * i + a) * 4 + 2 * j + k] = (i == j ? I[a][k] : 0.0) - eps * A[i][j] * dl[j][a][k];
         *scale += sI * (fabs(W[0]) + fabs(W[1]) + fabs(w[0]) + fabs(w[1]))
-                + eps * (fabs(A[i][0]) + fabs(A[i][1])) * (fabs(l[0][0]) + fabs(l[0][1]) + fabs(l[1][0]) + fabs(l[1][1]));
+                + eps * (fabs(A[i][0]) + fabs(A[i][1])) * sl;
     }
 }
 
@@ -65,7 +66,8 @@ static void gauss4_guess(const suslov_model *m, double eps, const double w[2], d
     suslov_predict(m, C[1] * eps, w, x + 2);
 }
 
-static void gauss4_result(const suslov_model *m, double eps, const double w[2], const double *x, double w_next[2])
+static void gauss4_result(const suslov_model *m, double eps, const double w[2], const double *x,
+                          double w_next[2])
 {
     double f0[2], f1[2];
     suslov_contdyn(m, x, f0);

@@ -41,7 +41,8 @@ static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
 /* The midpoint rule conserves the quadratic invariant E of (ContDyn). */
 const suslov_stepper_type suslov_midpoint_type = {
     .name = "midpoint", .order = 2, .lambda_order = 2, .apply = midpoint_apply,
-    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = suslov_predict, .result = suslov_result_is_x,
+    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = suslov_predict,
+    .result = suslov_result_is_x,
     .stability = suslov_stab_midpoint, .conserves_energy = 1, .follows_recon = 1, .substeps = 1,
     .source = __FILE__};
 const suslov_stepper_type *const suslov_step_midpoint = &suslov_midpoint_type;

@@ -64,6 +64,7 @@ static int variational_apply(const suslov_model *m, double eps, const double w[3
 /* (taudyn) is not a linear one-step map of f: no stability function. */
 const suslov_stepper_type suslov_variational_type = {
     .name = "variational", .order = 2, .lambda_order = -1, .apply = variational_apply,
-    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = suslov_predict, .result = suslov_result_is_x,
+    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = suslov_predict,
+    .result = suslov_result_is_x,
     .follows_recon = 1, .substeps = 1, .source = __FILE__};
 const suslov_stepper_type *const suslov_step_variational = &suslov_variational_type;

@@ -23,7 +23,8 @@ void suslov_predict(const suslov_model *m, double eps, const double w[2], double
     x[1] = w[1] + eps * f[1];
 }
 
-void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x, double w_next[2])
+void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x,
+                        double w_next[2])
 {
     (void)m;
     (void)eps;

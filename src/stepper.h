@@ -10,7 +10,12 @@
 
 /* SUSLOV_STEP_DIVERGED: an explicit series step beyond its radius of convergence (its last term
  * in stats.residual, |w^k| in stats.scale). */
-enum { SUSLOV_STEP_OK = 0, SUSLOV_STEP_NO_CONVERGENCE = 1, SUSLOV_STEP_SINGULAR = 2, SUSLOV_STEP_DIVERGED = 3 };
+enum {
+    SUSLOV_STEP_OK = 0,
+    SUSLOV_STEP_NO_CONVERGENCE = 1,
+    SUSLOV_STEP_SINGULAR = 2,
+    SUSLOV_STEP_DIVERGED = 3
+};
 
 typedef struct {
     int iterations;   /* Newton iterations (0 for explicit steps) */
@@ -89,6 +94,7 @@ int suslov_step_full(const suslov_stepper_type *st, const suslov_model *m, doubl
 /* Explicit midpoint (second order) prediction, the starting point of the Newton solves. */
 void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2]);
 /* The result hook of a step whose unknowns are x = w^{k+1} itself. */
-void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x, double w_next[2]);
+void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x,
+                        double w_next[2]);
 
 #endif
