@@ -125,7 +125,7 @@ static void draw(cairo_t *cr, void *vctx)
     }
 }
 
-/* (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point; the largest gap
+/* Panels (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point; the largest gap
  * between the period map and the Euler step in *gap. Returns 0, or 3 when a solve fails. */
 static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex, double *gap)
 {
@@ -170,7 +170,7 @@ static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex
 
 static const double TK[] = {0.0, 3.0, 7.0};
 
-/* (c): sizes along one period from w(0), w(3), w(7), every method */
+/* Panel (c): sizes along one period from w(0), w(3), w(7), every method */
 static void sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
 {
     for (int j = 0; j < NE; j++)
@@ -194,7 +194,7 @@ static void sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
     }
 }
 
-/* (d): the attitude part for the midpoint DSP */
+/* Panel (d): the attitude part for the midpoint DSP */
 static void attitude_sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
 {
     for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
