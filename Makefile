@@ -174,7 +174,7 @@ WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
 WEB_IN    := $(wildcard src/*.c src/*.h tests/*.c tests/*.sh) paper/equations.txt $(wildcard paper/labels.tsv) \
-             $(BUILD)/claims.tsv $(WEB)/inputs.list \
+             $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(WEB)/inputs.list \
              $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) tools/web/package-lock.json
 .PHONY: web web-deps check-web FORCE
 web: $(WEB)/index.html
