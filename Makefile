@@ -114,13 +114,14 @@ $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 # program depend on exactly those (a new reference can only come from a changed object already
 # linked). The archives are order-only, so a change to an object the program does not link
 # relinks nothing and redraws nothing. If the trace names no member (another linker), depend
-# on the archives.
+# on the archives. Each member also gets an empty rule, so that a deleted source's object no longer
+# stops the build (make then finds its recipe, if any, in the pattern rule).
 DRAW_PROGS := $(BUILD)/animation $(BUILD)/bench $(FIG_BIN)
 $(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/prog/%.o | $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(PKG_LIBS) -lm -o $@ -Wl,--trace,--trace >$@.trace
 	@objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
 	    -e 's|^.*libsus_\([a-z]*\)\.a(\(.*\.o\))$$|$(BUILD)/obj/\1/\2|p' $@.trace | sort -u | tr '\n' ' '); \
-	    echo "$@: $${objs:-$(LIBS_LINK)}" >$@.link.d; rm -f $@.trace
+	    { echo "$@: $${objs:-$(LIBS_LINK)}"; for o in $$objs; do echo "$$o:"; done; } >$@.link.d; rm -f $@.trace
 
 $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
@@ -162,7 +163,7 @@ check: all $(BUILD)/claims.out
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
 # summary.tex, and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again.
-LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
+LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv >$@.tmp 2>&1; \
 	    if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
@@ -231,7 +232,7 @@ WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
 WEB_IN    := $(wildcard src/*/*.c src/*/*.h tests/*/*.c tests/*/*.h tests/*/*.sh tests/*.sh) paper/equations.txt $(wildcard paper/labels.tsv) \
-             $(BUILD)/claims.tsv $(WEB)/inputs.list \
+             $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(WEB)/inputs.list \
              $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) tools/web/package-lock.json
 .PHONY: web web-deps check-web FORCE
 web: $(WEB)/index.html
@@ -274,4 +275,7 @@ distclean: clean
 	    done; \
 	fi
 
--include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/tobj/*/*.d $(BUILD)/*.link.d)
+# Only the dependency files of sources that still exist: a deleted source's old .d would name it
+# as a prerequisite that no rule can make.
+-include $(wildcard $(patsubst src/%,$(BUILD)/obj/%.d,$(basename $(wildcard src/*/*.c src/*/*.cpp))) \
+    $(patsubst tests/%.c,$(BUILD)/tobj/%.d,$(wildcard tests/*/*.c)) $(BUILD)/obj/prog/bench_boost.d $(BUILD)/*.link.d)

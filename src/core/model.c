@@ -17,7 +17,7 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
     }
     const double scale = fabs(I[0]) + fabs(I[1]) + fabs(I[3]) + fabs(I[4]);
     /* I_m must be symmetric for E to be conserved by (ContDyn); allow only round-off. */
-    if (fabs(I[1] - I[3]) > 4.0 * 2.220446049250313e-16 * scale) {
+    if (fabs(I[1] - I[3]) > 4.0 * SUSLOV_U * scale) {
         snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
         return -1;
     }

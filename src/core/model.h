@@ -4,7 +4,11 @@
 #ifndef SUSLOV_MODEL_H
 #define SUSLOV_MODEL_H
 
+#include <float.h>
 #include <stddef.h>
+
+/* u: the spacing of doubles at 1 (2^-52), the unit every round-off yardstick is counted in. */
+#define SUSLOV_U DBL_EPSILON
 
 typedef struct {
     double I[3][3];  /* the inertia tensor, rows as printed */

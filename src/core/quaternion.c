@@ -1,27 +1,36 @@
 #include "quaternion.h"
 
-#include "mat3.h"
-
 #include <math.h>
 #include <string.h>
 
-void quat_rotation_minus_identity(const double q[4], double D[3][3])
+/* q / |q| */
+static void unit(const double q[4], double u[4])
 {
-    double V[3][3], V2[3][3];
-    const double v[3] = {q[1], q[2], q[3]};
-    so3_hat(v, V);
-    mat3_mul(V2, V, V);
-    const double a = 2.0 / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            D[i][j] = a * (q[0] * V[i][j] + V2[i][j]);
+    const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int i = 0; i < 4; i++)
+        u[i] = q[i] * n;
+}
+
+/* R(s, v) = I + 2 s v^ + 2 v^ v^ for a unit quaternion, written out entry by entry. */
+static void rotation_of_unit(const double u[4], double R[3][3])
+{
+    const double s = u[0], x = u[1], y = u[2], z = u[3];
+    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    R[0][1] = 2.0 * (x * y - s * z);
+    R[0][2] = 2.0 * (x * z + s * y);
+    R[1][0] = 2.0 * (x * y + s * z);
+    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    R[1][2] = 2.0 * (y * z - s * x);
+    R[2][0] = 2.0 * (x * z - s * y);
+    R[2][1] = 2.0 * (y * z + s * x);
+    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
 }
 
 void quat_rotation(const double q[4], double R[3][3])
 {
-    quat_rotation_minus_identity(q, R);
-    for (int i = 0; i < 3; i++)
-        R[i][i] += 1.0;
+    double u[4];
+    unit(q, u);
+    rotation_of_unit(u, R);
 }
 
 void quat_from_rotation(const double R[3][3], double q[4])
@@ -66,22 +75,8 @@ void quat_of_attitude(const suslov_attitude *a, double q[4])
 
 void quat_to_attitude(const double q[4], suslov_attitude *a)
 {
-    const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    const double s = q[0] * n, x = q[1] * n, y = q[2] * n, z = q[3] * n;
-    double (*R)[3] = a->hi;
-    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
-    R[0][1] = 2.0 * (x * y - s * z);
-    R[0][2] = 2.0 * (x * z + s * y);
-    R[1][0] = 2.0 * (x * y + s * z);
-    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
-    R[1][2] = 2.0 * (y * z - s * x);
-    R[2][0] = 2.0 * (x * z - s * y);
-    R[2][1] = 2.0 * (y * z + s * x);
-    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    unit(q, a->q);
+    rotation_of_unit(a->q, a->hi);
     memset(a->lo, 0, sizeof a->lo);
-    a->q[0] = s;
-    a->q[1] = x;
-    a->q[2] = y;
-    a->q[3] = z;
     a->has_q = 1;
 }

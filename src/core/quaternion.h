@@ -27,10 +27,6 @@ static inline void quat_mul(double p[4], const double a[4], const double b[4])
  * under the square root, so no cancellation), sign fixed by q0 >= 0. */
 void quat_from_rotation(const double R[3][3], double q[4]);
 
-/* R(q) - I for q not necessarily of unit length: R(q/|q|) - I = 2 (s v^ + v^ v^) / |q|^2.
- * Orthogonal up to round-off whatever |q| is, and small for q near (1, 0), so it can be
- * accumulated against I without losing its low-order bits. */
-void quat_rotation_minus_identity(const double q[4], double D[3][3]);
 /* R(q/|q|). */
 void quat_rotation(const double q[4], double R[3][3]);
 

@@ -22,3 +22,13 @@ void suslov_predict(const suslov_model *m, double eps, const double w[2], double
     x[0] = w[0] + eps * f[0];
     x[1] = w[1] + eps * f[1];
 }
+
+void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x,
+                        double w_next[2])
+{
+    (void)m;
+    (void)eps;
+    (void)w;
+    w_next[0] = x[0];
+    w_next[1] = x[1];
+}

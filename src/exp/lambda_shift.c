@@ -78,78 +78,108 @@ static void quartic_series(const suslov_model *m, const suslov_wseries *y, suslo
     ser_mul(y->c[1], s, q->c[1]);
 }
 
-/* (Discretization), and (taudyn) for the variational step: the series in eps of one step of the
- * named method from w (lambda_shift.h). */
-int suslov_series_step(const suslov_model *m, const char *method, const double w[2], suslov_wseries *s)
+/* (Discretization) with l = I_m f(w^k): explicit Euler. */
+static void euler_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+{
+    suslov_wseries f, y;
+    constant(&y, w);
+    field_series(m, &y, &f);
+    w_plus_eps(w, 1.0, &f, s);
+}
+
+/* (Discretization) with the classical Runge-Kutta increment, stage by stage. */
+static void rk4_series(const suslov_model *m, const double w[2], suslov_wseries *s)
 {
     suslov_wseries f, k1, k2, k3, k4, y;
     constant(&y, w);
-    if (strcmp(method, "euler") == 0) {
-        field_series(m, &y, &f);
-        w_plus_eps(w, 1.0, &f, s);
-    } else if (strcmp(method, "rk4") == 0) {
-        field_series(m, &y, &k1);
-        w_plus_eps(w, 0.5, &k1, &y);
-        field_series(m, &y, &k2);
-        w_plus_eps(w, 0.5, &k2, &y);
-        field_series(m, &y, &k3);
-        w_plus_eps(w, 1.0, &k3, &y);
-        field_series(m, &y, &k4);
+    field_series(m, &y, &k1);
+    w_plus_eps(w, 0.5, &k1, &y);
+    field_series(m, &y, &k2);
+    w_plus_eps(w, 0.5, &k2, &y);
+    field_series(m, &y, &k3);
+    w_plus_eps(w, 1.0, &k3, &y);
+    field_series(m, &y, &k4);
+    for (int i = 0; i < 2; i++)
+        for (int n = 0; n < N; n++)
+            f.c[i][n] = (k1.c[i][n] + 2.0 * k2.c[i][n] + 2.0 * k3.c[i][n] + k4.c[i][n]) / 6.0;
+    w_plus_eps(w, 1.0, &f, s);
+}
+
+/* (Discretization) with the midpoint l1, l2: x = w + eps f((w + x)/2) solved for x by Picard
+ * iteration on the series. */
+static void midpoint_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+{
+    suslov_wseries f;
+    constant(s, w);
+    for (int it = 0; it < N; it++) {
+        suslov_wseries mid;
         for (int i = 0; i < 2; i++)
             for (int n = 0; n < N; n++)
-                f.c[i][n] = (k1.c[i][n] + 2.0 * k2.c[i][n] + 2.0 * k3.c[i][n] + k4.c[i][n]) / 6.0;
+                mid.c[i][n] = 0.5 * (s->c[i][n] + (n == 0 ? w[i] : 0.0));
+        field_series(m, &mid, &f);
         w_plus_eps(w, 1.0, &f, s);
-    } else if (strcmp(method, "midpoint") == 0) {
-        /* x = w + eps f((w + x)/2): the midpoint l1, l2 of (Discretization) solved for x */
-        constant(s, w);
-        for (int it = 0; it < N; it++) {
-            suslov_wseries mid;
-            for (int i = 0; i < 2; i++)
-                for (int n = 0; n < N; n++)
-                    mid.c[i][n] = 0.5 * (s->c[i][n] + (n == 0 ? w[i] : 0.0));
-            field_series(m, &mid, &f);
-            w_plus_eps(w, 1.0, &f, s);
-        }
-    } else if (strcmp(method, "variational") == 0) {
-        /* (taudyn): I_m (x - w) + eps/2 T(x, w) + eps^2/4 (q(x) - q(w)) = 0 with
-         * T = (x2 c(x) + w2 c(w), -x1 c(x) - w1 c(w)), solved as x = w - I_m^{-1}(...) */
-        const double (*I)[3] = m->I;
-        const double cw = suslov_c(m, w);
-        double qw[2];
-        const double sw = w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
-        qw[0] = w[0] * sw;
-        qw[1] = w[1] * sw;
-        constant(s, w);
-        for (int it = 0; it < N; it++) {
-            suslov_wseries q, r;
-            ser c, t0, t1;
-            for (int n = 0; n < N; n++)
-                c[n] = m->b[0] * s->c[0][n] + m->b[1] * s->c[1][n];
-            ser_mul(s->c[1], c, t0);
-            ser_mul(s->c[0], c, t1);
-            quartic_series(m, s, &q);
-            /* r = eps/2 T + eps^2/4 (q(x) - q(w)) */
-            memset(&r, 0, sizeof r);
-            for (int n = 0; n + 1 < N; n++) {
-                r.c[0][n + 1] += 0.5 * (t0[n] + (n == 0 ? w[1] * cw : 0.0));
-                r.c[1][n + 1] += 0.5 * (-t1[n] - (n == 0 ? w[0] * cw : 0.0));
-            }
-            for (int n = 0; n + 2 < N; n++) {
-                r.c[0][n + 2] += 0.25 * (q.c[0][n] - (n == 0 ? qw[0] : 0.0));
-                r.c[1][n + 2] += 0.25 * (q.c[1][n] - (n == 0 ? qw[1] : 0.0));
-            }
-            const double det = m->det_m;
-            for (int n = 0; n < N; n++) {
-                const double d0 = (I[1][1] * r.c[0][n] - I[0][1] * r.c[1][n]) / det;
-                const double d1 = (-I[1][0] * r.c[0][n] + I[0][0] * r.c[1][n]) / det;
-                s->c[0][n] = (n == 0 ? w[0] : 0.0) - d0;
-                s->c[1][n] = (n == 0 ? w[1] : 0.0) - d1;
-            }
-        }
-    } else {
-        return -1;
     }
-    return 0;
+}
+
+static void variational_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+{
+    /* (taudyn): I_m (x - w) + eps/2 T(x, w) + eps^2/4 (q(x) - q(w)) = 0 with
+     * T = (x2 c(x) + w2 c(w), -x1 c(x) - w1 c(w)), solved as x = w - I_m^{-1}(...) */
+    const double (*I)[3] = m->I;
+    const double cw = suslov_c(m, w);
+    double qw[2];
+    const double sw = w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
+    qw[0] = w[0] * sw;
+    qw[1] = w[1] * sw;
+    constant(s, w);
+    for (int it = 0; it < N; it++) {
+        suslov_wseries q, r;
+        ser c, t0, t1;
+        for (int n = 0; n < N; n++)
+            c[n] = m->b[0] * s->c[0][n] + m->b[1] * s->c[1][n];
+        ser_mul(s->c[1], c, t0);
+        ser_mul(s->c[0], c, t1);
+        quartic_series(m, s, &q);
+        /* r = eps/2 T + eps^2/4 (q(x) - q(w)) */
+        memset(&r, 0, sizeof r);
+        for (int n = 0; n + 1 < N; n++) {
+            r.c[0][n + 1] += 0.5 * (t0[n] + (n == 0 ? w[1] * cw : 0.0));
+            r.c[1][n + 1] += 0.5 * (-t1[n] - (n == 0 ? w[0] * cw : 0.0));
+        }
+        for (int n = 0; n + 2 < N; n++) {
+            r.c[0][n + 2] += 0.25 * (q.c[0][n] - (n == 0 ? qw[0] : 0.0));
+            r.c[1][n + 2] += 0.25 * (q.c[1][n] - (n == 0 ? qw[1] : 0.0));
+        }
+        const double det = m->det_m;
+        for (int n = 0; n < N; n++) {
+            const double d0 = (I[1][1] * r.c[0][n] - I[0][1] * r.c[1][n]) / det;
+            const double d1 = (-I[1][0] * r.c[0][n] + I[0][0] * r.c[1][n]) / det;
+            s->c[0][n] = (n == 0 ? w[0] : 0.0) - d0;
+            s->c[1][n] = (n == 0 ? w[1] : 0.0) - d1;
+        }
+    }
+}
+
+/* The steps whose series is derived here, by type. */
+static const struct {
+    const suslov_stepper_type *type;
+    void (*series)(const suslov_model *m, const double w[2], suslov_wseries *s);
+} SERIES[] = {{&suslov_euler_type, euler_series},
+              {&suslov_rk4_type, rk4_series},
+              {&suslov_midpoint_type, midpoint_series},
+              {&suslov_variational_type, variational_series}};
+
+/* (Discretization), and (taudyn) for the variational step: the series in eps of one step of the
+ * method from w (lambda_shift.h). */
+int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2],
+                       suslov_wseries *s)
+{
+    for (size_t i = 0; i < sizeof SERIES / sizeof SERIES[0]; i++)
+        if (SERIES[i].type == st) {
+            SERIES[i].series(m, w, s);
+            return 0;
+        }
+    return -1;
 }
 
 void suslov_series_eval(const suslov_wseries *s, double eps, double out[2])
@@ -175,12 +205,12 @@ void suslov_lagmult_grad(const suslov_model *m, const double w[2], double g[2])
 }
 
 /* (RemarkLambda): l_lambda = -grad lambda(w^{k+1}) . sum_{j=p+1}^{p+nterms} e_j(w^k) eps^j. */
-int suslov_lambda_shift(const suslov_model *m, const char *method, int p, int nterms, double eps, const double w[2],
-                        const double x[2], double *l_lambda)
+int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps,
+                        const double w[2], const double x[2], double *l_lambda)
 {
     suslov_wseries a, y;
     double g[2], d[2] = {0.0, 0.0};
-    if (suslov_series_step(m, method, w, &a) != 0)
+    if (suslov_series_step(m, st, w, &a) != 0)
         return -1;
     suslov_series_flow(m, w, &y);
     for (int j = p + 1; j <= p + nterms && j < N; j++)

@@ -13,6 +13,7 @@
 #define SUSLOV_LAMBDA_SHIFT_H
 
 #include "model.h"
+#include "stepper.h"
 
 #define SUSLOV_SERIES_N 12  /* coefficients of eps^0 .. eps^11 */
 
@@ -22,16 +23,17 @@ typedef struct {
 
 /* Taylor coefficients in eps of F(eps, w). */
 void suslov_series_flow(const suslov_model *m, const double w[2], suslov_wseries *s);
-/* Taylor coefficients in eps of the step of the named method (euler, midpoint, rk4,
- * variational). Returns 0, or -1 for another name. */
-int suslov_series_step(const suslov_model *m, const char *method, const double w[2], suslov_wseries *s);
+/* Taylor coefficients in eps of one step of st (euler, midpoint, rk4, variational: the steps whose
+ * series is derived). Returns 0, or -1 for another step. */
+int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2],
+                       suslov_wseries *s);
 /* sum_j s_j eps^j */
 void suslov_series_eval(const suslov_wseries *s, double eps, double out[2]);
 /* grad lambda(w) of (LagMult) (a quadratic form: central differences are exact up to round-off). */
 void suslov_lagmult_grad(const suslov_model *m, const double w[2], double g[2]);
 /* l_lambda of RemarkLambda from the local error coefficients e_{p+1} .. e_{p+nterms} at w = w^k,
  * the gradient at x = w^{k+1}. Returns 0, or -1 for a method without a series. */
-int suslov_lambda_shift(const suslov_model *m, const char *method, int p, int nterms, double eps, const double w[2],
-                        const double x[2], double *l_lambda);
+int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps,
+                        const double w[2], const double x[2], double *l_lambda);
 
 #endif

@@ -3,6 +3,8 @@
 #ifndef SUSLOV_ORDERFIT_H
 #define SUSLOV_ORDERFIT_H
 
+#include "model.h"
+
 /* The fit window used by the claims ledger and the convergence figure alike.
  * eps <= 2^-2 keeps k eps <= 0.036 (k = 0.145 is the rate of the paper's motion), so the next
  * term of the error expansion bends the log-log line by a few percent at most. Points below a
@@ -10,7 +12,7 @@
  * |lambda| <= 0.04, entries of R <= 1) are left out, so that round-off moves no fitted point by
  * more than 0.1%. */
 #define SUSLOV_FIT_EPS_MAX 0.25
-#define SUSLOV_FIT_FLOOR_REL (1000.0 * 2.220446049250313e-16)
+#define SUSLOV_FIT_FLOOR_REL (1000.0 * SUSLOV_U)
 #define SUSLOV_SIZE_W 0.8
 #define SUSLOV_SIZE_LAMBDA 0.04
 #define SUSLOV_SIZE_R 1.0

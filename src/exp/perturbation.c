@@ -108,7 +108,7 @@ int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double 
         return SUSLOV_PERTURB_OK;
     }
     flow(P->m, -tau, x, x0);  /* exact when the perturbation is 0 */
-    const double scale = fabs(x[0]) + fabs(x[1]), tol = NEWTON_TOL_U * 2.220446049250313e-16 * scale;
+    const double scale = fabs(x[0]) + fabs(x[1]), tol = NEWTON_TOL_U * SUSLOV_U * scale;
     int it, s;
     double res = INFINITY;
     for (it = 0; it < NEWTON_MAXIT; it++) {

@@ -36,7 +36,7 @@
  * over the stencil step 0.1 (1 - 2 FLAT) eps / 32 = 0.0025 eps of suslov_perturb_sup_so3 with 32
  * samples; 100 ATT_TOL / (0.0025 eps) keeps that noise below 1% of a fitted point. */
 #define SUSLOV_PERTURB_ATT_TOL 1e-14
-#define SUSLOV_PERTURB_FLOOR_G (1000.0 * DBL_EPSILON * SUSLOV_SIZE_W * 3.0)
+#define SUSLOV_PERTURB_FLOOR_G (1000.0 * SUSLOV_U * SUSLOV_SIZE_W * 3.0)
 #define SUSLOV_PERTURB_FLOOR_ATT (100.0 * SUSLOV_PERTURB_ATT_TOL / 0.0025)
 
 enum { SUSLOV_PERTURB_OK = 0, SUSLOV_PERTURB_STEP_FAILED = 1, SUSLOV_PERTURB_NEWTON_FAILED = 2,

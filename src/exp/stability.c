@@ -1,34 +1,42 @@
 #include "stability.h"
 
-#include "newton2.h"
+#include "newton.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
 #include <math.h>
 
-const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure", "regularity lost"};
+const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure",
+                                             "regularity lost"};
 
-/* Continuation of the implicit step in eps from 0 (root x = w) to eps: the physical branch.
- * Returns 0 with the root in x, or -1 when a continuation step fails (a fold). */
-static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2], double x[2])
+/* Continuation of the implicit step in eps from 0 (where the root is the trivial one) to eps: the
+ * physical branch. Returns 0 with w^{k+1} of that root in x, or -1 when a continuation step
+ * fails or the Jacobian's determinant changes sign (a fold). */
+static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2],
+                         double x[2])
 {
-    double prev[2] = {w[0], w[1]}, cur[2] = {w[0], w[1]};
+    const int n = st->unknowns;
+    double prev[SUSLOV_MAX_UNKNOWNS], cur[SUSLOV_MAX_UNKNOWNS], guess[SUSLOV_MAX_UNKNOWNS];
+    st->guess(m, 0.0, w, cur); /* the root at eps = 0 */
+    for (int i = 0; i < n; i++)
+        prev[i] = cur[i];
     for (int j = 1; j <= STAB_CONTINUATION_STEPS; j++) {
         const double e = eps * j / STAB_CONTINUATION_STEPS;
-        double guess[2] = {2.0 * cur[0] - prev[0], 2.0 * cur[1] - prev[1]}; /* linear extrapolation */
         if (j == 1)
-            suslov_predict(m, e, w, guess);
+            st->guess(m, e, w, guess);
+        else
+            for (int i = 0; i < n; i++) /* linear extrapolation */
+                guess[i] = 2.0 * cur[i] - prev[i];
         suslov_step_stats s;
-        if (newton2_solve(st->residual, m, e, w, guess, &s) != SUSLOV_STEP_OK || !(s.det > 0.0))
+        if (suslov_newton_solve(st->residual, n, m, e, w, guess, &s) != SUSLOV_STEP_OK || !(s.det > 0.0))
             return -1;
-        prev[0] = cur[0];
-        prev[1] = cur[1];
-        cur[0] = guess[0];
-        cur[1] = guess[1];
+        for (int i = 0; i < n; i++) {
+            prev[i] = cur[i];
+            cur[i] = guess[i];
+        }
     }
-    x[0] = cur[0];
-    x[1] = cur[1];
+    st->result(m, eps, w, cur, x);
     return 0;
 }
 
@@ -45,7 +53,7 @@ void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st,
         suslov_step_stats s;
         const int status = st->apply(m, eps, w, x, &lam, &s);
         res->step = k;
-        if (status == SUSLOV_STEP_SINGULAR || (st->residual && status == SUSLOV_STEP_OK && !(s.det > 0.0))) {
+        if (status == SUSLOV_STEP_SINGULAR || (st->unknowns && status == SUSLOV_STEP_OK && !(s.det > 0.0))) {
             res->cls = STAB_REGULARITY;
             return;
         }
@@ -57,7 +65,7 @@ void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st,
             res->cls = STAB_BLOWUP;
             return;
         }
-        if (check_branch && st->residual) {
+        if (check_branch && st->unknowns) {
             double xc[2];
             if (continue_root(m, st, eps, w, xc) != 0) {
                 res->cls = STAB_REGULARITY;
@@ -131,8 +139,8 @@ void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *
             suslov_exact ex;
             suslov_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + STAB_ANGLE0, w0);
             suslov_exact_init(&ex, paper->model, w0);
-            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]), hs[i] >= STAB_BRANCH_H,
-                                 &results[i * nangle + a]);
+            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]),
+                                 hs[i] >= STAB_BRANCH_H, &results[i * nangle + a]);
         }
 }
 
@@ -145,11 +153,11 @@ static double excess(double h, void *params)
 
 double suslov_linear_limit(const suslov_method *me, double h_max)
 {
-    if (!me->stability)
+    if (!me->type->stability)
         return NAN;
     /* Scan for the first sign change of |R(-h)| - 1 (a fine geometric grid: a stability
      * interval is never narrower than a grid cell, 1% of h), then bracket it with Brent. */
-    double (*R)(double) = me->stability;
+    double (*R)(double) = me->type->stability;
     gsl_function F = {excess, &R};
     double lo = 1e-3;
     if (excess(lo, &R) > 0.0)
@@ -163,8 +171,8 @@ double suslov_linear_limit(const suslov_method *me, double h_max)
             for (int it = 0; it < 100; it++) {
                 gsl_root_fsolver_iterate(s);
                 root = gsl_root_fsolver_root(s);
-                if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-14) ==
-                    GSL_SUCCESS)
+                const double lo_s = gsl_root_fsolver_x_lower(s), hi_s = gsl_root_fsolver_x_upper(s);
+                if (gsl_root_test_interval(lo_s, hi_s, 0.0, 1e-14) == GSL_SUCCESS)
                     break;
             }
         if (s)

@@ -1,45 +1,35 @@
 #include "registry.h"
 
-#include "composition.h"
-#include "stability_fn.h"
-#include "taylor.h"
-
 #include <stdio.h>
 #include <string.h>
 
-static const suslov_method METHODS[] = {
-    {&suslov_euler_type, "paper DSP", 0, suslov_stab_euler, "Discretization", SUSLOV_RECON_CAYLEY,
-     "(Discretization) with l = I_m f(w^k): explicit Euler"},
-    {&suslov_midpoint_type, "paper DSP", 1, suslov_stab_midpoint, "Discretization", SUSLOV_RECON_CAYLEY,
-     "(Discretization) with the midpoint l1, l2 (Figures 1-2)"},
-    {&suslov_rk4_type, "paper DSP", 0, suslov_stab_rk4, "Discretization", SUSLOV_RECON_CAYLEY,
-     "(Discretization) with the classical Runge-Kutta increment"},
-    {&suslov_variational_type, "variational", 1, NULL, "PropoFinal", SUSLOV_RECON_CAYLEY,
-     "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}"},
-    /* Extensions (issue 11): compositions of the midpoint DSP with a symmetric reconstruction,
-     * and Taylor-series methods with a quaternion attitude (its own, whatever --reconstruct).
-     * The compositions list no stability function: the composed linear map prod (1 + g_i z/2) /
-     * (1 - g_i z/2) has a pole at z = 2/g_i for each negative weight (h = 3.0 for comp4-s5), where
-     * a backward substep's linear step equation is singular; measured, a start near the
-     * attracting rotation still returns at h ~ 300-700, and from the energy ellipse the Newton
-     * solves fail from h ~ 10-40 (figures/stability): the linear function predicts neither. */
-    {&suslov_comp4_s5_type, "composition", 1, NULL, NULL, SUSLOV_RECON_EXP_MID,
-     "midpoint DSP composed, Suzuki s=5, order 4"},
-    {&suslov_comp6_kl_type, "composition", 1, NULL, NULL, SUSLOV_RECON_EXP_MID,
-     "midpoint DSP composed, Kahan-Li s=9, order 6"},
-    {&suslov_comp8_kl_type, "composition", 1, NULL, NULL, SUSLOV_RECON_EXP_MID,
-     "midpoint DSP composed, Kahan-Li s=17, order 8"},
-    {&suslov_comp10_ss_type, "composition", 1, NULL, NULL, SUSLOV_RECON_EXP_MID,
-     "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10"},
-    {&suslov_taylor8_type, "taylor", 0, suslov_stab_taylor8, NULL, SUSLOV_RECON_EXP_MID,
-     "Taylor series of order 8, quaternion attitude series (ignores --reconstruct), E restored"},
-    {&suslov_taylor10_type, "taylor", 0, suslov_stab_taylor10, NULL, SUSLOV_RECON_EXP_MID,
-     "Taylor series of order 10, quaternion attitude series (ignores --reconstruct), E restored"},
-    {&suslov_taylor12_type, "taylor", 0, suslov_stab_taylor12, NULL, SUSLOV_RECON_EXP_MID,
-     "Taylor series of order 12, quaternion attitude series (ignores --reconstruct), E restored"},
-    {&suslov_taylor16_type, "taylor", 0, suslov_stab_taylor16, NULL, SUSLOV_RECON_EXP_MID,
-     "Taylor series of order 16, quaternion attitude series (ignores --reconstruct), E restored"},
-};
+/* One line per method: its stepper type (suslov_ID_type, defined in its stepper file), a display
+ * family, the \label of the statement it tests (NULL for an extension), its default
+ * reconstruction, and one line for --help. Everything else a consumer needs is in the type. */
+#define SUSLOV_METHODS(M) \
+    M(euler, "paper DSP", "Discretization", CAYLEY, "(Discretization) with l = I_m f(w^k): explicit Euler") \
+    M(midpoint, "paper DSP", "Discretization", CAYLEY, \
+      "(Discretization) with the midpoint l1, l2 (Figures 1-2)") \
+    M(rk4, "paper DSP", "Discretization", CAYLEY, \
+      "(Discretization) with the classical Runge-Kutta increment") \
+    M(variational, "variational", "PropoFinal", CAYLEY, "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}") \
+    M(comp4_s5, "composition", NULL, EXP_MID, "midpoint DSP composed, Suzuki s=5, order 4") \
+    M(comp6_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=9, order 6") \
+    M(comp8_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=17, order 8") \
+    M(comp10_ss, "composition", NULL, EXP_MID, "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10") \
+    M(taylor8, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(8)) \
+    M(taylor10, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(10)) \
+    M(taylor12, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(12)) \
+    M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16)) \
+    M(gauss4, "collocation", NULL, EXP_MID, "2-stage Gauss-Legendre collocation, order 4, conserves E")
+
+#define TAYLOR_ABOUT(P) \
+    "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
+
+#define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const suslov_stepper_type suslov_##ID##_type;
+SUSLOV_METHODS(DECLARE)
+#define ENTRY(ID, FAMILY, REF, RECON, ABOUT) {&suslov_##ID##_type, FAMILY, REF, SUSLOV_RECON_##RECON, ABOUT},
+static const suslov_method METHODS[] = {SUSLOV_METHODS(ENTRY)};
 #define NMETHODS ((int)(sizeof METHODS / sizeof METHODS[0]))
 
 int suslov_method_count(void) { return NMETHODS; }
@@ -69,4 +59,21 @@ const char *suslov_method_names(char *buf, unsigned long len, const char *sep)
     for (int i = 0; i < NMETHODS && used < len; i++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? sep : "", METHODS[i].type->name);
     return buf;
+}
+
+static const char *const ATTITUDE_NAMES[] = {"none", "matrix", "quaternion"};
+
+int suslov_methods_write_tsv(FILE *fp)
+{
+    fprintf(fp, "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
+                "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
+    for (int i = 0; i < NMETHODS; i++) {
+        const suslov_method *me = &METHODS[i];
+        const suslov_stepper_type *t = me->type;
+        fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
+                t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
+                ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL, SUSLOV_RECON_NAMES[me->recon],
+                me->paper_ref ? me->paper_ref : "-", t->source, me->about);
+    }
+    return ferror(fp) ? -1 : 0;
 }

@@ -1,22 +1,22 @@
 /* The one list of methods. Every consumer (the suslov command, the convergence sweep and its
  * figure, the stability map, the bench, the claims ledger) iterates over it, so adding a method
- * is one stepper file plus one line in src/methods/registry.c. What the paper or theory says a method's
- * orders are is NOT here: the ledger keeps that in its own table (tests/ledger/expected_orders.c), so
- * that no expected value comes from the code under test. */
+ * is one stepper file plus one line in src/methods/registry.c (its SUSLOV_METHODS list). What the paper
+ * or theory says a method's orders are is NOT here: the ledger keeps that in its own table
+ * (tests/ledger/expected_orders.c), so that no expected value comes from the code under test. */
 #ifndef SUSLOV_REGISTRY_H
 #define SUSLOV_REGISTRY_H
 
 #include "reconstruct.h"
 #include "stepper.h"
 
+#include <stdio.h>
+
+/* A registered method: its stepper type (which says what the method is and does: orders, implicit
+ * equation, stability function, energy, attitude, substeps, source file) and what the registry
+ * adds. family is a display label only: no consumer decides anything from it. */
 typedef struct {
     const suslov_stepper_type *type;
     const char *family;             /* "paper DSP", "variational", "composition", ... */
-    int implicit;                   /* 1 when a step solves an equation */
-    /* The linear stability function R(z) of the w-step for real z = eps * eigenvalue (the
-     * transverse eigenvalue at the attracting rotation is real, -k); NULL when the step has
-     * none (the variational step is not a linear one-step map of f). */
-    double (*stability)(double z);
     const char *paper_ref;          /* \label of the statement it tests; NULL for an extension */
     suslov_recon recon;             /* its default reconstruction */
     const char *about;              /* one line for --help */
@@ -29,5 +29,9 @@ const suslov_method *suslov_method_by_name(const char *name);
 int suslov_method_index(const char *name);
 /* "euler|midpoint|..." into buf: the names for usage lines and error messages. */
 const char *suslov_method_names(char *buf, unsigned long len, const char *sep);
+/* The registry as a table (build/methods.tsv): a header row, then one row per method with
+ * name family order lambda_order implicit unknowns conserves_energy attitude follows_recon substeps
+ * stability recon paper_ref source about. Returns 0, or -1 on a write error. */
+int suslov_methods_write_tsv(FILE *fp);
 
 #endif

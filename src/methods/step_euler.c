@@ -1,4 +1,5 @@
 /* Explicit Euler as a general DSP (Discretization): l = I_m f(w^k), lambda_{k+1} = lambda(w^{k+1}). */
+#include "stability_fn.h"
 #include "stepper.h"
 
 /* (Discretization) with l = I_m f(w^k): explicit Euler. */
@@ -16,6 +17,6 @@ static int euler_apply(const suslov_model *m, double eps, const double w[3], dou
 }
 
 const suslov_stepper_type suslov_euler_type = {
-    .name = "euler", .order = 1, .lambda_order = 1,
-    .apply = euler_apply};
+    .name = "euler", .order = 1, .lambda_order = 1, .apply = euler_apply,
+    .stability = suslov_stab_euler, .follows_recon = 1, .substeps = 1, .source = __FILE__};
 const suslov_stepper_type *const suslov_step_euler = &suslov_euler_type;

@@ -4,13 +4,14 @@
  * and lambda_{k+1} = lambda(w^{k+1}) from (LagMult). The implicit equation
  *   G(x) = I_m (x - w^k) - eps (l1, l2) = 0
  * is solved by Newton from an explicit prediction. */
-#include "newton2.h"
+#include "newton.h"
+#include "stability_fn.h"
 
 #include <math.h>
 
 /* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. */
-static void mid_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
-                         double g[2], double J[2][2], double *scale)
+static void mid_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+                         double *g, double *J, double *scale)
 {
     const double (*I)[3] = m->I;
     const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
@@ -20,10 +21,10 @@ static void mid_residual(const suslov_model *m, double eps, const double w[2], c
     g[0] = I[0][0] * d0 + I[0][1] * d1 - eps * l1;
     g[1] = I[1][0] * d0 + I[1][1] * d1 - eps * l2;
     const double *b = m->b;
-    J[0][0] = I[0][0] + 0.5 * eps * mid[1] * b[0];
-    J[0][1] = I[0][1] + 0.5 * eps * (c + mid[1] * b[1]);
-    J[1][0] = I[1][0] - 0.5 * eps * (c + mid[0] * b[0]);
-    J[1][1] = I[1][1] - 0.5 * eps * mid[0] * b[1];
+    J[0] = I[0][0] + 0.5 * eps * mid[1] * b[0];
+    J[1] = I[0][1] + 0.5 * eps * (c + mid[1] * b[1]);
+    J[2] = I[1][0] - 0.5 * eps * (c + mid[0] * b[0]);
+    J[3] = I[1][1] - 0.5 * eps * mid[0] * b[1];
     const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
     *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx
            + eps * (fabs(l1) + fabs(l2));
@@ -32,12 +33,16 @@ static void mid_residual(const suslov_model *m, double eps, const double w[2], c
 static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
                           double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    const int status = suslov_implicit_solve(mid_residual, m, eps, w, w_next, st);
+    const int status = suslov_implicit_solve(&suslov_midpoint_type, m, eps, w, w_next, st);
     *lambda_next = suslov_lagmult(m, w_next);
     return status;
 }
 
+/* The midpoint rule conserves the quadratic invariant E of (ContDyn). */
 const suslov_stepper_type suslov_midpoint_type = {
-    .name = "midpoint", .order = 2, .lambda_order = 2,
-    .apply = midpoint_apply, .residual = mid_residual};
+    .name = "midpoint", .order = 2, .lambda_order = 2, .apply = midpoint_apply,
+    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = suslov_predict,
+    .result = suslov_result_is_x,
+    .stability = suslov_stab_midpoint, .conserves_energy = 1, .follows_recon = 1, .substeps = 1,
+    .source = __FILE__};
 const suslov_stepper_type *const suslov_step_midpoint = &suslov_midpoint_type;

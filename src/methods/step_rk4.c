@@ -1,4 +1,5 @@
 /* Classical Runge-Kutta 4 as a general DSP (Discretization), lambda_{k+1} = lambda(w^{k+1}). */
+#include "stability_fn.h"
 #include "stepper.h"
 
 /* (Discretization) with l = I_m times the RK4 increment: classical Runge-Kutta. */
@@ -26,6 +27,6 @@ static int rk4_apply(const suslov_model *m, double eps, const double w[3], doubl
 }
 
 const suslov_stepper_type suslov_rk4_type = {
-    .name = "rk4", .order = 4, .lambda_order = 4,
-    .apply = rk4_apply};
+    .name = "rk4", .order = 4, .lambda_order = 4, .apply = rk4_apply,
+    .stability = suslov_stab_rk4, .follows_recon = 1, .substeps = 1, .source = __FILE__};
 const suslov_stepper_type *const suslov_step_rk4 = &suslov_rk4_type;

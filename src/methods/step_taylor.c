@@ -214,9 +214,11 @@ double suslov_taylor_stability(int p, double z)
         return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                  \
     }                                                                                                          \
     double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                          \
-    const suslov_stepper_type suslov_taylor##P##_type = {.name = "taylor" #P, .order = P, .lambda_order = P,   \
-                                                         .apply = taylor##P##_apply,                           \
-                                                         .apply_full = taylor##P##_apply_full};
+    const suslov_stepper_type suslov_taylor##P##_type = {                                                     \
+        .name = "taylor" #P, .order = P, .lambda_order = P, .apply = taylor##P##_apply,                         \
+        .apply_full = taylor##P##_apply_full, .stability = suslov_stab_taylor##P, .conserves_energy = 1,       \
+        .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                                 \
+        .apply_order = suslov_taylor_apply_full, .source = __FILE__};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,
  * orders 6 to 20, issue 11 follow-up): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,

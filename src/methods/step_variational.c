@@ -1,6 +1,6 @@
 /* The nonholonomic variational integrator of Section 5.5: (taudyn) for w^{k+1}, solved by
  * Newton from an explicit prediction, and (taualg) for lambda_{k+1}, both as printed. */
-#include "newton2.h"
+#include "newton.h"
 
 #include <math.h>
 
@@ -14,8 +14,8 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
 }
 
 /* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block). */
-static void taudyn_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
-                            double g[2], double J[2][2], double *scale)
+static void taudyn_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+                            double *g, double *J, double *scale)
 {
     const double (*I)[3] = m->I;
     const double *b = m->b;
@@ -34,10 +34,10 @@ static void taudyn_residual(const suslov_model *m, double eps, const double w[2]
     const double s = x[0] * p0 + x[1] * p1;
     const double a0 = p0 + I[0][0] * x[0] + I[1][0] * x[1];
     const double a1 = p1 + I[0][1] * x[0] + I[1][1] * x[1];
-    J[0][0] = I[0][0] + h * x[1] * b[0] + h2 * (s + x[0] * a0);
-    J[0][1] = I[0][1] + h * (cx + x[1] * b[1]) + h2 * x[0] * a1;
-    J[1][0] = I[1][0] - h * (cx + x[0] * b[0]) + h2 * x[1] * a0;
-    J[1][1] = I[1][1] - h * x[0] * b[1] + h2 * (s + x[1] * a1);
+    J[0] = I[0][0] + h * x[1] * b[0] + h2 * (s + x[0] * a0);
+    J[1] = I[0][1] + h * (cx + x[1] * b[1]) + h2 * x[0] * a1;
+    J[2] = I[1][0] - h * (cx + x[0] * b[0]) + h2 * x[1] * a0;
+    J[3] = I[1][1] - h * x[0] * b[1] + h2 * (s + x[1] * a1);
 
     const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
     *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx
@@ -56,12 +56,15 @@ static double taualg(const suslov_model *m, const double x[2], const double w[2]
 static int variational_apply(const suslov_model *m, double eps, const double w[3],
                              double w_next[3], double *lambda_next, suslov_step_stats *st)
 {
-    const int status = suslov_implicit_solve(taudyn_residual, m, eps, w, w_next, st);
+    const int status = suslov_implicit_solve(&suslov_variational_type, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
 
+/* (taudyn) is not a linear one-step map of f: no stability function. */
 const suslov_stepper_type suslov_variational_type = {
-    .name = "variational", .order = 2, .lambda_order = -1,
-    .apply = variational_apply, .residual = taudyn_residual};
+    .name = "variational", .order = 2, .lambda_order = -1, .apply = variational_apply,
+    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = suslov_predict,
+    .result = suslov_result_is_x,
+    .follows_recon = 1, .substeps = 1, .source = __FILE__};
 const suslov_stepper_type *const suslov_step_variational = &suslov_variational_type;

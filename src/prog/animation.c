@@ -167,9 +167,12 @@ static int read_config(const char *path, anim_config *c)
         }
     }
     fclose(fp);
-    if (c->width < 48 || c->width > 4096 || c->height < 27 || c->height > 4096 || c->width % 2 || c->height % 2 ||
+    if (c->width < 48 || c->width > 4096 || c->height < 27 || c->height > 4096 || c->width % 2 ||
+        c->height % 2 ||
         c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) || !(c->eps > 0)) {
-        fprintf(stderr, "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n", path);
+        fprintf(stderr,
+                "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n",
+                path);
         return -1;
     }
     return 0;
@@ -237,7 +240,8 @@ static const char *const LABELS[3] = {"exact", "midpoint, \xce\xb5 = 1", "variat
 
 static void label_frame(uint32_t *px, int W, int H, double time)
 {
-    cairo_surface_t *s = cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+    cairo_surface_t *s =
+        cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
     cairo_t *cr = cairo_create(s);
     const double fs = H / 18.0;
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
@@ -277,7 +281,8 @@ static int write_surface_png(cairo_surface_t *s, const char *path)
 
 static int write_png(const uint32_t *px, int W, int H, const char *path)
 {
-    cairo_surface_t *s = cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+    cairo_surface_t *s =
+        cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
     const int r = write_surface_png(s, path);
     cairo_surface_destroy(s);
     return r;
@@ -285,6 +290,224 @@ static int write_png(const uint32_t *px, int W, int H, const char *path)
 
 /* Times of the filmstrip frames, as fractions of t_end. */
 static const double STRIP[6] = {0.0, 1.0 / 12, 1.0 / 6, 1.0 / 3, 2.0 / 3, 1.0};
+
+/* SIGPIPE ignored (a dead ffmpeg must show as a write error, not kill us with its file left); on
+ * exit or a fatal signal the owned memory is released and an unfinished video removed. */
+static void install_handlers(void)
+{
+    signal(SIGPIPE, SIG_IGN);
+    atexit(release_owned);
+    atexit(stop_video);
+    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        struct sigaction sa = {.sa_handler = on_signal};
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
+}
+
+/* The two integrators through the driver, every step kept (N is small). Returns 0, or 3 when a
+ * step fails. */
+static int run_tracks(const anim_config *cfg, const suslov_model *model, const suslov_exact *ex,
+                      const suslov_stepper_type *const st[2], dsp_track track[2])
+{
+    const long N = (long)ceil(cfg->t_end / cfg->eps - 1e-9);
+    for (int m = 0; m < 2; m++) {
+        track[m].n = N;
+        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
+        const suslov_run_config rc = {model, st[m], SUSLOV_RECON_CAYLEY, cfg->eps, N, 1};
+        suslov_run_report rep = {0};
+        if (!track[m].rows || suslov_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
+            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", st[m]->name, rep.step, rep.t);
+            return 3;
+        }
+    }
+    return 0;
+}
+
+/* The video, through ffmpeg's standard input, when ffmpeg is there; NULL otherwise (said why). */
+static FILE *open_video(const anim_config *cfg, const char *figdir, const char *mp4)
+{
+    FILE *video = NULL;
+    const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
+    if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
+        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
+        video = start_video(cfg->width, cfg->height, cfg->fps, video_tmp);
+        if (!video)
+            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
+    } else if (want_video) {
+        fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
+    }
+    return video;
+}
+
+static void close_video(FILE *video, const char *mp4)
+{
+    if (!video)
+        return;
+    if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
+        video_tmp[0] = '\0';
+        fprintf(stderr, "animation: wrote %s\n", mp4);
+    } else {
+        stop_video();
+        fprintf(stderr, "animation: ffmpeg failed; no video\n");
+    }
+}
+
+/* What the frame loop draws from and writes to. */
+typedef struct {
+    const anim_config *cfg;
+    const suslov_exact *ex;
+    const dsp_track *track;
+    scene sc;
+    uint32_t *px;
+    scene_body body[3];
+    suslov_refatt ra;
+    int strip_next;
+    FILE *video;
+} frames;
+
+/* One frame at `time`: the exact body and the two integrators side by side. */
+static void draw_frame(frames *fr, double time)
+{
+    const int W = fr->cfg->width, H = fr->cfg->height;
+    double wex[2];
+    suslov_exact_omega(fr->ex, time, wex);
+    fr->body[0].w[0] = wex[0];
+    fr->body[0].w[1] = wex[1];
+    suslov_refatt_advance(&fr->ra, time, fr->body[0].R);
+    for (int m = 0; m < 2; m++)
+        dsp_state(&fr->track[m], fr->cfg->eps, time, fr->body[1 + m].R, fr->body[1 + m].w);
+    glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
+    glViewport(0, 0, W, H);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (int b = 0; b < 3; b++) {
+        scene_body_push_trail(&fr->body[b]);
+        scene_draw(&fr->sc, &fr->body[b], b * (W / 3), 0, W / 3, H, 0);
+    }
+    glFinish();
+    label_frame(fr->px, W, H, time);
+}
+
+/* Every frame: its PNG, the video, and the filmstrip's copies. Returns 0, or 1 on a write error. */
+static int render_frames(frames *fr, int nframes, const char *figdir)
+{
+    const int W = fr->cfg->width, H = fr->cfg->height;
+    const size_t npx = (size_t)W * H;
+    char path[4096];
+    for (int f = 0; f < nframes; f++) {
+        const double time = fr->cfg->t_end * f / (nframes > 1 ? nframes - 1 : 1);
+        draw_frame(fr, time);
+        snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
+        if (write_png(fr->px, W, H, path) != 0)
+            return 1;
+        if (fr->video && fwrite(fr->px, sizeof(uint32_t), npx, fr->video) != npx) {
+            finish_video(fr->video);
+            fr->video = NULL;
+            stop_video();
+            fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
+        }
+        while (owned.strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * fr->cfg->t_end - 1e-9)
+            memcpy(owned.strip + (size_t)(fr->strip_next++) * npx, fr->px, npx * sizeof(uint32_t));
+    }
+    return 0;
+}
+
+/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times, under a title. */
+static int write_filmstrip(const uint32_t *strip, int W, int H, double eps, const char *figdir)
+{
+    const int SW = 2 * W, SH = 3 * H + H / 8;
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    for (int i = 0; i < 6; i++) {
+        unsigned char *data = (unsigned char *)(strip + (size_t)i * W * H);
+        cairo_surface_t *fr = cairo_image_surface_create_for_data(data, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+        cairo_set_source_surface(cr, fr, (i % 2) * W, H / 8 + (i / 2) * H);
+        cairo_paint(cr);
+        cairo_surface_destroy(fr);
+    }
+    cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+    cairo_set_line_width(cr, 2.0);
+    cairo_move_to(cr, W, H / 8);
+    cairo_line_to(cr, W, SH);
+    for (int r = 1; r < 3; r++) {
+        cairo_move_to(cr, 0, H / 8 + r * H);
+        cairo_line_to(cr, SW, H / 8 + r * H);
+    }
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, H / 16.0);
+    cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
+    char title[160], path[4096];
+    snprintf(title, sizeof title,
+             "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 "
+             "cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89",
+             eps);
+    cairo_show_text(cr, title);
+    cairo_destroy(cr);
+    snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
+    const int bad = write_surface_png(s, path);
+    cairo_surface_destroy(s);
+    return bad;
+}
+
+static int write_caption(const anim_config *cfg, const frames *fr, int nframes, const char *figdir)
+{
+    double dist[2];
+    char cap[2048], path[4096];
+    for (int m = 0; m < 2; m++)
+        dist[m] = so3_dist(fr->body[0].R, fr->body[1 + m].R);
+    snprintf(cap, sizeof cap,
+             "Attitude animation. Regenerate: make animation (or make figures); settings in "
+             "data/animation.cfg.\n"
+             "Three copies of the body: the exact motion (R from the reference attitude along the "
+             "closed-form w), the midpoint rule\n"
+             "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
+             "(algo)),\n"
+             "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the "
+             "step's own\n"
+             "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
+             "prints it\n"
+             "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part "
+             "of I;\n"
+             "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading "
+             "trail,\n"
+             "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint "
+             "%.3f,\n"
+             "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
+             "figures/attitude.mp4.\n"
+             "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
+             cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, cfg->width, cfg->height, cfg->fps,
+             STRIP[0] * cfg->t_end, STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end,
+             STRIP[4] * cfg->t_end, STRIP[5] * cfg->t_end);
+    return fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0;
+}
+
+/* The GL context, the scene and the frame directory. Returns 0, or 1 (said why). */
+static int open_scene(frames *fr, const suslov_model *model, const char *figdir)
+{
+    const int W = fr->cfg->width, H = fr->cfg->height;
+    char path[4096];
+    gl_context *gl = owned.gl = gl_context_create(W, H);
+    if (!gl || scene_init(&fr->sc, model, W / 3, H) != 0) {
+        fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
+        return 1;
+    }
+    fr->px = gl_context_pixels(gl);
+    snprintf(path, sizeof path, "%s/attitude", figdir);
+    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "animation: cannot create %s: %s\n", path, strerror(errno));
+        return 1;
+    }
+    double I3[3][3];
+    mat3_identity(I3);
+    suslov_refatt_init(&fr->ra, fr->ex, 0.0, I3);
+    owned.strip = malloc(6 * (size_t)W * H * sizeof(uint32_t));
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -297,7 +520,7 @@ int main(int argc, char **argv)
     if (read_config(argv[1], &cfg) != 0)
         return 2;
     const char *figdir = argv[2], *datadir = argv[3];
-    char err[256], path[4096];
+    char err[256], path[4096], mp4[4096];
     suslov_model model;
     suslov_exact ex;
     if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
@@ -305,171 +528,35 @@ int main(int argc, char **argv)
         return 1;
     }
     suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
-    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
-    signal(SIGPIPE, SIG_IGN);
-    atexit(release_owned);
-    atexit(stop_video);
-    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-    for (int i = 0; i < 3; i++) {
-        struct sigaction sa = {.sa_handler = on_signal};
-        sigemptyset(&sa.sa_mask);
-        sigaction(sigs[i], &sa, NULL);
-    }
-
-    /* the two integrators through the driver, every step kept (N is small) */
-    const long N = (long)ceil(cfg.t_end / cfg.eps - 1e-9);
-    const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
-    static const char *const names[2] = {"midpoint", "variational"};
+    install_handlers();
+    const suslov_stepper_type *const st[2] = {suslov_step_midpoint, suslov_step_variational};
+    const char *names[2] = {st[0]->name, st[1]->name};
     dsp_track track[2];
-    for (int m = 0; m < 2; m++) {
-        track[m].n = N;
-        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
-        const suslov_run_config rc = {&model, st[m], SUSLOV_RECON_CAYLEY, cfg.eps, N, 1};
-        suslov_run_report rep;
-        if (!track[m].rows || suslov_run(&rc, ex.w0, store, &track[m], &rep) != 0) {
-            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", names[m], rep.step, rep.t);
-            return 3;
-        }
-    }
+    const int ran = run_tracks(&cfg, &model, &ex, st, track);
+    if (ran != 0)
+        return ran;
     if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, names, 2) != 0)
         return 1;
-
-    const int W = cfg.width, H = cfg.height, nframes = (int)lround(cfg.fps * cfg.seconds);
-    gl_context *gl = owned.gl = gl_context_create(W, H);
-    scene sc;
-    if (!gl || scene_init(&sc, &model, W / 3, H) != 0) {
-        fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
+    static frames fr;
+    fr = (frames){.cfg = &cfg, .ex = &ex, .track = track};
+    const int nframes = (int)lround(cfg.fps * cfg.seconds);
+    if (open_scene(&fr, &model, figdir) != 0)
         return 1;
-    }
-    uint32_t *px = gl_context_pixels(gl);
-    snprintf(path, sizeof path, "%s/attitude", figdir);
-    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
-        fprintf(stderr, "animation: cannot create %s: %s\n", path, strerror(errno));
-        return 1;
-    }
-    /* the video, through ffmpeg's standard input, when ffmpeg is there */
-    FILE *video = NULL;
-    char mp4[4096];
     snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
-    const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
-    if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
-        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
-        video = start_video(W, H, cfg.fps, video_tmp);
-        if (!video)
-            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
-    } else if (want_video) {
-        fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
-    }
-
-    scene_body body[3] = {{{{0}}, {0}, {{0}}, 0}};
-    suslov_refatt ra;
-    double I3[3][3];
-    mat3_identity(I3);
-    suslov_refatt_init(&ra, &ex, 0.0, I3);
-    uint32_t *strip_frames = owned.strip = malloc(6 * (size_t)W * H * sizeof(uint32_t));
-    int strip_next = 0;
+    fr.video = open_video(&cfg, figdir, mp4);
     const double t0 = suslov_now();
-    for (int f = 0; f < nframes; f++) {
-        const double time = cfg.t_end * f / (nframes > 1 ? nframes - 1 : 1);
-        double wex[2];
-        suslov_exact_omega(&ex, time, wex);
-        body[0].w[0] = wex[0];
-        body[0].w[1] = wex[1];
-        suslov_refatt_advance(&ra, time, body[0].R);
-        for (int m = 0; m < 2; m++)
-            dsp_state(&track[m], cfg.eps, time, body[1 + m].R, body[1 + m].w);
-        glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
-        glViewport(0, 0, W, H);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        for (int b = 0; b < 3; b++) {
-            scene_body_push_trail(&body[b]);
-            scene_draw(&sc, &body[b], b * (W / 3), 0, W / 3, H, 0);
-        }
-        glFinish();
-        label_frame(px, W, H, time);
-        snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
-        if (write_png(px, W, H, path) != 0)
-            return 1;
-        if (video && fwrite(px, sizeof(uint32_t), (size_t)W * H, video) != (size_t)W * H) {
-            finish_video(video);
-            video = NULL;
-            stop_video();
-            fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
-        }
-        while (strip_frames && strip_next < 6 && time >= STRIP[strip_next] * cfg.t_end - 1e-9)
-            memcpy(strip_frames + (size_t)(strip_next++) * W * H, px, (size_t)W * H * sizeof(uint32_t));
-    }
-    const double elapsed = suslov_now() - t0;
-    if (video) {
-        if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
-            video_tmp[0] = '\0';
-            fprintf(stderr, "animation: wrote %s\n", mp4);
-        } else {
-            stop_video();
-            fprintf(stderr, "animation: ffmpeg failed; no video\n");
-        }
-    }
-
-    /* the filmstrip: 2 columns x 3 rows of frames at the STRIP times */
-    if (strip_frames && strip_next == 6) {
-        const int SW = 2 * W, SH = 3 * H + H / 8;
-        cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
-        cairo_t *cr = cairo_create(s);
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        for (int i = 0; i < 6; i++) {
-            cairo_surface_t *fr = cairo_image_surface_create_for_data((unsigned char *)(strip_frames + (size_t)i * W * H),
-                                                                      CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-            cairo_set_source_surface(cr, fr, (i % 2) * W, H / 8 + (i / 2) * H);
-            cairo_paint(cr);
-            cairo_surface_destroy(fr);
-        }
-        cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
-        cairo_set_line_width(cr, 2.0);
-        cairo_move_to(cr, W, H / 8);
-        cairo_line_to(cr, W, SH);
-        for (int r = 1; r < 3; r++) {
-            cairo_move_to(cr, 0, H / 8 + r * H);
-            cairo_line_to(cr, SW, H / 8 + r * H);
-        }
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-        cairo_set_font_size(cr, H / 16.0);
-        cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
-        char title[160];
-        snprintf(title, sizeof title, "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89", cfg.eps);
-        cairo_show_text(cr, title);
-        cairo_destroy(cr);
-        snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
-        const int bad = write_surface_png(s, path);
-        cairo_surface_destroy(s);
-        if (bad)
-            return 1;
-    }
-    free(strip_frames);
-    owned.strip = NULL;
-
-    double dist[2];
-    for (int m = 0; m < 2; m++)
-        dist[m] = so3_dist(body[0].R, body[1 + m].R);
-    char cap[2048];
-    snprintf(cap, sizeof cap,
-             "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
-             "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), the midpoint rule\n"
-             "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm (algo)),\n"
-             "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's own\n"
-             "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` prints it\n"
-             "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of I;\n"
-             "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
-             "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
-             "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, figures/attitude.mp4.\n"
-             "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-             cfg.eps, cfg.t_end, cfg.t_end, dist[0], dist[1], nframes, W, H, cfg.fps, STRIP[0] * cfg.t_end,
-             STRIP[1] * cfg.t_end, STRIP[2] * cfg.t_end, STRIP[3] * cfg.t_end, STRIP[4] * cfg.t_end, STRIP[5] * cfg.t_end);
-    if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+    if (render_frames(&fr, nframes, figdir) != 0)
         return 1;
-    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes, W, H, elapsed,
-           nframes / elapsed);
+    const double elapsed = suslov_now() - t0;
+    close_video(fr.video, mp4);
+    const int strip_done = owned.strip && fr.strip_next == 6;
+    if (strip_done && write_filmstrip(owned.strip, cfg.width, cfg.height, cfg.eps, figdir))
+        return 1;
+    free(owned.strip);
+    owned.strip = NULL;
+    if (write_caption(&cfg, &fr, nframes, figdir) != 0)
+        return 1;
+    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes,
+           cfg.width, cfg.height, elapsed, nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */
 }

@@ -44,7 +44,10 @@
 #define T_END 50.0
 #define T_LONG 1e4
 #define MAX_STEPS 2000000L  /* caps euler's sweep: 2e6 steps of T/N is ~0.1 s a point */
-#define MAXSERIES 48
+/* Series: at most 3 per method (its reconstruction, cayley-mid, w alone) and MAXPEERS peers (4 GSL
+ * steppers and 2 odeint ones, 3 formulations each); sized at start from the registry. */
+#define MAXPEERS 18
+static int MAXSERIES;
 #define MAXPTS 64
 /* The grids: a user of a fixed-step method picks N, a user of an adaptive peer picks tol. The
  * Taylor methods are swept at every N up to FINE_N (their cost per step is large and their error
@@ -194,7 +197,7 @@ typedef struct {
     long steps[MAXPTS];
 } wp_series;
 
-static wp_series S[MAXSERIES];
+static wp_series *S;
 static int nseries;
 
 static wp_series *new_series(void)
@@ -221,13 +224,13 @@ typedef struct {
     double *sec, *smin, *smax; /* where the result goes */
 } wp_point;
 
-static wp_point points[MAXPOINTS];
+static wp_point *points;
 static int npoints;
-static dsp_run dsp_runs[MAXPOINTS];
-static w_run w_runs[MAXPOINTS];
-static gsl_run gsl_runs[MAXPOINTS];
+static dsp_run *dsp_runs;
+static w_run *w_runs;
+static gsl_run *gsl_runs;
 #ifdef SUSLOV_WITH_ODEINT
-static odeint_run odeint_runs[MAXPOINTS];
+static odeint_run *odeint_runs;
 #endif
 
 static void add_point(void (*fn)(void *), void *ctx, wp_series *s, int i)
@@ -258,17 +261,16 @@ static void sweep_ours(const suslov_method *me, suslov_recon recon)
 {
     wp_series *s = new_series();
     snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUSLOV_RECON_NAMES[recon]);
-    if (strcmp(me->family, "taylor") == 0) /* the attitude is its own: no reconstruction */
+    if (!me->type->follows_recon) /* the attitude is its own: no reconstruction */
         snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
     s->ours = 1;
     s->method = me->type->name;
     s->recon = recon;
     const int high = me->type->order > 4;
-    s->preserves = strcmp(me->family, "composition") == 0 || strcmp(me->family, "taylor") == 0
-                || strcmp(me->type->name, "midpoint") == 0;
+    s->preserves = me->type->conserves_energy;
     double Nd = high ? 4.0 : 50.0;
     long prevN = 0;
-    const int fine = strcmp(me->family, "taylor") == 0;
+    const int fine = !me->type->implicit && high; /* cheap steps of high order */
     if (fine)
         Nd = 2.0;
     for (; Nd <= (double)MAX_STEPS && s->n < MAXPTS;
@@ -443,15 +445,15 @@ static int is_ours_preserving(const wp_series *s) { return s->ours && s->preserv
  * error, by increasing time (the staircase drawn as one line). */
 typedef struct {
     int n;
-    double sec[MAXPOINTS], err[MAXPOINTS];
+    double sec[MAXPEERS * MAXPTS], err[MAXPEERS * MAXPTS];
 } envelope;
 
 static envelope env[2];
 
 static void build_envelope(int which, envelope *e)
 {
-    static double sec[MAXPOINTS], err[MAXPOINTS];
-    static size_t idx[MAXPOINTS];
+    static double sec[MAXPEERS * MAXPTS], err[MAXPEERS * MAXPTS];
+    static size_t idx[MAXPEERS * MAXPTS];
     int n = 0;
     for (int i = 0; i < nseries; i++)
         if (!S[i].ours)
@@ -476,7 +478,6 @@ static void build_envelope(int which, envelope *e)
 
 /* ---- per-step cost, for every registered method ---- */
 
-#define MAXMETHODS 32
 typedef struct {
     const suslov_stepper_type *st;
     long N;
@@ -517,7 +518,7 @@ static void exact_fn(void *vctx)
 
 typedef struct {
     int n;
-    double ns_raw[MAXMETHODS], ns_full[MAXMETHODS], newton[MAXMETHODS], ns_gsl_rk4, ns_exact;
+    double *ns_raw, *ns_full, *newton, ns_gsl_rk4, ns_exact; /* one per method */
 } step_costs;
 
 static step_costs cost;
@@ -539,10 +540,10 @@ static double median_ns(cost_cfg *c, long steps)
 
 static void measure_step_costs(void)
 {
-    static raw_run raw[MAXMETHODS];
-    static dsp_run rec[MAXMETHODS];
-    static cost_cfg cfg[2 * MAXMETHODS + 2];
-    const int nm = suslov_method_count() < MAXMETHODS ? suslov_method_count() : MAXMETHODS;
+    const int nm = suslov_method_count();
+    raw_run raw[nm];
+    dsp_run rec[nm];
+    cost_cfg cfg[2 * nm + 2];
     for (int m = 0; m < nm; m++) {
         const suslov_method *me = suslov_method_get(m);
         raw[m] = (raw_run){me->type, COST_STEPS, 0.0};
@@ -584,7 +585,7 @@ typedef struct {
     double orth, energy, w3; /* max over the run of |R^T R - I|, |E - E0|, |w3| */
 } longrun_result;
 
-static longrun_result LR[MAXSERIES];
+static longrun_result *LR;
 static int nlr;
 
 typedef struct {
@@ -799,7 +800,7 @@ static void draw_cost(cairo_t *cr, void *vctx)
     const int nb = cost.n + 2;
     const double W = 90.0 + 46.0 * nb, H = 280;
     plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
-    double v1[MAXMETHODS + 2], v2[MAXMETHODS + 2];
+    double v1[suslov_method_count() + 2], v2[suslov_method_count() + 2];
     for (int m = 0; m < cost.n; m++) {
         v1[m] = cost.ns_raw[m];
         v2[m] = cost.ns_full[m];
@@ -882,6 +883,31 @@ static int write_csv(const char *path)
     return atomic_file_commit(&af, err, sizeof err);
 }
 
+/* The tables sized from the registry, once. */
+static void alloc_tables(void)
+{
+    const int nm = suslov_method_count();
+    MAXSERIES = 3 * nm + MAXPEERS;
+    S = calloc((size_t)MAXSERIES, sizeof *S);
+    LR = calloc((size_t)MAXSERIES, sizeof *LR);
+    points = calloc((size_t)MAXPOINTS, sizeof *points);
+    dsp_runs = calloc((size_t)MAXPOINTS, sizeof *dsp_runs);
+    w_runs = calloc((size_t)MAXPOINTS, sizeof *w_runs);
+    gsl_runs = calloc((size_t)MAXPOINTS, sizeof *gsl_runs);
+#ifdef SUSLOV_WITH_ODEINT
+    odeint_runs = calloc((size_t)MAXPOINTS, sizeof *odeint_runs);
+    if (!odeint_runs)
+        exit(1);
+#endif
+    cost.ns_raw = calloc((size_t)nm, sizeof *cost.ns_raw);
+    cost.ns_full = calloc((size_t)nm, sizeof *cost.ns_full);
+    cost.newton = calloc((size_t)nm, sizeof *cost.newton);
+    if (!S || !LR || !points || !dsp_runs || !w_runs || !gsl_runs || !cost.ns_raw || !cost.ns_full || !cost.newton) {
+        fprintf(stderr, "bench: out of memory\n");
+        exit(1);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -889,6 +915,7 @@ int main(int argc, char **argv)
         return 2;
     }
     gsl_set_error_handler_off();
+    alloc_tables();
     progress_tty = isatty(2);
     char err[256], path[4096];
     if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
@@ -906,10 +933,10 @@ int main(int argc, char **argv)
     for (int m = 0; m < suslov_method_count(); m++) {
         const suslov_method *me = suslov_method_get(m);
         sweep_ours(me, me->recon);
-        if (strcmp(me->family, "taylor") == 0)
+        if (!me->type->follows_recon)
             sweep_ours_w(me);
         /* the symmetric Cayley reconstruction beside the default one, where it differs */
-        if (strcmp(me->family, "taylor") != 0 && me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
+        if (me->type->follows_recon && me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
             sweep_ours(me, SUSLOV_RECON_CAYLEY_MID);
     }
     const gsl_odeiv2_step_type *gsl_types[4] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck, gsl_odeiv2_step_rkf45,
@@ -959,7 +986,7 @@ int main(int argc, char **argv)
     int implicit_pass = 1;
     for (int m = 0; m < cost.n; m++) {
         const suslov_method *me = suslov_method_get(m);
-        if (!me->implicit || strcmp(me->family, "composition") == 0)
+        if (!me->type->unknowns) /* a step with its own implicit equation */
             continue;
         const double r = cost.ns_raw[m] / cost.ns_raw[irk4];
         implicit_pass &= r <= 3;

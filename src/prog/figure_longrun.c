@@ -25,7 +25,6 @@
 #define T_MATCH 50.0
 #define LEVEL 1e-10
 #define NS 500
-#define MAXC 16
 #define FLOOR 1e-17 /* exact zeros are drawn here on the log axes */
 
 typedef struct {
@@ -35,7 +34,7 @@ typedef struct {
     double t[NS + 1], orth[NS + 1], energy[NS + 1], w3max;
 } curve;
 
-static curve C[MAXC];
+static curve *C; /* one per selected method and peer, allocated once */
 static int nc;
 static suslov_model model;
 static suslov_exact ex;
@@ -79,9 +78,9 @@ static void ours(const suslov_method *me)
         N = (long)ceil(N * 1.189207115002721); /* 2^(1/4) */
     curve *c = &C[nc++];
     const double eps = T_MATCH / (double)N;
-    const int taylor = strcmp(me->family, "taylor") == 0; /* its own quaternion, whatever the recon */
-    snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, taylor ? "(quaternion)" : "+ ",
-             taylor ? "" : SUSLOV_RECON_NAMES[me->recon], eps);
+    const int own = !me->type->follows_recon; /* its own attitude, whatever the recon */
+    snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, own ? "(quaternion)" : "+ ",
+             own ? "" : SUSLOV_RECON_NAMES[me->recon], eps);
     c->ours = 1;
     c->param = eps;
     const long steps = lround(T_LONG / eps);
@@ -117,7 +116,8 @@ static void peer(size_t dim)
         if (k > 0 && gsl_odeiv2_driver_apply(d, &t, T_LONG * k / NS, y) != GSL_SUCCESS)
             break;
         suslov_peer_attitude(dim, y, R);
-        const double nq = dim == 6 ? fabs(sqrt(y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5]) - 1.0) : 0.0;
+        const double q2 = y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
+        const double nq = dim == 6 ? fabs(sqrt(q2) - 1.0) : 0.0;
         c->t[k] = t;
         c->orth[k] = fmax(dim == 11 ? so3_orth_defect(R) : nq, FLOOR);
         c->energy[k] = fmax(fabs(suslov_energy(&model, y) - e0), FLOOR);
@@ -129,9 +129,11 @@ static void draw(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     const double W = 760;
-    plot_text(cr, W / 2, 14, "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy (attitude 1e-10 at t = 50)", 11, 0.5,
+    plot_text(cr, W / 2, 14,
+              "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy (attitude 1e-10 at t = 50)",
+              11, 0.5,
               0.5, 1);
-    plot_style st[MAXC];
+    plot_style st[nc > 0 ? nc : 1];
     int k = 0;
     for (int i = 0; i < nc; i++)
         st[i] = C[i].ours ? plot_style_of(PLOT_PALETTE[k++ % PLOT_PALETTE_N], 1.1, 0, PLOT_NONE, 0, C[i].name)
@@ -139,7 +141,10 @@ static void draw(cairo_t *cr, void *vctx)
     for (int p = 0; p < 2; p++) {
         plot_axes ax;
         plot_axes_init(&ax, cr, 60 + p * (W / 2), 40, W / 2 - 85, 250, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
-        plot_frame(&ax, "t", p ? "|E \xe2\x88\x92 E\xe2\x82\x80|" : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  (peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)",
+        const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
+                               : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
+                                 "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
+        plot_frame(&ax, "t", ylabel,
                    p ? "(b)" : "(a)");
         for (int i = 0; i < nc; i++)
             plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
@@ -149,54 +154,78 @@ static void draw(cairo_t *cr, void *vctx)
     plot_legend(&la, st, nc, 0);
 }
 
-int main(int argc, char **argv)
+/* One row per curve and sample. */
+static int write_data(const char *datadir)
 {
-    const int setup = fig_setup_paper(argc, "longrun", &model, &ex);
-    if (setup != 0)
-        return setup;
+    const size_t rows = (size_t)nc * (NS + 1);
+    double *buf = malloc(4 * rows * sizeof *buf);
+    if (!buf)
+        return 1;
+    double *idx = buf, *t = buf + rows, *o = buf + 2 * rows, *e = buf + 3 * rows;
+    size_t n = 0;
+    for (int i = 0; i < nc; i++)
+        for (int k = 0; k <= NS; k++, n++) {
+            idx[n] = i;
+            t[n] = C[i].t[k];
+            o[n] = C[i].orth[k];
+            e[n] = C[i].energy[k];
+        }
+    const double *cols[] = {idx, t, o, e};
     char path[4096];
-    double w50[2];
-    suslov_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
-    for (int i = 0; i < suslov_method_count() && nc < MAXC - 2; i++) {
-        const suslov_method *me = suslov_method_get(i);
-        if (strcmp(me->family, "composition") == 0 || strcmp(me->family, "taylor") == 0)
-            ours(me);
-    }
-    peer(11);
-    peer(6);
-    /* data: one row per curve and sample */
-    {
-        static double t[MAXC * (NS + 1)], o[MAXC * (NS + 1)], e[MAXC * (NS + 1)], idx[MAXC * (NS + 1)];
-        size_t n = 0;
-        for (int i = 0; i < nc; i++)
-            for (int k = 0; k <= NS; k++, n++) {
-                idx[n] = i;
-                t[n] = C[i].t[k];
-                o[n] = C[i].orth[k];
-                e[n] = C[i].energy[k];
-            }
-        const double *cols[] = {idx, t, o, e};
-        if (fig_write_csv(fig_path(path, sizeof path, argv[2], "longrun", "csv"), "curve,t,orth_defect,energy_error", 4, cols, n, 1) != 0)
-            return 1;
-    }
-    char cap[4096];
-    int len = snprintf(cap, sizeof cap,
-                       "Structure over a long run, T = 1e4 (issue 11). Regenerate: make figures (src/prog/figure_longrun.c).\n"
-                       "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches attitude error 1e-10\n"
-                       "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd on (w, q) the\n"
-                       "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn instead); (b) |E - E0|.\n"
-                       "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute it, the peers\n"
+    const int rc = fig_write_csv(fig_path(path, sizeof path, datadir, "longrun", "csv"),
+                                 "curve,t,orth_defect,energy_error", 4, cols, n, 1);
+    free(buf);
+    return rc != 0;
+}
+
+static void caption(char *cap, size_t size)
+{
+    int len = snprintf(cap, size,
+                       "Structure over a long run, T = 1e4 (issue 11). Regenerate: make figures "
+                       "(src/prog/figure_longrun.c).\n"
+                       "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches "
+                       "attitude error 1e-10\n"
+                       "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd "
+                       "on (w, q) the\n"
+                       "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn "
+                       "instead); (b) |E - E0|.\n"
+                       "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute "
+                       "it, the peers\n"
                        "integrate w1, w2 only. Curves (data/longrun.csv, column curve):\n");
-    for (int i = 0; i < nc && len < (int)sizeof cap; i++) {
+    for (int i = 0; i < nc && len < (int)size; i++) {
         double mo = 0.0, me = 0.0;
         for (int k = 0; k <= NS; k++) {
             mo = fmax(mo, C[i].orth[k]);
             me = fmax(me, C[i].energy[k]);
         }
-        len += snprintf(cap + len, sizeof cap - (size_t)len, "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i, C[i].name, mo, me,
-                        C[i].ours ? (C[i].w3max == 0.0 ? ", w3 = 0" : ", w3 NOT 0") : "");
+        len += snprintf(cap + len, size - (size_t)len,
+                        "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i,
+                        C[i].name, mo, me, C[i].ours ? (C[i].w3max == 0.0 ? ", w3 = 0" : ", w3 NOT 0") : "");
     }
-    if (fig_write_figure(argv[1], "longrun", 760, 470, draw, NULL, cap) != 0)
+}
+
+int main(int argc, char **argv)
+{
+    const int setup = fig_setup_paper(argc, "longrun", &model, &ex);
+    if (setup != 0)
+        return setup;
+    double w50[2];
+    suslov_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
+    C = calloc((size_t)suslov_method_count() + 2, sizeof *C);
+    if (!C)
         return 1;
-    return 0;
+    for (int i = 0; i < suslov_method_count(); i++) {
+        const suslov_method *me = suslov_method_get(i);
+        if (me->type->conserves_energy && me->type->order > 2) /* high order, structure-preserving */
+            ours(me);
+    }
+    peer(11);
+    peer(6);
+    if (write_data(argv[2]) != 0)
+        return 1;
+    char cap[8192];
+    caption(cap, sizeof cap);
+    const int rc = fig_write_figure(argv[1], "longrun", 760, 470, draw, NULL, cap) != 0;
+    free(C);
+    return rc;
 }

@@ -21,7 +21,6 @@
 #define NPA (NSTEP_A * NSUB + 1)
 #define NE 12         /* eps = 2 .. 2^-10 */
 #define NE_SO3 10     /* eps = 2 .. 2^-8 (claims_section6.c) */
-#define MAXM 32
 #define TOL 1e-14
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
 #define FLOOR_G SUSLOV_PERTURB_FLOOR_G
@@ -30,9 +29,10 @@
 typedef struct {
     double t[NPA], w[NPA][2], ex[NPA][2];
     double tk[NSTEP_A + 1], wk[NSTEP_A + 1][2];
-    int nm;
-    const char *names[MAXM];
-    double eps[NE], g[MAXM][NE];
+    int nm;               /* every registered method, */
+    const char **names;   /* their names */
+    double (*g)[NE];      /* and their sizes, allocated once */
+    double eps[NE];
     double att[SUSLOV_RECON_COUNT][NE];
 } pert_fig;
 
@@ -52,8 +52,10 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const pert_fig *f = vctx;
     const double W = 600, H = 560;
-    plot_text(cr, W / 2, 14, "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)", 11, 0.5, 0.5, 1);
-    const plot_style sp = plot_style_of(PLOT_BLUE, 1.2, 0, PLOT_NONE, 0, "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
+    plot_text(cr, W / 2, 14, "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)",
+              11, 0.5, 0.5, 1);
+    const plot_style sp =
+        plot_style_of(PLOT_BLUE, 1.2, 0, PLOT_NONE, 0, "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
     const plot_style se = plot_style_of(PLOT_GREY, 1.0, 1, PLOT_NONE, 0, "exact flow from \xcf\x89(0)");
     const plot_style sk = plot_style_of(PLOT_RED, 0, 0, PLOT_CIRCLE, 5.0, "euler steps, \xce\xb5 = 4");
     for (int c = 0; c < 2; c++) {
@@ -86,7 +88,7 @@ static void draw(cairo_t *cr, void *vctx)
         plot_axes ax;
         plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
         plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
-        plot_style leg[MAXM];
+        plot_style leg[f->nm];
         static const int mk[] = {PLOT_SQUARE, PLOT_CIRCLE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS, PLOT_DOT};
         int nl = 0;
         for (int m = 0; m < f->nm; m++) {
@@ -95,7 +97,8 @@ static void draw(cairo_t *cr, void *vctx)
                 drawn += isfinite(f->g[m][j]);
             if (drawn < 2) /* at round-off for every eps: said in the caption */
                 continue;
-            leg[nl] = plot_style_of(colour(m), 1.0, m >= 7, mk[m % 6], 3.5, f->names[m]);
+            /* dashed where the colours come round again */
+            leg[nl] = plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
             plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             nl++;
@@ -122,6 +125,132 @@ static void draw(cairo_t *cr, void *vctx)
     }
 }
 
+/* Panels (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point; the largest gap
+ * between the period map and the Euler step in *gap. Returns 0, or 3 when a solve fails. */
+static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex, double *gap)
+{
+    suslov_perturb P;
+    if (suslov_perturb_init(&P, m, suslov_step_euler, EPS_A) != 0)
+        die("singular inertia", 1);
+    double x[2] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}, seg[NSUB + 1][2];
+    *gap = 0.0;
+    f->tk[0] = 0.0;
+    f->wk[0][0] = x[0];
+    f->wk[0][1] = x[1];
+    for (int k = 0; k < NSTEP_A; k++) {
+        if (suslov_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUSLOV_PERTURB_OK) {
+            fprintf(stderr,
+                    "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n",
+                    k,
+                    EPS_A * k, EPS_A * (k + 1), P.newton_res);
+            return 3;
+        }
+        for (int i = (k ? 1 : 0); i <= NSUB; i++) {
+            const int n = k * NSUB + i;
+            f->t[n] = EPS_A * (k + (double)i / NSUB);
+            f->w[n][0] = seg[i][0];
+            f->w[n][1] = seg[i][1];
+            suslov_exact_omega(ex, f->t[n], f->ex[n]);
+        }
+        double w3[3] = {x[0], x[1], 0.0}, wn[3], lam;
+        suslov_step_stats st;
+        if (P.st->apply(m, EPS_A, w3, wn, &lam, &st) != SUSLOV_STEP_OK) {
+            fprintf(stderr, "figure_perturbation: euler step %d failed at t = %g\n", k, EPS_A * k);
+            return 3;
+        }
+        *gap = fmax(*gap, hypot(wn[0] - seg[NSUB][0], wn[1] - seg[NSUB][1]));
+        x[0] = wn[0];
+        x[1] = wn[1];
+        f->tk[k + 1] = EPS_A * (k + 1);
+        f->wk[k + 1][0] = x[0];
+        f->wk[k + 1][1] = x[1];
+    }
+    return 0;
+}
+
+static const double TK[] = {0.0, 3.0, 7.0};
+
+/* Panel (c): sizes along one period from w(0), w(3), w(7), every method */
+static void sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
+{
+    for (int j = 0; j < NE; j++)
+        f->eps[j] = ldexp(1.0, 1 - j);
+    for (int i = 0; i < f->nm; i++) {
+        f->names[i] = suslov_method_get(i)->type->name;
+        for (int j = 0; j < NE; j++) {
+            suslov_perturb Q;
+            double s = 0.0;
+            if (suslov_perturb_init(&Q, m, suslov_method_get(i)->type, f->eps[j]) != 0)
+                die("singular inertia", 1);
+            for (int t = 0; t < 3; t++) {
+                double x0[2], v;
+                suslov_exact_omega(ex, TK[t], x0);
+                if (suslov_perturb_sup_reduced(&Q, x0, 64, &v) != SUSLOV_PERTURB_OK)
+                    die("a perturbation size failed", 3);
+                s = fmax(s, v);
+            }
+            f->g[i][j] = s > FLOOR_G / f->eps[j] ? s : NAN;
+        }
+    }
+}
+
+/* Panel (d): the attitude part for the midpoint DSP */
+static void attitude_sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
+{
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+        for (int j = 0; j < NE; j++) {
+            f->att[r][j] = NAN;
+            if (j >= NE_SO3)
+                continue;
+            suslov_perturb Q;
+            double s = 0.0;
+            if (suslov_perturb_init(&Q, m, suslov_step_midpoint, f->eps[j]) != 0)
+                die("singular inertia", 1);
+            for (int t = 0; t < 2; t++) {
+                double x0[2], a, g;
+                suslov_exact_omega(ex, TK[t], x0);
+                if (suslov_perturb_sup_so3(&Q, (suslov_recon)r, x0, 32, SUSLOV_PERTURB_ATT_TOL, &a, &g) !=
+                    SUSLOV_PERTURB_OK)
+                    die("an attitude blend failed", 3);
+                s = fmax(s, a);
+            }
+            f->att[r][j] = s > FLOOR_ATT / f->eps[j] ? s : NAN;
+        }
+}
+
+/* data: the trajectory, then the sizes (one column per method and reconstruction) */
+static int write_data(const pert_fig *f, const char *datadir)
+{
+    char path[4096];
+    static double tcol[NPA], c1[NPA], c2[NPA], e1[NPA], e2[NPA];
+    for (int i = 0; i < NPA; i++) {
+        tcol[i] = f->t[i];
+        c1[i] = f->w[i][0];
+        c2[i] = f->w[i][1];
+        e1[i] = f->ex[i][0];
+        e2[i] = f->ex[i][1];
+    }
+    const double *cols[] = {tcol, c1, c2, e1, e2};
+    if (fig_write_csv(fig_path(path, sizeof path, datadir, "perturbation", "csv"),
+                      "t,omega1_perturbed,omega2_perturbed,omega1_exact,omega2_exact", 5, cols, NPA, 1) != 0)
+        return 1;
+    char header[8192];
+    const double *scols[1 + f->nm + SUSLOV_RECON_COUNT];
+    int nc = 0, used = snprintf(header, sizeof header, "eps");
+    scols[nc++] = f->eps;
+    for (int i = 0; i < f->nm; i++) {
+        used += snprintf(header + used, sizeof header - (size_t)used, ",sup_g_%s", f->names[i]);
+        scols[nc++] = f->g[i];
+    }
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        used += snprintf(header + used, sizeof header - (size_t)used, ",attitude_midpoint_%s",
+                         SUSLOV_RECON_NAMES[r]);
+        scols[nc++] = f->att[r];
+    }
+    fig_path(path, sizeof path, datadir, "perturbation_sizes", "csv");
+    return fig_write_csv(path, header, nc, scols, NE, 1) != 0;
+}
+
 int main(int argc, char **argv)
 {
     suslov_model m;
@@ -130,123 +259,39 @@ int main(int argc, char **argv)
     if (setup != 0)
         return setup;
     static pert_fig f;
-    char path[4096];
-
-    /* (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point */
-    suslov_perturb P;
-    if (suslov_perturb_init(&P, &m, suslov_method_by_name("euler")->type, EPS_A) != 0)
-        die("singular inertia", 1);
-    double x[2] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}, seg[NSUB + 1][2], gap = 0.0;
-    f.tk[0] = 0.0;
-    f.wk[0][0] = x[0];
-    f.wk[0][1] = x[1];
-    for (int k = 0; k < NSTEP_A; k++) {
-        if (suslov_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUSLOV_PERTURB_OK) {
-            fprintf(stderr, "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n", k,
-                    EPS_A * k, EPS_A * (k + 1), P.newton_res);
-            return 3;
-        }
-        for (int i = (k ? 1 : 0); i <= NSUB; i++) {
-            const int n = k * NSUB + i;
-            f.t[n] = EPS_A * (k + (double)i / NSUB);
-            f.w[n][0] = seg[i][0];
-            f.w[n][1] = seg[i][1];
-            suslov_exact_omega(&ex, f.t[n], f.ex[n]);
-        }
-        double w3[3] = {x[0], x[1], 0.0}, wn[3], lam;
-        suslov_step_stats st;
-        if (P.st->apply(&m, EPS_A, w3, wn, &lam, &st) != SUSLOV_STEP_OK) {
-            fprintf(stderr, "figure_perturbation: euler step %d failed at t = %g\n", k, EPS_A * k);
-            return 3;
-        }
-        gap = fmax(gap, hypot(wn[0] - seg[NSUB][0], wn[1] - seg[NSUB][1]));
-        x[0] = wn[0];
-        x[1] = wn[1];
-        f.tk[k + 1] = EPS_A * (k + 1);
-        f.wk[k + 1][0] = x[0];
-        f.wk[k + 1][1] = x[1];
-    }
-
-    /* (c): sizes along one period from w(0), w(3), w(7), every method */
-    static const double TK[] = {0.0, 3.0, 7.0};
-    f.nm = suslov_method_count() < MAXM ? suslov_method_count() : MAXM;
-    for (int j = 0; j < NE; j++)
-        f.eps[j] = ldexp(1.0, 1 - j);
-    for (int i = 0; i < f.nm; i++) {
-        f.names[i] = suslov_method_get(i)->type->name;
-        for (int j = 0; j < NE; j++) {
-            suslov_perturb Q;
-            double s = 0.0;
-            if (suslov_perturb_init(&Q, &m, suslov_method_get(i)->type, f.eps[j]) != 0)
-                die("singular inertia", 1);
-            for (int t = 0; t < 3; t++) {
-                double x0[2], v;
-                suslov_exact_omega(&ex, TK[t], x0);
-                if (suslov_perturb_sup_reduced(&Q, x0, 64, &v) != SUSLOV_PERTURB_OK)
-                    die("a perturbation size failed", 3);
-                s = fmax(s, v);
-            }
-            f.g[i][j] = s > FLOOR_G / f.eps[j] ? s : NAN;
-        }
-    }
-    /* (d): the attitude part for the midpoint DSP */
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
-        for (int j = 0; j < NE; j++) {
-            f.att[r][j] = NAN;
-            if (j >= NE_SO3)
-                continue;
-            suslov_perturb Q;
-            double s = 0.0;
-            if (suslov_perturb_init(&Q, &m, suslov_step_midpoint, f.eps[j]) != 0)
-                die("singular inertia", 1);
-            for (int t = 0; t < 2; t++) {
-                double x0[2], a, g;
-                suslov_exact_omega(&ex, TK[t], x0);
-                if (suslov_perturb_sup_so3(&Q, (suslov_recon)r, x0, 32, SUSLOV_PERTURB_ATT_TOL, &a, &g) != SUSLOV_PERTURB_OK)
-                    die("an attitude blend failed", 3);
-                s = fmax(s, a);
-            }
-            f.att[r][j] = s > FLOOR_ATT / f.eps[j] ? s : NAN;
-        }
-
-    /* data: the trajectory, then the sizes (one column per method and reconstruction) */
-    double tcol[NPA], c1[NPA], c2[NPA], e1[NPA], e2[NPA];
-    for (int i = 0; i < NPA; i++) {
-        tcol[i] = f.t[i];
-        c1[i] = f.w[i][0];
-        c2[i] = f.w[i][1];
-        e1[i] = f.ex[i][0];
-        e2[i] = f.ex[i][1];
-    }
-    const double *cols[] = {tcol, c1, c2, e1, e2};
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "perturbation", "csv"),
-                      "t,omega1_perturbed,omega2_perturbed,omega1_exact,omega2_exact", 5, cols, NPA, 1) != 0)
-        return 1;
-    char header[2048];
-    const double *scols[1 + MAXM + SUSLOV_RECON_COUNT];
-    int nc = 0, used = snprintf(header, sizeof header, "eps");
-    scols[nc++] = f.eps;
-    for (int i = 0; i < f.nm; i++) {
-        used += snprintf(header + used, sizeof header - (size_t)used, ",sup_g_%s", f.names[i]);
-        scols[nc++] = f.g[i];
-    }
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-        used += snprintf(header + used, sizeof header - (size_t)used, ",attitude_midpoint_%s", SUSLOV_RECON_NAMES[r]);
-        scols[nc++] = f.att[r];
-    }
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "perturbation_sizes", "csv"), header, nc, scols, NE, 1) != 0)
+    f.nm = suslov_method_count();
+    f.names = calloc((size_t)f.nm, sizeof *f.names);
+    f.g = calloc((size_t)f.nm, sizeof *f.g);
+    if (!f.names || !f.g)
+        die("out of memory", 1);
+    double gap;
+    const int traj = trajectory(&f, &m, &ex, &gap);
+    if (traj != 0)
+        return traj;
+    sizes(&f, &m, &ex);
+    attitude_sizes(&f, &m, &ex);
+    if (write_data(&f, argv[2]) != 0)
         return 1;
     char cap[2048];
     snprintf(cap, sizeof cap,
-             "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, src/exp/perturbation.c).\n"
-             "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and backward from the\n"
-             "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect against (ContDyn),\n"
-             "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by rk8pd (tol 1e-14)\n"
-             "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap %.1e); dashed:\n"
-             "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method of the registry;\n"
-             "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and methods with fewer\n"
-             "than two points left (their perturbation is at round-off for every eps <= 2). (d): the attitude\n"
-             "part of the perturbation on SO(3) (geodesic blend, Per11), midpoint DSP: order 1 with cayley, 2 with the\n"
+             "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, "
+             "src/exp/perturbation.c).\n"
+             "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
+             "backward from the\n"
+             "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect "
+             "against (ContDyn),\n"
+             "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by "
+             "rk8pd (tol 1e-14)\n"
+             "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap "
+             "%.1e); dashed:\n"
+             "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method of the "
+             "registry;\n"
+             "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and "
+             "methods with fewer\n"
+             "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
+             "attitude\n"
+             "part of the perturbation on SO(3) (geodesic blend, Per11), midpoint DSP: order 1 with cayley, "
+             "2 with the\n"
              "symmetric reconstructions. Data: data/perturbation.csv, data/perturbation_sizes.csv.\n",
              NSTEP_A, EPS_A, gap, FLOOR_G);
     return fig_write_figure(argv[1], "perturbation", 600, 560, draw, &f, cap) != 0;

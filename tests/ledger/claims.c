@@ -6,6 +6,7 @@
  * t_k, compared with the exact solution at t_k + eps, for t_k in TK (the transient; the
  * motion settles on the steady rotation within t ~ 5/k ~ 35); the error at eps is the
  * largest over t_k. Orders are least-squares slopes of log error against log eps. */
+#include "atomic_file.h"
 #include "consistency.h"
 #include "convergence.h"
 #include "driver.h"
@@ -31,6 +32,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK ((int)(sizeof TK / sizeof TK[0]))
@@ -422,6 +424,23 @@ static void preservation_claims(void)
                naive, SO3_PRESERVE_TOL, 1, LEDGER_EXTENSION);
 }
 
+/* The registry as a table (src/methods/registry.h), methods.tsv beside the claims file, whole or not at all. */
+static void write_methods(const char *tsv)
+{
+    char path[4096], err[256];
+    const char *slash = strrchr(tsv, '/');
+    snprintf(path, sizeof path, "%.*smethods.tsv", slash ? (int)(slash - tsv + 1) : 0, tsv);
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, sizeof err) != 0)
+        ledger_die(err);
+    if (suslov_methods_write_tsv(af.fp) != 0) {
+        atomic_file_abort(&af);
+        ledger_die("writing methods.tsv");
+    }
+    if (atomic_file_commit(&af, err, sizeof err) != 0)
+        ledger_die(err);
+}
+
 int main(int argc, char **argv)
 {
     const char *tsv = argc > 1 ? argv[1] : "build/claims.tsv";
@@ -466,5 +485,6 @@ int main(int argc, char **argv)
                conv.ref_global_err, 0.0, 0.01 * min_so3_fitted[0], LEDGER_EXTENSION);
     suslov_convergence_free(&conv);
     const int failed = ledger_finish(tsv);
+    write_methods(tsv);
     return failed != 0;
 }

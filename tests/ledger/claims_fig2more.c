@@ -30,7 +30,7 @@ static int trapezoidal_apply(const suslov_model *m, double eps, const double w[3
         const double d = fabs(y0 - x[0]) + fabs(y1 - x[1]);
         x[0] = y0;
         x[1] = y1;
-        if (d <= 4.0 * 2.220446049250313e-16 * (fabs(x[0]) + fabs(x[1])))
+        if (d <= 4.0 * SUSLOV_U * (fabs(x[0]) + fabs(x[1])))
             break;
     }
     w_next[0] = x[0];

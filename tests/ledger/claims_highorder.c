@@ -67,27 +67,11 @@ static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepp
     return suslov_run(&cfg, ex->w0, keep_row, out, &rep);
 }
 
-/* Midpoint substeps per step (1 for a Taylor step). */
-static int stages_of(const suslov_stepper_type *st)
-{
-    const struct {
-        const suslov_stepper_type *type;
-        const suslov_composition *table;
-    } comp[] = {{&suslov_comp4_s5_type, &suslov_comp_suzuki4},
-                {&suslov_comp6_kl_type, &suslov_comp_kahan_li6},
-                {&suslov_comp8_kl_type, &suslov_comp_kahan_li8},
-                {&suslov_comp10_ss_type, &suslov_comp_sofroniou10}};
-    for (size_t i = 0; i < sizeof comp / sizeof comp[0]; i++)
-        if (comp[i].type == st)
-            return suslov_composition_stages(comp[i].table);
-    return 1;
-}
-
 static void order_rows(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, const expected_order *eo,
                        suslov_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
 {
     double eps[MAXN], ew[MAXN], eR[MAXN];
-    const int stages = stages_of(me->type);
+    const int stages = me->type->substeps;
     int n = 0;
     long prev = 0;
     for (double Nd = 4.0; n < MAXN && Nd < 1e5; Nd *= 1.4142135623730951) {
@@ -102,8 +86,8 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
         ew[n] = hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
         eR[n] = so3_dist(R_T, l.R);
         n++;
-        if (ew[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_W
-            && eR[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_R)
+        if (ew[n - 1] < 100.0 * N * stages * SUSLOV_U * SUSLOV_SIZE_W
+            && eR[n - 1] < 100.0 * N * stages * SUSLOV_U * SUSLOV_SIZE_R)
             break; /* both at the round-off floor below */
     }
     for (int q = with_w ? 0 : 1; q < 2; q++) {
@@ -115,7 +99,7 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
         double fe[MAXN], fr[MAXN];
         int k = 0;
         for (int j = 0; j < n; j++) {
-            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size, 100.0 * N * stages * 2.220446049250313e-16 * size);
+            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size, 100.0 * N * stages * SUSLOV_U * size);
             if (err[j] <= ERR_MAX && err[j] > floor) {
                 fe[k] = eps[j];
                 fr[k] = err[j];
@@ -137,8 +121,8 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
         if (ok != 0 && !q && expected >= 10)
             continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
                        * (its attitude, which integrates w, carries the order: the SO(3) row) */
-        const int taylor = strcmp(me->family, "taylor") == 0;
-        ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !taylor ? 0.3 : 1.0), 1, LEDGER_EXTENSION);
+        const int pre = me->type->pre_asymptotic;
+        ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !pre ? 0.3 : 1.0), 1, LEDGER_EXTENSION);
     }
 }
 
@@ -165,7 +149,7 @@ static void taylor_control(const suslov_model *m, const suslov_exact *ex, const 
         suslov_attitude_identity(&a1);
         suslov_attitude_identity(&a2);
         if (suslov_step_full(me->type, m, eps, me->recon, &a1, w, wn, &lam, &ss) != SUSLOV_STEP_OK ||
-            suslov_taylor_apply_full(p - 1, m, eps, &a2, w, wc, &lam, &ss) != SUSLOV_STEP_OK) {
+            me->type->apply_order(p - 1, m, eps, &a2, w, wc, &lam, &ss) != SUSLOV_STEP_OK) {
             em = NAN;
             break;
         }
@@ -208,11 +192,10 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo || !eo->orders_in || strcmp(eo->orders_in, "tests/ledger/claims_highorder.c") != 0)
             continue;
-        const int composition = strcmp(me->family, "composition") == 0;
         order_rows(m, ex, me, eo, me->recon, 1, w_T, R_T);
-        if (strcmp(me->family, "taylor") == 0)
+        if (me->type->apply_order)
             taylor_control(m, ex, me, eo->p);
-        if (composition) /* the paper's retraction, symmetrised, beside the exponential */
+        if (me->type->follows_recon && me->recon != SUSLOV_RECON_CAYLEY_MID) /* the paper's retraction, symmetrised */
             order_rows(m, ex, me, eo, SUSLOV_RECON_CAYLEY_MID, 0, w_T, R_T);
 
         /* Structure over a long run at T = 1e4. 10^6 steps (eps = 0.01) for the cheapest method of
@@ -222,12 +205,11 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
          * per midpoint substep or per Taylor step (N s u E, the worst case of a drift that never
          * cancels); R^T R - I: R is rebuilt from a unit quaternion at every step, so it is one
          * rounding, a few u over 9 entries, whatever N: <= 1e-14. */
-        const int cheap = strcmp(me->type->name, "comp4-s5") == 0 || strcmp(me->type->name, "taylor12") == 0;
-        const long N = cheap ? 1000000L : 100000L;
+        const long N = eo->long_run_steps ? eo->long_run_steps : 100000L;
         last_row l;
         const int status = run(m, ex, me->type, me->recon, 1e4, N, 100, &l);
-        const int stages = stages_of(me->type);
-        const double yard = (double)N * stages * 1.1102230246251565e-16 * l.e0;
+        const int stages = me->type->substeps;
+        const double yard = (double)N * stages * 0.5 * SUSLOV_U * l.e0;
         snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
         snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = %.2g (s = %d substeps)",
                  N, 1e4 / (double)N, me->type->name, yard, stages);

@@ -22,7 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define U 2.220446049250313e-16
+#define U SUSLOV_U
 #define NJ5 12  /* eps = 2 .. 2^-10 */
 static const double TK5[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK5 5
@@ -46,7 +46,7 @@ static void lambda_errors(const suslov_model *m, const suslov_exact *ex, const s
             const double w[3] = {wk[0], wk[1], 0.0};
             if (st->apply(m, eps_of(j), w, x, &lam, &ss) != SUSLOV_STEP_OK)
                 ledger_die("a step for Remark 5.5");
-            if (nterms > 0 && suslov_lambda_shift(m, st->name, p, nterms, eps_of(j), wk, x, &l) != 0)
+            if (nterms > 0 && suslov_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
                 ledger_die("the lambda shift");
             err[j] = fmax(err[j], fabs(suslov_lagmult(m, x) + l - suslov_lagmult(m, we)));
         }
@@ -66,7 +66,7 @@ static void expansion_claim(const suslov_model *m, const suslov_exact *ex, const
         suslov_exact_omega(ex, TK5[t], wk);
         suslov_exact_omega(ex, TK5[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK || suslov_series_step(m, st->name, wk, &a) != 0)
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK || suslov_series_step(m, st, wk, &a) != 0)
             ledger_die("the series of a step");
         suslov_series_flow(m, wk, &y);
         suslov_series_eval(&a, eps, sx);

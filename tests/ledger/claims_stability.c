@@ -32,7 +32,7 @@ static double theory_limit(const suslov_method *me)
 {
     const expected_order *eo = expected_order_of(me->type->name);
     const int rk = me->type == suslov_step_euler || me->type == suslov_step_rk4;
-    if (!eo || !(rk || strcmp(me->family, "taylor") == 0))
+    if (!eo || !(rk || me->type->apply_order)) /* apply_order: a series method, any order p */
         return NAN;
     double lo = 0.5, hi = lo;
     while (fabs(truncexp(eo->p, -hi)) <= 1.0 && hi < H_MAX)
@@ -57,7 +57,7 @@ void stability_claims(const suslov_exact *paper)
          * unstable only in narrow bands around the poles z = 2/g_i of the negative weights, so
          * the bisection below and a first crossing measure different things; no claim is made
          * (the map in figures/stability shows where they work). */
-        if (!me->stability && strcmp(me->family, "composition") == 0)
+        if (!me->type->stability && me->type->substeps > 1)
             continue;
         const double predicted = suslov_linear_limit(me, H_MAX), theory = theory_limit(me);
         const double measured = suslov_stability_limit(paper, st, 0.1, H_MAX);
@@ -84,7 +84,7 @@ void stability_claims(const suslov_exact *paper)
              * gives INFINITY; a NaN (no return even at h = 0.1) fails. */
             snprintf(q, sizeof q, "%s has no linear stability limit (%s): the start 1e-6 off the rotation still returns "
                                   "at h = %g (largest h tested)", st->name,
-                     me->stability ? "|R(-h)| <= 1 for all h tested" : "no stability function", H_MAX);
+                     me->type->stability ? "|R(-h)| <= 1 for all h tested" : "no stability function", H_MAX);
             ledger_add_bound_unbounded(id, "(extension)", q, measured, H_MAX, 1, LEDGER_EXTENSION);
         }
     }
@@ -99,7 +99,7 @@ void stability_claims(const suslov_exact *paper)
         hs[i] = pow(10.0, -2.0 + 0.2 * i);
     for (int m = 0; m < suslov_method_count(); m++) {
         const suslov_method *me = suslov_method_get(m);
-        if (!me->implicit)
+        if (!me->type->implicit)
             continue;
         stab_result res[NHS * NA];
         suslov_stability_map(paper, me->type, hs, NHS, NA, res);

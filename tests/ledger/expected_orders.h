@@ -17,6 +17,8 @@ typedef struct {
      * round-off before the asymptotic regime, so tests/ledger/claims_highorder.c fits each method over
      * its own step range at t = 50 (issue 11). */
     const char *orders_in;
+    /* Steps of the long structure run to T = 1e4 in tests/ledger/claims_highorder.c; 0 for 10^5. */
+    long long_run_steps;
 } expected_order;
 
 const expected_order *expected_order_of(const char *method);

@@ -16,7 +16,7 @@
 #include <gsl/gsl_rng.h>
 #include <math.h>
 
-#define U 2.220446049250313e-16
+#define U SUSLOV_U
 
 static void tables(void)
 {

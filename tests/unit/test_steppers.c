@@ -1,7 +1,7 @@
 /* The DSP steppers, the Newton solves, the driver and the unreduced integrator. */
 #include "check.h"
 #include "driver.h"
-#include "newton2.h"
+#include "newton.h"
 #include "mat3.h"
 #include "so3.h"
 #include "registry.h"
@@ -39,16 +39,16 @@ static double vso3(const suslov_model *m, double eps, const double w[2], const d
 }
 
 /* A step equation whose Jacobian is singular everywhere: the (REGLOC) failure path. */
-static void singular_residual(const suslov_model *m, double eps, const double w[2], const double x[2],
-                              double g[2], double J[2][2], double *scale)
+static void singular_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+                              double *g, double *J, double *scale)
 {
     (void)m;
     (void)eps;
     (void)w;
     g[0] = x[0] + x[1] - 1.0;
     g[1] = 2.0 * (x[0] + x[1]) - 3.0;
-    J[0][0] = J[0][1] = 1.0;
-    J[1][0] = J[1][1] = 2.0;
+    J[0] = J[1] = 1.0;
+    J[2] = J[3] = 2.0;
     *scale = fabs(x[0]) + fabs(x[1]) + 3.0;
 }
 
@@ -80,46 +80,62 @@ int main(void)
         return 1;
     }
 
-    /* Analytic Jacobians of the implicit step equations against central differences. */
-    /* every registered step that is one 2x2 implicit equation */
+    /* Analytic Jacobians of the implicit step equations against central differences, for every
+     * registered step with an equation of its own (n unknowns), at points near its root. */
     for (int s = 0; s < suslov_method_count(); s++) {
         const suslov_stepper_type *st = suslov_method_get(s)->type;
-        if (!st->residual)
+        if (!st->unknowns)
             continue;
+        const int n = st->unknowns;
         double worst = 0.0;
-        for (int n = 0; n < 30; n++) {
-            const double a = 0.37 * n, eps = 0.05 * (1 + n % 7);
-            const double w[2] = {0.6 * cos(a), 0.5 * sin(a)}, x[2] = {0.6 * cos(a + 0.1), 0.5 * sin(a + 0.1)};
-            double g[2], J[2][2], sc;
+        for (int k = 0; k < 30; k++) {
+            const double a = 0.37 * k, eps = 0.05 * (1 + k % 7), h = 1e-6;
+            const double w[2] = {0.6 * cos(a), 0.5 * sin(a)}, w1[2] = {0.6 * cos(a + 0.1), 0.5 * sin(a + 0.1)};
+            double x[SUSLOV_MAX_UNKNOWNS], g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS], sc;
+            st->guess(&m, eps, w, x);
+            for (int i = 0; i < n; i++)
+                x[i] += 0.1 * w1[i % 2]; /* off the root */
             st->residual(&m, eps, w, x, g, J, &sc);
-            for (int j = 0; j < 2; j++) {
-                const double h = 1e-6;
-                double xp[2] = {x[0], x[1]}, xm[2] = {x[0], x[1]}, gp[2], gm[2], Jt[2][2];
+            for (int j = 0; j < n; j++) {
+                double xp[SUSLOV_MAX_UNKNOWNS], xm[SUSLOV_MAX_UNKNOWNS], gp[SUSLOV_MAX_UNKNOWNS],
+                    gm[SUSLOV_MAX_UNKNOWNS], Jt[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS];
+                for (int i = 0; i < n; i++)
+                    xp[i] = xm[i] = x[i];
                 xp[j] += h;
                 xm[j] -= h;
                 st->residual(&m, eps, w, xp, gp, Jt, &sc);
                 st->residual(&m, eps, w, xm, gm, Jt, &sc);
-                for (int i = 0; i < 2; i++)
-                    worst = fmax(worst, fabs((gp[i] - gm[i]) / (2.0 * h) - J[i][j]));
+                for (int i = 0; i < n; i++)
+                    worst = fmax(worst, fabs((gp[i] - gm[i]) / (2.0 * h) - J[i * n + j]));
             }
         }
         /* G is a cubic polynomial: central differences err by O(h^2) ~ 1e-12 plus u/h ~ 1e-10 */
-        CHECK(worst < 1e-8, "%s: analytic Jacobian of the step equation ((Discretization) or (taudyn)) = central differences; worst %.2e", st->name, worst);
+        CHECK(worst < 1e-8, "%s: analytic Jacobian of the step equation = central differences; worst %.2e",
+              st->name, worst);
     }
 
-    /* Each step solves its equation to round-off in a few Newton iterations at small eps. */
+    /* Each step solves its equation to round-off in a few Newton iterations at small eps, and its
+     * w^{k+1} is the result of that root. */
     for (int s = 0; s < suslov_method_count(); s++) {
         const suslov_stepper_type *st = suslov_method_get(s)->type;
-        if (!st->residual)
+        if (!st->unknowns)
             continue;
         const double w[3] = {0.4, 0.5, 0.0};
-        double x[3], lam, g[2], J[2][2], sc;
-        suslov_step_stats stats;
-        const int status = st->apply(&m, 0.01, w, x, &lam, &stats);
+        double x[SUSLOV_MAX_UNKNOWNS], g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS], sc;
+        double wn[3], wr[2], lam;
+        suslov_step_stats stats, ss;
+        const int status = st->apply(&m, 0.01, w, wn, &lam, &stats);
+        st->guess(&m, 0.01, w, x);
+        const int s2 = suslov_newton_solve(st->residual, st->unknowns, &m, 0.01, w, x, &ss);
         st->residual(&m, 0.01, w, x, g, J, &sc);
-        CHECK(status == SUSLOV_STEP_OK && fmax(fabs(g[0]), fabs(g[1])) <= 16 * 2.2e-16 * sc && stats.iterations <= 4 && x[2] == 0.0,
+        st->result(&m, 0.01, w, x, wr);
+        double gmax = 0.0;
+        for (int i = 0; i < st->unknowns; i++)
+            gmax = fmax(gmax, fabs(g[i]));
+        CHECK(status == SUSLOV_STEP_OK && s2 == SUSLOV_STEP_OK && gmax <= 16 * SUSLOV_U * sc &&
+                  stats.iterations <= 4 && wn[2] == 0.0 && wr[0] == wn[0] && wr[1] == wn[1],
               "%s: eps = 0.01 step solved to |G| = %.1e (scale %.2f) in %d Newton iterations, w3 = 0",
-              st->name, fmax(fabs(g[0]), fabs(g[1])), sc, stats.iterations);
+              st->name, gmax, sc, stats.iterations);
     }
 
     /* (taudyn) and (taualg) are (VSO3) with (cayinver) as printed, after lambda -> -lambda/eps^2;
@@ -127,7 +143,7 @@ int main(void)
     double worst_dyn = 0.0, worst_alg = 0.0, worst_full = 0.0;
     for (int n = 0; n < 20; n++) {
         const double eps = 0.1 + 0.2 * n, w[3] = {0.4 - 0.03 * n, 0.5, 0.0};
-        double x[3], lam, g[2], gd[2], J[2][2], sc;
+        double x[3], lam, g[2], gd[2], J[4], sc;
         suslov_step_stats stats;
         suslov_step_variational->apply(&m, eps, w, x, &lam, &stats);
         const double raw = vso3(&m, eps, w, x, 1, g);
@@ -169,7 +185,7 @@ int main(void)
     count_ctx cb = {0, -1, 1.0};
     const int rb = suslov_run(&bad, w_big, count_rows, &cb, &rep);
     CHECK(rb == 1 && rep.status == SUSLOV_STEP_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0 && cb.rows == 1 &&
-              rep.stats.residual > NEWTON2_RTOL * rep.stats.scale,
+              rep.stats.residual > NEWTON_RTOL * rep.stats.scale,
           "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only row 0 emitted",
           rep.step, rep.t, rep.stats.residual);
 
@@ -178,7 +194,7 @@ int main(void)
         double x[2] = {0.3, 0.3};
         suslov_step_stats stats;
         const double w[2] = {0.0, 0.0};
-        const int status = newton2_solve(singular_residual, &m, 0.1, w, x, &stats);
+        const int status = suslov_newton_solve(singular_residual, 2, &m, 0.1, w, x, &stats);
         CHECK(status == SUSLOV_STEP_SINGULAR && stats.det == 0.0 && stats.iterations == 0,
               "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUSLOV_STEP_SINGULAR", stats.det);
     }

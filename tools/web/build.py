@@ -378,6 +378,8 @@ class Site:
         self.declared = read_declared(args.equations)
         self.restated = read_restatements(os.path.join(HERE, "equations.tex"))
         self.claims = read_claims(args.claims)
+        # the registry's own table, written beside claims.tsv: each method's stepper file
+        self.methods = read_claims(os.path.join(os.path.dirname(args.claims) or ".", "methods.tsv"))
         self.figrules = read_figure_rules(os.path.join(HERE, "ledger_figures.tsv"))
         self.files = sorted(glob.glob("src/*/*.c") + glob.glob("src/*/*.h")) + \
             sorted(glob.glob("tests/*/*.c") + glob.glob("tests/*/*.h") + glob.glob("tests/*/*.sh"))
@@ -413,10 +415,10 @@ class Site:
                     self.sec_impl.setdefault((f, k), []).append(m.group(1))
 
     def method_files(self):
-        """method token -> src/step_NAME.c: a claim id names its method (reduced-order-rk4,
-        stability-boundary-taylor12); the stepper file is step_NAME.c with NAME the token or its
-        prefix (step_taylor.c defines taylor12, taylor16, ...)."""
-        return {os.path.basename(p)[5:-2]: p for p in glob.glob("src/methods/step_*.c")}
+        """method name -> the file that defines its step, from the registry (methods.tsv, column
+        source): a claim id names its method as a dash-separated part (reduced-order-rk4,
+        highorder-w-order-comp4-s5)."""
+        return {m["name"]: m["source"] for m in self.methods}
 
     def index_claims(self):
         steps = self.method_files()
@@ -436,11 +438,9 @@ class Site:
                 if w in self.labels and self.labels[w][0] in THEOREM_KINDS:
                     labs.append(w)
             # the method the line measures: the equations its stepper file implements
-            for tok in c["id"].split("-"):
-                stem = max((s for s in steps if tok == s or (tok.startswith(s) and tok[len(s):].isdigit())),
-                           key=len, default=None)
-                if stem:
-                    labs.extend(sorted(file_labels.get(steps[stem], [])))
+            stem = max((s for s in steps if "-" + s + "-" in "-" + c["id"] + "-"), key=len, default=None)
+            if stem:
+                labs.extend(sorted(file_labels.get(steps[stem], [])))
             labs = list(dict.fromkeys(labs))
             self.claim_labels[c["id"]] = labs
             for lab in labs:

@@ -1,0 +1,169 @@
+#include "newton.h"
+
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+
+static double inf_norm(const double *v, int n)
+{
+    double r = 0.0;
+    for (int i = 0; i < n; i++)
+        r = fmax(r, fabs(v[i]));
+    return r;
+}
+
+/* The sum of |terms| of det J's Leibniz expansion (the permanent of |J|): the yardstick for the
+ * round-off in det J. Rows are expanded recursively over the unused columns (n <= 8). */
+static double abs_leibniz(const double *J, int n, int row, unsigned used)
+{
+    if (row == n)
+        return 1.0;
+    double s = 0.0;
+    for (int j = 0; j < n; j++)
+        if (!(used & 1u << j) && J[row * n + j] != 0.0)
+            s += fabs(J[row * n + j]) * abs_leibniz(J, n, row + 1, used | 1u << j);
+    return s;
+}
+
+/* n = 2 by the closed form (the (REGLOC) block, bit for bit as it has always been solved); larger
+ * n by GSL's LU with partial pivoting, on the stack. */
+int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+{
+    if (n == 2) {
+        *det = J[0] * J[3] - J[1] * J[2];
+        if (fabs(*det) <= 4.0 * SUSLOV_U * (fabs(J[0] * J[3]) + fabs(J[1] * J[2])))
+            return -1;
+        dx[0] = (J[3] * g[0] - J[1] * g[1]) / *det;
+        dx[1] = (J[0] * g[1] - J[2] * g[0]) / *det;
+        return 0;
+    }
+    const double bound = 4.0 * n * SUSLOV_U * abs_leibniz(J, n, 0, 0u);
+    size_t perm[SUSLOV_MAX_UNKNOWNS];
+    gsl_permutation p = {(size_t)n, perm};
+    gsl_matrix_view A = gsl_matrix_view_array(J, (size_t)n, (size_t)n);
+    int signum;
+    gsl_linalg_LU_decomp(&A.matrix, &p, &signum);
+    *det = gsl_linalg_LU_det(&A.matrix, signum);
+    if (!(fabs(*det) > bound))
+        return -1;
+    gsl_vector_const_view b = gsl_vector_const_view_array(g, (size_t)n);
+    gsl_vector_view xv = gsl_vector_view_array(dx, (size_t)n);
+    gsl_linalg_LU_solve(&A.matrix, &p, &b.vector, &xv.vector);
+    return 0;
+}
+
+/* Records the residual at the accepted x. */
+static void fn_final(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
+                     const double *x, suslov_step_stats *st)
+{
+    double g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS];
+    G(m, eps, w, x, g, J, &st->scale);
+    st->residual = inf_norm(g, n);
+}
+
+typedef struct {
+    double x[SUSLOV_MAX_UNKNOWNS], residual, scale;
+} newton_point;
+
+static void keep(newton_point *p, const double *x, int n, double residual, double scale)
+{
+    for (int i = 0; i < n; i++)
+        p->x[i] = x[i];
+    p->residual = residual;
+    p->scale = scale;
+}
+
+static void restore(const newton_point *p, double *x, int n, suslov_step_stats *st)
+{
+    for (int i = 0; i < n; i++)
+        x[i] = p->x[i];
+    st->residual = p->residual;
+}
+
+/* The state of one solve: the best iterate (for stagnation), the accepted one (for polishing). */
+typedef struct {
+    newton_point best, ok;
+    double prev;
+    int polishing;
+} newton_state;
+
+/* One decision after evaluating G at x: returns a SUSLOV_STEP_* status to end the solve, or -1 to
+ * take the correction. */
+static int decide(newton_state *s, double *x, int n, suslov_step_stats *st)
+{
+    if (s->polishing) {
+        /* The polished x replaces the accepted one unless round-off made it worse. */
+        if (!(st->residual <= s->ok.residual)) {
+            restore(&s->ok, x, n, st);
+            st->scale = s->ok.scale;
+        }
+        return SUSLOV_STEP_OK;
+    }
+    if (!isfinite(st->residual) || !isfinite(st->scale))
+        return SUSLOV_STEP_NO_CONVERGENCE;
+    if (st->residual < s->best.residual)
+        keep(&s->best, x, n, st->residual, st->scale);
+    /* Stagnation at the round-off floor: near a large or ill-conditioned Jacobian |G| cannot fall
+     * below ~ |J| ulp(x) times a few, which may sit above NEWTON_RTOL * scale. When an iteration
+     * no longer halves |G| and |G| is within NEWTON_STAGNATION * scale, the best iterate is the
+     * root to working precision. */
+    if (st->residual > NEWTON_RTOL * st->scale && st->residual <= NEWTON_STAGNATION * st->scale &&
+        st->residual > 0.5 * s->prev) {
+        restore(&s->best, x, n, st);
+        return SUSLOV_STEP_OK;
+    }
+    s->prev = st->residual;
+    /* Once the residual is at round-off, one more correction takes x from "within the tolerance"
+     * to the round-off floor; without it the tolerance, not round-off, sets a bias that
+     * accumulates over many steps. */
+    if (st->residual <= NEWTON_RTOL * st->scale) {
+        s->polishing = 1;
+        keep(&s->ok, x, n, st->residual, st->scale);
+    } else if (st->iterations == NEWTON_MAXIT) {
+        return SUSLOV_STEP_NO_CONVERGENCE;
+    }
+    return -1;
+}
+
+/* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
+ * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
+int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
+                        double *x, suslov_step_stats *st)
+{
+    double g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS], dx[SUSLOV_MAX_UNKNOWNS];
+    newton_state s = {.prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY};
+    keep(&s.best, x, n, INFINITY, 0.0);
+    st->iterations = 0;
+    st->det = NAN;
+    for (;;) {
+        G(m, eps, w, x, g, J, &st->scale);
+        st->residual = inf_norm(g, n);
+        const int singular = suslov_linear_solve(n, J, g, dx, &st->det) != 0;
+        const int status = decide(&s, x, n, st);
+        if (status >= 0)
+            return status;
+        /* (REGLOC): the step is defined only where this matrix is invertible. */
+        if (singular)
+            return s.polishing ? SUSLOV_STEP_OK : SUSLOV_STEP_SINGULAR;
+        for (int i = 0; i < n; i++)
+            x[i] -= dx[i];
+        st->iterations++;
+        /* A correction below the spacing of doubles at x leaves x unchanged: x is the root to
+         * working precision even when a large Jacobian keeps |G| above NEWTON_RTOL * scale
+         * (|G| >= |J| ulp(x) there). */
+        if (!s.polishing && inf_norm(dx, n) <= 2.0 * SUSLOV_U * inf_norm(x, n)) {
+            fn_final(G, n, m, eps, w, x, st);
+            return SUSLOV_STEP_OK;
+        }
+    }
+}
+
+int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps,
+                          const double w[3], double w_next[3], suslov_step_stats *st)
+{
+    double x[SUSLOV_MAX_UNKNOWNS];
+    type->guess(m, eps, w, x);
+    const int status = suslov_newton_solve(type->residual, type->unknowns, m, eps, w, x, st);
+    type->result(m, eps, w, x, w_next);
+    w_next[2] = 0.0;
+    return status;
+}

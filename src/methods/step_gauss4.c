@@ -1,0 +1,159 @@
+/* The 2-stage Gauss-Legendre collocation method (order 4) as a general DSP (Discretization): the
+ * stage values W_1, W_2 of (w1, w2) solve
+ *   G_i = I_m (W_i - w^k) - eps sum_j a_ij l(W_j) = 0,   l(W) = c(W) (-W_2, W_1) = I_m f(W),
+ * (ContDyn) multiplied by I_m as the midpoint DSP's l1, l2 are; then
+ *   w^{k+1} = w^k + eps sum_i b_i f(W_i)
+ * and lambda_{k+1} = lambda(w^{k+1}) from (LagMult). Four unknowns, one Newton on the 4 x 4
+ * system. The attitude is the same collocation applied to the kinematics q' = 1/2 q (x) (0, w) of
+ * a quaternion of R (R' = R w^, the reconstruction of (algo) at the method's order): given the
+ * stages W_j its stages Q_i = q + eps/2 sum_j a_ij Q_j (x) (0, W_j) are one linear 8 x 8 system.
+ * Gauss collocation conserves every quadratic invariant (Hairer, Lubich & Wanner, Geometric
+ * Numerical Integration, Thm. IV.2.1): E = 1/2 <I_m w, w> and |q|. Its stability function is
+ * the (2,2) Pade approximant of exp, |R(-h)| < 1 for every h > 0. Tableau: c = 1/2 -+ sqrt(3)/6,
+ * A = [[1/4, 1/4 - sqrt(3)/6], [1/4 + sqrt(3)/6, 1/4]], b = (1/2, 1/2). */
+#include "newton.h"
+#include "quaternion.h"
+
+#include <math.h>
+
+#define SQRT3_6 0.28867513459481288225 /* sqrt(3)/6 */
+static const double A[2][2] = {{0.25, 0.25 - SQRT3_6}, {0.25 + SQRT3_6, 0.25}};
+static const double B[2] = {0.5, 0.5};
+static const double C[2] = {0.5 - SQRT3_6, 0.5 + SQRT3_6};
+
+/* l(W) = I_m f(W) of (ContDyn), and its Jacobian dl/dW. */
+static void l_of(const suslov_model *m, const double W[2], double l[2], double dl[2][2])
+{
+    const double c = suslov_c(m, W), *b = m->b;
+    l[0] = -W[1] * c;
+    l[1] = W[0] * c;
+    dl[0][0] = -W[1] * b[0];
+    dl[0][1] = -c - W[1] * b[1];
+    dl[1][0] = c + W[0] * b[0];
+    dl[1][1] = W[0] * b[1];
+}
+
+/* (Discretization) with the collocation l: G(x) for x = (W_1, W_2), its 4 x 4 Jacobian. */
+static void gauss4_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+                            double *g, double *J, double *scale)
+{
+    const double (*I)[3] = m->I;
+    double l[2][2], dl[2][2][2];
+    l_of(m, x, l[0], dl[0]);
+    l_of(m, x + 2, l[1], dl[1]);
+    const double sI = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
+    const double sl = fabs(l[0][0]) + fabs(l[0][1]) + fabs(l[1][0]) + fabs(l[1][1]);
+    *scale = 0.0;
+    for (int i = 0; i < 2; i++) {
+        const double *W = x + 2 * i, d0 = W[0] - w[0], d1 = W[1] - w[1];
+        const double r[2] = {eps * (A[i][0] * l[0][0] + A[i][1] * l[1][0]),
+                             eps * (A[i][0] * l[0][1] + A[i][1] * l[1][1])};
+        g[2 * i] = I[0][0] * d0 + I[0][1] * d1 - r[0];
+        g[2 * i + 1] = I[1][0] * d0 + I[1][1] * d1 - r[1];
+        for (int a = 0; a < 2; a++)
+            for (int j = 0; j < 2; j++)
+                for (int k = 0; k < 2; k++)
+                    J[(2 * i + a) * 4 + 2 * j + k] = (i == j ? I[a][k] : 0.0) - eps * A[i][j] * dl[j][a][k];
+        *scale += sI * (fabs(W[0]) + fabs(W[1]) + fabs(w[0]) + fabs(w[1]))
+                + eps * (fabs(A[i][0]) + fabs(A[i][1])) * sl;
+    }
+}
+
+/* The stages from the explicit midpoint prediction to each node c_i eps. */
+static void gauss4_guess(const suslov_model *m, double eps, const double w[2], double *x)
+{
+    suslov_predict(m, C[0] * eps, w, x);
+    suslov_predict(m, C[1] * eps, w, x + 2);
+}
+
+static void gauss4_result(const suslov_model *m, double eps, const double w[2], const double *x,
+                          double w_next[2])
+{
+    double f0[2], f1[2];
+    suslov_contdyn(m, x, f0);
+    suslov_contdyn(m, x + 2, f1);
+    w_next[0] = w[0] + eps * (B[0] * f0[0] + B[1] * f1[0]);
+    w_next[1] = w[1] + eps * (B[0] * f0[1] + B[1] * f1[1]);
+}
+
+/* R(z) = (1 + z/2 + z^2/12) / (1 - z/2 + z^2/12), the (2,2) Pade approximant of exp. */
+static double gauss4_stability(double z)
+{
+    return (1.0 + z / 2.0 + z * z / 12.0) / (1.0 - z / 2.0 + z * z / 12.0);
+}
+
+/* The stages x = (W_1, W_2) by Newton, w^{k+1} and lambda_{k+1} from them. */
+static int gauss4_stages(const suslov_model *m, double eps, const double w[3], double x[4], double w_next[3],
+                         double *lambda_next, suslov_step_stats *st)
+{
+    gauss4_guess(m, eps, w, x);
+    const int status = suslov_newton_solve(gauss4_residual, 4, m, eps, w, x, st);
+    gauss4_result(m, eps, w, x, w_next);
+    w_next[2] = 0.0;
+    *lambda_next = suslov_lagmult(m, w_next);
+    return status;
+}
+
+static int gauss4_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
+                        double *lambda_next, suslov_step_stats *st)
+{
+    double x[4];
+    return gauss4_stages(m, eps, w, x, w_next, lambda_next, st);
+}
+
+/* M[i][k]: the matrix of Q -> Q (x) (0, W_1, W_2, 0), the kinematics at a stage. */
+static void kinematics(const double W[2], double M[4][4])
+{
+    const double v[3] = {W[0], W[1], 0.0};
+    for (int k = 0; k < 4; k++) {
+        double e[4] = {0.0, 0.0, 0.0, 0.0}, p[4];
+        e[k] = 1.0;
+        quat_mul_pure(p, e, v);
+        for (int i = 0; i < 4; i++)
+            M[i][k] = p[i];
+    }
+}
+
+/* q <- q + eps/2 sum_i b_i Q_i (x) (0, W_i), the stages Q_i from the linear collocation system
+ * (I - eps/2 [a_ij M(W_j)]) Q = (q, q). Returns -1 when that system is singular. */
+static int attitude_step(double eps, const double x[4], double q[4])
+{
+    double M[2][4][4], K[64], rhs[8], Q[8], det;
+    kinematics(x, M[0]);
+    kinematics(x + 2, M[1]);
+    for (int r = 0; r < 8; r++) {
+        rhs[r] = q[r % 4];
+        for (int c = 0; c < 8; c++)
+            K[r * 8 + c] = (r == c) - 0.5 * eps * A[r / 4][c / 4] * M[c / 4][r % 4][c % 4];
+    }
+    if (suslov_linear_solve(8, K, rhs, Q, &det) != 0)
+        return -1;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 2; j++)
+            for (int k = 0; k < 4; k++)
+                q[i] += 0.5 * eps * B[j] * M[j][i][k] * Q[4 * j + k];
+    return 0;
+}
+
+/* The whole step: w by the collocation above, the attitude by the same collocation (whatever
+ * reconstruction is asked for: it is the method's own). */
+static int gauss4_apply_full(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att,
+                             const double w[3], double w_next[3], double *lambda_next, suslov_step_stats *st)
+{
+    (void)recon;
+    double x[4], q[4];
+    const int status = gauss4_stages(m, eps, w, x, w_next, lambda_next, st);
+    if (status != SUSLOV_STEP_OK)
+        return status;
+    quat_of_attitude(att, q);
+    if (attitude_step(eps, x, q) != 0)
+        return SUSLOV_STEP_SINGULAR;
+    quat_to_attitude(q, att);
+    return SUSLOV_STEP_OK;
+}
+
+const suslov_stepper_type suslov_gauss4_type = {
+    .name = "gauss4", .order = 4, .lambda_order = 4, .apply = gauss4_apply, .apply_full = gauss4_apply_full,
+    .implicit = 1, .unknowns = 4, .residual = gauss4_residual, .guess = gauss4_guess, .result = gauss4_result,
+    .stability = gauss4_stability, .conserves_energy = 1, .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1,
+    .source = __FILE__};
