@@ -107,8 +107,9 @@ static void energy_range_claims(const suslov_model *m)
         reading_name(reading, name, sizeof name);
         snprintf(id, sizeof id, "fig2-energy-none-faster-%s", name);
         snprintf(q, sizeof q,
-                 "largest eps from 0.25 (grid 0.25 * 2^(j/4) to 8) up to which the %s reading loses no more "
-                 "energy over [0, 200] than the variational one; more at %d of 21 eps (from %.3g), failed at %d",
+                 "largest eps from 0.25 (grid 0.25 * 2^(j/4) to 8) up to which the %s reading loses no "
+                 "more energy over [0, 200] than the variational one; more at %d of 21 eps (from %.3g), "
+                 "failed at %d",
                  name, faster, first_faster, failed);
         ledger_add_bound(id, "Fig. 2(d) (reading, extension)", q, upto, SUSLOV_FIG2_EPS, 1, LEDGER_EXTENSION);
     }
@@ -146,8 +147,8 @@ static void ratio_over_t_claims(const suslov_model *m, const suslov_exact *ex)
     ledger_add_bound("fig2-converges-faster-t-range", "Fig. 2 caption, Conclusions", q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     snprintf(q, sizeof q,
-             "max over [0, 60] of |w_var - w| over max of |w_mid - w| at eps = 1 (%.3g over %.3g); 'much faster' "
-             "needs <= 1/10",
+             "max over [0, 60] of |w_var - w| over max of |w_mid - w| at eps = 1 (%.3g over %.3g); "
+             "'much faster' needs <= 1/10",
              max_var, max_mid);
     ledger_add_bound("fig2-converges-faster-max-ratio", "Fig. 2 caption, Conclusions", q, max_var / max_mid,
                      1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);

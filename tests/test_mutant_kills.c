@@ -55,7 +55,8 @@ static void model_checks(int b, const suslov_model *m, const double w[2])
     double f[2], g[2], J[2][2], fp[2], fm[2];
     suslov_contdyn(m, w, f);
     contdyn_printed(I, w, g);
-    CHECK(rel(f[0], g[0]) <= TOL && rel(f[1], g[1]) <= TOL, "body %d: (ContDyn) f = (%.17g, %.17g)", b, f[0], f[1]);
+    CHECK(rel(f[0], g[0]) <= TOL && rel(f[1], g[1]) <= TOL, "body %d: (ContDyn) f = (%.17g, %.17g)", b, f[0],
+          f[1]);
     const double lam = suslov_lagmult(m, w), lp = lagmult_printed(I, w);
     CHECK(rel(lam, lp) <= TOL, "body %d: (LagMult) %.17g against %.17g", b, lam, lp);
     const double e = 0.5 * (I[0] * w[0] * w[0] + (I[1] + I[3]) * w[0] * w[1] + I[4] * w[1] * w[1]);
@@ -125,8 +126,8 @@ static void so3_checks(const double w[3])
         P[i / 3][i % 3] /= 1.0 + 0.25 * n2;
         L[i / 3][i % 3] += 0.25 * w[i / 3] * w[i % 3];
     }
-    CHECK(max_diff(D, P) <= TOL && max_diff(Di, L) <= TOL, "dcay, dcay^{-1} as printed: %.3g, %.3g", max_diff(D, P),
-          max_diff(Di, L));
+    CHECK(max_diff(D, P) <= TOL && max_diff(Di, L) <= TOL, "dcay, dcay^{-1} as printed: %.3g, %.3g",
+          max_diff(D, P), max_diff(Di, L));
     so3_exp(w, R);
     exp_series(W, E);
     CHECK(max_diff(R, E) <= TOL, "exp(w^) against its series: %.3g", max_diff(R, E));
@@ -160,9 +161,21 @@ static void quaternion_checks(const double q_in[4])
     CHECK(d <= TOL, "q(R(q)) = q (q0 >= 0): %.3g", d);
 }
 
+/* The paper's body and initial state as printed in Section 5.6, entry by entry. */
+static void paper_data_checks(void)
+{
+    const double printed[9] = {1, 0.1, 0.2, 0.1, 1, 0.2, 0.2, 0.1, 1};
+    for (int i = 0; i < 9; i++)
+        CHECK(SUSLOV_PAPER_INERTIA[i] == printed[i], "the paper's I, entry %d: %.17g", i + 1,
+              SUSLOV_PAPER_INERTIA[i]);
+    CHECK(SUSLOV_PAPER_OMEGA0[0] == 0.4 && SUSLOV_PAPER_OMEGA0[1] == 0.5, "the paper's w(0) = (%.17g, %.17g)",
+          SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
+}
+
 int main(void)
 {
     printf("test_mutant_kills: seed %u\n", SEED);
+    paper_data_checks();
     for (int b = 0; b < 4; b++) {
         suslov_model m;
         char err[128];

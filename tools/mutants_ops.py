@@ -98,18 +98,12 @@ def typedef_names(paths):
                 idents = [t for t in toks[i:j] if t[0] == "ident"]
                 if idents:
                     names.add(idents[-1][1])
-                paren = [toks[x + 1][1] for x in range(i, j - 1) if toks[x][1] == "(" and toks[x + 1][1] == "*"]
-                if paren:  # typedef R (*name)(...)
-                    for x in range(i, j - 2):
-                        if toks[x][1] == "*" and toks[x + 1][0] == "ident":
-                            names.add(toks[x + 1][1])
-                            break
     return names
 
 
 def is_operand_end(tok, types):
     kind, val, _ = tok
-    return kind == "number" or val in (")", "]") or (kind == "ident" and val not in KEYWORDS and val not in types)
+    return kind == "number" or val in (")", "]") or (kind == "ident" and val not in KEYWORDS | types)
 
 
 def scaled(lit, factor):
@@ -198,12 +192,14 @@ class Scratch:
         self.env = {k: v for k, v in os.environ.items()
                     if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "SAN", "BUILD")}
         self.b = "build/mut"
-        self.cflags = ["-std=c17", "-O2", "-g0", "-Isrc"] + subprocess.run(
-            ["pkg-config", "--cflags", "gsl", "cairo", "osmesa"], capture_output=True, text=True).stdout.split()
+        pkg = ["pkg-config", "--cflags", "gsl", "cairo", "osmesa"]
+        self.cflags = ["-std=c17", "-O2", "-g0", "-Isrc"] + subprocess.run(pkg, capture_output=True,
+                                                                           text=True).stdout.split()
         self.tests = []
 
     def sh(self, args, timeout=None):
-        return subprocess.run(args, cwd=self.dir, env=self.env, capture_output=True, text=True, timeout=timeout)
+        return subprocess.run(args, cwd=self.dir, env=self.env, capture_output=True, text=True,
+                              timeout=timeout)
 
     def targets(self):
         units = sorted("%s/test_%s" % (self.b, f[5:-2]) for f in os.listdir(os.path.join(self.dir, "tests"))
@@ -214,35 +210,34 @@ class Scratch:
         targets = self.targets() if targets is None else targets
         return self.sh(["make", "-s", "BUILD=" + self.b, "-j2"] + targets).returncode == 0
 
-    def objects(self, src):
-        """The -g0 objects of the sources a file is compiled into (a header: every includer)."""
-        if src.endswith(".c"):
-            units = [src]
-        else:
-            inc = '#include "%s"' % os.path.basename(src)
-            units = sorted("src/" + f for f in os.listdir(os.path.join(self.dir, "src"))
-                           if f.endswith(".c") and inc in open(os.path.join(self.dir, "src", f)).read())
-        out, obj = [], os.path.join(self.dir, "g0.o")
-        for u in units:
-            if self.sh(["cc"] + self.cflags + ["-c", u, "-o", obj]).returncode != 0:
-                return None
-            with open(obj, "rb") as f:
-                out.append(f.read())
-        return out
+    def object(self, src):
+        """The -g0 object code of a source file, b"" for a header (its includers are many: a
+        header's mutants go straight to the build), None when it does not compile."""
+        if not src.endswith(".c"):
+            return b""
+        obj = os.path.join(self.dir, "g0.o")
+        if self.sh(["cc"] + self.cflags + ["-c", src, "-o", obj]).returncode != 0:
+            return None
+        with open(obj, "rb") as f:
+            return f.read()
 
     def setup_tests(self):
         """The test commands, quick unit tests first; each with a timeout from its own run time."""
-        units = [(os.path.basename(t), [t], [t]) for t in self.targets() if "/test_" in t]
-        cmds = units + [("test_cli_values", ["sh", "tests/test_cli_values.sh", self.b], [self.b + "/suslov"]),
-                        ("claims", [self.b + "/claims", self.b + "/claims.tsv"], [self.b + "/claims"]),
-                        ("test_cli", ["sh", "tests/test_cli.sh", self.b], [self.b + "/suslov", self.b + "/animation"])]
+        # test_mutant_kills first: it checks the formulas directly, in milliseconds
+        units = sorted(([os.path.basename(t), [t], [t]] for t in self.targets() if "/test_" in t),
+                       key=lambda u: (u[0] != "test_mutant_kills", u[0]))
+        b = self.b
+        cmds = units + [("test_cli_values", ["sh", "tests/test_cli_values.sh", b], [b + "/suslov"]),
+                        ("claims", [b + "/claims", b + "/claims.tsv"], [b + "/claims"]),
+                        ("test_cli", ["sh", "tests/test_cli.sh", b], [b + "/suslov", b + "/animation"])]
         for name, cmd, needs in cmds:
             t0 = time.time()
             r = self.sh(cmd, timeout=1800)
             secs = time.time() - t0
             base = signature(r.stdout + r.stderr) if r.returncode else None
             self.tests.append((name, cmd, needs, 30 + 5 * secs, base))
-            print("mutants-ops: baseline %s %.1f s%s" % (name, secs, "" if base is None else " (FAILS)"), flush=True)
+            print("mutants-ops: baseline %s %.1f s%s" % (name, secs, "" if base is None else " (FAILS)"),
+                  flush=True)
 
     def run_tests(self):
         """The first test that fails beyond the baseline, or None; "" when a program does not link.
@@ -279,10 +274,10 @@ def run_one(sc, mut, texts, ref_objs, eq):
     with open(target, "w") as f:
         f.write(text[:off] + rep + text[off + length:])
     try:
-        objs = sc.objects(path)
-        if objs is None:
+        obj = sc.object(path)
+        if obj is None:
             return "did-not-build", label, "does not compile"
-        if objs == ref_objs[path]:
+        if obj and obj == ref_objs[path]:
             return "equivalent", label, "same object code (cc -O2 -g0)"
         killer = sc.run_tests()
         if killer == "":
@@ -327,13 +322,13 @@ def main():
 
 
 def campaign(a, sc, muts, texts, eq):
-    print("mutants-ops: %d mutants over %s; building the scratch copy in %s" % (len(muts), " ".join(a.files), sc.dir),
-          flush=True)
+    print("mutants-ops: %d mutants over %s; building the scratch copy in %s"
+          % (len(muts), " ".join(a.files), sc.dir), flush=True)
     if not sc.build():
         print("mutants-ops: the unmutated tree does not build")
         return 2
     sc.setup_tests()
-    ref = {p: sc.objects(p) for p in a.files}
+    ref = {p: sc.object(p) for p in a.files}
     counts = {"killed": 0, "equivalent": 0, "survived": 0, "did-not-build": 0}
     lines, t0 = [], time.time()
     for n, m in enumerate(muts, 1):
