@@ -13,7 +13,8 @@
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
 #   WERROR=1        treat warnings as errors (CI)
-#   SAN=1           build into build/san with -fsanitize=address,undefined (added to any CFLAGS)
+#   SAN=1           build into build/san with -fsanitize=address,undefined,float-cast-overflow
+#                   (added to any CFLAGS; float-cast-overflow is not part of undefined)
 
 CC      ?= cc
 BUILD   ?= build
@@ -27,7 +28,7 @@ endif
 SANFLAGS :=
 ifeq ($(SAN),1)
 BUILD   := build/san
-SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SANFLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
 # Deferred (=) so that pkg-config runs after `deps` has installed the packages.
 PKGS       = gsl cairo osmesa
@@ -259,6 +260,20 @@ check-web: web
 .PHONY: mutants
 mutants: | $(DEPS_CHECK)
 	@sh tools/mutants.sh tests/build/mutants $(MUTANTS_STRIDE)
+
+# The generated operator-mutation campaign (tools/mutants_ops.py): every floating literal scaled,
+# + <-> -, * <-> /, array index +-1, comparison negated, over the library files in priority order;
+# last line "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
+# MUTANTS_OPS_SAMPLE=N runs a seeded sample of N (seed MUTANTS_OPS_SEED; CI), MUTANTS_OPS_FILES
+# a subset of the files; the full campaign writes tests/build/mutants_ops_result.txt with its commit.
+MUTANTS_OPS_SAMPLE ?= 0
+MUTANTS_OPS_SEED   ?= 20261123
+MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
+.PHONY: mutants-ops
+mutants-ops: | $(DEPS_CHECK)
+	@mkdir -p $(BUILD)
+	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
+	    --out $(MUTANTS_OPS_OUT) $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
 clean:
 	rm -rf $(BUILD)

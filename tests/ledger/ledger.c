@@ -15,7 +15,7 @@
 typedef enum { ROW_WITHIN, ROW_AT_LEAST, ROW_AT_MOST } row_kind;
 
 typedef struct {
-    char id[64], ref[96], quantity[256], verdict[16];
+    char id[64], ref[96], quantity[256], verdict[16], source[80];
     double measured, expected, tol;
     row_kind kind;
     int pass;
@@ -43,7 +43,8 @@ void ledger_number(const char *name, double value)
 /* "fig1-energy-midpoint" -> "FigOneEnergyMidpoint": TeX macro names are letters only. */
 static void macro_name(const char *id, char *out, size_t len)
 {
-    static const char *digits[10] = {"Zero", "One", "Two", "Three", "Four", "Five", "Six", "Seven", "Eight", "Nine"};
+    static const char *digits[10] = {"Zero", "One", "Two", "Three", "Four",
+                                     "Five", "Six", "Seven", "Eight", "Nine"};
     size_t n = 0;
     int up = 1;
     for (const char *c = id; *c && n + 6 < len; c++) {
@@ -133,7 +134,8 @@ static int is_lower_word(const char *s, size_t n)
 /* Lowercase words that are math, not prose. */
 static const char *const math_words[] = {"eps", "lambda", "lim", "max", "min", "sqrt", "cay", "dist", "vee",
                                          "xi", "psi", "phi", "inf", "size", "dcay", "det", "exp", "log",
-                                         "mid", "var", "row", "col", "gd", "sech", "tanh", "cos", "sin", NULL};
+                                         "mid", "var", "row", "col", "gd", "sech", "tanh", "cos", "sin",
+                                         NULL};
 
 static int in_list(const char *const *list, const char *s, size_t n)
 {
@@ -167,7 +169,8 @@ static int is_prose(const char *t, size_t n)
     size_t letters_all = 0, ok = w[0] >= 'a' && w[0] <= 'z';
     for (size_t k = 0; k < m && ok; k++) {
         letters_all += is_alpha(w[k]) != 0;
-        ok = (w[k] >= 'a' && w[k] <= 'z') || is_digit(w[k]) || (w[k] == '-' && k > 0 && k + 1 < m && w[k - 1] != '-');
+        ok = (w[k] >= 'a' && w[k] <= 'z') || is_digit(w[k]) ||
+             (w[k] == '-' && k > 0 && k + 1 < m && w[k - 1] != '-');
     }
     if (ok && letters_all >= 2 && memchr(w, '-', m) && !in_list(math_words, w, m))
         return 1;
@@ -227,234 +230,294 @@ static void tex_prose(FILE *fp, const char *t, size_t n)
     }
 }
 
+/* The state of one math span being rewritten: the text, the position, and what is open. */
+typedef struct {
+    FILE *fp;
+    const char *s;
+    size_t n, i;
+    int angle;                     /* open <e3, v> brackets */
+    int sqrt_depth[8], nsqrt;      /* the paren depth at which each open \sqrt{ closes */
+    int depth;                     /* paren depth */
+    int braces_ok, bd;             /* braces balance within the span; brace depth */
+    int sub, sup, arg;             /* scripts on the current base at brace depth 0; arg: the next atom
+                                    * is a script's argument, not a new base */
+} math_state;
+
+/* A new atom: at brace depth 0 it starts a new base unless it is a script's argument. */
+static void math_atom(math_state *m)
+{
+    if (m->bd == 0) {
+        if (m->arg)
+            m->arg = 0;
+        else
+            m->sub = m->sup = 0;
+    }
+}
+
+/* A script: a second '_' (or '^') on the same base gets an empty base {}, so that "a_b_c" cannot
+ * stop TeX with a double subscript. */
+static void math_script(math_state *m, int *flag)
+{
+    if (m->bd == 0) {
+        if (*flag) {
+            fputs("{}", m->fp);
+            m->sub = m->sup = 0;
+        }
+        *flag = 1;
+        m->arg = 1;
+    }
+}
+
+/* The TeX for a word of wl letters followed by dl digits; 0 when it is no symbol of its own. */
+static int math_word_name(const char *w, size_t wl, char *name, size_t len)
+{
+    static const char *const greek[] = {"lambda", "xi", "psi", "phi", "Phi", NULL};
+    static const char *const ops[] = {"lim", "max", "min", "det", "exp", "log", "cos", "sin", NULL};
+    if (wl == 1 && w[0] == 'w')
+        snprintf(name, len, "\\omega");
+    else if (wl == 3 && !strncmp(w, "eps", 3))
+        snprintf(name, len, "\\varepsilon");
+    else if (wl == 3 && !strncmp(w, "inf", 3))
+        snprintf(name, len, "\\infty");
+    else if (in_list(greek, w, wl) || in_list(ops, w, wl))
+        snprintf(name, len, "\\%.*s", (int)wl, w);
+    else
+        return 0;
+    return 1;
+}
+
+/* A word: w -> \omega, eps -> \varepsilon, sqrt( -> \sqrt{, " x " -> \times, w3 -> \omega_3,
+ * "w^_k" -> a hat, any other name upright. */
+static void math_word(math_state *m)
+{
+    const char *s = m->s;
+    const size_t n = m->n, i = m->i;
+    size_t j = i;
+    while (j < n && is_alpha(s[j]))
+        j++;
+    size_t k = j;
+    while (k < n && is_digit(s[k]))
+        k++;
+    if (j - i > 1) /* a name: rk8pd, magnus4 */
+        while (k < n && (is_alpha(s[k]) || is_digit(s[k])))
+            k++;
+    const char *w = s + i;
+    const size_t wl = j - i, dl = k - j;
+    char name[64];
+    if (wl == 4 && !strncmp(w, "sqrt", 4) && k < n && s[k] == '(' && dl == 0 && m->nsqrt < 8) {
+        math_atom(m);
+        fputs("\\sqrt{", m->fp);
+        m->sqrt_depth[m->nsqrt++] = m->depth++;
+        m->i = k + 1;
+        return;
+    }
+    if (math_word_name(w, wl, name, sizeof name))
+        ;
+    else if (wl == 1 && w[0] == 'x' && dl == 0 && i > 0 && s[i - 1] == ' ' && (k == n || s[k] == ' '))
+        snprintf(name, sizeof name, "\\times "); /* "1000 u x size" */
+    else if (wl == 1)
+        snprintf(name, sizeof name, "%c", w[0]);
+    else
+        snprintf(name, sizeof name, "\\mathrm{%.*s}", (int)(k - i), w);
+    /* "w^_k", "w^/2": a hat on this symbol (a '^' not followed by an exponent) */
+    const char after = k + 1 < n ? s[k + 1] : '\0';
+    const int hat = k < n && s[k] == '^' &&
+                    (k + 1 == n || (!is_alpha(after) && !is_digit(after) && after != '{' && after != '-'));
+    math_atom(m);
+    fprintf(m->fp, hat ? "\\hat{%s}" : "%s", name);
+    if (wl == 1 && dl > 0) { /* w3 -> \omega_3, I31 -> I_{31} */
+        math_script(m, &m->sub);
+        fprintf(m->fp, "_{%.*s}", (int)dl, s + j);
+        m->arg = 0;
+    }
+    m->i = k + hat;
+}
+
+/* A number: 1e-05 -> 10^{-5}, 2.5e3 -> 2.5\times10^{3}, 3x3 and 100x -> \times. */
+static void math_number(math_state *m)
+{
+    const char *s = m->s;
+    const size_t n = m->n, i = m->i;
+    math_atom(m);
+    size_t j = i;
+    while (j < n && (is_digit(s[j]) || (s[j] == '.' && j + 1 < n && is_digit(s[j + 1]))))
+        j++;
+    const int exponent = j + 1 < n && s[j] == 'e' &&
+                         (is_digit(s[j + 1]) || (s[j + 1] == '-' && j + 2 < n && is_digit(s[j + 2])));
+    if (exponent) {
+        size_t k = j + 1 + (s[j + 1] == '-');
+        while (k < n && is_digit(s[k]))
+            k++;
+        const int ex = atoi(s + j + 1);
+        if (j - i == 1 && s[i] == '1')
+            fprintf(m->fp, "10^{%d}", ex);
+        else
+            fprintf(m->fp, "%.*s\\times10^{%d}", (int)(j - i), s + i, ex);
+        if (m->bd == 0)
+            m->sub = 0, m->sup = 1;
+        m->i = k;
+        return;
+    }
+    fprintf(m->fp, "%.*s", (int)(j - i), s + i);
+    m->i = j;
+    if (j < n && s[j] == 'x' && (j + 1 == n || !is_alpha(s[j + 1]))) {
+        fputs("\\times ", m->fp);
+        m->i++;
+    }
+}
+
+/* The two-character conventions and angle brackets: 2^-10, ->, <=, >=, <e3, v>, "..".
+ * Returns 0 when the text at the position is none of them. */
+static int math_operator(math_state *m)
+{
+    const char *s = m->s;
+    const size_t n = m->n, i = m->i;
+    const char c = s[i], d = i + 1 < n ? s[i + 1] : '\0';
+    if (c == '^' && d == '-') { /* 2^-10 -> 2^{-10} */
+        size_t k = i + 2;
+        while (k < n && (is_digit(s[k]) || is_alpha(s[k])))
+            k++;
+        math_script(m, &m->sup);
+        fprintf(m->fp, "^{%.*s}", (int)(k - i - 1), s + i + 1);
+        m->arg = 0;
+        m->i = k;
+        return 1;
+    }
+    const char *tex = c == '-' && d == '>'   ? "\\to "
+                      : c == '<' && d == '=' ? "\\le "
+                      : c == '>' && d == '=' ? "\\ge "
+                      : c == '.' && d == '.' ? "\\dots "
+                                             : NULL;
+    if (tex) {
+        fputs(tex, m->fp);
+        m->i += 2;
+        return 1;
+    }
+    if (c == '<' && d != '\0' && d != ' ') {
+        fputs("\\langle ", m->fp);
+        m->angle++;
+    } else if (c == '>') {
+        fputs(m->angle > 0 ? "\\rangle " : ">", m->fp);
+        m->angle -= m->angle > 0;
+    } else
+        return 0;
+    m->i++;
+    return 1;
+}
+
+/* A space inside the span at brace depth 0. One between two words of the math ("eps 0.1",
+ * "N s u") is kept as a math space; TeX drops plain spaces and spaces relations and operators
+ * itself. "x" as times is not a word. */
+static void math_space(math_state *m)
+{
+    const char *s = m->s;
+    const size_t i = m->i;
+    const char a = s[i - 1], b = s[i + 1];
+    const int times_before = a == 'x' && (i < 2 || s[i - 2] == ' ');
+    const int times_after = b == 'x' && (i + 2 == m->n || s[i + 2] == ' ');
+    if ((is_alpha(a) || is_digit(a) || a == ')') && (is_alpha(b) || is_digit(b) || b == '(') &&
+        !times_before && !times_after)
+        fputs("\\ ", m->fp);
+    m->i++;
+}
+
+/* A brace: a TeX group when the span's braces balance, else printed. */
+static void math_brace(math_state *m, char c)
+{
+    if (!m->braces_ok) {
+        fputs(c == '{' ? "\\{" : "\\}", m->fp);
+        return;
+    }
+    if (c == '{') {
+        if (m->bd == 0 && !m->arg)
+            m->sub = m->sup = 0;
+        m->arg = m->bd == 0 ? 0 : m->arg;
+        m->bd++;
+    } else
+        m->bd--;
+    fputc(c, m->fp);
+}
+
+/* Any other character: parentheses (closing a \sqrt{), TeX specials, scripts, primes, braces. */
+static void math_char(math_state *m)
+{
+    const char c = m->s[m->i], d = m->i + 1 < m->n ? m->s[m->i + 1] : '\0';
+    FILE *fp = m->fp;
+    m->i++;
+    if (c == '(')
+        m->depth++;
+    if (c == ')' && m->nsqrt > 0 && m->sqrt_depth[m->nsqrt - 1] == m->depth - 1) {
+        fputc('}', fp);
+        m->nsqrt--;
+        m->depth--;
+        return;
+    }
+    if (c == ')')
+        m->depth -= m->depth > 0;
+    if (c == '%' || c == '&' || c == '#' || c == '$')
+        fprintf(fp, "\\%c", c);
+    else if (c == '\\')
+        fputs("\\backslash ", fp);
+    else if (c == '~')
+        fputs("\\sim ", fp);
+    else if (c == '\'') { /* a prime is a superscript: none may come before it */
+        if (m->bd == 0 && m->sup)
+            fputs("{}", fp);
+        fputc('\'', fp);
+        m->sup = 0;
+    } else if ((c == '^' || c == '_') && d != '\0' && d != ' ') {
+        math_script(m, c == '^' ? &m->sup : &m->sub);
+        fputc(c, fp);
+    } else if (c == '^')
+        fputs("\\wedge ", fp);
+    else if (c == '_')
+        fputs("\\_", fp);
+    else if (c == '{' || c == '}')
+        math_brace(m, c);
+    else {
+        if (m->bd == 0)
+            m->sub = m->sup = m->arg = 0;
+        fputc(c, fp);
+    }
+}
+
+/* Whether the braces of s[0..n) balance (never closing more than is open). */
+static int braces_balance(const char *s, size_t n)
+{
+    int bd = 0;
+    for (size_t i = 0; i < n; i++) {
+        bd += (s[i] == '{') - (s[i] == '}');
+        if (bd < 0)
+            return 0;
+    }
+    return bd == 0;
+}
+
 /* One math span (the blank-separated tokens between two prose words), rewritten for math mode. */
 static void tex_math(FILE *fp, const char *s, size_t n)
 {
-    int angle = 0, sqrt_depth[8], nsqrt = 0, depth = 0;
     size_t punct = 0; /* a trailing , ; : belongs to the sentence, outside the math */
     while (punct < n && (s[n - 1 - punct] == ',' || s[n - 1 - punct] == ';' || s[n - 1 - punct] == ':'))
         punct++;
-    n -= punct;
-    /* Braces are TeX groups only when they balance within the span; otherwise they are printed. */
-    int bd = 0, braces_ok = 1;
-    for (size_t i = 0; i < n && braces_ok; i++) {
-        bd += (s[i] == '{') - (s[i] == '}');
-        braces_ok = bd >= 0;
-    }
-    braces_ok = braces_ok && bd == 0;
-    bd = 0;
-    /* Scripts at brace depth 0: a second '_' (or '^') on the same base gets an empty base {},
-     * so that "a_b_c" cannot stop TeX with a double subscript. `arg` marks that the next atom is
-     * a script's argument, not a new base. */
-    int sub = 0, sup = 0, arg = 0;
-#define ATOM() do { if (bd == 0) { if (arg) arg = 0; else sub = sup = 0; } } while (0)
-#define SCRIPT(flag) do { if (bd == 0) { if (flag) fputs("{}", fp), sub = sup = 0; flag = 1; arg = 1; } } while (0)
+    math_state m = {.fp = fp, .s = s, .n = n - punct, .braces_ok = braces_balance(s, n - punct)};
     fputc('$', fp);
-    for (size_t i = 0; i < n;) {
-        const char c = s[i];
-        if (is_alpha(c)) {
-            size_t j = i;
-            while (j < n && is_alpha(s[j]))
-                j++;
-            size_t k = j;
-            while (k < n && is_digit(s[k]))
-                k++;
-            if (j - i > 1) /* a name: rk8pd, magnus4 */
-                while (k < n && (is_alpha(s[k]) || is_digit(s[k])))
-                    k++;
-            const char *w = s + i;
-            const size_t wl = j - i, dl = k - j;
-            char name[64];
-            if (wl == 1 && w[0] == 'w')
-                snprintf(name, sizeof name, "\\omega");
-            else if (wl == 3 && !strncmp(w, "eps", 3))
-                snprintf(name, sizeof name, "\\varepsilon");
-            else if (wl == 3 && !strncmp(w, "inf", 3))
-                snprintf(name, sizeof name, "\\infty");
-            else if ((wl == 6 && !strncmp(w, "lambda", 6)) || (wl == 2 && !strncmp(w, "xi", 2)) ||
-                     (wl == 3 && (!strncmp(w, "psi", 3) || !strncmp(w, "phi", 3) || !strncmp(w, "Phi", 3))))
-                snprintf(name, sizeof name, "\\%.*s", (int)wl, w);
-            else if (wl == 3 && (!strncmp(w, "lim", 3) || !strncmp(w, "max", 3) || !strncmp(w, "min", 3) ||
-                                 !strncmp(w, "det", 3) || !strncmp(w, "exp", 3) || !strncmp(w, "log", 3) ||
-                                 !strncmp(w, "cos", 3) || !strncmp(w, "sin", 3)))
-                snprintf(name, sizeof name, "\\%.*s", (int)wl, w);
-            else if (wl == 4 && !strncmp(w, "sqrt", 4) && k < n && s[k] == '(' && dl == 0 && nsqrt < 8) {
-                ATOM();
-                fputs("\\sqrt{", fp);
-                sqrt_depth[nsqrt++] = depth++;
-                i = k + 1;
-                continue;
-            } else if (wl == 1 && w[0] == 'x' && dl == 0 && i > 0 && s[i - 1] == ' ' && (k == n || s[k] == ' '))
-                snprintf(name, sizeof name, "\\times "); /* "1000 u x size" */
-            else if (wl == 1)
-                snprintf(name, sizeof name, "%c", w[0]);
-            else
-                snprintf(name, sizeof name, "\\mathrm{%.*s}", (int)(k - i), w);
-            i = k;
-            /* "w^_k", "w^/2": a hat on this symbol (a '^' not followed by an exponent) */
-            const int hat = i < n && s[i] == '^' &&
-                            (i + 1 == n || (!is_alpha(s[i + 1]) && !is_digit(s[i + 1]) && s[i + 1] != '{' && s[i + 1] != '-'));
-            ATOM();
-            fprintf(fp, hat ? "\\hat{%s}" : "%s", name);
-            if (wl == 1 && dl > 0) { /* w3 -> \omega_3, I31 -> I_{31} */
-                SCRIPT(sub);
-                fprintf(fp, "_{%.*s}", (int)dl, s + j);
-                arg = 0;
-            }
-            i += hat;
-            continue;
-        }
-        if (is_digit(c)) {
-            ATOM();
-            size_t j = i;
-            while (j < n && (is_digit(s[j]) || (s[j] == '.' && j + 1 < n && is_digit(s[j + 1]))))
-                j++;
-            if (j < n && s[j] == 'e' && j + 1 < n && (is_digit(s[j + 1]) || (s[j + 1] == '-' && j + 2 < n && is_digit(s[j + 2])))) {
-                size_t k = j + 1 + (s[j + 1] == '-');
-                while (k < n && is_digit(s[k]))
-                    k++;
-                const int ex = atoi(s + j + 1); /* 1e-05 -> 10^{-5} */
-                if (j - i == 1 && s[i] == '1')
-                    fprintf(fp, "10^{%d}", ex);
-                else
-                    fprintf(fp, "%.*s\\times10^{%d}", (int)(j - i), s + i, ex);
-                if (bd == 0)
-                    sub = 0, sup = 1;
-                i = k;
-            } else {
-                fprintf(fp, "%.*s", (int)(j - i), s + i);
-                i = j;
-                if (i < n && s[i] == 'x' && (i + 1 == n || !is_alpha(s[i + 1]))) { /* 3x3, 100x */
-                    fputs("\\times ", fp);
-                    i++;
-                }
-            }
-            continue;
-        }
-        if (c == '^' && i + 1 < n && s[i + 1] == '-') { /* 2^-10 -> 2^{-10} */
-            size_t k = i + 2;
-            while (k < n && (is_digit(s[k]) || is_alpha(s[k])))
-                k++;
-            SCRIPT(sup);
-            fprintf(fp, "^{%.*s}", (int)(k - i - 1), s + i + 1);
-            arg = 0;
-            i = k;
-            continue;
-        }
-        if (c == '-' && i + 1 < n && s[i + 1] == '>') {
-            fputs("\\to ", fp);
-            i += 2;
-            continue;
-        }
-        if (c == '<' && i + 1 < n && s[i + 1] == '=') {
-            fputs("\\le ", fp);
-            i += 2;
-            continue;
-        }
-        if (c == '>' && i + 1 < n && s[i + 1] == '=') {
-            fputs("\\ge ", fp);
-            i += 2;
-            continue;
-        }
-        if (c == '<' && i + 1 < n && s[i + 1] != ' ') {
-            fputs("\\langle ", fp);
-            angle++;
-            i++;
-            continue;
-        }
-        if (c == '>') {
-            fputs(angle > 0 ? "\\rangle " : ">", fp);
-            angle -= angle > 0;
-            i++;
-            continue;
-        }
-        if (c == '.' && i + 1 < n && s[i + 1] == '.') {
-            fputs("\\dots ", fp);
-            i += 2;
-            continue;
-        }
-        /* A space between two words of the math ("eps 0.1", "N s u") is kept as a math space;
-         * TeX drops plain spaces and spaces relations and operators itself. "x" as times is not
-         * a word. */
-        if (c == ' ' && bd == 0 && i > 0 && i + 1 < n) {
-            const char a = s[i - 1], b = s[i + 1];
-            const int times_before = a == 'x' && (i < 2 || s[i - 2] == ' ');
-            const int times_after = b == 'x' && (i + 2 == n || s[i + 2] == ' ');
-            if ((is_alpha(a) || is_digit(a) || a == ')') && (is_alpha(b) || is_digit(b) || b == '(') && !times_before &&
-                !times_after)
-                fputs("\\ ", fp);
-            i++;
-            continue;
-        }
-        if (c == '(')
-            depth++;
-        if (c == ')' && nsqrt > 0 && sqrt_depth[nsqrt - 1] == depth - 1) {
-            fputc('}', fp);
-            nsqrt--;
-            depth--;
-            i++;
-            continue;
-        }
-        if (c == ')')
-            depth -= depth > 0;
-        switch (c) {
-        case '%': case '&': case '#': case '$': fprintf(fp, "\\%c", c); break;
-        case '\\': fputs("\\backslash ", fp); break;
-        case '~': fputs("\\sim ", fp); break;
-        case '\'': /* a prime is a superscript: none may come before it */
-            if (bd == 0 && sup)
-                fputs("{}", fp);
-            fputc('\'', fp);
-            sup = 0;
-            break;
-        case '^':
-            if (i + 1 < n && s[i + 1] != ' ') {
-                SCRIPT(sup);
-                fputc('^', fp);
-            } else {
-                fputs("\\wedge ", fp);
-            }
-            break;
-        case '_':
-            if (i + 1 < n && s[i + 1] != ' ') {
-                SCRIPT(sub);
-                fputc('_', fp);
-            } else {
-                fputs("\\_", fp);
-            }
-            break;
-        case '{':
-            if (!braces_ok) {
-                fputs("\\{", fp);
-                break;
-            }
-            if (bd == 0 && !arg)
-                sub = sup = 0;
-            arg = bd == 0 ? 0 : arg;
-            bd++;
-            fputc('{', fp);
-            break;
-        case '}':
-            if (!braces_ok) {
-                fputs("\\}", fp);
-                break;
-            }
-            bd--;
-            fputc('}', fp);
-            break;
-        default:
-            if (bd == 0)
-                sub = sup = arg = 0;
-            fputc(c, fp);
-        }
-        i++;
+    while (m.i < m.n) {
+        const char c = s[m.i];
+        if (is_alpha(c))
+            math_word(&m);
+        else if (is_digit(c))
+            math_number(&m);
+        else if (math_operator(&m))
+            ;
+        else if (c == ' ' && m.bd == 0 && m.i > 0 && m.i + 1 < m.n)
+            math_space(&m);
+        else
+            math_char(&m);
     }
-#undef ATOM
-#undef SCRIPT
-    while (nsqrt-- > 0)
+    while (m.nsqrt-- > 0)
         fputc('}', fp);
     fputc('$', fp);
-    fprintf(fp, "%.*s", (int)punct, s + n);
+    fprintf(fp, "%.*s", (int)punct, s + m.n);
 }
 
 /* A whole ASCII string (quantity or reference): prose words as text, the rest as math. */
@@ -529,8 +592,8 @@ static void tex_ref(FILE *fp, const char *ref)
     for (const char *s = buf; *s;) {
         if (is_alpha(*s)) {
             const char *t = s;
-            while (is_alpha(*s) || is_digit(*s) || *s == ':' || (*s == '-' && (is_alpha(s[1]) || is_digit(s[1]))) ||
-                   (*s == '.' && is_digit(s[1])))
+            while (is_alpha(*s) || is_digit(*s) || *s == ':' ||
+                   (*s == '-' && (is_alpha(s[1]) || is_digit(s[1]))) || (*s == '.' && is_digit(s[1])))
                 s++;
             fprintf(fp, "\\PaperRefOr{%.*s}", (int)(s - t), t);
             continue;
@@ -618,8 +681,8 @@ static int same_group(const ledger_row *a, const ledger_row *b, const char *key)
 {
     char kb[64];
     group_key(b->id, kb, sizeof kb);
-    return a->kind == ROW_WITHIN && b->kind == ROW_WITHIN && strcmp(key, kb) == 0 && strcmp(a->ref, b->ref) == 0 &&
-           strcmp(a->verdict, b->verdict) == 0 && a->pass == b->pass;
+    return a->kind == ROW_WITHIN && b->kind == ROW_WITHIN && strcmp(key, kb) == 0 &&
+           strcmp(a->ref, b->ref) == 0 && strcmp(a->verdict, b->verdict) == 0 && a->pass == b->pass;
 }
 
 /* The summary table: the lines that test the paper (no extensions), one row per claim. Lines
@@ -632,9 +695,11 @@ static void write_summary(FILE *fp)
     fputs("\\begin{longtable}{@{}>{\\raggedright}p{0.29\\linewidth} >{\\raggedright}p{0.2\\linewidth} "
           ">{\\raggedright}p{0.2\\linewidth} >{\\raggedright}p{0.17\\linewidth} "
           ">{\\raggedright\\arraybackslash}p{0.06\\linewidth}@{}}\n"
-          "\\caption{Every ledger line that tests a statement of the paper, one row per claim; a claim tested on "
+          "\\caption{Every ledger line that tests a statement of the paper, one row per claim; "
+          "a claim tested on "
           "$n$ methods of the registry is one row ($\\times n$). $m$: measured; $e$, $t$: expected value and "
-          "tolerance; $b$: the bound of a one-sided claim, usually the other method's value.}\\label{tab:summary}\\\\\n"
+          "tolerance; $b$: the bound of a one-sided claim, usually the other method's value.}"
+          "\\label{tab:summary}\\\\\n"
           "\\toprule claim (ledger lines) & in the paper & measured $m$ & test & repro\\-duced?\\\\\n"
           "\\midrule\\endfirsthead\n"
           "\\toprule claim (ledger lines) & in the paper & measured $m$ & test & repro\\-duced?\\\\\n"
@@ -718,10 +783,12 @@ static int write_tex(const char *dir)
     }
     /* The counts the text quotes: lines, checks, verdicts. */
     fprintf(af.fp,
-            "\\newcommand{\\LedgerLines}{%d}\n\\newcommand{\\LedgerFailed}{%d}\n\\newcommand{\\LedgerPassed}{%d}\n"
+            "\\newcommand{\\LedgerLines}{%d}\n\\newcommand{\\LedgerFailed}{%d}\n"
+            "\\newcommand{\\LedgerPassed}{%d}\n"
             "\\newcommand{\\LedgerReproduced}{%d}\n\\newcommand{\\LedgerNotReproduced}{%d}\n"
             "\\newcommand{\\LedgerExtension}{%d}\n\\newcommand{\\LedgerPaperLines}{%d}\n",
-            nrows, failed, nrows - failed, reproduced, not_reproduced, extension, reproduced + not_reproduced);
+            nrows, failed, nrows - failed, reproduced, not_reproduced, extension,
+            reproduced + not_reproduced);
     if (atomic_file_commit(&af, err, sizeof err) != 0)
         return -1;
 
@@ -745,8 +812,15 @@ static int write_tex(const char *dir)
     return atomic_file_commit(&af, err, sizeof err);
 }
 
-static void add_row(const char *id, const char *paper_ref, const char *quantity, double measured,
-                    double expected, double tol, row_kind kind, int holds, ledger_assert truth, int inf_ok)
+/* Where a line was recorded: "tests/FILE.c:LINE". */
+typedef struct {
+    const char *file;
+    int line;
+} ledger_source;
+
+static void add_row(ledger_source src, const char *id, const char *paper_ref, const char *quantity,
+                    double measured, double expected, double tol, row_kind kind, int holds,
+                    ledger_assert truth, int inf_ok)
 {
     if (nrows == LEDGER_MAX) {
         fprintf(stderr, "ledger: more than %d lines\n", LEDGER_MAX);
@@ -756,6 +830,7 @@ static void add_row(const char *id, const char *paper_ref, const char *quantity,
     snprintf(r->id, sizeof r->id, "%s", id);
     snprintf(r->ref, sizeof r->ref, "%s", paper_ref);
     snprintf(r->quantity, sizeof r->quantity, "%s", quantity);
+    snprintf(r->source, sizeof r->source, "%s:%d", src.file, src.line);
     r->measured = measured;
     r->expected = expected;
     r->tol = tol;
@@ -777,29 +852,45 @@ void ledger_die(const char *what)
     exit(2);
 }
 
-void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
-                double expected, double tol, ledger_assert truth)
+void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref, const char *quantity,
+                   double measured, double expected, double tol, ledger_assert truth)
 {
-    add_row(id, paper_ref, quantity, measured, expected, tol, ROW_WITHIN, fabs(measured - expected) <= tol, truth, 0);
+    add_row((ledger_source){file, line}, id, paper_ref, quantity, measured, expected, tol, ROW_WITHIN,
+            fabs(measured - expected) <= tol, truth, 0);
 }
 
-static void add_bound(const char *id, const char *paper_ref, const char *quantity, double measured, double bound,
-                      int at_least, ledger_assert truth, int inf_ok)
+static void add_bound(ledger_source src, const char *id, const char *paper_ref, const char *quantity,
+                      double measured, double bound, int at_least, ledger_assert truth, int inf_ok)
 {
-    add_row(id, paper_ref, quantity, measured, bound, 0.0, at_least ? ROW_AT_LEAST : ROW_AT_MOST,
+    add_row(src, id, paper_ref, quantity, measured, bound, 0.0, at_least ? ROW_AT_LEAST : ROW_AT_MOST,
             at_least ? measured >= bound : measured <= bound, truth, inf_ok);
 }
 
-void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
-                      double bound, int at_least, ledger_assert truth)
+void ledger_add_bound_at(const char *file, int line, const char *id, const char *paper_ref,
+                         const char *quantity, double measured, double bound, int at_least,
+                         ledger_assert truth)
 {
-    add_bound(id, paper_ref, quantity, measured, bound, at_least, truth, 0);
+    add_bound((ledger_source){file, line}, id, paper_ref, quantity, measured, bound, at_least, truth, 0);
 }
 
-void ledger_add_bound_unbounded(const char *id, const char *paper_ref, const char *quantity, double measured,
-                                double bound, int at_least, ledger_assert truth)
+void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, const char *paper_ref,
+                                   const char *quantity, double measured, double bound, int at_least,
+                                   ledger_assert truth)
 {
-    add_bound(id, paper_ref, quantity, measured, bound, at_least, truth, 1);
+    add_bound((ledger_source){file, line}, id, paper_ref, quantity, measured, bound, at_least, truth, 1);
+}
+
+/* The test column: the check in words, "<= b", ">= b" or "|x - e| <= tol" with the numbers. */
+static void test_text(const ledger_row *r, char *out, size_t len)
+{
+    if (r->kind == ROW_AT_LEAST)
+        snprintf(out, len, ">= %.6g", r->expected);
+    else if (r->kind == ROW_AT_MOST)
+        snprintf(out, len, "<= %.6g", r->expected);
+    else if (r->expected == 0.0)
+        snprintf(out, len, "|x| <= %.3g", r->tol);
+    else
+        snprintf(out, len, "|x - %.6g| <= %.3g", r->expected, r->tol);
 }
 
 int ledger_finish(const char *tsv_path)
@@ -811,10 +902,14 @@ int ledger_finish(const char *tsv_path)
         fprintf(stderr, "ledger: %s\n", err);
         return -1;
     }
-    fputs("id\tpaper_ref\tquantity\tmeasured\texpected\ttolerance\tverdict\n", af.fp);
-    for (int i = 0; i < nrows; i++)
-        fprintf(af.fp, "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s\n", rows[i].id, rows[i].ref, rows[i].quantity,
-                rows[i].measured, rows[i].expected, rows[i].tol, rows[i].verdict);
+    char test[96];
+    fputs("id\tpaper_ref\tquantity\tmeasured\texpected\ttolerance\tverdict\ttest\tsource\n", af.fp);
+    for (int i = 0; i < nrows; i++) {
+        test_text(&rows[i], test, sizeof test);
+        const ledger_row *r = &rows[i];
+        fprintf(af.fp, "%s\t%s\t%s\t%.6g\t%.6g\t%.3g\t%s\t%s\t%s\n", r->id, r->ref, r->quantity, r->measured,
+                r->expected, r->tol, r->verdict, test, r->source);
+    }
     if (atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "ledger: %s\n", err);
         return -1;
@@ -830,14 +925,14 @@ int ledger_finish(const char *tsv_path)
         fprintf(stderr, "ledger: writing the LaTeX files next to %s failed\n", tsv_path);
         return -1;
     }
-    printf("\n%-4s  %-44s %-14s %-14s %-9s %-14s  %s\n", "", "claim", "measured", "expected", "tol",
-           "verdict", "paper");
+    printf("\n%-4s  %-44s %-14s %-26s %-14s  %s\n", "", "claim", "measured", "test", "verdict", "paper");
     for (int i = 0; i < nrows; i++) {
         const ledger_row *r = &rows[i];
         failed += !r->pass;
-        printf("%-4s  %-44s %-14.6g %-14.6g %-9.2g %-14s  %s\n", r->pass ? "PASS" : "FAIL", r->id,
-               r->measured, r->expected, r->tol, r->verdict, r->ref);
-        printf("      %s\n", r->quantity);
+        test_text(r, test, sizeof test);
+        printf("%-4s  %-44s %-14.6g %-26s %-14s  %s\n", r->pass ? "PASS" : "FAIL", r->id, r->measured, test,
+               r->verdict, r->ref);
+        printf("      %s  [%s]\n", r->quantity, r->source);
     }
     printf("\nledger written to %s\nclaims: %d passed, %d failed\n", tsv_path, nrows - failed, failed);
     return failed;

@@ -1,8 +1,10 @@
 /* The claims ledger: every claim of the paper we measure, with the number, what the paper
  * (or, for an extension, our own analysis) expects, the tolerance, and the verdict. Written
  * to build/claims.tsv with the columns
- *     id  paper_ref  quantity  measured  expected  tolerance  verdict
- * and printed as a table with a PASS/FAIL check per line. */
+ *     id  paper_ref  quantity  measured  expected  tolerance  verdict  test  source
+ * where `test` is the check in words ("<= b", ">= b", "|x - e| <= tol" with the numbers) and
+ * `source` the file and line of the call that recorded the line (the functions below are macros
+ * that pass __FILE__ and __LINE__); printed as a table with a PASS/FAIL check per line. */
 #ifndef SUSLOV_LEDGER_H
 #define SUSLOV_LEDGER_H
 
@@ -15,19 +17,24 @@ typedef enum {
 /* Records one line. The verdict column follows from the numbers alone ("reproduced" or "not
  * reproduced" for a claim of the paper, "extension" otherwise); the check passes when it is
  * what `truth` asserts, which the caller states and justifies next to the call. */
-void ledger_add(const char *id, const char *paper_ref, const char *quantity, double measured,
-                double expected, double tol, ledger_assert truth);
+#define ledger_add(...) ledger_add_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref, const char *quantity,
+                   double measured, double expected, double tol, ledger_assert truth);
 
 /* The same for a one-sided claim: it holds when measured >= bound (at_least) or measured <=
  * bound (otherwise); the TSV shows the bound as "expected" and tolerance 0, and the quantity
  * text must say which side is claimed. */
-void ledger_add_bound(const char *id, const char *paper_ref, const char *quantity, double measured,
-                      double bound, int at_least, ledger_assert truth);
+#define ledger_add_bound(...) ledger_add_bound_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_add_bound_at(const char *file, int line, const char *id, const char *paper_ref,
+                         const char *quantity, double measured, double bound, int at_least,
+                         ledger_assert truth);
 
 /* The same, for a measurement that may be +-infinity meaning "beyond every value tested" (a
  * stability limit that is never reached). Every other line fails on an infinite value. */
-void ledger_add_bound_unbounded(const char *id, const char *paper_ref, const char *quantity, double measured,
-                                double bound, int at_least, ledger_assert truth);
+#define ledger_add_bound_unbounded(...) ledger_add_bound_unbounded_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, const char *paper_ref,
+                                   const char *quantity, double measured, double bound, int at_least,
+                                   ledger_assert truth);
 
 /* Stops the claims program (exit 2) when a measurement a claim needs could not be made, with
  * "claims: WHAT failed" on stderr: no line is recorded for a run that did not happen. */
