@@ -38,7 +38,10 @@ ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
 FIG_SRC  := $(wildcard src/figure_*.c)
 FIGS     := $(FIG_SRC:src/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
-LIB_SRC  := $(filter-out src/suslov.c src/bench.c src/animation.c $(FIG_SRC),$(wildcard src/*.c))
+# The command line of suslov (its option table, parser, progress line) is not library code.
+CLI_SRC  := src/suslov_cli.c src/cli_options.c src/progress.c
+CLI_OBJ  := $(CLI_SRC:src/%.c=$(BUILD)/obj/%.o)
+LIB_SRC  := $(filter-out src/suslov.c src/bench.c src/animation.c $(CLI_SRC) $(FIG_SRC),$(wildcard src/*.c))
 LIB_OBJ  := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libsuslov.a
 TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
@@ -65,7 +68,7 @@ $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
-$(BUILD)/suslov: $(BUILD)/obj/suslov.o $(LIB)
+$(BUILD)/suslov: $(BUILD)/obj/suslov.o $(CLI_OBJ) $(LIB)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
 # A program that draws files depends on the objects it links, not on the whole archive: the
