@@ -16,6 +16,13 @@
 
 CC      ?= cc
 BUILD   ?= build
+# An empty BUILD= would write to /obj and /suslov; a BUILD with a space breaks make's own lists.
+ifeq ($(strip $(BUILD)),)
+$(error BUILD is empty: give a directory, e.g. BUILD=build)
+endif
+ifneq ($(words $(BUILD)),1)
+$(error BUILD='$(BUILD)' holds a space: make cannot name targets inside it)
+endif
 CFLAGS  ?= -O2 -g
 WARN    := -std=c17 -Wall -Wextra -Wshadow -Wstrict-prototypes
 ifeq ($(WERROR),1)
@@ -48,7 +55,7 @@ TESTS    := $(patsubst tests/%.c,$(BUILD)/%,$(wildcard tests/test_*.c))
 CLAIMS   := $(BUILD)/claims
 
 .PHONY: all deps deps-check deps-figures deps-paper deps-bench check figures animation bench paper clean distclean
-all: $(BUILD)/suslov $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 # What each goal needs (tools/deps.sh PROFILE): check = compiler, GSL, Cairo, OSMesa, fonts;
 # figures adds ffmpeg; paper adds TeX. Objects wait only on deps-check.
@@ -67,6 +74,15 @@ $(BUILD)/tobj/%.o: tests/%.c | deps-check
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
+
+# --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball).
+# The stamp changes only when the commit does, so only suslov_cli.o is rebuilt then.
+SUSLOV_VERSION = $(shell git -C "$(CURDIR)" describe --always --dirty 2>/dev/null || echo unknown)
+$(BUILD)/version.stamp: FORCE
+	@mkdir -p $(@D)
+	@v='$(SUSLOV_VERSION)'; [ "$$(cat $@ 2>/dev/null)" = "$$v" ] || echo "$$v" >$@
+$(BUILD)/obj/suslov_cli.o: $(BUILD)/version.stamp
+$(BUILD)/obj/suslov_cli.o: ALL_CFLAGS += -DSUSLOV_VERSION='"$(shell cat $(BUILD)/version.stamp 2>/dev/null)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/suslov.o $(CLI_OBJ) $(LIB)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
@@ -103,12 +119,16 @@ figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
+# Every figure output is written atomically by its program (src/atomic_file.c), so an
+# interrupted make must never delete one: a half-made file cannot exist.
+.PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
+           figures/attitude.txt data/attitude.csv
 figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-figures
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
 
 check: all
-	@SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	@SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS="suppressions='$(CURDIR)/tests/lsan.supp':print_suppressions=0" \
 	    sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD)
 
 # The fuzzer (tests/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
@@ -118,7 +138,7 @@ T    ?= 60
 SEED ?= 20261122
 .PHONY: fuzz
 fuzz: $(BUILD)/suslov $(BUILD)/fuzz
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
+	@LSAN_OPTIONS="suppressions='$(CURDIR)/tests/lsan.supp':print_suppressions=0" $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
 
 $(BUILD)/fuzz: $(BUILD)/tobj/fuzz.o
 	$(CC) $(ALL_LDFLAGS) $^ -o $@
@@ -204,6 +224,31 @@ check-web: web
 .PHONY: mutants
 mutants: | deps-check
 	@sh tools/mutants.sh tests/mutants $(MUTANTS_STRIDE)
+
+# The manual page, written by suslov itself from the option table that --help prints.
+$(BUILD)/man/suslov.1: $(BUILD)/suslov
+	@mkdir -p $(@D)
+	$< --man >$@.tmp && mv $@.tmp $@
+
+# make install PREFIX=DIR (and DESTDIR= for staging): the command, its manual page, and the
+# library for C programs: libsuslov.a, its headers in include/suslov and suslov.pc, so that
+# `cc prog.c $$(pkg-config --cflags --libs suslov)` builds against it.
+PREFIX ?= /usr/local
+INSTALL_H := $(filter-out $(CLI_SRC:.c=.h),$(wildcard src/*.h))
+.PHONY: install
+install: $(BUILD)/suslov $(LIB) $(BUILD)/man/suslov.1
+	@d="$(DESTDIR)$(PREFIX)"; set -e; \
+	    install -d "$$d/bin" "$$d/lib/pkgconfig" "$$d/include/suslov" "$$d/share/man/man1"; \
+	    install -m 755 $(BUILD)/suslov "$$d/bin/suslov"; \
+	    install -m 644 $(LIB) "$$d/lib/libsuslov.a"; \
+	    install -m 644 $(INSTALL_H) "$$d/include/suslov/"; \
+	    install -m 644 $(BUILD)/man/suslov.1 "$$d/share/man/man1/suslov.1"; \
+	    { echo 'prefix=$(PREFIX)'; echo 'libdir=$${prefix}/lib'; echo 'includedir=$${prefix}/include/suslov'; \
+	      echo; echo 'Name: suslov'; \
+	      echo 'Description: integrators of the Suslov problem (Jimenez & Scheurle 2018)'; \
+	      echo 'Version: $(SUSLOV_VERSION)'; echo 'Requires: $(PKGS)'; \
+	      echo 'Cflags: -I$${includedir}'; echo 'Libs: -L$${libdir} -lsuslov -lm'; } >"$$d/lib/pkgconfig/suslov.pc"; \
+	    echo "installed into $$d"
 
 clean:
 	rm -rf $(BUILD)

@@ -191,6 +191,8 @@ static void help_lines(FILE *fp, const char *text, const char *first, const char
     }
 }
 
+static void roff_text(FILE *fp, const char *s, int len);
+
 void cli_line(FILE *fp, int man, const char *fmt, ...)
 {
     char buf[1024];
@@ -202,9 +204,8 @@ void cli_line(FILE *fp, int man, const char *fmt, ...)
         fprintf(fp, "%22s%s\n", "", buf);
         return;
     }
-    for (const char *p = buf; *p; p++)
-        fputs(*p == '-' ? "\\-" : *p == '\\' ? "\\e" : (char[2]){*p, 0}, fp);
-    fputs("\n.br\n", fp);
+    roff_text(fp, buf, (int)strlen(buf));
+    fputc('\n', fp);
 }
 
 void cli_help(const cli_spec *spec, FILE *fp)
@@ -280,9 +281,10 @@ void cli_man(const cli_spec *spec, const char *version, FILE *fp)
         }
         fputc('\n', fp);
         roff_body(fp, o->help);
-        if (o->more) {
-            fputs(".br\n", fp);
+        if (o->more) { /* a list: one entry a line, unfilled */
+            fputs(".nf\n", fp);
             o->more(fp, 1);
+            fputs(".fi\n", fp);
         }
     }
     for (int i = 0; i < spec->nsections; i++) {

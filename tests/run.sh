@@ -23,6 +23,9 @@ for t in "$B"/test_*; do
 done
 run test_cli sh tests/test_cli.sh "$B"
 run test_cli_values sh tests/test_cli_values.sh "$B"
+run test_cli_promises sh tests/test_cli_promises.sh "$B"
+run test_cli_conventions sh tests/test_cli_conventions.sh "$B"
+run test_cli_install sh tests/test_cli_install.sh "$B"
 run test_animation_errors sh tests/test_animation_errors.sh "$B"
 run make_deps sh tests/make_deps.sh "$B"
 run eqmap sh tools/eqmap.sh check
