@@ -99,6 +99,26 @@ else
     skip "signals: env --default-signal is missing"
 fi
 
+# 5. a figure program killed while writing leaves no temporary (it writes through the atomic
+# file, whose named fallback removes it on a signal), and make never deletes a figure output
+if [ -x "$B/figure_fig1" ] && env --default-signal true 2>/dev/null; then
+    mkdir -p "$T/fig" "$T/dat"
+    (SUSLOV_NO_O_TMPFILE=1 exec env --default-signal "$B/figure_fig1" "$T/fig" "$T/dat") >/dev/null 2>&1 &
+    pid=$!
+    i=0
+    while [ $i -lt 3000 ] && ! ls -A "$T/fig" "$T/dat" 2>/dev/null | grep -q '\.tmp\.'; do sleep 0.01; i=$((i + 1)); done
+    caught=$(ls -A "$T/fig" "$T/dat" | grep -c '\.tmp\.')
+    kill -INT $pid; { wait $pid; } 2>/dev/null; rc=$?
+    left=$(ls -A "$T/fig" "$T/dat" | grep -c '\.tmp\.')
+    check "figure_fig1 interrupted by SIGINT while a temporary existed ($caught): status 130, no temporary left ($left)" \
+        test "$caught" -ge 1 -a "$rc" = 130 -a "$left" = 0
+fi
+prec=$(make -s -p -q -f Makefile BUILD="$B" nothing 2>/dev/null | sed -n 's/^\.PRECIOUS: //p')
+check "make keeps an interrupted figure's outputs: .PRECIOUS holds figures/%.pdf, figures/%.png, data/%.csv ($prec)" \
+    sh -c "echo '$prec' | grep -q 'figures/%.pdf' && echo '$prec' | grep -q 'figures/%.png' && echo '$prec' | grep -q 'data/%.csv'"
+make -n BUILD= all >/dev/null 2>"$T/err"; rc=$?
+check "make BUILD= is refused ($(cat "$T/err"))" sh -c "test $rc != 0 && grep -q 'BUILD is empty' '$T/err'"
+
 # 7. exact for any t and w0: the scaling law w(t; w0) = c w(c t; w0 / c), R(t; w0) = R(c t; w0 / c)
 # ((ContDyn)'s field is homogeneous quadratic), against the paper's w0 at t = 0.5 and 2.5
 last() { "$S" --no-header --method exact --eps "$1" --steps 1 --omega0 "$2" | tail -1; }
