@@ -10,6 +10,7 @@
  * waited for, and the temporary video and frame files are removed. */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
+#include "plot.h"
 #include "driver.h"
 #include "exact.h"
 #include "fig_output.h"
@@ -38,8 +39,6 @@
 
 static volatile pid_t video_pid = -1;      /* the running ffmpeg, or -1 */
 static char video_tmp[4200];                /* the video ffmpeg writes, renamed on success */
-static char frame_tmp[4200];                /* the PNG being written, renamed when complete */
-static volatile sig_atomic_t frame_tmp_live;
 
 /* Async-signal-safe: kill(), waitpid(), unlink(). SIGKILL, not SIGTERM: on SIGTERM ffmpeg
  * finishes its output file, which could then appear after the unlink. */
@@ -51,8 +50,7 @@ static void on_signal(int sig)
     }
     if (video_tmp[0])
         unlink(video_tmp);
-    if (frame_tmp_live)
-        unlink(frame_tmp);
+    atomic_file_remove_temporaries(); /* a frame being written (named fallback) */
     signal(sig, SIG_DFL);
     raise(sig);
 }
@@ -259,20 +257,15 @@ static void label_frame(uint32_t *px, int W, int H, double time)
     cairo_surface_destroy(s);
 }
 
-/* Writes the surface to path through a temporary name (removed on failure or a signal). */
+/* Writes the surface to path through the atomic file (plot.h): complete or not at all. */
 static int write_surface_png(cairo_surface_t *s, const char *path)
 {
-    frame_tmp_live = 0;
-    snprintf(frame_tmp, sizeof frame_tmp, "%s.tmp.%ld", path, (long)getpid());
-    frame_tmp_live = 1;
-    const cairo_status_t st = cairo_surface_write_to_png(s, frame_tmp);
-    const int ok = st == CAIRO_STATUS_SUCCESS && rename(frame_tmp, path) == 0;
-    if (!ok) {
-        fprintf(stderr, "animation: writing %s failed\n", path);
-        unlink(frame_tmp);
+    char err[512];
+    if (plot_write_surface_png(s, path, err, sizeof err) != 0) {
+        fprintf(stderr, "animation: %s\n", err);
+        return -1;
     }
-    frame_tmp_live = 0;
-    return ok ? 0 : -1;
+    return 0;
 }
 
 static int write_png(const uint32_t *px, int W, int H, const char *path)

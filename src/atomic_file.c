@@ -30,11 +30,16 @@ static volatile sig_atomic_t slot_used[SLOTS];
 /* Async-signal-safe: unlink, sigaction and raise only. The signal is blocked while its
  * handler runs, so raise() leaves it pending; it is delivered with the default action on
  * return and the process ends with the conventional status 128 + signo. */
-static void cleanup_and_die(int sig)
+void atomic_file_remove_temporaries(void)
 {
     for (int i = 0; i < SLOTS; i++)
         if (slot_used[i])
             unlink(slot_name[i]);
+}
+
+static void cleanup_and_die(int sig)
+{
+    atomic_file_remove_temporaries();
     struct sigaction dfl;
     memset(&dfl, 0, sizeof dfl);
     dfl.sa_handler = SIG_DFL;

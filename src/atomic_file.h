@@ -51,5 +51,8 @@ int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen
 int atomic_file_commit(atomic_file *af, char *err, size_t errlen);
 /* Closes and removes the temporary file; the final path is left untouched. */
 void atomic_file_abort(atomic_file *af);
+/* Removes every named temporary now open; async-signal-safe, for a program that handles a
+ * signal itself (its handler then takes precedence over this file's). */
+void atomic_file_remove_temporaries(void);
 
 #endif

@@ -502,6 +502,20 @@ static int write_one(const char *path, page_writer wr, double width, double heig
     return atomic_file_commit(&af, err, errlen);
 }
 
+int plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
+{
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, errlen) != 0)
+        return -1;
+    const cairo_status_t st = cairo_surface_write_to_png_stream(s, write_to, af.fp);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        atomic_file_abort(&af);
+        snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
+        return -1;
+    }
+    return atomic_file_commit(&af, err, errlen);
+}
+
 int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
                void *ctx, char *err, size_t errlen)
 {
