@@ -165,9 +165,12 @@ static int read_config(const char *path, anim_config *c)
         }
     }
     fclose(fp);
-    if (c->width < 48 || c->width > 4096 || c->height < 27 || c->height > 4096 || c->width % 2 || c->height % 2 ||
-        c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) || !(c->eps > 0)) {
-        fprintf(stderr, "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n", path);
+    if (c->width < 48 || c->width > 4096 || c->height < 27 || c->height > 4096 || c->width % 2 ||
+        c->height % 2 || c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) ||
+        !(c->eps > 0)) {
+        fprintf(stderr,
+                "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n",
+                path);
         return -1;
     }
     return 0;
@@ -235,7 +238,8 @@ static const char *const LABELS[3] = {"exact", "midpoint, \xce\xb5 = 1", "variat
 
 static void label_frame(uint32_t *px, int W, int H, double time)
 {
-    cairo_surface_t *s = cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+    cairo_surface_t *s =
+        cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
     cairo_t *cr = cairo_create(s);
     const double fs = H / 18.0;
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
@@ -270,7 +274,8 @@ static int write_surface_png(cairo_surface_t *s, const char *path)
 
 static int write_png(const uint32_t *px, int W, int H, const char *path)
 {
-    cairo_surface_t *s = cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+    cairo_surface_t *s =
+        cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
     const int r = write_surface_png(s, path);
     cairo_surface_destroy(s);
     return r;
@@ -411,8 +416,8 @@ int main(int argc, char **argv)
         cairo_set_source_rgb(cr, 1, 1, 1);
         cairo_paint(cr);
         for (int i = 0; i < 6; i++) {
-            cairo_surface_t *fr = cairo_image_surface_create_for_data((unsigned char *)(strip_frames + (size_t)i * W * H),
-                                                                      CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+            cairo_surface_t *fr = cairo_image_surface_create_for_data(
+                (unsigned char *)(strip_frames + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
             cairo_set_source_surface(cr, fr, (i % 2) * W, H / 8 + (i / 2) * H);
             cairo_paint(cr);
             cairo_surface_destroy(fr);
@@ -431,7 +436,11 @@ int main(int argc, char **argv)
         cairo_set_font_size(cr, H / 16.0);
         cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
         char title[160];
-        snprintf(title, sizeof title, "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89", cfg.eps);
+        snprintf(
+            title, sizeof title,
+            "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 "
+            "cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89",
+            cfg.eps);
         cairo_show_text(cr, title);
         cairo_destroy(cr);
         snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
@@ -447,22 +456,30 @@ int main(int argc, char **argv)
     for (int m = 0; m < 2; m++)
         dist[m] = so3_dist(body[0].R, body[1 + m].R);
     char cap[2048];
-    snprintf(cap, sizeof cap,
-             "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
-             "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), the midpoint rule\n"
-             "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm (algo)),\n"
-             "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's own\n"
-             "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` prints it\n"
-             "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of I;\n"
-             "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
-             "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
-             "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, figures/attitude.mp4.\n"
-             "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-             cfg.eps, cfg.t_end, cfg.t_end, dist[0], dist[1], nframes, W, H, cfg.fps, STRIP[0] * cfg.t_end,
-             STRIP[1] * cfg.t_end, STRIP[2] * cfg.t_end, STRIP[3] * cfg.t_end, STRIP[4] * cfg.t_end, STRIP[5] * cfg.t_end);
+    snprintf(
+        cap, sizeof cap,
+        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
+        "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
+        "the midpoint rule\n"
+        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
+        "(algo)),\n"
+        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
+        "own\n"
+        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
+        "prints it\n"
+        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
+        "I;\n"
+        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
+        "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
+        "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
+        "figures/attitude.mp4.\n"
+        "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
+        cfg.eps, cfg.t_end, cfg.t_end, dist[0], dist[1], nframes, W, H, cfg.fps, STRIP[0] * cfg.t_end,
+        STRIP[1] * cfg.t_end, STRIP[2] * cfg.t_end, STRIP[3] * cfg.t_end, STRIP[4] * cfg.t_end,
+        STRIP[5] * cfg.t_end);
     if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
         return 1;
-    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes, W, H, elapsed,
-           nframes / elapsed);
+    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes, W, H,
+           elapsed, nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */
 }

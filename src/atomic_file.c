@@ -193,7 +193,8 @@ static int resolve_target(const char *path, char *out, size_t len, char *err, si
     }
     link[n] = '\0';
     dir_of(path, dir, sizeof dir);
-    if ((size_t)(link[0] == '/' ? snprintf(out, len, "%s", link) : snprintf(out, len, "%s/%s", dir, link)) >= len)
+    if ((size_t)(link[0] == '/' ? snprintf(out, len, "%s", link) : snprintf(out, len, "%s/%s", dir, link)) >=
+        len)
         goto too_long;
     return 0;
 too_long:
@@ -259,7 +260,8 @@ int atomic_file_check(const char *path, char *err, size_t errlen)
     if (exists && S_ISDIR(sb.st_mode))
         return fail(err, errlen, "cannot write %s: it is a directory%s", path, "");
     if (exists && !S_ISREG(sb.st_mode)) /* a device or pipe is written in place */
-        return access(target, W_OK) == 0 ? 0 : fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return access(target, W_OK) == 0 ? 0
+                                         : fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
     dir_of(target, dir, sizeof dir);
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
         return fail(err, errlen, "cannot write %s: directory %s does not exist", path, dir);
@@ -296,7 +298,8 @@ static int open_in_place(atomic_file *af, const char *path, int fd, char *err, s
 static int open_named(atomic_file *af, const char *dir)
 {
     /* the length was checked by check_names */
-    if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%sXXXXXX", dir, ATOMIC_FILE_TMP_PREFIX) >= sizeof af->tmp) {
+    if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%sXXXXXX", dir, ATOMIC_FILE_TMP_PREFIX) >=
+        sizeof af->tmp) {
         errno = ENAMETOOLONG;
         return -1;
     }
@@ -371,8 +374,8 @@ static int link_unnamed(atomic_file *af)
     snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
     dir_of(af->target, dir, sizeof dir);
     for (int i = 0; i < 1000; i++) {
-        if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%s%ld.%d", dir, ATOMIC_FILE_TMP_PREFIX, (long)getpid(),
-                             i) >= sizeof af->tmp) {
+        if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%s%ld.%d", dir, ATOMIC_FILE_TMP_PREFIX,
+                             (long)getpid(), i) >= sizeof af->tmp) {
             errno = ENAMETOOLONG;
             break;
         }

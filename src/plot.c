@@ -97,12 +97,14 @@ static double tx(double v, int log) { return log ? log10(v) : v; }
 
 static double map_x(const plot_axes *ax, double v)
 {
-    return ax->x + (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
+    return ax->x +
+           (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
 }
 
 static double map_y(const plot_axes *ax, double v)
 {
-    return ax->y + ax->h - (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
+    return ax->y + ax->h -
+           (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
 }
 
 void plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
@@ -387,7 +389,9 @@ void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
         return;
     const double bw = sample + 3 * pad + wmax, bh = rows * row + pad;
     const double bx = corner % 2 ? ax->x + ax->w - bw - 4.0 : ax->x + 4.0;
-    const double by = corner < 2 ? ax->y + 4.0 : corner < 4 ? ax->y + ax->h - bh - 4.0 : ax->y + 0.5 * (ax->h - bh);
+    const double by = corner < 2   ? ax->y + 4.0
+                      : corner < 4 ? ax->y + ax->h - bh - 4.0
+                                   : ax->y + 0.5 * (ax->h - bh);
     cairo_save(cr);
     cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
     cairo_rectangle(cr, bx, by, bw, bh);
@@ -452,7 +456,8 @@ static void paint_page(cairo_t *cr, void (*draw)(cairo_t *, void *), void *ctx)
     draw(cr, ctx);
 }
 
-static cairo_status_t draw_pdf(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *), void *ctx)
+static cairo_status_t draw_pdf(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *),
+                               void *ctx)
 {
     cairo_surface_t *pdf = cairo_pdf_surface_create_for_stream(write_to, fp, width, height);
     cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
@@ -470,10 +475,12 @@ static cairo_status_t draw_pdf(FILE *fp, double width, double height, void (*dra
 }
 
 /* At PLOT_PNG_DPI. */
-static cairo_status_t draw_png(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *), void *ctx)
+static cairo_status_t draw_png(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *),
+                               void *ctx)
 {
     const double s = PLOT_PNG_DPI / 72.0;
-    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
+    cairo_surface_t *img =
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
     cairo_t *cr = cairo_create(img);
     cairo_scale(cr, s, s);
     paint_page(cr, draw, ctx);

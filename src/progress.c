@@ -57,8 +57,9 @@ void progress_tick(long k, double t)
         return;
     const double rate = (double)k / dt, left = rate > 0.0 ? (double)(pr.total - k) / rate : 0.0;
     char line[256];
-    const int n = snprintf(line, sizeof line, "suslov: step %ld of %ld (%.1f%%), t = %.6g, %.3g steps/s, %.0f s left",
-                           k, pr.total, 100.0 * (double)k / (double)pr.total, t, rate, left);
+    const int n =
+        snprintf(line, sizeof line, "suslov: step %ld of %ld (%.1f%%), t = %.6g, %.3g steps/s, %.0f s left",
+                 k, pr.total, 100.0 * (double)k / (double)pr.total, t, rate, left);
     clear_line();
     fputs(line, stderr);
     fflush(stderr);

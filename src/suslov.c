@@ -79,18 +79,22 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
     msg += n;
     len -= (size_t)n;
     if (rc == SUSLOV_RUN_BLOWUP)
-        snprintf(msg, len, "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
+        snprintf(msg, len,
+                 "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
                  rep->step, rep->t);
     else if (rep->status == SUSLOV_STEP_DIVERGED)
-        snprintf(msg, len, "step %ld (t = %.17g) failed: the Taylor series diverges, its last term %.3g is not "
-                 "below %.3g: the step is beyond its radius of convergence", rep->step, rep->t, st->residual,
-                 st->scale);
+        snprintf(msg, len,
+                 "step %ld (t = %.17g) failed: the Taylor series diverges, its last term %.3g is not "
+                 "below %.3g: the step is beyond its radius of convergence",
+                 rep->step, rep->t, st->residual, st->scale);
     else if (!isfinite(st->residual) || !isfinite(st->scale) || !isfinite(st->det))
         snprintf(msg, len, "step %ld (t = %.17g) failed: Newton's iteration reached a value that is not a "
                  "finite number after %d iterations", rep->step, rep->t, st->iterations);
     else
-        snprintf(msg, len, "step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), Jacobian determinant "
-                 "%.3g, after %d Newton iterations", rep->step, rep->t,
+        snprintf(msg, len,
+                 "step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), Jacobian determinant "
+                 "%.3g, after %d Newton iterations",
+                 rep->step, rep->t,
                  rep->status == SUSLOV_STEP_SINGULAR
                      ? "the Jacobian of the step equation is singular ((REGLOC) fails)"
                      : "Newton did not converge",

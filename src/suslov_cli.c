@@ -34,19 +34,46 @@ static const cli_spec SPEC;
 
 /* ---- handlers: one per option ---- */
 
-static void set_method(void *g, const cli_option *o, const char *v) { (void)o, ((given *)g)->method = v; }
-static void set_eps(void *g, const cli_option *o, const char *v) { ((given *)g)->eps = cli_number(o->name, v); }
-static void set_steps(void *g, const cli_option *o, const char *v) { ((given *)g)->steps = cli_count(o->name, v); }
-static void set_time(void *g, const cli_option *o, const char *v) { ((given *)g)->T = cli_number(o->name, v); }
-static void set_omega0(void *g, const cli_option *o, const char *v) { cli_list(o->name, v, ((given *)g)->w0, 2); }
+static void set_method(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->method = v;
+}
+static void set_eps(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->eps = cli_number(o->name, v);
+}
+static void set_steps(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->steps = cli_count(o->name, v);
+}
+static void set_time(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->T = cli_number(o->name, v);
+}
+static void set_omega0(void *g, const cli_option *o, const char *v)
+{
+    cli_list(o->name, v, ((given *)g)->w0, 2);
+}
 static void set_inertia(void *g, const cli_option *o, const char *v)
 {
     cli_list(o->name, v, ((given *)g)->inertia, 9);
 }
-static void set_recon(void *g, const cli_option *o, const char *v) { (void)o, ((given *)g)->recon = v; }
-static void set_every(void *g, const cli_option *o, const char *v) { ((given *)g)->every = cli_count(o->name, v); }
-static void set_output(void *g, const cli_option *o, const char *v) { (void)o, ((given *)g)->output = v; }
-static void set_quiet(void *g, const cli_option *o, const char *v) { (void)o, (void)v, ((given *)g)->quiet = 1; }
+static void set_recon(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->recon = v;
+}
+static void set_every(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->every = cli_count(o->name, v);
+}
+static void set_output(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->output = v;
+}
+static void set_quiet(void *g, const cli_option *o, const char *v)
+{
+    (void)o, (void)v, ((given *)g)->quiet = 1;
+}
 
 static void set_header(void *vg, const cli_option *o, const char *v)
 {
@@ -280,14 +307,16 @@ static void resolve_method(suslov_args *a, const given *g)
     const int exact = strcmp(g->method, "exact") == 0;
     a->method = exact ? NULL : suslov_method_by_name(g->method);
     if (!exact && !a->method)
-        cli_die("unknown method '%s' (exact, %s; or list)", g->method, suslov_method_names(names, sizeof names, ", "));
+        cli_die("unknown method '%s' (exact, %s; or list)", g->method,
+                suslov_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUSLOV_RECON_CAYLEY;
     if (!g->recon)
         return;
     if (suslov_recon_by_name(g->recon, &a->recon) != 0) {
         size_t len = 0;
         for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
-            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "", SUSLOV_RECON_NAMES[r]);
+            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
+                                    SUSLOV_RECON_NAMES[r]);
         cli_die("unknown reconstruction '%s' (%s)", g->recon, names);
     }
     if (exact)
@@ -351,8 +380,9 @@ void suslov_cli_parse(suslov_args *a, int argc, char **argv)
  * [A-Za-z0-9_.,:/=+-], control characters escaped as \xNN. */
 static void put_arg(FILE *fp, const char *s)
 {
-    const int plain = *s && strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-")
-                                == strlen(s);
+    const int plain =
+        *s &&
+        strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-") == strlen(s);
     if (plain) {
         fputs(s, fp);
         return;

@@ -152,7 +152,8 @@ static void add_option(const char *opt)
     char val[ARGLEN - 64];
     random_value(opt, val, sizeof val);
     if (!strcmp(opt, "--quiet") || !strcmp(opt, "--help") || !strcmp(opt, "-h") || !strcmp(opt, "--header") ||
-        !strcmp(opt, "--no-header") || !strcmp(opt, "--version") || !strcmp(opt, "--man") || !strcmp(opt, "--")) {
+        !strcmp(opt, "--no-header") || !strcmp(opt, "--version") || !strcmp(opt, "--man") ||
+        !strcmp(opt, "--")) {
         add(opt);
     } else if (pick(6) == 0) { /* --opt=value */
         char both[ARGLEN];
@@ -221,8 +222,8 @@ static void write_file(const char *name, const char *text, mode_t mode)
 static void reset_workdir(void)
 {
     char cmd[4096];
-    snprintf(cmd, sizeof cmd, "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir, workdir,
-             workdir);
+    snprintf(cmd, sizeof cmd, "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir,
+             workdir, workdir);
     if (system(cmd) != 0) { /* rm may report nothing to remove */
     }
     char path[8192];
@@ -457,8 +458,8 @@ static int judge(int code, const char *before, const char *first, long errlines,
         return 0;
     }
     if (code != 0 && (errlines != 1 || strncmp(first, "suslov: error: ", 15) != 0)) {
-        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s", code, errlines,
-                 first);
+        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s", code,
+                 errlines, first);
         return 0;
     }
     if (code == 1 && !strstr(first, "writing stdout failed")) { /* only stdout can fail here */
@@ -525,7 +526,8 @@ static int output_ok(char *why, size_t len)
         else if (!strncmp(args[i], "--output=", 9))
             o = args[i] + 9;
         text |= !strcmp(args[i], "--help") || !strcmp(args[i], "-h") || !strcmp(args[i], "--man") ||
-                !strcmp(args[i], "--version") || !strcmp(args[i], "list") || !strcmp(args[i], "--method=list");
+                !strcmp(args[i], "--version") || !strcmp(args[i], "list") ||
+                !strcmp(args[i], "--method=list");
     }
     char path[8192];
     const int to_stdout = !o || !strcmp(o, "-") || !strcmp(o, "/dev/stdout") || !strcmp(o, "/dev/fd/1");
@@ -607,9 +609,10 @@ int main(int argc, char **argv)
     snprintf(cmd, sizeof cmd, "chmod -R u+w '%s'; rm -rf '%s' '%s'", workdir, workdir, capdir);
     if (system(cmd) != 0)
         fprintf(stderr, "fuzz: could not remove %s\n", workdir);
-    printf("fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; killed by a "
-           "random signal mid-run: %ld\n", by_status[0], by_status[1], by_status[2], run_limit, by_status[3],
-           by_status[4]);
+    printf(
+        "fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; killed by a "
+        "random signal mid-run: %ld\n",
+        by_status[0], by_status[1], by_status[2], run_limit, by_status[3], by_status[4]);
     printf("fuzz: %ld passed, %ld failed\n", pass, fail);
     return fail != 0;
 }
