@@ -284,6 +284,221 @@ static int write_png(const uint32_t *px, int W, int H, const char *path)
 /* Times of the filmstrip frames, as fractions of t_end. */
 static const double STRIP[6] = {0.0, 1.0 / 12, 1.0 / 6, 1.0 / 3, 2.0 / 3, 1.0};
 
+static void handle_signals(void)
+{
+    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
+    signal(SIGPIPE, SIG_IGN);
+    atexit(release_owned);
+    atexit(stop_video);
+    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        struct sigaction sa = {.sa_handler = on_signal};
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
+}
+
+static const char *const NAMES[2] = {"midpoint", "variational"};
+
+/* The two integrators through the driver, every step kept (N is small). */
+static int run_integrators(const anim_config *cfg, const suslov_model *model, const suslov_exact *ex,
+                           dsp_track track[2])
+{
+    const long N = (long)ceil(cfg->t_end / cfg->eps - 1e-9);
+    const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
+    for (int m = 0; m < 2; m++) {
+        track[m].n = N;
+        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
+        const suslov_run_config rc = {model, st[m], SUSLOV_RECON_CAYLEY, cfg->eps, N, 1};
+        suslov_run_report rep;
+        if (!track[m].rows || suslov_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
+            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", NAMES[m], rep.step, rep.t);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The video, through ffmpeg's standard input, when ffmpeg is there; NULL otherwise. */
+static FILE *open_video(const anim_config *cfg, const char *figdir, const char *mp4)
+{
+    FILE *video = NULL;
+    const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
+    if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
+        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
+        video = start_video(cfg->width, cfg->height, cfg->fps, video_tmp);
+        if (!video)
+            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
+    } else if (want_video) {
+        fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
+    }
+    return video;
+}
+
+static void close_video(FILE *video, const char *mp4)
+{
+    if (!video)
+        return;
+    if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
+        video_tmp[0] = '\0';
+        fprintf(stderr, "animation: wrote %s\n", mp4);
+    } else {
+        stop_video();
+        fprintf(stderr, "animation: ffmpeg failed; no video\n");
+    }
+}
+
+/* What the frame loop draws from and into. */
+typedef struct {
+    const anim_config *cfg;
+    const suslov_exact *ex;
+    const dsp_track *track;
+    scene sc;
+    uint32_t *px, *strip;
+    int W, H, nframes, strip_next;
+    scene_body body[3];
+} frames;
+
+/* Frame f: the exact body and the two integrators side by side, labelled, to PNG and video. */
+static int draw_frame(frames *fr, suslov_refatt *ra, int f, const char *figdir, FILE **video)
+{
+    const anim_config *cfg = fr->cfg;
+    const int W = fr->W, H = fr->H;
+    const double time = cfg->t_end * f / (fr->nframes > 1 ? fr->nframes - 1 : 1);
+    double wex[2];
+    char path[4096];
+    suslov_exact_omega(fr->ex, time, wex);
+    fr->body[0].w[0] = wex[0];
+    fr->body[0].w[1] = wex[1];
+    suslov_refatt_advance(ra, time, fr->body[0].R);
+    for (int m = 0; m < 2; m++)
+        dsp_state(&fr->track[m], cfg->eps, time, fr->body[1 + m].R, fr->body[1 + m].w);
+    glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
+    glViewport(0, 0, W, H);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (int b = 0; b < 3; b++) {
+        scene_body_push_trail(&fr->body[b]);
+        scene_draw(&fr->sc, &fr->body[b], b * (W / 3), 0, W / 3, H, 0);
+    }
+    glFinish();
+    label_frame(fr->px, W, H, time);
+    snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
+    if (write_png(fr->px, W, H, path) != 0)
+        return -1;
+    if (*video && fwrite(fr->px, sizeof(uint32_t), (size_t)W * H, *video) != (size_t)W * H) {
+        finish_video(*video);
+        *video = NULL;
+        stop_video();
+        fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
+    }
+    while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9)
+        memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px, (size_t)W * H * sizeof(uint32_t));
+    return 0;
+}
+
+/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times. */
+static int write_filmstrip(const frames *fr, double eps, const char *figdir)
+{
+    const int W = fr->W, H = fr->H, SW = 2 * W, SH = 3 * H + H / 8;
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    for (int i = 0; i < 6; i++) {
+        cairo_surface_t *f = cairo_image_surface_create_for_data(
+            (unsigned char *)(fr->strip + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+        cairo_set_source_surface(cr, f, (i % 2) * W, H / 8 + (i / 2) * H);
+        cairo_paint(cr);
+        cairo_surface_destroy(f);
+    }
+    cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+    cairo_set_line_width(cr, 2.0);
+    cairo_move_to(cr, W, H / 8);
+    cairo_line_to(cr, W, SH);
+    for (int r = 1; r < 3; r++) {
+        cairo_move_to(cr, 0, H / 8 + r * H);
+        cairo_line_to(cr, SW, H / 8 + r * H);
+    }
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, H / 16.0);
+    cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
+    char title[160], path[4096];
+    snprintf(title, sizeof title,
+             "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 "
+             "cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89",
+             eps);
+    cairo_show_text(cr, title);
+    cairo_destroy(cr);
+    snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
+    const int bad = write_surface_png(s, path);
+    cairo_surface_destroy(s);
+    return bad;
+}
+
+static int write_caption(const anim_config *cfg, const frames *fr, const char *figdir)
+{
+    const int W = fr->W, H = fr->H, nframes = fr->nframes;
+    const scene_body *body = fr->body;
+    char path[4096];
+    double dist[2];
+    for (int m = 0; m < 2; m++)
+        dist[m] = so3_dist(body[0].R, body[1 + m].R);
+    char cap[2048];
+    snprintf(
+        cap, sizeof cap,
+        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg->\n"
+        "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
+        "the midpoint rule\n"
+        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
+        "(algo)),\n"
+        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
+        "own\n"
+        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
+        "prints it\n"
+        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
+        "I;\n"
+        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
+        "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
+        "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
+        "figures/attitude.mp4.\n"
+        "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
+        cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps, STRIP[0] * cfg->t_end,
+        STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end, STRIP[4] * cfg->t_end,
+        STRIP[5] * cfg->t_end);
+    if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+        return -1;
+    return 0;
+}
+
+/* Renders every frame, the video and the filmstrip. */
+static int render(frames *fr, const anim_config *cfg, const char *figdir)
+{
+    char path[4096], mp4[4096];
+    snprintf(path, sizeof path, "%s/attitude", figdir);
+    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "animation: cannot create %s: %s\n", path, strerror(errno));
+        return -1;
+    }
+    snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
+    FILE *video = open_video(cfg, figdir, mp4);
+    suslov_refatt ra;
+    double I3[3][3];
+    mat3_identity(I3);
+    suslov_refatt_init(&ra, fr->ex, 0.0, I3);
+    fr->strip = owned.strip = malloc(6 * (size_t)fr->W * fr->H * sizeof(uint32_t));
+    for (int f = 0; f < fr->nframes; f++)
+        if (draw_frame(fr, &ra, f, figdir, &video) != 0)
+            return -1;
+    close_video(video, mp4);
+    if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, cfg->eps, figdir) != 0)
+        return -1;
+    free(fr->strip);
+    owned.strip = fr->strip = NULL;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 4) {
@@ -303,183 +518,25 @@ int main(int argc, char **argv)
         return 1;
     }
     suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
-    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
-    signal(SIGPIPE, SIG_IGN);
-    atexit(release_owned);
-    atexit(stop_video);
-    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-    for (int i = 0; i < 3; i++) {
-        struct sigaction sa = {.sa_handler = on_signal};
-        sigemptyset(&sa.sa_mask);
-        sigaction(sigs[i], &sa, NULL);
-    }
-
-    /* the two integrators through the driver, every step kept (N is small) */
-    const long N = (long)ceil(cfg.t_end / cfg.eps - 1e-9);
-    const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
-    static const char *const names[2] = {"midpoint", "variational"};
+    handle_signals();
     dsp_track track[2];
-    for (int m = 0; m < 2; m++) {
-        track[m].n = N;
-        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
-        const suslov_run_config rc = {&model, st[m], SUSLOV_RECON_CAYLEY, cfg.eps, N, 1};
-        suslov_run_report rep;
-        if (!track[m].rows || suslov_run(&rc, ex.w0, store, &track[m], &rep) != 0) {
-            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", names[m], rep.step, rep.t);
-            return 3;
-        }
-    }
-    if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, names, 2) != 0)
+    if (run_integrators(&cfg, &model, &ex, track) != 0)
+        return 3;
+    if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, NAMES, 2) != 0)
         return 1;
-
-    const int W = cfg.width, H = cfg.height, nframes = (int)lround(cfg.fps * cfg.seconds);
-    gl_context *gl = owned.gl = gl_context_create(W, H);
-    scene sc;
-    if (!gl || scene_init(&sc, &model, W / 3, H) != 0) {
+    frames fr = {.cfg = &cfg, .ex = &ex, .track = track, .W = cfg.width, .H = cfg.height,
+                 .nframes = (int)lround(cfg.fps * cfg.seconds)};
+    gl_context *gl = owned.gl = gl_context_create(fr.W, fr.H);
+    if (!gl || scene_init(&fr.sc, &model, fr.W / 3, fr.H) != 0) {
         fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
         return 1;
     }
-    uint32_t *px = gl_context_pixels(gl);
-    snprintf(path, sizeof path, "%s/attitude", figdir);
-    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
-        fprintf(stderr, "animation: cannot create %s: %s\n", path, strerror(errno));
-        return 1;
-    }
-    /* the video, through ffmpeg's standard input, when ffmpeg is there */
-    FILE *video = NULL;
-    char mp4[4096];
-    snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
-    const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
-    if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
-        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
-        video = start_video(W, H, cfg.fps, video_tmp);
-        if (!video)
-            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
-    } else if (want_video) {
-        fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
-    }
-
-    scene_body body[3] = {{{{0}}, {0}, {{0}}, 0}};
-    suslov_refatt ra;
-    double I3[3][3];
-    mat3_identity(I3);
-    suslov_refatt_init(&ra, &ex, 0.0, I3);
-    uint32_t *strip_frames = owned.strip = malloc(6 * (size_t)W * H * sizeof(uint32_t));
-    int strip_next = 0;
+    fr.px = gl_context_pixels(gl);
     const double t0 = suslov_now();
-    for (int f = 0; f < nframes; f++) {
-        const double time = cfg.t_end * f / (nframes > 1 ? nframes - 1 : 1);
-        double wex[2];
-        suslov_exact_omega(&ex, time, wex);
-        body[0].w[0] = wex[0];
-        body[0].w[1] = wex[1];
-        suslov_refatt_advance(&ra, time, body[0].R);
-        for (int m = 0; m < 2; m++)
-            dsp_state(&track[m], cfg.eps, time, body[1 + m].R, body[1 + m].w);
-        glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
-        glViewport(0, 0, W, H);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        for (int b = 0; b < 3; b++) {
-            scene_body_push_trail(&body[b]);
-            scene_draw(&sc, &body[b], b * (W / 3), 0, W / 3, H, 0);
-        }
-        glFinish();
-        label_frame(px, W, H, time);
-        snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
-        if (write_png(px, W, H, path) != 0)
-            return 1;
-        if (video && fwrite(px, sizeof(uint32_t), (size_t)W * H, video) != (size_t)W * H) {
-            finish_video(video);
-            video = NULL;
-            stop_video();
-            fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
-        }
-        while (strip_frames && strip_next < 6 && time >= STRIP[strip_next] * cfg.t_end - 1e-9)
-            memcpy(strip_frames + (size_t)(strip_next++) * W * H, px, (size_t)W * H * sizeof(uint32_t));
-    }
-    const double elapsed = suslov_now() - t0;
-    if (video) {
-        if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
-            video_tmp[0] = '\0';
-            fprintf(stderr, "animation: wrote %s\n", mp4);
-        } else {
-            stop_video();
-            fprintf(stderr, "animation: ffmpeg failed; no video\n");
-        }
-    }
-
-    /* the filmstrip: 2 columns x 3 rows of frames at the STRIP times */
-    if (strip_frames && strip_next == 6) {
-        const int SW = 2 * W, SH = 3 * H + H / 8;
-        cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
-        cairo_t *cr = cairo_create(s);
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        for (int i = 0; i < 6; i++) {
-            cairo_surface_t *fr = cairo_image_surface_create_for_data(
-                (unsigned char *)(strip_frames + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-            cairo_set_source_surface(cr, fr, (i % 2) * W, H / 8 + (i / 2) * H);
-            cairo_paint(cr);
-            cairo_surface_destroy(fr);
-        }
-        cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
-        cairo_set_line_width(cr, 2.0);
-        cairo_move_to(cr, W, H / 8);
-        cairo_line_to(cr, W, SH);
-        for (int r = 1; r < 3; r++) {
-            cairo_move_to(cr, 0, H / 8 + r * H);
-            cairo_line_to(cr, SW, H / 8 + r * H);
-        }
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-        cairo_set_font_size(cr, H / 16.0);
-        cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
-        char title[160];
-        snprintf(
-            title, sizeof title,
-            "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 "
-            "cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89",
-            cfg.eps);
-        cairo_show_text(cr, title);
-        cairo_destroy(cr);
-        snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
-        const int bad = write_surface_png(s, path);
-        cairo_surface_destroy(s);
-        if (bad)
-            return 1;
-    }
-    free(strip_frames);
-    owned.strip = NULL;
-
-    double dist[2];
-    for (int m = 0; m < 2; m++)
-        dist[m] = so3_dist(body[0].R, body[1 + m].R);
-    char cap[2048];
-    snprintf(
-        cap, sizeof cap,
-        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
-        "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
-        "the midpoint rule\n"
-        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
-        "(algo)),\n"
-        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
-        "own\n"
-        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
-        "prints it\n"
-        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
-        "I;\n"
-        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
-        "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
-        "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
-        "figures/attitude.mp4.\n"
-        "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-        cfg.eps, cfg.t_end, cfg.t_end, dist[0], dist[1], nframes, W, H, cfg.fps, STRIP[0] * cfg.t_end,
-        STRIP[1] * cfg.t_end, STRIP[2] * cfg.t_end, STRIP[3] * cfg.t_end, STRIP[4] * cfg.t_end,
-        STRIP[5] * cfg.t_end);
-    if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+    if (render(&fr, &cfg, figdir) != 0 || write_caption(&cfg, &fr, figdir) != 0)
         return 1;
-    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes, W, H,
-           elapsed, nframes / elapsed);
+    const double elapsed = suslov_now() - t0;
+    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", fr.nframes, fr.W,
+           fr.H, elapsed, fr.nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */
 }
