@@ -4,15 +4,7 @@
 set -u
 B=${1:-build}
 S="$B/suslov"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
-ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
-ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
-check() { # check DESCRIPTION COMMAND...
-    d=$1; shift
-    if "$@"; then ok "$d"; else ko "$d"; fi
-}
+. "$(dirname "$0")/cli_testlib.sh"
 HEADER='k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33'
 
 # --help documents every option and exits 0
@@ -292,5 +284,4 @@ if [ -z "${SUSLOV_SAN:-}" ]; then
         test "$rc" = 0 -a "$(tail -n +2 "$T/long.csv" | wc -l)" = 21
 fi
 
-echo "test_cli: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+done_tests test_cli

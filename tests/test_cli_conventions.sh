@@ -6,15 +6,7 @@
 set -u
 B=${1:-build}
 S="$B/suslov"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
-ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
-ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
-check() { # check DESCRIPTION COMMAND...
-    d=$1; shift
-    if "$@"; then ok "$d"; else ko "$d"; fi
-}
+. "$(dirname "$0")/cli_testlib.sh"
 bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, one line matching PATTERN, nothing on stdout
     d=$1 pat=$2; shift 2
     "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
@@ -111,5 +103,4 @@ check "the built manual page $B/man/suslov.1 is the one suslov --man writes" cmp
 sed -n '/^<!-- suslov --help -->$/,/^<!-- end suslov --help -->$/p' README.md | sed '1,2d;$d' | sed '$d' >"$T/readme"
 check "README.md quotes suslov --help verbatim (its promises are --help's)" cmp -s "$T/help" "$T/readme"
 
-echo "test_cli_conventions: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+done_tests test_cli_conventions

@@ -4,12 +4,7 @@
 # and computes what the installed suslov prints. Usage: test_cli_install.sh BUILD_DIR
 set -u
 B=${1:-build}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
-ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
-ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
-check() { d=$1; shift; if "$@"; then ok "$d"; else ko "$d"; fi; }
+. "$(dirname "$0")/cli_testlib.sh"
 
 P="$T/prefix"
 if [ -n "${SUSLOV_SAN:-}" ]; then set -- SAN=1; else set -- BUILD="$B"; fi
@@ -43,5 +38,4 @@ got=$("$T/prog")
 want=$("$P/bin/suslov" --no-header --method midpoint --eps 0.1 --steps 10 --every 10 | tail -1 | cut -d, -f1-4)
 check "the program computes what the installed suslov prints ($got = $want)" test -n "$got" -a "$got" = "$want"
 
-echo "test_cli_install: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+done_tests test_cli_install

@@ -1,24 +1,14 @@
 #!/bin/sh
-# The promises of suslov that a demanding user broke (issue 20), one regression check each, and
-# the conventions of a Unix tool: output to descriptors, names and permissions checked before
-# the run, every signal in both temporary-file modes, exact for any t and w0, messages without
-# NaN, --version, --, --method list, --time, counts, repeated options, --header, the trailer of
-# an incomplete file, TERM=dumb. Usage: test_cli_promises.sh BUILD_DIR
+# The promises of suslov and the build that a demanding user broke (issue 20), one regression
+# check each, numbered as there: output through descriptors (/dev/stdout), long names, permissions
+# checked before the run, every signal in the named-temporary mode, figure programs and make
+# interrupted, an empty BUILD, exact for any t and w0, messages without NaN, full devices and
+# exhausted inodes. Usage: test_cli_promises.sh BUILD_DIR
 set -u
 B=${1:-build}
 S="$B/suslov"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
-ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
-ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
-skip() { printf '%s\n' "SKIP $*"; }
-check() { # check DESCRIPTION COMMAND...
-    d=$1; shift
-    if "$@"; then ok "$d"; else ko "$d"; fi
-}
+. "$(dirname "$0")/cli_testlib.sh"
 LONG="--eps 1e-9 --steps 9000000000000 --every 1000000000000" # hours: only a pre-run check ends it fast
-rows() { grep -vc '^#' "$1"; }
 
 # 1. /dev/stdout is the shell's descriptor: written in place, at its offset, never renamed over
 printf 'old\n' >"$T/log.csv"
@@ -168,5 +158,4 @@ else
 fi
 rmdir "$M"
 
-echo "test_cli_promises: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+done_tests test_cli_promises
