@@ -9,6 +9,8 @@
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
 #   make deps       install missing Debian packages (deps-check: only what make check needs)
+#   make install    PREFIX=DIR (default /usr/local): suslov, its manual page, libsuslov.a, the
+#                   headers and suslov.pc for pkg-config
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
 #   WERROR=1        treat warnings as errors (CI)
