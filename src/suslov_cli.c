@@ -209,8 +209,15 @@ static const cli_spec SPEC = {
 
 /* ---- --method list ---- */
 
+static int uses_reconstruction(const suslov_method *me, const suslov_model *m);
+
+/* The reconstruction column says "own" for a method that carries its own attitude. */
 static void method_list(void)
 {
+    char err[256];
+    suslov_model paper;
+    if (suslov_model_init(&paper, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0)
+        cli_die("the paper's inertia is rejected: %s", err);
     const int tty = isatty(STDOUT_FILENO);
     const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
     printf(fmt, "name", "family", "order", "reconstruct", "about");
@@ -219,7 +226,8 @@ static void method_list(void)
         const suslov_method *me = suslov_method_get(i);
         char order[16];
         snprintf(order, sizeof order, "%d", me->type->order);
-        printf(fmt, me->type->name, me->family, order, SUSLOV_RECON_NAMES[me->recon], me->about);
+        printf(fmt, me->type->name, me->family, order,
+               uses_reconstruction(me, &paper) ? SUSLOV_RECON_NAMES[me->recon] : "own", me->about);
     }
     cli_exit_stdout();
 }

@@ -139,6 +139,14 @@ check "exact --eps 1e19 --omega0 1e-20,0 equals its scaled twin --eps 0.1 --omeg
 timeout 10 "$S" --method exact --eps 1e6 --steps 1 --omega0 4e-4,0 >/dev/null; rc=$?
 check "exact at w0 = (4e-4, 0), t = 1e6 costs no more than at |w0| ~ 1 (under 10 s; was minutes): rc $rc" test $rc = 0
 
+# a body whose motion nears the steady rotation at a rate ~1e-200 would need ~1e203 reference
+# steps: refused before the run (no float-to-integer overflow, no endless run); a short run works
+timeout 20 "$S" --method exact --eps 1e10 --steps 1 --inertia 1,0.1,0.2,0.1,1,0.2,1e-200,1e-200,1 \
+    >"$T/out" 2>"$T/err"; rc=$?
+timeout 20 "$S" --method exact --eps 1 --steps 1 --inertia 1,0.1,0.2,0.1,1,0.2,1e-200,1e-200,1 >/dev/null; rc2=$?
+check "exact with I31 = I32 = 1e-200 to t = 1e10 is refused (exit $rc: $(cat "$T/err")); to t = 1 it runs ($rc2)" \
+    sh -c "test $rc = 2 -a $rc2 = 0 -a ! -s '$T/out' && grep -q 'reference attitude needs' '$T/err'"
+
 # 9. failure messages describe a NaN, never print one
 "$S" --method midpoint --eps 1e6 --steps 3 --omega0 1e100,1e100 >/dev/null 2>"$T/err"; rc=$?
 check "a Newton iteration reaching NaN: exit 3, one line, no 'nan' in it ($(cat "$T/err"))" \
