@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -202,9 +203,14 @@ too_long:
     return -1;
 }
 
-static int fail(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
+/* A one-line reason in err; returns -1. */
+static int fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int fail(char *err, size_t errlen, const char *fmt, ...)
 {
-    snprintf(err, errlen, fmt, a, b);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
     return -1;
 }
 
@@ -215,7 +221,7 @@ static int check_names(const char *path, const char *target, const char *dir, ch
     const long name_max = pathconf(dir, _PC_NAME_MAX);
     const size_t tmp_len = strlen(dir) + 1 + strlen(ATOMIC_FILE_TMP_PREFIX) + ATOMIC_FILE_TMP_SUFFIX_MAX;
     if (name_max > 0 && strlen(base) > (size_t)name_max)
-        return fail(err, errlen, "cannot write %s: its name is longer than the directory allows%s", path, "");
+        return fail(err, errlen, "cannot write %s: its name is longer than the directory allows", path);
     if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX || tmp_len >= sizeof((atomic_file *)0)->tmp)
         return fail(err, errlen, "cannot write %s: the path (or its temporary in %s) is too long", path, dir);
     return 0;
@@ -244,12 +250,12 @@ int atomic_file_check(const char *path, char *err, size_t errlen)
     if (is_stdout(path))
         return 0;
     if (path[0] == '\0')
-        return fail(err, errlen, "the output path is empty%s%s", "", "");
+        return fail(err, errlen, "the output path is empty");
     const int fd = fd_of_path(path);
     if (fd >= 0) {
         const int fl = fcntl(fd, F_GETFL);
         if (fl < 0 || (fl & O_ACCMODE) == O_RDONLY)
-            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing%s", path, "");
+            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing", path);
         return 0;
     }
     if (resolve_target(path, target, sizeof target, err, errlen) != 0)
@@ -258,7 +264,7 @@ int atomic_file_check(const char *path, char *err, size_t errlen)
     if (!exists && errno != ENOENT)
         return fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
     if (exists && S_ISDIR(sb.st_mode))
-        return fail(err, errlen, "cannot write %s: it is a directory%s", path, "");
+        return fail(err, errlen, "cannot write %s: it is a directory", path);
     if (exists && !S_ISREG(sb.st_mode)) /* a device or pipe is written in place */
         return access(target, W_OK) == 0 ? 0
                                          : fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
