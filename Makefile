@@ -259,8 +259,8 @@ clean:
 # shows and data/animation.cfg are committed sources of a fresh clone and stay (in a git
 # checkout, a PNG that git does not track goes too).
 distclean: clean
-	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* paper/companion.pdf paper/*.tmp
+	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

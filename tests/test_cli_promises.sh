@@ -75,7 +75,7 @@ if env --default-signal true 2>/dev/null; then
             exec env --default-signal "$S" --method rk4 $LONG --output "$T/sig/s.csv") 2>/dev/null &
         pid=$!
         i=0
-        while [ $i -lt 100 ] && ! ls -A "$T/sig" | grep -q '^\.tmp\.'; do sleep 0.1; i=$((i + 1)); done
+        while [ $i -lt 500 ] && ! ls -A "$T/sig" | grep -q '^\.tmp\.'; do sleep 0.02; i=$((i + 1)); done
         kill -$n $pid; { wait $pid; } 2>/dev/null; rc=$?
         want=$((128 + n))
         left=$(ls -A "$T/sig" | tr '\n' ' ')
