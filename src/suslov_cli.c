@@ -309,7 +309,9 @@ static int uses_reconstruction(const suslov_method *me, const suslov_model *m)
     return memcmp(R[0], R[1], sizeof R[0]) != 0;
 }
 
-static void resolve_method(suslov_args *a, const given *g)
+/* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
+ * check has passed, so that bad input still gets exactly one line). */
+static int resolve_method(suslov_args *a, const given *g)
 {
     char names[1024];
     const int exact = strcmp(g->method, "exact") == 0;
@@ -319,7 +321,7 @@ static void resolve_method(suslov_args *a, const given *g)
                 suslov_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUSLOV_RECON_CAYLEY;
     if (!g->recon)
-        return;
+        return 0;
     if (suslov_recon_by_name(g->recon, &a->recon) != 0) {
         size_t len = 0;
         for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
@@ -329,8 +331,7 @@ static void resolve_method(suslov_args *a, const given *g)
     }
     if (exact)
         cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
-    if (!uses_reconstruction(a->method, &a->model))
-        cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
+    return !uses_reconstruction(a->method, &a->model);
 }
 
 static void check_run(suslov_args *a, const given *g)
@@ -357,13 +358,16 @@ static void check_run(suslov_args *a, const given *g)
     const double w[3] = {g->w0[0], g->w0[1], 0.0};
     if (!isfinite(suslov_energy(&a->model, w)) || !isfinite(suslov_lagmult(&a->model, w)))
         cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
-    resolve_method(a, g);
-    const double cost = suslov_exact_reference_steps(&a->model, g->w0, (double)a->steps * a->eps);
-    if (!a->method && !(cost <= EXACT_MAX_REFERENCE_STEPS))
+    const int ignored = resolve_method(a, g);
+    const double T = (double)a->steps * a->eps;
+    const double cost = a->method ? 0.0 : suslov_exact_reference_steps(&a->model, g->w0, T);
+    if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
         cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
                 "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
     if (atomic_file_check(g->output, err, sizeof err) != 0)
         cli_die("--output: %s", err);
+    if (ignored)
+        cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
 }
 
 void suslov_cli_parse(suslov_args *a, int argc, char **argv)

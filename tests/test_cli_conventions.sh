@@ -53,6 +53,8 @@ bad "--reconstruct with exact" "does not apply" --method exact --eps 0.1 --steps
 "$S" --method taylor8 --eps 0.1 --steps 1 --reconstruct cayley >/dev/null 2>"$T/err"; rc=$?
 check "--reconstruct with taylor8: exit 0 and one warning line ($(cat "$T/err"))" \
     sh -c "test $rc = 0 -a \$(wc -l <'$T/err') = 1 && grep -q '^suslov: warning: --reconstruct cayley is ignored' '$T/err'"
+bad "--reconstruct with taylor8 and a bad --output (the warning waits for the checks)" "does not exist" \
+    --method taylor8 --eps 0.1 --steps 1 --reconstruct cayley --output "$T/missing/x.csv"
 "$S" --method midpoint --eps 0.1 --steps 1 --reconstruct exp-mid >/dev/null 2>"$T/err"
 check "--reconstruct with midpoint: no warning" test ! -s "$T/err"
 
