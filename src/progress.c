@@ -29,8 +29,6 @@ void progress_start(int on, long total)
     pr.after = after && *after ? atof(after) : PROGRESS_AFTER;
 }
 
-int progress_on(void) { return pr.on; }
-
 /* Back to the start of the line and clear it: ESC[K, or spaces over what was written. */
 static void clear_line(void)
 {
@@ -49,8 +47,10 @@ void progress_erase(void)
 
 void progress_tick(long k, double t)
 {
+    if (!pr.on)
+        return;
     const double now = suslov_now(), dt = now - pr.start;
-    if (!pr.on || now < pr.next)
+    if (now < pr.next)
         return;
     pr.next = now + PROGRESS_EVERY;
     if (dt < pr.after)

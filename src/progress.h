@@ -11,6 +11,5 @@ void progress_start(int on, long total);
 /* Cheap unless a redraw is due; call with the row just computed. */
 void progress_tick(long k, double t);
 void progress_erase(void);
-int progress_on(void);
 
 #endif
