@@ -10,6 +10,8 @@
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
 #   make deps       install missing Debian packages (make check installs only what it needs)
+#   make install    PREFIX=DIR (default /usr/local): suslov, its manual page, libsuslov.a, the
+#                   headers and suslov.pc for pkg-config
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
 #   WERROR=1        treat warnings as errors (CI)
@@ -18,6 +20,13 @@
 
 CC      ?= cc
 BUILD   ?= build
+# An empty BUILD= would write to /obj and /suslov; a BUILD with a space breaks make's own lists.
+ifeq ($(strip $(BUILD)),)
+$(error BUILD is empty: give a directory, e.g. BUILD=build)
+endif
+ifneq ($(words $(BUILD)),1)
+$(error BUILD='$(BUILD)' holds a space: make cannot name targets inside it)
+endif
 CFLAGS  ?= -O2 -g
 WARN    := -std=c17 -Wall -Wextra -Wshadow -Wstrict-prototypes
 ifeq ($(WERROR),1)
@@ -35,15 +44,12 @@ PKGS       = gsl cairo osmesa
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
 ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
-ifeq ($(strip $(BUILD)),)
-$(error BUILD is empty: give a directory, e.g. BUILD=build)
-endif
 
 # The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is
 # compiled with only its own and the lower folders on the include path, so an include of a
 # higher layer does not build; each library layer is one archive, libsus_LAYER.a.
 LAYERS     := util core methods exp render prog
-LIB_LAYERS := util core methods exp render
+LIB_LAYERS := util core methods exp render prog
 inc_util    := -Isrc/util
 inc_core    := $(inc_util) -Isrc/core
 inc_methods := $(inc_core) -Isrc/methods
@@ -53,11 +59,14 @@ inc_prog    := $(inc_render) -Isrc/prog
 inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 
-src_of  = $(sort $(wildcard src/$(1)/*.c))
+# The programs' main files; the other files of src/prog (suslov's option table, parser and
+# progress line) are the programs' own support, archived like a layer.
+PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c)
+src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
 obj_of  = $(patsubst src/%.c,$(BUILD)/obj/%.o,$(call src_of,$(1)))
 lib_of  = $(BUILD)/libsus_$(1).a
 # Link order: higher layers first, so each archive resolves against the ones after it.
-LIBS_LINK := $(foreach l,render exp methods core util,$(call lib_of,$(l)))
+LIBS_LINK := $(foreach l,prog render exp methods core util,$(call lib_of,$(l)))
 
 FIG_SRC  := $(wildcard src/prog/figure_*.c)
 FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
@@ -80,7 +89,7 @@ $(eval $(call STAMP_RULE,$(BUILD)/flags.stamp,$(CC) $(WARN) $(CFLAGS) $(SANFLAGS
 $(foreach l,$(LIB_LAYERS),$(eval $(call STAMP_RULE,$(BUILD)/libsus_$(l).list,$(call obj_of,$(l)))))
 
 .PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench paper clean distclean
-all: $(BUILD)/suslov $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
 
 # What each goal needs (tools/deps.sh PROFILE): check = compiler, GSL, Cairo, OSMesa, fonts;
 # figures adds ffmpeg; paper adds TeX. Objects wait only on the check profile, through a stamp
@@ -94,7 +103,7 @@ $(DEPS_CHECK): tools/deps.sh
 
 $(BUILD)/obj/%.o: src/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(call CFLAGS_OF,$(firstword $(subst /, ,$*))) -c $< -o $@
+	$(CC) $(call CFLAGS_OF,$(firstword $(subst /, ,$*))) $(VERSION_DEF) -c $< -o $@
 
 $(BUILD)/tobj/%.o: tests/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
@@ -106,6 +115,13 @@ $(call lib_of,$(1)): $(call obj_of,$(1)) $(BUILD)/libsus_$(1).list
 	$$(AR) rcs $$@ $(call obj_of,$(1))
 endef
 $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
+
+# --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball),
+# through a stamp that changes only when the commit does, so only suslov_cli.o is rebuilt then.
+SUSLOV_VERSION := $(shell git -C "$(CURDIR)" describe --always --dirty 2>/dev/null || echo unknown)
+$(eval $(call STAMP_RULE,$(BUILD)/version.stamp,$(SUSLOV_VERSION)))
+$(BUILD)/obj/prog/suslov_cli.o: $(BUILD)/version.stamp
+$(BUILD)/obj/prog/suslov_cli.o: VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
@@ -143,6 +159,10 @@ figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
+# Every figure output is written atomically by its program (src/util/atomic_file.c), so an
+# interrupted make must never delete one: a half-made file cannot exist.
+.PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
+           figures/attitude.txt data/attitude.csv
 figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-figures
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
@@ -151,7 +171,9 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-f
 # named in tests/run.sh (a few seconds). make ledger: the claims ledger, run again only when the
 # claims program changed (it reads no other input); its table is kept in $(BUILD)/claims.out.
 # make check: both, and "N passed, N failed" over all of them on the last line.
-SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) LSAN_OPTIONS="suppressions=$(CURDIR)/tests/build/lsan.supp:print_suppressions=0"
+# The suppressions path is quoted for LSan, so that a checkout path with a space works.
+SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
+    LSAN_OPTIONS="suppressions='$(CURDIR)/tests/build/lsan.supp':print_suppressions=0"
 test: all
 	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
@@ -275,6 +297,38 @@ mutants-ops: | $(DEPS_CHECK)
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
 	    --out $(MUTANTS_OPS_OUT) $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
+# The manual page, written by suslov itself from the option table that --help prints.
+$(BUILD)/man/suslov.1: $(BUILD)/suslov
+	@mkdir -p $(@D)
+	$< --man >$@.tmp && mv $@.tmp $@
+
+# make install PREFIX=DIR (and DESTDIR= for staging): the command, its manual page, and the
+# library for C programs: the archives and headers of the layers that need only GSL (util, core,
+# methods, exp) in lib/ and include/suslov, and suslov.pc, so that
+# `cc prog.c $$(pkg-config --cflags --libs suslov)` builds against it.
+PREFIX ?= /usr/local
+INSTALL_LAYERS := util core methods exp
+INSTALL_H := $(foreach l,$(INSTALL_LAYERS),$(wildcard src/$(l)/*.h))
+INSTALL_OBJ := $(foreach l,$(INSTALL_LAYERS),$(call obj_of,$(l)))
+# One archive for the user, libsuslov.a: the members of those layers' archives.
+$(BUILD)/libsuslov.a: $(INSTALL_OBJ) $(foreach l,$(INSTALL_LAYERS),$(BUILD)/libsus_$(l).list)
+	@rm -f $@
+	$(AR) rcs $@ $(INSTALL_OBJ)
+.PHONY: install
+install: $(BUILD)/suslov $(BUILD)/libsuslov.a $(BUILD)/man/suslov.1
+	@d="$(DESTDIR)$(PREFIX)"; set -e; \
+	    install -d "$$d/bin" "$$d/lib/pkgconfig" "$$d/include/suslov" "$$d/share/man/man1"; \
+	    install -m 755 $(BUILD)/suslov "$$d/bin/suslov"; \
+	    install -m 644 $(BUILD)/libsuslov.a "$$d/lib/libsuslov.a"; \
+	    install -m 644 $(INSTALL_H) "$$d/include/suslov/"; \
+	    install -m 644 $(BUILD)/man/suslov.1 "$$d/share/man/man1/suslov.1"; \
+	    { echo 'prefix=$(PREFIX)'; echo 'libdir=$${prefix}/lib'; echo 'includedir=$${prefix}/include/suslov'; \
+	      echo; echo 'Name: suslov'; \
+	      echo 'Description: integrators of the Suslov problem (Jimenez & Scheurle 2018)'; \
+	      echo 'Version: $(SUSLOV_VERSION)'; echo 'Requires: gsl'; \
+	      echo 'Cflags: -I$${includedir}'; echo 'Libs: -L$${libdir} -lsuslov -lm'; } >"$$d/lib/pkgconfig/suslov.pc"; \
+	    echo "installed into $$d"
+
 clean:
 	rm -rf $(BUILD)
 
@@ -282,8 +336,8 @@ clean:
 # shows and data/animation.cfg are committed sources of a fresh clone and stay (in a git
 # checkout, a PNG that git does not track goes too).
 distclean: clean
-	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* paper/companion.pdf paper/*.tmp
+	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

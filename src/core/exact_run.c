@@ -2,7 +2,6 @@
 
 #include "mat3.h"
 #include "refattitude.h"
-#include "so3.h"
 
 #include <math.h>
 
@@ -32,36 +31,105 @@ static double steady_time(const suslov_exact *ex, double wstar[3])
     return isfinite(t_s) ? fmax(t_s, 0.0) : INFINITY;
 }
 
+/* The power of two c with |w0 / c| in [1/2, 1) (c = 1 for a zero w0). (ContDyn)'s field is
+ * homogeneous quadratic, f(c w) = c^2 f(w), so if w~(tau) solves it from w0 / c then
+ * w(t) = c w~(c t) solves it from w0, and R(t) = R~(c t) with R~' = R~ w~^ (d/dt R~(c t) =
+ * c R~ w~^ = R w^). The attitude is integrated in the scaled time tau = c t: there the step
+ * bound of refattitude.h holds whatever |w0|, and the time to the steady rotation, hence the
+ * cost, no longer grows as 1 / |w0|. A power of two keeps w0 / c and c t exact. */
+static double speed_scale(const double w0[2])
+{
+    const double n = hypot(w0[0], w0[1]);
+    if (n == 0.0 || !isfinite(n))
+        return 1.0;
+    int e;
+    frexp(n, &e);
+    return ldexp(1.0, e);
+}
+
+/* exp(theta a^) for a unit axis a, by Rodrigues' formula with 1 - cos = 2 sin^2(theta/2):
+ * no product grows with theta, so any finite angle is fine (sin and cos reduce it exactly). */
+static void rotation_about(const double a[3], double theta, double R[3][3])
+{
+    const double s = sin(theta), h = sin(0.5 * theta), c1 = 2.0 * h * h;
+    const double K[3][3] = {{0, -a[2], a[1]}, {a[2], 0, -a[0]}, {-a[1], a[0], 0}};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double K2 = 0.0;
+            for (int l = 0; l < 3; l++)
+                K2 += K[i][l] * K[l][j];
+            R[i][j] = (i == j) + s * K[i][j] + c1 * K2;
+        }
+}
+
+/* Scaled-time reference attitude (speed_scale) with the closed-form tail beyond tau_s. */
+typedef struct {
+    suslov_exact ex;   /* from w0 / c */
+    suslov_refatt ra;
+    double c, tau_s, speed, axis[3];
+    int steady;        /* R_s = R~(tau_s) is known */
+    double R_s[3][3];
+} scaled_attitude;
+
+static void scaled_init(scaled_attitude *sa, const suslov_model *m, const double w0[2])
+{
+    double I3[3][3], wstar[3];
+    sa->c = speed_scale(w0);
+    const double v0[2] = {w0[0] / sa->c, w0[1] / sa->c};
+    suslov_exact_init(&sa->ex, m, v0);
+    sa->tau_s = steady_time(&sa->ex, wstar);
+    sa->speed = sqrt(wstar[0] * wstar[0] + wstar[1] * wstar[1]);
+    for (int i = 0; i < 3; i++)
+        sa->axis[i] = sa->speed > 0.0 ? wstar[i] / sa->speed : 0.0;
+    sa->steady = 0;
+    mat3_identity(I3);
+    suslov_refatt_init(&sa->ra, &sa->ex, 0.0, I3);
+}
+
+/* R(t) = R~(c t), the tail R~(tau) = R~(tau_s) exp((tau - tau_s) w~*^). The angle is formed in
+ * long double, whose range holds the product of any two doubles. */
+static void scaled_attitude_at(scaled_attitude *sa, double t, double R[3][3])
+{
+    const long double tau = (long double)t * sa->c;
+    if (tau <= sa->tau_s) {
+        suslov_refatt_advance(&sa->ra, (double)tau, R);
+        return;
+    }
+    if (!sa->steady)
+        suslov_refatt_advance(&sa->ra, sa->tau_s, sa->R_s);
+    sa->steady = 1;
+    long double angle = (tau - sa->tau_s) * sa->speed;
+    /* beyond the double range the phase is already lost to the rounding of t; any angle is
+     * as good as another, and reducing in long double keeps it finite */
+    if (angle > 0x1p1000L)
+        angle = fmodl(angle, 6.283185307179586476925286766559L);
+    double E[3][3];
+    rotation_about(sa->axis, (double)angle, E);
+    mat3_mul(R, sa->R_s, E);
+}
+
+double suslov_exact_reference_steps(const suslov_model *m, const double w0[2], double T)
+{
+    scaled_attitude sa;
+    scaled_init(&sa, m, w0);
+    return fmin((double)((long double)T * sa.c), sa.tau_s) * SUSLOV_REFATT_PRECISE_STEPS;
+}
+
 int suslov_run_exact(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit,
                      void *ctx, suslov_run_report *report)
 {
     suslov_exact ex;
-    suslov_refatt ra;
-    double I3[3][3], wstar[3], R_s[3][3];
+    scaled_attitude sa;
     suslov_exact_init(&ex, cfg->model, w0);
-    mat3_identity(I3);
+    scaled_init(&sa, cfg->model, w0);
     *report = (suslov_run_report){.status = SUSLOV_STEP_OK};
-    const double t_s = steady_time(&ex, wstar);
-    int steady = 0; /* R_s = R(t_s) is known */
-    suslov_refatt_init(&ra, &ex, 0.0, I3);
     int rc = SUSLOV_RUN_OK;
     for (long k = 0; rc == SUSLOV_RUN_OK;) {
         suslov_row row = {.k = k, .t = (double)k * cfg->eps};
         suslov_exact_omega(&ex, row.t, row.w);
         row.w[2] = 0.0;
         row.lambda = suslov_lagmult(cfg->model, row.w);
-        if (row.t <= t_s) {
-            suslov_refatt_advance(&ra, row.t, row.R);
-        } else { /* R(t) = R(t_s) exp((t - t_s) w*^): closed form, O(1) per row for any t */
-            if (!steady)
-                suslov_refatt_advance(&ra, t_s, R_s);
-            steady = 1;
-            double xi[3], E[3][3];
-            for (int i = 0; i < 3; i++)
-                xi[i] = (row.t - t_s) * wstar[i];
-            so3_exp(xi, E);
-            mat3_mul(row.R, R_s, E);
-        }
+        scaled_attitude_at(&sa, row.t, row.R);
         if (!suslov_row_finite(&row)) {
             report->step = k;
             report->t = row.t;

@@ -10,6 +10,7 @@
  * waited for, and the temporary video and frame files are removed. */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
+#include "plot.h"
 #include "driver.h"
 #include "exact.h"
 #include "fig_output.h"
@@ -38,8 +39,6 @@
 
 static volatile pid_t video_pid = -1;      /* the running ffmpeg, or -1 */
 static char video_tmp[4200];                /* the video ffmpeg writes, renamed on success */
-static char frame_tmp[4200];                /* the PNG being written, renamed when complete */
-static volatile sig_atomic_t frame_tmp_live;
 
 /* Async-signal-safe: kill(), waitpid(), unlink(). SIGKILL, not SIGTERM: on SIGTERM ffmpeg
  * finishes its output file, which could then appear after the unlink. */
@@ -51,8 +50,7 @@ static void on_signal(int sig)
     }
     if (video_tmp[0])
         unlink(video_tmp);
-    if (frame_tmp_live)
-        unlink(frame_tmp);
+    atomic_file_remove_temporaries(); /* a frame being written (named fallback) */
     signal(sig, SIG_DFL);
     raise(sig);
 }
@@ -168,8 +166,8 @@ static int read_config(const char *path, anim_config *c)
     }
     fclose(fp);
     if (c->width < 48 || c->width > 4096 || c->height < 27 || c->height > 4096 || c->width % 2 ||
-        c->height % 2 ||
-        c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) || !(c->eps > 0)) {
+        c->height % 2 || c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) ||
+        !(c->eps > 0)) {
         fprintf(stderr,
                 "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n",
                 path);
@@ -263,20 +261,15 @@ static void label_frame(uint32_t *px, int W, int H, double time)
     cairo_surface_destroy(s);
 }
 
-/* Writes the surface to path through a temporary name (removed on failure or a signal). */
+/* Writes the surface to path through the atomic file (plot.h): complete or not at all. */
 static int write_surface_png(cairo_surface_t *s, const char *path)
 {
-    frame_tmp_live = 0;
-    snprintf(frame_tmp, sizeof frame_tmp, "%s.tmp.%ld", path, (long)getpid());
-    frame_tmp_live = 1;
-    const cairo_status_t st = cairo_surface_write_to_png(s, frame_tmp);
-    const int ok = st == CAIRO_STATUS_SUCCESS && rename(frame_tmp, path) == 0;
-    if (!ok) {
-        fprintf(stderr, "animation: writing %s failed\n", path);
-        unlink(frame_tmp);
+    char err[512];
+    if (plot_write_surface_png(s, path, err, sizeof err) != 0) {
+        fprintf(stderr, "animation: %s\n", err);
+        return -1;
     }
-    frame_tmp_live = 0;
-    return ok ? 0 : -1;
+    return 0;
 }
 
 static int write_png(const uint32_t *px, int W, int H, const char *path)
@@ -291,10 +284,9 @@ static int write_png(const uint32_t *px, int W, int H, const char *path)
 /* Times of the filmstrip frames, as fractions of t_end. */
 static const double STRIP[6] = {0.0, 1.0 / 12, 1.0 / 6, 1.0 / 3, 2.0 / 3, 1.0};
 
-/* SIGPIPE ignored (a dead ffmpeg must show as a write error, not kill us with its file left); on
- * exit or a fatal signal the owned memory is released and an unfinished video removed. */
-static void install_handlers(void)
+static void handle_signals(void)
 {
+    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
     signal(SIGPIPE, SIG_IGN);
     atexit(release_owned);
     atexit(stop_video);
@@ -306,26 +298,28 @@ static void install_handlers(void)
     }
 }
 
-/* The two integrators through the driver, every step kept (N is small). Returns 0, or 3 when a
- * step fails. */
-static int run_tracks(const anim_config *cfg, const suslov_model *model, const suslov_exact *ex,
-                      const suslov_stepper_type *const st[2], dsp_track track[2])
+static const char *const NAMES[2] = {"midpoint", "variational"};
+
+/* The two integrators through the driver, every step kept (N is small). */
+static int run_integrators(const anim_config *cfg, const suslov_model *model, const suslov_exact *ex,
+                           dsp_track track[2])
 {
     const long N = (long)ceil(cfg->t_end / cfg->eps - 1e-9);
+    const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
     for (int m = 0; m < 2; m++) {
         track[m].n = N;
         track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
         const suslov_run_config rc = {model, st[m], SUSLOV_RECON_CAYLEY, cfg->eps, N, 1};
-        suslov_run_report rep = {0};
+        suslov_run_report rep;
         if (!track[m].rows || suslov_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
-            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", st[m]->name, rep.step, rep.t);
-            return 3;
+            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", NAMES[m], rep.step, rep.t);
+            return -1;
         }
     }
     return 0;
 }
 
-/* The video, through ffmpeg's standard input, when ffmpeg is there; NULL otherwise (said why). */
+/* The video, through ffmpeg's standard input, when ffmpeg is there; NULL otherwise. */
 static FILE *open_video(const anim_config *cfg, const char *figdir, const char *mp4)
 {
     FILE *video = NULL;
@@ -354,30 +348,31 @@ static void close_video(FILE *video, const char *mp4)
     }
 }
 
-/* What the frame loop draws from and writes to. */
+/* What the frame loop draws from and into. */
 typedef struct {
     const anim_config *cfg;
     const suslov_exact *ex;
     const dsp_track *track;
     scene sc;
-    uint32_t *px;
+    uint32_t *px, *strip;
+    int W, H, nframes, strip_next;
     scene_body body[3];
-    suslov_refatt ra;
-    int strip_next;
-    FILE *video;
 } frames;
 
-/* One frame at `time`: the exact body and the two integrators side by side. */
-static void draw_frame(frames *fr, double time)
+/* Frame f: the exact body and the two integrators side by side, labelled, to PNG and video. */
+static int draw_frame(frames *fr, suslov_refatt *ra, int f, const char *figdir, FILE **video)
 {
-    const int W = fr->cfg->width, H = fr->cfg->height;
+    const anim_config *cfg = fr->cfg;
+    const int W = fr->W, H = fr->H;
+    const double time = cfg->t_end * f / (fr->nframes > 1 ? fr->nframes - 1 : 1);
     double wex[2];
+    char path[4096];
     suslov_exact_omega(fr->ex, time, wex);
     fr->body[0].w[0] = wex[0];
     fr->body[0].w[1] = wex[1];
-    suslov_refatt_advance(&fr->ra, time, fr->body[0].R);
+    suslov_refatt_advance(ra, time, fr->body[0].R);
     for (int m = 0; m < 2; m++)
-        dsp_state(&fr->track[m], fr->cfg->eps, time, fr->body[1 + m].R, fr->body[1 + m].w);
+        dsp_state(&fr->track[m], cfg->eps, time, fr->body[1 + m].R, fr->body[1 + m].w);
     glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
     glViewport(0, 0, W, H);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -387,46 +382,34 @@ static void draw_frame(frames *fr, double time)
     }
     glFinish();
     label_frame(fr->px, W, H, time);
-}
-
-/* Every frame: its PNG, the video, and the filmstrip's copies. Returns 0, or 1 on a write error. */
-static int render_frames(frames *fr, int nframes, const char *figdir)
-{
-    const int W = fr->cfg->width, H = fr->cfg->height;
-    const size_t npx = (size_t)W * H;
-    char path[4096];
-    for (int f = 0; f < nframes; f++) {
-        const double time = fr->cfg->t_end * f / (nframes > 1 ? nframes - 1 : 1);
-        draw_frame(fr, time);
-        snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
-        if (write_png(fr->px, W, H, path) != 0)
-            return 1;
-        if (fr->video && fwrite(fr->px, sizeof(uint32_t), npx, fr->video) != npx) {
-            finish_video(fr->video);
-            fr->video = NULL;
-            stop_video();
-            fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
-        }
-        while (owned.strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * fr->cfg->t_end - 1e-9)
-            memcpy(owned.strip + (size_t)(fr->strip_next++) * npx, fr->px, npx * sizeof(uint32_t));
+    snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
+    if (write_png(fr->px, W, H, path) != 0)
+        return -1;
+    if (*video && fwrite(fr->px, sizeof(uint32_t), (size_t)W * H, *video) != (size_t)W * H) {
+        finish_video(*video);
+        *video = NULL;
+        stop_video();
+        fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
     }
+    while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9)
+        memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px, (size_t)W * H * sizeof(uint32_t));
     return 0;
 }
 
-/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times, under a title. */
-static int write_filmstrip(const uint32_t *strip, int W, int H, double eps, const char *figdir)
+/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times. */
+static int write_filmstrip(const frames *fr, double eps, const char *figdir)
 {
-    const int SW = 2 * W, SH = 3 * H + H / 8;
+    const int W = fr->W, H = fr->H, SW = 2 * W, SH = 3 * H + H / 8;
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
     cairo_t *cr = cairo_create(s);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     for (int i = 0; i < 6; i++) {
-        unsigned char *data = (unsigned char *)(strip + (size_t)i * W * H);
-        cairo_surface_t *fr = cairo_image_surface_create_for_data(data, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-        cairo_set_source_surface(cr, fr, (i % 2) * W, H / 8 + (i / 2) * H);
+        cairo_surface_t *f = cairo_image_surface_create_for_data(
+            (unsigned char *)(fr->strip + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
+        cairo_set_source_surface(cr, f, (i % 2) * W, H / 8 + (i / 2) * H);
         cairo_paint(cr);
-        cairo_surface_destroy(fr);
+        cairo_surface_destroy(f);
     }
     cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
     cairo_set_line_width(cr, 2.0);
@@ -454,58 +437,65 @@ static int write_filmstrip(const uint32_t *strip, int W, int H, double eps, cons
     return bad;
 }
 
-static int write_caption(const anim_config *cfg, const frames *fr, int nframes, const char *figdir)
+static int write_caption(const anim_config *cfg, const frames *fr, const char *figdir)
 {
+    const int W = fr->W, H = fr->H, nframes = fr->nframes;
+    const scene_body *body = fr->body;
+    char path[4096];
     double dist[2];
-    char cap[2048], path[4096];
     for (int m = 0; m < 2; m++)
-        dist[m] = so3_dist(fr->body[0].R, fr->body[1 + m].R);
-    snprintf(cap, sizeof cap,
-             "Attitude animation. Regenerate: make animation (or make figures); settings in "
-             "data/animation.cfg.\n"
-             "Three copies of the body: the exact motion (R from the reference attitude along the "
-             "closed-form w), the midpoint rule\n"
-             "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
-             "(algo)),\n"
-             "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the "
-             "step's own\n"
-             "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
-             "prints it\n"
-             "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part "
-             "of I;\n"
-             "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading "
-             "trail,\n"
-             "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint "
-             "%.3f,\n"
-             "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
-             "figures/attitude.mp4.\n"
-             "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-             cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, cfg->width, cfg->height, cfg->fps,
-             STRIP[0] * cfg->t_end, STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end,
-             STRIP[4] * cfg->t_end, STRIP[5] * cfg->t_end);
-    return fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0;
+        dist[m] = so3_dist(body[0].R, body[1 + m].R);
+    char cap[2048];
+    snprintf(
+        cap, sizeof cap,
+        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg->\n"
+        "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
+        "the midpoint rule\n"
+        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
+        "(algo)),\n"
+        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
+        "own\n"
+        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
+        "prints it\n"
+        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
+        "I;\n"
+        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
+        "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
+        "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
+        "figures/attitude.mp4.\n"
+        "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
+        cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps, STRIP[0] * cfg->t_end,
+        STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end, STRIP[4] * cfg->t_end,
+        STRIP[5] * cfg->t_end);
+    if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+        return -1;
+    return 0;
 }
 
-/* The GL context, the scene and the frame directory. Returns 0, or 1 (said why). */
-static int open_scene(frames *fr, const suslov_model *model, const char *figdir)
+/* Renders every frame, the video and the filmstrip. */
+static int render(frames *fr, const anim_config *cfg, const char *figdir)
 {
-    const int W = fr->cfg->width, H = fr->cfg->height;
-    char path[4096];
-    gl_context *gl = owned.gl = gl_context_create(W, H);
-    if (!gl || scene_init(&fr->sc, model, W / 3, H) != 0) {
-        fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
-        return 1;
-    }
-    fr->px = gl_context_pixels(gl);
+    char path[4096], mp4[4096];
     snprintf(path, sizeof path, "%s/attitude", figdir);
     if (mkdir(path, 0755) != 0 && errno != EEXIST) {
         fprintf(stderr, "animation: cannot create %s: %s\n", path, strerror(errno));
-        return 1;
+        return -1;
     }
+    snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
+    FILE *video = open_video(cfg, figdir, mp4);
+    suslov_refatt ra;
     double I3[3][3];
     mat3_identity(I3);
-    suslov_refatt_init(&fr->ra, fr->ex, 0.0, I3);
-    owned.strip = malloc(6 * (size_t)W * H * sizeof(uint32_t));
+    suslov_refatt_init(&ra, fr->ex, 0.0, I3);
+    fr->strip = owned.strip = malloc(6 * (size_t)fr->W * fr->H * sizeof(uint32_t));
+    for (int f = 0; f < fr->nframes; f++)
+        if (draw_frame(fr, &ra, f, figdir, &video) != 0)
+            return -1;
+    close_video(video, mp4);
+    if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, cfg->eps, figdir) != 0)
+        return -1;
+    free(fr->strip);
+    owned.strip = fr->strip = NULL;
     return 0;
 }
 
@@ -520,7 +510,7 @@ int main(int argc, char **argv)
     if (read_config(argv[1], &cfg) != 0)
         return 2;
     const char *figdir = argv[2], *datadir = argv[3];
-    char err[256], path[4096], mp4[4096];
+    char err[256], path[4096];
     suslov_model model;
     suslov_exact ex;
     if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
@@ -528,35 +518,25 @@ int main(int argc, char **argv)
         return 1;
     }
     suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
-    install_handlers();
-    const suslov_stepper_type *const st[2] = {suslov_step_midpoint, suslov_step_variational};
-    const char *names[2] = {st[0]->name, st[1]->name};
+    handle_signals();
     dsp_track track[2];
-    const int ran = run_tracks(&cfg, &model, &ex, st, track);
-    if (ran != 0)
-        return ran;
-    if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, names, 2) != 0)
+    if (run_integrators(&cfg, &model, &ex, track) != 0)
+        return 3;
+    if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, NAMES, 2) != 0)
         return 1;
-    static frames fr;
-    fr = (frames){.cfg = &cfg, .ex = &ex, .track = track};
-    const int nframes = (int)lround(cfg.fps * cfg.seconds);
-    if (open_scene(&fr, &model, figdir) != 0)
+    frames fr = {.cfg = &cfg, .ex = &ex, .track = track, .W = cfg.width, .H = cfg.height,
+                 .nframes = (int)lround(cfg.fps * cfg.seconds)};
+    gl_context *gl = owned.gl = gl_context_create(fr.W, fr.H);
+    if (!gl || scene_init(&fr.sc, &model, fr.W / 3, fr.H) != 0) {
+        fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
         return 1;
-    snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
-    fr.video = open_video(&cfg, figdir, mp4);
+    }
+    fr.px = gl_context_pixels(gl);
     const double t0 = suslov_now();
-    if (render_frames(&fr, nframes, figdir) != 0)
+    if (render(&fr, &cfg, figdir) != 0 || write_caption(&cfg, &fr, figdir) != 0)
         return 1;
     const double elapsed = suslov_now() - t0;
-    close_video(fr.video, mp4);
-    const int strip_done = owned.strip && fr.strip_next == 6;
-    if (strip_done && write_filmstrip(owned.strip, cfg.width, cfg.height, cfg.eps, figdir))
-        return 1;
-    free(owned.strip);
-    owned.strip = NULL;
-    if (write_caption(&cfg, &fr, nframes, figdir) != 0)
-        return 1;
-    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", nframes,
-           cfg.width, cfg.height, elapsed, nframes / elapsed);
+    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", fr.nframes, fr.W,
+           fr.H, elapsed, fr.nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */
 }

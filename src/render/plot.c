@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "plot.h"
 
+#include "atomic_file.h"
+
 #include <cairo-pdf.h>
 #include <errno.h>
 #include <math.h>
@@ -95,12 +97,14 @@ static double tx(double v, int log) { return log ? log10(v) : v; }
 
 static double map_x(const plot_axes *ax, double v)
 {
-    return ax->x + (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
+    return ax->x +
+           (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
 }
 
 static double map_y(const plot_axes *ax, double v)
 {
-    return ax->y + ax->h - (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
+    return ax->y + ax->h -
+           (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
 }
 
 void plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
@@ -385,7 +389,9 @@ void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
         return;
     const double bw = sample + 3 * pad + wmax, bh = rows * row + pad;
     const double bx = corner % 2 ? ax->x + ax->w - bw - 4.0 : ax->x + 4.0;
-    const double by = corner < 2 ? ax->y + 4.0 : corner < 4 ? ax->y + ax->h - bh - 4.0 : ax->y + 0.5 * (ax->h - bh);
+    const double by = corner < 2   ? ax->y + 4.0
+                      : corner < 4 ? ax->y + ax->h - bh - 4.0
+                                   : ax->y + 0.5 * (ax->h - bh);
     cairo_save(cr);
     cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
     cairo_rectangle(cr, bx, by, bw, bh);
@@ -435,65 +441,95 @@ void plot_slope(const plot_axes *ax, double xa, double xb, double yb, double slo
 
 /* ---- output ---- */
 
-static int finish_rename(const char *tmp, const char *path, char *err, size_t errlen)
+/* Cairo writes through the atomic file (src/util/atomic_file.h): all or nothing, and no temporary
+ * left behind even when the program is killed. */
+static cairo_status_t write_to(void *fp, const unsigned char *data, unsigned int len)
 {
-    if (rename(tmp, path) != 0) {
-        snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, path, strerror(errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    return fwrite(data, 1, len, fp) == len ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
-int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
-               void *ctx, char *err, size_t errlen)
+static void paint_page(cairo_t *cr, void (*draw)(cairo_t *, void *), void *ctx)
 {
-    char path[4096], tmp[4200];
-    /* PDF */
-    snprintf(path, sizeof path, "%s.pdf", base);
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    cairo_surface_t *pdf = cairo_pdf_surface_create(tmp, width, height);
-    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
-    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_MOD_DATE, "2000-01-01T00:00:00Z");
-    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATOR, "suslov companion (Cairo)");
-    cairo_t *cr = cairo_create(pdf);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     draw(cr, ctx);
+}
+
+static cairo_status_t draw_pdf(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *),
+                               void *ctx)
+{
+    cairo_surface_t *pdf = cairo_pdf_surface_create_for_stream(write_to, fp, width, height);
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_MOD_DATE, "2000-01-01T00:00:00Z");
+    cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATOR, "suslov companion (Cairo)");
+    cairo_t *cr = cairo_create(pdf);
+    paint_page(cr, draw, ctx);
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
     cairo_surface_finish(pdf);
     if (st == CAIRO_STATUS_SUCCESS)
         st = cairo_surface_status(pdf);
     cairo_surface_destroy(pdf);
-    if (st != CAIRO_STATUS_SUCCESS) {
-        snprintf(err, errlen, "drawing %s failed: %s", path, cairo_status_to_string(st));
-        unlink(tmp);
-        return -1;
-    }
-    if (finish_rename(tmp, path, err, errlen) != 0)
-        return -1;
-    /* PNG at PLOT_PNG_DPI */
+    return st;
+}
+
+/* At PLOT_PNG_DPI. */
+static cairo_status_t draw_png(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *),
+                               void *ctx)
+{
     const double s = PLOT_PNG_DPI / 72.0;
-    snprintf(path, sizeof path, "%s.png", base);
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
-    cr = cairo_create(img);
+    cairo_surface_t *img =
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
+    cairo_t *cr = cairo_create(img);
     cairo_scale(cr, s, s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    draw(cr, ctx);
-    st = cairo_status(cr);
+    paint_page(cr, draw, ctx);
+    cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
     if (st == CAIRO_STATUS_SUCCESS)
-        st = cairo_surface_write_to_png(img, tmp);
+        st = cairo_surface_write_to_png_stream(img, write_to, fp);
     cairo_surface_destroy(img);
+    return st;
+}
+
+typedef cairo_status_t (*page_writer)(FILE *, double, double, void (*)(cairo_t *, void *), void *);
+
+static int write_one(const char *path, page_writer wr, double width, double height,
+                     void (*draw)(cairo_t *, void *), void *ctx, char *err, size_t errlen)
+{
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, errlen) != 0)
+        return -1;
+    const cairo_status_t st = wr(af.fp, width, height, draw, ctx);
     if (st != CAIRO_STATUS_SUCCESS) {
+        atomic_file_abort(&af);
         snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
-        unlink(tmp);
         return -1;
     }
-    return finish_rename(tmp, path, err, errlen);
+    return atomic_file_commit(&af, err, errlen);
+}
+
+int plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
+{
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, errlen) != 0)
+        return -1;
+    const cairo_status_t st = cairo_surface_write_to_png_stream(s, write_to, af.fp);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        atomic_file_abort(&af);
+        snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
+        return -1;
+    }
+    return atomic_file_commit(&af, err, errlen);
+}
+
+int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
+               void *ctx, char *err, size_t errlen)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s.pdf", base);
+    if (write_one(path, draw_pdf, width, height, draw, ctx, err, errlen) != 0)
+        return -1;
+    snprintf(path, sizeof path, "%s.png", base);
+    return write_one(path, draw_png, width, height, draw, ctx, err, errlen);
 }

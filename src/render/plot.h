@@ -76,6 +76,8 @@ void plot_text(cairo_t *cr, double x, double y, const char *text, double size, d
 /* Renders draw(cr, ctx) on a width x height point page into base.pdf and base.png. Returns 0,
  * or -1 with a one-line reason. The PDF carries a fixed creation date so that it is
  * reproducible byte for byte. */
+/* An image surface as a PNG file, through the atomic file (src/util/atomic_file.h). */
+int plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen);
 int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
                void *ctx, char *err, size_t errlen);
 

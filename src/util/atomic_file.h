@@ -3,18 +3,30 @@
  * A regular file is written unnamed (O_TMPFILE) in the target's directory and linked in
  * under a temporary name, then renamed over the target, only on commit: a process killed
  * even by SIGKILL leaves no file. Where O_TMPFILE is unsupported (or /proc is missing) the
- * file is a named mkstemp temporary; SIGINT, SIGTERM, SIGHUP and SIGPIPE then remove it
- * before the process dies of the signal (handlers are installed only where the signal has
- * its default action, so e.g. nohup's ignored SIGHUP stays ignored).
+ * file is a named mkstemp temporary; every catchable signal whose default action ends the
+ * process then removes it before the process dies of that signal (handlers are installed
+ * only where the signal has its default action, so e.g. nohup's ignored SIGHUP stays ignored).
+ * The temporary's name, ATOMIC_FILE_TMP_PREFIX plus at most ATOMIC_FILE_TMP_SUFFIX_MAX
+ * characters, does not grow with the target's name, so any valid target name can be written.
  *
- * Unix semantics: a new file gets 0666 & ~umask, an existing file keeps its mode, and a
- * symbolic link is written through (its target is replaced, the link stays). A device or
- * pipe (e.g. /dev/null) is written directly and never renamed over; no path means stdout. */
+ * Unix semantics, as a shell redirection where it can be and as cp without -f where not:
+ * - no path, or "-", means stdout, written in place and never renamed;
+ * - a path that names an open descriptor (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N,
+ *   or a link to one) is written in place through that descriptor, at its offset and in its
+ *   append mode, whatever file it refers to;
+ * - a device or pipe is written in place;
+ * - a regular file is replaced atomically: a new file gets 0666 & ~umask, an existing file
+ *   keeps its mode but not its owner (the writer owns the new file) and not its hard links
+ *   (the other names keep the old contents); a read-only file is refused; a symbolic link is
+ *   written through (its target is replaced, the link stays). */
 #ifndef SUSLOV_ATOMIC_FILE_H
 #define SUSLOV_ATOMIC_FILE_H
 
 #include <stddef.h>
 #include <stdio.h>
+
+#define ATOMIC_FILE_TMP_PREFIX ".tmp."
+#define ATOMIC_FILE_TMP_SUFFIX_MAX 24 /* "XXXXXX" or "PID.I": a pid and a counter below 1000 */
 
 typedef struct {
     FILE *fp;
@@ -22,11 +34,16 @@ typedef struct {
     char target[4096];    /* the file replaced on commit: path, or the target of the link */
     char tmp[4096];       /* named temporary path, empty when unnamed or writing directly */
     int unnamed;          /* 1: an O_TMPFILE file, named only on commit */
+    int in_place;         /* 1: stdout, a descriptor, a device or a pipe: never renamed */
     int slot;             /* its entry in the signal-cleanup table, or -1 */
 } atomic_file;
 
-/* Checks that path can be written (non-empty, not a directory, its directory exists and is
- * writable) without creating anything. Returns 0, or -1 with a one-line reason in err. */
+/* Checks, without creating anything, every condition of a later commit that can be checked
+ * now: the path is non-empty and not a directory; for a descriptor, device or pipe, that it
+ * can be written; for a regular file, that it is not read-only, that its directory exists
+ * and is writable, that the temporary's name fits (NAME_MAX, PATH_MAX) and that the rename
+ * is permitted (a sticky directory lets only the owner of the file or directory replace it).
+ * Returns 0, or -1 with a one-line reason in err. */
 int atomic_file_check(const char *path, char *err, size_t errlen);
 /* Returns 0, or -1 with a one-line reason in err (nothing is left behind). */
 int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen);
@@ -34,5 +51,8 @@ int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen
 int atomic_file_commit(atomic_file *af, char *err, size_t errlen);
 /* Closes and removes the temporary file; the final path is left untouched. */
 void atomic_file_abort(atomic_file *af);
+/* Removes every named temporary now open; async-signal-safe, for a program that handles a
+ * signal itself (its handler then takes precedence over this file's). */
+void atomic_file_remove_temporaries(void);
 
 #endif

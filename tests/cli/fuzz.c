@@ -2,11 +2,18 @@
  * interface (README, `suslov` section) on each run:
  *   - the exit status is 0, 2 or 3 (or 128+15 when the fuzzer itself stopped a long run with
  *     SIGTERM); never a crash, a sanitizer report or another status;
- *   - on 2 and 3 stderr is exactly one line "suslov: error: ..."; on 0 stderr is empty;
+ *   - on 2 and 3 stderr is exactly one line "suslov: error: ..."; on 0 stderr is empty or one
+ *     "suslov: warning: ..." line (an option that does not apply);
  *   - on 2 nothing is written: stdout is empty and no file in the work directory is created,
  *     changed or removed;
  *   - no temporary file (*.tmp.*) is ever left, whatever the status;
- *   - written rows have 16 fields and no nan/inf (a blow-up is exit 3, never printed).
+ *   - written rows have 16 fields and no nan/inf (a blow-up is exit 3, never printed), after
+ *     the #-comment header lines; a file left by exit 3 ends with "# incomplete: ...".
+ * Besides argv it varies: both temporary-file modes; every catchable signal (SIGKILL only with
+ * O_TMPFILE) sent mid-run; a run as the unprivileged user nobody (when the fuzzer is root)
+ * against another user's files, a read-only file and a sticky directory; outputs to
+ * /dev/stdout, /dev/fd/1, "-", a pipe and names of 250 and 256 bytes; huge t for exact and
+ * counts whose conversion to an integer would overflow.
  * Usage: fuzz SUSLOV [SECONDS [SEED]]. The seed is printed first, so a failing run can be
  * replayed; the last line is "fuzz: N passed, N failed". */
 #define _GNU_SOURCE
@@ -20,6 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <grp.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -60,17 +68,25 @@ static const char *const RECONS[] = {"cayley", "cayley-mid", "exp-mid", "exp", "
 static const char *const NUMBERS[] = {
     "0.1", "1", "0.5", "1e-3", "2", "0.25", "1000", "1e7", "1e308", "1.7976931348623157e308", "-1", "0",
     "-0", "nan", "inf", "-inf", "1e-320", "4.9e-324", "0x1p-1022", "2.2250738585072014e-308", "1e400",
-    "0.1x", "", "  1", " ", "+1", "1e", "e5", "0x10", "1,5", "3", "17", "100", "-1e308", "1e-300", "4,5"};
+    "0.1x", "", "  1", " ", "+1", "1e", "e5", "0x10", "1,5", "3", "17", "100", "-1e308", "1e-300", "4,5",
+    "1e300", "1e155", "1e19", "1e150"};
 static const char *const INTEGERS[] = {
     "1", "2", "3", "7", "10", "100", "1000", "0", "-1", "2.5", "9223372036854775807", "9223372036854775808",
-    "-9223372036854775808", "1e3", "", " 5", "5 ", "0x10", "007", "4611686018427387904"};
+    "-9223372036854775808", "1e3", "", " 5", "5 ", "0x10", "007", "4611686018427387904", "1e19",
+    "9.2233720368547758e18", "9.2233720368547748e18", "1e6", "2e0", "1.5e1", "-0", "inf", "nan", "0x1p63"};
 static const char *const HOSTILE[] = {"\n", "a\nb", "\x1b[31mred", "%s%n%x%d", "\t", "\r", "\x7f", "--",
                                       "-", "=", "--eps=", "\xff\xfe", "\xc3\xa9", ",", ",,", "1,,2", ",1,2,"};
 static const char *const OPTIONS[] = {"--method", "--eps", "--steps", "--time", "--omega0", "--inertia",
                                       "--reconstruct", "--every", "--output", "--quiet", "--help", "--frob",
-                                      "-h", "--EPS", "--steps="};
+                                      "-h", "--EPS", "--steps=", "--header", "--no-header", "--version",
+                                      "--man", "--"};
+#define X50 "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx"
+#define LONG250 X50 X50 X50 X50 X50
+#define LONG256 X50 X50 X50 X50 X50 "xxxxxx"
 static const char *const OUTPUTS[] = {"out.csv", "keep.csv", "sub/x.csv", "missing/x.csv", "", "sub",
-                                      "/dev/null", "link.csv", "dangling.csv", ".", "sub/", "ro/x.csv"};
+                                      "/dev/null", "link.csv", "dangling.csv", ".", "sub/", "ro/x.csv",
+                                      "-", "/dev/stdout", "/dev/fd/1", "st/other.csv", "st/new.csv",
+                                      "rofile.csv", LONG250, LONG256};
 
 static void random_number(char *buf, size_t len)
 {
@@ -135,7 +151,9 @@ static void add_option(const char *opt)
 {
     char val[ARGLEN - 64];
     random_value(opt, val, sizeof val);
-    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--help") || !strcmp(opt, "-h")) {
+    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--help") || !strcmp(opt, "-h") || !strcmp(opt, "--header") ||
+        !strcmp(opt, "--no-header") || !strcmp(opt, "--version") || !strcmp(opt, "--man") ||
+        !strcmp(opt, "--")) {
         add(opt);
     } else if (pick(6) == 0) { /* --opt=value */
         char both[ARGLEN];
@@ -204,8 +222,8 @@ static void write_file(const char *name, const char *text, mode_t mode)
 static void reset_workdir(void)
 {
     char cmd[4096];
-    snprintf(cmd, sizeof cmd, "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir, workdir,
-             workdir);
+    snprintf(cmd, sizeof cmd, "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir,
+             workdir, workdir);
     if (system(cmd) != 0) { /* rm may report nothing to remove */
     }
     char path[8192];
@@ -214,6 +232,12 @@ static void reset_workdir(void)
     snprintf(path, sizeof path, "%s/ro", workdir);
     mkdir(path, 0555);
     write_file("keep.csv", "previous contents\n", 0600);
+    write_file("rofile.csv", "read-only\n", 0444);
+    snprintf(path, sizeof path, "%s/st", workdir); /* sticky, with another user's (root's) file */
+    mkdir(path, 0755);
+    chmod(path, 01777);
+    write_file("st/other.csv", "root's\n", 0666);
+    chmod(path, 01777);
     write_file("target.csv", "link target\n", 0644);
     snprintf(path, sizeof path, "%s/link.csv", workdir);
     if (symlink("target.csv", path) != 0)
@@ -227,10 +251,10 @@ static void reset_workdir(void)
  * of the contents (or of the link text). */
 static void snapshot(char *out, size_t len)
 {
-    const char *dirs[] = {"", "/sub", "/ro"};
+    const char *dirs[] = {"", "/sub", "/ro", "/st"};
     size_t used = 0;
     out[0] = '\0';
-    for (int d = 0; d < 3; d++) {
+    for (int d = 0; d < 4; d++) {
         char dpath[1024];
         snprintf(dpath, sizeof dpath, "%s%s", workdir, dirs[d]);
         struct dirent **names;
@@ -268,8 +292,8 @@ static void snapshot(char *out, size_t len)
 
 static int has_temp(char *which, size_t len)
 {
-    const char *dirs[] = {"", "/sub", "/ro"};
-    for (int d = 0; d < 3; d++) {
+    const char *dirs[] = {"", "/sub", "/ro", "/st"};
+    for (int d = 0; d < 4; d++) {
         char dpath[1024];
         snprintf(dpath, sizeof dpath, "%s%s", workdir, dirs[d]);
         DIR *dir = opendir(dpath);
@@ -321,6 +345,8 @@ static int rows_ok(const char *path, char *why, size_t len)
     }
     int ok = 1;
     while (ok && n < 10000 && fgets(line, sizeof line, fp)) {
+        if (line[0] == '#') /* the header's comment lines, and the trailer of exit 3 */
+            continue;
         n++;
         if (n == 1) {
             if (strcmp(line, HEADER) != 0)
@@ -359,98 +385,102 @@ static void print_args(FILE *fp)
     fputc('\n', fp);
 }
 
-/* kill_sig: 0, or a signal sent kill_after seconds into the run (a run killed by it must
- * have changed nothing and left no temporary). */
 static int output_ok(char *why, size_t len);
 
-static int run_case(long id, int no_tmpfile, int kill_sig, double kill_after, char *why, size_t len)
+/* How a case is run: the temporary-file mode, a signal sent kill_after seconds into the run
+ * (0: none; a run killed by it must have changed nothing and left no temporary), and as the
+ * user nobody (only when the fuzzer runs as root). */
+typedef struct {
+    int no_tmpfile, kill_sig, as_nobody;
+    double kill_after;
+} run_mode;
+
+static pid_t spawn(const run_mode *rm, const char *out, const char *err)
 {
-    char before[65536], after[65536], out[8192], err[8192], tmpname[512];
-    snprintf(out, sizeof out, "%s/stdout", capdir);
-    snprintf(err, sizeof err, "%s/stderr", capdir);
-    reset_workdir();
-    snapshot(before, sizeof before);
+    /* A signal may arrive before the exec: the child must die of it as suslov would, not be
+     * caught by a sanitizer's handler that this (possibly sanitized) fuzzer installed; every
+     * signal is held until the child has restored the default actions. */
+    static const int fault_sigs[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP};
+    sigset_t all, old;
+    sigfillset(&all);
+    sigprocmask(SIG_BLOCK, &all, &old);
     const pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(workdir) != 0)
-            _exit(120);
-        const int fo = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int fe = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int fi = open("/dev/null", O_RDONLY);
-        if (fo < 0 || fe < 0 || fi < 0)
-            _exit(121);
-        dup2(fi, 0);
-        dup2(fo, 1);
-        dup2(fe, 2);
-        signal(SIGPIPE, SIG_DFL); /* the fuzzer ignores it; suslov must see the default */
-        if (no_tmpfile)
-            setenv("SUSLOV_NO_O_TMPFILE", "1", 1);
-        else
-            unsetenv("SUSLOV_NO_O_TMPFILE");
-        execv(suslov_bin, args);
-        _exit(122);
+    if (pid != 0) {
+        sigprocmask(SIG_SETMASK, &old, NULL);
+        return pid;
     }
-    int status = 0, stopped = 0, sent = 0;
+    for (size_t i = 0; i < sizeof fault_sigs / sizeof fault_sigs[0]; i++)
+        signal(fault_sigs[i], SIG_DFL);
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    if (chdir(workdir) != 0)
+        _exit(120);
+    const int fo = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int fe = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int fi = open("/dev/null", O_RDONLY);
+    if (fo < 0 || fe < 0 || fi < 0)
+        _exit(121);
+    dup2(fi, 0);
+    dup2(fo, 1);
+    dup2(fe, 2);
+    signal(SIGPIPE, SIG_DFL); /* the fuzzer ignores it; suslov must see the default */
+    if (rm->no_tmpfile)
+        setenv("SUSLOV_NO_O_TMPFILE", "1", 1);
+    else
+        unsetenv("SUSLOV_NO_O_TMPFILE");
+    /* under SAN=1 AddressSanitizer would take SEGV, BUS and FPE for itself: leave them to suslov */
+    char asan[4096];
+    snprintf(asan, sizeof asan, "%s:handle_segv=0:handle_sigbus=0:handle_sigfpe=0",
+             getenv("ASAN_OPTIONS") ? getenv("ASAN_OPTIONS") : "");
+    setenv("ASAN_OPTIONS", asan, 1);
+    if (rm->as_nobody && (setgroups(0, NULL) != 0 || setgid(65534) != 0 || setuid(65534) != 0))
+        _exit(123);
+    execv(suslov_bin, args);
+    _exit(122);
+}
+
+/* Waits, sending the case's signal when due and SIGTERM after run_limit. The exit status as
+ * a shell gives it (128 + n for a signal); *stopped and *sent say what the fuzzer did. */
+static int wait_run(pid_t pid, const run_mode *rm, int *stopped, int *sent)
+{
+    int status = 0;
     const double t0 = suslov_now();
-    for (;;) {
-        const pid_t r = waitpid(pid, &status, WNOHANG);
-        if (r == pid)
-            break;
-        if (kill_sig && !sent && suslov_now() - t0 > kill_after) {
-            kill(pid, kill_sig);
-            sent = 1;
+    *stopped = *sent = 0;
+    while (waitpid(pid, &status, WNOHANG) != pid) {
+        if (rm->kill_sig && !*sent && suslov_now() - t0 > rm->kill_after) {
+            kill(pid, rm->kill_sig);
+            *sent = 1;
         }
-        if (!stopped && suslov_now() - t0 > run_limit) {
+        if (!*stopped && suslov_now() - t0 > run_limit) {
             kill(pid, SIGTERM);
-            stopped = 1;
-        } else if (stopped && suslov_now() - t0 > run_limit + 30.0) {
+            *stopped = 1;
+        } else if (*stopped && suslov_now() - t0 > run_limit + 30.0) {
             kill(pid, SIGKILL);
         }
         usleep(2000);
     }
-    char first[4096];
-    const long errlines = count_lines(err, first, sizeof first);
-    const long outlines = count_lines(out, NULL, 0);
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    (void)id;
-    if (strstr(first, "Sanitizer") || strstr(first, "runtime error")) {
-        snprintf(why, len, "sanitizer report: %.300s", first);
-        return 0;
-    }
-    if (has_temp(tmpname, sizeof tmpname)) {
-        snprintf(why, len, "temporary file left: %s (status %d)", tmpname, code);
-        return 0;
-    }
-    if (sent && code == 128 + kill_sig) {
-        by_status[4]++;
-        snapshot(after, sizeof after);
-        /* A signal that arrives during the commit is held until the file is in place (then
-         * the file is complete); at any other time nothing may have changed. */
-        if (strcmp(before, after) != 0 && !output_ok(why, len)) {
-            snprintf(why, len, "killed by signal %d, but files were changed", kill_sig);
-            return 0;
-        }
-        return 1;
-    }
-    by_status[stopped ? 3 : code == 0 ? 0 : code == 2 ? 1 : 2]++;
-    if (stopped) {
-        if (code != 128 + SIGTERM) {
-            snprintf(why, len, "stopped with SIGTERM after %.0f s, status %d (want 143)", run_limit, code);
-            return 0;
-        }
-        return 1;
-    }
-    if (code != 0 && code != 2 && code != 3) {
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/* The promises on a finished run's status, stderr, stdout and files. */
+static int judge(int code, const char *before, const char *first, long errlines, long outlines, char *why,
+                 size_t len)
+{
+    char after[65536];
+    if (code != 0 && code != 1 && code != 2 && code != 3) {
         snprintf(why, len, "exit status %d; stderr: %.300s", code, first);
         return 0;
     }
-    if (code == 0 && errlines != 0) {
+    if (code == 0 && errlines != 0 && (errlines != 1 || strncmp(first, "suslov: warning: ", 17) != 0)) {
         snprintf(why, len, "exit 0 with %ld stderr lines: %.300s", errlines, first);
         return 0;
     }
     if (code != 0 && (errlines != 1 || strncmp(first, "suslov: error: ", 15) != 0)) {
-        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s", code, errlines,
-                 first);
+        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s", code,
+                 errlines, first);
+        return 0;
+    }
+    if (code == 1 && !strstr(first, "writing stdout failed")) { /* only stdout can fail here */
+        snprintf(why, len, "exit 1: %.300s", first);
         return 0;
     }
     snapshot(after, sizeof after);
@@ -459,36 +489,107 @@ static int run_case(long id, int no_tmpfile, int kill_sig, double kill_after, ch
                  strcmp(before, after) ? "changed" : "unchanged");
         return 0;
     }
-    if ((code == 0 || code == 3) && !output_ok(why, len))
-        return 0;
-    return 1;
+    return !((code == 0 || code == 3) && !output_ok(why, len));
 }
 
-/* Rows that were written, to stdout or to the file named after --output, are complete. */
+static int run_case(const run_mode *rm, char *why, size_t len)
+{
+    char before[65536], after[65536], out[8192], err[8192], tmpname[512], first[4096];
+    snprintf(out, sizeof out, "%s/stdout", capdir);
+    snprintf(err, sizeof err, "%s/stderr", capdir);
+    reset_workdir();
+    snapshot(before, sizeof before);
+    int stopped, sent;
+    const int code = wait_run(spawn(rm, out, err), rm, &stopped, &sent);
+    const long errlines = count_lines(err, first, sizeof first);
+    const long outlines = count_lines(out, NULL, 0);
+    if (strstr(first, "Sanitizer") || strstr(first, "runtime error")) {
+        snprintf(why, len, "sanitizer report: %.300s", first);
+        return 0;
+    }
+    if (has_temp(tmpname, sizeof tmpname)) {
+        snprintf(why, len, "temporary file left: %s (status %d)", tmpname, code);
+        return 0;
+    }
+    if (sent && code == 128 + rm->kill_sig) {
+        by_status[4]++;
+        snapshot(after, sizeof after);
+        /* A signal that arrives during the commit is held until the file is in place (then
+         * the file is complete); at any other time nothing may have changed. */
+        if (strcmp(before, after) != 0 && !output_ok(why, len)) {
+            snprintf(why, len, "killed by signal %d, but files were changed", rm->kill_sig);
+            return 0;
+        }
+        return 1;
+    }
+    by_status[stopped ? 3 : code == 0 ? 0 : code == 2 ? 1 : 2]++;
+    if (stopped) {
+        if (code != 128 + SIGTERM)
+            snprintf(why, len, "stopped with SIGTERM after %.0f s, status %d (want 143)", run_limit, code);
+        return code == 128 + SIGTERM;
+    }
+    return judge(code, before, first, errlines, outlines, why, len);
+}
+
+/* Rows that were written, to stdout or to the file named after --output, are complete. A text
+ * that is not CSV (--help, --man, --version, --method list) is not judged here. */
 static int output_ok(char *why, size_t len)
 {
-    char out[8192];
-    snprintf(out, sizeof out, "%s/stdout", capdir);
-    {
-        const char *o = NULL;
-        for (int i = 1; i < nargs; i++) {
-            if (!strcmp(args[i], "--output") && i + 1 < nargs)
-                o = args[i + 1];
-            else if (!strncmp(args[i], "--output=", 9))
-                o = args[i] + 9;
-        }
-        int help = 0;
-        for (int i = 1; i < nargs; i++)
-            help |= !strcmp(args[i], "--help") || !strcmp(args[i], "-h");
-        char path[8192];
-        if (o && strcmp(o, "/dev/null") != 0)
-            snprintf(path, sizeof path, "%s/%s", workdir, o);
-        else
-            snprintf(path, sizeof path, "%s", out);
-        if (!help && !(o && !strcmp(o, "/dev/null")) && !rows_ok(path, why, len))
-            return 0;
+    const char *o = NULL;
+    int text = 0;
+    for (int i = 1; i < nargs; i++) {
+        if (!strcmp(args[i], "--output") && i + 1 < nargs)
+            o = args[i + 1];
+        else if (!strncmp(args[i], "--output=", 9))
+            o = args[i] + 9;
+        text |= !strcmp(args[i], "--help") || !strcmp(args[i], "-h") || !strcmp(args[i], "--man") ||
+                !strcmp(args[i], "--version") || !strcmp(args[i], "list") ||
+                !strcmp(args[i], "--method=list");
     }
-    return 1;
+    char path[8192];
+    const int to_stdout = !o || !strcmp(o, "-") || !strcmp(o, "/dev/stdout") || !strcmp(o, "/dev/fd/1");
+    if (text || (o && !strcmp(o, "/dev/null")))
+        return 1;
+    if (to_stdout)
+        snprintf(path, sizeof path, "%s/stdout", capdir);
+    else
+        snprintf(path, sizeof path, "%s/%s", workdir, o);
+    return rows_ok(path, why, len);
+}
+
+/* Whether the user nobody can reach and run suslov (not from a private directory). */
+static int nobody_can_run(void)
+{
+    const pid_t pid = fork();
+    if (pid == 0)
+        _exit(setgroups(0, NULL) == 0 && setgid(65534) == 0 && setuid(65534) == 0 &&
+                      access(suslov_bin, X_OK) == 0
+                  ? 0
+                  : 1);
+    int status = 1;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* Seconds for suslov to start and exit (the slowest of three --version runs): a sanitized build on
+ * a loaded machine takes seconds, which the per-run limit must allow for. */
+static double startup_time(void)
+{
+    double worst = 0.0;
+    for (int i = 0; i < 3; i++) {
+        const double t0 = suslov_now();
+        const pid_t pid = fork();
+        if (pid == 0) {
+            const int fd = open("/dev/null", O_WRONLY);
+            dup2(fd, 1);
+            execl(suslov_bin, "suslov", "--version", (char *)NULL);
+            _exit(122);
+        }
+        waitpid(pid, NULL, 0);
+        const double dt = suslov_now() - t0;
+        worst = dt > worst ? dt : worst;
+    }
+    return worst;
 }
 
 int main(int argc, char **argv)
@@ -518,6 +619,15 @@ int main(int argc, char **argv)
         return 2;
     }
     signal(SIGPIPE, SIG_IGN);
+    run_limit += 4.0 * startup_time();
+    /* the permission cases run as nobody, who must reach the work directory and suslov */
+    const int root = geteuid() == 0 && nobody_can_run();
+    if (root) {
+        chmod(workdir, 0777);
+        chmod(capdir, 0777);
+    }
+    printf("fuzz: %s\n", root ? "some runs as the user nobody (permission cases)"
+                                : "SKIP runs as nobody: the fuzzer is not root, or nobody cannot run suslov");
     printf("fuzz: seed %llu, %.0f s, %s (replay: fuzz %s %.0f %llu)\n", (unsigned long long)seed, seconds,
            suslov_bin, argv[1], seconds, (unsigned long long)seed);
     fflush(stdout);
@@ -527,16 +637,22 @@ int main(int argc, char **argv)
     for (long id = 0; suslov_now() - start < seconds; id++) {
         char why[1024];
         generate();
-        const int no_tmpfile = pick(4) == 0;
-        static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGKILL};
-        /* SIGKILL only with O_TMPFILE: the named fallback cannot clean up after it */
-        const int kill_sig = pick(10) == 0 ? sigs[pick(no_tmpfile ? 4 : 5)] : 0;
-        if (run_case(id, no_tmpfile, kill_sig, 0.0005 * pick(60), why, sizeof why)) {
+        run_mode rm = {.no_tmpfile = pick(4) == 0, .as_nobody = root && pick(5) == 0};
+        /* every catchable signal whose default ends the process; SIGKILL only with O_TMPFILE:
+         * the named fallback cannot clean up after it */
+        static const int sigs[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2, SIGPIPE, SIGALRM,
+                                   SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO, SIGPWR, SIGSYS,
+                                   SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, 34, 64, SIGKILL};
+        const int nsigs = (int)(sizeof sigs / sizeof sigs[0]);
+        rm.kill_sig = pick(10) == 0 ? sigs[pick(rm.no_tmpfile ? nsigs - 1 : nsigs)] : 0;
+        rm.kill_after = 0.0005 * pick(60);
+        if (run_case(&rm, why, sizeof why)) {
             pass++;
         } else {
             fail++;
             if (fail <= 30) {
-                printf("FAIL case %ld%s: %s; argv:", id, no_tmpfile ? " (SUSLOV_NO_O_TMPFILE=1)" : "", why);
+                printf("FAIL case %ld%s%s: %s; argv:", id, rm.no_tmpfile ? " (SUSLOV_NO_O_TMPFILE=1)" : "",
+                       rm.as_nobody ? " (as nobody)" : "", why);
                 print_args(stdout);
                 fflush(stdout);
             }
@@ -546,9 +662,10 @@ int main(int argc, char **argv)
     snprintf(cmd, sizeof cmd, "chmod -R u+w '%s'; rm -rf '%s' '%s'", workdir, workdir, capdir);
     if (system(cmd) != 0)
         fprintf(stderr, "fuzz: could not remove %s\n", workdir);
-    printf("fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; killed by a "
-           "random signal mid-run: %ld\n", by_status[0], by_status[1], by_status[2], run_limit, by_status[3],
-           by_status[4]);
+    printf(
+        "fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; killed by a "
+        "random signal mid-run: %ld\n",
+        by_status[0], by_status[1], by_status[2], run_limit, by_status[3], by_status[4]);
     printf("fuzz: %ld passed, %ld failed\n", pass, fail);
     return fail != 0;
 }

@@ -4,15 +4,7 @@
 set -u
 B=${1:-build}
 S="$B/suslov"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
-ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
-ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
-check() { # check DESCRIPTION COMMAND...
-    d=$1; shift
-    if "$@"; then ok "$d"; else ko "$d"; fi
-}
+. "$(dirname "$0")/cli_testlib.sh"
 HEADER='k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33'
 
 # --help documents every option and exits 0
@@ -27,7 +19,7 @@ check "--help exits 0 and documents every option and value${missing:+ (missing:$
 
 # exact header, row count with --every and the last row, %.17g numbers, 16 fields
 for m in exact euler midpoint rk4 variational; do
-    "$S" --method $m --eps 0.1 --steps 25 --every 10 >"$T/$m.csv" 2>"$T/err"; rc=$?
+    "$S" --no-header --method $m --eps 0.1 --steps 25 --every 10 >"$T/$m.csv" 2>"$T/err"; rc=$?
     rows=$(tail -n +2 "$T/$m.csv" | cut -d, -f1 | tr '\n' ' ')
     nf=$(awk -F, 'NR > 1 && NF != 16 { bad++ } END { print bad + 0 }' "$T/$m.csv")
     check "$m: exit 0, exact header, rows k = 0 10 20 25, 16 fields" \
@@ -38,13 +30,17 @@ check "numbers are printed with %.17g (t = 2.5 at k = 25, w1(0) = 0.400000000000
 check "row 0 of a DSP has w1 = 0.40000000000000002, R = I" \
     grep -q '^0,0,0.40000000000000002,0.5,0,.*,1,0,0,0,1,0,0,0,1$' "$T/midpoint.csv"
 
-# --time T gives N = round(T/H)
-"$S" --method euler --eps 0.3 --time 1 | tail -1 | cut -d, -f1 >"$T/n"
-check "--time 1 --eps 0.3 gives N = round(3.33) = 3 steps" test "$(cat "$T/n")" = 3
+# --time T ends exactly at T: N = T/H when that is a whole number, else refused naming the
+# nearest valid final times (never a silent rounding)
+"$S" --no-header --method euler --eps 0.3 --time 1.2 | tail -1 | cut -d, -f1,2 >"$T/n"
+check "--time 1.2 --eps 0.3 gives N = 4 steps, last t = 4 * 0.3 ($(cat "$T/n"))" test "$(cat "$T/n")" = 4,1.2
+"$S" --method euler --eps 3 --time 10 >"$T/out" 2>"$T/err"; rc=$?
+check "--time 10 --eps 3 is refused (exit 2), naming --time 9 and --time 12 ($(cat "$T/err"))" \
+    sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q -- '--time 9 or --time 12' '$T/err'"
 
 # deterministic: the same command gives the same bytes
-"$S" --method variational --eps 0.5 --steps 200 --reconstruct cayley-mid >"$T/a.csv"
-"$S" --method variational --eps 0.5 --steps 200 --reconstruct cayley-mid >"$T/b.csv"
+"$S" --no-header --method variational --eps 0.5 --steps 200 --reconstruct cayley-mid >"$T/a.csv"
+"$S" --no-header --method variational --eps 0.5 --steps 200 --reconstruct cayley-mid >"$T/b.csv"
 check "the same command gives identical output" cmp -s "$T/a.csv" "$T/b.csv"
 
 # bad input: one line "suslov: error: ...", exit 2, no output file created or truncated
@@ -93,10 +89,10 @@ bad "the energy at w0 overflows" --method rk4 --eps 0.1 --steps 3 --omega0 1e200
 bad "a newline in an argument" --method "$(printf 'rk\n4')" --eps 0.1 --steps 3
 bad "control characters in an option name" --method rk4 --eps 0.1 --steps 3 "$(printf -- '--a\tb\rc\033d\ne')" 1
 bad "a newline in a list" --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')"
-"$S" --method rk4 --eps 1e-320 --steps 3 2>"$T/err" >/dev/null
+"$S" --no-header --method rk4 --eps 1e-320 --steps 3 2>"$T/err" >/dev/null
 check "a subnormal --eps is called too small, not 'not finite' ($(cat "$T/err"))" \
     sh -c "grep -q 'too small' '$T/err' && ! grep -q 'not a finite' '$T/err'"
-"$S" --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')" 2>"$T/err" >/dev/null
+"$S" --no-header --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')" 2>"$T/err" >/dev/null
 check "control characters in quoted text are escaped: $(cat "$T/err")" grep -qF "'1\n'" "$T/err"
 
 # the output path is checked before computing (a run of 10^13 steps would take hours):
@@ -105,14 +101,14 @@ mkdir -p "$T/ro"; chmod 555 "$T/ro"
 for o in "" "$T" "$T/missing/x.csv" "$T/ro/x.csv"; do
     # root may write in a read-only directory: then the run is (rightly) not refused
     if [ "$o" = "$T/ro/x.csv" ] && touch "$T/ro/probe" 2>/dev/null; then rm -f "$T/ro/probe"; continue; fi
-    timeout 20 "$S" --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 --output "$o" >"$T/out" 2>"$T/err"; rc=$?
+    timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 --output "$o" >"$T/out" 2>"$T/err"; rc=$?
     check "--output '$o' is refused before computing: exit 2, one line ($(cat "$T/err")), nothing created" \
         sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' -a ! -e '$T/missing' -a -z \"\$(ls -A '$T/ro')\""
 done
 chmod 755 "$T/ro"
 
 # a solver failure: exit 3, message names step, t, residual; the file keeps the rows before it
-"$S" --method variational --eps 1000 --steps 10 --omega0 4,5 --output "$T/fail.csv" 2>"$T/err"; rc=$?
+"$S" --no-header --method variational --eps 1000 --steps 10 --omega0 4,5 --output "$T/fail.csv" 2>"$T/err"; rc=$?
 check "solver failure: exit 3 and the message names step 1, t = 1000 and the residual ($(cat "$T/err"))" \
     sh -c "test $rc = 3 && grep -q 'variational step 1 (t = 1000) failed' '$T/err' && grep -q 'residual' '$T/err'"
 check "solver failure: the output file holds the header and row 0, complete" \
@@ -129,7 +125,7 @@ for e in 1000 1300 1700 2500; do
     for a in 0 1 2 3 4 5 6 7; do
         w=$(awk -v a=$a 'BEGIN { t = a * atan2(1, 1) + 0.3; printf "%.3f,%.3f", 0.64 * cos(t), 0.64 * sin(t) }')
         for K in 1 7; do
-            "$S" --method variational --eps $e --steps 3000 --every $K --omega0=$w --output "$T/pf.csv" 2>"$T/err"; rc=$?
+            "$S" --no-header --method variational --eps $e --steps 3000 --every $K --omega0=$w --output "$T/pf.csv" 2>"$T/err"; rc=$?
             [ "$rc" = 0 ] && continue
             step=$(sed -n 's/^suslov: error: variational step \([0-9]*\) (t = \([^)]*\)) failed: .*residual.*/\1/p' "$T/err")
             tt=$(sed -n 's/^suslov: error: variational step [0-9]* (t = \([^)]*\)) failed: .*/\1/p' "$T/err")
@@ -152,17 +148,17 @@ check "solver failures: $nfail runs exit 3 with one line naming step S and t = S
 # blow-up: a non-finite state stops the run with exit 3, one line naming the step, t and
 # "blow-up"; the last good step is written (explicit Euler diverges for h = eps k > 2)
 for m in euler rk4; do
-    "$S" --method $m --eps 1e308 --steps 1 --output "$T/bu.csv" 2>"$T/err"; rc=$?
+    "$S" --no-header --method $m --eps 1e308 --steps 1 --output "$T/bu.csv" 2>"$T/err"; rc=$?
     check "$m at --eps 1e308: exit 3, one line '$m blow-up at step 1 (t = 1e+308)', file has row 0 ($(cat "$T/err"))" \
         sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && grep -q '^suslov: error: $m blow-up at step 1 (t = 1e+308)' '$T/err' && test \"\$(tail -n +2 '$T/bu.csv' | cut -d, -f1)\" = 0"
 done
-"$S" --method euler --eps 30 --steps 100000 --every 100 --omega0 4,5 --output "$T/bu.csv" 2>"$T/err"; rc=$?
+"$S" --no-header --method euler --eps 30 --steps 100000 --every 100 --omega0 4,5 --output "$T/bu.csv" 2>"$T/err"; rc=$?
 bstep=$(sed -n 's/^suslov: error: euler blow-up at step \([0-9]*\) (t = .*/\1/p' "$T/err")
 rows=$(tail -n +2 "$T/bu.csv" | cut -d, -f1 | tr '\n' ' ')
 check "euler at h = 4.3 > 2 blows up: exit 3, one line, --every 100 still writes rows 0 and the last good step S-1 ($rows; $(cat "$T/err"))" \
     test "$rc" = 3 -a -n "$bstep" -a "$rows" = "0 $((${bstep:-1} - 1)) " -a "$(wc -l <"$T/err")" = 1
 for m in euler rk4; do
-    "$S" --method $m --eps 1 --steps 50 --omega0 1e150,1e150 >"$T/bu.csv" 2>"$T/err"; rc=$?
+    "$S" --no-header --method $m --eps 1 --steps 50 --omega0 1e150,1e150 >"$T/bu.csv" 2>"$T/err"; rc=$?
     nonfinite=$(grep -ciE 'nan|inf' "$T/bu.csv")
     check "$m from w0 = (1e150, 1e150): exit 3 with 'blow-up', no nan/inf in the output ($(cat "$T/err"))" \
         sh -c "test $rc = 3 -a $nonfinite = 0 && grep -q 'blow-up at step' '$T/err'"
@@ -171,20 +167,20 @@ done
 # units, at eps = 1000): the series diverges (taylor8's terms stay finite, taylor16's overflow),
 # and the step fails there, instead of its sum being scaled onto the energy ellipse
 for m in taylor8 taylor16; do
-    "$S" --method $m --eps 1000 --steps 3 --omega0 1e10,1e10 >"$T/bu.csv" 2>"$T/err"; rc=$?
+    "$S" --no-header --method $m --eps 1000 --steps 3 --omega0 1e10,1e10 >"$T/bu.csv" 2>"$T/err"; rc=$?
     check "$m beyond its radius: exit 3, one line 'step 1 ... diverges', only row 0 written ($(cat "$T/err"))" \
         sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && grep -q '$m step 1 (t = 1000) failed: the Taylor series diverges' '$T/err' && test \"\$(tail -n +2 '$T/bu.csv' | cut -d, -f1)\" = 0"
 done
 
 # no overflow in step arithmetic: N = K = 2^63 - 1 gives rows 0 and N and stops
-timeout 60 "$S" --method exact --eps 1 --steps 9223372036854775807 --every 9223372036854775807 >"$T/big.csv" 2>"$T/err"; rc=$?
+timeout 60 "$S" --no-header --method exact --eps 1 --steps 9223372036854775807 --every 9223372036854775807 >"$T/big.csv" 2>"$T/err"; rc=$?
 check "--method exact, N = K = 2^63-1: exit 0, rows k = 0 and 9223372036854775807 only ($(cat "$T/err"))" \
     test "$rc" = 0 -a "$(tail -n +2 "$T/big.csv" | cut -d, -f1 | tr '\n' ' ')" = "0 9223372036854775807 "
-timeout 60 "$S" --method exact --eps 0.5 --steps 9223372036854775807 --every 3074457345618258602 >"$T/big.csv" 2>"$T/err"; rc=$?
+timeout 60 "$S" --no-header --method exact --eps 0.5 --steps 9223372036854775807 --every 3074457345618258602 >"$T/big.csv" 2>"$T/err"; rc=$?
 check "--method exact, N = 2^63-1, K = N/3: rows 0, K, 2K, 3K, N (no wrap to negative k)" \
     test "$rc" = 0 -a "$(tail -n +2 "$T/big.csv" | cut -d, -f1 | tr '\n' ' ')" = "0 3074457345618258602 6148914691236517204 9223372036854775806 9223372036854775807 "
 # --method exact at large T is O(1) in T beyond the steady rotation (exact_run.c)
-timeout 60 "$S" --method exact --eps 1e7 --steps 1 >"$T/big.csv" 2>"$T/err"; rc=$?
+timeout 60 "$S" --no-header --method exact --eps 1e7 --steps 1 >"$T/big.csv" 2>"$T/err"; rc=$?
 check "--method exact --eps 1e7 --steps 1 finishes (exit $rc within 60 s), R(1e7) orthogonal to 1e-10" \
     sh -c "test $rc = 0 && tail -1 '$T/big.csv' | awk -F, '{ for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) { s = 0; for (l = 0; l < 3; l++) s += \$(8 + 3 * i + l) * \$(8 + 3 * j + l); d = s - (i == j); if (d * d > 1e-20) bad = 1 } } END { exit bad }'"
 
@@ -199,7 +195,7 @@ if env --default-signal true 2>/dev/null; then
             [ $mode = named ] && [ $sig = KILL ] && continue
             echo "previous" >"$T/kill/sig.csv"
             nt=""; [ $mode = named ] && nt=1
-            SUSLOV_NO_O_TMPFILE=$nt env --default-signal "$S" --method rk4 --eps 1e-9 --steps 9000000000000 \
+            SUSLOV_NO_O_TMPFILE=$nt env --default-signal "$S" --no-header --method rk4 --eps 1e-9 --steps 9000000000000 \
                 --every 1000000000000 --output "$T/kill/sig.csv" 2>/dev/null &
             pid=$!
             # wait (up to 10 s) until the run has its temporary: named, or an fd in $T/kill
@@ -227,12 +223,12 @@ fi
 # link is written through to its target (also when dangling), for both ways of writing
 for nt in "" 1; do
     rm -rf "$T/fs"; mkdir -p "$T/fs/d"
-    (umask 027 && SUSLOV_NO_O_TMPFILE=$nt "$S" --method rk4 --eps 0.1 --steps 3 --output "$T/fs/new.csv")
+    (umask 027 && SUSLOV_NO_O_TMPFILE=$nt "$S" --no-header --method rk4 --eps 0.1 --steps 3 --output "$T/fs/new.csv")
     echo x >"$T/fs/old.csv"; chmod 600 "$T/fs/old.csv"
-    SUSLOV_NO_O_TMPFILE=$nt "$S" --method rk4 --eps 0.1 --steps 3 --output "$T/fs/old.csv"
+    SUSLOV_NO_O_TMPFILE=$nt "$S" --no-header --method rk4 --eps 0.1 --steps 3 --output "$T/fs/old.csv"
     echo x >"$T/fs/d/target.csv"; ln -s d/target.csv "$T/fs/link.csv"; ln -s gone.csv "$T/fs/dangling.csv"
-    SUSLOV_NO_O_TMPFILE=$nt "$S" --method rk4 --eps 0.1 --steps 3 --output "$T/fs/link.csv"
-    SUSLOV_NO_O_TMPFILE=$nt "$S" --method rk4 --eps 0.1 --steps 3 --output "$T/fs/dangling.csv"
+    SUSLOV_NO_O_TMPFILE=$nt "$S" --no-header --method rk4 --eps 0.1 --steps 3 --output "$T/fs/link.csv"
+    SUSLOV_NO_O_TMPFILE=$nt "$S" --no-header --method rk4 --eps 0.1 --steps 3 --output "$T/fs/dangling.csv"
     modes="$(stat -c %a "$T/fs/new.csv" "$T/fs/old.csv" | tr '\n' ' ')"
     check "file semantics${nt:+ (named-temporary fallback)}: new file 640 under umask 027, existing 600 kept ($modes), links still links, targets written, no temporary left" \
         sh -c "test '$modes' = '640 600 ' -a -L '$T/fs/link.csv' -a -L '$T/fs/dangling.csv' && test \$(wc -l <'$T/fs/d/target.csv') = 5 -a \$(wc -l <'$T/fs/gone.csv') = 5 && test -z \"\$(find '$T/fs' -name '*.tmp.*')\""
@@ -242,9 +238,9 @@ done
 # the end; --quiet and a non-terminal stderr get nothing. SUSLOV_PROGRESS_AFTER=0 (a test hook)
 # shows it from the first step, so that a short run exercises it on any machine.
 if command -v script >/dev/null; then
-    SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv'" /dev/null >"$T/tty" 2>&1; rc=$?
-    SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv' --quiet" /dev/null >"$T/ttyq" 2>&1
-    SUSLOV_PROGRESS_AFTER=0 "$S" --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output "$T/pr.csv" 2>"$T/notty"
+    SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv'" /dev/null >"$T/tty" 2>&1; rc=$?
+    SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv' --quiet" /dev/null >"$T/ttyq" 2>&1
+    SUSLOV_PROGRESS_AFTER=0 "$S" --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output "$T/pr.csv" 2>"$T/notty"
     check "progress on a terminal: 'step .. of 200000 .. steps/s .. left' then erased (ends with CR ESC[K); nothing with --quiet or without a terminal" \
         sh -c "test $rc = 0 && grep -q 'suslov: step [0-9]* of 200000 (.*), t = .*steps/s, .* s left' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b && test ! -s '$T/ttyq' -a ! -s '$T/notty'"
 fi
@@ -252,19 +248,19 @@ fi
 # a write error (emit asks the run to stop: SUSLOV_RUN_STOPPED) is status 1 with one line,
 # distinct from a solver failure (3)
 if [ -c /dev/full ]; then
-    "$S" --method rk4 --eps 0.1 --steps 100000 >/dev/full 2>"$T/err"; rc1=$?
-    "$S" --method exact --eps 0.1 --steps 100000 --output /dev/full 2>"$T/err2"; rc2=$?
+    "$S" --no-header --method rk4 --eps 0.1 --steps 100000 >/dev/full 2>"$T/err"; rc1=$?
+    "$S" --no-header --method exact --eps 0.1 --steps 100000 --output /dev/full 2>"$T/err2"; rc2=$?
     check "a full device: exit 1 and one line 'writing ... failed' ($(cat "$T/err"); $(cat "$T/err2"))" \
         sh -c "test $rc1 = 1 -a $rc2 = 1 -a \$(cat '$T/err' '$T/err2' | wc -l) = 2 && grep -q '^suslov: error: writing stdout failed' '$T/err' && grep -q '^suslov: error: writing /dev/full failed' '$T/err2'"
 fi
 
 # --output to a device writes through and leaves the device alone
-"$S" --method rk4 --eps 0.1 --steps 5 --output /dev/null; rc=$?
+"$S" --no-header --method rk4 --eps 0.1 --steps 5 --output /dev/null; rc=$?
 check "--output /dev/null works and /dev/null is still a character device" test "$rc" = 0 -a -c /dev/null
 
 # the file written with --output equals stdout
-"$S" --method midpoint --eps 0.2 --steps 50 --every 7 --output "$T/o.csv"
-"$S" --method midpoint --eps 0.2 --steps 50 --every 7 >"$T/s.csv"
+"$S" --no-header --method midpoint --eps 0.2 --steps 50 --every 7 --output "$T/o.csv"
+"$S" --no-header --method midpoint --eps 0.2 --steps 50 --every 7 >"$T/s.csv"
 check "--output FILE writes exactly what stdout gets" cmp -s "$T/o.csv" "$T/s.csv"
 
 # the animation draws exactly the R_k that suslov prints for the same settings (same driver)
@@ -273,7 +269,7 @@ mkdir -p "$T/fig" "$T/dat"
 SUSLOV_NO_VIDEO=1 "$B/animation" "$T/anim.cfg" "$T/fig" "$T/dat" >/dev/null 2>&1; rc=$?
 same=1
 for m in midpoint variational; do
-    "$S" --method $m --eps 1 --steps 6 | tail -n +2 | cut -d, -f1,8- >"$T/cli_$m"
+    "$S" --no-header --method $m --eps 1 --steps 6 | tail -n +2 | cut -d, -f1,8- >"$T/cli_$m"
     grep "^$m," "$T/dat/attitude.csv" | cut -d, -f2,4- >"$T/anim_$m"
     cmp -s "$T/cli_$m" "$T/anim_$m" || same=0
 done
@@ -283,10 +279,9 @@ check "animation: exit 0, 8 frames and a filmstrip; its R_k equal suslov's, digi
 # streaming: 2e7 steps in bounded memory (skipped under AddressSanitizer, which reserves
 # terabytes of virtual memory)
 if [ -z "${SUSLOV_SAN:-}" ]; then
-    (ulimit -v 65536 && "$S" --method euler --eps 1e-3 --steps 20000000 --every 1000000 >"$T/long.csv"); rc=$?
+    (ulimit -v 65536 && "$S" --no-header --method euler --eps 1e-3 --steps 20000000 --every 1000000 >"$T/long.csv"); rc=$?
     check "2e7 steps with --every 1e6 run in under 64 MiB of address space (21 rows)" \
         test "$rc" = 0 -a "$(tail -n +2 "$T/long.csv" | wc -l)" = 21
 fi
 
-echo "test_cli: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+done_tests test_cli

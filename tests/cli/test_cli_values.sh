@@ -30,7 +30,7 @@ near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d
 # Row 0 of every method: lambda(w0) = -19/1100 and E(w0) = 0.225. Both are sums of a few
 # products of size <= 0.25: round-off a few u, so 1e-15.
 for m in exact euler midpoint rk4 variational; do
-    "$S" --method "$m" --eps 0.5 --steps 1 >"$tmp/$m.csv" 2>"$tmp/err" || true
+    "$S" --no-header --method "$m" --eps 0.5 --steps 1 >"$tmp/$m.csv" 2>"$tmp/err" || true
     row0=$(sed -n 2p "$tmp/$m.csv")
     lam=$(echo "$row0" | cut -d, -f6) E=$(echo "$row0" | cut -d, -f7)
     result "$(near "$lam" -0.017272727272727273 1e-15)" "$m: row 0 lambda = $lam, by hand -19/1100"
@@ -39,7 +39,7 @@ done
 
 # --method exact on [0, 60]: every row's lambda and energy against the formulas above at the
 # printed w (terms <= 0.3; the printed 17 digits and the sums: 2e-15), and the energy conserved.
-"$S" --method exact --eps 0.5 --time 60 >"$tmp/exact.csv" 2>"$tmp/err"
+"$S" --no-header --method exact --eps 0.5 --time 60 >"$tmp/exact.csv" 2>"$tmp/err"
 res=$(awk -F, 'NR > 1 {
         w1 = $3; w2 = $4
         lam = w1 * (0.1 * w1 + w2) - w2 * (w1 + 0.1 * w2) + (0.2 * w1 + 0.1 * w2) * (0.08 * w1 - 0.19 * w2) / 0.99
@@ -56,13 +56,13 @@ result "$(near "$3" 0 2e-15)" "exact: printed energy = 1/2 <I_m w, w> at the pri
 result "$(near "$4" 0 2e-15)" "exact: energy stays 0.225 (a first integral), worst difference $4"
 
 # At t = 200 the exact w is e^{-200 k} ~ 3e-13 (k = 0.145) from w_inf; dlambda/dw ~ 1: 1e-11.
-"$S" --method exact --eps 1 --steps 200 >"$tmp/exact200.csv" 2>"$tmp/err"
+"$S" --no-header --method exact --eps 1 --steps 200 >"$tmp/exact200.csv" 2>"$tmp/err"
 lam=$(tail -n 1 "$tmp/exact200.csv" | cut -d, -f6)
 result "$(near "$lam" -0.029347826086956522 1e-11)" "exact: lambda(t = 200) = $lam, by hand lambda(w_inf) = -27/920"
 
 # The explicit DSPs print lambda_{k+1} = lambda(w^{k+1}) by (Discretization): check each row.
 for m in euler rk4 midpoint; do
-    "$S" --method "$m" --eps 0.25 --steps 40 >"$tmp/$m.csv" 2>"$tmp/err"
+    "$S" --no-header --method "$m" --eps 0.25 --steps 40 >"$tmp/$m.csv" 2>"$tmp/err"
     worst=$(awk -F, 'NR > 1 { w1 = $3; w2 = $4
         lam = w1 * (0.1 * w1 + w2) - w2 * (w1 + 0.1 * w2) + (0.2 * w1 + 0.1 * w2) * (0.08 * w1 - 0.19 * w2) / 0.99
         d = lam - $6; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m + 0 }' "$tmp/$m.csv")
@@ -71,7 +71,7 @@ done
 
 # --every K: rows k = 0, K, 2K, ... and always the last step (the integrators and exact).
 for m in rk4 exact; do
-    "$S" --method $m --eps 0.1 --steps 10 --every 3 >"$tmp/every.csv" 2>"$tmp/err"
+    "$S" --no-header --method $m --eps 0.1 --steps 10 --every 3 >"$tmp/every.csv" 2>"$tmp/err"
     ks=$(awk -F, 'NR > 1 { printf "%s ", $1 }' "$tmp/every.csv")
     result "$([ "$ks" = "0 3 6 9 10 " ] && echo 1 || echo 0)" "$m --steps 10 --every 3 writes rows k = $ks(expected 0 3 6 9 10)"
     dt=$(awk -F, 'NR > 1 { d = $2 - 0.1 * $1; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m + 0 }' "$tmp/every.csv")

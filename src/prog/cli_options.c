@@ -1,0 +1,294 @@
+#define _POSIX_C_SOURCE 200809L
+#include "cli_options.h"
+
+#include <errno.h>
+#include <float.h>
+#include <ctype.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { EXIT_BAD_INPUT = 2 };
+static const char *prog = "suslov";
+
+/* ---- messages ---- */
+
+/* The message (which quotes user text: arguments, paths) on exactly one line: every control
+ * character is escaped as \n, \t, \r or \xNN. */
+static void say(const char *kind, const char *fmt, va_list ap, const char *suffix)
+{
+    char msg[2048];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    fprintf(stderr, "%s: %s: ", prog, kind);
+    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
+        if (*p == '\n')
+            fputs("\\n", stderr);
+        else if (*p == '\t')
+            fputs("\\t", stderr);
+        else if (*p == '\r')
+            fputs("\\r", stderr);
+        else if (*p < 0x20 || *p == 0x7f)
+            fprintf(stderr, "\\x%02x", *p);
+        else
+            fputc(*p, stderr);
+    }
+    fprintf(stderr, "%s\n", suffix);
+}
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    say("error", fmt, ap, "");
+    va_end(ap);
+}
+
+void cli_warn(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    say("warning", fmt, ap, "");
+    va_end(ap);
+}
+
+void cli_die(const char *fmt, ...)
+{
+    char suffix[64];
+    snprintf(suffix, sizeof suffix, " (see %s --help)", prog);
+    va_list ap;
+    va_start(ap, fmt);
+    say("error", fmt, ap, suffix);
+    va_end(ap);
+    exit(EXIT_BAD_INPUT);
+}
+
+void cli_exit_stdout(void)
+{
+    if ((fflush(stdout) != 0) | ferror(stdout)) {
+        cli_error("writing stdout failed: %s", strerror(errno));
+        exit(1);
+    }
+    exit(0);
+}
+
+/* ---- numbers ---- */
+
+/* A subnormal is accepted by strtod with ERANGE but has lost precision, and no quantity here
+ * is meaningful at that size. */
+double cli_number(const char *opt, const char *s)
+{
+    char *end;
+    errno = 0;
+    const double v = strtod(s, &end);
+    if (end == s || *end != '\0' || isspace((unsigned char)*s))
+        cli_die("%s: '%s' is not a number", opt, s);
+    if (!isfinite(v))
+        cli_die("%s: '%s' is not a finite number (largest %.17g)", opt, s, DBL_MAX);
+    if (errno == ERANGE || fpclassify(v) == FP_SUBNORMAL)
+        cli_die("%s: '%s' is too small: it underflows to a subnormal number or zero "
+                "(smallest normal %.17g)", opt, s, DBL_MIN);
+    return v;
+}
+
+long cli_count(const char *opt, const char *s)
+{
+    if (s[0] != '\0' && strspn(s, "0123456789") == strlen(s)) {
+        errno = 0;
+        const long v = strtol(s, NULL, 10);
+        if (errno == ERANGE)
+            cli_die("%s: '%s' is out of range (at most %ld)", opt, s, LONG_MAX);
+        if (v <= 0)
+            cli_die("%s must be positive, got %ld", opt, v);
+        return v;
+    }
+    const double v = cli_number(opt, s);
+    if (v != floor(v))
+        cli_die("%s: '%s' is not a whole number", opt, s);
+    if (!(v >= 1.0))
+        cli_die("%s must be positive, got %.17g", opt, v);
+    if (!(v < 0x1p63)) /* (long)v is defined only below 2^63 = LONG_MAX + 1 */
+        cli_die("%s: '%s' is out of range (at most %ld)", opt, s, LONG_MAX);
+    return (long)v;
+}
+
+void cli_list(const char *opt, const char *s, double *out, int n)
+{
+    char buf[1024];
+    if (strlen(s) >= sizeof buf)
+        cli_die("%s: list too long", opt);
+    int i = 0;
+    for (const char *p = s;; i++) {
+        const char *comma = strchr(p, ',');
+        const size_t len = comma ? (size_t)(comma - p) : strlen(p);
+        if (i == n)
+            cli_die("%s takes %d comma-separated numbers, got more in '%s'", opt, n, s);
+        if (len == 0)
+            cli_die("%s: field %d of '%s' is empty", opt, i + 1, s);
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        out[i] = cli_number(opt, buf);
+        if (!comma)
+            break;
+        p = comma + 1;
+    }
+    if (i + 1 != n)
+        cli_die("%s takes %d comma-separated numbers, got %d in '%s'", opt, n, i + 1, s);
+}
+
+/* ---- parsing ---- */
+
+/* The option whose name is the first len characters of s. */
+static int find(const cli_spec *spec, const char *s, size_t len)
+{
+    for (int i = 0; i < spec->nopts; i++)
+        if (strlen(spec->opts[i].name) == len && strncmp(spec->opts[i].name, s, len) == 0)
+            return i;
+    return -1;
+}
+
+void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
+{
+    char seen[64] = {0};
+    prog = spec->prog;
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i], *eq = strchr(arg, '='), *val = NULL;
+        if (strcmp(arg, "--") == 0) {
+            if (i + 1 < argc)
+                cli_die("unexpected argument '%s' (%s takes no operands)", argv[i + 1], prog);
+            break;
+        }
+        if (strncmp(arg, "--", 2) != 0)
+            cli_die("unexpected argument '%s'", arg);
+        const size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        const int k = find(spec, arg, len);
+        if (k < 0)
+            cli_die("unknown option '%.*s'", (int)len, arg);
+        const cli_option *o = &spec->opts[k];
+        if (!o->arg && eq)
+            cli_die("%s takes no value", o->name);
+        if (o->arg && !eq && i + 1 >= argc)
+            cli_die("%s needs a value (%s)", o->name, o->arg);
+        if (o->arg)
+            val = eq ? eq + 1 : argv[++i];
+        if (k < (int)sizeof seen && seen[k]++)
+            cli_die("%s is given twice", o->name);
+        o->set(cfg, o, val);
+    }
+}
+
+/* ---- --help ---- */
+
+static void help_lines(FILE *fp, const char *text, const char *first, const char *indent)
+{
+    const char *p = text;
+    for (int n = 0; *p || n == 0; n++) {
+        const char *nl = strchr(p, '\n');
+        const int len = nl ? (int)(nl - p) : (int)strlen(p);
+        fprintf(fp, "%s%.*s\n", n ? indent : first, len, p);
+        p = nl ? nl + 1 : p + len;
+    }
+}
+
+static void roff_text(FILE *fp, const char *s, int len);
+
+void cli_line(FILE *fp, int man, const char *fmt, ...)
+{
+    char buf[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    if (!man) {
+        fprintf(fp, "%22s%s\n", "", buf);
+        return;
+    }
+    roff_text(fp, buf, (int)strlen(buf));
+    fputc('\n', fp);
+}
+
+void cli_help(const cli_spec *spec, FILE *fp)
+{
+    fprintf(fp, "usage: %s\n\n%s\n\n", spec->synopsis, spec->description);
+    for (int i = 0; i < spec->nopts; i++) {
+        const cli_option *o = &spec->opts[i];
+        char head[64];
+        snprintf(head, sizeof head, "  %s%s%s", o->name, o->arg ? " " : "", o->arg ? o->arg : "");
+        fprintf(fp, "%-22s", head);
+        if (strlen(head) >= 22)
+            fprintf(fp, "\n%22s", "");
+        help_lines(fp, o->help, "", "                      ");
+        if (o->more)
+            o->more(fp, 0);
+    }
+    for (int i = 0; i < spec->nsections; i++) {
+        fprintf(fp, "\n%s\n", spec->sections[i].title);
+        help_lines(fp, spec->sections[i].body, "  ", "  ");
+    }
+}
+
+/* ---- the manual page ---- */
+
+/* Text for roff: '-' as \-, '\' as \e, and a line that would start with '.' or '\'' guarded. */
+static void roff_text(FILE *fp, const char *s, int len)
+{
+    for (int i = 0; i < len; i++) {
+        if (i == 0 && (s[i] == '.' || s[i] == '\''))
+            fputs("\\&", fp);
+        if (s[i] == '-')
+            fputs("\\-", fp);
+        else if (s[i] == '\\')
+            fputs("\\e", fp);
+        else
+            fputc(s[i], fp);
+    }
+}
+
+/* Lines joined by roff's filling; an empty line starts a paragraph. */
+static void roff_body(FILE *fp, const char *text)
+{
+    for (const char *p = text; *p;) {
+        const char *nl = strchr(p, '\n');
+        const int len = nl ? (int)(nl - p) : (int)strlen(p);
+        if (len == 0)
+            fputs(".PP\n", fp);
+        else {
+            roff_text(fp, p, len);
+            fputc('\n', fp);
+        }
+        p = nl ? nl + 1 : p + len;
+    }
+}
+
+void cli_man(const cli_spec *spec, const char *version, FILE *fp)
+{
+    fprintf(fp, ".TH SUSLOV 1 \"\" \"%s %s\" \"User Commands\"\n.SH NAME\n%s \\- ", spec->prog, version,
+            spec->prog);
+    roff_body(fp, spec->summary);
+    fputs(".SH SYNOPSIS\n", fp);
+    roff_body(fp, spec->synopsis);
+    fputs(".SH DESCRIPTION\n", fp);
+    roff_body(fp, spec->description);
+    fputs(".SH OPTIONS\n", fp);
+    for (int i = 0; i < spec->nopts; i++) {
+        const cli_option *o = &spec->opts[i];
+        fputs(".TP\n.B ", fp);
+        roff_text(fp, o->name, (int)strlen(o->name));
+        if (o->arg) {
+            fputs(" \" \"", fp);
+            roff_text(fp, o->arg, (int)strlen(o->arg));
+        }
+        fputc('\n', fp);
+        roff_body(fp, o->help);
+        if (o->more) { /* a list: one entry a line, unfilled */
+            fputs(".nf\n", fp);
+            o->more(fp, 1);
+            fputs(".fi\n", fp);
+        }
+    }
+    for (int i = 0; i < spec->nsections; i++) {
+        fprintf(fp, ".SH %s\n", spec->sections[i].title);
+        roff_body(fp, spec->sections[i].body);
+    }
+}

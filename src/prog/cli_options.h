@@ -1,0 +1,61 @@
+/* One table of command-line options, from which come the parser, --help and the manual page
+ * (so that the three cannot disagree), and the one grammar of numbers every option uses.
+ * Adding an option is one table row and its handler. */
+#ifndef SUSLOV_CLI_OPTIONS_H
+#define SUSLOV_CLI_OPTIONS_H
+
+#include <stdio.h>
+
+typedef struct cli_option cli_option;
+struct cli_option {
+    const char *name;  /* "--eps" */
+    const char *arg;   /* "H", or NULL for a flag */
+    const char *help;  /* lines of at most 76 columns separated by '\n' */
+    void (*set)(void *cfg, const cli_option *opt, const char *val);
+    /* Optional: further lines written after the help (lists taken from a registry); each line
+     * goes through cli_line so that it reaches --help and the manual page alike. */
+    void (*more)(FILE *fp, int man);
+};
+
+typedef struct {
+    const char *title; /* "EXIT STATUS" */
+    const char *body;  /* lines separated by '\n'; an empty line starts a new paragraph */
+} cli_section;
+
+typedef struct {
+    const char *prog, *summary, *synopsis, *description;
+    const cli_option *opts;
+    int nopts;
+    const cli_section *sections;
+    int nsections;
+} cli_spec;
+
+/* Parses argv: --name VALUE, --name=VALUE, "--" ends the options; an argument that is not an
+ * option, an unknown option, a missing value, a value given to a flag and an option given
+ * twice are each bad input (cli_die). Calls each option's handler in order. */
+void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg);
+void cli_help(const cli_spec *spec, FILE *fp);
+/* The manual page in roff (man(7)); version goes into its header line. */
+void cli_man(const cli_spec *spec, const char *version, FILE *fp);
+/* One line of a `more` list: indented under its option in --help, a line break in roff. */
+void cli_line(FILE *fp, int man, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* Exits 0 after a text on stdout, or 1 with one line when it could not be written. */
+void cli_exit_stdout(void) __attribute__((noreturn));
+
+/* "suslov: error: MESSAGE" on one line, control characters escaped; cli_die adds
+ * " (see suslov --help)" and exits 2. */
+void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void cli_die(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
+void cli_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* The number grammar: strtod's (decimal or hexadecimal, with exponent), no leading blank, no
+ * trailing text; the value must be finite and normal or zero. */
+double cli_number(const char *opt, const char *s);
+/* A count: a number of the same grammar that is a whole number in [1, 2^63 - 1]; a string of
+ * digits is read exactly (a double cannot hold every integer up to 2^63 - 1). */
+long cli_count(const char *opt, const char *s);
+/* Exactly n comma-separated numbers; an empty field is an error, never skipped. */
+void cli_list(const char *opt, const char *s, double *out, int n);
+
+#endif

@@ -1,0 +1,433 @@
+#define _POSIX_C_SOURCE 200809L
+#include "suslov_cli.h"
+
+#include "atomic_file.h"
+#include "cli_options.h"
+#include "exact_run.h"
+#include "stepper.h"
+
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#ifndef SUSLOV_VERSION
+#define SUSLOV_VERSION "unknown" /* the Makefile passes the git commit; a tarball has none */
+#endif
+
+/* The reference attitude of --method exact costs this many long-double Taylor steps at most
+ * (hours of computing); beyond, the run is refused before it starts. */
+#define EXACT_MAX_REFERENCE_STEPS 1e9
+
+/* The options as given, before the checks that need several of them. */
+typedef struct {
+    const char *method, *recon, *output;
+    double eps, T;
+    long steps, every;
+    double w0[2], inertia[9];
+    int quiet, header, header_given, list;
+} given;
+
+static const cli_spec SPEC;
+
+/* ---- handlers: one per option ---- */
+
+static void set_method(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->method = v;
+}
+static void set_eps(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->eps = cli_number(o->name, v);
+}
+static void set_steps(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->steps = cli_count(o->name, v);
+}
+static void set_time(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->T = cli_number(o->name, v);
+}
+static void set_omega0(void *g, const cli_option *o, const char *v)
+{
+    cli_list(o->name, v, ((given *)g)->w0, 2);
+}
+static void set_inertia(void *g, const cli_option *o, const char *v)
+{
+    cli_list(o->name, v, ((given *)g)->inertia, 9);
+}
+static void set_recon(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->recon = v;
+}
+static void set_every(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->every = cli_count(o->name, v);
+}
+static void set_output(void *g, const cli_option *o, const char *v)
+{
+    (void)o, ((given *)g)->output = v;
+}
+static void set_quiet(void *g, const cli_option *o, const char *v)
+{
+    (void)o, (void)v, ((given *)g)->quiet = 1;
+}
+
+static void set_header(void *vg, const cli_option *o, const char *v)
+{
+    given *g = vg;
+    (void)v;
+    if (g->header_given++)
+        cli_die("--header and --no-header are both given");
+    g->header = strcmp(o->name, "--header") == 0;
+}
+
+static void show_help(void *g, const cli_option *o, const char *v)
+{
+    (void)g, (void)o, (void)v;
+    cli_help(&SPEC, stdout);
+    cli_exit_stdout();
+}
+
+static void show_man(void *g, const cli_option *o, const char *v)
+{
+    (void)g, (void)o, (void)v;
+    cli_man(&SPEC, SUSLOV_VERSION, stdout);
+    cli_exit_stdout();
+}
+
+static void show_version(void *g, const cli_option *o, const char *v)
+{
+    (void)g, (void)o, (void)v;
+    printf("suslov %s\n", SUSLOV_VERSION);
+    cli_exit_stdout();
+}
+
+/* ---- lists under --method and --reconstruct ---- */
+
+static void more_methods(FILE *fp, int man)
+{
+    cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
+    for (int i = 0; i < suslov_method_count(); i++) {
+        const suslov_method *me = suslov_method_get(i);
+        cli_line(fp, man, "%-12s %s", me->type->name, me->about);
+    }
+}
+
+static void more_recons(FILE *fp, int man)
+{
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+        cli_line(fp, man, "%-12s %s", SUSLOV_RECON_NAMES[r], SUSLOV_RECON_ABOUT[r]);
+    cli_line(fp, man, "default, the method's own:");
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        char names[512];
+        size_t n = 0;
+        names[0] = '\0';
+        for (int i = 0; i < suslov_method_count(); i++)
+            if (suslov_method_get(i)->recon == (suslov_recon)r && n < sizeof names)
+                n += (size_t)snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "  ",
+                                      suslov_method_get(i)->type->name);
+        if (n)
+            cli_line(fp, man, "%s: %s", names, SUSLOV_RECON_NAMES[r]);
+    }
+}
+
+/* ---- the table ---- */
+
+static const cli_option OPTIONS[] = {
+    {"--method", "M", "the method (required); `--method list` prints name, family, order,\n"
+                      "default reconstruction and description (a table on a terminal, TSV\n"
+                      "otherwise)", set_method, more_methods},
+    {"--eps", "H", "time step, H > 0", set_eps, NULL},
+    {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1", set_steps, NULL},
+    {"--time", "T", "final time instead of --steps: T/H must be a whole number N (to 4\n"
+                    "rounding units of T), else it is refused with the nearest valid T", set_time, NULL},
+    {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0, NULL},
+    {"--inertia", "I11,...,I33", "inertia tensor by rows, as printed in the paper (only I_m and the\n"
+                                 "third row enter); I_m must be symmetric positive definite;\n"
+                                 "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1", set_inertia, NULL},
+    {"--reconstruct", "R", "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
+                           "method that carries its own attitude (it is ignored there):", set_recon,
+     more_recons},
+    {"--every", "K", "write step 0, every K-th step and the last step; default 1", set_every, NULL},
+    {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
+    {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
+                       "command line, method, eps, steps, body, w0 and units", set_header, NULL},
+    {"--no-header", NULL, "bare CSV: no comment lines at all", set_header, NULL},
+    {"--quiet", NULL, "no progress line (shown on a terminal stderr when a run takes > 1 s;\n"
+                      "without escape sequences under TERM=dumb or NO_COLOR)", set_quiet, NULL},
+    {"--version", NULL, "print the version (the git commit built from, or unknown) and exit", show_version,
+     NULL},
+    {"--help", NULL, "print this text and exit", show_help, NULL},
+    {"--man", NULL, "print this text as a manual page (roff) and exit", show_man, NULL},
+};
+
+static const cli_section SECTIONS[] = {
+    {"OUTPUT",
+     "Unless --no-header, #-comment lines first (version, command line, method, eps, steps,\n"
+     "inertia, w0, units), then the CSV header\n"
+     "k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n"
+     "and one row for step 0, every K-th step and the last step, numbers in %.17g. Row 0 has\n"
+     "R = I and lambda = lambda(w0) from (LagMult) for every method. Non-finite numbers are\n"
+     "never printed. After a solver failure or blow-up the output keeps every row before it,\n"
+     "the last good step included, and (unless --no-header) a last line\n"
+     "# incomplete: ... naming the failure."},
+    {"FILES",
+     "--output FILE replaces a regular FILE atomically: all or nothing, and no temporary file\n"
+     "outlives the program, even when killed. The new FILE keeps the mode of the old one (a new\n"
+     "one gets 0666 less the umask) but is owned by the user who ran suslov, and other hard\n"
+     "links keep the old contents. A read-only FILE is refused (as cp does without -f), and so\n"
+     "is one that the rename could not replace (a sticky directory owned by neither). A\n"
+     "symbolic link is written through to its target. A device, a pipe, - and a name of an\n"
+     "open descriptor (/dev/stdout, /dev/fd/N) are written in place, never renamed, at the\n"
+     "descriptor's offset. Every condition that can be checked before the run (directory\n"
+     "writable, names within the system's limits with the temporary's suffix, permissions)\n"
+     "is checked before it."},
+    {"EXIT STATUS",
+     "0 success; 1 output error (writing failed: disk full, inodes exhausted, I/O error);\n"
+     "2 bad input (one line; nothing written); 3 solver failure or blow-up (one line naming\n"
+     "the step and t); 128+n killed by signal n."},
+    {"ENVIRONMENT",
+     "NO_COLOR (non-empty) and TERM=dumb: the progress line uses no escape sequence.\n"
+     "SUSLOV_NO_O_TMPFILE (non-empty, for tests): use a named temporary file instead of an\n"
+     "unnamed one; every catchable fatal signal then removes it.\n"
+     "SUSLOV_PROGRESS_AFTER=S (for tests): show progress after S seconds instead of 1."},
+    {"EXAMPLES",
+     "suslov --method variational --eps 1 --time 200 --every 10\n"
+     "suslov --method exact --eps 1e-3 --time 60 --every 100 --output data/exact.csv\n"
+     "suslov --method list"},
+};
+
+static const cli_spec SPEC = {
+    "suslov", "integrate the Suslov problem with the methods of Jimenez & Scheurle",
+    "suslov --method M --eps H (--steps N | --time T) [OPTION]...",
+    "Integrates the Suslov problem (Jimenez & Scheurle, Section 5) and writes CSV.",
+    OPTIONS, (int)(sizeof OPTIONS / sizeof OPTIONS[0]), SECTIONS, (int)(sizeof SECTIONS / sizeof SECTIONS[0]),
+};
+
+/* ---- --method list ---- */
+
+static int uses_reconstruction(const suslov_method *me, const suslov_model *m);
+
+/* The reconstruction column says "own" for a method that carries its own attitude. */
+static void method_list(void)
+{
+    char err[256];
+    suslov_model paper;
+    if (suslov_model_init(&paper, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0)
+        cli_die("the paper's inertia is rejected: %s", err);
+    const int tty = isatty(STDOUT_FILENO);
+    const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
+    printf(fmt, "name", "family", "order", "reconstruct", "about");
+    printf(fmt, "exact", "closed form", "-", "-", "closed-form w(t), lambda(w(t)), reference R(t)");
+    for (int i = 0; i < suslov_method_count(); i++) {
+        const suslov_method *me = suslov_method_get(i);
+        char order[16];
+        snprintf(order, sizeof order, "%d", me->type->order);
+        printf(fmt, me->type->name, me->family, order,
+               uses_reconstruction(me, &paper) ? SUSLOV_RECON_NAMES[me->recon] : "own", me->about);
+    }
+    cli_exit_stdout();
+}
+
+/* ---- checks that need several options ---- */
+
+/* I_m (upper-left 2x2 of I) must be symmetric and positive definite, tested relative to
+ * M = max |I_m entry| so that nothing overflows (the unscaled sum of |entries| is inf at
+ * 1e308, and inf > 4u inf is false), and its determinant, which (ContDyn) divides by, must
+ * be a finite normal number. The tolerance 4u (1 + 1 + 1 + 1) allows the rounding of four
+ * entries of size <= M; suslov_model_init repeats the unscaled test for the other callers. */
+static void check_inertia(const double I[9])
+{
+    for (int i = 0; i < 9; i++)
+        if (!isfinite(I[i]))
+            cli_die("--inertia: entry %d is not finite", i + 1);
+    const double M = fmax(fmax(fabs(I[0]), fabs(I[1])), fmax(fabs(I[3]), fabs(I[4])));
+    if (M == 0.0)
+        cli_die("--inertia: I_m is zero, not positive definite");
+    const double a = I[0] / M, b = I[1] / M, c = I[3] / M, d = I[4] / M;
+    if (fabs(b - c) > 4.0 * DBL_EPSILON * (fabs(a) + fabs(b) + fabs(c) + fabs(d)))
+        cli_die("--inertia: I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
+    if (!(a > 0.0) || !(a * d - b * c > 0.0))
+        cli_die("--inertia: I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[0], I[4],
+                I[1]);
+    const double det = I[0] * I[4] - I[1] * I[3];
+    if (!isfinite(det) || !(det >= DBL_MIN))
+        cli_die("--inertia: the determinant of I_m, %.17g * %.17g - %.17g * %.17g, is not a finite "
+                "normal number (entries too large or too small)", I[0], I[4], I[1], I[3]);
+}
+
+/* The nearest final time to n steps, written as briefly as it is still accepted. */
+static void time_choice(char *buf, size_t len, double n, double eps)
+{
+    const double T = n * eps;
+    for (int digits = 15; digits <= 17; digits++) {
+        snprintf(buf, len, "--time %.*g", digits, T);
+        const double back = strtod(buf + 7, NULL);
+        if (fabs(round(back / eps) * eps - back) <= 2.0 * DBL_EPSILON * back)
+            return;
+    }
+}
+
+/* N = T/H when that is a whole number to within the rounding of T, H and their quotient:
+ * |N H - T| <= 4u T (u = DBL_EPSILON / 2), so that the last row is at T; else refused. */
+static long steps_for_time(double T, double eps)
+{
+    const double n = round(T / eps); /* T / eps may be inf: caught below */
+    if (!(n >= 1.0))
+        cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1", T, eps, n);
+    if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
+        cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n, LONG_MAX);
+    if (fabs(n * eps - T) > 2.0 * DBL_EPSILON * T) {
+        char lo[64], hi[64];
+        const double f = floor(T / eps);
+        time_choice(lo, sizeof lo, f, eps);
+        time_choice(hi, sizeof hi, f + 1.0, eps);
+        cli_die("--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
+                f >= 1.0 ? lo : "", f >= 1.0 ? " or " : "", hi);
+    }
+    return (long)n;
+}
+
+/* Whether a method's attitude depends on --reconstruct: one step from the paper's start with
+ * two reconstructions. A method that carries its own attitude (a Taylor series) gives the same
+ * R both ways; this asks the method itself, so no list of names is kept here. */
+static int uses_reconstruction(const suslov_method *me, const suslov_model *m)
+{
+    double R[2][3][3];
+    for (int r = 0; r < 2; r++) {
+        suslov_attitude att;
+        double w[3] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
+        suslov_step_stats st;
+        suslov_attitude_identity(&att);
+        suslov_step_full(me->type, m, 0.25, r ? SUSLOV_RECON_CAYLEY : SUSLOV_RECON_EXP_MID, &att, w, wn, &lam,
+                         &st);
+        suslov_attitude_get(&att, R[r]);
+    }
+    return memcmp(R[0], R[1], sizeof R[0]) != 0;
+}
+
+/* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
+ * check has passed, so that bad input still gets exactly one line). */
+static int resolve_method(suslov_args *a, const given *g)
+{
+    char names[1024];
+    const int exact = strcmp(g->method, "exact") == 0;
+    a->method = exact ? NULL : suslov_method_by_name(g->method);
+    if (!exact && !a->method)
+        cli_die("unknown method '%s' (exact, %s; or list)", g->method,
+                suslov_method_names(names, sizeof names, ", "));
+    a->recon = a->method ? a->method->recon : SUSLOV_RECON_CAYLEY;
+    if (!g->recon)
+        return 0;
+    if (suslov_recon_by_name(g->recon, &a->recon) != 0) {
+        size_t len = 0;
+        for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
+                                    SUSLOV_RECON_NAMES[r]);
+        cli_die("unknown reconstruction '%s' (%s)", g->recon, names);
+    }
+    if (exact)
+        cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
+    return !uses_reconstruction(a->method, &a->model);
+}
+
+static void check_run(suslov_args *a, const given *g)
+{
+    char err[1024];
+    if (!g->method)
+        cli_die("--method is required");
+    if (strcmp(g->method, "list") == 0)
+        method_list();
+    if (isnan(g->eps))
+        cli_die("--eps is required");
+    if (!(g->eps > 0.0))
+        cli_die("--eps must be positive, got %.17g", g->eps);
+    if ((g->steps > 0) == !isnan(g->T))
+        cli_die("give exactly one of --steps and --time");
+    a->eps = g->eps;
+    a->steps = isnan(g->T) ? g->steps : steps_for_time(g->T, g->eps);
+    /* Every t_k = k eps <= N eps must be a finite number. */
+    if (!isfinite((double)a->steps * a->eps))
+        cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
+    check_inertia(g->inertia);
+    if (suslov_model_init(&a->model, g->inertia, err, sizeof err) != 0)
+        cli_die("--inertia: %s", err);
+    const double w[3] = {g->w0[0], g->w0[1], 0.0};
+    if (!isfinite(suslov_energy(&a->model, w)) || !isfinite(suslov_lagmult(&a->model, w)))
+        cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
+    const int ignored = resolve_method(a, g);
+    const double T = (double)a->steps * a->eps;
+    const double cost = a->method ? 0.0 : suslov_exact_reference_steps(&a->model, g->w0, T);
+    if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
+        cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
+                "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
+    if (atomic_file_check(g->output, err, sizeof err) != 0)
+        cli_die("--output: %s", err);
+    if (ignored)
+        cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
+}
+
+void suslov_cli_parse(suslov_args *a, int argc, char **argv)
+{
+    given g = {.eps = NAN, .T = NAN, .every = 1, .header = 1,
+               .w0 = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}};
+    memcpy(g.inertia, SUSLOV_PAPER_INERTIA, sizeof g.inertia);
+    cli_parse(&SPEC, argc, argv, &g);
+    memset(a, 0, sizeof *a);
+    check_run(a, &g);
+    a->output = g.output;
+    a->every = g.every;
+    memcpy(a->w0, g.w0, sizeof a->w0);
+    memcpy(a->inertia, g.inertia, sizeof a->inertia);
+    a->quiet = g.quiet;
+    a->header = g.header;
+}
+
+/* ---- the header ---- */
+
+/* An argument as a shell would need it, on one line: quoted when it holds anything beyond
+ * [A-Za-z0-9_.,:/=+-], control characters escaped as \xNN. */
+static void put_arg(FILE *fp, const char *s)
+{
+    const int plain =
+        *s &&
+        strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-") == strlen(s);
+    if (plain) {
+        fputs(s, fp);
+        return;
+    }
+    fputc('\'', fp);
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++)
+        if (*p == '\'')
+            fputs("'\\''", fp);
+        else if (*p < 0x20 || *p == 0x7f)
+            fprintf(fp, "\\x%02x", *p);
+        else
+            fputc(*p, fp);
+    fputc('\'', fp);
+}
+
+void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
+{
+    fprintf(fp, "# suslov %s\n# command:", SUSLOV_VERSION);
+    for (int i = 0; i < argc; i++) {
+        fputc(' ', fp);
+        put_arg(fp, i ? argv[i] : "suslov");
+    }
+    if (a->method)
+        fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
+                a->method->family, a->method->type->order, SUSLOV_RECON_NAMES[a->recon]);
+    else
+        fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
+    fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
+            (double)a->steps * a->eps);
+    fputs("# inertia (rows of I):", fp);
+    for (int i = 0; i < 9; i++)
+        fprintf(fp, "%s%.17g", i ? "," : " ", a->inertia[i]);
+    fprintf(fp, "\n# omega0: %.17g,%.17g,0\n", a->w0[0], a->w0[1]);
+    fputs("# units: those of the paper's data: t in time units, omega in radians per time unit, lambda\n"
+          "# in units of I omega^2, energy = <I_m w, w>/2 in units of I omega^2\n", fp);
+}

@@ -1,0 +1,29 @@
+/* The suslov command's options: one table (suslov_cli.c) from which come the parser, --help and
+ * the manual page (cli_options.h), and everything that can be checked before a run. */
+#ifndef SUSLOV_SUSLOV_CLI_H
+#define SUSLOV_SUSLOV_CLI_H
+
+#include "model.h"
+#include "registry.h"
+
+#include <stdio.h>
+
+typedef struct {
+    const suslov_method *method; /* NULL for exact */
+    suslov_recon recon;
+    const char *output;          /* NULL or "-" for stdout */
+    double eps;
+    long steps, every;
+    double w0[2], inertia[9];
+    int quiet, header;
+    suslov_model model;
+} suslov_args;
+
+/* Parses and checks everything that can be checked before the run (bad input: one line, exit
+ * 2); --help, --version, --man and --method list print and exit 0 (1 if stdout fails). */
+void suslov_cli_parse(suslov_args *a, int argc, char **argv);
+/* The #-comment lines before the CSV header: version, command line, method, eps, body, w0,
+ * units. */
+void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp);
+
+#endif

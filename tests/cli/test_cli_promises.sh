@@ -1,0 +1,172 @@
+#!/bin/sh
+# The promises of suslov and the build that a demanding user broke (issue 20), one regression
+# check each, numbered as there: output through descriptors (/dev/stdout), long names, permissions
+# checked before the run, every signal in the named-temporary mode, figure programs and make
+# interrupted, an empty BUILD, exact for any t and w0, messages without NaN, full devices and
+# exhausted inodes. Usage: test_cli_promises.sh BUILD_DIR
+set -u
+B=${1:-build}
+S="$B/suslov"
+. "$(dirname "$0")/cli_testlib.sh"
+NOASANSIG=handle_segv=0:handle_sigbus=0:handle_sigfpe=0
+LONG="--eps 1e-9 --steps 9000000000000 --every 1000000000000" # hours: only a pre-run check ends it fast
+
+# 1. /dev/stdout is the shell's descriptor: written in place, at its offset, never renamed over
+printf 'old\n' >"$T/log.csv"
+"$S" --method euler --eps 0.1 --steps 2 --output /dev/stdout >>"$T/log.csv"; rc=$?
+check "--output /dev/stdout >> log keeps the old line and appends header and 3 rows (rc $rc)" \
+    sh -c "test $rc = 0 -a \"\$(head -1 '$T/log.csv')\" = old -a \$(grep -c '^[0-9]' '$T/log.csv') = 3"
+{ echo '# before'; "$S" --no-header --method euler --eps 0.1 --steps 1 --output /dev/stdout; echo '# after'; } >"$T/f"
+check "{ echo; suslov --output /dev/stdout; echo; } > f keeps all three parts in order" \
+    sh -c "test \"\$(head -1 '$T/f')\" = '# before' -a \"\$(tail -1 '$T/f')\" = '# after' -a \$(wc -l <'$T/f') = 5"
+ln -s /dev/stdout "$T/to_stdout"
+printf 'old\n' >"$T/log2.csv"
+"$S" --no-header --method euler --eps 0.1 --steps 1 --output "$T/to_stdout" >>"$T/log2.csv"
+check "a link to /dev/stdout is written through the descriptor too" \
+    sh -c "test \"\$(head -1 '$T/log2.csv')\" = old -a \$(wc -l <'$T/log2.csv') = 4 -a -L '$T/to_stdout'"
+(cd "$T" && "$OLDPWD/$S" --no-header --method euler --eps 0.1 --steps 1 --output - >"$T/dash.out")
+check "--output - is stdout: no file named '-'" sh -c "test ! -e '$T/-' -a \$(wc -l <'$T/dash.out') = 3"
+"$S" --no-header --method euler --eps 0.1 --steps 1 --output /dev/stdout | cat >"$T/pipe.out"
+check "--output /dev/stdout into a pipe" test "$(wc -l <"$T/pipe.out")" = 3
+
+# 2. a valid name of 250 bytes is written (the temporary's name does not grow with it); one of
+# 256 is refused before the run
+n250=$(printf '%0250d' 0)
+"$S" --method euler --eps 0.1 --steps 2 --output "$T/$n250" 2>"$T/err"; rc=$?
+check "a 250-byte file name is written (rc $rc, $(cat "$T/err")), no temporary left" \
+    sh -c "test $rc = 0 -a -s '$T/$n250' && ! ls -A '$T' | grep -q '^\\.tmp\\.'"
+n256=$(printf '%0256d' 0)
+timeout 20 "$S" --method rk4 $LONG --output "$T/$n256" 2>"$T/err"; rc=$?
+check "a 256-byte file name is refused before the run: exit 2 ($(cat "$T/err"))" \
+    sh -c "test $rc = 2 && grep -q 'too long\\|longer than the directory allows' '$T/err'"
+
+# 3. permissions as an unprivileged user (nobody): a read-only file is refused, and so is a
+# mode-666 file of another user in a sticky directory (the rename would fail after the run)
+if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null && id nobody >/dev/null 2>&1 &&
+   setpriv --reuid=nobody --regid=nogroup --clear-groups test -x "$S"; then
+    P=$(mktemp -d /tmp/suslov-perm.XXXXXX)
+    chmod 1777 "$P"
+    echo keep >"$P/other.csv"; chmod 666 "$P/other.csv"            # root's file, sticky dir of root
+    asnobody() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@"; }
+    asnobody sh -c "echo ro >'$P/ro.csv'; chmod 444 '$P/ro.csv'"
+    asnobody timeout 20 "$S" --method rk4 $LONG --output "$P/other.csv" 2>"$T/err"; rc1=$?
+    asnobody timeout 20 "$S" --method rk4 $LONG --output "$P/ro.csv" 2>"$T/err2"; rc2=$?
+    asnobody "$S" --method rk4 --eps 0.1 --steps 3 --output "$P/mine.csv" 2>"$T/err3"; rc3=$?
+    check "as nobody: another user's 666 file in a sticky dir and a read-only file are refused before the run (exit $rc1, $rc2: $(cat "$T/err" "$T/err2" | tr '\n' ' ')); a new file is written ($rc3)" \
+        sh -c "test $rc1 = 2 -a $rc2 = 2 -a $rc3 = 0 && grep -q sticky '$T/err' && grep -q read-only '$T/err2' && test \"\$(cat '$P/other.csv' '$P/ro.csv')\" = 'keep
+ro' && ! ls -A '$P' | grep -q '^\\.tmp\\.'"
+    rm -rf "$P"
+else
+    skip "permissions as nobody: needs root, setpriv and a user nobody who can run $S"
+fi
+
+# 4. the named-temporary fallback: every catchable signal whose default ends the process
+# removes the temporary, and the process dies of that signal (status 128 + n)
+if env --default-signal true 2>/dev/null; then
+    mkdir -p "$T/sig"
+    kres=""
+    # Linux's numbers (O_TMPFILE is Linux's too); 34 and 64 are glibc's SIGRTMIN and SIGRTMAX
+    for sn in HUP:1 INT:2 QUIT:3 ILL:4 TRAP:5 ABRT:6 BUS:7 FPE:8 USR1:10 SEGV:11 USR2:12 PIPE:13 ALRM:14 \
+              TERM:15 STKFLT:16 XCPU:24 XFSZ:25 VTALRM:26 PROF:27 IO:29 PWR:30 SYS:31 RTMIN:34 RTMAX:64; do
+        sig=${sn%:*} n=${sn#*:}
+        echo previous >"$T/sig/s.csv"
+        # under SAN=1 AddressSanitizer would take SEGV, BUS and FPE for itself: leave them to suslov
+        (ulimit -c 0; SUSLOV_NO_O_TMPFILE=1 ASAN_OPTIONS="${ASAN_OPTIONS:-}:$NOASANSIG" \
+            exec env --default-signal "$S" --method rk4 $LONG --output "$T/sig/s.csv") 2>/dev/null &
+        pid=$!
+        i=0
+        while [ $i -lt 500 ] && ! ls -A "$T/sig" | grep -q '^\.tmp\.'; do sleep 0.02; i=$((i + 1)); done
+        kill -$n $pid; { wait $pid; } 2>/dev/null; rc=$?
+        want=$((128 + n))
+        left=$(ls -A "$T/sig" | tr '\n' ' ')
+        if [ "$rc" = "$want" ] && [ "$left" = "s.csv " ] && [ "$(cat "$T/sig/s.csv")" = previous ]; then
+            kres="$kres $sig"
+        else
+            kres="$kres $sig:FAILED(rc=$rc,want=$want,left=$left)"
+        fi
+        rm -f "$T/sig/".tmp.*
+    done
+    check "named fallback: every catchable fatal signal leaves only the previous file, status 128+n:$kres" \
+        sh -c "! echo '$kres' | grep -q FAILED"
+else
+    skip "signals: env --default-signal is missing"
+fi
+
+# 5. a figure program killed while writing leaves no temporary (it writes through the atomic
+# file, whose named fallback removes it on a signal), and make never deletes a figure output
+if [ -x "$B/figure_fig1" ] && env --default-signal true 2>/dev/null; then
+    mkdir -p "$T/fig" "$T/dat"
+    (SUSLOV_NO_O_TMPFILE=1 exec env --default-signal "$B/figure_fig1" "$T/fig" "$T/dat") >/dev/null 2>&1 &
+    pid=$!
+    i=0
+    while [ $i -lt 3000 ] && ! ls -A "$T/fig" "$T/dat" 2>/dev/null | grep -q '\.tmp\.'; do sleep 0.01; i=$((i + 1)); done
+    caught=$(ls -A "$T/fig" "$T/dat" | grep -c '\.tmp\.')
+    kill -INT $pid; { wait $pid; } 2>/dev/null; rc=$?
+    left=$(ls -A "$T/fig" "$T/dat" | grep -c '\.tmp\.')
+    check "figure_fig1 interrupted by SIGINT while a temporary existed ($caught): status 130, no temporary left ($left)" \
+        test "$caught" -ge 1 -a "$rc" = 130 -a "$left" = 0
+fi
+prec=$(make -s -p -q -f Makefile BUILD="$B" nothing 2>/dev/null | sed -n 's/^\.PRECIOUS: //p')
+check "make keeps an interrupted figure's outputs: .PRECIOUS holds figures/%.pdf, figures/%.png, data/%.csv ($prec)" \
+    sh -c "echo '$prec' | grep -q 'figures/%.pdf' && echo '$prec' | grep -q 'figures/%.png' && echo '$prec' | grep -q 'data/%.csv'"
+make -n BUILD= all >/dev/null 2>"$T/err"; rc=$?
+check "make BUILD= is refused ($(cat "$T/err"))" sh -c "test $rc != 0 && grep -q 'BUILD is empty' '$T/err'"
+
+# 7. exact for any t and w0: the scaling law w(t; w0) = c w(c t; w0 / c), R(t; w0) = R(c t; w0 / c)
+# ((ContDyn)'s field is homogeneous quadratic), against the paper's w0 at t = 0.5 and 2.5
+last() { "$S" --no-header --method exact --eps "$1" --steps 1 --omega0 "$2" | tail -1; }
+same() { # same ROW_A ROW_B C TOL: w_a = C w_b and R_a = R_b to TOL (relative for w)
+    awk -F, -v a="$1" -v b="$2" -v c="$3" -v tol="$4" 'BEGIN { split(a, x, ","); split(b, y, ",");
+        bad = 0; for (i = 3; i <= 4; i++) { d = x[i] / c - y[i]; if (d < 0) d = -d; if (d > tol * (y[i] < 0 ? -y[i] : y[i]) + 1e-300) bad = 1 }
+        for (i = 8; i <= 16; i++) { d = x[i] - y[i]; if (d < 0) d = -d; if (d > tol || x[i] == "") bad = 1 }
+        exit bad }'
+}
+ref=$(last 2.5 0.4,0.5)
+for c in 1e-300 1e150; do
+    t=$(awk -v c=$c 'BEGIN { printf "%.17g", 2.5 / c }')
+    w=$(awk -v c=$c 'BEGIN { printf "%.17g,%.17g", 0.4 * c, 0.5 * c }')
+    got=$(timeout 20 "$S" --no-header --method exact --eps "$t" --steps 1 --omega0 "$w" | tail -1)
+    check "exact at |w0| ~ $c, t = 2.5/$c: w/c and R equal the paper's at t = 2.5 to 1e-14 (scaling law)" \
+        same "$got" "$ref" "$c" 1e-14
+done
+t300=$(timeout 20 "$S" --no-header --method exact --eps 1e300 --steps 1 --omega0 1e-300,0 | tail -1)
+ref2=$(last 1 1,0)
+check "exact at t = 1e300, w0 = (1e-300, 0): R equals that at t = 1, w0 = (1, 0) to 1e-14" same "$t300" "$ref2" 1e-300 1e-14
+big=$(timeout 20 "$S" --no-header --method exact --eps 1e155 --steps 1 2>"$T/err" | tail -1); rc=$?
+check "exact at t = 1e155 (the old so3_exp squared the rotation vector): finite, R orthogonal to 1e-14 ($(cat "$T/err"))" \
+    sh -c "echo '$big' | awk -F, '{ for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) { s = 0; for (l = 0; l < 3; l++) s += \$(8 + 3 * i + l) * \$(8 + 3 * j + l); d = s - (i == j); if (d * d > 1e-28) bad = 1 } } END { exit bad || NR != 1 }'"
+a=$("$S" --no-header --method exact --eps 1e19 --steps 1 --omega0 1e-20,0 | tail -1)
+b=$("$S" --no-header --method exact --eps 0.1 --steps 1 --omega0 1,0 | tail -1)
+check "exact --eps 1e19 --omega0 1e-20,0 equals its scaled twin --eps 0.1 --omega0 1,0 (R11 = $(echo "$a" | cut -d, -f8))" \
+    same "$a" "$b" 1e-20 1e-14
+timeout 10 "$S" --method exact --eps 1e6 --steps 1 --omega0 4e-4,0 >/dev/null; rc=$?
+check "exact at w0 = (4e-4, 0), t = 1e6 costs no more than at |w0| ~ 1 (under 10 s; was minutes): rc $rc" test $rc = 0
+
+# a body whose motion nears the steady rotation at a rate ~1e-200 would need ~1e203 reference
+# steps: refused before the run (no float-to-integer overflow, no endless run); a short run works
+timeout 20 "$S" --method exact --eps 1e10 --steps 1 --inertia 1,0.1,0.2,0.1,1,0.2,1e-200,1e-200,1 \
+    >"$T/out" 2>"$T/err"; rc=$?
+timeout 20 "$S" --method exact --eps 1 --steps 1 --inertia 1,0.1,0.2,0.1,1,0.2,1e-200,1e-200,1 >/dev/null; rc2=$?
+check "exact with I31 = I32 = 1e-200 to t = 1e10 is refused (exit $rc: $(cat "$T/err")); to t = 1 it runs ($rc2)" \
+    sh -c "test $rc = 2 -a $rc2 = 0 -a ! -s '$T/out' && grep -q 'reference attitude needs' '$T/err'"
+
+# 9. failure messages describe a NaN, never print one
+"$S" --method midpoint --eps 1e6 --steps 3 --omega0 1e100,1e100 >/dev/null 2>"$T/err"; rc=$?
+check "a Newton iteration reaching NaN: exit 3, one line, no 'nan' in it ($(cat "$T/err"))" \
+    sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && ! grep -qi nan '$T/err' && grep -q 'not a finite number' '$T/err'"
+
+# 10. --help to a full device fails; running out of inodes is an output error (1), not bad input
+"$S" --help >/dev/full 2>"$T/err"; rc=$?
+check "--help > /dev/full: exit 1, one line ($(cat "$T/err"))" sh -c "test $rc = 1 -a \$(wc -l <'$T/err') = 1"
+M=$(mktemp -d)
+if [ "$(id -u)" = 0 ] && mount -t tmpfs -o size=1m,nr_inodes=2 tmpfs "$M" 2>/dev/null; then
+    : >"$M/a" 2>/dev/null
+    "$S" --method euler --eps 0.1 --steps 2 --output "$M/x.csv" 2>"$T/err"; rc=$?
+    umount "$M"
+    check "no inode left: exit 1 (output error), one line ($(cat "$T/err"))" sh -c "test $rc = 1 -a \$(wc -l <'$T/err') = 1"
+else
+    skip "inodes: cannot mount a small tmpfs (needs root)"
+fi
+rmdir "$M"
+
+done_tests test_cli_promises
