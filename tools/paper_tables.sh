@@ -1,0 +1,34 @@
+#!/bin/sh
+# The companion's three tables from the team's TSV files (fields are LaTeX text, math in $...$):
+# paper/findings.tsv (one row per independent finding, with the ledger lines it rests on),
+# paper/errata.tsv (for the authors) and paper/not_tested.tsv, plus the counts of findings by
+# verdict as macros (\FindingsCount, \FindingsReproduced, \FindingsErratum, \FindingsNotReproduced).
+# Usage: paper_tables.sh OUT_DIR
+set -eu
+O=$1
+head_row() { # file caption label colspec header
+    printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
+        "$4" "$2" "$3" "$5" "$5" >"$1"
+}
+head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A of the software note lists every line).' tab:findings \
+    '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
+    '& finding & verdict & what we measure (ledger lines)'
+awk -F'\t' 'NR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
+    ids = $4; gsub(/ /, ", ", ids)
+    printf "%s & %s & %s & %s {\\scriptsize(\\texttt{%s})}\\\\\n", $1, $2, v, $5, ids }' paper/findings.tsv >>"$O/findings.tex"
+echo '\end{longtable}' >>"$O/findings.tex"
+awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
+    printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
+    printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"] }' \
+    paper/findings.tsv >"$O/findings_counts.tex"
+
+head_row "$O/errata.tex" 'Errata for the authors: typos and internal inconsistencies, with the evidence.' tab:errata \
+    '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright\arraybackslash}p{0.26\linewidth}' \
+    '& where & printed & corrected & evidence'
+awk -F'\t' 'NR > 1 { printf "%s & %s & %s & %s & %s\\\\\n", $1, $2, $3, $4, $5 }' paper/errata.tsv >>"$O/errata.tex"
+echo '\end{longtable}' >>"$O/errata.tex"
+
+head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' tab:nottested \
+    '>{\raggedright}p{0.16\linewidth} >{\raggedright\arraybackslash}p{0.8\linewidth}' 'statement & why it is not tested'
+awk -F'\t' 'NR > 1 { printf "%s & %s\\\\\n", $2, $3 }' paper/not_tested.tsv >>"$O/not_tested.tex"
+echo '\end{longtable}' >>"$O/not_tested.tex"
