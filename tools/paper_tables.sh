@@ -3,9 +3,14 @@
 # paper/findings.tsv (one row per independent finding, with the ledger lines it rests on),
 # paper/errata.tsv (for the authors) and paper/not_tested.tsv, plus the counts of findings by
 # verdict as macros (\FindingsCount, \FindingsReproduced, \FindingsErratum, \FindingsNotReproduced).
-# Usage: paper_tables.sh OUT_DIR
+# It also writes conclusions.tex (each claim of the Conclusions, paper/conclusions.tsv, with the
+# verdicts of its ledger lines) and summary_ordered.tex: the ledger's summary (Table 1) with its
+# rows in the paper's order, the order of the first paper label each row cites in labels.tsv.
+# Usage: paper_tables.sh OUT_DIR CLAIMS_TSV SUMMARY_TEX
 set -eu
 O=$1
+C=$2
+S=$3
 head_row() { # file caption label colspec header
     printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
         "$4" "$2" "$3" "$5" "$5" >"$1"
@@ -32,3 +37,27 @@ head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' 
     '>{\raggedright}p{0.16\linewidth} >{\raggedright\arraybackslash}p{0.8\linewidth}' 'statement & why it is not tested'
 awk -F'\t' 'NR > 1 { printf "%s & %s\\\\\n", $2, $3 }' paper/not_tested.tsv >>"$O/not_tested.tex"
 echo '\end{longtable}' >>"$O/not_tested.tex"
+
+head_row "$O/conclusions.tex" 'The claims of the Conclusions and the ledger lines that test them.' tab:conclusions \
+    '>{\raggedright}p{0.5\linewidth} >{\raggedright}p{0.13\linewidth} >{\raggedright\arraybackslash}p{0.33\linewidth}' \
+    'claim & verdict & ledger lines'
+awk -F'\t' 'FNR == 1 { file++; next }
+file == 1 { verdict[$1] = $7; next }
+{ n = split($2, ids, " "); v = ""
+  for (i = 1; i <= n; i++) if (v == "" || verdict[ids[i]] == "erratum" || verdict[ids[i]] == "not reproduced") v = verdict[ids[i]]
+  list = $2; gsub(/ /, ", ", list)
+  printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
+echo '\end{longtable}' >>"$O/conclusions.tex"
+
+# Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
+# position in labels.tsv of the first label they cite; the header and footer stay in place.
+awk -F'\t' 'FNR == NR { if (FNR > 1) pos[$1] = FNR; next }
+/\\endlastfoot/ { print "0\t" FNR "\t" $0; body = 1; next }
+/\\end\{longtable\}/ { print "99999\t" FNR "\t" $0; next }
+!body { print "0\t" FNR "\t" $0; next }
+{ key = 9999; s = $0
+  while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
+      l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
+      if (l in pos) { key = pos[l]; break }
+      s = substr(s, RSTART + RLENGTH) }
+  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
