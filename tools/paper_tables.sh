@@ -19,9 +19,9 @@ head_row "$O/findings.tex" 'The findings, one row per independent finding, with 
     '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
     '& finding & verdict & what we measure (ledger lines)'
 awk -F'\t' 'NR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
-    ids = $4; gsub(/ /, ", ", ids)
+    ids = $4; gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
     printf "%s & %s & %s & %s {\\scriptsize(\\texttt{%s})}\\\\\n", $1, $2, v, $5, ids }' paper/findings.tsv >>"$O/findings.tex"
-echo '\end{longtable}' >>"$O/findings.tex"
+printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
     printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"] }' \
@@ -30,13 +30,24 @@ awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
 head_row "$O/errata.tex" 'Errata for the authors: typos and internal inconsistencies, with the evidence.' tab:errata \
     '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright\arraybackslash}p{0.26\linewidth}' \
     '& where & printed & corrected & evidence'
-awk -F'\t' 'NR > 1 { printf "%s & %s & %s & %s & %s\\\\\n", $1, $2, $3, $4, $5 }' paper/errata.tsv >>"$O/errata.tex"
-echo '\end{longtable}' >>"$O/errata.tex"
+# a ledger id in \texttt{..} may break after each hyphen
+awk -F'\t' 'function brk(s,   out, i, c, tt) {
+        out = ""; tt = 0
+        for (i = 1; i <= length(s); i++) {
+            c = substr(s, i, 1)
+            if (substr(s, i, 8) == "\\texttt{") tt = 1
+            else if (c == "}") tt = 0
+            out = out c
+            if (tt && c == "-") out = out "\\allowbreak{}"
+        }
+        return out }
+    NR > 1 { printf "%s & %s & %s & %s & %s\\\\\n", $1, $2, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
+printf '%s\n' '\end{longtable}' >>"$O/errata.tex"
 
 head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' tab:nottested \
     '>{\raggedright}p{0.16\linewidth} >{\raggedright\arraybackslash}p{0.8\linewidth}' 'statement & why it is not tested'
 awk -F'\t' 'NR > 1 { printf "%s & %s\\\\\n", $2, $3 }' paper/not_tested.tsv >>"$O/not_tested.tex"
-echo '\end{longtable}' >>"$O/not_tested.tex"
+printf '%s\n' '\end{longtable}' >>"$O/not_tested.tex"
 
 head_row "$O/conclusions.tex" 'The claims of the Conclusions and the ledger lines that test them.' tab:conclusions \
     '>{\raggedright}p{0.5\linewidth} >{\raggedright}p{0.13\linewidth} >{\raggedright\arraybackslash}p{0.33\linewidth}' \
@@ -45,9 +56,9 @@ awk -F'\t' 'FNR == 1 { file++; next }
 file == 1 { verdict[$1] = $7; next }
 { n = split($2, ids, " "); v = ""
   for (i = 1; i <= n; i++) if (v == "" || verdict[ids[i]] == "erratum" || verdict[ids[i]] == "not reproduced") v = verdict[ids[i]]
-  list = $2; gsub(/ /, ", ", list)
+  list = $2; gsub(/-/, "-\\allowbreak{}", list); gsub(/ /, ", ", list)
   printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
-echo '\end{longtable}' >>"$O/conclusions.tex"
+printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
 
 # Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
 # position in labels.tsv of the first label they cite; the header and footer stay in place.
