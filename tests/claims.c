@@ -20,6 +20,7 @@
 #include "claims_section6.h"
 #include "claims_highorder.h"
 #include "claims_coverage.h"
+#include "claims_fig2readings.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "orderfit.h"
@@ -457,6 +458,7 @@ int main(int argc, char **argv)
     propocons1_claims(&m, &ex);
     highorder_claims(&m, &ex);
     coverage_claims(&m);
+    fig2readings_claims(&m);
 
     /* The reference attitude against an independent Magnus integrator: its error must
      * sit far (100x) below the smallest SO(3) error that entered an order fit, for the local
