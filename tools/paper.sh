@@ -26,6 +26,7 @@ for doc in companion methods; do sh tools/paper_numbers.sh "paper/$doc.tex"; don
 sh tools/paper_coverage.sh "$B/claims.tsv"
 sh tools/paper_tables.sh "$P" "$B/claims.tsv" "$B/summary.tex"
 sh tools/paper_refs.sh paper/labels.tsv "$P/labels.tex"
+sh tools/paper_links.sh "$P/links.tex"
 sh tools/repro.sh "$B" "$P/repro.tex"
 sh tools/figsplit.sh figures/stability.pdf Stability "$P/figsplit.tex"
 cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" data/bench.tex "$P/"
