@@ -35,6 +35,8 @@ if grep -q '^claims: [0-9]* passed' "$log"; then
 else
     cat "$log"; echo "claims: 0 passed, 1 failed" >>"$B/check-summary.txt"; status=1
 fi
+# Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
+run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
 cat "$B/check-summary.txt"
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$B/check-summary.txt" || status=1
 exit $status
