@@ -62,13 +62,22 @@ printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
 
 # Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
 # position in labels.tsv of the first label they cite; the header and footer stay in place.
-awk -F'\t' 'FNR == NR { if (FNR > 1) pos[$1] = FNR; next }
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1) pos[$1] = FNR; next }
+FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "source") sc = i; next }
+                      if (sc) src[$1] = $sc; next }
 /\\endlastfoot/ { print "0\t" FNR "\t" $0; body = 1; next }
 /\\end\{longtable\}/ { print "99999\t" FNR "\t" $0; next }
 !body { print "0\t" FNR "\t" $0; next }
 { key = 9999; s = $0
+  # the ledger line behind the row, linked to its test (when claims.tsv has a source column)
+  if (match($0, /^\\texttt\{[^}]*(\{\}[^}]*)*\}/)) {
+      id = substr($0, RSTART + 8, RLENGTH - 9); gsub(/\\allowbreak\{\}/, "", id); sub(/-\*$/, "-", id)
+      link = ""
+      for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
+      if (link != "") { file = link; sub(/:[0-9]+$/, "", file)
+          $0 = substr($0, 1, RLENGTH) " {\\tiny\\href{../" file "}{\\texttt{" link "}}}" substr($0, RLENGTH + 1) } }
   while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
       if (l in pos) { key = pos[l]; break }
       s = substr(s, RSTART + RLENGTH) }
-  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
+  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$C" "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
