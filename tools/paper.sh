@@ -11,13 +11,15 @@ set -eu
 B=$1
 P="$B/paper"
 mkdir -p "$P"
-snip() { sh tools/snippet.sh "$1" "$2" >"$P/snip_$2.c"; }
-snip src/step_midpoint.c mid_residual
-snip src/step_variational.c taudyn_residual
-snip src/step_variational.c taualg
-snip src/reconstruct.c suslov_reconstruct
-snip src/exact.c suslov_exact_omega
-awk 'NR == 1, /\*\// { print }' src/exact.h >"$P/snip_exact_derivation.c"
+# a source file by its name, wherever the tree keeps it (src/ or a layer folder under it)
+where() { f=$(find src -name "$1" -type f | head -1); [ -n "$f" ] || { echo "paper: no $1 under src/" >&2; exit 1; }; echo "$f"; }
+snip() { sh tools/snippet.sh "$(where "$1")" "$2" >"$P/snip_$2.c"; }
+snip step_midpoint.c mid_residual
+snip step_variational.c taudyn_residual
+snip step_variational.c taualg
+snip reconstruct.c suslov_reconstruct
+snip exact.c suslov_exact_omega
+awk 'NR == 1, /\*\// { print }' "$(where exact.h)" >"$P/snip_exact_derivation.c"
 # A gap in the equation map fails make check (tests/run.sh); here it is reported, not fatal.
 sh tools/eqmap.sh tex "$P/eqmap.tex" >/dev/null ||
     echo "paper: the equation map has gaps; run: sh tools/eqmap.sh check" >&2
