@@ -232,14 +232,17 @@ data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &
 	@mkdir -p figures data
 	$< figures data >/dev/null
 
-PAPER_IN := paper/companion.tex paper/equations.txt paper/labels.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
+PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
+            $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
             $(BUILD)/summary.tex data/bench.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
-            tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh
-paper: paper/companion.pdf
+            tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
+            tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh
+paper: paper/companion.pdf paper/methods.pdf
 
-paper/companion.pdf: $(PAPER_IN) | deps-paper
+# The companion (main text) and the software note (methods, benchmark, whole ledger, source).
+paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) | deps-paper
 	@sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, one side-by-side page per source file, the
@@ -337,7 +340,7 @@ clean:
 # checkout, a PNG that git does not track goes too).
 distclean: clean
 	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/*.tmp
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/methods.pdf paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

@@ -43,6 +43,8 @@ if [ "$mode" != test ]; then
     sed '/^claims: [0-9]* passed/d' "$B/claims.out"
     grep -q '^claims: [0-9]* passed, 0 failed' "$B/claims.out" || status=1
     count claims "$B/claims.out"
+    # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
+    run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
 fi
 cat "$sum"
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$sum" || status=1

@@ -27,7 +27,8 @@ done
 dpkg -s fonts-dejavu-core >/dev/null 2>&1 || missing="$missing fonts-dejavu-core"
 # make paper: pdflatex with the LaTeX packages the companion uses (booktabs, listings, ...)
 if [ "$profile" = paper ]; then
-    for pkg in texlive-latex-base texlive-latex-recommended; do
+    # lmodern: Type 1 fonts in T1 encoding (no Type 3 bitmaps; make paper checks with pdffonts)
+    for pkg in texlive-latex-base texlive-latex-recommended lmodern; do
         dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
     done
     # pdftotext, pdfinfo: tools/paper.sh finds where to split the tall stability figure

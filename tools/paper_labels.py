@@ -13,8 +13,10 @@ lines of the source); figures globally. Numbered items without a \\label get the
 "nolabel:KIND-NUMBER" so that they can be cited too (e.g. the proposition on general DSPs).
 Labels are stored without surrounding blanks (the source writes \label{ DSP}); the section
 column is "Appendix" after the unnumbered appendix heading.
-The published numbers the task lists are asserted at the end (check_published), so a
-miscount fails loudly.
+The numbers are counted from the arXiv source; the PUBLISHED sample below (every number the
+companion's findings cite, read off the published article) is asserted at the end
+(check_published), so a miscount fails loudly. The companion and the web edition should say
+exactly this: numbers counted from the arXiv source, spot-checked against the published version.
 """
 import re
 import sys

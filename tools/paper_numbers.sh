@@ -5,6 +5,7 @@
 #   comments                              not printed
 #   \label \ref \eqref \PaperRef.. \cite \input \includegraphics \lstinputlisting \bibitem
 #   \cmd \texttt \url \href \fig \listing names of labels, files, commands, addresses
+#   \repolink \datalink \figlinks       names of files
 #   \rotatebox                            an angle of the layout
 #   \paperquote{..}                       the paper's own data and settings, quoted as printed
 #   \setting{..}                          a parameter of a run or a target, fixed in the source
@@ -29,7 +30,8 @@ perl -0777 -ne '
     $b =~ s/^.*?\\begin\{document\}//s;                         # the preamble
     $b =~ s/\\begin\{thebibliography\}.*?\\end\{thebibliography\}//sg;
     my $g = qr/(\{(?:[^{}]++|(?-1))*\})/;                       # a balanced {...}
-    $b =~ s/\\(?:label|ref|eqref|PaperRef\w*|PaperNum|cite|input|includegraphics|lstinputlisting|bibitem|cmd|texttt|url|href|paperquote|setting|fig|rotatebox|listing)\*?(?:\[[^\]]*\])?$g//g;
+    $b =~ s/\\(?:label|ref|eqref|PaperRef\w*|PaperNum|cite|input|includegraphics|lstinputlisting|bibitem|cmd|texttt|url|href|paperquote|setting|fig|rotatebox|listing|repolink|datalink)\*?(?:\[[^\]]*\])?$g//g;
+    $b =~ s/\\figlinks$g$g$g//g;                              # file names of a caption
     $b =~ s/\\begin\{(?:longtable|tabular)\}$g//g;               # column specs
     $b =~ s/\[[^\]]*\]//g;                                      # optional arguments
     $b =~ s/-?[0-9.]+\s*(?:pt|cm|mm|em|ex|bp|\\(?:text|line)width)//g;

@@ -40,7 +40,10 @@ static void draw(cairo_t *cr, void *vctx)
         {f->ex.energy, f->mid.energy, f->var.energy, "E = \xc2\xbd\xe2\x9f\xa8I\xe2\x82\x98\xcf\x89, \xcf\x89\xe2\x9f\xa9"},
     };
     static const char *letters[] = {"(a)", "(b)", "(c)", "(d)", "(e)", "(f)"};
-    plot_text(cr, W / 2, 14, "Figure 2: midpoint rule and variational integrator, \xce\xb5 = 1", 11, 0.5, 0.5, 1);
+    plot_text(cr, W / 2, 14,
+              "The paper's Figure 2 redrawn: "
+              "midpoint rule and variational integrator, \xce\xb5 = 1",
+              11, 0.5, 0.5, 1);
     for (int p = 0; p < 4; p++) {
         plot_axes ax;
         double lo = INFINITY, hi = -INFINITY;

@@ -221,7 +221,8 @@ static void small_statements(const suslov_model *m, const suslov_exact *ex)
     snprintf(q, sizeof q,
              "lambda from (VSO3) as printed, then lambda -> -lambda/eps^2, over (taualg): the text says it gives (taualg) (ratio 1); range [%.15g, %.15g]; (PartCase)'s sign gives +1",
              rv_lo, rv_hi);
-    ledger_add("vso3-sign", "(VSO3), (taualg), (PartCase)", q, rv_hi, 1.0, 1e-12, LEDGER_NOT_REPRODUCED);
+    /* an erratum: (VSO3) copies (AltNHEq), whose sign the last display of its own proof reverses */
+    ledger_add("vso3-sign", "(VSO3), (taualg), (PartCase)", q, rv_hi, 1.0, 1e-12, LEDGER_ERRATUM);
     ledger_add("vso3-sign-is-minus", "(VSO3), (taualg) (extension)",
                "the same ratio, lowest over the samples: (VSO3)'s printed sign gives -(taualg); the code follows (PartCase)",
                rv_lo, -1.0, 1e-12, LEDGER_EXTENSION);

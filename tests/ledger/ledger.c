@@ -15,7 +15,7 @@
 typedef enum { ROW_WITHIN, ROW_AT_LEAST, ROW_AT_MOST } row_kind;
 
 typedef struct {
-    char id[64], ref[96], quantity[256], verdict[16], source[80];
+    char id[64], ref[96], quantity[512], verdict[16], source[80];
     double measured, expected, tol;
     row_kind kind;
     int pass;
@@ -743,7 +743,9 @@ static void write_summary(FILE *fp)
             else
                 fprintf(fp, "$|m-e|\\le t\\in[%s,%s]$", lo, hi);
         }
-        fprintf(fp, " & %s%s\\\\\n", strcmp(r->verdict, "reproduced") == 0 ? "yes" : "\\textbf{no}",
+        const char *verdict = strcmp(r->verdict, "reproduced") == 0 ? "yes"
+                              : strcmp(r->verdict, "erratum") == 0 ? "erratum" : "\\textbf{no}";
+        fprintf(fp, " & %s%s\\\\\n", verdict,
                 r->pass ? "" : " \\textbf{(check FAILS)}");
     }
     fputs("\\end{longtable}\n", fp);
@@ -753,12 +755,13 @@ static int write_tex(const char *dir)
 {
     char path[4200], err[256], name[96], num[64];
     atomic_file af;
-    int failed = 0, reproduced = 0, not_reproduced = 0, extension = 0;
+    int failed = 0, reproduced = 0, not_reproduced = 0, extension = 0, erratum = 0;
     for (int i = 0; i < nrows; i++) {
         failed += !rows[i].pass;
         reproduced += strcmp(rows[i].verdict, "reproduced") == 0;
         not_reproduced += strcmp(rows[i].verdict, "not reproduced") == 0;
         extension += strcmp(rows[i].verdict, "extension") == 0;
+        erratum += strcmp(rows[i].verdict, "erratum") == 0;
     }
     snprintf(path, sizeof path, "%s/numbers.tex", dir);
     if (atomic_file_open(&af, path, err, sizeof err) != 0)
@@ -786,9 +789,10 @@ static int write_tex(const char *dir)
             "\\newcommand{\\LedgerLines}{%d}\n\\newcommand{\\LedgerFailed}{%d}\n"
             "\\newcommand{\\LedgerPassed}{%d}\n"
             "\\newcommand{\\LedgerReproduced}{%d}\n\\newcommand{\\LedgerNotReproduced}{%d}\n"
-            "\\newcommand{\\LedgerExtension}{%d}\n\\newcommand{\\LedgerPaperLines}{%d}\n",
+            "\\newcommand{\\LedgerExtension}{%d}\n\\newcommand{\\LedgerPaperLines}{%d}\n"
+            "\\newcommand{\\LedgerErratum}{%d}\n",
             nrows, failed, nrows - failed, reproduced, not_reproduced, extension,
-            reproduced + not_reproduced);
+            reproduced + not_reproduced + erratum, erratum);
     if (atomic_file_commit(&af, err, sizeof err) != 0)
         return -1;
 
@@ -826,6 +830,9 @@ static void add_row(ledger_source src, const char *id, const char *paper_ref, co
         fprintf(stderr, "ledger: more than %d lines\n", LEDGER_MAX);
         return;
     }
+    /* the companion prints every description whole: a cut one is a bug of the caller */
+    if (strlen(quantity) >= sizeof rows[0].quantity || strlen(id) >= sizeof rows[0].id)
+        ledger_die("fitting a ledger line's id and description into their buffers");
     ledger_row *r = &rows[nrows++];
     snprintf(r->id, sizeof r->id, "%s", id);
     snprintf(r->ref, sizeof r->ref, "%s", paper_ref);
@@ -841,7 +848,7 @@ static void add_row(ledger_source src, const char *id, const char *paper_ref, co
         strcpy(r->verdict, "extension");
         r->pass = usable && holds;
     } else {
-        strcpy(r->verdict, holds ? "reproduced" : "not reproduced");
+        strcpy(r->verdict, holds ? "reproduced" : truth == LEDGER_ERRATUM ? "erratum" : "not reproduced");
         r->pass = usable && holds == (truth == LEDGER_REPRODUCED);
     }
 }

@@ -11,11 +11,14 @@
 typedef enum {
     LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
     LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol */
-    LEDGER_EXTENSION       /* our own claim beyond the paper: |measured - expected| <= tol */
+    LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
+    LEDGER_ERRATUM         /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
+                            * (it contradicts the paper's own formulas, not its results) */
 } ledger_assert;
 
 /* Records one line. The verdict column follows from the numbers alone ("reproduced" or "not
- * reproduced" for a claim of the paper, "extension" otherwise); the check passes when it is
+ * reproduced" for a claim of the paper, "erratum" in place of "not reproduced" for an erratum,
+ * "extension" otherwise); the check passes when it is
  * what `truth` asserts, which the caller states and justifies next to the call. */
 #define ledger_add(...) ledger_add_at(__FILE__, __LINE__, __VA_ARGS__)
 void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref, const char *quantity,
@@ -49,7 +52,7 @@ void ledger_number(const char *name, double value);
  *                comparison, e.g. $|m-1|\le 0.1$ or $m\ge b$), the id in CamelCase with digits
  *                spelled out, numbers for math mode; every ledger_number; and the counts
  *                \LedgerLines, \LedgerPassed, \LedgerFailed, \LedgerReproduced,
- *                \LedgerNotReproduced, \LedgerExtension, \LedgerPaperLines;
+ *                \LedgerNotReproduced, \LedgerErratum, \LedgerExtension, \LedgerPaperLines;
  *   ledger.tex   the whole ledger as a longtable, the ASCII quantity strings typeset as math
  *                and paper references as \PaperRefOr / \PaperRefParen (resolved by the
  *                companion to the paper's published numbers, paper/labels.tsv);

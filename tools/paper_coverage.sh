@@ -1,0 +1,45 @@
+#!/bin/sh
+# Every numbered statement of the paper (proposition, theorem, corollary, remark, algorithm,
+# figure; paper/labels.tsv) must be tested by a ledger line (its label, or the name the ledger
+# gives it, in the paper_ref column of claims.tsv) or listed, with the reason, in
+# paper/not_tested.tsv; every claim of the Conclusions (paper/conclusions.tsv) and every finding
+# (paper/findings.tsv) must name ledger lines that exist; and every ledger line whose verdict is
+# "not reproduced" or "erratum" must belong to a finding. Prints each gap and, last,
+# "paper_coverage: N passed, N failed" (one check per statement, claim, finding line and
+# contradicted line); exit 1 on any gap. Run by make check (tests/run.sh) and make paper.
+# Usage: paper_coverage.sh CLAIMS_TSV
+set -eu
+C=$1
+awk -F'\t' '
+FNR == 1 { file++; next }
+file == 1 { ref[FNR] = $2; verdict[$1] = $7; nref = FNR; next }
+file == 2 { untested[$1] = 1; next }
+file == 3 { n = split($2, ids, " ");
+            for (i = 1; i <= n; i++) { checks++; if (!(ids[i] in verdict)) { print "conclusions: no ledger line " ids[i]; bad++ } }
+            next }
+file == 4 { n = split($4, ids, " ");
+            for (i = 1; i <= n; i++) { infinding[ids[i]] = 1; checks++
+                if (!(ids[i] in verdict)) { print "findings " $1 ": no ledger line " ids[i]; bad++ } }
+            next }
+file == 5 && $2 ~ /^(proposition|theorem|corollary|remark|algorithm|figure)$/ { label[$1] = $2 " " $3 }
+END {
+    # the names the ledger uses where a statement has no label of its own
+    alias["nolabel:proposition-5.2"] = "Prop. general DSP"
+    alias["nolabel:remark-5.2"] = "Algorithm (algo), Remark"
+    alias["Fig1"] = "Fig. 1"; alias["Fig2"] = "Fig. 2"
+    for (l in label) {
+        checks++
+        found = (l in untested)
+        for (r = 2; r <= nref && !found; r++) {
+            s = ref[r]; gsub(/[(),]/, " ", s)
+            found = (" " s " ") ~ (" " l " ") || ((l in alias) && index(ref[r], alias[l]))
+        }
+        if (!found) { print "coverage: " label[l] " (" l ") is in neither the ledger nor paper/not_tested.tsv"; bad++ }
+    }
+    for (id in verdict)
+        if (verdict[id] == "not reproduced" || verdict[id] == "erratum") {
+            checks++
+            if (!(id in infinding)) { print "findings: ledger line " id " (" verdict[id] ") belongs to no finding"; bad++ } }
+    printf "paper_coverage: %d passed, %d failed\n", checks - bad, bad
+    exit bad > 0
+}' "$C" paper/not_tested.tsv paper/conclusions.tsv paper/findings.tsv paper/labels.tsv

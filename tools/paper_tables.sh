@@ -1,0 +1,83 @@
+#!/bin/sh
+# The companion's three tables from the team's TSV files (fields are LaTeX text, math in $...$):
+# paper/findings.tsv (one row per independent finding, with the ledger lines it rests on),
+# paper/errata.tsv (for the authors) and paper/not_tested.tsv, plus the counts of findings by
+# verdict as macros (\FindingsCount, \FindingsReproduced, \FindingsErratum, \FindingsNotReproduced).
+# It also writes conclusions.tex (each claim of the Conclusions, paper/conclusions.tsv, with the
+# verdicts of its ledger lines) and summary_ordered.tex: the ledger's summary (Table 1) with its
+# rows in the paper's order, the order of the first paper label each row cites in labels.tsv.
+# Usage: paper_tables.sh OUT_DIR CLAIMS_TSV SUMMARY_TEX
+set -eu
+O=$1
+C=$2
+S=$3
+head_row() { # file caption label colspec header
+    printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
+        "$4" "$2" "$3" "$5" "$5" >"$1"
+}
+head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A of the software note lists every line).' tab:findings \
+    '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
+    '& finding & verdict & what we measure (ledger lines)'
+awk -F'\t' 'NR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
+    ids = $4; gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
+    printf "%s & %s & %s & %s {\\scriptsize(\\texttt{%s})}\\\\\n", $1, $2, v, $5, ids }' paper/findings.tsv >>"$O/findings.tex"
+printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
+awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
+    printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
+    printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"] }' \
+    paper/findings.tsv >"$O/findings_counts.tex"
+
+head_row "$O/errata.tex" 'Errata for the authors: typos and internal inconsistencies, with the evidence.' tab:errata \
+    '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright\arraybackslash}p{0.26\linewidth}' \
+    '& where & printed & corrected & evidence'
+# a ledger id in \texttt{..} may break after each hyphen
+awk -F'\t' 'function brk(s,   out, i, c, tt) {
+        out = ""; tt = 0
+        for (i = 1; i <= length(s); i++) {
+            c = substr(s, i, 1)
+            if (substr(s, i, 8) == "\\texttt{") tt = 1
+            else if (c == "}") tt = 0
+            out = out c
+            if (tt && c == "-") out = out "\\allowbreak{}"
+        }
+        return out }
+    NR > 1 { printf "%s & %s & %s & %s & %s\\\\\n", $1, $2, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
+printf '%s\n' '\end{longtable}' >>"$O/errata.tex"
+
+head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' tab:nottested \
+    '>{\raggedright}p{0.16\linewidth} >{\raggedright\arraybackslash}p{0.8\linewidth}' 'statement & why it is not tested'
+awk -F'\t' 'NR > 1 { printf "%s & %s\\\\\n", $2, $3 }' paper/not_tested.tsv >>"$O/not_tested.tex"
+printf '%s\n' '\end{longtable}' >>"$O/not_tested.tex"
+
+head_row "$O/conclusions.tex" 'The claims of the Conclusions and the ledger lines that test them.' tab:conclusions \
+    '>{\raggedright}p{0.5\linewidth} >{\raggedright}p{0.13\linewidth} >{\raggedright\arraybackslash}p{0.33\linewidth}' \
+    'claim & verdict & ledger lines'
+awk -F'\t' 'FNR == 1 { file++; next }
+file == 1 { verdict[$1] = $7; next }
+{ n = split($2, ids, " "); v = ""
+  for (i = 1; i <= n; i++) if (v == "" || verdict[ids[i]] == "erratum" || verdict[ids[i]] == "not reproduced") v = verdict[ids[i]]
+  list = $2; gsub(/-/, "-\\allowbreak{}", list); gsub(/ /, ", ", list)
+  printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
+printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
+
+# Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
+# position in labels.tsv of the first label they cite; the header and footer stay in place.
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1) pos[$1] = FNR; next }
+FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "source") sc = i; next }
+                      if (sc) src[$1] = $sc; next }
+/\\endlastfoot/ { print "0\t" FNR "\t" $0; body = 1; next }
+/\\end\{longtable\}/ { print "99999\t" FNR "\t" $0; next }
+!body { print "0\t" FNR "\t" $0; next }
+{ key = 9999; s = $0
+  # the ledger line behind the row, linked to its test (when claims.tsv has a source column)
+  if (match($0, /^\\texttt\{[^}]*(\{\}[^}]*)*\}/)) {
+      id = substr($0, RSTART + 8, RLENGTH - 9); gsub(/\\allowbreak\{\}/, "", id); sub(/-\*$/, "-", id)
+      link = ""
+      for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
+      if (link != "") { file = link; sub(/:[0-9]+$/, "", file)
+          $0 = substr($0, 1, RLENGTH) " {\\tiny\\href{../" file "}{\\texttt{" link "}}}" substr($0, RLENGTH + 1) } }
+  while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
+      l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
+      if (l in pos) { key = pos[l]; break }
+      s = substr(s, RSTART + RLENGTH) }
+  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$C" "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
