@@ -90,10 +90,9 @@ static double reconstruct_vs_definition(suslov_recon kind, double eps, const dou
     return d;
 }
 
-int main(void)
+/* (Isom), (caypart), the inverse chart, dcay, Definition Retr and exp on random samples. */
+static void identities(gsl_rng *rng)
 {
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 20261122);
     double worst[10] = {0};
     for (int n = 0; n < 200; n++) {
         double xi[3], eta[3], W[3][3], v[3], a[3], b[3], C[3][3], Cm[3][3], P[3][3], D[3][3], Di[3][3];
@@ -170,8 +169,11 @@ int main(void)
     CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central differences); worst %.2e", worst[5]);
     CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central differences); worst %.2e", worst[6]);
     CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e", worst[7]);
+}
 
-    /* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
+/* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
+static void cayinver(gsl_rng *rng)
+{
     double off33 = 0.0, at33 = 0.0;
     for (int n = 0; n < 50; n++) {
         double w[3], M[3][3], D[3][3], ew[3];
@@ -192,8 +194,11 @@ int main(void)
     CHECK(off33 < ROUNDOFF_TOL, "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
     CHECK(fabs(at33 - 1.0) < ROUNDOFF_TOL,
           "(cayinver) as printed has 0 at (3,3) where dcay^{-1} has 1; difference %.17g", at33);
+}
 
-    /* (MetMat) is a metric on sampled rotations, and equals |R1 - R2| (Frobenius). */
+/* (MetMat) is a metric on sampled rotations, and equals |R1 - R2| (Frobenius). */
+static void metric(gsl_rng *rng)
+{
     double sym = 0.0, self = 0.0, tri = -INFINITY, chord = 0.0, minpos = INFINITY;
     for (int n = 0; n < 300; n++) {
         double a[3], b[3], c[3], A[3][3], B[3][3], C[3][3], D[3][3];
@@ -221,15 +226,22 @@ int main(void)
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
     CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
           "(Groudist): orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+}
+
+int main(void)
+{
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 20261122);
+    identities(rng);
+    cayinver(rng);
+    metric(rng);
     /* The reconstructions against their definitions; entries of size 1 after two products of
      * a few round-off each: 1e-15. */
-    {
-        const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
-        for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
-            const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
-            CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
-                  "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
-        }
+    const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
+    for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
+        const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
+        CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
+              "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
     }
     gsl_rng_free(rng);
     return check_summary("test_so3");
