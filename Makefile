@@ -84,7 +84,7 @@ $(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/%.o | $(LIB)
 $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/test_%.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
-CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/claims*.c) tests/ledger.c tests/expected_orders.c)
+CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/claims*.c) tests/ledger.c tests/expected_orders.c tests/method_props.c)
 $(CLAIMS): $(CLAIMS_OBJ) $(LIB)
 	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
 
