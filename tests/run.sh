@@ -35,6 +35,13 @@ if grep -q '^claims: [0-9]* passed' "$log"; then
 else
     cat "$log"; echo "claims: 0 passed, 1 failed" >>"$B/check-summary.txt"; status=1
 fi
+# No field of the ledger may read nan: a measurement that did not happen is a failure that says so.
+if grep -iqw nan "$B/claims.tsv" 2>/dev/null; then
+    grep -iw nan "$B/claims.tsv" | cut -f1 | sed 's/^/FAIL claims.tsv has nan: /'
+    echo "claims_no_nan: 0 passed, 1 failed" >>"$B/check-summary.txt"; status=1
+else
+    echo "claims_no_nan: 1 passed, 0 failed" >>"$B/check-summary.txt"
+fi
 cat "$B/check-summary.txt"
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$B/check-summary.txt" || status=1
 exit $status
