@@ -103,7 +103,8 @@ static inline void body_get(int k, body *b)
 static inline void body_describe(const body *b, char *buf, size_t len)
 {
     snprintf(buf, len, "%s: I = [%.4g %.4g %.4g; %.4g %.4g %.4g; %.4g %.4g %.4g], w0 = (%.4g, %.4g)", b->name,
-             b->I[0], b->I[1], b->I[2], b->I[3], b->I[4], b->I[5], b->I[6], b->I[7], b->I[8], b->w0[0], b->w0[1]);
+             b->I[0], b->I[1], b->I[2], b->I[3], b->I[4], b->I[5], b->I[6], b->I[7], b->I[8],
+             b->w0[0], b->w0[1]);
 }
 
 #endif

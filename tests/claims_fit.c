@@ -13,9 +13,9 @@
 #define ORDER_TOL_WIDE 0.25
 #define MAXN 32
 
-int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps, const double *err,
-                           const double *need, int n, double floor_c, int floor_pow, double shift, double expected,
-                           ledger_assert truth)
+int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
+                          const double *err, const double *need, int n, double floor_c, int floor_pow,
+                          double shift, double expected, ledger_assert truth)
 {
     suslov_order_fit f;
     char q[400];
@@ -58,7 +58,8 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
     char eref[128];
     snprintf(eref, sizeof eref, "%s%s", ref, strstr(ref, "extension") ? "" : " (extension)");
     /* the numbers first: the quantity column holds 255 characters */
-    snprintf(q, sizeof q, "[no slope (order %g at round-off); size / theory's lower estimate >= 0.1 at the %d eps "
+    snprintf(q, sizeof q, "[no slope (order %g at round-off); size / theory's lower estimate >= 0.1 at the "
+                          "%d eps "
              "where the estimate is above 10 floors] %s", expected, measurable, what);
     ledger_add_bound(id, eref, q, need ? carry : -INFINITY, 0.1, 1, LEDGER_EXTENSION);
     return 1;

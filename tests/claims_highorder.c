@@ -1,4 +1,5 @@
-/* Claims of issue 11, all extensions (the paper has no method of order above 4).
+/* Long-run claims of the extensions (the paper has no method of order above 4); their p, s and
+ * SO(3) orders on every body are measured by tests/claims_methods.c.
  *
  * Orders. The convergence sweep of claims.c fits over eps <= 2^-2 (orders up to 4 of the paper's
  * DSPs); an order-8 method is at round-off there. Here each method runs to t = T_ORD with
@@ -6,8 +7,8 @@
  * fitted over the points between the round-off floor (1000 u times the size of the quantity, as in
  * orderfit.h) and ERR_MAX = 1e-3 (0.1% of |R|: beyond it the step is so large that the next terms
  * of the error expansion bend the slope; Cayley's error constant, 100-1000x exp's, pushes that
- * regime to the smallest errors). w is compared with the closed form, R with the long-double reference (refattitude.h, good
- * to ~1e-17, checked below).
+ * regime to the smallest errors). w is compared with the closed form, R with the long-double
+ * reference (refattitude.h, good to ~1e-17, checked below).
  * Every claim is "order at least p", the theorem's statement (nothing is claimed about a slope
  * steeper than p, which the pre-asymptotic bend of the window produces: w's errors are 100-1000x
  * smaller than R's, so its window holds coarser steps, and its slopes come out 0.1-0.4 steep).
@@ -59,7 +60,8 @@ static int keep_row(void *vctx, const suslov_row *row)
 }
 
 /* Runs a method over [0, T] with N steps, every row tracked every `every` steps. */
-static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st, suslov_recon recon,
+static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st,
+               suslov_recon recon,
                double T, long N, long every, last_row *out)
 {
     *out = (last_row){.e0 = suslov_energy(m, ex->w0), .m = m};
@@ -68,7 +70,8 @@ static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepp
     return suslov_run(&cfg, ex->w0, keep_row, out, &rep);
 }
 
-static void order_rows(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, const expected_order *eo,
+static void order_rows(const suslov_model *m, const suslov_exact *ex, const suslov_method *me,
+                       const expected_order *eo,
                        suslov_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
 {
     double eps[MAXN], ew[MAXN], eR[MAXN];
@@ -101,7 +104,8 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
         double fe[MAXN], fr[MAXN];
         int k = 0;
         for (int j = 0; j < n; j++) {
-            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size, 100.0 * N * stages * 2.220446049250313e-16 * size);
+            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size,
+                                                          100.0 * N * stages * 2.220446049250313e-16 * size);
             if (err[j] <= ERR_MAX && err[j] > floor) {
                 fe[k] = eps[j];
                 fr[k] = err[j];
@@ -117,14 +121,17 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
             snprintf(id, sizeof id, "highorder-so3-order-%s-%s", SUSLOV_RECON_NAMES[recon], me->type->name);
         else
             snprintf(id, sizeof id, "highorder-w-order-%s", me->type->name);
-        snprintf(what, sizeof what, "slope of %s at t = 50 against eps, %s%s%s, errors in [max(1000 u, 100 N s u), 1e-3] (eps %.3g .. %.3g, %d points)",
-                 q ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|", me->type->name, q ? " + " : "", q ? SUSLOV_RECON_NAMES[recon] : "",
+        snprintf(what, sizeof what, "slope of %s at t = 50 against eps, %s%s%s, errors in [max(1000 u, 100 "
+                                    "N s u), 1e-3] (eps %.3g .. %.3g, %d points)",
+                 q ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|", me->type->name, q ? " + " : "",
+                     q ? SUSLOV_RECON_NAMES[recon] : "",
                  ok == 0 ? f.eps_lo : 0.0, ok == 0 ? f.eps_hi : 0.0, ok == 0 ? f.used : 0);
         if (ok != 0 && !q && expected >= 10)
             continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
                        * (its attitude, which integrates w, carries the order: the SO(3) row) */
         const int series = props.attitude == METHOD_ATT_QUATERNION;
-        ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !series ? 0.3 : 1.0), 1, LEDGER_EXTENSION);
+        ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !series ? 0.3 : 1.0), 1,
+                         LEDGER_EXTENSION);
     }
 }
 
@@ -160,7 +167,8 @@ static void taylor_control(const suslov_model *m, const suslov_exact *ex, const 
     }
     char id[96], what[256];
     snprintf(id, sizeof id, "highorder-control-%s", me->type->name);
-    snprintf(what, sizeof what, "max local w error of %s over that of its truncation at order %d (%.2g; the control), one step of eps = 2 from w(t), 8 t; theory ~eps/rho = 0.19",
+    snprintf(what, sizeof what, "max local w error of %s over that of its truncation at order %d (%.2g; "
+                                "the control), one step of eps = 2 from w(t), 8 t; theory ~eps/rho = 0.19",
              me->type->name, p - 1, ec);
     ledger_add_bound(id, "(extension)", what, em / ec, 0.6, 0, LEDGER_EXTENSION);
 }
@@ -170,7 +178,8 @@ static void taylor_control(const suslov_model *m, const suslov_exact *ex, const 
  * substep or per Taylor step (N s u E, the worst case of a drift that never cancels);
  * R^T R - I: R is rebuilt from a unit quaternion at every step, or summed with compensation, so
  * it is one rounding, a few u over 9 entries, whatever N: <= 1e-14. */
-static void long_run(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, const method_props *props)
+static void long_run(const suslov_model *m, const suslov_exact *ex, const suslov_method *me,
+                     const method_props *props)
 {
     const long N = 100000L;
     char id[96], what[256];
@@ -178,14 +187,16 @@ static void long_run(const suslov_model *m, const suslov_exact *ex, const suslov
     const int ok = run(m, ex, me->type, me->recon, 1e4, N, 100, &l) == 0;
     const double yard = (double)N * props->substeps * 1.1102230246251565e-16 * l.e0;
     snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
-    snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = %.2g (s = %d substeps)",
+    snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = "
+                                "%.2g (s = %d substeps)",
              N, 1e4 / (double)N, me->type->name, yard, props->substeps);
     ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0, LEDGER_EXTENSION);
     snprintf(id, sizeof id, "highorder-w3-%s", me->type->name);
     snprintf(what, sizeof what, "max |w3| over %ld steps to T = 1e4, %s: exactly 0", N, me->type->name);
     ledger_add(id, "(extension)", what, ok ? l.w3 : INFINITY, 0.0, 0.0, LEDGER_EXTENSION);
     snprintf(id, sizeof id, "highorder-so3-%s", me->type->name);
-    snprintf(what, sizeof what, "max |R^T R - I| over %ld steps to T = 1e4, %s + %s; bound 1e-14 (one rounding)", N,
+    snprintf(what, sizeof what, "max |R^T R - I| over %ld steps to T = 1e4, %s + %s; bound 1e-14 (one "
+                                "rounding)", N,
              me->type->name, SUSLOV_RECON_NAMES[me->recon]);
     ledger_add_bound(id, "(extension)", what, ok ? l.orth : INFINITY, 1e-14, 0, LEDGER_EXTENSION);
 }
@@ -221,14 +232,17 @@ static void recommended_settings(const suslov_model *m, const suslov_exact *ex, 
         const int ok = run(m, ex, me->type, me->recon, T_ORD, N, 1, &l) == 0;
         const double err = !ok ? INFINITY : RECOMMENDED[i].attitude ? so3_dist(R_T, l.R)
                                                                     : hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
-        snprintf(id, sizeof id, "recommended-%s-%s-%ld", RECOMMENDED[i].attitude ? "attitude" : "w", me->type->name, N);
-        snprintf(what, sizeof what, "%s at t = 50, %s with %ld steps (eps %.4g), the bench's setting for %.0e: "
+        snprintf(id, sizeof id, "recommended-%s-%s-%ld", RECOMMENDED[i].attitude ? "attitude" : "w",
+                 me->type->name, N);
+        snprintf(what, sizeof what, "%s at t = 50, %s with %ld steps (eps %.4g), the bench's setting for "
+                                    "%.0e: "
                  "at most that", RECOMMENDED[i].attitude ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|",
                  me->type->name, N, T_ORD / (double)N, RECOMMENDED[i].level);
         ledger_add_bound(id, "README (make bench)", what, err, RECOMMENDED[i].level, 0, LEDGER_EXTENSION);
         const double yard = 8.0 * (double)N * 2.220446049250313e-16 * l.e0;
         snprintf(id, sizeof id, "recommended-energy-%s-%ld", me->type->name, N);
-        snprintf(what, sizeof what, "max |E - E0| over the same run (%s, eps %.4g): E restored, bound 8 N u E0 = %.2g",
+        snprintf(what, sizeof what, "max |E - E0| over the same run (%s, eps %.4g): E restored, bound 8 N "
+                                    "u E0 = %.2g",
                  me->type->name, T_ORD / (double)N, yard);
         ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0, LEDGER_EXTENSION);
     }
@@ -248,11 +262,13 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
         double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         suslov_magnus4(ex, 0.0, T_ORD, 4000, Rm);
         ledger_add("highorder-reference-attitude", "(method)",
-                   "dist(R_ref(50), R_magnus(50)): long-double Taylor (order 28) on (ContDyn) + quaternion vs long-double "
+                   "dist(R_ref(50), R_magnus(50)): long-double Taylor (order 28) on (ContDyn) + quaternion "
+                   "vs long-double "
                    "Magnus-4 (Richardson) along the closed form; claimed <= 1e-15",
                    so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
         ledger_add("highorder-reference-omega", "(method)",
-                   "|w_ref(50) - w_exact(50)|: the reference's w against the closed form, claimed <= 4 u |w| ~ 1e-15 "
+                   "|w_ref(50) - w_exact(50)|: the reference's w against the closed form, claimed <= 4 u "
+                   "|w| ~ 1e-15 "
                    "(each side rounds a few times)",
                    hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
     }

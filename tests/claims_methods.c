@@ -246,14 +246,17 @@ static void order_line(const char *id, const char *what, const suslov_method *me
         return;
     }
     if (s->fallback) {
-        snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d bodies (seed %u); %d reach "
+        snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d bodies (seed "
+                              "%u); %d reach "
                  "round-off before one slope, fit on the last %d points above it; range %.2f .. %.2f",
                  what, me->type->name, BODIES_COUNT, BODIES_SEED, s->fallback, MIN_POINTS, s->lo, s->hi);
         ledger_add_bound(id, ref, q, s->lo, 0.5 * expected, 1, truth);
         return;
     }
-    snprintf(q, sizeof q, "%s, %s; worst of %d bodies (seed %u) %s, window eps %.3g .. %.3g; range %.2f .. %.2f",
-             what, me->type->name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo, s->hi);
+    snprintf(q, sizeof q, "%s, %s; worst of %d bodies (seed %u) %s, window eps %.3g .. %.3g; range %.2f .. "
+                          "%.2f",
+             what, me->type->name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
+                 s->hi);
     ledger_add(id, ref, q, s->worst, expected, ORDER_TOL, truth);
 }
 
@@ -382,7 +385,8 @@ void methods_claims(void)
         if (!eo) {
             char id[96];
             snprintf(id, sizeof id, "expected-order-known-%s", me->type->name);
-            ledger_add_bound(id, "(tests/expected_orders.c)", "the method has a stated order to test against: "
+            ledger_add_bound(id, "(tests/expected_orders.c)", "the method has a stated order to test "
+                                                              "against: "
                              "1 when it does", 0.0, 1.0, 1, LEDGER_EXTENSION);
             continue;
         }

@@ -38,7 +38,8 @@ static const double TK6[] = {0.0, 3.0, 7.0};
 static double norm2(const double a[2], const double b[2]) { return hypot(a[0] - b[0], a[1] - b[1]); }
 
 /* the method's own w-step */
-static void step(const suslov_model *m, const suslov_stepper_type *st, double eps, const double x0[2], double x1[2])
+static void step(const suslov_model *m, const suslov_stepper_type *st, double eps, const double x0[2],
+                 double x1[2])
 {
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
     suslov_step_stats s;
@@ -122,34 +123,40 @@ static void reduced_lines(const suslov_method *me, const expected_order *eo, con
     /* rk8pd at abs = rel = 1e-14 over one period, a few dozen steps: ~1e-14 |w| each; the field
      * is exact to Newton's 64 u |x| (perturbation.c). 1e-12 leaves a factor ~30 over both. */
     snprintf(id, sizeof id, "sec6-embedding-%s", st->name);
-    snprintf(q, sizeof q, "max |G(eps,0;x0) - phi(eps,x0)|, period map of x' = h + eps^p d (rk8pd 1e-14; d by Newton, "
+    snprintf(q, sizeof q, "max |G(eps,0;x0) - phi(eps,x0)|, period map of x' = h + eps^p d (rk8pd 1e-14; d "
+                          "by Newton, "
              "%.1f its/eval) vs the %s step, eps = 1, 1/4, 1/16; the unperturbed flow misses by >= %.2g",
              d->evals ? (double)d->its / (double)d->evals : 0.0, st->name, d->emb_local);
     snprintf(ref, sizeof ref, "%s%s", "TheoPer", ext);
     ledger_add(id, ref, q, d->emb, 0.0, 1e-12, truth);
     snprintf(id, sizeof id, "sec6-size-order-%s", st->name);
     snprintf(q, sizeof q, "p of sup_t |eps^p d| from x0 = w(0, 3, 7), %s", st->name);
-    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->sup_g, d->loc, NJ6, FLOOR_G, 1, 0.0, eo->p, truth);
+    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->sup_g, d->loc, NJ6, FLOOR_G, 1, 0.0, eo->p,
+                                         truth);
     /* xi3' is zero by the elimination up to u |xi'| per evaluation, and |xi'| eps <= |w| over a
      * period here, so xi3 stays at a few u |w| (u |w| = 1.8e-16): 1e-15 is ~6 u |w| */
     snprintf(id, sizeof id, "sec6-constraint-%s", st->name);
-    snprintf(q, sizeof q, "max |xi_3| along (PerFin2) from (x0, 0), lambda by (LagElim), rk8pd, eps = 2 .. 2^-8, %s; "
+    snprintf(q, sizeof q, "max |xi_3| along (PerFin2) from (x0, 0), lambda by (LagElim), rk8pd, eps = 2 .. "
+                          "2^-8, %s; "
              "(xi_1, xi_2)(eps) = step to %.1e", st->name, d->emb3);
     snprintf(ref, sizeof ref, "%s%s", "PerTh, (PerFin2)", ext);
     ledger_add(id, ref, q, d->xi3, 0.0, 1e-15, truth);
     snprintf(id, sizeof id, "sec6-perfin2-embedding-%s", st->name);
     snprintf(ref, sizeof ref, "%s%s", "PerTh (appendix, step 3)", ext);
-    ledger_add(id, ref, "max |(xi_1, xi_2)(eps) - phi(eps, x0)| for the 3-d (PerFin2), same runs; bound as for TheoPer",
+    ledger_add(id, ref, "max |(xi_1, xi_2)(eps) - phi(eps, x0)| for the 3-d (PerFin2), same runs; bound as "
+                        "for TheoPer",
                d->emb3, 0.0, 1e-12, truth);
     snprintf(id, sizeof id, "sec6-multiplier-order-%s", st->name);
-    snprintf(q, sizeof q, "order of sup |lambda_pert - lambda(xi)| on (PerFin2), force (I_m eps^p d, 0); %.2g at "
+    snprintf(q, sizeof q, "order of sup |lambda_pert - lambda(xi)| on (PerFin2), force (I_m eps^p d, 0); "
+                          "%.2g at "
              "eps = 1/16, %s", d->dlam[5], st->name);
     /* the multiplier moves by grad lambda . (eps^p d): |grad lambda| ~ 2 |lambda| / |w| */
     double lneed[NJ6];
     for (int j = 0; j < NJ6; j++)
         lneed[j] = d->loc[j] * 2.0 * SUSLOV_SIZE_LAMBDA / SUSLOV_SIZE_W;
     snprintf(ref, sizeof ref, "%s%s", "PerTh (appendix)", ext);
-    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0, eo->p, truth);
+    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0, eo->p,
+                                         truth);
     if (st == suslov_step_midpoint) {
         ledger_number("SecSixEmbedMid", d->emb);
         ledger_number("SecSixDlamMid", d->dlam[5]);
@@ -174,16 +181,18 @@ static void per11_lines(const suslov_model *m, const suslov_exact *ex, const sus
             for (int t = 0; t < NTK6 - 1; t++) {
                 double x0[2], a, g;
                 suslov_exact_omega(ex, TK6[t], x0);
-                if (suslov_perturb_sup_so3(&P, (suslov_recon)r, x0, NSAMP, ATT_TOL, &a, &g) != SUSLOV_PERTURB_OK)
+                const suslov_recon rk = (suslov_recon)r;
+                if (suslov_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) != SUSLOV_PERTURB_OK)
                     ledger_die("(Per11) attitude blend");
                 att[j] = fmax(att[j], a);
                 all[j] = fmax(all[j], fmax(a, g));
             }
         }
         snprintf(id, sizeof id, "sec6-per11-%s-%s", SUSLOV_RECON_NAMES[r], st->name);
-        snprintf(q, sizeof q, "order of sup max(|vee(R^T R') - w|, |eps^p d|), geodesic blend on SO(3) x R^2, %s, %s; "
-                 "attitude part %.2g at eps = 1/4", st->name, SUSLOV_RECON_NAMES[r], att[3]);
-        unmeasured += !claims_order_or_floor(id, ref, q, d->eps, all, d->loc, NJ_SO3, fmax(FLOOR_G, FLOOR_ATT), 1, 0.0,
+        snprintf(q, sizeof q, "order of sup max(|vee(R^T R') - w|, |eps^p d|), geodesic blend on SO(3) x "
+                 "R^2, %s, %s; attitude part %.2g at eps = 1/4", st->name, SUSLOV_RECON_NAMES[r], att[3]);
+        const double floor = fmax(FLOOR_G, FLOOR_ATT);
+        unmeasured += !claims_order_or_floor(id, ref, q, d->eps, all, d->loc, NJ_SO3, floor, 1, 0.0,
                                              eo->so3[r], truth);
         if (st != suslov_step_midpoint)
             continue;

@@ -35,8 +35,10 @@ static void tables(void)
         }
         /* consistency: sum g = 1; order >= 3 of a symmetric composition: sum g^3 = 0 (HLW V.3).
          * The weights carry 26 digits rounded to double: s ulps of the sums at most. */
-        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)", c[k]->name, s, sum - 1.0);
-        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag), "%s: sum of cubes = 0, the order-3 condition (%.2g)", c[k]->name, cubes);
+        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)", c[k]->name, s,
+              sum - 1.0);
+        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag), "%s: sum of cubes = 0, the order-3 condition "
+                                                           "(%.2g)", c[k]->name, cubes);
     }
 }
 
@@ -57,7 +59,8 @@ static void exponential(void)
             double S[3][3];
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
-                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j] + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
+                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j]
+                            + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
             worst_small = fmax(worst_small, mat3_dist(D, S) / mat3_frobenius(S));
         }
         so3_exp(x, E);
@@ -79,7 +82,8 @@ static void exponential(void)
     }
     gsl_rng_free(r);
     /* a and b in half-angle form keep full relative accuracy: a few ulps */
-    CHECK(worst_small <= 10 * U, "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)", worst_small);
+    CHECK(worst_small <= 10 * U, "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)",
+          worst_small);
     CHECK(worst_orth <= 10 * U, "exp(x^) orthogonal: |R^T R - I| <= %.2g (<= 10 u)", worst_orth);
     CHECK(worst_quat <= 20 * U, "exp-mid as a quaternion = exp-mid as a matrix: %.2g (<= 20 u)", worst_quat);
 }
@@ -93,7 +97,8 @@ static void quaternions(void)
         double x[3], R[3][3], q[4], R2[3][3];
         for (int i = 0; i < 3; i++)
             x[i] = 2.0 * gsl_rng_uniform(r) - 1.0;
-        const double n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), ang = 3.14159265358979 * gsl_rng_uniform(r);
+        const double n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]),
+            ang = 3.14159265358979 * gsl_rng_uniform(r);
         for (int i = 0; i < 3; i++)
             x[i] *= ang / n;
         so3_exp(x, R);
@@ -131,7 +136,8 @@ static void steps(const body *b)
         suslov_exact_omega(&ex, h, we);
         const double e = hypot(w1[0] - we[0], w1[1] - we[1]);
         const double bound = 10.0 * wn * pow(1.0 / q, ty[i]->order + 1) + 8 * U;
-        CHECK(e <= bound && w1[2] == 0.0, "%s: %s, one step h = rho/30 = %.3g against the closed form: %.2g (<= %.2g), w3 = 0",
+        CHECK(e <= bound && w1[2] == 0.0, "%s: %s, one step h = rho/30 = %.3g against the closed form: "
+                                          "%.2g (<= %.2g), w3 = 0",
               b->name, ty[i]->name, h, e, bound);
     }
     /* a composition step keeps E (midpoint substeps: a quadratic invariant) to a few u */
@@ -143,7 +149,8 @@ static void steps(const body *b)
     double wr[2], Rr[3][3], Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     suslov_refatt_precise(&m, ex.w0, 50.0, wr, Rr);
     suslov_magnus4(&ex, 0.0, 50.0, 4000, Rm);
-    CHECK(so3_dist(Rr, Rm) <= 1e-15, "%s: reference R(50) against Magnus-4 (long double, Richardson): %.2g (<= 1e-15)",
+    CHECK(so3_dist(Rr, Rm) <= 1e-15, "%s: reference R(50) against Magnus-4 (long double, Richardson): %.2g "
+                                     "(<= 1e-15)",
           b->name, so3_dist(Rr, Rm));
 }
 

@@ -100,7 +100,8 @@ static void paper_values(const suslov_model *mp)
          * 2.3 w1^2 = 0.225; there lambda = w1 (0.1 w1 - 2 w1) + 2 w1 (w1 - 0.2 w1) = -0.3 w1^2
          * = -27/920 and O_0 = 0. */
         const double a = sqrt(0.225 / 2.3), winf[2] = {a, -2.0 * a};
-        CHECK(fabs(suslov_lagmult(&m, winf) + 27.0 / 920.0) < 1e-15 && fabs(suslov_energy(&m, winf) - 0.225) < 1e-15,
+        CHECK(fabs(suslov_lagmult(&m, winf) + 27.0 / 920.0) < 1e-15 && fabs(suslov_energy(&m,
+            winf) - 0.225) < 1e-15,
               "lambda(w_inf) = %.17g, by hand -27/920; E(w_inf) = 0.225", suslov_lagmult(&m, winf));
     }
 
@@ -128,8 +129,10 @@ static void model_vs_printed(const suslov_model *m, const body *b)
         worst_f = fmax(worst_f, fabs(f[0] - g[0]) + fabs(f[1] - g[1]));
         const double lam = suslov_lagmult(m, w);
         worst_l = fmax(worst_l, fabs(lam - lagmult_printed(I, w)));
-        const double Iw[3] = {I[0] * w[0] + I[1] * w[1], I[3] * w[0] + I[4] * w[1], I[6] * w[0] + I[7] * w[1]};
-        /* (RGB2): I (w1', w2', 0) = (-w2 (I_3i w_i), w1 (I_3i w_i), w2 (I_1i w_i) - w1 (I_2i w_i)) + lambda e3 */
+        const double Iw[3] = {I[0] * w[0] + I[1] * w[1], I[3] * w[0] + I[4] * w[1],
+            I[6] * w[0] + I[7] * w[1]};
+        /* (RGB2): I (w1', w2', 0)
+         *         = (-w2 (I_3i w_i), w1 (I_3i w_i), w2 (I_1i w_i) - w1 (I_2i w_i)) + lambda e3 */
         const double r0 = I[0] * f[0] + I[1] * f[1] + w[1] * Iw[2];
         const double r1 = I[3] * f[0] + I[4] * f[1] - w[0] * Iw[2];
         const double r2 = I[6] * f[0] + I[7] * f[1] - (w[1] * Iw[0] - w[0] * Iw[1]) - lam;
@@ -149,12 +152,17 @@ static void model_vs_printed(const suslov_model *m, const body *b)
         }
     }
     /* entries below 2.5, |w| < 0.8, |I_m| > 0.3: each side a few dozen roundings of numbers < 10 */
-    CHECK(worst_f < 1e-14, "%s: (ContDyn) of src/model.c = the printed formula; worst %.2e", b->name, worst_f);
-    CHECK(worst_l < 1e-14, "%s: (LagMult) of src/model.c = the printed formula; worst %.2e", b->name, worst_l);
-    CHECK(worst_rgb < 1e-14, "%s: (ContDyn) and (LagMult) satisfy all three rows of (RGB2); worst %.2e", b->name, worst_rgb);
-    CHECK(worst_e < 1e-14, "%s: E is a first integral of (ContDyn); worst <grad E, f> %.2e", b->name, worst_e);
+    CHECK(worst_f < 1e-14, "%s: (ContDyn) of src/model.c = the printed formula; worst %.2e", b->name,
+          worst_f);
+    CHECK(worst_l < 1e-14, "%s: (LagMult) of src/model.c = the printed formula; worst %.2e", b->name,
+          worst_l);
+    CHECK(worst_rgb < 1e-14, "%s: (ContDyn) and (LagMult) satisfy all three rows of (RGB2); worst %.2e",
+          b->name, worst_rgb);
+    CHECK(worst_e < 1e-14, "%s: E is a first integral of (ContDyn); worst <grad E, f> %.2e", b->name,
+          worst_e);
     /* f is quadratic: central differences are exact up to cancellation, ~u/h = 2e-10 */
-    CHECK(worst_jac < 1e-9, "%s: Jacobian of (ContDyn) against central differences; worst %.2e", b->name, worst_jac);
+    CHECK(worst_jac < 1e-9, "%s: Jacobian of (ContDyn) against central differences; worst %.2e", b->name,
+          worst_jac);
 }
 
 /* The closed form against rk8pd at tolerance 1e-13 over [0, 100] (an adaptive method at that
@@ -162,7 +170,8 @@ static void model_vs_printed(const suslov_model *m, const body *b)
 static void closed_form(const suslov_model *m, const body *b)
 {
     const double d = exact_vs_rk8pd(m, b->I, b->w0, 100.0);
-    CHECK(d < 1e-11, "%s: closed form = rk8pd (tol 1e-13) of the printed (ContDyn) on [0, 100]; max diff %.2e",
+    CHECK(d < 1e-11, "%s: closed form = rk8pd (tol 1e-13) of the printed (ContDyn) on [0, 100]; max diff "
+                     "%.2e",
           b->name, d);
     suslov_exact ex;
     suslov_exact_init(&ex, m, b->w0);
@@ -189,7 +198,8 @@ static void paper_closed_form(const suslov_model *m)
         const double a = 2.0 * M_PI * (n + 0.25) / 12.0, w0[2] = {0.64 * cos(a), 0.64 * sin(a)};
         ring = fmax(ring, exact_vs_rk8pd(m, SUSLOV_PAPER_INERTIA, w0, 100.0));
     }
-    CHECK(ring < 1e-11, "closed form = rk8pd on [0, 100] for 12 w(0) around the ellipse; max diff %.2e", ring);
+    CHECK(ring < 1e-11, "closed form = rk8pd on [0, 100] for 12 w(0) around the ellipse; max diff %.2e",
+          ring);
     suslov_exact ex;
     double wl[2], wq[2];
     suslov_exact_init(&ex, m, SUSLOV_PAPER_OMEGA0);
@@ -200,12 +210,14 @@ static void paper_closed_form(const suslov_model *m)
      * about 1e-16 e^{50 k} ~ 1e-13, so 1e-12 bounds it. */
     suslov_exact_init(&ex, m, wl);
     suslov_exact_omega(&ex, 50.0, wq);
-    CHECK(hypot(wq[0] - wl[0], wq[1] - wl[1]) < 1e-15, "the attracting steady rotation is a fixed point of the closed form");
+    CHECK(hypot(wq[0] - wl[0], wq[1] - wl[1]) < 1e-15, "the attracting steady rotation is a fixed point of "
+                                                       "the closed form");
     const double weq[2] = {-wl[0], -wl[1]};
     suslov_exact_init(&ex, m, weq);
     suslov_exact_omega(&ex, 50.0, wq);
     const double dep = hypot(wq[0] - weq[0], wq[1] - weq[1]);
-    CHECK(dep < 1e-12, "the repelling steady rotation is left only at round-off times e^{kt}: %.2e at t = 50", dep);
+    CHECK(dep < 1e-12,
+          "the repelling steady rotation is left only at round-off times e^{kt}: %.2e at t = 50", dep);
 }
 
 int main(void)

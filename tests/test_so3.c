@@ -90,6 +90,46 @@ static double reconstruct_vs_definition(suslov_recon kind, double eps, const dou
     return d;
 }
 
+/* Definition Retr at xi along eta by central differences: the worst of each derivative in w5, w6. */
+static void retraction_fd(const double xi[3], const double eta[3], double *w5, double *w6)
+{
+    double C[3][3], D[3][3], Di[3][3];
+    so3_cay(xi, C);
+    so3_dcay(xi, D);
+    so3_dcay_inv(xi, Di);
+    /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
+    const double h = 1e-5;
+    double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
+    for (int i = 0; i < 3; i++) {
+        xp[i] = xi[i] + h * eta[i];
+        xm[i] = xi[i] - h * eta[i];
+    }
+    so3_cay(xp, Cp);
+    so3_cay(xm, Cmm);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
+    mat3_vec(de, D, eta);
+    so3_hat(de, DE);
+    mat3_mul(AN, DE, C);
+    *w5 = fmax(*w5, mat3_dist(FD, AN));
+    /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
+    double E[3][3], G[3][3], yp[3], ym[3], se[3];
+    for (int i = 0; i < 3; i++)
+        se[i] = h * eta[i];
+    so3_exp(se, E);
+    mat3_mul(G, E, C);
+    so3_cay_inv(G, yp);
+    for (int i = 0; i < 3; i++)
+        se[i] = -h * eta[i];
+    so3_exp(se, E);
+    mat3_mul(G, E, C);
+    so3_cay_inv(G, ym);
+    mat3_vec(de, Di, eta);
+    for (int i = 0; i < 3; i++)
+        *w6 = fmax(*w6, fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
+}
+
 /* (Isom), (caypart), the inverse chart, dcay, Definition Retr and exp on random samples. */
 static void identities(gsl_rng *rng)
 {
@@ -122,37 +162,8 @@ static void identities(gsl_rng *rng)
         so3_dcay_inv(xi, Di);
         mat3_mul(P, Di, D);
         worst[4] = fmax(worst[4], identity_defect(P));
-        /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
-        const double h = 1e-5;
-        double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
-        for (int i = 0; i < 3; i++) {
-            xp[i] = xi[i] + h * eta[i];
-            xm[i] = xi[i] - h * eta[i];
-        }
-        so3_cay(xp, Cp);
-        so3_cay(xm, Cmm);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
-        mat3_vec(de, D, eta);
-        so3_hat(de, DE);
-        mat3_mul(AN, DE, C);
-        worst[5] = fmax(worst[5], mat3_dist(FD, AN));
-        /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
-        double E[3][3], G[3][3], yp[3], ym[3], se[3];
-        for (int i = 0; i < 3; i++)
-            se[i] = h * eta[i];
-        so3_exp(se, E);
-        mat3_mul(G, E, C);
-        so3_cay_inv(G, yp);
-        for (int i = 0; i < 3; i++)
-            se[i] = -h * eta[i];
-        so3_exp(se, E);
-        mat3_mul(G, E, C);
-        so3_cay_inv(G, ym);
-        mat3_vec(de, Di, eta);
-        for (int i = 0; i < 3; i++)
-            worst[6] = fmax(worst[6], fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
+        retraction_fd(xi, eta, &worst[5], &worst[6]);
+        double E[3][3], G[3][3];
         /* exp: in SO(3), exp(w) exp(-w) = I */
         so3_exp(xi, E);
         so3_exp(mxi, G);
@@ -161,14 +172,18 @@ static void identities(gsl_rng *rng)
     }
     CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e", worst[0]);
     CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e", worst[1]);
-    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e", worst[2]);
+    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e",
+          worst[2]);
     /* cay^{-1} divides by 1 + tr R, which is as small as ~0.2 for |xi| <= 5: allow 1e-13 */
     CHECK(worst[3] < 1e-13, "cay^{-1}(cay(xi)) = xi; worst %.2e", worst[3]);
     CHECK(worst[4] < ROUNDOFF_TOL, "dcay^{-1}_xi dcay_xi = I; worst %.2e", worst[4]);
     /* central differences with h = 1e-5: truncation O(h^2) ~ 1e-10, cancellation ~ u/h ~ 1e-11 */
-    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central differences); worst %.2e", worst[5]);
-    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central differences); worst %.2e", worst[6]);
-    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e", worst[7]);
+    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central "
+                           "differences); worst %.2e", worst[5]);
+    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central "
+                           "differences); worst %.2e", worst[6]);
+    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e",
+          worst[7]);
 }
 
 /* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
@@ -191,7 +206,8 @@ static void cayinver(gsl_rng *rng)
                 else
                     off33 = fmax(off33, fabs(D[i][j] - M[i][j]));
     }
-    CHECK(off33 < ROUNDOFF_TOL, "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
+    CHECK(off33 < ROUNDOFF_TOL,
+          "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
     CHECK(fabs(at33 - 1.0) < ROUNDOFF_TOL,
           "(cayinver) as printed has 0 at (3,3) where dcay^{-1} has 1; difference %.17g", at33);
 }

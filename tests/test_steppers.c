@@ -19,7 +19,8 @@ static double vso3(const suslov_model *m, double eps, const double w[2], const d
                    int printed, double g[2])
 {
     double Dw[3][3], Dx[3][3], pw[3], px[3];
-    const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0}, ex[3] = {eps * x[0], eps * x[1], 0.0};
+    const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0}, ex[3] = {eps * x[0],
+        eps * x[1], 0.0};
     if (printed) {
         so3_cayinver_printed(eps, mw, Dw);
         so3_cayinver_printed(eps, x, Dx);
@@ -114,7 +115,8 @@ static void newton_solves(const suslov_model *m, const char *bname, const double
         suslov_step_stats stats;
         const int status = st->apply(m, 0.01, w, x, &lam, &stats);
         st->residual(m, 0.01, w, x, g, J, &sc);
-        CHECK(status == SUSLOV_STEP_OK && fmax(fabs(g[0]), fabs(g[1])) <= 16 * 2.2e-16 * sc && stats.iterations <= 4
+        CHECK(status == SUSLOV_STEP_OK && fmax(fabs(g[0]),
+                                               fabs(g[1])) <= 16 * 2.2e-16 * sc && stats.iterations <= 4
                   && x[2] == 0.0,
               "%s, %s: eps = 0.01 step solved to |G| = %.1e (scale %.2f) in %d Newton iterations, w3 = 0",
               bname, st->name, fmax(fabs(g[0]), fabs(g[1])), sc, stats.iterations);
@@ -138,14 +140,18 @@ static void variational_is_vso3(const suslov_model *m, const char *bname, const 
         worst_dyn = fmax(worst_dyn, (fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1])) / (eps * sc));
         worst_alg = fmax(worst_alg, fabs(-raw / (eps * eps) - lam));
         const double raw_full = vso3(m, eps, w, x, 0, g);
-        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (suslov_c(m, x) - suslov_c(m, w)) / eps)));
+        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (suslov_c(m, x) - suslov_c(m,
+            w)) / eps)));
     }
-    CHECK(worst_dyn < 32 * 2.220446049250313e-16, "%s: (taudyn) = -1/eps x first rows of (VSO3) with (cayinver) "
+    CHECK(worst_dyn < 32 * 2.220446049250313e-16, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
+                                                  "(cayinver) "
           "as printed; worst relative to the terms' size %.2e (<= 32 u)",
           bname, worst_dyn);
-    CHECK(worst_alg < 1e-13, "%s: (taualg) = -1/eps^2 x third row of (VSO3) with (cayinver) as printed; worst %.2e",
+    CHECK(worst_alg < 1e-13, "%s: (taualg) = -1/eps^2 x third row of (VSO3) with (cayinver) as printed; "
+                             "worst %.2e",
           bname, worst_alg);
-    CHECK(worst_full < 1e-13, "%s: with the exact dcay^{-1} ((3,3) = 1) the multiplier is (taualg) + (c(x) - c(w))/eps; "
+    CHECK(worst_full < 1e-13, "%s: with the exact dcay^{-1} ((3,3) = 1) the multiplier is (taualg) + (c(x) "
+                              "- c(w))/eps; "
           "worst %.2e", bname, worst_full);
 }
 
@@ -162,7 +168,8 @@ static void midpoint_energy(const suslov_model *m, const char *bname, const doub
     }
     /* E < 1.5 on the family: a few roundings of it */
     CHECK(dE < 1e-15 * fmax(1.0, suslov_energy(m, w0)),
-          "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = 0.7 (round-off)", bname, dE);
+          "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = 0.7 (round-off)", bname,
+              dE);
 }
 
 /* The unreduced integrator: its inverse inertia is right (entries below 2.5, condition < 20). */
@@ -193,9 +200,11 @@ static void driver(const suslov_model *m)
     const suslov_run_config bad = {m, suslov_step_variational, SUSLOV_RECON_CAYLEY, 1000.0, 10, 1};
     count_ctx cb = {0, -1, 1.0};
     const int rb = suslov_run(&bad, w_big, count_rows, &cb, &rep);
-    CHECK(rb == 1 && rep.status == SUSLOV_STEP_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0 && cb.rows == 1 &&
+    CHECK(rb == 1 && rep.status == SUSLOV_STEP_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0
+          && cb.rows == 1 &&
               rep.stats.residual > NEWTON2_RTOL * rep.stats.scale,
-          "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only row 0 emitted",
+          "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only "
+          "row 0 emitted",
           rep.step, rep.t, rep.stats.residual);
 
     /* A singular (REGLOC) block is reported as such, not iterated on. */
