@@ -129,7 +129,7 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
         if (ok != 0 && !q && expected >= 10)
             continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
                        * (its attitude, which integrates w, carries the order: the SO(3) row) */
-        const int series = props.attitude == METHOD_ATT_QUATERNION;
+        const int series = props.series;
         ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !series ? 0.3 : 1.0), 1,
                          LEDGER_EXTENSION);
     }
@@ -281,7 +281,7 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
             continue; /* missing: claims_methods.c fails it; the paper's methods: claims.c */
         const method_props props = method_props_of(me);
         order_rows(m, ex, me, eo, me->recon, 1, w_T, R_T);
-        if (props.attitude == METHOD_ATT_QUATERNION) /* a series: against its own truncation */
+        if (props.series) /* against its own truncation */
             taylor_control(m, ex, me, eo->p);
         else /* the paper's retraction, symmetrised, beside the exponential */
             order_rows(m, ex, me, eo, SUSLOV_RECON_CAYLEY_MID, 0, w_T, R_T);
