@@ -49,7 +49,7 @@
 #define NE 53                 /* eps k = 1.16 * 2^(-j/4), j = 0 .. 52 */
 #define EPS_K_MAX 1.16
 #define NTK 5
-/* The first neglected term of the error expansion bends the log-log slope by a amount ~ a eps;
+/* The first neglected term of the error expansion bends the log-log slope by an amount ~ a eps;
  * across an octave [eps, 2 eps] the slope then changes by a eps, as much as it still differs from
  * the asymptotic value at the octave's small end. A window must span an octave (5 points) with
  * its slopes within SLOPE_SPAN: the fit (centred at 2^(1/2) eps) is then within 1.4 x 0.15 = 0.21
