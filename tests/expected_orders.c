@@ -17,7 +17,7 @@ static const expected_order TABLE[] = {
     {"rk4", 4, 4, SO3(1, 2, 2), "Prop. general DSP (p,p)"},
     /* PropoFinal: (taudyn) is second order, (taualg) does not converge to lambda. */
     {"variational", 2, -1, SO3(1, 2, 2), "PropoFinal"},
-    /* Extensions (issue 11). A symmetric composition of a symmetric second-order map has the
+    /* Extensions. A symmetric composition of a symmetric second-order map has the
      * order its weights are built for (Hairer-Lubich-Wanner, Geometric Numerical Integration,
      * Thm. II.4.1 and Sect. V.3); with a symmetric reconstruction the composed map of (w, R) is
      * such a composition, so the SO(3) order is that order too; with cay(eps w^_k) (first order)

@@ -1,4 +1,4 @@
-/* Unit tests of the issue-11 building blocks: the composition tables, the exponential
+/* Unit tests of the high-order building blocks: the composition tables, the exponential
  * reconstruction (matrix and quaternion forms), quaternion <-> rotation, one Taylor step, one
  * composition step's energy, and the long-double reference attitude against an independent
  * computation; the steps on the paper's body and on the seeded general bodies (tests/bodies.h). */
