@@ -45,6 +45,14 @@ if [ "$mode" != test ]; then
     count claims "$B/claims.out"
     # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
     run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
+    # No field of the ledger may read nan: a measurement that did not happen is a failure that
+    # says so.
+    if grep -iqw nan "$B/claims.tsv" 2>/dev/null; then
+        grep -iw nan "$B/claims.tsv" | cut -f1 | sed 's/^/FAIL claims.tsv has nan: /'
+        echo "claims_no_nan: 0 passed, 1 failed" >>"$sum"; status=1
+    else
+        echo "claims_no_nan: 1 passed, 0 failed" >>"$sum"
+    fi
 fi
 cat "$sum"
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$sum" || status=1

@@ -12,13 +12,6 @@ typedef struct {
     int s;                       /* multiplier order; -1 where the paper proves it inconsistent */
     int so3[SUSLOV_RECON_COUNT]; /* order on SO(3) (TeoL: min(r, p)) with each reconstruction */
     const char *ref;             /* where p and s are stated */
-    /* NULL: claims.c fits the orders over the convergence sweep. Otherwise the file that measures
-     * them: for orders >= 4 built by composition or Taylor series the sweep's window reaches
-     * round-off before the asymptotic regime, so tests/ledger/claims_highorder.c fits each method over
-     * its own step range at t = 50 (issue 11). */
-    const char *orders_in;
-    /* Steps of the long structure run to T = 1e4 in tests/ledger/claims_highorder.c; 0 for 10^5. */
-    long long_run_steps;
 } expected_order;
 
 const expected_order *expected_order_of(const char *method);

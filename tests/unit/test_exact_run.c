@@ -1,5 +1,7 @@
 /* The exact run (src/core/exact_run.c): its closed-form tail R(t) = R(t_s) exp((t - t_s) w*^)
- * against the reference integration carried all the way, its rows and its error convention. */
+ * against the reference integration carried all the way, on the paper's body and the seeded general
+ * bodies (tests/unit/bodies.h), its rows and its error convention. */
+#include "bodies.h"
 #include "check.h"
 #include "exact_run.h"
 #include "mat3.h"
@@ -31,27 +33,28 @@ static int stop_at_first(void *vctx, const suslov_row *r)
     return 1;
 }
 
-int main(void)
+/* The closed-form tail against the reference, and an equilibrium, on one body. */
+static void tail_vs_reference(const body *b)
 {
     suslov_model m;
     char err[256];
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    suslov_model_init(&m, b->I, err, sizeof err);
     suslov_exact ex;
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
+    suslov_exact_init(&ex, &m, b->w0);
     double wstar[2];
     suslov_exact_limit(&ex, wstar);
     const double wn = hypot(wstar[0], wstar[1]);
 
-    /* Beyond t_s (~272 here) rows come from the closed form. Both it and the reference carry
-     * the rotation angle |w*| T in double, so they can differ by its rounding, ~u |w*| T per
-     * entry; the bound allows 4 u (1 + |w*| T) for the 9 entries and both computations. */
+    /* Beyond t_s (~272 for the paper's body) rows come from the closed form. Both it and the
+     * reference carry the rotation angle |w*| T in double, so they can differ by its rounding,
+     * ~u |w*| T per entry; the bound allows 4 u (1 + |w*| T) for the 9 entries and both. */
     const double Ts[] = {300.0, 1000.0, 3000.0};
     for (int i = 0; i < 3; i++) {
         const double T = Ts[i];
         const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, T / 4.0, 4, 1};
         keep_ctx c = {0, -1, {{0}}};
         suslov_run_report rep;
-        const int rc = suslov_run_exact(&cfg, SUSLOV_PAPER_OMEGA0, keep, &c, &rep);
+        const int rc = suslov_run_exact(&cfg, b->w0, keep, &c, &rep);
         double I3[3][3], R[3][3];
         mat3_identity(I3);
         suslov_refatt ra;
@@ -59,23 +62,34 @@ int main(void)
         suslov_refatt_advance(&ra, T, R);
         const double d = mat3_dist(c.R, R), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * T);
         CHECK(rc == SUSLOV_RUN_OK && c.rows == 5 && c.last_k == 4 && d <= bound,
-              "exact run to T = %g: rows 0..4, closed-form R(T) within %.2e of the reference integrated all the "
-              "way (bound 4u(1 + |w*|T) = %.2e)", T, d, bound);
+              "%s: exact run to T = %g: rows 0..4, closed-form R(T) within %.2e of the reference integrated "
+              "all the way (bound 4u(1 + |w*|T) = %.2e)", b->name, T, d, bound);
     }
 
     /* An equilibrium (w0 on the steady rotation) rotates uniformly from t = 0: R(t) = exp(t w0^). */
-    {
-        const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, 12.5, 1, 1};
-        keep_ctx c = {0, -1, {{0}}};
-        suslov_run_report rep;
-        const int rc = suslov_run_exact(&cfg, wstar, keep, &c, &rep);
-        const double xi[3] = {12.5 * wstar[0], 12.5 * wstar[1], 0.0};
-        double E[3][3];
-        so3_exp(xi, E);
-        const double d = mat3_dist(c.R, E), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * 12.5);
-        CHECK(rc == SUSLOV_RUN_OK && d <= bound,
-              "equilibrium w0 = w*: R(12.5) = exp(12.5 w*^) to %.1e (bound 4u(1 + |w*|T) = %.1e)", d, bound);
+    const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, 12.5, 1, 1};
+    keep_ctx c = {0, -1, {{0}}};
+    suslov_run_report rep;
+    const int rc = suslov_run_exact(&cfg, wstar, keep, &c, &rep);
+    const double xi[3] = {12.5 * wstar[0], 12.5 * wstar[1], 0.0};
+    double E[3][3];
+    so3_exp(xi, E);
+    const double d = mat3_dist(c.R, E), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * 12.5);
+    CHECK(rc == SUSLOV_RUN_OK && d <= bound,
+          "%s: equilibrium w0 = w*: R(12.5) = exp(12.5 w*^) to %.1e (bound 4u(1 + |w*|T) = %.1e)", b->name, d,
+          bound);
+}
+
+int main(void)
+{
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        body_get(k, &b);
+        tail_vs_reference(&b);
     }
+    suslov_model m;
+    char err[256];
+    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
 
     /* Steps near 2^63: no k + K overflow, rows 0, K, 2K, 3K and N. */
     {

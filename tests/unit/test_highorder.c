@@ -1,7 +1,8 @@
-/* Unit tests of the issue-11 building blocks: the composition tables, the exponential
+/* Unit tests of the high-order building blocks: the composition tables, the exponential
  * reconstruction (matrix and quaternion forms), quaternion <-> rotation, one Taylor step, one
  * composition step's energy, and the long-double reference attitude against an independent
- * computation. */
+ * computation; the steps on the paper's body and on the seeded general bodies (tests/unit/bodies.h). */
+#include "bodies.h"
 #include "check.h"
 #include "composition.h"
 #include "exact.h"
@@ -13,6 +14,7 @@
 #include "so3.h"
 #include "taylor.h"
 
+#include <gsl/gsl_math.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 
@@ -33,8 +35,10 @@ static void tables(void)
         }
         /* consistency: sum g = 1; order >= 3 of a symmetric composition: sum g^3 = 0 (HLW V.3).
          * The weights carry 26 digits rounded to double: s ulps of the sums at most. */
-        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)", c[k]->name, s, sum - 1.0);
-        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag), "%s: sum of cubes = 0, the order-3 condition (%.2g)", c[k]->name, cubes);
+        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)", c[k]->name, s,
+              sum - 1.0);
+        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag), "%s: sum of cubes = 0, the order-3 condition "
+                                                           "(%.2g)", c[k]->name, cubes);
     }
 }
 
@@ -55,7 +59,8 @@ static void exponential(void)
             double S[3][3];
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
-                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j] + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
+                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j]
+                            + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
             worst_small = fmax(worst_small, mat3_dist(D, S) / mat3_frobenius(S));
         }
         so3_exp(x, E);
@@ -77,7 +82,8 @@ static void exponential(void)
     }
     gsl_rng_free(r);
     /* a and b in half-angle form keep full relative accuracy: a few ulps */
-    CHECK(worst_small <= 10 * U, "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)", worst_small);
+    CHECK(worst_small <= 10 * U, "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)",
+          worst_small);
     CHECK(worst_orth <= 10 * U, "exp(x^) orthogonal: |R^T R - I| <= %.2g (<= 10 u)", worst_orth);
     CHECK(worst_quat <= 20 * U, "exp-mid as a quaternion = exp-mid as a matrix: %.2g (<= 20 u)", worst_quat);
 }
@@ -91,7 +97,8 @@ static void quaternions(void)
         double x[3], R[3][3], q[4], R2[3][3];
         for (int i = 0; i < 3; i++)
             x[i] = 2.0 * gsl_rng_uniform(r) - 1.0;
-        const double n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), ang = 3.14159265358979 * gsl_rng_uniform(r);
+        const double n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]),
+            ang = 3.14159265358979 * gsl_rng_uniform(r);
         for (int i = 0; i < 3; i++)
             x[i] *= ang / n;
         so3_exp(x, R);
@@ -103,43 +110,48 @@ static void quaternions(void)
     CHECK(worst <= 20 * U, "R -> q -> R round trip over angles up to pi: %.2g (<= 20 u)", worst);
 }
 
-static void steps(void)
+/* The radius of convergence in t of the closed form at t = 0: w is analytic in s = s0 + sigma k t
+ * except where sech s has its poles, s = +-i pi/2, so rho = |s0 + i pi/2| / k (exact.h). */
+static double radius(const suslov_exact *ex)
+{
+    return hypot(ex->s0, 0.5 * M_PI) / ex->k;
+}
+
+static void steps(const body *b)
 {
     suslov_model m;
     char err[128];
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    suslov_model_init(&m, b->I, err, sizeof err);
     suslov_exact ex;
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
-    const double w0[3] = {ex.w0[0], ex.w0[1], 0.0};
+    suslov_exact_init(&ex, &m, b->w0);
+    const double w0[3] = {ex.w0[0], ex.w0[1], 0.0}, rho = radius(&ex), wn = hypot(w0[0], w0[1]);
     double w1[3], lam, we[2];
     suslov_step_stats st;
-    /* one Taylor step of order 12 at h = 0.5: truncation ~ (h / rho)^13 ~ 1e-22 with rho ~ 10.8 */
-    suslov_taylor12_type.apply(&m, 0.5, w0, w1, &lam, &st);
-    suslov_exact_omega(&ex, 0.5, we);
-    CHECK(hypot(w1[0] - we[0], w1[1] - we[1]) <= 1e-15, "taylor12, one step h = 0.5 against the closed form: %.2g",
-          hypot(w1[0] - we[0], w1[1] - we[1]));
-    CHECK(w1[2] == 0.0, "taylor12 keeps w3 = 0 exactly");
-    /* the low orders (same recursion, fewer terms) at h = 0.25: truncation ~ |w| (h / rho)^(p+1),
-     * 3e-15 for p = 8 and 2e-18 for p = 10 with rho ~ 10.8; bound ten times that plus 8 u */
-    const suslov_stepper_type *low[2] = {&suslov_taylor8_type, &suslov_taylor10_type};
-    suslov_exact_omega(&ex, 0.25, we);
-    for (int i = 0; i < 2; i++) {
-        low[i]->apply(&m, 0.25, w0, w1, &lam, &st);
+    /* one Taylor step of order p at h = rho / q: truncation ~ |w| (h / rho)^(p+1); the bound is ten
+     * times that plus 8 u (a truncated series one degree short exceeds it by about q) */
+    const suslov_stepper_type *ty[3] = {&suslov_taylor8_type, &suslov_taylor10_type, &suslov_taylor12_type};
+    for (int i = 0; i < 3; i++) {
+        const double q = 30.0, h = rho / q;
+        ty[i]->apply(&m, h, w0, w1, &lam, &st);
+        suslov_exact_omega(&ex, h, we);
         const double e = hypot(w1[0] - we[0], w1[1] - we[1]);
-        const double bound = 10.0 * hypot(w0[0], w0[1]) * pow(0.25 / 10.8, low[i]->order + 1) + 8 * U;
-        CHECK(e <= bound, "%s, one step h = 0.25 against the closed form: %.2g (<= %.2g)", low[i]->name, e, bound);
+        const double bound = 10.0 * wn * pow(1.0 / q, ty[i]->order + 1) + 8 * U;
+        CHECK(e <= bound && w1[2] == 0.0, "%s: %s, one step h = rho/30 = %.3g against the closed form: "
+                                          "%.2g (<= %.2g), w3 = 0",
+              b->name, ty[i]->name, h, e, bound);
     }
     /* a composition step keeps E (midpoint substeps: a quadratic invariant) to a few u */
     suslov_comp8_kl_type.apply(&m, 1.0, w0, w1, &lam, &st);
     const double e0 = suslov_energy(&m, w0), e1 = suslov_energy(&m, w1);
-    CHECK(fabs(e1 - e0) <= 17 * 4 * U * e0, "comp8-kl, one step eps = 1 (17 substeps): |E1 - E0| = %.2g (<= 4 u E per substep)",
-          fabs(e1 - e0));
+    CHECK(fabs(e1 - e0) <= 17 * 4 * U * e0, "%s: comp8-kl, one step eps = 1 (17 substeps): |E1 - E0| = %.2g "
+          "(<= 4 u E per substep)", b->name, fabs(e1 - e0));
     /* the reference against the independent long-double Magnus integration (Richardson) */
     double wr[2], Rr[3][3], Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     suslov_refatt_precise(&m, ex.w0, 50.0, wr, Rr);
     suslov_magnus4(&ex, 0.0, 50.0, 4000, Rm);
-    CHECK(so3_dist(Rr, Rm) <= 1e-15, "reference R(50) against Magnus-4 (long double, Richardson): %.2g (<= 1e-15)",
-          so3_dist(Rr, Rm));
+    CHECK(so3_dist(Rr, Rm) <= 1e-15, "%s: reference R(50) against Magnus-4 (long double, Richardson): %.2g "
+                                     "(<= 1e-15)",
+          b->name, so3_dist(Rr, Rm));
 }
 
 int main(void)
@@ -147,6 +159,10 @@ int main(void)
     tables();
     exponential();
     quaternions();
-    steps();
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        body_get(k, &b);
+        steps(&b);
+    }
     return check_summary("test_highorder");
 }

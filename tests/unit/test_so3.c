@@ -90,10 +90,49 @@ static double reconstruct_vs_definition(suslov_recon kind, double eps, const dou
     return d;
 }
 
-int main(void)
+/* Definition Retr at xi along eta by central differences: the worst of each derivative in w5, w6. */
+static void retraction_fd(const double xi[3], const double eta[3], double *w5, double *w6)
 {
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, 20261122);
+    double C[3][3], D[3][3], Di[3][3];
+    so3_cay(xi, C);
+    so3_dcay(xi, D);
+    so3_dcay_inv(xi, Di);
+    /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
+    const double h = 1e-5;
+    double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
+    for (int i = 0; i < 3; i++) {
+        xp[i] = xi[i] + h * eta[i];
+        xm[i] = xi[i] - h * eta[i];
+    }
+    so3_cay(xp, Cp);
+    so3_cay(xm, Cmm);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
+    mat3_vec(de, D, eta);
+    so3_hat(de, DE);
+    mat3_mul(AN, DE, C);
+    *w5 = fmax(*w5, mat3_dist(FD, AN));
+    /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
+    double E[3][3], G[3][3], yp[3], ym[3], se[3];
+    for (int i = 0; i < 3; i++)
+        se[i] = h * eta[i];
+    so3_exp(se, E);
+    mat3_mul(G, E, C);
+    so3_cay_inv(G, yp);
+    for (int i = 0; i < 3; i++)
+        se[i] = -h * eta[i];
+    so3_exp(se, E);
+    mat3_mul(G, E, C);
+    so3_cay_inv(G, ym);
+    mat3_vec(de, Di, eta);
+    for (int i = 0; i < 3; i++)
+        *w6 = fmax(*w6, fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
+}
+
+/* (Isom), (caypart), the inverse chart, dcay, Definition Retr and exp on random samples. */
+static void identities(gsl_rng *rng)
+{
     double worst[10] = {0};
     for (int n = 0; n < 200; n++) {
         double xi[3], eta[3], W[3][3], v[3], a[3], b[3], C[3][3], Cm[3][3], P[3][3], D[3][3], Di[3][3];
@@ -123,37 +162,8 @@ int main(void)
         so3_dcay_inv(xi, Di);
         mat3_mul(P, Di, D);
         worst[4] = fmax(worst[4], identity_defect(P));
-        /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
-        const double h = 1e-5;
-        double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
-        for (int i = 0; i < 3; i++) {
-            xp[i] = xi[i] + h * eta[i];
-            xm[i] = xi[i] - h * eta[i];
-        }
-        so3_cay(xp, Cp);
-        so3_cay(xm, Cmm);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
-        mat3_vec(de, D, eta);
-        so3_hat(de, DE);
-        mat3_mul(AN, DE, C);
-        worst[5] = fmax(worst[5], mat3_dist(FD, AN));
-        /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
-        double E[3][3], G[3][3], yp[3], ym[3], se[3];
-        for (int i = 0; i < 3; i++)
-            se[i] = h * eta[i];
-        so3_exp(se, E);
-        mat3_mul(G, E, C);
-        so3_cay_inv(G, yp);
-        for (int i = 0; i < 3; i++)
-            se[i] = -h * eta[i];
-        so3_exp(se, E);
-        mat3_mul(G, E, C);
-        so3_cay_inv(G, ym);
-        mat3_vec(de, Di, eta);
-        for (int i = 0; i < 3; i++)
-            worst[6] = fmax(worst[6], fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
+        retraction_fd(xi, eta, &worst[5], &worst[6]);
+        double E[3][3], G[3][3];
         /* exp: in SO(3), exp(w) exp(-w) = I */
         so3_exp(xi, E);
         so3_exp(mxi, G);
@@ -162,16 +172,23 @@ int main(void)
     }
     CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e", worst[0]);
     CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e", worst[1]);
-    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e", worst[2]);
+    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e",
+          worst[2]);
     /* cay^{-1} divides by 1 + tr R, which is as small as ~0.2 for |xi| <= 5: allow 1e-13 */
     CHECK(worst[3] < 1e-13, "cay^{-1}(cay(xi)) = xi; worst %.2e", worst[3]);
     CHECK(worst[4] < ROUNDOFF_TOL, "dcay^{-1}_xi dcay_xi = I; worst %.2e", worst[4]);
     /* central differences with h = 1e-5: truncation O(h^2) ~ 1e-10, cancellation ~ u/h ~ 1e-11 */
-    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central differences); worst %.2e", worst[5]);
-    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central differences); worst %.2e", worst[6]);
-    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e", worst[7]);
+    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central "
+                           "differences); worst %.2e", worst[5]);
+    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central "
+                           "differences); worst %.2e", worst[6]);
+    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e",
+          worst[7]);
+}
 
-    /* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
+/* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
+static void cayinver(gsl_rng *rng)
+{
     double off33 = 0.0, at33 = 0.0;
     for (int n = 0; n < 50; n++) {
         double w[3], M[3][3], D[3][3], ew[3];
@@ -189,11 +206,15 @@ int main(void)
                 else
                     off33 = fmax(off33, fabs(D[i][j] - M[i][j]));
     }
-    CHECK(off33 < ROUNDOFF_TOL, "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
+    CHECK(off33 < ROUNDOFF_TOL,
+          "(cayinver) as printed equals dcay^{-1}_{eps w} off entry (3,3); worst %.2e", off33);
     CHECK(fabs(at33 - 1.0) < ROUNDOFF_TOL,
           "(cayinver) as printed has 0 at (3,3) where dcay^{-1} has 1; difference %.17g", at33);
+}
 
-    /* (MetMat) is a metric on sampled rotations, and equals |R1 - R2| (Frobenius). */
+/* (MetMat) is a metric on sampled rotations, and equals |R1 - R2| (Frobenius). */
+static void metric(gsl_rng *rng)
+{
     double sym = 0.0, self = 0.0, tri = -INFINITY, chord = 0.0, minpos = INFINITY;
     for (int n = 0; n < 300; n++) {
         double a[3], b[3], c[3], A[3][3], B[3][3], C[3][3], D[3][3];
@@ -221,15 +242,22 @@ int main(void)
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
     CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
           "(Groudist): orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+}
+
+int main(void)
+{
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 20261122);
+    identities(rng);
+    cayinver(rng);
+    metric(rng);
     /* The reconstructions against their definitions; entries of size 1 after two products of
      * a few round-off each: 1e-15. */
-    {
-        const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
-        for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
-            const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
-            CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
-                  "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
-        }
+    const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
+    for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
+        const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
+        CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
+              "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
     }
     gsl_rng_free(rng);
     return check_summary("test_so3");

@@ -1,0 +1,396 @@
+/* One data-driven ledger routine, the same for every registered method: its orders p (w), s
+ * (lambda) and on SO(3) (each reconstruction), and its structure (w3 = 0, |R^T R - I|, E where it
+ * conserves it), on the paper's body and on each body of the seeded family (tests/unit/bodies.h).
+ * What is expected comes from tests/ledger/expected_orders.c; what kind of method it is, from
+ * method_props_of (tests/ledger/method_props.h). Nothing here knows a method by name.
+ *
+ * Orders. Local errors as the paper defines consistency (one step from exact data at t_k,
+ * against the exact solution at t_k + eps; the largest over 5 starts t_k spread over the
+ * transient, t_k k = 0, 0.45, 1, 1.75, 2.9 with k the body's rate), on a grid scaled by the
+ * body's time 1/k: eps k = 1.16 * 2^(-j/4), j = 0 .. NE-1, over 13 octaves (for the paper's
+ * body eps = 8 down to 2^-10). The fit window is chosen from the curve:
+ *   1. a point is a candidate when its error is finite, above the round-off floor 1000 u times
+ *      the size of the quantity (orderfit.h: round-off then moves no point by more than 0.1%)
+ *      and below the size itself (an error as large as the quantity is no expansion in eps);
+ *   2. the window is the longest run of consecutive candidates, at least an octave long, whose
+ *      neighbour slopes span less than SLOPE_SPAN (max - min): the asymptotic regime is where the
+ *      slope is constant, the pre-asymptotic bend at large eps and round-off at small eps both
+ *      make it vary (the reason for the numbers is at their definitions); on a tie the run at
+ *      smaller eps wins;
+ *   3. the order is the least-squares slope over the window, minus 1 (local error O(eps^{q+1})),
+ *      and the line asserts |order - expected| <= ORDER_TOL on every body;
+ *   4. where no run has one slope (an order so high that the error reaches round-off before its
+ *      asymptotic regime: the slope still rises as eps falls), the fit is over the MIN_POINTS
+ *      smallest-eps candidates, the end nearest that regime. That slope is a lower estimate, not
+ *      the order, and the line asserts only order >= expected / 2: what breaks a method of
+ *      order p built from a second-order map (a weight that misses the order conditions, a
+ *      dropped substep) leaves order 2 or less, a series truncated at half its degree order p/2.
+ *      It cannot tell p from p - 1, and says so; the plateau lines and the Taylor control of
+ *      claims_highorder.c do.
+ * The SO(3) order is TeoL's min(r, p) of the pair, r measured on the attitude's local error.
+ * A curve with fewer than 3 points above round-off has no order: the line fails. */
+#include "claims_methods.h"
+
+#include "bodies.h"
+#include "consistency.h"
+#include "driver.h"
+#include "expected_orders.h"
+#include "ledger.h"
+#include "method_props.h"
+#include "orderfit.h"
+#include "registry.h"
+#include "so3.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define U 2.220446049250313e-16
+#define NE 53                 /* eps k = 1.16 * 2^(-j/4), j = 0 .. 52 */
+#define EPS_K_MAX 1.16
+#define NTK 5
+/* The first neglected term of the error expansion bends the log-log slope by an amount ~ a eps;
+ * across an octave [eps, 2 eps] the slope then changes by a eps, as much as it still differs from
+ * the asymptotic value at the octave's small end. A window must span an octave (5 points) with
+ * its slopes within SLOPE_SPAN: the fit (centred at 2^(1/2) eps) is then within 1.4 x 0.15 = 0.21
+ * of the order, inside ORDER_TOL; and such a run cannot straddle two orders. */
+#define SLOPE_SPAN 0.15
+#define MIN_POINTS 5
+/* An order is an integer: a quarter of the gap tells p from p +- 1 (as claims_fit.c's widened
+ * window), and leaves room for the O(eps) bend the window's upper end may still carry. */
+#define ORDER_TOL 0.25
+#define NQ (2 + SUSLOV_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
+
+typedef struct {
+    body b;
+    suslov_model m;
+    suslov_exact ex;
+    suslov_local_ref ref[NE][NTK];
+    double eps[NE];
+    double size[NQ];          /* size of w, of lambda, of R along the motion */
+} body_data;
+
+static body_data bodies[BODIES_COUNT];
+
+/* w and lambda at the starts and at the limit bound their sizes along the motion (E is kept, so
+ * |w| moves within a factor cond(I_m)^(1/2); lambda changes with c(w) only). */
+static void body_sizes(body_data *d)
+{
+    double wl[2];
+    suslov_exact_limit(&d->ex, wl);
+    double sw = hypot(wl[0], wl[1]), sl = fabs(suslov_lagmult(&d->m, wl));
+    for (int t = 0; t < NTK; t++) {
+        const double *w = d->ref[0][t].w_k;
+        sw = fmax(sw, hypot(w[0], w[1]));
+        sl = fmax(sl, fabs(suslov_lagmult(&d->m, w)));
+    }
+    d->size[0] = sw;
+    d->size[1] = sl;
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+        d->size[2 + r] = 1.0; /* entries of a rotation */
+}
+
+static void body_init(int k, body_data *d)
+{
+    static const double TK_RATE[NTK] = {0.0, 0.45, 1.0, 1.75, 2.9};
+    char err[256];
+    body_get(k, &d->b);
+    if (suslov_model_init(&d->m, d->b.I, err, sizeof err) != 0)
+        ledger_die(err);
+    suslov_exact_init(&d->ex, &d->m, d->b.w0);
+    for (int j = 0; j < NE; j++) {
+        d->eps[j] = EPS_K_MAX / d->ex.k * exp2(-0.25 * j);
+        for (int t = 0; t < NTK; t++)
+            suslov_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
+    }
+    body_sizes(d);
+}
+
+/* The local error curves of one method on one body: err[q][j], the largest over the starts;
+ * NaN where a step failed. */
+static void local_curves(const suslov_method *me, const body_data *d, double err[NQ][NE])
+{
+    for (int j = 0; j < NE; j++) {
+        for (int q = 0; q < NQ; q++)
+            err[q][j] = 0.0;
+        for (int t = 0; t < NTK; t++) {
+            suslov_local_err e;
+            if (suslov_local_errors(&d->m, me->type, &d->ref[j][t], &e) != SUSLOV_STEP_OK) {
+                for (int q = 0; q < NQ; q++)
+                    err[q][j] = NAN;
+                break;
+            }
+            err[0][j] = fmax(err[0][j], e.w);
+            err[1][j] = fmax(err[1][j], e.lambda);
+            for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+                err[2 + r][j] = fmax(err[2 + r][j], e.so3[r]);
+        }
+    }
+}
+
+/* Slope of log err between grid points j and j + 1. */
+static double neighbour_slope(const double *eps, const double *err, int j)
+{
+    return log(err[j + 1] / err[j]) / log(eps[j + 1] / eps[j]);
+}
+
+/* Is the run of points lo .. hi (inclusive) one slope: every neighbour slope within SLOPE_SPAN? */
+static int one_slope(const double *eps, const double *err, int lo, int hi)
+{
+    double smin = INFINITY, smax = -INFINITY;
+    for (int j = lo; j < hi; j++) {
+        const double s = neighbour_slope(eps, err, j);
+        smin = fmin(smin, s);
+        smax = fmax(smax, s);
+    }
+    return smax - smin < SLOPE_SPAN;
+}
+
+/* The order measured on one curve (the rule of the header). */
+typedef struct {
+    double order;             /* NaN: fewer than 3 points above round-off */
+    int plateau;              /* 1: a window of one slope (rule 2), 0: the fallback of rule 4 */
+    double eps_lo, eps_hi;
+} curve_order;
+
+static int candidate(const double *err, int j, double size)
+{
+    return isfinite(err[j]) && err[j] > SUSLOV_FIT_FLOOR_REL * size && err[j] < size;
+}
+
+/* Rule 2: the longest run of candidates with one slope; the grid runs from large eps (j = 0) to
+ * small, so "smaller eps wins a tie" is the larger j. Returns its length, 0 when none. */
+static int plateau(const double *eps, const double *err, double size, int *lo_out)
+{
+    int best_lo = -1, best_hi = -1;
+    for (int lo = 0; lo < NE; lo++)
+        for (int hi = lo; hi < NE && candidate(err, hi, size); hi++)
+            if (hi - lo + 1 >= MIN_POINTS && hi - lo >= best_hi - best_lo && one_slope(eps, err, lo, hi)) {
+                best_lo = lo;
+                best_hi = hi;
+            }
+    *lo_out = best_lo;
+    return best_lo < 0 ? 0 : best_hi - best_lo + 1;
+}
+
+static curve_order measure_order(const double *eps, const double *err, double size)
+{
+    curve_order c = {NAN, 1, NAN, NAN};
+    int lo, n = plateau(eps, err, size, &lo);
+    if (!n) { /* rule 4: the MIN_POINTS smallest-eps candidates (at least 3) */
+        c.plateau = 0;
+        int hi = NE - 1;
+        while (hi >= 0 && !candidate(err, hi, size))
+            hi--;
+        for (lo = hi; lo > 0 && hi - lo + 1 < MIN_POINTS && candidate(err, lo - 1, size); lo--)
+            ;
+        n = hi - lo + 1;
+    }
+    suslov_order_fit f;
+    if (n >= 3 && suslov_fit_order(eps + lo, err + lo, n, INFINITY, 0.0, &f) == 0) {
+        c.order = f.slope - 1.0;
+        c.eps_lo = f.eps_lo;
+        c.eps_hi = f.eps_hi;
+    }
+    return c;
+}
+
+/* TeoL: the pair (w, R) has order min(r, p). A rule-4 order is a lower estimate (the slope
+ * still rises), so the smaller of the two decides the kind of line too. */
+static curve_order pair_order(curve_order r, curve_order p)
+{
+    curve_order c = r.order <= p.order || isnan(r.order) ? r : p;
+    if (isnan(p.order))
+        c.order = NAN;
+    return c;
+}
+
+typedef struct {
+    double worst, lo, hi;     /* the order farthest from expected, and the range over bodies */
+    const char *worst_body;
+    int fallback;             /* bodies measured by rule 4 */
+    int unmeasured;           /* bodies with fewer than 3 points above round-off */
+    const char *unmeasured_body;
+    double eps_lo, eps_hi;    /* the worst body's window */
+} order_summary;
+
+static void summary_add(order_summary *s, curve_order c, double expected, const char *bname)
+{
+    if (isnan(c.order)) {
+        if (!s->unmeasured++)
+            s->unmeasured_body = bname;
+        return;
+    }
+    s->fallback += !c.plateau;
+    s->lo = fmin(s->lo, c.order);
+    s->hi = fmax(s->hi, c.order);
+    if (!s->worst_body || fabs(c.order - expected) > fabs(s->worst - expected)) {
+        s->worst = c.order;
+        s->worst_body = bname;
+        s->eps_lo = c.eps_lo;
+        s->eps_hi = c.eps_hi;
+    }
+}
+
+/* One ledger line for one order of one method over every body: two-sided on the worst body when
+ * every body has a window of one slope, else one-sided on the lowest order (rule 4). */
+static void order_line(const char *id, const char *what, const suslov_method *me, const order_summary *s,
+                       int expected, const char *ref)
+{
+    char q[400];
+    const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
+    if (s->unmeasured) {
+        snprintf(q, sizeof q, "%s, %s: fewer than 3 errors above 1000 u on %s (%d of %d bodies): no order",
+                 what, me->type->name, s->unmeasured_body, s->unmeasured, BODIES_COUNT);
+        ledger_add_bound(id, ref, q, -INFINITY, expected - 1.0, 1, truth);
+        return;
+    }
+    if (s->fallback) {
+        snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d bodies (seed "
+                              "%u); %d reach "
+                 "round-off before one slope, fit on the last %d points above it; range %.2f .. %.2f",
+                 what, me->type->name, BODIES_COUNT, BODIES_SEED, s->fallback, MIN_POINTS, s->lo, s->hi);
+        ledger_add_bound(id, ref, q, s->lo, 0.5 * expected, 1, truth);
+        return;
+    }
+    snprintf(q, sizeof q, "%s, %s; worst of %d bodies (seed %u) %s, window eps %.3g .. %.3g; range %.2f .. "
+                          "%.2f",
+             what, me->type->name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
+                 s->hi);
+    ledger_add(id, ref, q, s->worst, expected, ORDER_TOL, truth);
+}
+
+/* p, s and the SO(3) order with each reconstruction of one method, on every body. */
+static void method_orders(const suslov_method *me, const expected_order *eo)
+{
+    static double err[BODIES_COUNT][NQ][NE];
+    order_summary sum[NQ];
+    for (int q = 0; q < NQ; q++)
+        sum[q] = (order_summary){.lo = INFINITY, .hi = -INFINITY};
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        const body_data *d = &bodies[k];
+        local_curves(me, d, err[k]);
+        const curve_order p = measure_order(d->eps, err[k][0], d->size[0]);
+        summary_add(&sum[0], p, eo->p, d->b.name);
+        summary_add(&sum[1], measure_order(d->eps, err[k][1], d->size[1]), eo->s, d->b.name);
+        for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+            summary_add(&sum[2 + r], pair_order(measure_order(d->eps, err[k][2 + r], d->size[2 + r]), p),
+                        eo->so3[r], d->b.name);
+    }
+    char id[96], what[160];
+    snprintf(id, sizeof id, "method-p-%s", me->type->name);
+    order_line(id, "p: local w error slope - 1", me, &sum[0], eo->p, eo->ref);
+    snprintf(id, sizeof id, "method-s-%s", me->type->name);
+    order_line(id, "s: local lambda error slope - 1", me, &sum[1],
+               eo->s, eo->ref);
+    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        snprintf(id, sizeof id, "method-so3-%s-%s", SUSLOV_RECON_NAMES[r], me->type->name);
+        snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
+                 SUSLOV_RECON_NAMES[r]);
+        order_line(id, what, me, &sum[2 + r], eo->so3[r], "TeoL: min(r, p)");
+    }
+}
+
+/* ---- structure ---- */
+
+#define STRUCT_EPS 0.05
+#define STRUCT_STEPS 2000L    /* T = 100: the transient and the approach to the steady rotation */
+
+typedef struct {
+    const suslov_model *m;
+    double e0, energy, w3, orth;
+} structure_ctx;
+
+static int track(void *vctx, const suslov_row *row)
+{
+    structure_ctx *c = vctx;
+    c->energy = fmax(c->energy, fabs(suslov_energy(c->m, row->w) - c->e0));
+    c->w3 = fmax(c->w3, fabs(row->w[2]));
+    c->orth = fmax(c->orth, so3_orth_defect(row->R));
+    return 0;
+}
+
+typedef struct {
+    double value, bound;      /* the worst ratio value / bound over bodies, and that body's pair */
+    const char *body;
+    int failed_runs;
+} structure_worst;
+
+static void worst_add(structure_worst *s, double value, double bound, const char *bname)
+{
+    if (!s->body || !(value / bound <= s->value / s->bound)) {
+        s->value = value;
+        s->bound = bound;
+        s->body = bname;
+    }
+}
+
+/* Round-off bounds on |R^T R - I| by attitude form. A unit quaternion is turned into R afresh at
+ * every step: one rounding per entry, a few u over 9 entries whatever N: 1e-14. (algo)'s
+ * reconstruction sums R_k D_k with compensation (reconstruct.h): what remains is the rounding of
+ * the computed increments, |D| <= |g_i| eps |w| per substep with |g_i| < 2 for every tabulated
+ * weight, four roundings per entry: 8 u N s eps |w|, plus 16 u for the last product. */
+static double orth_bound(const method_props *p, const body_data *d)
+{
+    if (p->attitude == METHOD_ATT_QUATERNION)
+        return 1e-14;
+    return 16.0 * U + 8.0 * U * (double)STRUCT_STEPS * p->substeps * STRUCT_EPS * d->size[0];
+}
+
+/* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body. */
+static void method_structure(const suslov_method *me)
+{
+    const method_props p = method_props_of(me);
+    structure_worst w3 = {0}, orth = {0}, en = {0};
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        const body_data *d = &bodies[k];
+        structure_ctx c = {&d->m, suslov_energy(&d->m, d->b.w0), 0, 0, 0};
+        const suslov_run_config cfg = {&d->m, me->type, me->recon, STRUCT_EPS, STRUCT_STEPS, 1};
+        suslov_run_report rep;
+        if (suslov_run(&cfg, d->b.w0, track, &c, &rep) != 0)
+            c.energy = c.w3 = c.orth = INFINITY;
+        worst_add(&w3, c.w3, 1.0, d->b.name);
+        worst_add(&orth, c.orth, orth_bound(&p, d), d->b.name);
+        /* each substep rounds E a few times and the errors need not cancel: 8 u E per substep */
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * p.substeps * c.e0, d->b.name);
+    }
+    char id[96], q[400];
+    const char *ref = me->paper_ref ? "(DSP), Algorithm (algo)" : "(extension)";
+    const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
+    snprintf(id, sizeof id, "method-w3-%s", me->type->name);
+    snprintf(q, sizeof q, "max |w3| over %ld steps of eps %g, %s, worst of %d bodies (seed %u) %s: exactly 0",
+             STRUCT_STEPS, STRUCT_EPS, me->type->name, BODIES_COUNT, BODIES_SEED, w3.body);
+    ledger_add(id, ref, q, w3.value, 0.0, 0.0, truth);
+    snprintf(id, sizeof id, "method-orth-%s", me->type->name);
+    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s + %s (%s), worst of %d bodies %s; "
+             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUSLOV_RECON_NAMES[me->recon],
+             p.attitude == METHOD_ATT_QUATERNION ? "unit quaternion" : "compensated product", BODIES_COUNT,
+             orth.body, orth.bound);
+    ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
+    if (!p.conserves_energy)
+        return;
+    snprintf(id, sizeof id, "method-energy-%s", me->type->name);
+    snprintf(q, sizeof q, "max |E - E0| over %ld steps of eps %g, %s (%d substeps), worst of %d bodies %s; "
+             "bound 8 u N s E0", STRUCT_STEPS, STRUCT_EPS, me->type->name, p.substeps, BODIES_COUNT, en.body);
+    ledger_add_bound(id, ref, q, en.value, en.bound, 0, truth);
+}
+
+void methods_claims(void)
+{
+    for (int k = 0; k < BODIES_COUNT; k++)
+        body_init(k, &bodies[k]);
+    for (int i = 0; i < suslov_method_count(); i++) {
+        const suslov_method *me = suslov_method_get(i);
+        const expected_order *eo = expected_order_of(me->type->name);
+        if (!eo) {
+            char id[96];
+            snprintf(id, sizeof id, "expected-order-known-%s", me->type->name);
+            ledger_add_bound(id, "(tests/ledger/expected_orders.c)", "the method has a stated order to test "
+                                                              "against: "
+                             "1 when it does", 0.0, 1.0, 1, LEDGER_EXTENSION);
+            continue;
+        }
+        method_orders(me, eo);
+        method_structure(me);
+    }
+}
