@@ -451,8 +451,8 @@ int main(int argc, char **argv)
     default: /* SUSLOV_RUN_STEP_FAILED */
         if (report.status == SUSLOV_STEP_DIVERGED)
             return error_line(EXIT_SOLVER,
-                              "%s step %ld (t = %.17g) failed: the Taylor series diverges, its last term %.3g is "
-                              "not below |w| = %.3g: the step is beyond its radius of convergence",
+                              "%s step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
+                              "converge: the step is %.3g times the radius 1/(K |w|_2) proved for it (|w|_2 = %.3g)",
                               name, report.step, report.t, report.stats.residual, report.stats.scale);
         return error_line(EXIT_SOLVER,
                           "%s step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), "
