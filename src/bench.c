@@ -3,15 +3,17 @@
  * as PASS/MISS lines (never a failing test: the machine is shared and noisy).
  * Usage: bench FIGDIR DATADIR
  *
- * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]):
- *   GSL odeiv2 rk8pd, rkck, rkf45, msadams through gsl_odeiv2_driver_apply, abs = rel = tol,
- *   tol = 1e-3 ... 1e-14 (four a decade), initial step 1e-3; Boost.Odeint runge_kutta_fehlberg78 (make_controlled)
- *   and bulirsch_stoer with integrate_adaptive, the same tolerances (only when built with
- *   SUSLOV_WITH_ODEINT, which make bench does). Each on three formulations: (w1, w2, R) with
- *   R' = R w^ (11 unknowns), (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the
- *   end (6 unknowns), and, for the w accuracies only, (w1, w2) alone (2 unknowns: what a user who
- *   needs only w runs; our Taylor methods get the same choice, "(w only)", their w-step without
- *   the attitude series). The "best peer" at an accuracy is the fastest of all these configurations.
+ * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]), at
+ * abs = rel tolerance 1e-3 ... 1e-15 (four a decade): GSL odeiv2 rk8pd and rkck through
+ * gsl_odeiv2_driver_apply and through a gsl_odeiv2_evolve_apply loop, each from initial step
+ * 1e-3, 1e-2, 0.1 and 1; rkf45 and msadams (driver, 1e-3); Boost.Odeint runge_kutta_fehlberg78
+ * (make_controlled) and bulirsch_stoer (integrate_adaptive) when built with SUSLOV_WITH_ODEINT
+ * (make bench does). Each on three formulations: (w1, w2, R) with R' = R w^ (11 unknowns),
+ * (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the end (6 unknowns), and, for the
+ * w accuracies only, (w1, w2) alone (2 unknowns; our Taylor methods get the same choice,
+ * "(w only)"). Every run of a configuration starts from the same state, its step size included
+ * (src/peers.c), and the error credited to a point is the one its timed runs end with. The
+ * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.
  * Errors: |w(50) - w_n| against the closed form, dist(R(50), R_n) (MetMat) against the precise
  * long-double reference suslov_refatt_precise (good to ~1e-17, see refattitude.h). */
 #define _POSIX_C_SOURCE 200809L
@@ -43,7 +45,7 @@
 
 #define T_END 50.0
 #define T_LONG 1e4
-#define MAX_STEPS 2000000L  /* caps euler's sweep: 2e6 steps of T/N is ~0.1 s a point */
+#define MAX_STEPS 2000000L /* caps euler's sweep: 2e6 steps of T/N is ~0.1 s a point */
 /* The grids: a user of a fixed-step method picks N, a user of an adaptive peer picks tol. The
  * Taylor methods are swept at every N up to FINE_N (their cost per step is large and their error
  * falls like N^-p, so a factor sqrt 2 in N would skip up to two decades of error), and the peers
@@ -231,9 +233,9 @@ static int odeint_result(void *vctx, double w[2], double R[3][3])
 
 typedef struct {
     char name[96];
-    int ours;      /* 1: a registered method; 0: a peer */
+    int ours; /* 1: a registered method; 0: a peer */
     int preserves; /* keeps E, w3 = 0 and R in SO(3) by construction */
-    int w_only;    /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
+    int w_only; /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
     const char *method;
     suslov_recon recon;
     const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
@@ -264,7 +266,7 @@ static wp_series *new_series(void)
 typedef struct {
     void (*fn)(void *);
     int (*result)(void *, double w[2], double R[3][3]); /* the state the last run ended in */
-    void *ctx;       /* malloc'd by the sweep; owned by the point */
+    void *ctx; /* malloc'd by the sweep; owned by the point */
     wp_series *s;
     int i, batch;
     double t[WP_ROUNDS];
@@ -289,8 +291,8 @@ static void errors_of(const wp_series *s, const double w[2], const double R[3][3
 /* Runs ctx once and keeps the point unless the run failed or diverged (an error above 1 says
  * nothing about speed at any accuracy the targets ask for). Returns 1 when kept; otherwise the
  * caller frees ctx. */
-static int record(wp_series *s, double param, void (*fn)(void *), int (*result)(void *, double[2], double[3][3]),
-                  void *ctx)
+static int record(wp_series *s, double param, void (*fn)(void *),
+                  int (*result)(void *, double[2], double[3][3]), void *ctx)
 {
     double w[2], R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, ew, eR;
     fn(ctx);
@@ -331,8 +333,8 @@ static void sweep_ours(const suslov_method *me, suslov_recon recon)
     s->recon = recon;
     s->preserves = keeps_structure(me);
     long prevN = 0;
-    for (double Nd = fine ? 2.0 : high ? 4.0 : 50.0; Nd <= (double)MAX_STEPS && s->n < MAXPTS;
-         Nd = next_N(Nd, fine, high)) {
+    const double N0 = fine ? 2.0 : high ? 4.0 : 50.0;
+    for (double Nd = N0; Nd <= (double)MAX_STEPS && s->n < MAXPTS; Nd = next_N(Nd, fine, high)) {
         const long N = lround(Nd);
         if (N == prevN)
             continue;
@@ -413,8 +415,8 @@ static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, suslov_peer_
 static void sweep_odeint(int stepper, size_t dim)
 {
     wp_series *s = new_series();
-    snprintf(s->name, sizeof s->name, "Boost %s %s", stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer",
-             dim_name(dim));
+    snprintf(s->name, sizeof s->name, "Boost %s %s",
+             stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer", dim_name(dim));
     s->w_only = dim == 2;
     for (int j = 0; j < MAXPTS && PEER_TOL(j) >= PEER_TOL_MIN; j++) {
         odeint_run *r = xcalloc(1, sizeof *r);
@@ -458,8 +460,8 @@ static int timed_errors_differ(void)
         if (ok && ew == s->err_w[i] && (s->w_only || eR == s->err_R[i]))
             continue;
         bad++;
-        fprintf(stderr, "bench: %s at %g: timed runs end with errors %g, %g, recorded %g, %g\n", s->name, s->param[i],
-                ew, eR, s->err_w[i], s->err_R[i]);
+        fprintf(stderr, "bench: %s at %g: timed runs end with errors %g, %g, recorded %g, %g\n", s->name,
+                s->param[i], ew, eR, s->err_w[i], s->err_R[i]);
         s->err_w[i] = ok ? fmax(ew, s->err_w[i]) : INFINITY;
         s->err_R[i] = ok ? fmax(eR, s->err_R[i]) : INFINITY;
     }
@@ -572,6 +574,24 @@ static void build_envelope(int which, envelope *e)
 
 /* ---- per-step cost, for every registered method ---- */
 
+/* The whole step (w and attitude) in a bare loop, no driver: what the driver's overhead is
+ * measured against. */
+static void direct_fn(void *vctx)
+{
+    dsp_run *r = vctx;
+    double w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam = 0.0;
+    suslov_attitude att;
+    suslov_step_stats stats;
+    const double eps = r->T / (double)r->N;
+    suslov_attitude_identity(&att);
+    for (long k = 0; k < r->N; k++) {
+        suslov_step_full(r->st, &model, eps, r->recon, &att, w, x, &lam, &stats);
+        w[0] = x[0];
+        w[1] = x[1];
+    }
+    sink += w[0] + lam + att.q[0];
+}
+
 /* GSL's rk4 on w alone through gsl_odeiv2_driver_apply_fixed_step: the library's cost of a step. */
 typedef struct {
     gsl_odeiv2_system sys;
@@ -607,7 +627,9 @@ static void exact_fn(void *vctx)
 
 typedef struct {
     int n;
-    double *ns_raw, *ns_full, *newton, ns_gsl_rk4, ns_exact; /* n each: one per registered method */
+    /* n each, one per registered method: the w-step, the whole step through the driver and in a
+     * bare loop, Newton iterations per step */
+    double *ns_raw, *ns_full, *ns_direct, *newton, ns_gsl_rk4, ns_exact;
 } step_costs;
 
 static step_costs cost;
@@ -646,17 +668,22 @@ static void measure_step_costs(void)
     const int nm = suslov_method_count();
     w_run *raw = xcalloc((size_t)nm, sizeof *raw);
     dsp_run *rec = xcalloc((size_t)nm, sizeof *rec);
-    cost_cfg *cfg = xcalloc((size_t)(2 * nm + 2), sizeof *cfg);
-    cost = (step_costs){nm, xcalloc((size_t)nm, sizeof(double)), xcalloc((size_t)nm, sizeof(double)),
-                        xcalloc((size_t)nm, sizeof(double)), 0.0, 0.0};
+    cost_cfg *cfg = xcalloc((size_t)(3 * nm + 2), sizeof *cfg); /* raw, driver, GSL, exact, direct */
+    cost = (step_costs){.n = nm};
+    cost.ns_raw = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_full = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_direct = xcalloc((size_t)nm, sizeof(double));
+    cost.newton = xcalloc((size_t)nm, sizeof(double));
     for (int m = 0; m < nm; m++) {
         const suslov_method *me = suslov_method_get(m);
         raw[m] = (w_run){me->type, COST_STEPS, T_END, {0}, 0.0, 0};
         rec[m] = (dsp_run){me->type, me->recon, COST_STEPS, T_END, {0}, {0}};
         cfg[m] = (cost_cfg){w_fn, &raw[m], {0}};
         cfg[nm + m] = (cost_cfg){dsp_fn, &rec[m], {0}};
+        cfg[2 * nm + 2 + m] = (cost_cfg){direct_fn, &rec[m], {0}};
     }
-    gsl_fixed_run g = {{suslov_peer_rhs_w, NULL, 2, &model}, NULL, COST_STEPS, T_END / (double)COST_STEPS, {0}};
+    gsl_fixed_run g = {
+        {suslov_peer_rhs_w, NULL, 2, &model}, NULL, COST_STEPS, T_END / (double)COST_STEPS, {0}};
     if (!(g.d = gsl_odeiv2_driver_alloc_y_new(&g.sys, gsl_odeiv2_step_rk4, g.h, 1e-6, 1e-6))) {
         fprintf(stderr, "bench: GSL allocation failed\n");
         exit(1);
@@ -664,11 +691,12 @@ static void measure_step_costs(void)
     exact_run e = {COST_STEPS};
     cfg[2 * nm] = (cost_cfg){gsl_fixed_fn, &g, {0}};
     cfg[2 * nm + 1] = (cost_cfg){exact_fn, &e, {0}};
-    take_costs(cfg, 2 * nm + 2);
+    take_costs(cfg, 3 * nm + 2);
     gsl_odeiv2_driver_free(g.d);
     for (int m = 0; m < nm; m++) {
         cost.ns_raw[m] = median_ns(&cfg[m], COST_STEPS);
         cost.ns_full[m] = median_ns(&cfg[nm + m], COST_STEPS);
+        cost.ns_direct[m] = median_ns(&cfg[2 * nm + 2 + m], COST_STEPS);
         cost.newton[m] = raw[m].newton;
     }
     cost.ns_gsl_rk4 = median_ns(&cfg[2 * nm], COST_STEPS);
@@ -740,7 +768,8 @@ static int long_run_wanted(const wp_series *s)
 {
     if (s->ours)
         return s->preserves && !s->w_only;
-    return s->type == gsl_odeiv2_step_rk8pd && s->api == SUSLOV_PEER_DRIVER && s->hstart == 1e-3 && s->dim != 2;
+    return s->type == gsl_odeiv2_step_rk8pd && s->api == SUSLOV_PEER_DRIVER && s->hstart == 1e-3
+        && s->dim != 2;
 }
 
 /* Our preserving methods at the step that reached attitude 1e-10 at t = 50 (matched accuracy),
@@ -771,8 +800,8 @@ static void long_runs(void)
 
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
-    snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method, SUSLOV_RECON_NAMES[s->recon],
-             s->param[j], s->steps[j]);
+    snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
+             SUSLOV_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
 }
 
 /* Runs `suslov ARGS --every N` and compares the last row's errors with the bench's: the same
@@ -824,12 +853,30 @@ static void series_colour(int i, double rgb[3])
     const int sector = (int)h;
     double r = 0, g = 0, b = 0;
     switch (sector) {
-    case 0: r = 1; g = x; break;
-    case 1: r = x; g = 1; break;
-    case 2: g = 1; b = x; break;
-    case 3: g = x; b = 1; break;
-    case 4: r = x; b = 1; break;
-    default: r = 1; b = x; break;
+    case 0:
+        r = 1;
+        g = x;
+        break;
+    case 1:
+        r = x;
+        g = 1;
+        break;
+    case 2:
+        g = 1;
+        b = x;
+        break;
+    case 3:
+        g = x;
+        b = 1;
+        break;
+    case 4:
+        r = x;
+        b = 1;
+        break;
+    default:
+        r = 1;
+        b = x;
+        break;
     }
     rgb[0] = v * r;
     rgb[1] = v * g * 0.85;
@@ -840,10 +887,13 @@ static void series_colour(int i, double rgb[3])
 static void draw_wp_notes(cairo_t *cr, double y)
 {
     static const char *const notes[] = {
-        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 (four a decade):",
-        "GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through its own gsl_odeiv2_evolve_apply "
+        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 (four a "
+        "decade):",
+        "GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through its own "
+        "gsl_odeiv2_evolve_apply "
         "loop,",
-        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams (driver, initial step 1e-3)"
+        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams (driver, "
+        "initial step 1e-3)"
 #ifdef SUSLOV_WITH_ODEINT
         "; Boost.Odeint",
         "runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive)"
@@ -866,7 +916,8 @@ static void draw_wp(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     static const int mk[6] = {PLOT_CIRCLE, PLOT_SQUARE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS, PLOT_DOT};
-    plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11, 0.5, 0.5, 1);
+    plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11, 0.5,
+              0.5, 1);
     plot_style *st = xcalloc((size_t)nseries, sizeof *st), *ours = xcalloc((size_t)nseries, sizeof *ours);
     double(*rgb)[3] = xcalloc((size_t)nseries, sizeof *rgb);
     for (int p = 0; p < 2; p++) {
@@ -878,15 +929,19 @@ static void draw_wp(cairo_t *cr, void *vctx)
             plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
         }
         plot_axes ax;
-        plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
+        plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17),
+                       fmin(y1, 1.0), 1, 1);
         plot_pad(&ax.x0, &ax.x1, 1);
         plot_pad(&ax.y0, &ax.y1, 1);
-        plot_frame(&ax, "seconds per run", p ? "attitude error dist(R(50), R\xe2\x82\x99)" : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", p ? "(b)" : "(a)");
+        plot_frame(&ax, "seconds per run",
+                   p ? "attitude error dist(R(50), R\xe2\x82\x99)"
+                     : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
+                   p ? "(b)" : "(a)");
         int k = 0;
         for (int i = 0; i < nseries; i++) { /* peers first, underneath */
             series_colour(i, rgb[i]);
-            st[i] = plot_style_of(rgb[i], S[i]->ours ? 1.1 : 0.5, 0, S[i]->ours ? mk[k++ % 6] : PLOT_DOT, S[i]->ours ? 3.5 : 2.0,
-                                  S[i]->ours ? S[i]->name : NULL);
+            st[i] = plot_style_of(rgb[i], S[i]->ours ? 1.1 : 0.5, 0, S[i]->ours ? mk[k++ % 6] : PLOT_DOT,
+                                  S[i]->ours ? 3.5 : 2.0, S[i]->ours ? S[i]->name : NULL);
         }
         for (int pass = 0; pass < 2; pass++)
             for (int i = 0; i < nseries; i++)
@@ -953,7 +1008,9 @@ static void draw_cost(cairo_t *cr, void *vctx)
             cairo_rectangle(cr, bx + 0.52 * bw, ax.y + ax.h - h2, 0.36 * bw, h2);
             cairo_fill(cr);
         }
-        const char *name = i < cost.n ? suslov_method_get(i)->type->name : i == cost.n ? "GSL rk4" : "exact \xcf\x89(t)";
+        const char *name = i < cost.n ? suslov_method_get(i)->type->name
+            : i == cost.n             ? "GSL rk4"
+                                      : "exact \xcf\x89(t)";
         cairo_save(cr);
         cairo_translate(cr, bx + 0.5 * bw, ax.y + ax.h + 5);
         cairo_rotate(cr, 0.7853981633974483); /* 45 degrees */
@@ -964,8 +1021,10 @@ static void draw_cost(cairo_t *cr, void *vctx)
         snprintf(lab, sizeof lab, "%.0f", i < cost.n ? v2[i] : v1[i]);
         plot_text(cr, bx + 0.5 * bw, ax.y + ax.h - fmax(h1, h2) - 8, lab, 7.0, 0.5, 0.0, 0);
     }
-    const plot_style leg[2] = {plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, PLOT_NONE, 0, "w-step only"),
-                               plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, PLOT_NONE, 0, "whole step (w, R), default reconstruction")};
+    const plot_style leg[2] = {
+        plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, PLOT_NONE, 0, "w-step only"),
+        plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, PLOT_NONE, 0,
+                      "whole step (w, R), default reconstruction")};
     plot_legend(&ax, leg, 2, 0);
     free(v1);
     free(v2);
@@ -982,8 +1041,10 @@ static int write_csv(const char *path)
         return -1;
     }
     /* the method field is quoted: peer names such as "GSL rk8pd (w,q)" hold a comma */
-    fprintf(af.fp, "section,method,kind,preserves,parameter,steps,omega_error,attitude_error,seconds_median,seconds_min,"
-                   "seconds_max,ns_per_step,newton_per_step,suslov_args\n");
+    fprintf(
+        af.fp,
+        "section,method,kind,preserves,parameter,steps,omega_error,attitude_error,seconds_median,seconds_min,"
+        "seconds_max,ns_per_step,newton_per_step,suslov_args\n");
     for (int i = 0; i < nseries; i++)
         for (int j = 0; j < S[i]->n; j++) {
             args[0] = '\0';
@@ -992,21 +1053,21 @@ static int write_csv(const char *path)
             char eR[32] = ""; /* empty for a w-only row: no attitude */
             if (!S[i]->w_only)
                 snprintf(eR, sizeof eR, "%.6g", S[i]->err_R[j]);
-            fprintf(af.fp, "work,\"%s\",%s,%s,%.17g,%ld,%.6g,%s,%.6g,%.6g,%.6g,,,%s\n", S[i]->name, S[i]->ours ? "ours" : "peer",
-                    S[i]->preserves ? "yes" : "no", S[i]->param[j], S[i]->steps[j], S[i]->err_w[j], eR, S[i]->sec[j],
-                    S[i]->smin[j], S[i]->smax[j], args);
+            fprintf(af.fp, "work,\"%s\",%s,%s,%.17g,%ld,%.6g,%s,%.6g,%.6g,%.6g,,,%s\n", S[i]->name,
+                    S[i]->ours ? "ours" : "peer", S[i]->preserves ? "yes" : "no", S[i]->param[j],
+                    S[i]->steps[j], S[i]->err_w[j], eR, S[i]->sec[j], S[i]->smin[j], S[i]->smax[j], args);
         }
     for (int m = 0; m < cost.n; m++) {
         const suslov_method *me = suslov_method_get(m);
         fprintf(af.fp, "step,%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, cost.ns_raw[m], cost.newton[m]);
-        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUSLOV_RECON_NAMES[me->recon], cost.ns_full[m],
-                cost.newton[m]);
+        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUSLOV_RECON_NAMES[me->recon],
+                cost.ns_full[m], cost.newton[m]);
     }
     fprintf(af.fp, "step,gsl-rk4-driver,peer,,,,,,,,,%.4g,,\n", cost.ns_gsl_rk4);
     fprintf(af.fp, "step,exact-omega,,,,,,,,,,%.4g,,\n", cost.ns_exact);
     for (int i = 0; i < nlr; i++)
-        fprintf(af.fp, "longrun,\"%s\",%s,,%g,,%.3g,%.3g,,,,,,\n", LR[i].name, strncmp(LR[i].name, "GSL", 3) ? "ours" : "peer",
-                T_LONG, LR[i].energy, LR[i].orth);
+        fprintf(af.fp, "longrun,\"%s\",%s,,%g,,%.3g,%.3g,,,,,,\n", LR[i].name,
+                strncmp(LR[i].name, "GSL", 3) ? "ours" : "peer", T_LONG, LR[i].energy, LR[i].orth);
     return atomic_file_commit(&af, err, sizeof err);
 }
 
@@ -1058,10 +1119,11 @@ static void sweep_all(void)
 
 static void print_costs(void)
 {
-    printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS, COST_STEPS,
-           T_END / (double)COST_STEPS);
+    printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS,
+           COST_STEPS, T_END / (double)COST_STEPS);
     const int irk4 = suslov_method_index("rk4");
-    printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step", "x our rk4");
+    printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
+           "x our rk4");
     for (int m = 0; m < cost.n; m++)
         printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", suslov_method_get(m)->type->name, cost.ns_raw[m],
                cost.ns_full[m], SUSLOV_RECON_NAMES[suslov_method_get(m)->recon], cost.newton[m],
@@ -1075,8 +1137,9 @@ static int print_step_targets(double *speedup)
 {
     const int irk4 = suslov_method_index("rk4");
     *speedup = cost.ns_gsl_rk4 / cost.ns_raw[irk4];
-    printf("  %s our rk4 step is >= 5x faster than GSL rk4 through gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
-           *speedup >= 5 ? "PASS" : "MISS", *speedup);
+    printf(
+        "  %s our rk4 step is >= 5x faster than GSL rk4 through gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
+        *speedup >= 5 ? "PASS" : "MISS", *speedup);
     int implicit_pass = 1;
     for (int m = 0; m < cost.n; m++) {
         const suslov_method *me = suslov_method_get(m);
@@ -1086,6 +1149,14 @@ static int print_step_targets(double *speedup)
         implicit_pass &= r <= 3;
         printf("  %s an implicit %s step costs <= 3x our rk4 step: %.2fx (%.2f Newton iterations per step)\n",
                r <= 3 ? "PASS" : "MISS", me->type->name, r, cost.newton[m]);
+    }
+    for (int m = 0; m < cost.n; m++) {
+        const suslov_method *me = suslov_method_get(m);
+        if (!own_attitude(me))
+            continue;
+        const double over = cost.ns_full[m] / cost.ns_direct[m] - 1.0;
+        printf("  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop): %+.1f %%\n",
+               over <= 0.10 ? "PASS" : "MISS", me->type->name, cost.ns_direct[m], 100.0 * over);
     }
     return implicit_pass;
 }
@@ -1108,28 +1179,33 @@ static double floor_seconds(double level, int which)
         const int m = suslov_method_index(s->method);
         for (int j = 0; j < s->n; j++)
             if ((which ? s->err_R[j] : s->err_w[j]) <= level)
-                best = fmin(best, (double)s->steps[j] * 1e-9 * (s->w_only ? cost.ns_raw[m] : cost.ns_full[m]));
+                best =
+                    fmin(best, (double)s->steps[j] * 1e-9 * (s->w_only ? cost.ns_raw[m] : cost.ns_full[m]));
     }
     return best;
 }
 
 static void print_level(int which, int l, int *pass, double *ratio)
 {
-    const best_point o = fastest(LEVELS[l], which, is_ours_preserving), p = fastest(LEVELS[l], which, is_peer);
+    const best_point o = fastest(LEVELS[l], which, is_ours_preserving),
+                     p = fastest(LEVELS[l], which, is_peer);
     const char *what = which ? "attitude" : "w";
     *pass = 0;
     *ratio = 0.0;
     if (o.series < 0) {
-        printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods reaches it\n", what,
-               LEVELS[l]);
+        printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods reaches it\n",
+               what, LEVELS[l]);
         return;
     }
     const wp_series *os = S[o.series];
     const double fl = floor_seconds(LEVELS[l], which);
-    printf("  %s %s accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s (fewest steps x cost per "
-           "step): %.2fx\n", o.sec <= 1.15 * fl ? "PASS" : "MISS", what, LEVELS[l], o.sec, fl, o.sec / fl);
+    printf(
+        "  %s %s accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s (fewest steps x cost per "
+        "step): %.2fx\n",
+        o.sec <= 1.15 * fl ? "PASS" : "MISS", what, LEVELS[l], o.sec, fl, o.sec / fl);
     if (p.series < 0) {
-        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g); no peer configuration reaches it\n",
+        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g); no peer configuration reaches "
+               "it\n",
                what, LEVELS[l], o.sec, os->name, os->param[o.point]);
         *pass = 1;
         *ratio = INFINITY;
@@ -1137,11 +1213,12 @@ static void print_level(int which, int l, int *pass, double *ratio)
     }
     *ratio = p.sec / o.sec;
     *pass = *ratio >= LEVEL_TARGET[l];
-    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g) vs best peer %.3g s (%s, tol %.2g, its "
-           "timed runs' error %.2g): %.2fx (target %gx)\n",
-           *pass ? "PASS" : "MISS", what, LEVELS[l], o.sec, os->name, os->param[o.point], p.sec, S[p.series]->name,
-           S[p.series]->param[p.point], which ? S[p.series]->err_R[p.point] : S[p.series]->err_w[p.point], *ratio,
-           LEVEL_TARGET[l]);
+    printf(
+        "  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g) vs best peer %.3g s (%s, tol %.2g, its "
+        "timed runs' error %.2g): %.2fx (target %gx)\n",
+        *pass ? "PASS" : "MISS", what, LEVELS[l], o.sec, os->name, os->param[o.point], p.sec,
+        S[p.series]->name, S[p.series]->param[p.point],
+        which ? S[p.series]->err_R[p.point] : S[p.series]->err_w[p.point], *ratio, LEVEL_TARGET[l]);
 }
 
 static void print_long_runs(void)
@@ -1149,11 +1226,14 @@ static void print_long_runs(void)
     for (int i = 0; i < nlr; i++) {
         if (LR[i].ours) {
             const int ok = LR[i].orth <= 1e-13 && LR[i].energy <= 1e-13 && LR[i].w3 == 0.0;
-            printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g (targets 1e-13, 1e-13, 0)\n",
+            printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g (targets 1e-13, "
+                   "1e-13, 0)\n",
                    ok ? "PASS" : "MISS", LR[i].name, LR[i].orth, LR[i].energy, LR[i].w3);
         } else {
-            printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: %s = %.2g, |E - E0| = %.2g\n",
-                   LR[i].name, strstr(LR[i].name, "(w,q)") ? "||q| - 1|" : "|R^T R - I|", LR[i].orth, LR[i].energy);
+            printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: %s = %.2g, |E - E0| = "
+                   "%.2g\n",
+                   LR[i].name, strstr(LR[i].name, "(w,q)") ? "||q| - 1|" : "|R^T R - I|", LR[i].orth,
+                   LR[i].energy);
         }
     }
 }
@@ -1179,8 +1259,9 @@ static void check_reproduce(const char *argv0)
         else
             printf("  row not reproduced by suslov: %s eps %.17g\n", s->name, s->param[o.point]);
     }
-    printf("  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",
-           ok == tried ? "CHECK ok:" : "CHECK FAILED:", ok, tried, suslov);
+    printf(
+        "  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",
+        ok == tried ? "CHECK ok:" : "CHECK FAILED:", ok, tried, suslov);
 }
 
 /* The numbers the companion text quotes. */
@@ -1195,11 +1276,12 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
     }
     const int irk4 = suslov_method_index("rk4"), imid = suslov_method_index("midpoint"),
               ivar = suslov_method_index("variational");
-    fprintf(af.fp, "%% Generated by make bench (src/bench.c): do not edit.\n"
-                   "\\newcommand{\\BenchRkNs}{%.3g}\n\\newcommand{\\BenchGslRkNs}{%.3g}\n"
-                   "\\newcommand{\\BenchRkSpeedup}{%.3g}\n\\newcommand{\\BenchMidpointRatio}{%.3g}\n"
-                   "\\newcommand{\\BenchVariationalRatio}{%.3g}\n\\newcommand{\\BenchExactNs}{%.3g}\n"
-                   "\\newcommand{\\BenchMidpointNewton}{%.2g}\n\\newcommand{\\BenchVariationalNewton}{%.2g}\n",
+    fprintf(af.fp,
+            "%% Generated by make bench (src/bench.c): do not edit.\n"
+            "\\newcommand{\\BenchRkNs}{%.3g}\n\\newcommand{\\BenchGslRkNs}{%.3g}\n"
+            "\\newcommand{\\BenchRkSpeedup}{%.3g}\n\\newcommand{\\BenchMidpointRatio}{%.3g}\n"
+            "\\newcommand{\\BenchVariationalRatio}{%.3g}\n\\newcommand{\\BenchExactNs}{%.3g}\n"
+            "\\newcommand{\\BenchMidpointNewton}{%.2g}\n\\newcommand{\\BenchVariationalNewton}{%.2g}\n",
             cost.ns_raw[irk4], cost.ns_gsl_rk4, speedup, cost.ns_raw[imid] / cost.ns_raw[irk4],
             cost.ns_raw[ivar] / cost.ns_raw[irk4], cost.ns_exact, cost.newton[imid], cost.newton[ivar]);
     fprintf(af.fp, "\\newcommand{\\BenchPassRkSpeedup}{%s}\n\\newcommand{\\BenchPassImplicit}{%s}\n",
@@ -1212,6 +1294,40 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
         fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l],
                 pass[1][l] ? "PASS" : "MISS", lvl[l], pass[0][l] ? "PASS" : "MISS");
     }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* The "what to use when" data: at each level the fastest of ours and of the peers, from their
+ * timed runs, with the suslov arguments that reproduce ours (README, the companion). */
+static int write_what_to_use(const char *path)
+{
+    char err[256], args[256];
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    fprintf(af.fp,
+            "quantity\tlevel\tours\tours_seconds\tpeer\tpeer_tol\tpeer_seconds\tratio\ttarget\t"
+            "verdict\tsuslov_args\n");
+    for (int which = 1; which >= 0; which--)
+        for (int l = 0; l < NLEVELS; l++) {
+            const best_point o = fastest(LEVELS[l], which, is_ours_preserving),
+                             p = fastest(LEVELS[l], which, is_peer);
+            if (o.series < 0)
+                continue;
+            args_of(S[o.series], o.point, args, sizeof args);
+            const double ratio = p.series < 0 ? INFINITY : p.sec / o.sec;
+            fprintf(af.fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.3g\t%g\t%s\t%s\n",
+                    which ? "attitude" : "omega", LEVELS[l], S[o.series]->name, o.sec,
+                    p.series < 0 ? "none reaches it" : S[p.series]->name,
+                    p.series < 0 ? NAN : S[p.series]->param[p.point], p.series < 0 ? NAN : p.sec, ratio,
+                    LEVEL_TARGET[l], ratio >= LEVEL_TARGET[l] ? "PASS" : "MISS", args);
+        }
     if (atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
@@ -1243,13 +1359,15 @@ static int write_figures(const char *figdir)
 static void print_header(int differ)
 {
     printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). Work-precision times: median over %d\n"
-           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. The machine is shared and\n"
+           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. The machine is "
+           "shared and\n"
            "noisy: compare the ratios measured in this same run rather than absolute times.\n"
 #ifndef SUSLOV_WITH_ODEINT
            "(built without Boost.Odeint: `make bench` builds the bench with it)\n"
 #endif
            "  %s %d of %d timed points end their timed runs with the error recorded for them\n\n",
-           T_END, WP_ROUNDS, BATCH_SECONDS, differ ? "CHECK FAILED:" : "CHECK ok:", npoints - differ, npoints);
+           T_END, WP_ROUNDS, BATCH_SECONDS, differ ? "CHECK FAILED:" : "CHECK ok:", npoints - differ,
+           npoints);
 }
 
 int main(int argc, char **argv)
@@ -1287,7 +1405,10 @@ int main(int argc, char **argv)
     printf("\nbench ran for %.1f s\n", suslov_now() - t_start);
     char path[4096];
     if (write_csv(fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0
-        || write_tex(fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass, ratio) != 0
+        || write_tex(fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass,
+                     ratio)
+            != 0
+        || write_what_to_use(fig_path(path, sizeof path, argv[2], "what_to_use", "tsv")) != 0
         || write_figures(argv[1]) != 0)
         return 1;
     return 0;

@@ -60,10 +60,14 @@ int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_ste
                      suslov_peer_api api, double tol, double hstart)
 {
     *p = (suslov_peer){.type = type, .api = api, .dim = dim, .tol = tol, .hstart = hstart};
-    p->sys = (gsl_odeiv2_system){dim == 11 ? suslov_peer_rhs_wR : dim == 6 ? suslov_peer_rhs_wq : suslov_peer_rhs_w,
-                                 NULL, dim, (void *)m};
+    int (*rhs)(double, const double[], double[], void *) = dim == 11 ? suslov_peer_rhs_wR
+                                                         : dim == 6  ? suslov_peer_rhs_wq
+                                                                     : suslov_peer_rhs_w;
+    p->sys = (gsl_odeiv2_system){rhs, NULL, dim, (void *)m};
     if (api == SUSLOV_PEER_DRIVER) {
         p->d = gsl_odeiv2_driver_alloc_y_new(&p->sys, type, hstart, tol, tol);
+        if (p->d)
+            gsl_odeiv2_driver_set_nmax(p->d, SUSLOV_PEER_MAX_STEPS);
         return p->d ? 0 : -1;
     }
     p->s = gsl_odeiv2_step_alloc(type, dim);
@@ -82,7 +86,9 @@ static int evolve_run(suslov_peer *p, double T, double *y, long *steps)
     gsl_odeiv2_step_reset(p->s);
     int status = GSL_SUCCESS;
     while (t < T && status == GSL_SUCCESS)
-        status = gsl_odeiv2_evolve_apply(p->e, p->c, p->s, &p->sys, &t, T, &h, y);
+        status = p->e->count < SUSLOV_PEER_MAX_STEPS
+                   ? gsl_odeiv2_evolve_apply(p->e, p->c, p->s, &p->sys, &t, T, &h, y)
+                   : GSL_EMAXITER;
     *steps = (long)p->e->count;
     return status;
 }

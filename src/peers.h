@@ -37,6 +37,10 @@ typedef struct {
     gsl_odeiv2_evolve *e;
 } suslov_peer;
 
+/* A run that needs more steps than this has lost its way (its tolerance below what round-off
+ * allows, where the step shrinks without end): it fails instead of running for hours. */
+#define SUSLOV_PEER_MAX_STEPS 200000UL
+
 /* Returns 0, or -1 when GSL cannot allocate. */
 int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_step_type *type, size_t dim,
                      suslov_peer_api api, double tol, double hstart);

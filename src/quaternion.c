@@ -64,11 +64,9 @@ void quat_of_attitude(const suslov_attitude *a, double q[4])
     quat_from_rotation(R, q);
 }
 
-void quat_to_attitude(const double q[4], suslov_attitude *a)
+void quat_unit_rotation(const double q[4], double R[3][3])
 {
-    const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    const double s = q[0] * n, x = q[1] * n, y = q[2] * n, z = q[3] * n;
-    double (*R)[3] = a->hi;
+    const double s = q[0], x = q[1], y = q[2], z = q[3];
     R[0][0] = 1.0 - 2.0 * (y * y + z * z);
     R[0][1] = 2.0 * (x * y - s * z);
     R[0][2] = 2.0 * (x * z + s * y);
@@ -78,10 +76,13 @@ void quat_to_attitude(const double q[4], suslov_attitude *a)
     R[2][0] = 2.0 * (x * z - s * y);
     R[2][1] = 2.0 * (y * z + s * x);
     R[2][2] = 1.0 - 2.0 * (x * x + y * y);
-    memset(a->lo, 0, sizeof a->lo);
-    a->q[0] = s;
-    a->q[1] = x;
-    a->q[2] = y;
-    a->q[3] = z;
+}
+
+void quat_to_attitude(const double q[4], suslov_attitude *a)
+{
+    const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int i = 0; i < 4; i++)
+        a->q[i] = q[i] * n;
     a->has_q = 1;
+    a->r_stale = 1;
 }

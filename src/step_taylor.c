@@ -52,8 +52,9 @@ static inline v2d rot90(v2d v) { return (v2d){-v[1], v[0]}; }
  * (j = 0 and j = n) last. Always inlined with p constant and fully unrolled: loops of 1..p trips
  * cost a mispredicted exit branch each (cachegrind, taylor12: 22 mispredictions and 3260
  * instructions a step rolled, 0.2 and 2430 unrolled). */
-static inline __attribute__((always_inline)) void series(const suslov_model *m, const int p, const double h,
-                                                         const double w[2], const int with_q, taylor_series *t)
+static inline __attribute__((always_inline)) void series(const suslov_model *m, const int p,
+                                                         const double h, const double w[2], const int with_q,
+                                                         taylor_series *t)
 {
     double C[SUSLOV_TAYLOR_MAX_ORDER + 1];
     v2d U[SUSLOV_TAYLOR_MAX_ORDER + 1];
@@ -154,7 +155,8 @@ typedef struct {
 static taylor_majorant majorant_of(const suslov_model *m, const double w[2])
 {
     const double c = fabs(suslov_c(m, w));
-    const double nAw = hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1], m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
+    const double nAw = hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
+                             m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
     taylor_majorant mj = {m->norm_b * m->norm_fA, 0.0, 0.0, c * nAw};
     if (mj.K > 0.0) {
         mj.z0 = (c * m->norm_fA + m->norm_b * nAw) / (2.0 * mj.K);
@@ -237,8 +239,9 @@ static inline __attribute__((always_inline)) int taylor_apply(const int p, const
     return SUSLOV_STEP_OK;
 }
 
-static inline __attribute__((always_inline)) int taylor_apply_full(const int p, const suslov_model *m, double eps,
-                                                                     suslov_attitude *att, const double w[3],
+static inline __attribute__((always_inline)) int taylor_apply_full(const int p, const suslov_model *m,
+                                                                     double eps, suslov_attitude *att,
+                                                                     const double w[3],
                                                                      double w_next[3], double *lambda_next,
                                                                      suslov_step_stats *st)
 {
@@ -278,22 +281,22 @@ double suslov_taylor_stability(int p, double z)
     return r;
 }
 
-#define TAYLOR_STEPPER(P)                                                                                      \
-    static int taylor##P##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],       \
-                                 double *lambda_next, suslov_step_stats *st)                                   \
-    {                                                                                                          \
-        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                            \
-    }                                                                                                          \
-    static int taylor##P##_apply_full(const suslov_model *m, double eps, suslov_recon recon,                   \
-                                      suslov_attitude *att, const double w[3], double w_next[3],               \
-                                      double *lambda_next, suslov_step_stats *st)                              \
-    {                                                                                                          \
-        (void)recon;                                                                                           \
-        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                  \
-    }                                                                                                          \
-    double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                          \
-    const suslov_stepper_type suslov_taylor##P##_type = {.name = "taylor" #P, .order = P, .lambda_order = P,   \
-                                                         .apply = taylor##P##_apply,                           \
+#define TAYLOR_STEPPER(P)                                                                                    \
+    static int taylor##P##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],     \
+                                 double *lambda_next, suslov_step_stats *st)                                 \
+    {                                                                                                        \
+        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                          \
+    }                                                                                                        \
+    static int taylor##P##_apply_full(const suslov_model *m, double eps, suslov_recon recon,                 \
+                                      suslov_attitude *att, const double w[3], double w_next[3],             \
+                                      double *lambda_next, suslov_step_stats *st)                            \
+    {                                                                                                        \
+        (void)recon;                                                                                         \
+        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                \
+    }                                                                                                        \
+    double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                         \
+    const suslov_stepper_type suslov_taylor##P##_type = {.name = "taylor" #P, .order = P, .lambda_order = P, \
+                                                         .apply = taylor##P##_apply,                         \
                                                          .apply_full = taylor##P##_apply_full};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,

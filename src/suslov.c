@@ -451,8 +451,9 @@ int main(int argc, char **argv)
     default: /* SUSLOV_RUN_STEP_FAILED */
         if (report.status == SUSLOV_STEP_DIVERGED)
             return error_line(EXIT_SOLVER,
-                              "%s step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
-                              "converge: the step is %.3g times the radius 1/(K |w|_2) proved for it (|w|_2 = %.3g)",
+                              "%s step %ld (t = %.17g) failed: the Taylor series diverges or is not "
+                              "proved to converge: the step is %.3g times the radius proved for it "
+                              "(|w|_2 = %.3g)",
                               name, report.step, report.t, report.stats.residual, report.stats.scale);
         return error_line(EXIT_SOLVER,
                           "%s step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), "
