@@ -191,6 +191,13 @@ static void peer_fn(void *vctx)
     sink += g->y[0];
 }
 
+static void peer_long_fn(void *vctx)
+{
+    peer_run *g = vctx;
+    g->status = suslov_peer_run(&g->p, ex.w0, T_LONG, g->y, &g->steps);
+    sink += g->y[0];
+}
+
 static int peer_result(void *vctx, double w[2], double R[3][3])
 {
     const peer_run *g = vctx;
@@ -793,6 +800,73 @@ static void long_runs(void)
         L->energy = a.energy;
         L->w3 = a.w3;
         L->ours = S[i]->ours;
+    }
+}
+
+/* ---- at T = 1e4 and equal error: our Taylor methods against rk8pd on (w, q) ---- */
+
+#define EQ_REPEATS 3 /* the minimum over a few runs: each is milliseconds long */
+
+static double min_seconds(void (*fn)(void *), void *ctx)
+{
+    double best = INFINITY;
+    for (int r = 0; r < EQ_REPEATS; r++) {
+        const double t0 = suslov_now();
+        fn(ctx);
+        best = fmin(best, suslov_now() - t0);
+    }
+    return best;
+}
+
+typedef struct {
+    double sec, err, tol;
+} long_point;
+
+/* rk8pd (w, q) through the driver from hstart 1e-3: the loosest of four tolerances a decade whose
+ * attitude error at T_LONG is at most err (sec = INFINITY when none down to 1e-15 is). */
+static long_point rk8pd_matching(double err, const double R_ref[3][3])
+{
+    for (int j = 0; PEER_TOL(j) >= PEER_TOL_MIN; j++) {
+        peer_run g = {0};
+        const double tol = PEER_TOL(j);
+        if (suslov_peer_open(&g.p, &model, gsl_odeiv2_step_rk8pd, 6, SUSLOV_PEER_DRIVER, tol, 1e-3) != 0)
+            break;
+        g.status = suslov_peer_run(&g.p, ex.w0, T_LONG, g.y, &g.steps);
+        double R[3][3];
+        suslov_peer_attitude(6, g.y, R);
+        const double e = so3_dist(R_ref, R);
+        long_point lp = {INFINITY, e, PEER_TOL(j)};
+        if (g.status == GSL_SUCCESS && e <= err)
+            lp.sec = min_seconds(peer_long_fn, &g);
+        suslov_peer_close(&g.p);
+        if (isfinite(lp.sec))
+            return lp;
+    }
+    return (long_point){INFINITY, INFINITY, 0.0};
+}
+
+/* Each Taylor method at the step that reached attitude 1e-10 at t = 50, run to T_LONG; the peer
+ * at the loosest tolerance that reaches the same error there. */
+static void print_equal_error_long(void)
+{
+    double w_ref[2], R_ref[3][3];
+    suslov_refatt_precise(&model, ex.w0, T_LONG, w_ref, R_ref);
+    for (int i = 0; i < nseries; i++) {
+        const wp_series *s = S[i];
+        const suslov_method *me = s->ours && !s->w_only ? suslov_method_by_name(s->method) : NULL;
+        int j = -1;
+        for (int k = 0; me && own_attitude(me) && k < s->n && j < 0; k++)
+            if (s->err_R[k] <= 1e-10)
+                j = k;
+        if (j < 0)
+            continue;
+        dsp_run r = {me->type, s->recon, lround(T_LONG / s->param[j]), T_LONG, {0}, {0}};
+        const double sec = min_seconds(dsp_fn, &r), err = so3_dist(R_ref, r.last.R);
+        const long_point p = rk8pd_matching(err, R_ref);
+        const double ratio = p.sec / sec;
+        printf("  %s T = 1e4 at equal error: %s (eps %.4g) %.3g s, error %.2g, vs GSL rk8pd (w,q) tol %.2g "
+               "%.3g s, error %.2g: %.2fx (target 3x)\n",
+               ratio >= 3.0 ? "PASS" : "MISS", s->name, s->param[j], sec, err, p.tol, p.sec, p.err, ratio);
     }
 }
 
@@ -1401,6 +1475,7 @@ int main(int argc, char **argv)
         for (int l = 0; l < NLEVELS; l++)
             print_level(which, l, &pass[which][l], &ratio[which][l]);
     print_long_runs();
+    print_equal_error_long();
     check_reproduce(argv[0]);
     printf("\nbench ran for %.1f s\n", suslov_now() - t_start);
     char path[4096];
