@@ -324,9 +324,31 @@ static double next_N(double Nd, int fine, int high)
     return fine && Nd < FINE_N ? Nd + 1.0 : Nd * (high ? 1.4142135623730951 : 4.0);
 }
 
-/* A sweep stops once the errors are below SWEEP_FLOOR, ten times below the finest target level:
- * more steps only add round-off. */
+/* A sweep stops once the errors are below SWEEP_FLOOR, ten times below the finest target level,
+ * or once they are below ROUNDOFF_ZONE and 1.4 times as many steps no longer halve them (which
+ * any method of order >= 2 does while truncation dominates): more steps then only add round-off
+ * (the compositions' floor is above 1e-15). */
 #define SWEEP_FLOOR 1e-15
+#define ROUNDOFF_ZONE 1e-12
+
+static double worst_err(const wp_series *s, int i)
+{
+    return fmax(s->err_w[i], s->w_only ? 0.0 : s->err_R[i]);
+}
+
+static int sweep_done(const wp_series *s)
+{
+    const int i = s->n - 1;
+    const double e = worst_err(s, i);
+    if (e < SWEEP_FLOOR)
+        return 1;
+    if (e > ROUNDOFF_ZONE)
+        return 0;
+    for (int j = i - 1; j >= 0; j--)
+        if ((double)s->steps[j] * 1.4 <= (double)s->steps[i])
+            return e > 0.5 * worst_err(s, j);
+    return 0;
+}
 
 static void sweep_ours(const suslov_method *me, suslov_recon recon)
 {
@@ -353,7 +375,7 @@ static void sweep_ours(const suslov_method *me, suslov_recon recon)
             continue;
         }
         s->steps[s->n - 1] = N;
-        if (s->err_w[s->n - 1] < SWEEP_FLOOR && s->err_R[s->n - 1] < SWEEP_FLOOR)
+        if (sweep_done(s))
             break;
     }
 }
@@ -382,7 +404,7 @@ static void sweep_ours_w(const suslov_method *me)
             continue;
         }
         s->steps[s->n - 1] = N;
-        if (s->err_w[s->n - 1] < SWEEP_FLOOR)
+        if (sweep_done(s))
             break;
     }
 }
