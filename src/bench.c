@@ -658,7 +658,7 @@ typedef struct {
     int n;
     /* n each, one per registered method: the w-step, the whole step through the driver and in a
      * bare loop, Newton iterations per step */
-    double *ns_raw, *ns_full, *ns_direct, *newton, ns_gsl_rk4, ns_exact;
+    double *ns_raw, *ns_full, *ns_direct, *ns_full_min, *newton, ns_gsl_rk4, ns_exact;
 } step_costs;
 
 static step_costs cost;
@@ -671,6 +671,14 @@ typedef struct {
     void *ctx;
     double t[ROUNDS];
 } cost_cfg;
+
+static double min_ns(cost_cfg *c, long steps)
+{
+    double t = INFINITY;
+    for (int r = 0; r < ROUNDS; r++)
+        t = fmin(t, c->t[r]);
+    return 1e9 * t / (double)steps;
+}
 
 static double median_ns(cost_cfg *c, long steps)
 {
@@ -702,6 +710,7 @@ static void measure_step_costs(void)
     cost.ns_raw = xcalloc((size_t)nm, sizeof(double));
     cost.ns_full = xcalloc((size_t)nm, sizeof(double));
     cost.ns_direct = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_full_min = xcalloc((size_t)nm, sizeof(double));
     cost.newton = xcalloc((size_t)nm, sizeof(double));
     for (int m = 0; m < nm; m++) {
         const suslov_method *me = suslov_method_get(m);
@@ -725,7 +734,10 @@ static void measure_step_costs(void)
     for (int m = 0; m < nm; m++) {
         cost.ns_raw[m] = median_ns(&cfg[m], COST_STEPS);
         cost.ns_full[m] = median_ns(&cfg[nm + m], COST_STEPS);
-        cost.ns_direct[m] = median_ns(&cfg[2 * nm + 2 + m], COST_STEPS);
+        /* the overhead compares the least-disturbed rounds: under load a median of 11 moves by more
+         * than the 10 % it is held to */
+        cost.ns_direct[m] = min_ns(&cfg[2 * nm + 2 + m], COST_STEPS);
+        cost.ns_full_min[m] = min_ns(&cfg[nm + m], COST_STEPS);
         cost.newton[m] = raw[m].newton;
     }
     cost.ns_gsl_rk4 = median_ns(&cfg[2 * nm], COST_STEPS);
@@ -1250,8 +1262,9 @@ static int print_step_targets(double *speedup)
         const suslov_method *me = suslov_method_get(m);
         if (!own_attitude(me))
             continue;
-        const double over = cost.ns_full[m] / cost.ns_direct[m] - 1.0;
-        printf("  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop): %+.1f %%\n",
+        const double over = cost.ns_full_min[m] / cost.ns_direct[m] - 1.0;
+        printf("  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop, fastest rounds): "
+               "%+.1f %%\n",
                over <= 0.10 ? "PASS" : "MISS", me->type->name, cost.ns_direct[m], 100.0 * over);
     }
     return implicit_pass;
