@@ -995,20 +995,20 @@ static void series_colour(int i, double rgb[3])
 static void draw_wp_notes(cairo_t *cr, double y)
 {
     static const char *const notes[] = {
-        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 (four a "
-        "decade):",
+        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 "
+        "(four a decade):",
         "GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through its own "
-        "gsl_odeiv2_evolve_apply "
-        "loop,",
-        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams (driver, "
-        "initial step 1e-3)"
+        "gsl_odeiv2_evolve_apply loop,",
+        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams "
+        "(driver, initial step 1e-3)"
 #ifdef SUSLOV_WITH_ODEINT
         "; Boost.Odeint",
         "runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive)"
 #endif
-        ". Each on (w1, w2, R), 11 unknowns, (w1, w2, q), 6 unknowns with R = R(q/|q|),",
-        "and (w1, w2) alone in (a), like our \"(w only)\" rows. Thick black: the peers' lower envelope. "
-        "Every point's time and error come from the same runs.",
+        ".",
+        "Each on (w1, w2, R), 11 unknowns, on (w1, w2, q), 6 unknowns with R = R(q/|q|), and, in (a), "
+        "on (w1, w2) alone, like our \"(w only)\" rows.",
+        "Thick black: the peers' lower envelope. Every point's time and error come from the same runs.",
         "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a long-double "
         "reference R(t) (error ~1e-17).",
     };
@@ -1451,8 +1451,8 @@ static int write_figures(const char *figdir)
     int nours = 0;
     for (int i = 0; i < nseries; i++)
         nours += S[i]->ours;
-    /* tall enough for the legend (two columns of 11 px rows from y = 400) and six lines of notes */
-    const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 60.0 + 16.0);
+    /* tall enough for the legend (two columns of 11 px rows from y = 400) and eight lines of notes */
+    const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 84.0 + 16.0);
     if (plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
