@@ -4,7 +4,8 @@
 
 int suslov_row_finite(const suslov_row *r)
 {
-    int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2]) && isfinite(r->lambda);
+    int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2])
+          && isfinite(r->lambda);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             ok = ok && isfinite(r->R[i][j]);
@@ -15,6 +16,19 @@ int suslov_keep_last(void *ctx, const suslov_row *row)
 {
     *(suslov_row *)ctx = *row;
     return 0;
+}
+
+/* Every step's blow-up check, without building R: w, lambda and the attitude as stored (a unit
+ * quaternion, or the matrix; R(q) of a finite unit q is finite, and lo is finite with hi). */
+static int state_finite(const double w[3], double lambda, const suslov_attitude *a)
+{
+    int ok = isfinite(w[0]) && isfinite(w[1]) && isfinite(w[2]) && isfinite(lambda);
+    if (a->r_stale)
+        return ok && isfinite(a->q[0]) && isfinite(a->q[1]) && isfinite(a->q[2]) && isfinite(a->q[3]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            ok = ok && isfinite(a->hi[i][j]);
+    return ok;
 }
 
 int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit, void *ctx,
@@ -33,8 +47,8 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
     for (long k = 0; k < cfg->steps; k++) {
         double w_next[3], lambda;
         suslov_step_stats st;
-        const int status = suslov_step_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w, w_next,
-                                            &lambda, &st);
+        const int status = suslov_step_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w,
+                                            w_next, &lambda, &st);
         report->newton_iterations += st.iterations;
         if (st.iterations > report->max_iterations)
             report->max_iterations = st.iterations;
@@ -51,14 +65,16 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
         row.w[1] = w_next[1];
         row.w[2] = w_next[2];
         row.lambda = lambda;
-        suslov_attitude_get(&att, row.R);
-        if (!suslov_row_finite(&row)) {
+        const int emitted = row.k % cfg->every == 0 || row.k == cfg->steps;
+        if (emitted) /* R only for the rows written */
+            suslov_attitude_get(&att, row.R);
+        if (!state_finite(row.w, row.lambda, &att) || (emitted && !suslov_row_finite(&row))) {
             report->step = row.k;
             report->t = row.t;
             report->stats = st;
             return SUSLOV_RUN_BLOWUP;
         }
-        if ((row.k % cfg->every == 0 || row.k == cfg->steps) && emit(ctx, &row))
+        if (emitted && emit(ctx, &row))
             return SUSLOV_RUN_STOPPED;
     }
     return SUSLOV_RUN_OK;

@@ -6,6 +6,16 @@
 const double SUSLOV_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
 const double SUSLOV_PAPER_OMEGA0[2] = {0.4, 0.5};
 
+/* ||fA||_2, the largest singular value of the 2x2 matrix in closed form,
+ * s^2 = (F + sqrt(F^2 - 4 det^2)) / 2 with F the squared Frobenius norm; rounded up by a few
+ * ulps, so that the bound stays a bound after rounding. */
+static double norm2x2(const double M[2][2])
+{
+    const double F = M[0][0] * M[0][0] + M[0][1] * M[0][1] + M[1][0] * M[1][0] + M[1][1] * M[1][1];
+    const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+    return sqrt(0.5 * (F + sqrt(fmax(F * F - 4.0 * det * det, 0.0)))) * (1.0 + 1e-14);
+}
+
 int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errlen)
 {
     for (int i = 0; i < 9; i++) {
@@ -34,6 +44,8 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
     m->fA[0][1] = -I[4] / m->det_m; /* -I22 */
     m->fA[1][0] = I[0] / m->det_m;  /*  I11 */
     m->fA[1][1] = I[3] / m->det_m;  /*  I21 */
+    m->norm_fA = norm2x2(m->fA);
+    m->norm_b = hypot(m->b[0], m->b[1]) * (1.0 + 1e-15);
     return 0;
 }
 

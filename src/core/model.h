@@ -16,6 +16,9 @@ typedef struct {
     double b[2];     /* (I31, I32): c(w) = I_3i w_i drives the motion */
     double fA[2][2]; /* (ContDyn) as f = c(w) fA w: the printed coefficients over |I_m| */
     double inv_det_m;
+    /* |b|_2 and ||fA||_2, rounded up, so |c(v) fA u| <= K |v| |u| with K = norm_b norm_fA: the
+     * majorant that bounds the Taylor steps (step_taylor.c) */
+    double norm_b, norm_fA;
 } suslov_model;
 
 /* The paper's body: I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] and w(0) = (0.4, 0.5). */

@@ -12,7 +12,7 @@ static void unit(const double q[4], double u[4])
 }
 
 /* R(s, v) = I + 2 s v^ + 2 v^ v^ for a unit quaternion, written out entry by entry. */
-static void rotation_of_unit(const double u[4], double R[3][3])
+void quat_unit_rotation(const double u[4], double R[3][3])
 {
     const double s = u[0], x = u[1], y = u[2], z = u[3];
     R[0][0] = 1.0 - 2.0 * (y * y + z * z);
@@ -30,7 +30,7 @@ void quat_rotation(const double q[4], double R[3][3])
 {
     double u[4];
     unit(q, u);
-    rotation_of_unit(u, R);
+    quat_unit_rotation(u, R);
 }
 
 void quat_from_rotation(const double R[3][3], double q[4])
@@ -73,10 +73,11 @@ void quat_of_attitude(const suslov_attitude *a, double q[4])
     quat_from_rotation(R, q);
 }
 
+/* The matrix is built only when asked for (suslov_attitude_get): a method that carries q builds
+ * no matrix on the steps whose rows nobody reads. */
 void quat_to_attitude(const double q[4], suslov_attitude *a)
 {
     unit(q, a->q);
-    rotation_of_unit(a->q, a->hi);
-    memset(a->lo, 0, sizeof a->lo);
     a->has_q = 1;
+    a->r_stale = 1;
 }

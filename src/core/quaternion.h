@@ -36,5 +36,7 @@ void quat_rotation(const double q[4], double R[3][3]);
 #include "reconstruct.h"
 void quat_of_attitude(const suslov_attitude *a, double q[4]);
 void quat_to_attitude(const double q[4], suslov_attitude *a);
+/* R(q) for a unit quaternion q (no normalisation). */
+void quat_unit_rotation(const double q[4], double R[3][3]);
 
 #endif

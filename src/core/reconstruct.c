@@ -14,10 +14,15 @@ void suslov_attitude_identity(suslov_attitude *a)
     a->q[0] = 1.0;
     a->q[1] = a->q[2] = a->q[3] = 0.0;
     a->has_q = 1;
+    a->r_stale = 0;
 }
 
 void suslov_attitude_get(const suslov_attitude *a, double R[3][3])
 {
+    if (a->r_stale) {
+        quat_unit_rotation(a->q, R);
+        return;
+    }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             R[i][j] = a->hi[i][j] + a->lo[i][j];
@@ -66,8 +71,13 @@ void suslov_reconstruct_quat(suslov_recon kind, double eps, double q[4], const d
 void suslov_attitude_increment(suslov_attitude *a, const double D[3][3])
 {
     double R[3][3], dR[3][3];
-    a->has_q = 0;
     suslov_attitude_get(a, R);
+    if (a->r_stale) { /* the matrix from here on */
+        memcpy(a->hi, R, sizeof R);
+        memset(a->lo, 0, sizeof a->lo);
+        a->r_stale = 0;
+    }
+    a->has_q = 0;
     mat3_mul(dR, R, D);
     /* Kahan: hi + lo + dR, keeping what the addition to hi rounds away in lo. */
     for (int i = 0; i < 3; i++)

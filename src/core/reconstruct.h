@@ -30,6 +30,9 @@ typedef struct {
      * reconstructions clear has_q. */
     double q[4];
     int has_q;
+    /* hi and lo are not built yet: R is R(q), made when asked for (suslov_attitude_get), so a
+     * method that carries q builds no matrix on the steps whose rows nobody reads. */
+    int r_stale;
 } suslov_attitude;
 
 void suslov_attitude_identity(suslov_attitude *a);

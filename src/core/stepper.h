@@ -8,8 +8,8 @@
 #include "model.h"
 #include "reconstruct.h"
 
-/* SUSLOV_STEP_DIVERGED: an explicit series step beyond its radius of convergence (its last term
- * in stats.residual, |w^k| in stats.scale). */
+/* SUSLOV_STEP_DIVERGED: an explicit series step beyond the radius its series is proved to
+ * converge in (the step over that radius in stats.residual, |w^k|_2 in stats.scale). */
 enum {
     SUSLOV_STEP_OK = 0,
     SUSLOV_STEP_NO_CONVERGENCE = 1,

@@ -6,6 +6,7 @@
 
 #include "model.h"
 
+#include <gsl/gsl_odeiv2.h>
 #include <stddef.h>
 
 /* GSL odeiv2 right-hand sides; params is the suslov_model. */
@@ -16,5 +17,36 @@ int suslov_peer_rhs_w(double t, const double y[], double f[], void *params);
 void suslov_peer_initial(size_t dim, const double w0[2], double *y);
 /* R of the state: the 3x3 block, or R(q/|q|). */
 void suslov_peer_attitude(size_t dim, const double *y, double R[3][3]);
+
+/* One configuration of an adaptive GSL peer: stepper, formulation (dim 11, 6 or 2), API (the
+ * driver or the evolve loop), abs = rel tolerance and initial step. Every suslov_peer_run starts
+ * from the same state, the step size included (gsl_odeiv2_driver_reset keeps the step the
+ * previous run ended with; suslov_peer_run resets it to hstart), so a repeated (timed) run
+ * gives bit for bit the result of the first. */
+typedef enum { SUSLOV_PEER_DRIVER = 0, SUSLOV_PEER_EVOLVE = 1 } suslov_peer_api;
+
+typedef struct {
+    const gsl_odeiv2_step_type *type;
+    suslov_peer_api api;
+    size_t dim;
+    double tol, hstart;
+    gsl_odeiv2_system sys;
+    gsl_odeiv2_driver *d;                     /* the driver API */
+    gsl_odeiv2_step *s;                       /* the evolve API */
+    gsl_odeiv2_control *c;
+    gsl_odeiv2_evolve *e;
+} suslov_peer;
+
+/* A run that needs more steps than this has lost its way (its tolerance below what round-off
+ * allows, where the step shrinks without end): it fails instead of running for hours. */
+#define SUSLOV_PEER_MAX_STEPS 200000UL
+
+/* Returns 0, or -1 when GSL cannot allocate. */
+int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_step_type *type, size_t dim,
+                     suslov_peer_api api, double tol, double hstart);
+/* From y(0) (suslov_peer_initial) to t = T with the step reset to hstart; steps taken (accepted
+ * and rejected) in *steps. Returns the GSL status. */
+int suslov_peer_run(suslov_peer *p, const double w0[2], double T, double *y, long *steps);
+void suslov_peer_close(suslov_peer *p);
 
 #endif

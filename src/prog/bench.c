@@ -3,15 +3,17 @@
  * as PASS/MISS lines (never a failing test: the machine is shared and noisy).
  * Usage: bench FIGDIR DATADIR
  *
- * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]):
- *   GSL odeiv2 rk8pd, rkck, rkf45, msadams through gsl_odeiv2_driver_apply, abs = rel = tol,
- *   tol = 1e-3 ... 1e-14 (four a decade), initial step 1e-3; Boost.Odeint runge_kutta_fehlberg78 (make_controlled)
- *   and bulirsch_stoer with integrate_adaptive, the same tolerances (only when built with
- *   SUSLOV_WITH_ODEINT, which make bench does). Each on three formulations: (w1, w2, R) with
- *   R' = R w^ (11 unknowns), (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the
- *   end (6 unknowns), and, for the w accuracies only, (w1, w2) alone (2 unknowns: what a user who
- *   needs only w runs; our Taylor methods get the same choice, "(w only)", their w-step without
- *   the attitude series). The "best peer" at an accuracy is the fastest of all these configurations.
+ * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]), at
+ * abs = rel tolerance 1e-3 ... 1e-15 (four a decade): GSL odeiv2 rk8pd and rkck through
+ * gsl_odeiv2_driver_apply and through a gsl_odeiv2_evolve_apply loop, each from initial step
+ * 1e-3, 1e-2, 0.1 and 1; rkf45 and msadams (driver, 1e-3); Boost.Odeint runge_kutta_fehlberg78
+ * (make_controlled) and bulirsch_stoer (integrate_adaptive) when built with SUSLOV_WITH_ODEINT
+ * (make bench does). Each on three formulations: (w1, w2, R) with R' = R w^ (11 unknowns),
+ * (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the end (6 unknowns), and, for the
+ * w accuracies only, (w1, w2) alone (2 unknowns; our Taylor methods get the same choice,
+ * "(w only)"). Every run of a configuration starts from the same state, its step size included
+ * (src/exp/peers.c), and the error credited to a point is the one its timed runs end with. The
+ * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.
  * Errors: |w(50) - w_n| against the closed form, dist(R(50), R_n) (MetMat) against the precise
  * long-double reference suslov_refatt_precise (good to ~1e-17, see refattitude.h). */
 #define _POSIX_C_SOURCE 200809L
@@ -43,12 +45,7 @@
 
 #define T_END 50.0
 #define T_LONG 1e4
-#define MAX_STEPS 2000000L  /* caps euler's sweep: 2e6 steps of T/N is ~0.1 s a point */
-/* Series: at most 3 per method (its reconstruction, cayley-mid, w alone) and MAXPEERS peers (4 GSL
- * steppers and 2 odeint ones, 3 formulations each); sized at start from the registry. */
-#define MAXPEERS 18
-static int MAXSERIES;
-#define MAXPTS 64
+#define MAX_STEPS 2000000L /* caps euler's sweep: 2e6 steps of T/N is ~0.1 s a point */
 /* The grids: a user of a fixed-step method picks N, a user of an adaptive peer picks tol. The
  * Taylor methods are swept at every N up to FINE_N (their cost per step is large and their error
  * falls like N^-p, so a factor sqrt 2 in N would skip up to two decades of error), and the peers
@@ -56,8 +53,8 @@ static int MAXSERIES;
  * error, and the peers' is never coarser than before (each decade point is still in it). */
 #define FINE_N 40
 #define TOLS_PER_DECADE 4
-#define NLEVELS 5
-static const double LEVELS[NLEVELS] = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+#define NLEVELS 6
+static const double LEVELS[NLEVELS] = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
 
 static volatile double sink; /* results are added here so that no run can be optimized away */
 static int progress_tty;
@@ -70,11 +67,45 @@ static void progress(const char *what)
     }
 }
 
+/* The bench's tables are sized from the counts (methods, series, points); running out of memory
+ * ends the bench. */
+static void *xcalloc(size_t n, size_t size)
+{
+    void *p = calloc(n, size);
+    if (!p) {
+        fprintf(stderr, "bench: out of memory\n");
+        exit(1);
+    }
+    return p;
+}
+
+static void *xrealloc(void *p, size_t n, size_t size)
+{
+    p = realloc(p, n * size);
+    if (!p) {
+        fprintf(stderr, "bench: out of memory\n");
+        exit(1);
+    }
+    return p;
+}
+
 /* ---- the problem ---- */
 
 static suslov_model model;
 static suslov_exact ex;
 static double w_T[2], R_T[3][3];
+
+/* ---- what a method is, for the bench: one predicate each, so no consumer compares names ---- */
+
+/* The Taylor methods carry their own quaternion attitude (no reconstruction to choose) and have
+ * a w-step that does not depend on the attitude series. */
+static int own_attitude(const suslov_method *me) { return !me->type->follows_recon; }
+
+/* Keeps E, w3 = 0 and R in SO(3) by construction, as the method's type says of itself. */
+static int keeps_structure(const suslov_method *me) { return me->type->conserves_energy; }
+
+/* A step made of several implicit substeps: the compositions. */
+static int composed(const suslov_method *me) { return me->type->implicit && me->type->substeps > 1; }
 
 /* ---- our methods through the driver (reconstruction included), as `suslov` runs them ---- */
 
@@ -95,13 +126,21 @@ static void dsp_fn(void *vctx)
     sink += r->last.w[0];
 }
 
-/* ---- w alone (no attitude): the same w-steps as the driver's, for a user who needs only w; the
- * peers get the same choice (2 unknowns) ---- */
+static int dsp_result(void *vctx, double w[2], double R[3][3])
+{
+    const dsp_run *r = vctx;
+    memcpy(w, r->last.w, 2 * sizeof(double));
+    memcpy(R, r->last.R, 9 * sizeof(double));
+    return r->rep.status == SUSLOV_STEP_OK;
+}
+
+/* ---- w alone (no attitude): the driver's w-steps without the reconstruction, for a user who
+ * needs only w (the peers get the same choice, 2 unknowns), and the per-step cost ---- */
 
 typedef struct {
     const suslov_stepper_type *st;
     long N;
-    double T, w[3];
+    double T, w[3], newton;
     int status;
 } w_run;
 
@@ -109,60 +148,59 @@ static void w_fn(void *vctx)
 {
     w_run *r = vctx;
     double w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam = 0.0;
+    long it = 0;
     suslov_step_stats stats;
     const double eps = r->T / (double)r->N;
     r->status = SUSLOV_STEP_OK;
     for (long k = 0; k < r->N && r->status == SUSLOV_STEP_OK; k++) {
         r->status = r->st->apply(&model, eps, w, x, &lam, &stats);
+        it += stats.iterations;
         w[0] = x[0];
         w[1] = x[1];
     }
-    r->w[0] = w[0];
-    r->w[1] = w[1];
+    memcpy(r->w, w, sizeof w);
+    r->newton = (double)it / (double)r->N;
     sink += w[0] + lam;
 }
 
-/* ---- GSL odeiv2 peers: (w, R) 11 unknowns, (w, q) 6 unknowns, w alone 2 (per-step cost);
- * the right-hand sides are src/exp/peers.c ---- */
+static int w_result(void *vctx, double w[2], double R[3][3])
+{
+    const w_run *r = vctx;
+    (void)R;
+    memcpy(w, r->w, 2 * sizeof(double));
+    return r->status == SUSLOV_STEP_OK;
+}
+
+/* ---- GSL odeiv2 peers (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2 ---- */
 
 typedef struct {
-    const gsl_odeiv2_step_type *type;
-    int fixed;    /* fixed step (apply_fixed_step) or adaptive (apply) */
-    double param; /* h or tolerance */
-    size_t dim;
-    long N;
-    double T;
-    gsl_odeiv2_system sys;
-    gsl_odeiv2_driver *d;
+    suslov_peer p;
     double y[11];
+    long steps;
     int status;
-} gsl_run;
+} peer_run;
 
-static void gsl_fn(void *vctx)
+static void peer_fn(void *vctx)
 {
-    gsl_run *g = vctx;
-    double t = 0.0;
-    suslov_peer_initial(g->dim, ex.w0, g->y);
-    gsl_odeiv2_driver_reset(g->d);
-    if (g->fixed) {
-        gsl_odeiv2_driver_reset_hstart(g->d, g->param);
-        g->status = gsl_odeiv2_driver_apply_fixed_step(g->d, &t, g->param, (unsigned long)g->N, g->y);
-    } else {
-        g->status = gsl_odeiv2_driver_apply(g->d, &t, g->T, g->y);
-    }
+    peer_run *g = vctx;
+    g->status = suslov_peer_run(&g->p, ex.w0, T_END, g->y, &g->steps);
     sink += g->y[0];
 }
 
-static void gsl_open(gsl_run *g)
+static void peer_long_fn(void *vctx)
 {
-    g->sys = (gsl_odeiv2_system){g->dim == 11 ? suslov_peer_rhs_wR : g->dim == 6 ? suslov_peer_rhs_wq : suslov_peer_rhs_w, NULL,
-                                 g->dim, &model};
-    const double tol = g->fixed ? 1e-6 : g->param;
-    g->d = gsl_odeiv2_driver_alloc_y_new(&g->sys, g->type, g->fixed ? g->param : 1e-3, tol, tol);
-    if (!g->d) {
-        fprintf(stderr, "bench: GSL driver allocation failed\n");
-        exit(1);
-    }
+    peer_run *g = vctx;
+    g->status = suslov_peer_run(&g->p, ex.w0, T_LONG, g->y, &g->steps);
+    sink += g->y[0];
+}
+
+static int peer_result(void *vctx, double w[2], double R[3][3])
+{
+    const peer_run *g = vctx;
+    memcpy(w, g->y, 2 * sizeof(double));
+    if (g->p.dim != 2)
+        suslov_peer_attitude(g->p.dim, g->y, R);
+    return g->status == GSL_SUCCESS;
 }
 
 #ifdef SUSLOV_WITH_ODEINT
@@ -181,32 +219,45 @@ static void odeint_fn(void *vctx)
     r->steps = suslov_odeint_run(r->o, r->T, r->y);
     sink += r->y[0];
 }
+
+static int odeint_result(void *vctx, double w[2], double R[3][3])
+{
+    const odeint_run *r = vctx;
+    memcpy(w, r->y, 2 * sizeof(double));
+    if (r->dim != 2)
+        suslov_peer_attitude(r->dim, r->y, R);
+    return 1;
+}
 #endif
 
 /* ---- work-precision series ---- */
 
+#define MAXPTS 64 /* per series: the grids below stop well before (about 50 N or tolerances) */
+
 typedef struct {
-    char name[64];
-    int ours;      /* 1: a registered method; 0: a peer */
+    char name[96];
+    int ours; /* 1: a registered method; 0: a peer */
     int preserves; /* keeps E, w3 = 0 and R in SO(3) by construction */
-    int w_only;    /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
+    int w_only; /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
     const char *method;
     suslov_recon recon;
+    const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
+    size_t dim;
+    suslov_peer_api api;
+    double hstart;
     int n;
     double param[MAXPTS], err_w[MAXPTS], err_R[MAXPTS], sec[MAXPTS], smin[MAXPTS], smax[MAXPTS];
     long steps[MAXPTS];
 } wp_series;
 
-static wp_series *S;
+static wp_series **S; /* grown one series at a time: as many as the registry and peers give */
 static int nseries;
 
 static wp_series *new_series(void)
 {
-    if (nseries >= MAXSERIES) {
-        fprintf(stderr, "bench: more than MAXSERIES = %d work-precision series\n", MAXSERIES);
-        exit(1);
-    }
-    return &S[nseries++];
+    S = xrealloc(S, (size_t)(nseries + 1), sizeof *S);
+    S[nseries] = xcalloc(1, sizeof **S);
+    return S[nseries++];
 }
 
 /* Every point of every series is timed in interleaved rounds: a batch of repeats lasting at
@@ -214,81 +265,113 @@ static wp_series *new_series(void)
  * burst of load from elsewhere then slows one round of every point alike. */
 #define WP_ROUNDS 7
 #define BATCH_SECONDS 1e-3
-#define MAXPOINTS (MAXSERIES * MAXPTS)
 
 typedef struct {
     void (*fn)(void *);
-    void *ctx;
-    int batch;
+    int (*result)(void *, double w[2], double R[3][3]); /* the state the last run ended in */
+    void *ctx; /* malloc'd by the sweep; owned by the point */
+    wp_series *s;
+    int i, batch;
     double t[WP_ROUNDS];
-    double *sec, *smin, *smax; /* where the result goes */
 } wp_point;
 
 static wp_point *points;
 static int npoints;
-static dsp_run *dsp_runs;
-static w_run *w_runs;
-static gsl_run *gsl_runs;
-#ifdef SUSLOV_WITH_ODEINT
-static odeint_run *odeint_runs;
-#endif
 
-static void add_point(void (*fn)(void *), void *ctx, wp_series *s, int i)
+static void add_point(void (*fn)(void *), int (*result)(void *, double[2], double[3][3]), void *ctx,
+                      wp_series *s, int i)
 {
-    points[npoints++] = (wp_point){fn, ctx, 1, {0}, &s->sec[i], &s->smin[i], &s->smax[i]};
+    points = xrealloc(points, (size_t)(npoints + 1), sizeof *points);
+    points[npoints++] = (wp_point){fn, result, ctx, s, i, 1, {0}};
 }
 
-/* Keeps a point unless the run failed or diverged (an error above 1 says nothing about speed
- * at any accuracy the targets ask for). Returns the index of the point or -1. */
-static int record(wp_series *s, double param, long steps, const double w[2], const double R[3][3])
+static void errors_of(const wp_series *s, const double w[2], const double R[3][3], double *ew, double *eR)
 {
-    const double ew = hypot(w[0] - w_T[0], w[1] - w_T[1]), eR = s->w_only ? INFINITY : so3_dist(R_T, R);
+    *ew = hypot(w[0] - w_T[0], w[1] - w_T[1]);
+    *eR = s->w_only ? INFINITY : so3_dist(R_T, R);
+}
+
+/* Runs ctx once and keeps the point unless the run failed or diverged (an error above 1 says
+ * nothing about speed at any accuracy the targets ask for). Returns 1 when kept; otherwise the
+ * caller frees ctx. */
+static int record(wp_series *s, double param, void (*fn)(void *),
+                  int (*result)(void *, double[2], double[3][3]), void *ctx)
+{
+    double w[2], R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, ew, eR;
+    fn(ctx);
+    if (s->n >= MAXPTS || !result(ctx, w, R))
+        return 0;
+    errors_of(s, w, R, &ew, &eR);
     if (!(ew < 1.0 && (s->w_only || eR < 1.0)))
-        return -1;
+        return 0;
     const int i = s->n++;
     s->param[i] = param;
-    s->steps[i] = steps;
     s->err_w[i] = ew;
     s->err_R[i] = eR;
-    return i;
+    add_point(fn, result, ctx, s, i);
+    return 1;
 }
 
-/* Our methods: the Taylor methods at every N from 2 to FINE_N, then by factors ~sqrt 2; the other
- * high-order ones from N = 4 by factors ~sqrt 2, the paper's low-order DSPs from N = 50 by
- * factors of 4; a sweep stops once both errors are below 1e-13 (ten times below the
- * finest target level: more steps only add round-off). */
+/* The N grid of our methods: the Taylor methods at every N from 2 to FINE_N, then by factors
+ * ~sqrt 2; the other high-order ones from N = 4 by factors ~sqrt 2, the paper's low-order DSPs
+ * from N = 50 by factors of 4. */
+static double next_N(double Nd, int fine, int high)
+{
+    return fine && Nd < FINE_N ? Nd + 1.0 : Nd * (high ? 1.4142135623730951 : 4.0);
+}
+
+/* A sweep stops once the errors are below SWEEP_FLOOR, ten times below the finest target level,
+ * or once they are below ROUNDOFF_ZONE and 1.4 times as many steps no longer halve them (which
+ * any method of order >= 2 does while truncation dominates): more steps then only add round-off
+ * (the compositions' floor is above 1e-15). */
+#define SWEEP_FLOOR 1e-15
+#define ROUNDOFF_ZONE 1e-12
+
+static double worst_err(const wp_series *s, int i)
+{
+    return fmax(s->err_w[i], s->w_only ? 0.0 : s->err_R[i]);
+}
+
+static int sweep_done(const wp_series *s)
+{
+    const int i = s->n - 1;
+    const double e = worst_err(s, i);
+    if (e < SWEEP_FLOOR)
+        return 1;
+    if (e > ROUNDOFF_ZONE)
+        return 0;
+    for (int j = i - 1; j >= 0; j--)
+        if ((double)s->steps[j] * 1.4 <= (double)s->steps[i])
+            return e > 0.5 * worst_err(s, j);
+    return 0;
+}
+
 static void sweep_ours(const suslov_method *me, suslov_recon recon)
 {
     wp_series *s = new_series();
     snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUSLOV_RECON_NAMES[recon]);
-    if (!me->type->follows_recon) /* the attitude is its own: no reconstruction */
+    const int fine = own_attitude(me), high = me->type->order > 4;
+    if (fine) /* the attitude is its own: no reconstruction */
         snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
     s->ours = 1;
     s->method = me->type->name;
     s->recon = recon;
-    const int high = me->type->order > 4;
-    s->preserves = me->type->conserves_energy;
-    double Nd = high ? 4.0 : 50.0;
+    s->preserves = keeps_structure(me);
     long prevN = 0;
-    const int fine = !me->type->implicit && high; /* cheap steps of high order */
-    if (fine)
-        Nd = 2.0;
-    for (; Nd <= (double)MAX_STEPS && s->n < MAXPTS;
-         Nd = fine && Nd < FINE_N ? Nd + 1.0 : Nd * (high ? 1.4142135623730951 : 4.0)) {
+    const double N0 = fine ? 2.0 : high ? 4.0 : 50.0;
+    for (double Nd = N0; Nd <= (double)MAX_STEPS && s->n < MAXPTS; Nd = next_N(Nd, fine, high)) {
         const long N = lround(Nd);
         if (N == prevN)
             continue;
         prevN = N;
-        dsp_run *r = &dsp_runs[npoints];
+        dsp_run *r = xcalloc(1, sizeof *r);
         *r = (dsp_run){me->type, recon, N, T_END, {0}, {0}};
-        dsp_fn(r);
-        if (r->rep.status != SUSLOV_STEP_OK)
+        if (!record(s, T_END / (double)N, dsp_fn, dsp_result, r)) {
+            free(r);
             continue;
-        const int i = record(s, T_END / (double)N, N, r->last.w, r->last.R);
-        if (i < 0)
-            continue;
-        add_point(dsp_fn, r, s, i);
-        if (s->err_w[i] < 1e-13 && s->err_R[i] < 1e-13)
+        }
+        s->steps[s->n - 1] = N;
+        if (sweep_done(s))
             break;
     }
 }
@@ -305,49 +388,51 @@ static void sweep_ours_w(const suslov_method *me)
     s->method = me->type->name;
     s->recon = me->recon;
     long prevN = 0;
-    for (double Nd = 2.0; Nd <= (double)MAX_STEPS && s->n < MAXPTS; Nd = Nd < FINE_N ? Nd + 1.0 : Nd * 1.4142135623730951) {
+    for (double Nd = 2.0; Nd <= (double)MAX_STEPS && s->n < MAXPTS; Nd = next_N(Nd, 1, 1)) {
         const long N = lround(Nd);
         if (N == prevN)
             continue;
         prevN = N;
-        w_run *r = &w_runs[npoints];
-        *r = (w_run){me->type, N, T_END, {0}, 0};
-        w_fn(r);
-        if (r->status != SUSLOV_STEP_OK)
+        w_run *r = xcalloc(1, sizeof *r);
+        *r = (w_run){me->type, N, T_END, {0}, 0.0, 0};
+        if (!record(s, T_END / (double)N, w_fn, w_result, r)) {
+            free(r);
             continue;
-        const int i = record(s, T_END / (double)N, N, r->w, NULL);
-        if (i < 0)
-            continue;
-        add_point(w_fn, r, s, i);
-        if (s->err_w[i] < 1e-13)
+        }
+        s->steps[s->n - 1] = N;
+        if (sweep_done(s))
             break;
     }
 }
 
 static const char *dim_name(size_t dim) { return dim == 11 ? "(w,R)" : dim == 6 ? "(w,q)" : "(w)"; }
 
-static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim)
+/* The peers' tolerances: four a decade, 10^(-3 - j/4), down to 1e-15. */
+#define PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / TOLS_PER_DECADE)
+#define PEER_TOL_MIN 0.99e-15
+
+static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, suslov_peer_api api, double hstart)
 {
     wp_series *s = new_series();
-    snprintf(s->name, sizeof s->name, "GSL %s %s", type->name, dim_name(dim));
+    snprintf(s->name, sizeof s->name, "GSL %s %s %s h0 %g", type->name, dim_name(dim),
+             api == SUSLOV_PEER_DRIVER ? "driver" : "evolve", hstart);
     s->w_only = dim == 2;
-    for (int j = 0; j < MAXPTS; j++) {
-        const double tol = pow(10.0, -3.0 - (double)j / TOLS_PER_DECADE);
-        if (tol < 0.99e-14)
-            break;
-        gsl_run *g = &gsl_runs[npoints];
-        *g = (gsl_run){.type = type, .param = tol, .dim = dim, .T = T_END};
-        gsl_open(g);
-        gsl_fn(g);
-        double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        if (dim != 2)
-            suslov_peer_attitude(dim, g->y, R);
-        const int i = g->status == GSL_SUCCESS ? record(s, tol, 0, g->y, R) : -1;
-        if (i < 0) {
-            gsl_odeiv2_driver_free(g->d);
+    s->type = type;
+    s->dim = dim;
+    s->api = api;
+    s->hstart = hstart;
+    for (int j = 0; j < MAXPTS && PEER_TOL(j) >= PEER_TOL_MIN; j++) {
+        peer_run *g = xcalloc(1, sizeof *g);
+        if (suslov_peer_open(&g->p, &model, type, dim, api, PEER_TOL(j), hstart) != 0) {
+            fprintf(stderr, "bench: GSL allocation failed\n");
+            exit(1);
+        }
+        if (!record(s, PEER_TOL(j), peer_fn, peer_result, g)) {
+            suslov_peer_close(&g->p);
+            free(g);
             continue;
         }
-        add_point(gsl_fn, g, s, i);
+        s->steps[s->n - 1] = g->steps;
     }
 }
 
@@ -355,40 +440,74 @@ static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim)
 static void sweep_odeint(int stepper, size_t dim)
 {
     wp_series *s = new_series();
-    snprintf(s->name, sizeof s->name, "Boost %s %s", stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer", dim_name(dim));
+    snprintf(s->name, sizeof s->name, "Boost %s %s",
+             stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer", dim_name(dim));
     s->w_only = dim == 2;
-    for (int j = 0; j < MAXPTS; j++) {
-        const double tol = pow(10.0, -3.0 - (double)j / TOLS_PER_DECADE);
-        if (tol < 0.99e-14)
-            break;
-        odeint_run *r = &odeint_runs[npoints];
-        *r = (odeint_run){suslov_odeint_open(stepper, (int)dim, tol, &model), dim, T_END, {0}, 0};
+    for (int j = 0; j < MAXPTS && PEER_TOL(j) >= PEER_TOL_MIN; j++) {
+        odeint_run *r = xcalloc(1, sizeof *r);
+        *r = (odeint_run){suslov_odeint_open(stepper, (int)dim, PEER_TOL(j), &model), dim, T_END, {0}, 0};
         if (!r->o) {
             fprintf(stderr, "bench: Boost.Odeint allocation failed\n");
             exit(1);
         }
-        odeint_fn(r);
-        double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        if (dim != 2)
-            suslov_peer_attitude(dim, r->y, R);
-        const int i = record(s, tol, r->steps, r->y, R);
-        if (i < 0) {
+        if (!record(s, PEER_TOL(j), odeint_fn, odeint_result, r)) {
             suslov_odeint_close(r->o);
+            free(r);
             continue;
         }
-        add_point(odeint_fn, r, s, i);
+        s->steps[s->n - 1] = r->steps;
     }
 }
 #endif
 
-static void time_points(void)
+static void calibrate_batches(void)
 {
-    for (int p = 0; p < npoints; p++) { /* calibrate the batches */
+    for (int p = 0; p < npoints; p++) {
         const double t0 = suslov_now();
         points[p].fn(points[p].ctx);
         const double t1 = suslov_now() - t0;
         points[p].batch = t1 >= BATCH_SECONDS ? 1 : (int)ceil(BATCH_SECONDS / fmax(t1, 1e-7));
     }
+}
+
+/* The errors the timed runs ended with, against the ones recorded: the same runs, so equal bit
+ * for bit. A point whose timed error differs is counted (the CHECK line) and keeps the larger
+ * error, so no configuration is credited with an accuracy its timed runs did not reach. */
+static int timed_errors_differ(void)
+{
+    int bad = 0;
+    for (int p = 0; p < npoints; p++) {
+        wp_series *s = points[p].s;
+        const int i = points[p].i;
+        double w[2], R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, ew, eR;
+        const int ok = points[p].result(points[p].ctx, w, R);
+        errors_of(s, w, R, &ew, &eR);
+        if (ok && ew == s->err_w[i] && (s->w_only || eR == s->err_R[i]))
+            continue;
+        bad++;
+        fprintf(stderr, "bench: %s at %g: timed runs end with errors %g, %g, recorded %g, %g\n", s->name,
+                s->param[i], ew, eR, s->err_w[i], s->err_R[i]);
+        s->err_w[i] = ok ? fmax(ew, s->err_w[i]) : INFINITY;
+        s->err_R[i] = ok ? fmax(eR, s->err_R[i]) : INFINITY;
+    }
+    return bad;
+}
+
+static void free_point(wp_point *pt)
+{
+    if (pt->fn == peer_fn)
+        suslov_peer_close(&((peer_run *)pt->ctx)->p);
+#ifdef SUSLOV_WITH_ODEINT
+    if (pt->fn == odeint_fn)
+        suslov_odeint_close(((odeint_run *)pt->ctx)->o);
+#endif
+    free(pt->ctx);
+}
+
+/* Returns the number of points whose timed runs' errors differ from the recorded ones. */
+static int time_points(void)
+{
+    calibrate_batches();
     for (int r = 0; r < WP_ROUNDS; r++) {
         char msg[64];
         snprintf(msg, sizeof msg, "work-precision, round %d of %d (%d points)", r + 1, WP_ROUNDS, npoints);
@@ -400,20 +519,17 @@ static void time_points(void)
             points[p].t[r] = (suslov_now() - t0) / points[p].batch;
         }
     }
+    const int bad = timed_errors_differ();
     for (int p = 0; p < npoints; p++) {
+        wp_series *s = points[p].s;
+        const int i = points[p].i;
         gsl_sort(points[p].t, 1, WP_ROUNDS);
-        *points[p].sec = gsl_stats_median_from_sorted_data(points[p].t, 1, WP_ROUNDS);
-        *points[p].smin = points[p].t[0];
-        *points[p].smax = points[p].t[WP_ROUNDS - 1];
+        s->sec[i] = gsl_stats_median_from_sorted_data(points[p].t, 1, WP_ROUNDS);
+        s->smin[i] = points[p].t[0];
+        s->smax[i] = points[p].t[WP_ROUNDS - 1];
+        free_point(&points[p]);
     }
-    for (int p = 0; p < npoints; p++) {
-        if (points[p].fn == gsl_fn)
-            gsl_odeiv2_driver_free(((gsl_run *)points[p].ctx)->d);
-#ifdef SUSLOV_WITH_ODEINT
-        if (points[p].fn == odeint_fn)
-            suslov_odeint_close(((odeint_run *)points[p].ctx)->o);
-#endif
-    }
+    return bad;
 }
 
 /* The fastest point reaching error <= level among the series selected by want (INFINITY if
@@ -427,12 +543,12 @@ static best_point fastest(double level, int which, int (*want)(const wp_series *
 {
     best_point b = {INFINITY, -1, -1};
     for (int i = 0; i < nseries; i++) {
-        if (!want(&S[i]))
+        if (!want(S[i]))
             continue;
-        for (int j = 0; j < S[i].n; j++) {
-            const double e = which ? S[i].err_R[j] : S[i].err_w[j];
-            if (e <= level && S[i].sec[j] < b.sec)
-                b = (best_point){S[i].sec[j], i, j};
+        for (int j = 0; j < S[i]->n; j++) {
+            const double e = which ? S[i]->err_R[j] : S[i]->err_w[j];
+            if (e <= level && S[i]->sec[j] < b.sec)
+                b = (best_point){S[i]->sec[j], i, j};
         }
     }
     return b;
@@ -445,21 +561,23 @@ static int is_ours_preserving(const wp_series *s) { return s->ours && s->preserv
  * error, by increasing time (the staircase drawn as one line). */
 typedef struct {
     int n;
-    double sec[MAXPEERS * MAXPTS], err[MAXPEERS * MAXPTS];
+    double *sec, *err; /* npoints each at most */
 } envelope;
 
 static envelope env[2];
 
 static void build_envelope(int which, envelope *e)
 {
-    static double sec[MAXPEERS * MAXPTS], err[MAXPEERS * MAXPTS];
-    static size_t idx[MAXPEERS * MAXPTS];
+    double *sec = xcalloc((size_t)npoints, sizeof *sec), *err = xcalloc((size_t)npoints, sizeof *err);
+    size_t *idx = xcalloc((size_t)npoints, sizeof *idx);
+    e->sec = xcalloc((size_t)npoints, sizeof *e->sec);
+    e->err = xcalloc((size_t)npoints, sizeof *e->err);
     int n = 0;
     for (int i = 0; i < nseries; i++)
-        if (!S[i].ours)
-            for (int j = 0; j < S[i].n; j++) {
-                sec[n] = S[i].sec[j];
-                err[n] = which ? S[i].err_R[j] : S[i].err_w[j];
+        if (!S[i]->ours)
+            for (int j = 0; j < S[i]->n; j++) {
+                sec[n] = S[i]->sec[j];
+                err[n] = which ? S[i]->err_R[j] : S[i]->err_w[j];
                 n++;
             }
     gsl_sort_index(idx, sec, 1, (size_t)n);
@@ -474,31 +592,47 @@ static void build_envelope(int which, envelope *e)
             e->n++;
         }
     }
+    free(sec);
+    free(err);
+    free(idx);
 }
 
 /* ---- per-step cost, for every registered method ---- */
 
-typedef struct {
-    const suslov_stepper_type *st;
-    long N;
-    double newton;
-} raw_run;
-
-static void raw_fn(void *vctx)
+/* The whole step (w and attitude) in a bare loop, no driver: what the driver's overhead is
+ * measured against. */
+static void direct_fn(void *vctx)
 {
-    raw_run *r = vctx;
+    dsp_run *r = vctx;
     double w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam = 0.0;
-    long it = 0;
+    suslov_attitude att;
     suslov_step_stats stats;
-    const double eps = T_END / (double)r->N;
+    const double eps = r->T / (double)r->N;
+    suslov_attitude_identity(&att);
     for (long k = 0; k < r->N; k++) {
-        r->st->apply(&model, eps, w, x, &lam, &stats);
-        it += stats.iterations;
+        suslov_step_full(r->st, &model, eps, r->recon, &att, w, x, &lam, &stats);
         w[0] = x[0];
         w[1] = x[1];
     }
-    r->newton = (double)it / (double)r->N;
-    sink += w[0] + lam;
+    sink += w[0] + lam + att.q[0];
+}
+
+/* GSL's rk4 on w alone through gsl_odeiv2_driver_apply_fixed_step: the library's cost of a step. */
+typedef struct {
+    gsl_odeiv2_system sys;
+    gsl_odeiv2_driver *d;
+    long N;
+    double h, y[2];
+} gsl_fixed_run;
+
+static void gsl_fixed_fn(void *vctx)
+{
+    gsl_fixed_run *g = vctx;
+    double t = 0.0;
+    suslov_peer_initial(2, ex.w0, g->y);
+    gsl_odeiv2_driver_reset_hstart(g->d, g->h);
+    gsl_odeiv2_driver_apply_fixed_step(g->d, &t, g->h, (unsigned long)g->N, g->y);
+    sink += g->y[0];
 }
 
 typedef struct {
@@ -518,7 +652,9 @@ static void exact_fn(void *vctx)
 
 typedef struct {
     int n;
-    double *ns_raw, *ns_full, *newton, ns_gsl_rk4, ns_exact; /* one per method */
+    /* n each, one per registered method: the w-step, the whole step through the driver and in a
+     * bare loop, Newton iterations per step */
+    double *ns_raw, *ns_full, *ns_direct, *ns_full_min, *newton, ns_gsl_rk4, ns_exact;
 } step_costs;
 
 static step_costs cost;
@@ -532,50 +668,79 @@ typedef struct {
     double t[ROUNDS];
 } cost_cfg;
 
+static double min_ns(cost_cfg *c, long steps)
+{
+    double t = INFINITY;
+    for (int r = 0; r < ROUNDS; r++)
+        t = fmin(t, c->t[r]);
+    return 1e9 * t / (double)steps;
+}
+
 static double median_ns(cost_cfg *c, long steps)
 {
     gsl_sort(c->t, 1, ROUNDS);
     return 1e9 * gsl_stats_median_from_sorted_data(c->t, 1, ROUNDS) / (double)steps;
 }
 
-static void measure_step_costs(void)
+static void take_costs(cost_cfg *cfg, int n)
 {
-    const int nm = suslov_method_count();
-    raw_run raw[nm];
-    dsp_run rec[nm];
-    cost_cfg cfg[2 * nm + 2];
-    for (int m = 0; m < nm; m++) {
-        const suslov_method *me = suslov_method_get(m);
-        raw[m] = (raw_run){me->type, COST_STEPS, 0.0};
-        rec[m] = (dsp_run){me->type, me->recon, COST_STEPS, T_END, {0}, {0}};
-        cfg[m] = (cost_cfg){raw_fn, &raw[m], {0}};
-        cfg[nm + m] = (cost_cfg){dsp_fn, &rec[m], {0}};
-    }
-    gsl_run g = {.type = gsl_odeiv2_step_rk4, .fixed = 1, .param = T_END / (double)COST_STEPS, .dim = 2,
-                 .N = COST_STEPS, .T = T_END};
-    gsl_open(&g);
-    exact_run e = {COST_STEPS};
-    cfg[2 * nm] = (cost_cfg){gsl_fn, &g, {0}};
-    cfg[2 * nm + 1] = (cost_cfg){exact_fn, &e, {0}};
     for (int r = 0; r < ROUNDS; r++) {
         char msg[64];
         snprintf(msg, sizeof msg, "per-step costs, round %d of %d", r + 1, ROUNDS);
         progress(msg);
-        for (int c = 0; c < 2 * nm + 2; c++) {
+        for (int c = 0; c < n; c++) {
             const double t0 = suslov_now();
             cfg[c].fn(cfg[c].ctx);
             cfg[c].t[r] = suslov_now() - t0;
         }
     }
+}
+
+static void measure_step_costs(void)
+{
+    const int nm = suslov_method_count();
+    w_run *raw = xcalloc((size_t)nm, sizeof *raw);
+    dsp_run *rec = xcalloc((size_t)nm, sizeof *rec);
+    cost_cfg *cfg = xcalloc((size_t)(3 * nm + 2), sizeof *cfg); /* raw, driver, GSL, exact, direct */
+    cost = (step_costs){.n = nm};
+    cost.ns_raw = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_full = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_direct = xcalloc((size_t)nm, sizeof(double));
+    cost.ns_full_min = xcalloc((size_t)nm, sizeof(double));
+    cost.newton = xcalloc((size_t)nm, sizeof(double));
+    for (int m = 0; m < nm; m++) {
+        const suslov_method *me = suslov_method_get(m);
+        raw[m] = (w_run){me->type, COST_STEPS, T_END, {0}, 0.0, 0};
+        rec[m] = (dsp_run){me->type, me->recon, COST_STEPS, T_END, {0}, {0}};
+        cfg[m] = (cost_cfg){w_fn, &raw[m], {0}};
+        cfg[nm + m] = (cost_cfg){dsp_fn, &rec[m], {0}};
+        cfg[2 * nm + 2 + m] = (cost_cfg){direct_fn, &rec[m], {0}};
+    }
+    gsl_fixed_run g = {
+        {suslov_peer_rhs_w, NULL, 2, &model}, NULL, COST_STEPS, T_END / (double)COST_STEPS, {0}};
+    if (!(g.d = gsl_odeiv2_driver_alloc_y_new(&g.sys, gsl_odeiv2_step_rk4, g.h, 1e-6, 1e-6))) {
+        fprintf(stderr, "bench: GSL allocation failed\n");
+        exit(1);
+    }
+    exact_run e = {COST_STEPS};
+    cfg[2 * nm] = (cost_cfg){gsl_fixed_fn, &g, {0}};
+    cfg[2 * nm + 1] = (cost_cfg){exact_fn, &e, {0}};
+    take_costs(cfg, 3 * nm + 2);
     gsl_odeiv2_driver_free(g.d);
-    cost.n = nm;
     for (int m = 0; m < nm; m++) {
         cost.ns_raw[m] = median_ns(&cfg[m], COST_STEPS);
         cost.ns_full[m] = median_ns(&cfg[nm + m], COST_STEPS);
+        /* the overhead compares the least-disturbed rounds: under load a median of 11 moves by more
+         * than the 10 % it is held to */
+        cost.ns_direct[m] = min_ns(&cfg[2 * nm + 2 + m], COST_STEPS);
+        cost.ns_full_min[m] = min_ns(&cfg[nm + m], COST_STEPS);
         cost.newton[m] = raw[m].newton;
     }
     cost.ns_gsl_rk4 = median_ns(&cfg[2 * nm], COST_STEPS);
     cost.ns_exact = median_ns(&cfg[2 * nm + 1], COST_STEPS);
+    free(raw);
+    free(rec);
+    free(cfg);
 }
 
 /* ---- the long run: structure errors at T = 1e4 ---- */
@@ -583,9 +748,10 @@ static void measure_step_costs(void)
 typedef struct {
     char name[64];
     double orth, energy, w3; /* max over the run of |R^T R - I|, |E - E0|, |w3| */
+    int ours;
 } longrun_result;
 
-static longrun_result *LR;
+static longrun_result *LR; /* nseries at most */
 static int nlr;
 
 typedef struct {
@@ -601,56 +767,136 @@ static int lr_emit(void *vctx, const suslov_row *row)
     return 0;
 }
 
+static void long_run_ours(const wp_series *s, int j, lr_acc *a)
+{
+    const suslov_method *me = suslov_method_by_name(s->method);
+    const double eps = s->param[j];
+    const long N = lround(T_LONG / eps);
+    const suslov_run_config cfg = {&model, me->type, s->recon, eps, N, N / 1000 > 0 ? N / 1000 : 1};
+    suslov_run_report rep;
+    suslov_run(&cfg, ex.w0, lr_emit, a, &rep);
+}
+
+/* For (w, q) the attitude is R(q/|q|), orthogonal by construction; ||q| - 1| is its drift,
+ * reported in place of |R^T R - I|. */
+static void long_run_peer(const wp_series *s, int j, lr_acc *a)
+{
+    gsl_odeiv2_system sys = {s->dim == 11 ? suslov_peer_rhs_wR : suslov_peer_rhs_wq, NULL, s->dim, &model};
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, s->type, s->hstart, s->param[j], s->param[j]);
+    double y[11], t = 0.0;
+    suslov_peer_initial(s->dim, ex.w0, y);
+    for (int k = 1; d && k <= 1000; k++) {
+        if (gsl_odeiv2_driver_apply(d, &t, T_LONG * k / 1000.0, y) != GSL_SUCCESS)
+            break;
+        double R[3][3];
+        suslov_peer_attitude(s->dim, y, R);
+        const double nq = sqrt(y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5]);
+        const double w[3] = {y[0], y[1], 0.0};
+        a->orth = fmax(a->orth, s->dim == 11 ? so3_orth_defect(R) : fabs(nq - 1.0));
+        a->energy = fmax(a->energy, fabs(suslov_energy(&model, w) - a->e0));
+    }
+    if (d)
+        gsl_odeiv2_driver_free(d);
+}
+
+/* The long-run peer: the one the issue measured, rk8pd through the driver from hstart 1e-3, on
+ * both attitude formulations. */
+static int long_run_wanted(const wp_series *s)
+{
+    if (s->ours)
+        return s->preserves && !s->w_only;
+    return s->type == gsl_odeiv2_step_rk8pd && s->api == SUSLOV_PEER_DRIVER && s->hstart == 1e-3
+        && s->dim != 2;
+}
+
 /* Our preserving methods at the step that reached attitude 1e-10 at t = 50 (matched accuracy),
  * the peers at the tolerance that did, sampled 1000 times over [0, T_LONG]. */
 static void long_runs(void)
 {
     const double E0 = suslov_energy(&model, ex.w0);
+    LR = xcalloc((size_t)nseries, sizeof *LR);
     for (int i = 0; i < nseries; i++) {
         int j = -1;
-        for (int k = 0; k < S[i].n && j < 0; k++)
-            if (S[i].err_R[k] <= 1e-10)
+        for (int k = 0; k < S[i]->n && j < 0; k++)
+            if (S[i]->err_R[k] <= 1e-10)
                 j = k;
-        if (j < 0 || (S[i].ours && !S[i].preserves))
+        if (j < 0 || !long_run_wanted(S[i]))
             continue;
-        if (!S[i].ours && strncmp(S[i].name, "GSL rk8pd", 9) != 0)
-            continue; /* the long-run peer: the one the issue measured, on both formulations */
         longrun_result *L = &LR[nlr++];
-        snprintf(L->name, sizeof L->name, "%.63s", S[i].name);
+        snprintf(L->name, sizeof L->name, "%.63s", S[i]->name);
         lr_acc a = {E0, 0.0, 0.0, 0.0};
-        if (S[i].ours) {
-            const suslov_method *me = suslov_method_by_name(S[i].method);
-            const double eps = S[i].param[j];
-            const long N = lround(T_LONG / eps);
-            const suslov_run_config cfg = {&model, me->type, S[i].recon, eps, N, N / 1000 > 0 ? N / 1000 : 1};
-            suslov_run_report rep;
-            suslov_run(&cfg, ex.w0, lr_emit, &a, &rep);
-        } else {
-            const size_t dim = strstr(S[i].name, "(w,R)") ? 11 : 6;
-            gsl_run g = {.type = gsl_odeiv2_step_rk8pd, .param = S[i].param[j], .dim = dim, .T = 0.0};
-            gsl_open(&g);
-            suslov_peer_initial(dim, ex.w0, g.y);
-            double t = 0.0;
-            for (int k = 1; k <= 1000; k++) {
-                if (gsl_odeiv2_driver_apply(g.d, &t, T_LONG * k / 1000.0, g.y) != GSL_SUCCESS)
-                    break;
-                double R[3][3];
-                if (dim == 11)
-                    memcpy(R, g.y + 2, sizeof R);
-                else
-                    quat_rotation(g.y + 2, R);
-                /* for (w, q) the attitude is R(q/|q|), orthogonal by construction; |q| - 1 is its
-                 * drift, reported in place of |R^T R - I| */
-                const double nq = sqrt(g.y[2] * g.y[2] + g.y[3] * g.y[3] + g.y[4] * g.y[4] + g.y[5] * g.y[5]);
-                const double w[3] = {g.y[0], g.y[1], 0.0};
-                a.orth = fmax(a.orth, dim == 11 ? so3_orth_defect(R) : fabs(nq - 1.0));
-                a.energy = fmax(a.energy, fabs(suslov_energy(&model, w) - E0));
-            }
-            gsl_odeiv2_driver_free(g.d);
-        }
+        (S[i]->ours ? long_run_ours : long_run_peer)(S[i], j, &a);
         L->orth = a.orth;
         L->energy = a.energy;
         L->w3 = a.w3;
+        L->ours = S[i]->ours;
+    }
+}
+
+/* ---- at T = 1e4 and equal error: our Taylor methods against rk8pd on (w, q) ---- */
+
+#define EQ_REPEATS 3 /* the minimum over a few runs: each is milliseconds long */
+
+static double min_seconds(void (*fn)(void *), void *ctx)
+{
+    double best = INFINITY;
+    for (int r = 0; r < EQ_REPEATS; r++) {
+        const double t0 = suslov_now();
+        fn(ctx);
+        best = fmin(best, suslov_now() - t0);
+    }
+    return best;
+}
+
+typedef struct {
+    double sec, err, tol;
+} long_point;
+
+/* rk8pd (w, q) through the driver from hstart 1e-3: the loosest of four tolerances a decade whose
+ * attitude error at T_LONG is at most err (sec = INFINITY when none down to 1e-15 is). */
+static long_point rk8pd_matching(double err, const double R_ref[3][3])
+{
+    for (int j = 0; PEER_TOL(j) >= PEER_TOL_MIN; j++) {
+        peer_run g = {0};
+        const double tol = PEER_TOL(j);
+        if (suslov_peer_open(&g.p, &model, gsl_odeiv2_step_rk8pd, 6, SUSLOV_PEER_DRIVER, tol, 1e-3) != 0)
+            break;
+        g.status = suslov_peer_run(&g.p, ex.w0, T_LONG, g.y, &g.steps);
+        double R[3][3];
+        suslov_peer_attitude(6, g.y, R);
+        const double e = so3_dist(R_ref, R);
+        long_point lp = {INFINITY, e, PEER_TOL(j)};
+        if (g.status == GSL_SUCCESS && e <= err)
+            lp.sec = min_seconds(peer_long_fn, &g);
+        suslov_peer_close(&g.p);
+        if (isfinite(lp.sec))
+            return lp;
+    }
+    return (long_point){INFINITY, INFINITY, 0.0};
+}
+
+/* Each Taylor method at the step that reached attitude 1e-10 at t = 50, run to T_LONG; the peer
+ * at the loosest tolerance that reaches the same error there. */
+static void print_equal_error_long(void)
+{
+    double w_ref[2], R_ref[3][3];
+    suslov_refatt_precise(&model, ex.w0, T_LONG, w_ref, R_ref);
+    for (int i = 0; i < nseries; i++) {
+        const wp_series *s = S[i];
+        const suslov_method *me = s->ours && !s->w_only ? suslov_method_by_name(s->method) : NULL;
+        int j = -1;
+        for (int k = 0; me && own_attitude(me) && k < s->n && j < 0; k++)
+            if (s->err_R[k] <= 1e-10)
+                j = k;
+        if (j < 0)
+            continue;
+        dsp_run r = {me->type, s->recon, lround(T_LONG / s->param[j]), T_LONG, {0}, {0}};
+        const double sec = min_seconds(dsp_fn, &r), err = so3_dist(R_ref, r.last.R);
+        const long_point p = rk8pd_matching(err, R_ref);
+        const double ratio = p.sec / sec;
+        printf("  %s T = 1e4 at equal error: %s (eps %.4g) %.3g s, error %.2g, vs GSL rk8pd (w,q) tol %.2g "
+               "%.3g s, error %.2g: %.2fx (target 3x)\n",
+               ratio >= 3.0 ? "PASS" : "MISS", s->name, s->param[j], sec, err, p.tol, p.sec, p.err, ratio);
     }
 }
 
@@ -658,8 +904,8 @@ static void long_runs(void)
 
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
-    snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method, SUSLOV_RECON_NAMES[s->recon],
-             s->param[j], s->steps[j]);
+    snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
+             SUSLOV_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
 }
 
 /* Runs `suslov ARGS --every N` and compares the last row's errors with the bench's: the same
@@ -696,13 +942,13 @@ static int reproduce(const char *suslov, const wp_series *s, int j, double *dw, 
 static void series_colour(int i, double rgb[3])
 {
     /* ours: hues around the wheel; peers: greys */
-    if (!S[i].ours) {
+    if (!S[i]->ours) {
         rgb[0] = rgb[1] = rgb[2] = 0.62;
         return;
     }
     int k = 0, n = 0;
     for (int j = 0; j < nseries; j++)
-        if (S[j].ours) {
+        if (S[j]->ours) {
             if (j == i)
                 k = n;
             n++;
@@ -711,16 +957,60 @@ static void series_colour(int i, double rgb[3])
     const int sector = (int)h;
     double r = 0, g = 0, b = 0;
     switch (sector) {
-    case 0: r = 1; g = x; break;
-    case 1: r = x; g = 1; break;
-    case 2: g = 1; b = x; break;
-    case 3: g = x; b = 1; break;
-    case 4: r = x; b = 1; break;
-    default: r = 1; b = x; break;
+    case 0:
+        r = 1;
+        g = x;
+        break;
+    case 1:
+        r = x;
+        g = 1;
+        break;
+    case 2:
+        g = 1;
+        b = x;
+        break;
+    case 3:
+        g = x;
+        b = 1;
+        break;
+    case 4:
+        r = x;
+        b = 1;
+        break;
+    default:
+        r = 1;
+        b = x;
+        break;
     }
     rgb[0] = v * r;
     rgb[1] = v * g * 0.85;
     rgb[2] = v * b;
+}
+
+/* What each peer was given, below the legend. */
+static void draw_wp_notes(cairo_t *cr, double y)
+{
+    static const char *const notes[] = {
+        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 "
+        "(four a decade):",
+        "GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through its own "
+        "gsl_odeiv2_evolve_apply loop,",
+        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams "
+        "(driver, initial step 1e-3)"
+#ifdef SUSLOV_WITH_ODEINT
+        "; Boost.Odeint",
+        "runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive)"
+#endif
+        ".",
+        "Each on (w1, w2, R), 11 unknowns, on (w1, w2, q), 6 unknowns with R = R(q/|q|), and, in (a), "
+        "on (w1, w2) alone, like our \"(w only)\" rows.",
+        "Thick black: the peers' lower envelope. Every point's time and error come from the same runs.",
+        "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a long-double "
+        "reference R(t) (error ~1e-17).",
+    };
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for (size_t i = 0; i < sizeof notes / sizeof notes[0]; i++)
+        plot_text(cr, 44, y + 12.0 * (double)i, notes[i], 8, 0, 0.5, 0);
 }
 
 #define WP_W 760.0
@@ -730,33 +1020,38 @@ static void draw_wp(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     static const int mk[6] = {PLOT_CIRCLE, PLOT_SQUARE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS, PLOT_DOT};
-    plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11, 0.5, 0.5, 1);
-    plot_style st[MAXSERIES + 1];
-    double rgb[MAXSERIES][3];
+    plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11, 0.5,
+              0.5, 1);
+    plot_style *st = xcalloc((size_t)nseries, sizeof *st), *ours = xcalloc((size_t)nseries, sizeof *ours);
+    double(*rgb)[3] = xcalloc((size_t)nseries, sizeof *rgb);
     for (int p = 0; p < 2; p++) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (int i = 0; i < nseries; i++) {
-            if (p && S[i].w_only)
+            if (p && S[i]->w_only)
                 continue; /* no attitude */
-            plot_extend(&x0, &x1, S[i].sec, (size_t)S[i].n, 1, 1);
-            plot_extend(&y0, &y1, p ? S[i].err_R : S[i].err_w, (size_t)S[i].n, 1, 1);
+            plot_extend(&x0, &x1, S[i]->sec, (size_t)S[i]->n, 1, 1);
+            plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
         }
         plot_axes ax;
-        plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
+        plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17),
+                       fmin(y1, 1.0), 1, 1);
         plot_pad(&ax.x0, &ax.x1, 1);
         plot_pad(&ax.y0, &ax.y1, 1);
-        plot_frame(&ax, "seconds per run", p ? "attitude error dist(R(50), R\xe2\x82\x99)" : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", p ? "(b)" : "(a)");
+        plot_frame(&ax, "seconds per run",
+                   p ? "attitude error dist(R(50), R\xe2\x82\x99)"
+                     : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
+                   p ? "(b)" : "(a)");
         int k = 0;
         for (int i = 0; i < nseries; i++) { /* peers first, underneath */
             series_colour(i, rgb[i]);
-            st[i] = plot_style_of(rgb[i], S[i].ours ? 1.1 : 0.5, 0, S[i].ours ? mk[k++ % 6] : PLOT_DOT, S[i].ours ? 3.5 : 2.0,
-                                  S[i].ours ? S[i].name : NULL);
+            st[i] = plot_style_of(rgb[i], S[i]->ours ? 1.1 : 0.5, 0, S[i]->ours ? mk[k++ % 6] : PLOT_DOT,
+                                  S[i]->ours ? 3.5 : 2.0, S[i]->ours ? S[i]->name : NULL);
         }
         for (int pass = 0; pass < 2; pass++)
             for (int i = 0; i < nseries; i++)
-                if (S[i].ours == pass && !(p && S[i].w_only)) {
-                    plot_series(&ax, S[i].sec, p ? S[i].err_R : S[i].err_w, (size_t)S[i].n, 1, &st[i]);
-                    plot_markers(&ax, S[i].sec, p ? S[i].err_R : S[i].err_w, (size_t)S[i].n, 1, &st[i]);
+                if (S[i]->ours == pass && !(p && S[i]->w_only)) {
+                    plot_series(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, &st[i]);
+                    plot_markers(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, &st[i]);
                 }
         const plot_style es = plot_style_of(PLOT_BLACK, 2.2, 0, PLOT_NONE, 0, NULL);
         plot_series(&ax, env[p].sec, env[p].err, (size_t)env[p].n, 1, &es);
@@ -768,9 +1063,8 @@ static void draw_wp(cairo_t *cr, void *vctx)
     }
     /* legend: ours in two columns below the panels, then what the peers were given */
     int nours = 0;
-    plot_style ours[MAXSERIES];
     for (int i = 0; i < nseries; i++)
-        if (S[i].ours)
+        if (S[i]->ours)
             ours[nours++] = st[i];
     const int half = (nours + 1) / 2;
     plot_axes la;
@@ -778,20 +1072,10 @@ static void draw_wp(cairo_t *cr, void *vctx)
     plot_legend(&la, ours, half, 0);
     plot_axes_init(&la, cr, 400, 385, 330, 120, 0, 1, 0, 1, 0, 0);
     plot_legend(&la, ours + half, nours - half, 0);
-    const double y = 400 + 11.0 * half + 12;
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    plot_text(cr, 44, y, "Peers (thin grey, one line per configuration): GSL odeiv2 rk8pd, rkck, rkf45, msadams (driver_apply, hstart 1e-3)"
-#ifdef SUSLOV_WITH_ODEINT
-              " and Boost.Odeint"
-#endif
-              , 8, 0, 0.5, 0);
-    plot_text(cr, 44, y + 12,
-#ifdef SUSLOV_WITH_ODEINT
-              "runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive), "
-#endif
-              "each at abs = rel tolerance 1e-3 ... 1e-14 (four a decade) on (w1, w2, R), 11 unknowns,", 8, 0, 0.5, 0);
-    plot_text(cr, 44, y + 24, "(w1, w2, q), 6 unknowns with R = R(q/|q|), and (w1, w2) alone in (a), like our \"(w only)\" rows. Thick black: the peers' lower envelope.", 8, 0, 0.5, 0);
-    plot_text(cr, 44, y + 36, "Dotted: the target accuracies 1e-4 ... 1e-12. Errors against the closed-form w(t) and a long-double reference R(t) (error ~1e-17).", 8, 0, 0.5, 0);
+    draw_wp_notes(cr, 400 + 11.0 * half + 12);
+    free(st);
+    free(ours);
+    free(rgb);
 }
 
 static void draw_cost(cairo_t *cr, void *vctx)
@@ -800,7 +1084,7 @@ static void draw_cost(cairo_t *cr, void *vctx)
     const int nb = cost.n + 2;
     const double W = 90.0 + 46.0 * nb, H = 280;
     plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
-    double v1[suslov_method_count() + 2], v2[suslov_method_count() + 2];
+    double *v1 = xcalloc((size_t)nb, sizeof *v1), *v2 = xcalloc((size_t)nb, sizeof *v2);
     for (int m = 0; m < cost.n; m++) {
         v1[m] = cost.ns_raw[m];
         v2[m] = cost.ns_full[m];
@@ -828,7 +1112,9 @@ static void draw_cost(cairo_t *cr, void *vctx)
             cairo_rectangle(cr, bx + 0.52 * bw, ax.y + ax.h - h2, 0.36 * bw, h2);
             cairo_fill(cr);
         }
-        const char *name = i < cost.n ? suslov_method_get(i)->type->name : i == cost.n ? "GSL rk4" : "exact \xcf\x89(t)";
+        const char *name = i < cost.n ? suslov_method_get(i)->type->name
+            : i == cost.n             ? "GSL rk4"
+                                      : "exact \xcf\x89(t)";
         cairo_save(cr);
         cairo_translate(cr, bx + 0.5 * bw, ax.y + ax.h + 5);
         cairo_rotate(cr, 0.7853981633974483); /* 45 degrees */
@@ -839,9 +1125,13 @@ static void draw_cost(cairo_t *cr, void *vctx)
         snprintf(lab, sizeof lab, "%.0f", i < cost.n ? v2[i] : v1[i]);
         plot_text(cr, bx + 0.5 * bw, ax.y + ax.h - fmax(h1, h2) - 8, lab, 7.0, 0.5, 0.0, 0);
     }
-    const plot_style leg[2] = {plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, PLOT_NONE, 0, "w-step only"),
-                               plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, PLOT_NONE, 0, "whole step (w, R), default reconstruction")};
+    const plot_style leg[2] = {
+        plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, PLOT_NONE, 0, "w-step only"),
+        plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, PLOT_NONE, 0,
+                      "whole step (w, R), default reconstruction")};
     plot_legend(&ax, leg, 2, 0);
+    free(v1);
+    free(v2);
 }
 
 /* ---- output ---- */
@@ -855,57 +1145,334 @@ static int write_csv(const char *path)
         return -1;
     }
     /* the method field is quoted: peer names such as "GSL rk8pd (w,q)" hold a comma */
-    fprintf(af.fp, "section,method,kind,preserves,parameter,steps,omega_error,attitude_error,seconds_median,seconds_min,"
-                   "seconds_max,ns_per_step,newton_per_step,suslov_args\n");
+    fprintf(
+        af.fp,
+        "section,method,kind,preserves,parameter,steps,omega_error,attitude_error,seconds_median,seconds_min,"
+        "seconds_max,ns_per_step,newton_per_step,suslov_args\n");
     for (int i = 0; i < nseries; i++)
-        for (int j = 0; j < S[i].n; j++) {
+        for (int j = 0; j < S[i]->n; j++) {
             args[0] = '\0';
-            if (S[i].ours)
-                args_of(&S[i], j, args, sizeof args);
+            if (S[i]->ours)
+                args_of(S[i], j, args, sizeof args);
             char eR[32] = ""; /* empty for a w-only row: no attitude */
-            if (!S[i].w_only)
-                snprintf(eR, sizeof eR, "%.6g", S[i].err_R[j]);
-            fprintf(af.fp, "work,\"%s\",%s,%s,%.17g,%ld,%.6g,%s,%.6g,%.6g,%.6g,,,%s\n", S[i].name, S[i].ours ? "ours" : "peer",
-                    S[i].preserves ? "yes" : "no", S[i].param[j], S[i].steps[j], S[i].err_w[j], eR, S[i].sec[j],
-                    S[i].smin[j], S[i].smax[j], args);
+            if (!S[i]->w_only)
+                snprintf(eR, sizeof eR, "%.6g", S[i]->err_R[j]);
+            fprintf(af.fp, "work,\"%s\",%s,%s,%.17g,%ld,%.6g,%s,%.6g,%.6g,%.6g,,,%s\n", S[i]->name,
+                    S[i]->ours ? "ours" : "peer", S[i]->preserves ? "yes" : "no", S[i]->param[j],
+                    S[i]->steps[j], S[i]->err_w[j], eR, S[i]->sec[j], S[i]->smin[j], S[i]->smax[j], args);
         }
     for (int m = 0; m < cost.n; m++) {
         const suslov_method *me = suslov_method_get(m);
         fprintf(af.fp, "step,%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, cost.ns_raw[m], cost.newton[m]);
-        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUSLOV_RECON_NAMES[me->recon], cost.ns_full[m],
-                cost.newton[m]);
+        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUSLOV_RECON_NAMES[me->recon],
+                cost.ns_full[m], cost.newton[m]);
     }
     fprintf(af.fp, "step,gsl-rk4-driver,peer,,,,,,,,,%.4g,,\n", cost.ns_gsl_rk4);
     fprintf(af.fp, "step,exact-omega,,,,,,,,,,%.4g,,\n", cost.ns_exact);
     for (int i = 0; i < nlr; i++)
-        fprintf(af.fp, "longrun,\"%s\",%s,,%g,,%.3g,%.3g,,,,,,\n", LR[i].name, strncmp(LR[i].name, "GSL", 3) ? "ours" : "peer",
-                T_LONG, LR[i].energy, LR[i].orth);
+        fprintf(af.fp, "longrun,\"%s\",%s,,%g,,%.3g,%.3g,,,,,,\n", LR[i].name,
+                strncmp(LR[i].name, "GSL", 3) ? "ours" : "peer", T_LONG, LR[i].energy, LR[i].orth);
     return atomic_file_commit(&af, err, sizeof err);
 }
 
-/* The tables sized from the registry, once. */
-static void alloc_tables(void)
+/* ---- the steps of main ---- */
+
+static int set_up_problem(void)
 {
-    const int nm = suslov_method_count();
-    MAXSERIES = 3 * nm + MAXPEERS;
-    S = calloc((size_t)MAXSERIES, sizeof *S);
-    LR = calloc((size_t)MAXSERIES, sizeof *LR);
-    points = calloc((size_t)MAXPOINTS, sizeof *points);
-    dsp_runs = calloc((size_t)MAXPOINTS, sizeof *dsp_runs);
-    w_runs = calloc((size_t)MAXPOINTS, sizeof *w_runs);
-    gsl_runs = calloc((size_t)MAXPOINTS, sizeof *gsl_runs);
-#ifdef SUSLOV_WITH_ODEINT
-    odeint_runs = calloc((size_t)MAXPOINTS, sizeof *odeint_runs);
-    if (!odeint_runs)
-        exit(1);
-#endif
-    cost.ns_raw = calloc((size_t)nm, sizeof *cost.ns_raw);
-    cost.ns_full = calloc((size_t)nm, sizeof *cost.ns_full);
-    cost.newton = calloc((size_t)nm, sizeof *cost.newton);
-    if (!S || !LR || !points || !dsp_runs || !w_runs || !gsl_runs || !cost.ns_raw || !cost.ns_full || !cost.newton) {
-        fprintf(stderr, "bench: out of memory\n");
-        exit(1);
+    char err[256];
+    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: the paper's inertia is rejected: %s\n", err);
+        return -1;
     }
+    suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
+    suslov_exact_omega(&ex, T_END, w_T);
+    double w_ref[2];
+    suslov_refatt_precise(&model, ex.w0, T_END, w_ref, R_T);
+    return 0;
+}
+
+static void sweep_all(void)
+{
+    progress("sweeping");
+    for (int m = 0; m < suslov_method_count(); m++) {
+        const suslov_method *me = suslov_method_get(m);
+        sweep_ours(me, me->recon);
+        if (own_attitude(me))
+            sweep_ours_w(me);
+        /* the symmetric Cayley reconstruction beside the default one, where it differs */
+        else if (me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
+            sweep_ours(me, SUSLOV_RECON_CAYLEY_MID);
+    }
+    /* the two the issue found fastest, in every configuration a user might pick */
+    const gsl_odeiv2_step_type *tuned[2] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck};
+    const double hstarts[4] = {1e-3, 1e-2, 0.1, 1.0};
+    const size_t dims[3] = {11, 6, 2};
+    for (int d = 0; d < 3; d++) {
+        for (int k = 0; k < 2; k++)
+            for (int api = 0; api < 2; api++)
+                for (int h = 0; h < 4; h++)
+                    sweep_gsl(tuned[k], dims[d], (suslov_peer_api)api, hstarts[h]);
+        sweep_gsl(gsl_odeiv2_step_rkf45, dims[d], SUSLOV_PEER_DRIVER, 1e-3);
+        sweep_gsl(gsl_odeiv2_step_msadams, dims[d], SUSLOV_PEER_DRIVER, 1e-3);
+#ifdef SUSLOV_WITH_ODEINT
+        for (int k = 0; k < 2; k++)
+            sweep_odeint(k, dims[d]);
+#endif
+    }
+}
+
+static void print_costs(void)
+{
+    printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS,
+           COST_STEPS, T_END / (double)COST_STEPS);
+    const int irk4 = suslov_method_index("rk4");
+    printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
+           "x our rk4");
+    for (int m = 0; m < cost.n; m++)
+        printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", suslov_method_get(m)->type->name, cost.ns_raw[m],
+               cost.ns_full[m], SUSLOV_RECON_NAMES[suslov_method_get(m)->recon], cost.newton[m],
+               cost.ns_raw[m] / cost.ns_raw[irk4]);
+    printf("  %-12s %10.1f\n", "GSL rk4", cost.ns_gsl_rk4);
+    printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", cost.ns_exact);
+}
+
+/* The per-step targets; returns 1 when every implicit step passes. */
+static int print_step_targets(double *speedup)
+{
+    const int irk4 = suslov_method_index("rk4");
+    *speedup = cost.ns_gsl_rk4 / cost.ns_raw[irk4];
+    printf(
+        "  %s our rk4 step is >= 5x faster than GSL rk4 through gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
+        *speedup >= 5 ? "PASS" : "MISS", *speedup);
+    int implicit_pass = 1;
+    for (int m = 0; m < cost.n; m++) {
+        const suslov_method *me = suslov_method_get(m);
+        if (!me->type->implicit || composed(me))
+            continue;
+        const double r = cost.ns_raw[m] / cost.ns_raw[irk4];
+        implicit_pass &= r <= 3;
+        printf("  %s an implicit %s step costs <= 3x our rk4 step: %.2fx (%.2f Newton iterations per step)\n",
+               r <= 3 ? "PASS" : "MISS", me->type->name, r, cost.newton[m]);
+    }
+    for (int m = 0; m < cost.n; m++) {
+        const suslov_method *me = suslov_method_get(m);
+        if (!own_attitude(me))
+            continue;
+        const double over = cost.ns_full_min[m] / cost.ns_direct[m] - 1.0;
+        printf("  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop, fastest rounds): "
+               "%+.1f %%\n",
+               over <= 0.10 ? "PASS" : "MISS", me->type->name, cost.ns_direct[m], 100.0 * over);
+    }
+    return implicit_pass;
+}
+
+/* The speed-up each level asks for over the best honest peer (issue 21): the 1e-4 target sits
+ * below the measured floor of any Taylor design there (fewest steps x cost per step). */
+static const double LEVEL_TARGET[NLEVELS] = {1.3, 2.2, 2.2, 3.0, 3.7, 4.5};
+
+/* The floor at a level: the fewest steps any of our explicit structure-preserving methods needs
+ * to reach it, times that method's measured cost per step (implicit steps are left out: their
+ * Newton iterations, hence their cost, depend on the step). INFINITY when none reaches it. */
+static double floor_seconds(double level, int which)
+{
+    double best = INFINITY;
+    for (int i = 0; i < nseries; i++) {
+        const wp_series *s = S[i];
+        const suslov_method *me = s->ours && s->preserves ? suslov_method_by_name(s->method) : NULL;
+        if (!me || me->type->implicit || (which && s->w_only))
+            continue;
+        const int m = suslov_method_index(s->method);
+        for (int j = 0; j < s->n; j++)
+            if ((which ? s->err_R[j] : s->err_w[j]) <= level)
+                best =
+                    fmin(best, (double)s->steps[j] * 1e-9 * (s->w_only ? cost.ns_raw[m] : cost.ns_full[m]));
+    }
+    return best;
+}
+
+static void print_level(int which, int l, int *pass, double *ratio)
+{
+    const best_point o = fastest(LEVELS[l], which, is_ours_preserving),
+                     p = fastest(LEVELS[l], which, is_peer);
+    const char *what = which ? "attitude" : "w";
+    *pass = 0;
+    *ratio = 0.0;
+    if (o.series < 0) {
+        printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods reaches it\n",
+               what, LEVELS[l]);
+        return;
+    }
+    const wp_series *os = S[o.series];
+    const double fl = floor_seconds(LEVELS[l], which);
+    printf(
+        "  %s %s accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s (fewest steps x cost per "
+        "step): %.2fx\n",
+        o.sec <= 1.15 * fl ? "PASS" : "MISS", what, LEVELS[l], o.sec, fl, o.sec / fl);
+    if (p.series < 0) {
+        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g); no peer configuration reaches "
+               "it\n",
+               what, LEVELS[l], o.sec, os->name, os->param[o.point]);
+        *pass = 1;
+        *ratio = INFINITY;
+        return;
+    }
+    *ratio = p.sec / o.sec;
+    *pass = *ratio >= LEVEL_TARGET[l];
+    printf(
+        "  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g) vs best peer %.3g s (%s, tol %.2g, its "
+        "timed runs' error %.2g): %.2fx (target %gx)\n",
+        *pass ? "PASS" : "MISS", what, LEVELS[l], o.sec, os->name, os->param[o.point], p.sec,
+        S[p.series]->name, S[p.series]->param[p.point],
+        which ? S[p.series]->err_R[p.point] : S[p.series]->err_w[p.point], *ratio, LEVEL_TARGET[l]);
+}
+
+static void print_long_runs(void)
+{
+    for (int i = 0; i < nlr; i++) {
+        if (LR[i].ours) {
+            const int ok = LR[i].orth <= 1e-13 && LR[i].energy <= 1e-13 && LR[i].w3 == 0.0;
+            printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g (targets 1e-13, "
+                   "1e-13, 0)\n",
+                   ok ? "PASS" : "MISS", LR[i].name, LR[i].orth, LR[i].energy, LR[i].w3);
+        } else {
+            printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: %s = %.2g, |E - E0| = "
+                   "%.2g\n",
+                   LR[i].name, strstr(LR[i].name, "(w,q)") ? "||q| - 1|" : "|R^T R - I|", LR[i].orth,
+                   LR[i].energy);
+        }
+    }
+}
+
+/* Every "ours" row reproduces with the suslov command: re-run the fastest preserving row at each
+ * attitude and each w level and compare its errors (the w error only for a w-only row). */
+static void check_reproduce(const char *argv0)
+{
+    char suslov[4096];
+    const char *slash = strrchr(argv0, '/');
+    snprintf(suslov, sizeof suslov, "%.*ssuslov", slash ? (int)(slash - argv0 + 1) : 0, argv0);
+    int tried = 0, ok = 0;
+    for (int l = 0; l < 2 * NLEVELS; l++) {
+        const best_point o = fastest(LEVELS[l % NLEVELS], l < NLEVELS, is_ours_preserving);
+        if (o.series < 0)
+            continue;
+        const wp_series *s = S[o.series];
+        double dw, dR;
+        tried++;
+        if (reproduce(suslov, s, o.point, &dw, &dR) == 0 && dw <= 1e-15 * fmax(1.0, s->err_w[o.point] * 1e6)
+            && dR <= 1e-15 * fmax(1.0, s->err_R[o.point] * 1e6))
+            ok++;
+        else
+            printf("  row not reproduced by suslov: %s eps %.17g\n", s->name, s->param[o.point]);
+    }
+    printf(
+        "  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",
+        ok == tried ? "CHECK ok:" : "CHECK FAILED:", ok, tried, suslov);
+}
+
+/* The numbers the companion text quotes. */
+static int write_tex(const char *path, double speedup, int implicit_pass, int pass[2][NLEVELS],
+                     double ratio[2][NLEVELS])
+{
+    char err[256];
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    const int irk4 = suslov_method_index("rk4"), imid = suslov_method_index("midpoint"),
+              ivar = suslov_method_index("variational");
+    fprintf(af.fp,
+            "%% Generated by make bench (src/prog/bench.c): do not edit.\n"
+            "\\newcommand{\\BenchRkNs}{%.3g}\n\\newcommand{\\BenchGslRkNs}{%.3g}\n"
+            "\\newcommand{\\BenchRkSpeedup}{%.3g}\n\\newcommand{\\BenchMidpointRatio}{%.3g}\n"
+            "\\newcommand{\\BenchVariationalRatio}{%.3g}\n\\newcommand{\\BenchExactNs}{%.3g}\n"
+            "\\newcommand{\\BenchMidpointNewton}{%.2g}\n\\newcommand{\\BenchVariationalNewton}{%.2g}\n",
+            cost.ns_raw[irk4], cost.ns_gsl_rk4, speedup, cost.ns_raw[imid] / cost.ns_raw[irk4],
+            cost.ns_raw[ivar] / cost.ns_raw[irk4], cost.ns_exact, cost.newton[imid], cost.newton[ivar]);
+    fprintf(af.fp, "\\newcommand{\\BenchPassRkSpeedup}{%s}\n\\newcommand{\\BenchPassImplicit}{%s}\n",
+            speedup >= 5 ? "PASS" : "MISS", implicit_pass ? "PASS" : "MISS");
+    static const char *lvl[NLEVELS] = {"Four", "Six", "Eight", "Ten", "Twelve", "Fourteen"};
+    for (int l = 0; l < NLEVELS; l++) {
+        /* three digits: a ratio of 1.96 must not print as "2" beside a MISS */
+        fprintf(af.fp, "\\newcommand{\\BenchRatioR%s}{%.3g}\n\\newcommand{\\BenchRatioW%s}{%.3g}\n", lvl[l],
+                ratio[1][l], lvl[l], ratio[0][l]);
+        fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l],
+                pass[1][l] ? "PASS" : "MISS", lvl[l], pass[0][l] ? "PASS" : "MISS");
+    }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* The "what to use when" data: at each level the fastest of ours and of the peers, from their
+ * timed runs, with the suslov arguments that reproduce ours (README, the companion). */
+static int write_what_to_use(const char *path)
+{
+    char err[256], args[256];
+    atomic_file af;
+    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    fprintf(af.fp,
+            "quantity\tlevel\tours\tours_seconds\tpeer\tpeer_tol\tpeer_seconds\tratio\ttarget\t"
+            "verdict\tsuslov_args\n");
+    for (int which = 1; which >= 0; which--)
+        for (int l = 0; l < NLEVELS; l++) {
+            const best_point o = fastest(LEVELS[l], which, is_ours_preserving),
+                             p = fastest(LEVELS[l], which, is_peer);
+            if (o.series < 0)
+                continue;
+            args_of(S[o.series], o.point, args, sizeof args);
+            const double ratio = p.series < 0 ? INFINITY : p.sec / o.sec;
+            fprintf(af.fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.3g\t%g\t%s\t%s\n",
+                    which ? "attitude" : "omega", LEVELS[l], S[o.series]->name, o.sec,
+                    p.series < 0 ? "none reaches it" : S[p.series]->name,
+                    p.series < 0 ? NAN : S[p.series]->param[p.point], p.series < 0 ? NAN : p.sec, ratio,
+                    LEVEL_TARGET[l], ratio >= LEVEL_TARGET[l] ? "PASS" : "MISS", args);
+        }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static int write_figures(const char *figdir)
+{
+    char err[256], path[4096];
+    snprintf(path, sizeof path, "%s/work_precision", figdir);
+    int nours = 0;
+    for (int i = 0; i < nseries; i++)
+        nours += S[i]->ours;
+    /* tall enough for the legend (two columns of 11 px rows from y = 400) and eight lines of notes */
+    const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 84.0 + 16.0);
+    if (plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/step_cost", figdir);
+    if (plot_write(path, 90.0 + 46.0 * (cost.n + 2), 280, draw_cost, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static void print_header(int differ)
+{
+    printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). Work-precision times: median over %d\n"
+           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. The machine is "
+           "shared and\n"
+           "noisy: compare the ratios measured in this same run rather than absolute times.\n"
+#ifndef SUSLOV_WITH_ODEINT
+           "(built without Boost.Odeint: `make bench` builds the bench with it)\n"
+#endif
+           "  %s %d of %d timed points end their timed runs with the error recorded for them\n\n",
+           T_END, WP_ROUNDS, BATCH_SECONDS, differ ? "CHECK FAILED:" : "CHECK ok:", npoints - differ,
+           npoints);
 }
 
 int main(int argc, char **argv)
@@ -915,45 +1482,12 @@ int main(int argc, char **argv)
         return 2;
     }
     gsl_set_error_handler_off();
-    alloc_tables();
     progress_tty = isatty(2);
-    char err[256], path[4096];
-    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: the paper's inertia is rejected: %s\n", err);
+    if (set_up_problem() != 0)
         return 1;
-    }
-    suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
-    suslov_exact_omega(&ex, T_END, w_T);
-    {
-        double w_ref[2];
-        suslov_refatt_precise(&model, ex.w0, T_END, w_ref, R_T);
-    }
     const double t_start = suslov_now();
-    progress("sweeping");
-    for (int m = 0; m < suslov_method_count(); m++) {
-        const suslov_method *me = suslov_method_get(m);
-        sweep_ours(me, me->recon);
-        if (!me->type->follows_recon)
-            sweep_ours_w(me);
-        /* the symmetric Cayley reconstruction beside the default one, where it differs */
-        if (me->type->follows_recon && me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
-            sweep_ours(me, SUSLOV_RECON_CAYLEY_MID);
-    }
-    const gsl_odeiv2_step_type *gsl_types[4] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck, gsl_odeiv2_step_rkf45,
-                                                gsl_odeiv2_step_msadams};
-    for (int k = 0; k < 4; k++) {
-        sweep_gsl(gsl_types[k], 11);
-        sweep_gsl(gsl_types[k], 6);
-        sweep_gsl(gsl_types[k], 2);
-    }
-#ifdef SUSLOV_WITH_ODEINT
-    for (int k = 0; k < 2; k++) {
-        sweep_odeint(k, 11);
-        sweep_odeint(k, 6);
-        sweep_odeint(k, 2);
-    }
-#endif
-    time_points();
+    sweep_all();
+    const int differ = time_points();
     build_envelope(0, &env[0]);
     build_envelope(1, &env[1]);
     measure_step_costs();
@@ -961,143 +1495,27 @@ int main(int argc, char **argv)
     long_runs();
     if (progress_tty)
         fprintf(stderr, "\r%70s\r", "");
-
-    printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). Work-precision times: median over %d\n"
-           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. The machine is shared and\n"
-           "noisy: compare the ratios measured in this same run rather than absolute times.\n"
-#ifndef SUSLOV_WITH_ODEINT
-           "(built without Boost.Odeint: `make bench` builds the bench with it)\n"
-#endif
-           "\n",
-           T_END, WP_ROUNDS, BATCH_SECONDS);
-    printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS, COST_STEPS, T_END / (double)COST_STEPS);
-    const int irk4 = suslov_method_index("rk4");
-    printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step", "x our rk4");
-    for (int m = 0; m < cost.n; m++)
-        printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", suslov_method_get(m)->type->name, cost.ns_raw[m], cost.ns_full[m],
-               SUSLOV_RECON_NAMES[suslov_method_get(m)->recon], cost.newton[m], cost.ns_raw[m] / cost.ns_raw[irk4]);
-    printf("  %-12s %10.1f\n", "GSL rk4", cost.ns_gsl_rk4);
-    printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", cost.ns_exact);
-
+    print_header(differ);
+    print_costs();
     printf("Targets:\n");
-    const double speedup = cost.ns_gsl_rk4 / cost.ns_raw[irk4];
-    printf("  %s our rk4 step is >= 5x faster than GSL rk4 through gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
-           speedup >= 5 ? "PASS" : "MISS", speedup);
-    int implicit_pass = 1;
-    for (int m = 0; m < cost.n; m++) {
-        const suslov_method *me = suslov_method_get(m);
-        if (!me->type->unknowns) /* a step with its own implicit equation */
-            continue;
-        const double r = cost.ns_raw[m] / cost.ns_raw[irk4];
-        implicit_pass &= r <= 3;
-        printf("  %s an implicit %s step costs <= 3x our rk4 step: %.2fx (%.2f Newton iterations per step)\n",
-               r <= 3 ? "PASS" : "MISS", me->type->name, r, cost.newton[m]);
-    }
+    double speedup;
+    const int implicit_pass = print_step_targets(&speedup);
     int pass[2][NLEVELS];
     double ratio[2][NLEVELS];
     for (int which = 1; which >= 0; which--)
-        for (int l = 0; l < NLEVELS; l++) {
-            const best_point o = fastest(LEVELS[l], which, is_ours_preserving), p = fastest(LEVELS[l], which, is_peer);
-            const char *what = which ? "attitude" : "w";
-            if (o.series < 0) {
-                printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods reaches it\n", what, LEVELS[l]);
-                pass[which][l] = 0;
-                ratio[which][l] = 0.0;
-                continue;
-            }
-            if (p.series < 0) {
-                printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g); no peer configuration reaches it\n", what,
-                       LEVELS[l], o.sec, S[o.series].name, S[o.series].param[o.point]);
-                pass[which][l] = 1;
-                ratio[which][l] = INFINITY;
-                continue;
-            }
-            ratio[which][l] = p.sec / o.sec;
-            pass[which][l] = ratio[which][l] >= 2.0;
-            printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g) vs best peer %.3g s (%s, tol %.0e): %.2fx (target 2x)\n",
-                   pass[which][l] ? "PASS" : "MISS", what, LEVELS[l], o.sec, S[o.series].name, S[o.series].param[o.point], p.sec,
-                   S[p.series].name, S[p.series].param[p.point], ratio[which][l]);
-        }
-    for (int i = 0; i < nlr; i++) {
-        const int ours = strncmp(LR[i].name, "GSL", 3) != 0;
-        if (ours) {
-            const int ok = LR[i].orth <= 1e-13 && LR[i].energy <= 1e-13 && LR[i].w3 == 0.0;
-            printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g (targets 1e-13, 1e-13, 0)\n", ok ? "PASS" : "MISS",
-                   LR[i].name, LR[i].orth, LR[i].energy, LR[i].w3);
-        } else {
-            printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: %s = %.2g, |E - E0| = %.2g\n", LR[i].name,
-                   strstr(LR[i].name, "(w,q)") ? "||q| - 1|" : "|R^T R - I|", LR[i].orth, LR[i].energy);
-        }
-    }
-
-    /* Every "ours" row reproduces with the suslov command: re-run the fastest preserving row at
-     * each attitude and each w level and compare its errors (the w error only for a w-only row). */
-    {
-        char suslov[4096];
-        const char *slash = strrchr(argv[0], '/');
-        snprintf(suslov, sizeof suslov, "%.*ssuslov", slash ? (int)(slash - argv[0] + 1) : 0, argv[0]);
-        int tried = 0, ok = 0;
-        for (int l = 0; l < 2 * NLEVELS; l++) {
-            const best_point o = fastest(LEVELS[l % NLEVELS], l < NLEVELS, is_ours_preserving);
-            if (o.series < 0)
-                continue;
-            double dw, dR;
-            tried++;
-            if (reproduce(suslov, &S[o.series], o.point, &dw, &dR) == 0 && dw <= 1e-15 * fmax(1.0, S[o.series].err_w[o.point] * 1e6)
-                && dR <= 1e-15 * fmax(1.0, S[o.series].err_R[o.point] * 1e6))
-                ok++;
-            else
-                printf("  row not reproduced by suslov: %s eps %.17g\n", S[o.series].name, S[o.series].param[o.point]);
-        }
-        printf("  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",
-               ok == tried ? "CHECK ok:" : "CHECK FAILED:", ok, tried, suslov);
-    }
+        for (int l = 0; l < NLEVELS; l++)
+            print_level(which, l, &pass[which][l], &ratio[which][l]);
+    print_long_runs();
+    print_equal_error_long();
+    check_reproduce(argv[0]);
     printf("\nbench ran for %.1f s\n", suslov_now() - t_start);
-
-    if (write_csv(fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0)
+    char path[4096];
+    if (write_csv(fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0
+        || write_tex(fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass,
+                     ratio)
+            != 0
+        || write_what_to_use(fig_path(path, sizeof path, argv[2], "what_to_use", "tsv")) != 0
+        || write_figures(argv[1]) != 0)
         return 1;
-    /* the numbers the companion text quotes */
-    atomic_file af;
-    if (atomic_file_open(&af, fig_path(path, sizeof path, argv[2], "bench", "tex"), err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
-    }
-    const int imid = suslov_method_index("midpoint"), ivar = suslov_method_index("variational");
-    fprintf(af.fp, "%% Generated by make bench (src/prog/bench.c): do not edit.\n"
-                   "\\newcommand{\\BenchRkNs}{%.3g}\n\\newcommand{\\BenchGslRkNs}{%.3g}\n"
-                   "\\newcommand{\\BenchRkSpeedup}{%.3g}\n\\newcommand{\\BenchMidpointRatio}{%.3g}\n"
-                   "\\newcommand{\\BenchVariationalRatio}{%.3g}\n\\newcommand{\\BenchExactNs}{%.3g}\n"
-                   "\\newcommand{\\BenchMidpointNewton}{%.2g}\n\\newcommand{\\BenchVariationalNewton}{%.2g}\n",
-            cost.ns_raw[irk4], cost.ns_gsl_rk4, speedup, cost.ns_raw[imid] / cost.ns_raw[irk4], cost.ns_raw[ivar] / cost.ns_raw[irk4],
-            cost.ns_exact, cost.newton[imid], cost.newton[ivar]);
-    fprintf(af.fp, "\\newcommand{\\BenchPassRkSpeedup}{%s}\n\\newcommand{\\BenchPassImplicit}{%s}\n",
-            speedup >= 5 ? "PASS" : "MISS", implicit_pass ? "PASS" : "MISS");
-    static const char *lvl[NLEVELS] = {"Four", "Six", "Eight", "Ten", "Twelve"};
-    for (int l = 0; l < NLEVELS; l++) {
-        /* three digits: a ratio of 1.96 must not print as "2" beside a MISS */
-        fprintf(af.fp, "\\newcommand{\\BenchRatioR%s}{%.3g}\n\\newcommand{\\BenchRatioW%s}{%.3g}\n", lvl[l], ratio[1][l], lvl[l],
-                ratio[0][l]);
-        fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l], pass[1][l] ? "PASS" : "MISS",
-                lvl[l], pass[0][l] ? "PASS" : "MISS");
-    }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
-    }
-    snprintf(path, sizeof path, "%s/work_precision", argv[1]);
-    int nours = 0;
-    for (int i = 0; i < nseries; i++)
-        nours += S[i].ours;
-    /* tall enough for the legend (two columns of 11 px rows from y = 400) and four lines of notes */
-    const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 36.0 + 16.0);
-    if (plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
-    }
-    snprintf(path, sizeof path, "%s/step_cost", argv[1]);
-    if (plot_write(path, 90.0 + 46.0 * (cost.n + 2), 280, draw_cost, NULL, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
-    }
     return 0;
 }

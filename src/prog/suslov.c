@@ -84,8 +84,8 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
                  rep->step, rep->t);
     else if (rep->status == SUSLOV_STEP_DIVERGED)
         snprintf(msg, len,
-                 "step %ld (t = %.17g) failed: the Taylor series diverges, its last term %.3g is not "
-                 "below %.3g: the step is beyond its radius of convergence",
+                 "step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
+                 "converge: the step is %.3g times the radius proved for it (|w|_2 = %.3g)",
                  rep->step, rep->t, st->residual, st->scale);
     else if (!isfinite(st->residual) || !isfinite(st->scale) || !isfinite(st->det))
         snprintf(msg, len, "step %ld (t = %.17g) failed: Newton's iteration reached a value that is not a "

@@ -213,10 +213,10 @@ static const struct {
     int attitude;      /* 1: R(50) is the target, 0: w(50) */
     double level;
 } RECOMMENDED[] = {
-    {"taylor10", 12, 1, 1e-4}, {"taylor10", 17, 1, 1e-6}, {"taylor12", 20, 1, 1e-8},
-    {"taylor12", 29, 1, 1e-10}, {"taylor16", 25, 1, 1e-12},
-    {"taylor8", 6, 0, 1e-4}, {"taylor8", 9, 0, 1e-6}, {"taylor8", 15, 0, 1e-8},
-    {"taylor12", 15, 0, 1e-10}, {"taylor16", 14, 0, 1e-12},
+    {"taylor8", 17, 1, 1e-4}, {"taylor10", 18, 1, 1e-6}, {"taylor12", 20, 1, 1e-8},
+    {"taylor12", 29, 1, 1e-10}, {"taylor16", 27, 1, 1e-12},
+    {"taylor8", 9, 0, 1e-4}, {"taylor8", 9, 0, 1e-6}, {"taylor8", 15, 0, 1e-8},
+    {"taylor16", 11, 0, 1e-10}, {"taylor12", 21, 0, 1e-12}, {"taylor16", 18, 0, 1e-14},
 };
 
 static void recommended_settings(const suslov_model *m, const suslov_exact *ex, const double w_T[2],
