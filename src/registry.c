@@ -47,6 +47,14 @@ int suslov_method_index(const char *name)
     return -1;
 }
 
+int suslov_method_index_of(const suslov_stepper_type *type)
+{
+    for (int i = 0; i < NMETHODS; i++)
+        if (METHODS[i].type == type)
+            return i;
+    return -1;
+}
+
 const suslov_method *suslov_method_by_name(const char *name)
 {
     return suslov_method_get(suslov_method_index(name));
