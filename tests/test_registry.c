@@ -54,7 +54,8 @@ static void check_type(const suslov_model *m, const suslov_stepper_type *st)
 {
     const int n = st->unknowns, hooks = st->residual && st->guess && st->result;
     CHECK(n >= 0 && n <= SUSLOV_MAX_UNKNOWNS && (n == 0 || (hooks && st->implicit)) && (n > 0 || !hooks),
-          "%s: %d unknowns, implicit %d, equation hooks %s", st->name, n, st->implicit, hooks ? "set" : "unset");
+          "%s: %d unknowns, implicit %d, equation hooks %s", st->name, n, st->implicit,
+          hooks ? "set" : "unset");
     CHECK(st->source && access(st->source, R_OK) == 0 && strncmp(st->source, "src/", 4) == 0,
           "%s: its source file %s exists", st->name, st->source ? st->source : "(null)");
     CHECK(st->substeps >= 1 && (st->attitude == SUSLOV_ATTITUDE_NONE) == (st->apply_full == NULL),
@@ -95,8 +96,9 @@ int main(void)
                 {&suslov_comp8_kl_type, &suslov_comp_kahan_li8},
                 {&suslov_comp10_ss_type, &suslov_comp_sofroniou10}};
     for (size_t i = 0; i < sizeof comp / sizeof comp[0]; i++)
-        CHECK(comp[i].type->substeps == suslov_composition_stages(comp[i].table), "%s: %d substeps = %d stages",
-              comp[i].type->name, comp[i].type->substeps, suslov_composition_stages(comp[i].table));
+        CHECK(comp[i].type->substeps == suslov_composition_stages(comp[i].table),
+              "%s: %d substeps = %d stages", comp[i].type->name, comp[i].type->substeps,
+              suslov_composition_stages(comp[i].table));
 
     /* build/methods.tsv: a header and one row per method, each found again by index. */
     FILE *fp = tmpfile();
