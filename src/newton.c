@@ -12,8 +12,8 @@ static double inf_norm(const double *v, int n)
 }
 
 /* The product of the row 1-norms of J: an upper bound on the sum of |terms| of det J's Leibniz
- * expansion (expanding the product gives every term of it and more), the yardstick for the
- * round-off in det J; at most n^n/n! times that sum. */
+ * expansion (expanding the product gives every term of it and more): the yardstick for the
+ * round-off in det J, on the safe side. */
 static double row_norm_product(const double *J, int n)
 {
     double p = 1.0;
