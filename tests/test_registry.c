@@ -3,6 +3,7 @@
  * that a wrong flag fails here rather than silently steering a figure, the bench or the ledger. */
 #include "check.h"
 #include "composition.h"
+#include "exact.h"
 #include "registry.h"
 
 #include <math.h>
@@ -50,8 +51,50 @@ static double recon_effect(const suslov_model *m, const suslov_stepper_type *st,
     return d;
 }
 
+/* max over a few starts on the exact motion of the local multiplier error |lambda_{k+1} -
+ * lambda(w(t + eps))| of one step from w(t). */
+static double lambda_error(const suslov_model *m, const suslov_stepper_type *st, double eps)
+{
+    suslov_exact ex;
+    suslov_exact_init(&ex, m, W0);
+    double e = 0.0;
+    for (int k = 0; k < 4; k++) {
+        double w[3] = {0.0, 0.0, 0.0}, we[2], x[3], lam;
+        suslov_step_stats ss;
+        suslov_exact_omega(&ex, 2.5 * k, w);
+        suslov_exact_omega(&ex, 2.5 * k + eps, we);
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+            return NAN;
+        e = fmax(e, fabs(lam - suslov_lagmult(m, we)));
+    }
+    return e;
+}
+
+/* Consistency of the multiplier as the type states it (Definition RedConsis): with s >= 1 the
+ * local error is O(eps^{s+1}), so halving eps divides it by 4 or more (3 leaves room for the next
+ * term); with s = -1 (inconsistent) it tends to a nonzero O_0, and halving divides it by less than
+ * 2. Read at the first eps of 1/2, 1/4, 1/8, 1, 2 (asymptotic ones first) where both errors stand
+ * above round-off (1000 u times |lambda| <= 0.04); a method at round-off at all of them is said
+ * so and not judged. */
+static void check_lambda(const suslov_model *m, const suslov_stepper_type *st)
+{
+    static const double EPS[] = {0.5, 0.25, 0.125, 1.0, 2.0};
+    const double floor = 1000.0 * SUSLOV_U * 0.04;
+    for (int i = 0; i < 5; i++) {
+        const double e1 = lambda_error(m, st, EPS[i]), e2 = lambda_error(m, st, 0.5 * EPS[i]);
+        if (!(e2 > floor))
+            continue;
+        CHECK(st->lambda_order >= 1 ? e1 / e2 >= 3.0 : e1 / e2 < 2.0,
+              "%s: lambda_order = %d; local multiplier error %.2e at eps = %g, %.2e at %g (ratio %.2f)",
+              st->name, st->lambda_order, e1, EPS[i], e2, 0.5 * EPS[i], e1 / e2);
+        return;
+    }
+    printf("NOTE %s: local multiplier error at round-off for every eps <= 2: not judged\n", st->name);
+}
+
 static void check_type(const suslov_model *m, const suslov_stepper_type *st)
 {
+    check_lambda(m, st);
     const int n = st->unknowns, hooks = st->residual && st->guess && st->result;
     CHECK(n >= 0 && n <= SUSLOV_MAX_UNKNOWNS && (n == 0 || (hooks && st->implicit)) && (n > 0 || !hooks),
           "%s: %d unknowns, implicit %d, equation hooks %s", st->name, n, st->implicit,
