@@ -43,8 +43,8 @@ static void flow(const suslov_model *m, double t, const double x[2], double y[2]
 }
 
 /* (TheoPer): the blend of the forward flow from x0 and the backward flow from x1 = phi(eps, x0). */
-void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2], double X[2],
-                          double Xdot[2])
+void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2],
+                          double X[2], double Xdot[2])
 {
     double dchi, A[2], B[2], fA[2], fB[2];
     const double chi = suslov_perturb_chi(t / P->eps, &dchi);
@@ -70,8 +70,8 @@ static int phi(const suslov_perturb *P, const double x0[2], double x1[2])
 }
 
 /* r = X(t; x0) - x and Xdot. */
-static int blend_residual(const suslov_perturb *P, double t, const double x0[2], const double x[2], double r[2],
-                          double Xdot[2])
+static int blend_residual(const suslov_perturb *P, double t, const double x0[2], const double x[2],
+                          double r[2], double Xdot[2])
 {
     double x1[2], X[2];
     const int s = phi(P, x0, x1);
@@ -204,7 +204,8 @@ int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol,
 {
     ode_ctx c = {P, SUSLOV_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {eq2_rhs, NULL, 2, &c};
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 0.05 * P->eps, tol, tol);
+    gsl_odeiv2_driver *d =
+        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 0.05 * P->eps, tol, tol);
     if (!d)
         return SUSLOV_PERTURB_ODE_FAILED;
     double y[2] = {x0[0], x0[1]}, t = 0.0;
@@ -239,7 +240,8 @@ static int perfin2_rhs(double t, const double y[], double dydt[], void *params)
     vec3_cross(q, Iw, y);
     q[0] += I[0][0] * g[0] + I[0][1] * g[1];
     q[1] += I[1][0] * g[0] + I[1][1] * g[1];
-    const double lambda = -(P->Iinv[2][0] * q[0] + P->Iinv[2][1] * q[1] + P->Iinv[2][2] * q[2]) / P->Iinv[2][2];
+    const double lambda =
+        -(P->Iinv[2][0] * q[0] + P->Iinv[2][1] * q[1] + P->Iinv[2][2] * q[2]) / P->Iinv[2][2];
     q[2] += lambda;
     mat3_vec(dydt, P->Iinv, q);
     c->max_xi3 = fmax(c->max_xi3, fabs(y[2]));
@@ -247,8 +249,8 @@ static int perfin2_rhs(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
-int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3], double *max_xi3,
-                           double *max_dlambda)
+int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3],
+                           double *max_xi3, double *max_dlambda)
 {
     ode_ctx c = {P, SUSLOV_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {perfin2_rhs, NULL, 3, &c};
@@ -305,8 +307,8 @@ static void so3_log(const double Q[3][3], double v[3])
 #define NFD 5  /* the stencil -2, -1, 0, 1, 2 (times the step hd) */
 
 /* Attitudes along the exact flow from (R0, x) at the times t[i] (monotone), into R[i]. */
-static int attitudes(const suslov_model *m, const double R0[3][3], const double x[2], double t0, const double *t,
-                     int n, double (*R)[3][3], double tol)
+static int attitudes(const suslov_model *m, const double R0[3][3], const double x[2], double t0,
+                     const double *t, int n, double (*R)[3][3], double tol)
 {
     suslov_exact ex;
     suslov_exact_init(&ex, m, x);

@@ -58,8 +58,8 @@ int suslov_perturb_init(suslov_perturb *P, const suslov_model *m, const suslov_s
 double suslov_perturb_chi(double s, double *dchi);
 
 /* The blended curve X(t; x0) and X'(t) for t in [0, eps], given x1 = phi(eps, x0). */
-void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2], double X[2],
-                          double Xdot[2]);
+void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2],
+                          double X[2], double Xdot[2]);
 
 /* eps^p d(eps, t/eps, x): the perturbation at time t (any t: reduced mod eps) and point x,
  * with x0 such that x = X(t mod eps; x0) (may be NULL). Returns SUSLOV_PERTURB_*. */
@@ -77,8 +77,8 @@ int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol,
  * perturbing force dt = (I_m g, 0) in the constraint-free rows and lambda eliminated so that
  * <e3, xi'> = 0. Integrates from (x0, 0) over [0, eps]; returns xi(eps), the largest |xi_3| seen
  * and the largest |lambda - lambda(xi)| over the period (the multiplier shift). */
-int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3], double *max_xi3,
-                           double *max_dlambda);
+int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3],
+                           double *max_xi3, double *max_dlambda);
 
 /* Along the curve from x0, sampled at n + 1 equally spaced times: the largest |g| (reduced
  * perturbation, eps^p d); and on SO(3) with reconstruction recon (R0 = I, the method's own

@@ -11,17 +11,19 @@ static double inf_norm(const double *v, int n)
     return r;
 }
 
-/* The sum of |terms| of det J's Leibniz expansion (the permanent of |J|): the yardstick for the
- * round-off in det J. Rows are expanded recursively over the unused columns (n <= 8). */
-static double abs_leibniz(const double *J, int n, int row, unsigned used)
+/* The product of the row 1-norms of J: an upper bound on the sum of |terms| of det J's Leibniz
+ * expansion (expanding the product gives every term of it and more): the yardstick for the
+ * round-off in det J, on the safe side. */
+static double row_norm_product(const double *J, int n)
 {
-    if (row == n)
-        return 1.0;
-    double s = 0.0;
-    for (int j = 0; j < n; j++)
-        if (!(used & 1u << j) && J[row * n + j] != 0.0)
-            s += fabs(J[row * n + j]) * abs_leibniz(J, n, row + 1, used | 1u << j);
-    return s;
+    double p = 1.0;
+    for (int i = 0; i < n; i++) {
+        double r = 0.0;
+        for (int j = 0; j < n; j++)
+            r += fabs(J[i * n + j]);
+        p *= r;
+    }
+    return p;
 }
 
 /* n = 2 by the closed form (the (REGLOC) block, bit for bit as it has always been solved); larger
@@ -36,7 +38,7 @@ int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *d
         dx[1] = (J[0] * g[1] - J[2] * g[0]) / *det;
         return 0;
     }
-    const double bound = 4.0 * n * SUSLOV_U * abs_leibniz(J, n, 0, 0u);
+    const double bound = 4.0 * n * SUSLOV_U * row_norm_product(J, n);
     size_t perm[SUSLOV_MAX_UNKNOWNS];
     gsl_permutation p = {(size_t)n, perm};
     gsl_matrix_view A = gsl_matrix_view_array(J, (size_t)n, (size_t)n);

@@ -22,7 +22,8 @@ int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m
 
 /* dx = J^{-1} g and det J for n <= SUSLOV_MAX_UNKNOWNS (J row-major, overwritten). Returns -1,
  * leaving dx unset, when J is singular to working precision: |det| at or below 4 n u times the sum
- * of |terms| of its Leibniz expansion. */
+ * of |terms| of its Leibniz expansion (for n = 2 exactly that sum; beyond, the product of the row
+ * 1-norms, which bounds it). */
 int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *det);
 
 /* G is a sum of a handful of products; each carries a relative error of a few units of

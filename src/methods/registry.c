@@ -47,6 +47,14 @@ int suslov_method_index(const char *name)
     return -1;
 }
 
+int suslov_method_index_of(const suslov_stepper_type *type)
+{
+    for (int i = 0; i < NMETHODS; i++)
+        if (METHODS[i].type == type)
+            return i;
+    return -1;
+}
+
 const suslov_method *suslov_method_by_name(const char *name)
 {
     return suslov_method_get(suslov_method_index(name));
@@ -72,7 +80,8 @@ int suslov_methods_write_tsv(FILE *fp)
         const suslov_stepper_type *t = me->type;
         fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
                 t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
-                ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL, SUSLOV_RECON_NAMES[me->recon],
+                ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL,
+                SUSLOV_RECON_NAMES[me->recon],
                 me->paper_ref ? me->paper_ref : "-", t->source, me->about);
     }
     return ferror(fp) ? -1 : 0;

@@ -25,8 +25,9 @@ typedef struct {
 int suslov_method_count(void);
 const suslov_method *suslov_method_get(int i);          /* NULL past the end */
 const suslov_method *suslov_method_by_name(const char *name);
-/* The index of a method in the registry, or -1. */
+/* The index of a method in the registry, or -1: by name (for user input) and by type. */
 int suslov_method_index(const char *name);
+int suslov_method_index_of(const suslov_stepper_type *type);
 /* "euler|midpoint|..." into buf: the names for usage lines and error messages. */
 const char *suslov_method_names(char *buf, unsigned long len, const char *sep);
 /* The registry as a table (build/methods.tsv): a header row, then one row per method with

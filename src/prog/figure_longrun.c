@@ -130,7 +130,8 @@ static void draw(cairo_t *cr, void *vctx)
     (void)vctx;
     const double W = 760;
     plot_text(cr, W / 2, 14,
-              "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy (attitude 1e-10 at t = 50)",
+              "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy "
+              "(attitude 1e-10 at t = 50)",
               11, 0.5,
               0.5, 1);
     plot_style st[nc > 0 ? nc : 1];
