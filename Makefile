@@ -179,8 +179,33 @@ WEB_IN    := $(wildcard src/*.c src/*.h tests/*.c tests/*.sh) paper/equations.tx
 .PHONY: web web-deps check-web FORCE
 web: $(WEB)/index.html
 
-$(WEB)/index.html: $(WEB_IN) | web-deps
-	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX)
+# The integrators for the browser (the live pages): the library's C sources that reach no GSL,
+# Cairo, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with clang --target=wasm32-wasi and Debian's
+# wasi-libc (make web-deps installs them), linked through an archive so that the module holds only
+# what src/wasm_api.c reaches. A method left out (its source needs GSL) fails the link by name.
+WASM      := $(BUILD)/wasm/suslov.wasm
+WASM_CC   ?= clang
+WASM_AR   ?= llvm-ar
+WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
+WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
+WASM_EXPORTS := input rows nrows message limit method_count method_name method_about method_recon run sweeps
+.PHONY: wasm
+wasm: $(WASM)
+
+$(BUILD)/wasm/%.o: src/%.c | web-deps
+	@mkdir -p $(@D)
+	$(WASM_CC) --target=wasm32-wasi $(WARN) -O2 -Isrc -MMD -MP -c $< -o $@
+
+$(WASM): $(WASM_OBJ)
+	@rm -f $(@D)/libsuslov.a
+	$(WASM_AR) rcs $(@D)/libsuslov.a $(filter-out %/wasm_api.o,$^)
+	$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry $(WASM_EXPORTS:%=-Wl,--export=wasm_%) \
+	    $(filter %/wasm_api.o,$^) $(@D)/libsuslov.a -lm -o $@.tmp
+	@mv $@.tmp $@
+-include $(WASM_OBJ:.o=.d)
+
+$(WEB)/index.html: $(WEB_IN) $(WASM) | web-deps
+	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) --wasm $(WASM)
 
 $(WEB)/inputs.list: FORCE
 	@mkdir -p $(@D)

@@ -1,0 +1,163 @@
+/* The library in the reader's browser (the web edition's live pages, tools/web/live.js): a thin
+ * entry over the same driver, steppers, reconstructions and exact solution the suslov command
+ * runs, compiled to WebAssembly (make wasm). It adds no equation: it records the rows of a run in
+ * the CSV's column order (k, t, w1, w2, w3, lambda, E, R11 .. R33), so that the page shows the
+ * numbers the CLI prints. Inputs go through one static block the page fills. */
+#include "driver.h"
+#include "exact.h"
+#include "exact_run.h"
+#include "midpoint_sweeps.h"
+#include "model.h"
+#include "registry.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+enum { NCOL = 16, MAX_ROWS = 1 << 18 };
+
+/* The page writes w0 (2) and the inertia by rows (9) here before a run. */
+static double input[11];
+static double *rows;
+static long nrows, cap;
+static char message[512];
+static const suslov_model *row_model;
+
+double *wasm_input(void) { return input; }
+double *wasm_rows(void) { return rows; }
+long wasm_nrows(void) { return nrows; }
+const char *wasm_message(void) { return message; }
+int wasm_method_count(void) { return suslov_method_count(); }
+const char *wasm_method_name(int i) { return suslov_method_get(i)->type->name; }
+const char *wasm_method_about(int i) { return suslov_method_get(i)->about; }
+int wasm_method_recon(int i) { return (int)suslov_method_get(i)->recon; }
+
+/* The exact solution's steady rotation w_inf for the body and w0 of the input block. */
+double *wasm_limit(void)
+{
+    static double w[2];
+    suslov_model m;
+    suslov_exact ex;
+    char err[256];
+    const double w0[2] = {input[0], input[1]};
+    w[0] = w[1] = NAN;
+    if (suslov_model_init(&m, input + 2, err, sizeof err) == 0) {
+        suslov_exact_init(&ex, &m, w0);
+        suslov_exact_limit(&ex, w);
+    }
+    return w;
+}
+
+static int say(int status, const char *fmt, double a, double b)
+{
+    snprintf(message, sizeof message, fmt, a, b);
+    return status;
+}
+
+static void put_row(const suslov_row *r)
+{
+    double *o = rows + nrows++ * NCOL;
+    o[0] = (double)r->k;
+    o[1] = r->t;
+    o[2] = r->w[0];
+    o[3] = r->w[1];
+    o[4] = r->w[2];
+    o[5] = r->lambda;
+    o[6] = suslov_energy(row_model, r->w);
+    for (int i = 0; i < 9; i++)
+        o[7 + i] = r->R[i / 3][i % 3];
+}
+
+static int take(void *ctx, const suslov_row *r)
+{
+    (void)ctx;
+    if (nrows == cap)
+        return 1;
+    put_row(r);
+    return 0;
+}
+
+/* Room for the rows 0, K, 2K, ..., N: allocated once, before the run. */
+static int reserve(long steps, long every)
+{
+    const long want = steps / every + 2;
+    if (want > MAX_ROWS)
+        return say(2, "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
+                   (double)want, (double)MAX_ROWS);
+    if (want > cap) {
+        free(rows);
+        rows = malloc((size_t)want * NCOL * sizeof *rows);
+        cap = rows ? want : 0;
+        if (!rows)
+            return say(1, "out of memory for %.0f rows%.0s", (double)want, 0.0);
+    }
+    nrows = 0;
+    return 0;
+}
+
+/* One run of method `method` (registry index; -1 the exact solution) with reconstruction
+ * `recon` (-1: the method's own), step eps, N steps, rows every K-th step. Returns 0, 2 for bad
+ * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
+int wasm_run(int method, int recon, double eps, long steps, long every)
+{
+    message[0] = '\0';
+    static suslov_model model;
+    char err[256];
+    if (method < -1 || method >= suslov_method_count())
+        return say(2, "unknown method%.0s%.0s", 0, 0);
+    if (!(eps > 0.0))
+        return say(2, "--eps must be positive, got %.17g%.0s", eps, 0);
+    if (steps <= 0 || every <= 0)
+        return say(2, "--steps and --every must be positive, got %.0f and %.0f", (double)steps, (double)every);
+    if (!isfinite((double)steps * eps))
+        return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", (double)steps, eps);
+    if (suslov_model_init(&model, input + 2, err, sizeof err) != 0) {
+        snprintf(message, sizeof message, "--inertia: %s", err);
+        return 2;
+    }
+    const int rc0 = reserve(steps, every);
+    if (rc0)
+        return rc0;
+    row_model = &model;
+    const suslov_method *me = method >= 0 ? suslov_method_get(method) : NULL;
+    const suslov_recon rk = recon >= 0 && recon < SUSLOV_RECON_COUNT ? (suslov_recon)recon
+                            : me ? me->recon : SUSLOV_RECON_CAYLEY;
+    const suslov_run_config cfg = {&model, me ? me->type : NULL, rk, eps, steps, every};
+    suslov_run_report rep;
+    const double w0[2] = {input[0], input[1]};
+    const int rc = me ? suslov_run(&cfg, w0, take, NULL, &rep) : suslov_run_exact(&cfg, w0, take, NULL, &rep);
+    if (rc == SUSLOV_RUN_OK)
+        return 0;
+    if (rc == SUSLOV_RUN_BLOWUP)
+        return say(3, "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
+                   (double)rep.step, rep.t);
+    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep.step, rep.t);
+}
+
+/* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per
+ * step instead of Newton. Rows carry k, t, w and E; lambda and R are not part of this reading
+ * (NaN). Same returns as wasm_run. */
+int wasm_sweeps(int n, double eps, long steps)
+{
+    int rc = wasm_run(-1, -1, eps, 1, 1);   /* the same input checks, and the model */
+    if (rc == 0 && n < 1)
+        rc = say(2, "sweeps must be at least 1, got %.0f%.0s", n, 0);
+    if (rc == 0)
+        rc = reserve(steps, 1);
+    if (rc)
+        return rc;
+    double w[2] = {input[0], input[1]};
+    for (long k = 0; k <= steps; k++) {
+        suslov_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
+        for (int i = 0; i < 9; i++)
+            r.R[i / 3][i % 3] = NAN;
+        put_row(&r);
+        if (!isfinite(rows[(nrows - 1) * NCOL + 6]))
+            return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k, r.t);
+        double x[2];
+        suslov_midpoint_sweeps(row_model, eps, n, w, x);
+        w[0] = x[0];
+        w[1] = x[1];
+    }
+    return 0;
+}
