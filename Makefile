@@ -188,7 +188,7 @@ WASM_CC   ?= clang
 WASM_AR   ?= llvm-ar
 WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
 WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
-WASM_EXPORTS := input rows nrows message limit method_count method_name method_about method_recon run sweeps
+WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about method_recon run sweeps exact_omega
 .PHONY: wasm
 wasm: $(WASM)
 

@@ -6,6 +6,7 @@
 #include "driver.h"
 #include "exact.h"
 #include "exact_run.h"
+#include "experiments.h"
 #include "midpoint_sweeps.h"
 #include "model.h"
 #include "registry.h"
@@ -13,6 +14,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 enum { NCOL = 16, MAX_ROWS = 1 << 18 };
 
@@ -31,6 +33,15 @@ int wasm_method_count(void) { return suslov_method_count(); }
 const char *wasm_method_name(int i) { return suslov_method_get(i)->type->name; }
 const char *wasm_method_about(int i) { return suslov_method_get(i)->about; }
 int wasm_method_recon(int i) { return (int)suslov_method_get(i)->recon; }
+
+/* The other reading of the printed inertia (experiments.h): the input body's third row replaced
+ * by its third column. */
+void wasm_inertia_column(void)
+{
+    double I[9];
+    suslov_inertia_column_swap(input + 2, I);
+    memcpy(input + 2, I, sizeof I);
+}
 
 /* The exact solution's steady rotation w_inf for the body and w0 of the input block. */
 double *wasm_limit(void)
@@ -160,4 +171,27 @@ int wasm_sweeps(int n, double eps, long steps)
         w[1] = x[1];
     }
     return 0;
+}
+
+/* The exact solution without the attitude: closed-form w(t_k) and lambda(w(t_k)) at the rows
+ * 0, K, 2K, ..., N (R is NaN). The full exact run (wasm_run with method -1) integrates the
+ * reference attitude in long double, which WebAssembly emulates in software: far slower. */
+int wasm_exact_omega(double eps, long steps, long every)
+{
+    int rc = wasm_run(-1, -1, eps, 1, 1);   /* the same input checks, and the model */
+    if (rc == 0)
+        rc = reserve(steps, every);
+    if (rc)
+        return rc;
+    suslov_exact ex;
+    const double w0[2] = {input[0], input[1]};
+    suslov_exact_init(&ex, row_model, w0);
+    for (long k = 0;; k = steps - k > every ? k + every : steps) {
+        suslov_row r = {.k = k, .t = (double)k * eps, .R = {{NAN, NAN, NAN}, {NAN, NAN, NAN}, {NAN, NAN, NAN}}};
+        suslov_exact_omega(&ex, r.t, r.w);
+        r.lambda = suslov_lagmult(row_model, r.w);
+        put_row(&r);
+        if (k == steps)
+            return 0;
+    }
 }
