@@ -59,6 +59,7 @@ double *wasm_limit(void)
     return w;
 }
 
+/* The message of a failure: fmt takes a and b as doubles (or only a, or neither). */
 static int say(int status, const char *fmt, double a, double b)
 {
     snprintf(message, sizeof message, fmt, a, b);
@@ -92,79 +93,90 @@ static int take(void *ctx, const suslov_row *r)
 static int reserve(long steps, long every)
 {
     const long want = steps / every + 2;
-    if (want > MAX_ROWS)
-        return say(2, "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
-                   (double)want, (double)MAX_ROWS);
     if (want > cap) {
         free(rows);
         rows = malloc((size_t)want * NCOL * sizeof *rows);
         cap = rows ? want : 0;
         if (!rows)
-            return say(1, "out of memory for %.0f rows%.0s", (double)want, 0.0);
+            return say(1, "out of memory for %.0f rows", (double)want, 0.0);
     }
     nrows = 0;
     return 0;
 }
 
-/* One run of method `method` (registry index; -1 the exact solution) with reconstruction
- * `recon` (-1: the method's own), step eps, N steps, rows every K-th step. Returns 0, 2 for bad
- * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
-int wasm_run(int method, int recon, double eps, long steps, long every)
+/* The checks every entry makes before a run, the model of the input body, and the room for
+ * the rows 0, K, 2K, ..., N. N and K come as doubles: a page's N = T / eps may exceed a 32-bit
+ * long. Returns 0 or 2 (bad input, with the message). */
+static int setup(double eps, double nsteps, double nevery)
 {
-    message[0] = '\0';
     static suslov_model model;
     char err[256];
-    if (method < -1 || method >= suslov_method_count())
-        return say(2, "unknown method%.0s%.0s", 0, 0);
+    message[0] = '\0';
     if (!(eps > 0.0))
-        return say(2, "--eps must be positive, got %.17g%.0s", eps, 0);
-    if (steps <= 0 || every <= 0)
-        return say(2, "--steps and --every must be positive, got %.0f and %.0f", (double)steps, (double)every);
-    if (!isfinite((double)steps * eps))
-        return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", (double)steps, eps);
+        return say(2, "--eps must be positive, got %.17g", eps, 0);
+    if (!(nsteps >= 1.0 && nevery >= 1.0) || nsteps != floor(nsteps) || nevery != floor(nevery))
+        return say(2, "--steps and --every must be positive integers, got %.17g and %.17g", nsteps, nevery);
+    if (nsteps / nevery + 2.0 > MAX_ROWS)
+        return say(2, "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
+                   floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
+    if (!isfinite(nsteps * eps))
+        return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
     if (suslov_model_init(&model, input + 2, err, sizeof err) != 0) {
         snprintf(message, sizeof message, "--inertia: %s", err);
         return 2;
     }
-    const int rc0 = reserve(steps, every);
-    if (rc0)
-        return rc0;
     row_model = &model;
-    const suslov_method *me = method >= 0 ? suslov_method_get(method) : NULL;
-    const suslov_recon rk = recon >= 0 && recon < SUSLOV_RECON_COUNT ? (suslov_recon)recon
-                            : me ? me->recon : SUSLOV_RECON_CAYLEY;
-    const suslov_run_config cfg = {&model, me ? me->type : NULL, rk, eps, steps, every};
-    suslov_run_report rep;
-    const double w0[2] = {input[0], input[1]};
-    const int rc = me ? suslov_run(&cfg, w0, take, NULL, &rep) : suslov_run_exact(&cfg, w0, take, NULL, &rep);
+    return reserve((long)nsteps, (long)nevery);
+}
+
+static int failed(int rc, const suslov_run_report *rep)
+{
     if (rc == SUSLOV_RUN_OK)
         return 0;
     if (rc == SUSLOV_RUN_BLOWUP)
         return say(3, "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
-                   (double)rep.step, rep.t);
-    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep.step, rep.t);
+                   (double)rep->step, rep->t);
+    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep->step,
+               rep->t);
+}
+
+/* One run of method `method` (registry index; -1 the exact solution) with reconstruction
+ * `recon` (-1: the method's own), step eps, N steps, rows every K-th step. Returns 0, 2 for bad
+ * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
+int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
+{
+    if (method < -1 || method >= suslov_method_count())
+        return say(2, "unknown method", 0, 0);
+    const int rc = setup(eps, nsteps, nevery);
+    if (rc)
+        return rc;
+    const suslov_method *me = method >= 0 ? suslov_method_get(method) : NULL;
+    const suslov_recon rk = recon >= 0 && recon < SUSLOV_RECON_COUNT ? (suslov_recon)recon
+                            : me ? me->recon : SUSLOV_RECON_CAYLEY;
+    const suslov_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
+    suslov_run_report rep;
+    const double w0[2] = {input[0], input[1]};
+    const int rc2 = me ? suslov_run(&cfg, w0, take, NULL, &rep) : suslov_run_exact(&cfg, w0, take, NULL, &rep);
+    return failed(rc2, &rep);
 }
 
 /* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per
  * step instead of Newton. Rows carry k, t, w and E; lambda and R are not part of this reading
  * (NaN). Same returns as wasm_run. */
-int wasm_sweeps(int n, double eps, long steps)
+int wasm_sweeps(int n, double eps, double nsteps)
 {
-    int rc = wasm_run(-1, -1, eps, 1, 1);   /* the same input checks, and the model */
-    if (rc == 0 && n < 1)
-        rc = say(2, "sweeps must be at least 1, got %.0f%.0s", n, 0);
-    if (rc == 0)
-        rc = reserve(steps, 1);
+    const int rc = n < 1 ? say(2, "sweeps must be at least 1, got %.0f", n, 0) : setup(eps, nsteps, 1.0);
     if (rc)
         return rc;
     double w[2] = {input[0], input[1]};
-    for (long k = 0; k <= steps; k++) {
+    for (long k = 0; k <= (long)nsteps; k++) {
         suslov_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
         for (int i = 0; i < 9; i++)
             r.R[i / 3][i % 3] = NAN;
         put_row(&r);
         if (!isfinite(rows[(nrows - 1) * NCOL + 6]))
-            return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k, r.t);
+            return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k,
+                       r.t);
         double x[2];
         suslov_midpoint_sweeps(row_model, eps, n, w, x);
         w[0] = x[0];
@@ -176,18 +188,19 @@ int wasm_sweeps(int n, double eps, long steps)
 /* The exact solution without the attitude: closed-form w(t_k) and lambda(w(t_k)) at the rows
  * 0, K, 2K, ..., N (R is NaN). The full exact run (wasm_run with method -1) integrates the
  * reference attitude in long double, which WebAssembly emulates in software: far slower. */
-int wasm_exact_omega(double eps, long steps, long every)
+int wasm_exact_omega(double eps, double nsteps, double nevery)
 {
-    int rc = wasm_run(-1, -1, eps, 1, 1);   /* the same input checks, and the model */
-    if (rc == 0)
-        rc = reserve(steps, every);
+    const int rc = setup(eps, nsteps, nevery);
     if (rc)
         return rc;
+    const long steps = (long)nsteps, every = (long)nevery;
     suslov_exact ex;
     const double w0[2] = {input[0], input[1]};
     suslov_exact_init(&ex, row_model, w0);
     for (long k = 0;; k = steps - k > every ? k + every : steps) {
-        suslov_row r = {.k = k, .t = (double)k * eps, .R = {{NAN, NAN, NAN}, {NAN, NAN, NAN}, {NAN, NAN, NAN}}};
+        suslov_row r = {.k = k, .t = (double)k * eps};
+        for (int i = 0; i < 9; i++)
+            r.R[i / 3][i % 3] = NAN;
         suslov_exact_omega(&ex, r.t, r.w);
         r.lambda = suslov_lagmult(row_model, r.w);
         put_row(&r);

@@ -259,16 +259,18 @@ def inner_comments(code, shell):
             kept.append((n, t))
             i += 1
             continue
-        after = code[j + 1][0] if j + 1 < len(code) else code[j][0]
-        notes.append((after, comment_text([x for _, x in code[i:j + 1]], shell)))
+        notes.append((code[j][0], comment_text([x for _, x in code[i:j + 1]], shell)))
         i = j + 1
+    # each note points at the code line it precedes (or, at the end of a section, the last one)
+    shown = [n for n, t in kept if t.strip()]
+    notes = [(next((n for n in shown if n > end), shown[-1] if shown else None), text) for end, text in notes]
     return kept, notes
 
 
 # A formula written in ASCII inside a comment (w^{k+1}, lambda_{k+1}, R_k, I_m): a short name
 # with sub- or superscripts, typeset by KaTeX. A C identifier (suslov_run) is not one: after a
 # one-letter subscript no letter, digit or underscore may follow.
-FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6})((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)"
+FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6}\d?)((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)"
                         r"(?![\w(])")
 GREEK = {"lambda", "omega", "mu", "xi", "tau", "psi", "sigma", "rho", "gamma", "phi", "alpha", "beta", "delta", "eta"}
 
@@ -277,7 +279,7 @@ def mathify(text):
     """Wraps the ASCII formulas of a comment in \\( \\) for KaTeX (greek names as letters)."""
     def sub(m):
         base = "\\" + m.group(1) if m.group(1) in GREEK else m.group(1)
-        if len(m.group(1)) > 1 and m.group(1) not in GREEK:
+        if len(m.group(1).rstrip("0123456789")) > 1 and m.group(1) not in GREEK:
             return m.group(0)
         return "\\(%s%s\\)" % (base, m.group(2))
     parts = re.split(r"(\\\(.+?\\\)|\\\[.+?\\\]|`[^`]*`)", text, flags=re.S)
@@ -370,7 +372,7 @@ def code_html(lines, shell, labels, resolve, anchors):
     if not lines:
         return ""
     src = "\n".join(t for _, t in lines) + "\n"
-    lexer = BashLexer() if shell else CLexer()
+    lexer = BashLexer(stripnl=False) if shell else CLexer(stripnl=False)   # keep blank first lines: numbering
     out = highlight(src, lexer, HtmlFormatter(nowrap=True))
     rows = out.split("\n")
     for k, (n, _) in enumerate(lines):
@@ -428,8 +430,8 @@ def page(title, here, body, scripts=()):
 <script defer src="site.js"></script>%s
 </head><body>
 <nav class="top"><span class="links">%s</span><span class="tools"><select class="jump" aria-label="jump to">
-<option value="">jump to&hellip;</option></select><input class="search" type="search" placeholder="search the site"
-aria-label="search the site"><span class="here">%s</span></span><div class="results" hidden></div></nav>
+<option value="">jump to&hellip;</option></select>
+<input class="search" type="search" placeholder="search the site" aria-label="search the site"><span class="here">%s</span></span><div class="results" hidden></div></nav>
 %s
 </body></html>
 """ % (esc(title), KATEX_HEAD, extra, links, esc(here), body)
@@ -607,8 +609,8 @@ class Site:
             prose = prose_html("\n".join(s.comment), self.labels, resolve) if s.comment else ""
             code, notes = inner_comments(s.code, shell)
             for line, text in notes:
-                prose += ('<div class="inner"><a class="at" href="#L%d">line %d</a> %s</div>'
-                          % (line, line, prose_html(text, self.labels, resolve)))
+                at = '<a class="at" href="#L%d">line %d</a> ' % (line, line) if line else ""
+                prose += '<div class="inner">%s%s</div>' % (at, prose_html(text, self.labels, resolve))
             for lab in self.sec_impl.get((f, k), []):
                 prose += self.label_box(lab)
             end = s.code[-1][0] if s.code else s.start
@@ -684,7 +686,12 @@ class Site:
                 REFERENCED.add(w)
                 return '<a class="label" href="equations.html#eq-%s" title="%s">%s</a>' % (esc(w), esc(w), esc(number))
             return w
-        return re.sub(r"[A-Za-z][A-Za-z0-9-]*", sub, esc(text))
+        out = re.sub(r"[A-Za-z][A-Za-z0-9-]*", sub, esc(text))
+        for phrase, lab in self.st.aliases:    # "Prop. general DSP" -> Proposition 5.2
+            if esc(phrase) in out and lab in self.st.labels:
+                out = out.replace(esc(phrase), '<a href="%s" title="%s">%s</a>' % (
+                    argument_pages.stmt_page(lab), esc(phrase), esc(self.st.name(lab))), 1)
+        return out
 
     def source_link(self, c):
         """tests/FILE.c:LINE (claims.tsv's source column) -> that line on the file's page."""
@@ -728,7 +735,7 @@ class Site:
             search = " ".join([c["id"], c["paper_ref"], c["quantity"]] +
                               [self.st.name(lab) for lab in self.st.of_claim[c["id"]]])
             out.append('<tr id="claim-%s" data-verdict="%s" data-statement="%s" data-method="%s" data-test="%s" '
-                       'data-search="%s"><td class="num">%s</td><td>%s</td><td>%s</td><td class="num">%s</td>'
+                       'data-search="%s"><td class="cid">%s</td><td>%s</td><td>%s</td><td class="num">%s</td>'
                        '<td class="num">%s</td><td class="num">%s</td><td class="num">%s</td><td class="v-%s">%s</td>'
                        '<td>%s</td><td>%s</td><td>%s</td></tr>'
                        % (esc(c["id"]), esc(c["verdict"]), esc(" ".join(self.st.of_claim[c["id"]])),
@@ -783,13 +790,14 @@ class Site:
             cap = beside(name, "txt", prog) or "figures/%s.txt" % name
             caption = ('<pre class="caption">%s</pre>' % link_labels(esc(open(cap, encoding="utf-8").read().strip()), self.labels)
                        if os.path.exists(cap) else
-                       "<p class='note'>figures/%s.txt has not been written on this machine: run the command below.</p>" % esc(name))
+                       "<p class='note'>The committed preview. Its caption and data are written by the command "
+                       "below, which takes minutes and is not part of make web.</p>")
             csvf = beside(name, "csv", prog)
             if csvf:
                 shutil.copyfile(csvf, os.path.join(self.out, csvf))
                 data = '<a class="csv" href="%s">%s</a>' % (esc(csvf), esc(csvf))
             else:
-                data = "data/%s.csv has not been written on this machine (run the command)" % esc(name)
+                data = "written by the command above"
             claims = [c for c in self.claims if self.claim_figure(c["id"]) == name]
             out.append('<div class="fig" id="fig-%s"><h2>%s</h2>%s'
                        '<p>Drawn by: %s<br>Again: <code class="cmd">%s</code><br>Data: %s</p>%s<img src="figures/%s.png" alt="figure %s"></div>'

@@ -42,11 +42,13 @@ def build(site):
             "<h1>Figure 2, run again in your browser</h1>",
             "<p>The paper's Figure 2 compares the midpoint rule and the variational integrator at &epsilon; = 1. "
             "Choose &epsilon;, the two methods, the reading of the midpoint rule (Newton, as the registry's "
-            "<code>midpoint</code>, or a fixed number of fixed-point sweeps) and the reading of the printed, "
+            "<code>midpoint</code>, or a fixed number of fixed-point sweeps, which then takes method A's place) "
+            "and the reading of the printed, "
             "non-symmetric inertia; the panels are recomputed here by the library's C code compiled to "
             "WebAssembly, the same sources as <code>build/suslov</code>, whose CSV these numbers equal.</p>",
             form([field("eps", "&epsilon;", "1", 6), field("T", "T", "200", 6), method_select("a", "method A", "midpoint"),
-                  '<label>midpoint reading <select name="sweeps"><option value="0">Newton</option>%s</select></label>'
+                  '<label>or A = midpoint rule by <select name="sweeps"><option value="0">Newton (method A)</option>'
+                  '%s</select></label>'
                   % "".join('<option value="%d">%d sweep%s</option>' % (n, n, "s" if n > 1 else "") for n in range(1, 9)),
                   method_select("b", "method B", "variational"), body_fields()]),
             "<div class='panels' id='panels'></div><div class='wide'><table class='claims' id='final'></table></div>",

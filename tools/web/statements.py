@@ -13,8 +13,8 @@ KIND_WORDS = {"proposition": "proposition", "propositions": "proposition", "prop
               "theorem": "theorem", "theorems": "theorem", "theo": "theorem",
               "corollary": "corollary", "cor": "corollary", "remark": "remark", "definition": "definition",
               "def": "definition", "algorithm": "algorithm", "figure": "figure", "fig": "figure"}
-NAMED_RE = re.compile(r"\b(%s)\.?\s*(\d+(?:\.\d+)?)(?:\s*[-\u2013]\s*(\d+(?:\.\d+)?))?" % "|".join(KIND_WORDS),
-                      re.I)
+NAMED_RE = re.compile(r"\b(%s)\.?\s*(\d+(?:\.\d+)?)(?:\s*[-\u2013]\s*(\d+(?:\.\d+)?))?"
+                      % "|".join(KIND_WORDS), re.I)
 VERDICT_RANK = ("not reproduced", "erratum", "reproduced", "extension", "not tested", "no ledger line")
 
 
@@ -44,11 +44,22 @@ def number_range(a, b):
     return [a, b]
 
 
+def statement_labels(labels, labels_tsv):
+    """The labels plus the unlabelled statements of paper/labels.tsv (nolabel:proposition-5.2),
+    which have a number and a page but nothing can cite them by label."""
+    out = dict(labels)
+    for r in read_tsv(labels_tsv):
+        if r["label"].startswith("nolabel:") and r["kind"].lower() in STATEMENT_KINDS:
+            out[r["label"]] = (r["kind"].lower(), r["number"])
+    order = {r["label"]: i for i, r in enumerate(read_tsv(labels_tsv))}
+    return dict(sorted(out.items(), key=lambda kv: order.get(kv[0], len(order))))
+
+
 class Statements:
     def __init__(self, labels, claims, paper_dir, aliases_tsv):
-        self.labels = labels
-        self.order = [lab for lab, (kind, _) in labels.items() if kind in STATEMENT_KINDS]
-        self.by_name = {(labels[lab][0], labels[lab][1]): lab for lab in self.order}
+        self.labels = statement_labels(labels, os.path.join(paper_dir, "labels.tsv"))
+        self.order = [lab for lab, (kind, _) in self.labels.items() if kind in STATEMENT_KINDS]
+        self.by_name = {self.labels[lab]: lab for lab in self.order}
         self.aliases = read_aliases(aliases_tsv)
         self.findings = read_tsv(os.path.join(paper_dir, "findings.tsv"))
         self.errata = read_tsv(os.path.join(paper_dir, "errata.tsv"))
@@ -67,7 +78,7 @@ class Statements:
     def mentioned(self, text):
         """The statements a piece of text names: by label (TeoL), by published name
         (Proposition 5.1, Fig. 2, Theorems 6.1-6.3) or by an alias of the ledger."""
-        labs = [w for w in re.findall(r"[A-Za-z][A-Za-z0-9]*", text) if w in self.labels
+        labs = [w for w in re.findall(r"[A-Za-z][A-Za-z0-9:-]*", text) if w in self.labels
                 and self.labels[w][0] in STATEMENT_KINDS]
         for m in NAMED_RE.finditer(text):
             kind = KIND_WORDS[m.group(1).lower()]
