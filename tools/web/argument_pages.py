@@ -18,6 +18,11 @@ def verdict_span(v):
     return '<span class="v-%s">%s</span>' % (v.replace(" ", "-"), esc(v))
 
 
+def table(heads, rows, cls="claims"):
+    """An HTML table: a header row of `heads`, then `rows` (already HTML)."""
+    return "<table class='%s'><tr>%s</tr>%s</table>" % (cls, "".join("<th>%s</th>" % h for h in heads), rows)
+
+
 def ledger_links(ids):
     return ", ".join('<a href="ledger.html#claim-%s">%s</a>' % (esc(i), esc(i)) for i in ids)
 
@@ -39,7 +44,8 @@ class ArgumentPages:
                "verdict, its evidence and the ledger lines behind it; every ledger line links to the test "
                "code that computes it.</p>" % (len(st.claims), counts)]
         if not st.findings:
-            out.append("<p class='note'>paper/findings.tsv is missing: the findings are listed when it exists.</p>")
+            out.append("<p class='note'>paper/findings.tsv is missing: the findings are listed when it "
+                       "exists.</p>")
             return "\n".join(out)
         out.append("<table class='findings'><tr><th>finding</th><th>statements</th><th>verdict</th>"
                    "<th>summary</th></tr>")
@@ -63,11 +69,10 @@ class ArgumentPages:
             v = self.st.verdict(lab)
             rows.append("<tr><td>%s</td><td>%s</td><td class='num'>%d</td></tr>"
                         % (self.stmt_link(lab), verdict_span(v), len(self.st.claims_of(lab))))
-        body = ("<main class='text'><h1>The paper's statements</h1><p class='note'>In the paper's order: each "
-                "definition, proposition, theorem, corollary, remark, algorithm and figure, its verdict (the "
-                "worst of its findings, else of its ledger lines) and how many ledger lines measure it.</p>"
-                "<table class='claims'><tr><th>statement</th><th>verdict</th><th>ledger lines</th></tr>%s"
-                "</table></main>" % "".join(rows))
+        body = ("<main class='text'><h1>The paper's statements</h1><p class='note'>In the paper's order: "
+                "each definition, proposition, theorem, corollary, remark, algorithm and figure, its verdict "
+                "(the worst of its findings, else of its ledger lines) and how many ledger lines measure it."
+                "</p>%s</main>" % table(("statement", "verdict", "ledger lines"), "".join(rows)))
         self.site.write_page("statements.html", "Statements", "statements", body)
 
     def statement_page(self, k, lab):
@@ -77,19 +82,20 @@ class ArgumentPages:
             ("&larr; " + self.stmt_link(order[k - 1])) if k > 0 else "",
             (self.stmt_link(order[k + 1]) + " &rarr;") if k + 1 < len(order) else "")
         kind, number = st.labels[lab]
-        out = ["<main class='text'>", nav, "<h1>%s <span class='note'>(%s)</span></h1>" % (esc(st.name(lab)), esc(lab)),
+        out = ["<main class='text'>", nav,
+               "<h1>%s <span class='note'>(%s)</span></h1>" % (esc(st.name(lab)), esc(lab)),
                "<p>Verdict: %s</p>" % verdict_span(st.verdict(lab))]
         tex, _ = self.site.restated.get(lab, ("", ""))
         if tex:
             out.append('<div class="math">\\[%s\\]</div>' % esc(tex))
         for fd in st.findings_of(lab):
-            out.append("<div class='box'><h4><a href='index.html#finding-%s'>Finding %s</a>: %s &mdash; %s</h4>"
-                       "<p>%s</p></div>" % (esc(fd["id"]), esc(fd["id"]), esc(fd["title"]),
-                                            verdict_span(fd["verdict"]), esc(fd["summary"])))
+            out.append("<div class='box'><h4><a href='index.html#finding-%s'>Finding %s</a>: %s &mdash; "
+                       "%s</h4><p>%s</p></div>" % (esc(fd["id"]), esc(fd["id"]), esc(fd["title"]),
+                                                   verdict_span(fd["verdict"]), esc(fd["summary"])))
         for e in st.errata_of(lab):
             out.append("<div class='box'><h4>Erratum %s, %s</h4><p>Printed: <code>%s</code><br>Corrected: "
-                       "<code>%s</code></p><p>%s</p></div>" % (esc(e["id"]), esc(e["location"]), esc(e["printed"]),
-                                                               esc(e["corrected"]), esc(e["evidence"])))
+                       "<code>%s</code></p><p>%s</p></div>"
+                       % tuple(esc(e[k]) for k in ("id", "location", "printed", "corrected", "evidence")))
         for r in st.not_tested_of(lab):
             out.append("<p><b>Not tested.</b> %s</p>" % esc(r["reason"]))
         claims = st.claims_of(lab)
@@ -97,9 +103,9 @@ class ArgumentPages:
         if kind == "figure" and ("fig" + number) in self.site.figures:
             figs = ["fig" + number] + [f for f in figs if f != "fig" + number]
         for f in figs:
-            out.append('<figure><a href="figures.html#fig-%s"><img class="stmt" src="figures/%s.png" alt="figure %s">'
-                       '</a><figcaption>%s (<a href="figures.html#fig-%s">caption and data</a>)</figcaption></figure>'
-                       % (esc(f), esc(f), esc(f), esc(f), esc(f)))
+            out.append('<figure><a href="figures.html#fig-%s"><img class="stmt" src="figures/%s.png" '
+                       'alt="figure %s"></a><figcaption>%s (<a href="figures.html#fig-%s">caption and '
+                       'data</a>)</figcaption></figure>' % ((esc(f),) * 5))
         if lab in self.site.declared or lab in self.site.impl or lab in self.site.label_claims:
             out.append("<p>Equations page entry: <a class='label' href='equations.html#eq-%s'>(%s)</a></p>"
                        % (esc(lab), esc(lab)))
@@ -109,26 +115,28 @@ class ArgumentPages:
         self.site.write_page(stmt_page(lab), st.name(lab), st.name(lab), "\n".join(out))
 
     def errata_page(self):
-        rows = "".join("<tr id='erratum-%s'><td>%s</td><td>%s</td><td><code>%s</code></td><td><code>%s</code></td>"
-                       "<td>%s</td></tr>" % (esc(e["id"]), esc(e["id"]),
-                                             esc(e["location"]) + "".join("<br>" + self.stmt_link(lab)
-                                                                          for lab in self.st.of_erratum[e["id"]]),
-                                             esc(e["printed"]), esc(e["corrected"]), esc(e["evidence"]))
-                       for e in self.st.errata)
+        def row(e):
+            where = esc(e["location"]) + "".join("<br>" + self.stmt_link(lab)
+                                                 for lab in self.st.of_erratum[e["id"]])
+            return ("<tr id='erratum-%s'><td>%s</td><td>%s</td><td><code>%s</code></td>"
+                    "<td><code>%s</code></td><td>%s</td></tr>"
+                    % (esc(e["id"]), esc(e["id"]), where, esc(e["printed"]), esc(e["corrected"]),
+                       esc(e["evidence"])))
+        rows = "".join(map(row, self.st.errata)) or "<tr><td colspan=5>paper/errata.tsv is missing</td></tr>"
         body = ("<main class='text'><h1>Errata</h1><p class='note'>paper/errata.tsv: a typo or an internal "
-                "inconsistency of the paper, with the evidence.</p><div class='wide'><table class='claims'><tr><th>id</th>"
-                "<th>where</th><th>printed</th><th>corrected</th><th>evidence</th></tr>%s</table></div></main>"
-                % (rows or "<tr><td colspan=5>paper/errata.tsv is missing</td></tr>"))
+                "inconsistency of the paper, with the evidence.</p><div class='wide'>%s</div></main>"
+                % table(("id", "where", "printed", "corrected", "evidence"), rows))
         self.site.write_page("errata.html", "Errata", "errata", body)
 
     def not_tested_page(self):
-        rows = "".join("<tr><td>%s</td><td>%s</td></tr>" % (
-            self.stmt_link(r["label"]) if r["label"] in self.st.labels and r["label"] in self.st.order
-            else esc(r["number"]), esc(r["reason"])) for r in self.st.not_tested)
-        body = ("<main class='text'><h1>Not tested</h1><p class='note'>paper/not_tested.tsv: the statements of "
-                "the paper no ledger line measures, and why.</p><table class='claims'><tr><th>statement</th>"
-                "<th>reason</th></tr>%s</table></main>" % (rows or "<tr><td colspan=2>paper/not_tested.tsv is "
-                                                                   "missing</td></tr>"))
+        def row(r):
+            name = self.stmt_link(r["label"]) if r["label"] in self.st.order else esc(r["number"])
+            return "<tr><td>%s</td><td>%s</td></tr>" % (name, esc(r["reason"]))
+        rows = ("".join(map(row, self.st.not_tested))
+                or "<tr><td colspan=2>paper/not_tested.tsv is missing</td></tr>")
+        body = ("<main class='text'><h1>Not tested</h1><p class='note'>paper/not_tested.tsv: the statements "
+                "of the paper no ledger line measures, and why.</p>%s</main>"
+                % table(("statement", "reason"), rows))
         self.site.write_page("not-tested.html", "Not tested", "not tested", body)
 
     def build(self):
