@@ -78,7 +78,7 @@ class ArgumentPages:
     def statement_page(self, k, lab):
         st = self.st
         order = st.order
-        nav = "<p class='pn'>%s %s</p>" % (
+        nav = "<p class='pn'><span>%s</span><span>%s</span></p>" % (
             ("&larr; " + self.stmt_link(order[k - 1])) if k > 0 else "",
             (self.stmt_link(order[k + 1]) + " &rarr;") if k + 1 < len(order) else "")
         kind, number = st.labels[lab]
