@@ -681,17 +681,21 @@ class Site:
                 return w
             kind, number = self.labels[w]
             if kind in statements.STATEMENT_KINDS:
-                return '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(w), esc(w), esc(self.st.name(w)))
+                return '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(w), esc(w),
+                                                          esc(self.st.name(w)))
             if kind == "equation":
                 REFERENCED.add(w)
-                return '<a class="label" href="equations.html#eq-%s" title="%s">%s</a>' % (esc(w), esc(w), esc(number))
+                return ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
+                        % (esc(w), esc(w), esc(number)))
             return w
-        out = re.sub(r"[A-Za-z][A-Za-z0-9-]*", sub, esc(text))
-        for phrase, lab in self.st.aliases:    # "Prop. general DSP" -> Proposition 5.2
-            if esc(phrase) in out and lab in self.st.labels:
-                out = out.replace(esc(phrase), '<a href="%s" title="%s">%s</a>' % (
-                    argument_pages.stmt_page(lab), esc(phrase), esc(self.st.name(lab))), 1)
-        return out
+        out, rest = [], esc(text)
+        words = r"[A-Za-z][A-Za-z0-9-]*"
+        for phrase, lab in self.st.aliases:    # first: "Prop. general DSP" -> Proposition 5.2
+            if lab in self.st.labels and esc(phrase) in rest:
+                head, rest = rest.split(esc(phrase), 1)
+                out += [re.sub(words, sub, head), '<a href="%s" title="%s">%s</a>' % (
+                    argument_pages.stmt_page(lab), esc(phrase), esc(self.st.name(lab)))]
+        return "".join(out) + re.sub(words, sub, rest)
 
     def source_link(self, c):
         """tests/FILE.c:LINE (claims.tsv's source column) -> that line on the file's page."""

@@ -69,7 +69,8 @@ class Statements:
         self.of_claim = {c["id"]: self.mentioned(c["paper_ref"]) for c in claims}
         self.of_finding = {}
         for fd in self.findings:
-            labs = self.mentioned(fd["title"] + " " + fd["summary"])
+            # the title and the ledger lines decide; a statement the summary only cites is not its subject
+            labs = self.mentioned(fd["title"])
             for cid in self.finding_claims(fd):
                 labs += self.of_claim.get(cid, [])
             self.of_finding[fd["id"]] = list(dict.fromkeys(labs))
@@ -109,12 +110,11 @@ class Statements:
         return [r for r in self.not_tested if r["label"] == lab]
 
     def verdict(self, lab):
-        """The worst verdict of its findings; else of its ledger lines (an extension line does not
-        decide a statement); else not tested, or no ledger line."""
-        vs = [fd["verdict"] for fd in self.findings_of(lab)]
-        if not vs:
-            vs = [c["verdict"] for c in self.claims_of(lab) if c["verdict"] != "extension"]
-            vs = vs or ["extension" for _ in self.claims_of(lab)[:1]]
+        """The worst verdict of its ledger lines (an extension line does not decide a statement);
+        else of its findings; else extension, not tested, or no ledger line."""
+        vs = [c["verdict"] for c in self.claims_of(lab) if c["verdict"] != "extension"]
+        vs = vs or [fd["verdict"] for fd in self.findings_of(lab)]
+        vs = vs or ["extension" for _ in self.claims_of(lab)[:1]]
         if not vs:
             vs = ["not tested"] if self.not_tested_of(lab) else ["no ledger line"]
         return min(vs, key=lambda v: VERDICT_RANK.index(v) if v in VERDICT_RANK else 0)
