@@ -270,9 +270,10 @@ def inner_comments(code, shell):
 # A formula written in ASCII inside a comment (w^{k+1}, lambda_{k+1}, R_k, I_m): a short name
 # with sub- or superscripts, typeset by KaTeX. A C identifier (suslov_run) is not one: after a
 # one-letter subscript no letter, digit or underscore may follow.
-FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6}\d?)((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)"
-                        r"(?![\w(])")
-GREEK = {"lambda", "omega", "mu", "xi", "tau", "psi", "sigma", "rho", "gamma", "phi", "alpha", "beta", "delta", "eta"}
+FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6}\d?)"
+                        r"((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)(?![\w(])")
+GREEK = {"lambda", "omega", "mu", "xi", "tau", "psi", "sigma", "rho", "gamma", "phi", "alpha", "beta",
+         "delta", "eta"}
 
 
 def mathify(text):
@@ -431,7 +432,8 @@ def page(title, here, body, scripts=()):
 </head><body>
 <nav class="top"><span class="links">%s</span><span class="tools"><select class="jump" aria-label="jump to">
 <option value="">jump to&hellip;</option></select>
-<input class="search" type="search" placeholder="search the site" aria-label="search the site"><span class="here">%s</span></span><div class="results" hidden></div></nav>
+<input class="search" type="search" placeholder="search the site" aria-label="search the site">
+<span class="here">%s</span></span><div class="results" hidden></div></nav>
 %s
 </body></html>
 """ % (esc(title), KATEX_HEAD, extra, links, esc(here), body)
@@ -468,8 +470,9 @@ class Site:
         self.claims = read_claims(args.claims)
         self.figrules = read_figure_rules(os.path.join(HERE, "ledger_figures.tsv"))
         # any depth: the library may live in layer folders (src/core, src/methods, ...)
-        self.files = sorted(glob.glob("src/**/*.c", recursive=True) + glob.glob("src/**/*.h", recursive=True)) + \
-            sorted(glob.glob("tests/**/*.c", recursive=True) + glob.glob("tests/**/*.sh", recursive=True))
+        def under(d, *exts):
+            return sorted(f for e in exts for f in glob.glob("%s/**/*.%s" % (d, e), recursive=True))
+        self.files = under("src", "c", "h") + under("tests", "c", "sh")
         self.wasm = args.wasm
         self.methods = read_methods(args.methods, args.wasm)
         self.st = statements.Statements(self.labels, self.claims, args.paper_dir,
@@ -510,7 +513,7 @@ class Site:
         hyphen-separated part of its id (reduced-order-comp6-kl -> comp6-kl), or None."""
         best = None
         for name in self.methods:
-            if cid == name or cid.endswith("-" + name) or cid.startswith(name + "-") or ("-%s-" % name) in cid:
+            if "-%s-" % name in "-%s-" % cid:
                 if best is None or len(name) > len(best):
                     best = name
         return best
@@ -710,47 +713,58 @@ class Site:
         t = (c.get("test") or "").strip()
         return "at most" if t.startswith("<") else "at least" if t.startswith(">") else "within" if t else ""
 
-    def ledger_page(self):
+    def ledger_filters(self, has_test):
+        """The ledger's search box and its filters: verdict, statement, method, test direction."""
         methods = sorted({m for m in (self.claim_method(c["id"]) for c in self.claims) if m})
         stmts = [lab for lab in self.st.order if self.st.claims_of(lab)]
-        has_test = any("test" in c for c in self.claims)
 
         def options(name, values):
+            opts = "".join('<option value="%s">%s</option>' % (esc(v), esc(t)) for v, t in values)
             return ('<label>%s <select data-filter="%s"><option value="">all</option>%s</select></label>'
-                    % (name, name, "".join('<option value="%s">%s</option>' % (esc(v), esc(t)) for v, t in values)))
-        filters = "".join([
-            '<label>search <input type="search" id="ledger-q" placeholder="id, Proposition 5.1, words"></label>',
+                    % (name, name, opts))
+        return "".join([
+            '<label>search <input type="search" id="ledger-q" placeholder="id, Proposition 5.1, words">'
+            '</label>',
             options("verdict", [(v, v) for v, _ in self.st.counts()]),
             options("statement", [(lab, self.st.name(lab)) for lab in stmts]),
             options("method", [(m, m) for m in methods]) if methods else "",
             options("test", [(d, d) for d in ("within", "at most", "at least")]) if has_test else ""])
+
+    def ledger_row(self, c):
+        labs = self.claim_labels.get(c["id"], [])
+        fig = self.claim_figure(c["id"])
+        stmts = self.st.of_claim[c["id"]]
+        search = " ".join([c["id"], c["paper_ref"], c["quantity"]] + [self.st.name(lab) for lab in stmts])
+        data = {"verdict": c["verdict"], "statement": " ".join(stmts),
+                "method": self.claim_method(c["id"]) or "",
+                "test": self.direction(c), "search": search.lower()}
+        cells = [('cid', esc(c["id"])), ('', self.published_ref(c["paper_ref"])),
+                 ('', link_labels(esc(c["quantity"]), self.labels))]
+        cells += [('num', esc(c.get(k) or "")) for k in ("measured", "expected", "tolerance", "test")]
+        cells += [('v-' + c["verdict"].replace(" ", "-"), esc(c["verdict"])), ('', self.source_link(c)),
+                  ('', " ".join('<a class="label" href="equations.html#eq-%s">(%s)</a>' % (esc(lb), esc(lb))
+                                for lb in labs) or "&ndash;"),
+                  ('', '<a href="figures.html#fig-%s">%s</a>' % (esc(fig), esc(fig)) if fig else "&ndash;")]
+        return '<tr id="claim-%s" %s>%s</tr>' % (
+            esc(c["id"]), " ".join('data-%s="%s"' % (k, esc(v)) for k, v in data.items()),
+            "".join('<td class="%s">%s</td>' % (cls, v) if cls else "<td>%s</td>" % v for cls, v in cells))
+
+    def ledger_page(self):
+        has_test = any("test" in c for c in self.claims)
+        heads = ("claim", "paper", "quantity", "measured", "expected", "tolerance", "test", "verdict", "code",
+                 "equation", "figure")
         out = ["<main class='text wide-page'><h1>The claims ledger</h1>",
-               "<p class='note'>build/claims.tsv, one row per claim, as the claims program wrote it. The paper column "
-               "gives the paper's own numbering; <i>test</i> is how the line is checked (x the measured value); "
-               "<i>code</i> links to the line of test code that records it. Click a column head to sort.%s</p>"
-               % ("" if has_test else " (This claims.tsv has no test and source columns yet.)"),
-               "<form class='filters' onsubmit='return false'>%s <span id='ledger-count'></span></form>" % filters,
-               "<div class='wide'><table class='ledger' id='ledger'><thead><tr><th>claim</th><th>paper</th><th>quantity</th>"
-               "<th>measured</th><th>expected</th><th>tolerance</th><th>test</th><th>verdict</th><th>code</th>"
-               "<th>equation</th><th>figure</th></tr></thead><tbody>"]
-        for c in self.claims:
-            labs = self.claim_labels.get(c["id"], [])
-            fig = self.claim_figure(c["id"])
-            search = " ".join([c["id"], c["paper_ref"], c["quantity"]] +
-                              [self.st.name(lab) for lab in self.st.of_claim[c["id"]]])
-            out.append('<tr id="claim-%s" data-verdict="%s" data-statement="%s" data-method="%s" data-test="%s" '
-                       'data-search="%s"><td class="cid">%s</td><td>%s</td><td>%s</td><td class="num">%s</td>'
-                       '<td class="num">%s</td><td class="num">%s</td><td class="num">%s</td><td class="v-%s">%s</td>'
-                       '<td>%s</td><td>%s</td><td>%s</td></tr>'
-                       % (esc(c["id"]), esc(c["verdict"]), esc(" ".join(self.st.of_claim[c["id"]])),
-                          esc(self.claim_method(c["id"]) or ""), esc(self.direction(c)), esc(search.lower()),
-                          esc(c["id"]), self.published_ref(c["paper_ref"]),
-                          link_labels(esc(c["quantity"]), self.labels), esc(c["measured"]), esc(c["expected"]),
-                          esc(c["tolerance"]), esc(c.get("test") or ""), c["verdict"].replace(" ", "-"),
-                          esc(c["verdict"]), self.source_link(c),
-                          " ".join('<a class="label" href="equations.html#eq-%s">(%s)</a>' % (esc(lb), esc(lb))
-                                   for lb in labs) or "&ndash;",
-                          '<a href="figures.html#fig-%s">%s</a>' % (esc(fig), esc(fig)) if fig else "&ndash;"))
+               "<p class='note'>build/claims.tsv, one row per claim, as the claims program wrote it. The "
+               "paper "
+               "column gives the paper's own numbering; <i>test</i> is how the line is checked (x the "
+               "measured "
+               "value); <i>code</i> links to the line of test code that records it. Click a column head to "
+               "sort.%s</p>" % ("" if has_test else " (This claims.tsv has no test and source columns yet.)"),
+               "<form class='filters' onsubmit='return false'>%s <span id='ledger-count'></span></form>"
+               % self.ledger_filters(has_test),
+               "<div class='wide'><table class='ledger' id='ledger'><thead><tr>%s</tr></thead><tbody>"
+               % "".join("<th>%s</th>" % h for h in heads)]
+        out += [self.ledger_row(c) for c in self.claims]
         out.append("</tbody></table></div></main>")
         self.write_page("ledger.html", "Claims ledger", "ledger", "\n".join(out), ["ledger.js"])
 
@@ -794,7 +808,8 @@ class Site:
             cap = beside(name, "txt", prog) or "figures/%s.txt" % name
             caption = ('<pre class="caption">%s</pre>' % link_labels(esc(open(cap, encoding="utf-8").read().strip()), self.labels)
                        if os.path.exists(cap) else
-                       "<p class='note'>The committed preview. Its caption and data are written by the command "
+                       "<p class='note'>The committed preview. Its caption and data are written by the "
+                       "command "
                        "below, which takes minutes and is not part of make web.</p>")
             csvf = beside(name, "csv", prog)
             if csvf:
@@ -824,13 +839,18 @@ class Site:
         groups = [("The library and the programs (src/)", [f for f in self.files if f.startswith("src/")]),
                   ("Tests and the claims ledger (tests/)", [f for f in self.files if f.startswith("tests/")])]
         out = ["<main class='text'><h1>The Suslov companion</h1>",
-               "<p>A reproduction of Jim&eacute;nez &amp; Scheurle, <i>On some aspects of the discretization of "
-               "the Suslov problem</i> (J. Geom. Mech. 2018): every statement we could test is measured by a line "
-               "of the claims ledger, and the integrators <a href='live-fig2.html'>run again in this browser</a> "
+               "<p>A reproduction of Jim&eacute;nez &amp; Scheurle, <i>On some aspects of the discretization "
+               "of "
+               "the Suslov problem</i> (J. Geom. Mech. 2018): every statement we could test is measured by a "
+               "line "
+               "of the claims ledger, and the integrators <a href='live-fig2.html'>run again in this "
+               "browser</a> "
                "(Figure 2 at your own &epsilon;, <a href='live-convergence.html'>orders</a>, "
-               "<a href='live-work.html'>work and precision</a>, <a href='live-attitude.html'>the attitude</a>).</p>",
+               "<a href='live-work.html'>work and precision</a>, <a href='live-attitude.html'>the attitude</a>)."
+               "</p>",
                self.argument.summary_html(),
-               "<h2 id='source'>The annotated source</h2><p>The C source of the reproducible companion to Jim&eacute;nez &amp; Scheurle, <i>On some aspects of "
+               "<h2 id='source'>The annotated source</h2><p>The C source of the reproducible companion to "
+               "Jim&eacute;nez &amp; Scheurle, <i>On some aspects of "
                "the discretization of the Suslov problem</i>, laid out for reading beside the paper: on each source page "
                "the comments are on the left and the code on the right, section by section. Every "
                "<a class='label' href='equations.html#eq-taudyn'>(label)</a> links to the equation it cites; function "
@@ -851,7 +871,7 @@ class Site:
         """search_index.js: every page, statement, ledger line, equation and function, for the
         site-wide search box (site.js); a script, not JSON, so that it loads from disk."""
         items = [[self.st.name(lab) + " " + lab, argument_pages.stmt_page(lab)] for lab in self.st.order]
-        items += [["%s %s %s" % (c["id"], c["paper_ref"], " ".join(self.st.name(lab) for lab in self.st.of_claim[c["id"]])),
+        items += [["%s %s %s" % (c["id"], c["paper_ref"], " ".join(map(self.st.name, self.st.of_claim[c["id"]]))),
                    "ledger.html#claim-" + c["id"]] for c in self.claims]
         items += [["(%s) %s" % (lab, published(*self.labels[lab])), "equations.html#eq-" + lab]
                   for lab in self.declared if lab in self.labels]
