@@ -156,8 +156,8 @@ int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
     const suslov_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
     suslov_run_report rep;
     const double w0[2] = {input[0], input[1]};
-    const int rc2 = me ? suslov_run(&cfg, w0, take, NULL, &rep) : suslov_run_exact(&cfg, w0, take, NULL, &rep);
-    return failed(rc2, &rep);
+    return failed(me ? suslov_run(&cfg, w0, take, NULL, &rep)
+                     : suslov_run_exact(&cfg, w0, take, NULL, &rep), &rep);
 }
 
 /* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per

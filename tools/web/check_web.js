@@ -24,6 +24,7 @@ const { chromium } = require('playwright-core');
 
 const [webdir, equationsTxt, claimsTsv, suslov] = process.argv.slice(2).map((p) => p && path.resolve(p));
 const checkLive = require('./check_live.js');
+const { codeLines, checkLedger } = require('./check_ledger.js');
 if (!webdir || !equationsTxt || !claimsTsv) {
     console.error('usage: node check_web.js WEBDIR EQUATIONS.TXT CLAIMS.TSV');
     process.exit(2);
@@ -38,54 +39,6 @@ function check(ok, what, detail) {
 // The flags that work on this machine (no sandbox as root, no GPU, no background traffic).
 const FLAGS = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
     '--disable-background-networking', '--disable-component-update', '--disable-sync'];
-
-// In a source page: each code line's text, by the id of its line-number span.
-function codeLines() {
-    const out = {};
-    for (const ln of document.querySelectorAll('.code .ln[id]')) {
-        let t = '';
-        for (let n = ln.nextSibling; n; n = n.nextSibling) {
-            const s = n.textContent;
-            if (s.includes('\n')) { t += s.split('\n')[0]; break; }
-            t += s;
-        }
-        out[ln.id] = t;
-    }
-    return out;
-}
-
-// The ledger as a tool: its search by id and by published number, the site search, the code links.
-async function checkLedger(page, claimsTsv, lineText) {
-    const url = pathToFileURL(path.join(webdir, 'ledger.html')).href;
-    const rows = fs.readFileSync(claimsTsv, 'utf8').split('\n').filter((l) => l.trim()).map((l) => l.split('\t'));
-    const head = rows.shift();
-    const col = (name) => head.indexOf(name);
-    await page.setViewportSize({ width: 1400, height: 900 });
-    await page.goto(url, { waitUntil: 'load' });
-    const visible = () => page.evaluate(() => Array.from(document.querySelectorAll('#ledger tbody tr')).filter((r) => !r.hidden).map((r) => r.id.slice(6)));
-    const id = rows[Math.floor(rows.length / 2)][0];
-    await page.fill('#ledger-q', id);
-    const byId = await visible();
-    check(byId.includes(id) && byId.every((v) => v.includes(id)), `ledger search by id finds ${id}`, byId.slice(0, 5).join(' '));
-    // Proposition 5.1 is the label TeoL (paper/labels.tsv): the lines whose paper_ref names TeoL
-    const teol = rows.filter((r) => /\bTeoL\b/.test(r[col('paper_ref')])).map((r) => r[0]);
-    await page.fill('#ledger-q', 'Proposition 5.1');
-    const byNum = await visible();
-    check(teol.length > 0 && teol.every((t) => byNum.includes(t)), `ledger search "Proposition 5.1" finds the ${teol.length} TeoL lines`,
-        `${byNum.length} shown; missing ${teol.filter((t) => !byNum.includes(t)).slice(0, 3).join(' ')}`);
-    await page.fill('#ledger-q', '');
-    for (const q of [id, 'Proposition 5.1']) {
-        await page.fill('input.search', q);
-        const hrefs = await page.evaluate(() => Array.from(document.querySelectorAll('nav .results a')).map((a) => a.getAttribute('href')));
-        const want = q === id ? 'ledger.html#claim-' + id : 'stmt-TeoL.html';
-        check(hrefs.includes(want), `site search "${q}" lists ${want}`, hrefs.slice(0, 4).join(' '));
-    }
-    if (col('source') < 0) { console.log('check-web: claims.tsv has no source column: no code links to check'); return; }
-    const links = await page.evaluate(() => Array.from(document.querySelectorAll('#ledger a.src')).map((a) => a.getAttribute('href')));
-    check(links.length === rows.length, `ledger: a code link on each of the ${rows.length} lines`, `${links.length} links`);
-    const bad = links.filter((h) => { const [f, a] = h.split('#'); return !/ledger_\w*\(/.test((lineText[f] || {})[a] || ''); });
-    check(bad.length === 0, `ledger: each of ${links.length} code links lands on a line with the ledger call`, bad.slice(0, 4).join(' '));
-}
 
 async function main() {
     const pages = fs.readdirSync(webdir).filter((f) => f.endsWith('.html')).sort();
@@ -143,7 +96,8 @@ async function main() {
             for (const width of [1400, 390]) {
                 await tab.setViewportSize({ width, height: 900 });
                 const sw = await tab.evaluate(() => document.documentElement.scrollWidth);
-                check(sw <= width, `${file}: no horizontal page scroll at ${width} px`, `page is ${sw} px wide`);
+                check(sw <= width, `${file}: no horizontal page scroll at ${width} px`,
+                    `page is ${sw} px wide`);
             }
             await tab.close();
         }
@@ -229,7 +183,7 @@ async function main() {
         const claims = fs.readFileSync(claimsTsv, 'utf8').split('\n').slice(1).filter((l) => l.trim()).map((l) => l.split('\t')[0]);
         const missing = claims.filter((c) => !(ids['ledger.html'] || new Set()).has('claim-' + c));
         check(missing.length === 0, `ledger.html: a row for each of the ${claims.length} claims`, missing.slice(0, 5).join(', '));
-        await checkLedger(page, claimsTsv, lineText);
+        await checkLedger(page, webdir, claimsTsv, lineText, check);
         if (suslov) await checkLive.run(ctx, webdir, suslov, check);
         else console.log('check-web: no SUSLOV given: the live pages were not compared with the CLI');
         await page.goto(pathToFileURL(path.join(webdir, 'figures.html')).href, { waitUntil: 'load' });

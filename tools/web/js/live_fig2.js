@@ -61,7 +61,8 @@ async function draw(f) {
     });
     const last = (r) => r.rows.slice(r.rows.length - Live.NCOL);
     const head =
-        '<tr>' + ['run', 'k', 't', 'ω₁', 'ω₂', 'λ', 'E', 'ms'].map((h) => `<th>${h}</th>`).join('') + '</tr>';
+        '<tr>' + ['run', 'k', 't', 'ω₁', 'ω₂', 'λ', 'E', 'ms'].map((h) => `<th>${h}</th>`).join('') +
+        '</tr>';
     document.getElementById('final').innerHTML = head +
         runs.map(([r, , , , label]) => {
                 const x = last(r);
