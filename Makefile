@@ -174,23 +174,25 @@ paper/companion.pdf: $(PAPER_IN) | deps-paper
 WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
-WEB_IN    := $(shell find src tests -name '*.[ch]' -o -name '*.sh') paper/equations.txt $(wildcard paper/*.tsv) \
-             $(BUILD)/claims.tsv $(wildcard $(BUILD)/methods.tsv) $(WEB)/inputs.list \
-             $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css tools/web/*.js tools/web/js/*.js) \
-             tools/web/package-lock.json
+WEB_IN    := $(shell find src tests -name '*.[ch]' -o -name '*.sh') paper/equations.txt \
+             $(wildcard paper/*.tsv) $(BUILD)/claims.tsv $(wildcard $(BUILD)/methods.tsv) $(WEB)/inputs.list \
+             $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) \
+             $(wildcard tools/web/*.js tools/web/js/*.js) tools/web/package-lock.json
 .PHONY: web web-deps check-web FORCE
 web: $(WEB)/index.html
 
 # The integrators for the browser (the live pages): the library's C sources that reach no GSL,
-# Cairo, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with clang --target=wasm32-wasi and Debian's
-# wasi-libc (make web-deps installs them), linked through an archive so that the module holds only
-# what src/wasm_api.c reaches. A method left out (its source needs GSL) fails the link by name.
+# Cairo, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with
+# clang --target=wasm32-wasi and Debian's wasi-libc (make web-deps installs them), linked through
+# an archive so that the module holds only what src/wasm_api.c reaches. A method left out (its
+# source needs GSL) fails the link by name.
 WASM      := $(BUILD)/wasm/suslov.wasm
 WASM_CC   ?= clang
 WASM_AR   ?= llvm-ar
 WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
 WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
-WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about method_recon run sweeps exact_omega
+WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about \
+                method_recon run sweeps exact_omega
 .PHONY: wasm
 wasm: $(WASM)
 
@@ -207,11 +209,13 @@ $(WASM): $(WASM_OBJ)
 -include $(WASM_OBJ:.o=.d)
 
 $(WEB)/index.html: $(WEB_IN) $(WASM) $(FIGS:%=figures/%.txt) | web-deps
-	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) --wasm $(WASM)
+	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) \
+	    --wasm $(WASM)
 
 $(WEB)/inputs.list: FORCE
 	@mkdir -p $(@D)
-	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; find src tests paper -name '*.[ch]' -o -name '*.tsv'; } >$@.tmp 2>/dev/null || true
+	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; \
+	   find src tests paper -name '*.[ch]' -o -name '*.tsv'; } >$@.tmp 2>/dev/null || true
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 
 web-deps:
@@ -219,7 +223,8 @@ web-deps:
 
 # Every page in headless chromium: links, math, no network, no sideways scroll at 390 and 1400 px,
 # the ledger's search and code links, the live pages' numbers against build/suslov's CSV, the
-# (taudyn) page and its screenshot ($(WEB)/shots/taudyn.png). Last line "check-web: N passed, N failed".
+# (taudyn) page and its screenshot ($(WEB)/shots/taudyn.png).
+# Last line "check-web: N passed, N failed".
 check-web: web $(BUILD)/suslov
 	node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv $(BUILD)/suslov
 
