@@ -59,9 +59,10 @@ inc_prog    := $(inc_render) -Isrc/prog
 inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 
-# The programs' main files; the other files of src/prog (suslov's option table, parser and
+# The programs' main files (wasm_api.c: the browser's, built only for WebAssembly); the other files of src/prog (suslov's option table, parser and
 # progress line) are the programs' own support, archived like a layer.
-PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c)
+PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c) \
+             src/prog/wasm_api.c
 src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
 obj_of  = $(patsubst src/%.c,$(BUILD)/obj/%.o,$(call src_of,$(1)))
 lib_of  = $(BUILD)/libsus_$(1).a
@@ -249,35 +250,68 @@ paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) | deps-paper
 # equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
 # python3-markdown, pygments, universal-ctags, chromium; KaTeX and playwright-core from npm) come
 # from make web-deps, which make check never needs. /usr/bin/python3 is Debian's, the one with
-# python3-markdown. The paper's LaTeX is read only when paper/labels.tsv is missing. The figures
-# page shows what make figures and make bench have written; it never draws them: the figure
-# files are not prerequisites (their rules would run the programs), a listing of their names and
-# times is, with the names in src/ and tests/ so that a removed file also rebuilds the site
-# ($(WEB)/inputs.list, rewritten only when it changes).
+# python3-markdown. The paper's LaTeX is read only when paper/labels.tsv is missing. The figure
+# programs' captions and data (seconds to draw) are prerequisites, so that a fresh clone's figures
+# page is complete; make bench and make animation (minutes) are not: their figures show the
+# committed PNG until they have run. A listing of the figure files' names and times is a
+# prerequisite too, with the names in src/ and tests/ so that a removed file also rebuilds the
+# site ($(WEB)/inputs.list, rewritten only when it changes).
 WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
-WEB_IN    := $(wildcard src/*/*.c src/*/*.h tests/*/*.c tests/*/*.h tests/*/*.sh tests/*.sh) paper/equations.txt $(wildcard paper/labels.tsv) \
-             $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(WEB)/inputs.list \
-             $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) tools/web/package-lock.json
+WEB_IN    := $(wildcard src/*/*.c src/*/*.h tests/*/*.c tests/*/*.h tests/*/*.sh tests/*.sh) paper/equations.txt \
+             $(wildcard paper/*.tsv) $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(WEB)/inputs.list \
+             $(wildcard tools/web/*.py tools/web/*.tex tools/web/*.tsv tools/web/*.css) \
+             $(wildcard tools/web/*.js tools/web/js/*.js) tools/web/package-lock.json
 .PHONY: web web-deps check-web FORCE
 web: $(WEB)/index.html
 
-$(WEB)/index.html: $(WEB_IN) | web-deps
-	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX)
+# The integrators for the browser (the live pages): the library's C sources that reach no GSL,
+# Cairo, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with
+# clang --target=wasm32-wasi and Debian's wasi-libc (make web-deps installs them), linked through
+# an archive so that the module holds only what src/wasm_api.c reaches. A method left out (its
+# source needs GSL) fails the link by name.
+WASM      := $(BUILD)/wasm/suslov.wasm
+WASM_CC   ?= clang
+WASM_AR   ?= llvm-ar
+WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
+WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
+WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about \
+                method_recon run sweeps exact_omega
+.PHONY: wasm
+wasm: $(WASM)
+
+$(BUILD)/wasm/%.o: src/%.c | web-deps
+	@mkdir -p $(@D)
+	$(WASM_CC) --target=wasm32-wasi $(WARN) -O2 $(inc_prog) -MMD -MP -c $< -o $@
+
+$(WASM): $(WASM_OBJ)
+	@rm -f $(@D)/libsuslov.a
+	$(WASM_AR) rcs $(@D)/libsuslov.a $(filter-out %/wasm_api.o,$^)
+	$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry $(WASM_EXPORTS:%=-Wl,--export=wasm_%) \
+	    $(filter %/wasm_api.o,$^) $(@D)/libsuslov.a -lm -o $@.tmp
+	@mv $@.tmp $@
+-include $(WASM_OBJ:.o=.d)
+
+$(WEB)/index.html: $(WEB_IN) $(WASM) $(FIGS:%=figures/%.txt) | web-deps
+	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) \
+	    --wasm $(WASM)
 
 $(WEB)/inputs.list: FORCE
 	@mkdir -p $(@D)
-	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; ls src/* tests/*; } >$@.tmp 2>/dev/null || true
+	@{ ls -l --time-style=+%s figures/*.png figures/*.txt data/*.csv; \
+	   find src tests paper -name '*.[ch]' -o -name '*.tsv'; } >$@.tmp 2>/dev/null || true
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 
 web-deps:
 	@sh tools/web/deps.sh
 
-# Every page in headless chromium: links, math, no network, the (taudyn) page and its screenshot
-# ($(WEB)/shots/taudyn.png). Last line "check-web: N passed, N failed".
-check-web: web
-	node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv
+# Every page in headless chromium: links, math, no network, no sideways scroll at 390 and 1400 px,
+# the ledger's search and code links, the live pages' numbers against build/suslov's CSV, the
+# (taudyn) page and its screenshot ($(WEB)/shots/taudyn.png).
+# Last line "check-web: N passed, N failed".
+check-web: web $(BUILD)/suslov
+	node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv $(BUILD)/suslov
 
 # The mutation check: each one-line mutant of tests/build/mutants is applied to a scratch copy of the
 # tree, which is rebuilt and tested; every mutant must be killed (tools/mutants.sh). CI runs

@@ -33,8 +33,8 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
     }
     m->det_m = I[0] * I[4] - I[1] * I[3];
     if (!(I[0] > 0.0) || !(m->det_m > 0.0)) {
-        snprintf(err, errlen, "I_m is not positive definite (I11 = %.17g, |I_m| = %.17g)",
-                 I[0], m->det_m);
+        snprintf(err, errlen, "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)",
+                 I[0], I[4], I[1]);
         return -1;
     }
     m->b[0] = I[6];

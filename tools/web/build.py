@@ -11,10 +11,12 @@ pygments; function definitions are found with universal-ctags. Math is rendered 
 browser from the copy inside DIR, so nothing is fetched when a page is opened.
 """
 import argparse
+import base64
 import csv
 import fnmatch
 import glob
 import html
+import json
 import os
 import re
 import shutil
@@ -23,6 +25,11 @@ import sys
 import textwrap
 
 import markdown
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import argument_pages  # noqa: E402
+import live_pages  # noqa: E402
+import statements  # noqa: E402
 from pygments import highlight
 from pygments.formatters import HtmlFormatter
 from pygments.lexers import BashLexer, CLexer
@@ -225,6 +232,61 @@ def split_sections(path):
     return [s for s in sections if s.comment or any(t.strip() for _, t in s.code)]
 
 
+def inner_comments(code, shell):
+    """Comments that sit on lines of their own inside a function: taken out of the code, to be
+    read in the prose column beside it. Returns (the code without them, [(line of the code they
+    precede, comment text)])."""
+    kept, notes, i = [], [], 0
+    while i < len(code):
+        n, t = code[i]
+        s = t.strip()
+        j = None
+        if shell and s.startswith("#") and not s.startswith("#!") and t[:1].isspace():
+            j = i
+            while j + 1 < len(code) and code[j + 1][1].strip().startswith("#"):
+                j += 1
+        elif not shell and t[:1].isspace() and (s.startswith("//") or s.startswith("/*")):
+            j = i
+            if s.startswith("/*"):
+                while j < len(code) and "*/" not in code[j][1]:
+                    j += 1
+                if j == len(code) or code[j][1].split("*/", 1)[1].strip():
+                    j = None      # code after the comment on its last line: it stays in the code
+            else:
+                while j + 1 < len(code) and code[j + 1][1].strip().startswith("//"):
+                    j += 1
+        if j is None:
+            kept.append((n, t))
+            i += 1
+            continue
+        notes.append((code[j][0], comment_text([x for _, x in code[i:j + 1]], shell)))
+        i = j + 1
+    # each note points at the code line it precedes (or, at the end of a section, the last one)
+    shown = [n for n, t in kept if t.strip()]
+    notes = [(next((n for n in shown if n > end), shown[-1] if shown else None), text) for end, text in notes]
+    return kept, notes
+
+
+# A formula written in ASCII inside a comment (w^{k+1}, lambda_{k+1}, R_k, I_m): a short name
+# with sub- or superscripts, typeset by KaTeX. A C identifier (suslov_run) is not one: after a
+# one-letter subscript no letter, digit or underscore may follow.
+FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6}\d?)"
+                        r"((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)(?![\w(])")
+GREEK = {"lambda", "omega", "mu", "xi", "tau", "psi", "sigma", "rho", "gamma", "phi", "alpha", "beta",
+         "delta", "eta"}
+
+
+def mathify(text):
+    """Wraps the ASCII formulas of a comment in \\( \\) for KaTeX (greek names as letters)."""
+    def sub(m):
+        base = "\\" + m.group(1) if m.group(1) in GREEK else m.group(1)
+        if len(m.group(1).rstrip("0123456789")) > 1 and m.group(1) not in GREEK:
+            return m.group(0)
+        return "\\(%s%s\\)" % (base, m.group(2))
+    parts = re.split(r"(\\\(.+?\\\)|\\\[.+?\\\]|`[^`]*`)", text, flags=re.S)
+    return "".join(p if i % 2 else FORMULA_RE.sub(sub, p) for i, p in enumerate(parts))
+
+
 def function_definitions(files):
     """name -> [(file, line)] for every C function definition, from universal-ctags."""
     cfiles = [f for f in files if f.endswith((".c", ".h"))]
@@ -292,6 +354,7 @@ def prose_html(text, labels, resolve):
     """A comment as prose: markdown, with \\( \\) and \\[ \\] math kept for KaTeX, '<' kept as text
     and '*' never taken for emphasis (in these comments it multiplies)."""
     maths = []
+    text = mathify(text)
 
     def keep(m):
         maths.append(m.group(0))
@@ -310,7 +373,7 @@ def code_html(lines, shell, labels, resolve, anchors):
     if not lines:
         return ""
     src = "\n".join(t for _, t in lines) + "\n"
-    lexer = BashLexer() if shell else CLexer()
+    lexer = BashLexer(stripnl=False) if shell else CLexer(stripnl=False)   # keep blank first lines: numbering
     out = highlight(src, lexer, HtmlFormatter(nowrap=True))
     rows = out.split("\n")
     for k, (n, _) in enumerate(lines):
@@ -349,17 +412,44 @@ KATEX_HEAD = """<link rel="stylesheet" href="katex/katex.min.css">
   throwOnError: false})"></script>"""
 
 
-def page(title, here, body):
+NAV = (("index.html", "Home"), ("statements.html", "Statements"), ("ledger.html", "Ledger"),
+       ("equations.html", "Equations"), ("figures.html", "Figures"), ("live-fig2.html", "Live"))
+
+
+def page(title, here, body, scripts=()):
+    """A page of the site: the top bar (sections, the jump-to menu and the site-wide search that
+    tools/web/site.js fills in), KaTeX, and any page scripts."""
+    links = "".join('<a href="%s">%s</a>' % (h, t) for h, t in NAV)
+    extra = "".join('<script defer src="%s"></script>' % esc(x) for x in scripts)
     return """<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
 <title>%s</title>
 <link rel="stylesheet" href="style.css">
 %s
+<script defer src="search_index.js"></script>
+<script defer src="site.js"></script>%s
 </head><body>
-<nav class="top"><a href="index.html">Suslov companion</a><a href="equations.html">Equations</a><a href="ledger.html">Ledger</a><a href="figures.html">Figures</a><span class="here">%s</span></nav>
+<nav class="top"><span class="links">%s</span><span class="tools"><select class="jump" aria-label="jump to">
+<option value="">jump to&hellip;</option></select>
+<input class="search" type="search" placeholder="search the site" aria-label="search the site">
+<span class="here">%s</span></span><div class="results" hidden></div></nav>
 %s
 </body></html>
-""" % (esc(title), KATEX_HEAD, esc(here), body)
+""" % (esc(title), KATEX_HEAD, extra, links, esc(here), body)
+
+
+def read_methods(methods_tsv, wasm):
+    """name -> row of build/methods.tsv (the registry's own table: name, family, source, ...).
+    Without it, the names (and nothing else) from the WebAssembly module's registry."""
+    if methods_tsv and os.path.exists(methods_tsv):
+        with open(methods_tsv, encoding="utf-8") as f:
+            return {r["name"]: r for r in csv.DictReader(f, delimiter="\t")}
+    if wasm and os.path.exists(wasm):
+        out = subprocess.run(["node", os.path.join(HERE, "wasm_methods.js"), wasm], check=True,
+                             capture_output=True, text=True).stdout
+        return {n: {"name": n} for n in out.split()}
+    return {}
 
 
 def write(path, text):
@@ -378,11 +468,15 @@ class Site:
         self.declared = read_declared(args.equations)
         self.restated = read_restatements(os.path.join(HERE, "equations.tex"))
         self.claims = read_claims(args.claims)
-        # the registry's own table, written beside claims.tsv: each method's stepper file
-        self.methods = read_claims(os.path.join(os.path.dirname(args.claims) or ".", "methods.tsv"))
         self.figrules = read_figure_rules(os.path.join(HERE, "ledger_figures.tsv"))
-        self.files = sorted(glob.glob("src/*/*.c") + glob.glob("src/*/*.h")) + \
-            sorted(glob.glob("tests/*/*.c") + glob.glob("tests/*/*.h") + glob.glob("tests/*/*.sh"))
+        # any depth: the library may live in layer folders (src/core, src/methods, ...)
+        def under(d, *exts):
+            return sorted(f for e in exts for f in glob.glob("%s/**/*.%s" % (d, e), recursive=True))
+        self.files = under("src", "c", "h") + under("tests", "c", "sh")
+        self.wasm = args.wasm
+        self.methods = read_methods(args.methods, args.wasm)
+        self.st = statements.Statements(self.labels, self.claims, args.paper_dir,
+                                        os.path.join(HERE, "statement_aliases.tsv"))
         self.defs = function_definitions(self.files)
         self.sections = {f: split_sections(f) for f in self.files}
         self.figures = sorted(os.path.basename(p)[:-4] for p in glob.glob("figures/*.png"))
@@ -414,14 +508,17 @@ class Site:
                     self.impl.setdefault(m.group(1), []).append((f, names[0], k))
                     self.sec_impl.setdefault((f, k), []).append(m.group(1))
 
-    def method_files(self):
-        """method name -> the file that defines its step, from the registry (methods.tsv, column
-        source): a claim id names its method as a dash-separated part (reduced-order-rk4,
-        highorder-w-order-comp4-s5)."""
-        return {m["name"]: m["source"] for m in self.methods}
+    def claim_method(self, cid):
+        """The registered method a ledger line measures: the longest method name that is a
+        hyphen-separated part of its id (reduced-order-comp6-kl -> comp6-kl), or None."""
+        best = None
+        for name in self.methods:
+            if "-%s-" % name in "-%s-" % cid:
+                if best is None or len(name) > len(best):
+                    best = name
+        return best
 
     def index_claims(self):
-        steps = self.method_files()
         file_labels = {}
         for lab, places in self.impl.items():
             for f, _, _ in places:
@@ -437,10 +534,9 @@ class Site:
             for w in WORD_RE.findall(c["paper_ref"]):
                 if w in self.labels and self.labels[w][0] in THEOREM_KINDS:
                     labs.append(w)
-            # the method the line measures: the equations its stepper file implements
-            stem = max((s for s in steps if "-" + s + "-" in "-" + c["id"] + "-"), key=len, default=None)
-            if stem:
-                labs.extend(sorted(file_labels.get(steps[stem], [])))
+            # the method the line measures: the equations its source file (build/methods.tsv) implements
+            src = self.methods.get(self.claim_method(c["id"]) or "", {}).get("source", "")
+            labs.extend(sorted(file_labels.get(src, [])))
             labs = list(dict.fromkeys(labs))
             self.claim_labels[c["id"]] = labs
             for lab in labs:
@@ -514,13 +610,17 @@ class Site:
         body = []
         for k, s in enumerate(self.sections[f]):
             prose = prose_html("\n".join(s.comment), self.labels, resolve) if s.comment else ""
+            code, notes = inner_comments(s.code, shell)
+            for line, text in notes:
+                at = '<a class="at" href="#L%d">line %d</a> ' % (line, line) if line else ""
+                prose += '<div class="inner">%s%s</div>' % (at, prose_html(text, self.labels, resolve))
             for lab in self.sec_impl.get((f, k), []):
                 prose += self.label_box(lab)
             end = s.code[-1][0] if s.code else s.start
             body.append('<section class="sec" id="s%d"><div class="prose"><span class="secno"><a href="#s%d">&sect;%d</a> '
                         'lines %d&ndash;%d</span>%s</div><div class="code"><pre>%s</pre></div></section>'
                         % (k + 1, k + 1, k + 1, s.start, end, prose,
-                           code_html(s.code, shell, self.labels, resolve, anchors)))
+                           code_html(code, shell, self.labels, resolve, anchors)))
         write(os.path.join(self.out, page_of(f)), page(f, f, "<h1 style='padding:0 24px'>%s</h1>\n%s"
                                                      % (esc(f), "\n".join(body))))
 
@@ -575,27 +675,101 @@ class Site:
         rows.append("<dl>%s</dl>" % "".join("<dt>%s</dt><dd>%s</dd>" % r for r in dl))
         return head + "".join(rows) + "</div>"
 
+    def published_ref(self, text):
+        """The ledger's paper_ref with each label replaced by what the paper prints (TeoL ->
+        Proposition 5.1, linked to its page; (PerFin2) -> (45), linked to the equation)."""
+        def sub(m):
+            w = m.group(0)
+            if w not in self.labels:
+                return w
+            kind, number = self.labels[w]
+            if kind in statements.STATEMENT_KINDS:
+                return '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(w), esc(w),
+                                                          esc(self.st.name(w)))
+            if kind == "equation":
+                REFERENCED.add(w)
+                return ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
+                        % (esc(w), esc(w), esc(number)))
+            return w
+        out, rest = [], esc(text)
+        words = r"[A-Za-z][A-Za-z0-9-]*"
+        for phrase, lab in self.st.aliases:    # first: "Prop. general DSP" -> Proposition 5.2
+            if lab in self.st.labels and esc(phrase) in rest:
+                head, rest = rest.split(esc(phrase), 1)
+                out += [re.sub(words, sub, head), '<a href="%s" title="%s">%s</a>' % (
+                    argument_pages.stmt_page(lab), esc(phrase), esc(self.st.name(lab)))]
+        return "".join(out) + re.sub(words, sub, rest)
+
+    def source_link(self, c):
+        """tests/FILE.c:LINE (claims.tsv's source column) -> that line on the file's page."""
+        m = re.match(r"(.+):(\d+)$", c.get("source") or "")
+        if not m or m.group(1) not in self.files:
+            return "&ndash;"
+        return '<a class="src" href="%s#L%s">%s</a>' % (page_of(m.group(1)), m.group(2), esc(c["source"]))
+
+    @staticmethod
+    def direction(c):
+        """The test column's direction as a filter value: at most, at least, within."""
+        t = (c.get("test") or "").strip()
+        return "at most" if t.startswith("<") else "at least" if t.startswith(">") else "within" if t else ""
+
+    def ledger_filters(self, has_test):
+        """The ledger's search box and its filters: verdict, statement, method, test direction."""
+        methods = sorted({m for m in (self.claim_method(c["id"]) for c in self.claims) if m})
+        stmts = [lab for lab in self.st.order if self.st.claims_of(lab)]
+
+        def options(name, values):
+            opts = "".join('<option value="%s">%s</option>' % (esc(v), esc(t)) for v, t in values)
+            return ('<label>%s <select data-filter="%s"><option value="">all</option>%s</select></label>'
+                    % (name, name, opts))
+        return "".join([
+            '<label>search <input type="search" id="ledger-q" placeholder="id, Proposition 5.1, words">'
+            '</label>',
+            options("verdict", [(v, v) for v, _ in self.st.counts()]),
+            options("statement", [(lab, self.st.name(lab)) for lab in stmts]),
+            options("method", [(m, m) for m in methods]) if methods else "",
+            options("test", [(d, d) for d in ("within", "at most", "at least")]) if has_test else ""])
+
+    def ledger_row(self, c):
+        labs = self.claim_labels.get(c["id"], [])
+        fig = self.claim_figure(c["id"])
+        stmts = self.st.of_claim[c["id"]]
+        search = " ".join([c["id"], c["paper_ref"], c["quantity"]] + [self.st.name(lab) for lab in stmts])
+        data = {"verdict": c["verdict"], "statement": " ".join(stmts),
+                "method": self.claim_method(c["id"]) or "",
+                "test": self.direction(c), "search": search.lower()}
+        cells = [('cid', esc(c["id"])), ('', self.published_ref(c["paper_ref"])),
+                 ('', link_labels(esc(c["quantity"]), self.labels))]
+        cells += [('num', esc(c.get(k) or "")) for k in ("measured", "expected", "tolerance", "test")]
+        cells += [('v-' + c["verdict"].replace(" ", "-"), esc(c["verdict"])), ('', self.source_link(c)),
+                  ('', " ".join('<a class="label" href="equations.html#eq-%s">(%s)</a>' % (esc(lb), esc(lb))
+                                for lb in labs) or "&ndash;"),
+                  ('', '<a href="figures.html#fig-%s">%s</a>' % (esc(fig), esc(fig)) if fig else "&ndash;")]
+        return '<tr id="claim-%s" %s>%s</tr>' % (
+            esc(c["id"]), " ".join('data-%s="%s"' % (k, esc(v)) for k, v in data.items()),
+            "".join('<td class="%s">%s</td>' % (cls, v) if cls else "<td>%s</td>" % v for cls, v in cells))
+
     def ledger_page(self):
-        writer = ("(<a href='%s'>tests/ledger/ledger.c</a>)" % page_of("tests/ledger/ledger.c")
-                  if "tests/ledger/ledger.c" in self.files else "")
-        out = ["<main class='text' style='max-width:1400px'><h1>The claims ledger</h1>",
-               "<p class='note'>build/claims.tsv as written by the claims program %s, one row per claim. The "
-               "equation column links the labels the line refers to or measures (through the method its id "
-               "names); the figure column the figure that shows it (tools/web/ledger_figures.tsv).</p>" % writer,
-               "<table class='ledger'><tr><th>claim</th><th>paper</th><th>quantity</th><th>measured</th><th>expected</th>"
-               "<th>tolerance</th><th>verdict</th><th>equation</th><th>figure</th></tr>"]
-        for c in self.claims:
-            labs = self.claim_labels.get(c["id"], [])
-            fig = self.claim_figure(c["id"])
-            out.append('<tr id="claim-%s"><td class="num">%s</td><td>%s</td><td>%s</td><td class="num">%s</td>'
-                       '<td class="num">%s</td><td class="num">%s</td><td class="v-%s">%s</td><td>%s</td><td>%s</td></tr>'
-                       % (esc(c["id"]), esc(c["id"]), link_labels(esc(c["paper_ref"]), self.labels),
-                          link_labels(esc(c["quantity"]), self.labels), esc(c["measured"]), esc(c["expected"]),
-                          esc(c["tolerance"]), c["verdict"].replace(" ", "-"), esc(c["verdict"]),
-                          " ".join('<a class="label" href="equations.html#eq-%s">(%s)</a>' % (esc(l), esc(l)) for l in labs) or "&ndash;",
-                          '<a href="figures.html#fig-%s">%s</a>' % (esc(fig), esc(fig)) if fig else "&ndash;"))
-        out.append("</table></main>")
-        write(os.path.join(self.out, "ledger.html"), page("Claims ledger", "ledger", "\n".join(out)))
+        has_test = any("test" in c for c in self.claims)
+        heads = ("claim", "paper", "quantity", "measured", "expected", "tolerance", "test", "verdict", "code",
+                 "equation", "figure")
+        out = ["<main class='text wide-page'><h1>The claims ledger</h1>",
+               "<p class='note'>build/claims.tsv, one row per claim, as the claims program wrote it. The "
+               "paper "
+               "column gives the paper's own numbering; <i>test</i> is how the line is checked (x the "
+               "measured "
+               "value); <i>code</i> links to the line of test code that records it. Click a column head to "
+               "sort.%s</p>" % ("" if has_test else " (This claims.tsv has no test and source columns yet.)"),
+               "<form class='filters' onsubmit='return false'>%s <span id='ledger-count'></span></form>"
+               % self.ledger_filters(has_test),
+               "<div class='wide'><table class='ledger' id='ledger'><thead><tr>%s</tr></thead><tbody>"
+               % "".join("<th>%s</th>" % h for h in heads)]
+        out += [self.ledger_row(c) for c in self.claims]
+        out.append("</tbody></table></div></main>")
+        self.write_page("ledger.html", "Claims ledger", "ledger", "\n".join(out), ["ledger.js"])
+
+    def write_page(self, name, title, here, body, scripts=()):
+        write(os.path.join(self.out, name), page(title, here, body, scripts))
 
     def figure_program(self, name):
         """(source file, command) that draws figures/NAME.png."""
@@ -634,13 +808,15 @@ class Site:
             cap = beside(name, "txt", prog) or "figures/%s.txt" % name
             caption = ('<pre class="caption">%s</pre>' % link_labels(esc(open(cap, encoding="utf-8").read().strip()), self.labels)
                        if os.path.exists(cap) else
-                       "<p class='note'>figures/%s.txt has not been written on this machine: run the command below.</p>" % esc(name))
+                       "<p class='note'>The committed preview. Its caption and data are written by the "
+                       "command "
+                       "below, which takes minutes and is not part of make web.</p>")
             csvf = beside(name, "csv", prog)
             if csvf:
                 shutil.copyfile(csvf, os.path.join(self.out, csvf))
                 data = '<a class="csv" href="%s">%s</a>' % (esc(csvf), esc(csvf))
             else:
-                data = "data/%s.csv has not been written on this machine (run the command)" % esc(name)
+                data = "written by the command above"
             claims = [c for c in self.claims if self.claim_figure(c["id"]) == name]
             out.append('<div class="fig" id="fig-%s"><h2>%s</h2>%s'
                        '<p>Drawn by: %s<br>Again: <code class="cmd">%s</code><br>Data: %s</p>%s<img src="figures/%s.png" alt="figure %s"></div>'
@@ -662,8 +838,19 @@ class Site:
             return ""
         groups = [("The library and the programs (src/)", [f for f in self.files if f.startswith("src/")]),
                   ("Tests and the claims ledger (tests/)", [f for f in self.files if f.startswith("tests/")])]
-        out = ["<main class='text'><h1>The Suslov companion: annotated source</h1>",
-               "<p>The C source of the reproducible companion to Jim&eacute;nez &amp; Scheurle, <i>On some aspects of "
+        out = ["<main class='text'><h1>The Suslov companion</h1>",
+               "<p>A reproduction of Jim&eacute;nez &amp; Scheurle, <i>On some aspects of the discretization "
+               "of "
+               "the Suslov problem</i> (J. Geom. Mech. 2018): every statement we could test is measured by a "
+               "line "
+               "of the claims ledger, and the integrators <a href='live-fig2.html'>run again in this "
+               "browser</a> "
+               "(Figure 2 at your own &epsilon;, <a href='live-convergence.html'>orders</a>, "
+               "<a href='live-work.html'>work and precision</a>, <a href='live-attitude.html'>the attitude</a>)."
+               "</p>",
+               self.argument.summary_html(),
+               "<h2 id='source'>The annotated source</h2><p>The C source of the reproducible companion to "
+               "Jim&eacute;nez &amp; Scheurle, <i>On some aspects of "
                "the discretization of the Suslov problem</i>, laid out for reading beside the paper: on each source page "
                "the comments are on the left and the code on the right, section by section. Every "
                "<a class='label' href='equations.html#eq-taudyn'>(label)</a> links to the equation it cites; function "
@@ -678,7 +865,32 @@ class Site:
                                                                                      esc(first_sentence(f))))
             out.append("</ul>")
         out.append("</main>")
-        write(os.path.join(self.out, "index.html"), page("Suslov companion: annotated source", "index", "\n".join(out)))
+        self.write_page("index.html", "Suslov companion", "index", "\n".join(out))
+
+    def search_index(self):
+        """search_index.js: every page, statement, ledger line, equation and function, for the
+        site-wide search box (site.js); a script, not JSON, so that it loads from disk."""
+        items = [[self.st.name(lab) + " " + lab, argument_pages.stmt_page(lab)] for lab in self.st.order]
+        items += [["%s %s %s" % (c["id"], c["paper_ref"], " ".join(map(self.st.name, self.st.of_claim[c["id"]]))),
+                   "ledger.html#claim-" + c["id"]] for c in self.claims]
+        items += [["(%s) %s" % (lab, published(*self.labels[lab])), "equations.html#eq-" + lab]
+                  for lab in self.declared if lab in self.labels]
+        items += [[f, page_of(f)] for f in self.files]
+        items += [["%s() %s" % (name, f), "%s#fn-%s" % (page_of(f), name)]
+                  for name, places in sorted(self.defs.items()) for f, _ in places[:1]]
+        items += [[t, h] for h, t in NAV] + [["Errata", "errata.html"], ["Not tested", "not-tested.html"]]
+        write(os.path.join(self.out, "search_index.js"),
+              "window.SEARCH_INDEX = %s;\n" % json.dumps(items, separators=(",", ":")))
+
+    def copy_scripts(self):
+        """The site's own scripts and, as a script (a page opened from disk may not fetch), the
+        WebAssembly module of the integrators."""
+        for f in glob.glob(os.path.join(HERE, "js", "*.js")):
+            shutil.copyfile(f, os.path.join(self.out, os.path.basename(f)))
+        if self.wasm:
+            with open(self.wasm, "rb") as f:
+                data = base64.b64encode(f.read()).decode("ascii")
+            write(os.path.join(self.out, "suslov_wasm.js"), "window.SUSLOV_WASM = '%s';\n" % data)
 
     def build(self):
         os.makedirs(self.out, exist_ok=True)
@@ -697,9 +909,14 @@ class Site:
             os.remove(old)      # a page of a file that no longer exists must not survive
         for f in self.files:
             self.source_page(f)
+        self.copy_scripts()
+        self.argument = argument_pages.ArgumentPages(self, self.st)
+        self.argument.build()
+        live_pages.build(self)
         self.ledger_page()
         self.figures_page()
         self.equations_page()   # after the pages that link to it: it has an entry for each label they cite
+        self.search_index()
         self.index_page()       # last: make takes index.html as the whole site's time stamp
 
 
@@ -710,7 +927,12 @@ def main():
     ap.add_argument("--labels", default="paper/labels.tsv")
     ap.add_argument("--paper", default=None)
     ap.add_argument("--equations", default="paper/equations.txt")
+    ap.add_argument("--paper-dir", default="paper", help="findings.tsv, errata.tsv, not_tested.tsv")
+    ap.add_argument("--methods", default=None, help="build/methods.tsv (default: beside --claims)")
+    ap.add_argument("--wasm", default=None, help="the integrators compiled to WebAssembly (make wasm)")
     args = ap.parse_args()
+    if args.methods is None:
+        args.methods = os.path.join(os.path.dirname(args.claims), "methods.tsv")
     if not os.path.isdir(KATEX):
         sys.exit("web: %s is missing: run make web-deps" % KATEX)
     Site(args).build()

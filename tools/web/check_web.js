@@ -8,15 +8,23 @@
 //     the implementing code and a link to a test;
 //   - the (taudyn) section shows the comment beside the code and links to the ledger line that
 //     measures the order; a screenshot of it is written to WEB/shots/taudyn.png;
-//   - every ledger line of claims.tsv has its row, every figure its image.
-// Usage: node check_web.js WEBDIR EQUATIONS.TXT CLAIMS.TSV   Last line: "check-web: N passed, N failed".
+//   - every ledger line of claims.tsv has its row, every figure its image;
+//   - every page at 390 px and at 1400 px wide has no horizontal page scroll;
+//   - the ledger's search finds a line by its id and by the paper's number (Proposition 5.1), and
+//     the site-wide search finds it too; every ledger line's code link lands on a line of test code
+//     that holds the ledger call;
+//   - the live pages compute what the CLI prints (check_live.js), when SUSLOV is given.
+// Usage: node check_web.js WEBDIR EQUATIONS.TXT CLAIMS.TSV [SUSLOV]
+// Last line: "check-web: N passed, N failed".
 'use strict';
 const fs = require('fs');
 const path = require('path');
 const { pathToFileURL } = require('url');
 const { chromium } = require('playwright-core');
 
-const [webdir, equationsTxt, claimsTsv] = process.argv.slice(2).map((p) => p && path.resolve(p));
+const [webdir, equationsTxt, claimsTsv, suslov] = process.argv.slice(2).map((p) => p && path.resolve(p));
+const checkLive = require('./check_live.js');
+const { codeLines, checkLedger } = require('./check_ledger.js');
 if (!webdir || !equationsTxt || !claimsTsv) {
     console.error('usage: node check_web.js WEBDIR EQUATIONS.TXT CLAIMS.TSV');
     process.exit(2);
@@ -40,15 +48,16 @@ async function main() {
         viewport: { width: 1400, height: 900 },
     });
     const ids = {};          // page file -> Set of ids in its rendered DOM
+    const lineText = {};     // test source page -> { L<n>: the text of code line n }
     const links = [];        // [from page, href]
     try {
         // nothing may leave the disk: a request for anything but file: or data: is recorded and aborted
-        await ctx.route((url) => !/^(file|data):/.test(url.href), (route) => route.abort());
+        await ctx.route((url) => !/^(file|data|blob):/.test(url.href), (route) => route.abort());
         for (const file of pages) {
             // a fresh tab per page, so that nothing one page does is counted against the next
             const offsite = [], badreq = [], errors = [];
             const tab = await ctx.newPage();
-            tab.on('request', (r) => { if (!/^(file|data):/.test(r.url())) offsite.push(r.url()); });
+            tab.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) offsite.push(r.url()); });
             tab.on('requestfailed', (r) => badreq.push(r.url() + ' (' + (r.failure() || {}).errorText + ')'));
             tab.on('pageerror', (e) => errors.push(String(e)));
             tab.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
@@ -83,6 +92,13 @@ async function main() {
                 `(${info.katexErrors.slice(0, 2).join('; ')}), ${info.katex} rendered of ${info.mathSource} blocks`);
             ids[file] = new Set(info.ids);
             for (const [, v] of info.refs) links.push([file, v]);
+            if (/^tests-/.test(file)) lineText[file] = await tab.evaluate(codeLines);
+            for (const width of [1400, 390]) {
+                await tab.setViewportSize({ width, height: 900 });
+                const sw = await tab.evaluate(() => document.documentElement.scrollWidth);
+                check(sw <= width, `${file}: no horizontal page scroll at ${width} px`,
+                    `page is ${sw} px wide`);
+            }
             await tab.close();
         }
         const page = await ctx.newPage();
@@ -167,6 +183,9 @@ async function main() {
         const claims = fs.readFileSync(claimsTsv, 'utf8').split('\n').slice(1).filter((l) => l.trim()).map((l) => l.split('\t')[0]);
         const missing = claims.filter((c) => !(ids['ledger.html'] || new Set()).has('claim-' + c));
         check(missing.length === 0, `ledger.html: a row for each of the ${claims.length} claims`, missing.slice(0, 5).join(', '));
+        await checkLedger(page, webdir, claimsTsv, lineText, check);
+        if (suslov) await checkLive.run(ctx, webdir, suslov, check);
+        else console.log('check-web: no SUSLOV given: the live pages were not compared with the CLI');
         await page.goto(pathToFileURL(path.join(webdir, 'figures.html')).href, { waitUntil: 'load' });
         const imgs = await page.evaluate(() => Array.from(document.images).map((i) => [i.getAttribute('src'), i.naturalWidth]));
         check(imgs.length > 0 && imgs.every(([, w]) => w > 0), `figures.html: ${imgs.length} figures decoded`,

@@ -9,7 +9,8 @@ have() { command -v "$1" >/dev/null 2>&1; }
 missing=""
 # Debian's own python3 (the generator's markdown and pygments are Debian packages)
 [ -x /usr/bin/python3 ] || missing="$missing python3"
-for pkg in python3-markdown python3-pygments universal-ctags chromium fonts-dejavu-core; do
+for pkg in python3-markdown python3-pygments universal-ctags chromium fonts-dejavu-core \
+           clang lld llvm wasi-libc libclang-rt-14-dev-wasm32; do
     dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
 done
 have node || missing="$missing nodejs"

@@ -1,0 +1,210 @@
+/* The library in the reader's browser (the web edition's live pages, tools/web/live.js): a thin
+ * entry over the same driver, steppers, reconstructions and exact solution the suslov command
+ * runs, compiled to WebAssembly (make wasm). It adds no equation: it records the rows of a run in
+ * the CSV's column order (k, t, w1, w2, w3, lambda, E, R11 .. R33), so that the page shows the
+ * numbers the CLI prints. Inputs go through one static block the page fills. */
+#include "driver.h"
+#include "exact.h"
+#include "exact_run.h"
+#include "experiments.h"
+#include "midpoint_sweeps.h"
+#include "model.h"
+#include "registry.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { NCOL = 16, MAX_ROWS = 1 << 18 };
+
+/* The page writes w0 (2) and the inertia by rows (9) here before a run. */
+static double input[11];
+static double *rows;
+static long nrows, cap;
+static char message[512];
+static const suslov_model *row_model;
+
+double *wasm_input(void) { return input; }
+double *wasm_rows(void) { return rows; }
+long wasm_nrows(void) { return nrows; }
+const char *wasm_message(void) { return message; }
+int wasm_method_count(void) { return suslov_method_count(); }
+const char *wasm_method_name(int i) { return suslov_method_get(i)->type->name; }
+const char *wasm_method_about(int i) { return suslov_method_get(i)->about; }
+int wasm_method_recon(int i) { return (int)suslov_method_get(i)->recon; }
+
+/* The other reading of the printed inertia (experiments.h): the input body's third row replaced
+ * by its third column. */
+void wasm_inertia_column(void)
+{
+    double I[9];
+    suslov_inertia_column_swap(input + 2, I);
+    memcpy(input + 2, I, sizeof I);
+}
+
+/* The exact solution's steady rotation w_inf for the body and w0 of the input block. */
+double *wasm_limit(void)
+{
+    static double w[2];
+    suslov_model m;
+    suslov_exact ex;
+    char err[256];
+    const double w0[2] = {input[0], input[1]};
+    w[0] = w[1] = NAN;
+    if (suslov_model_init(&m, input + 2, err, sizeof err) == 0) {
+        suslov_exact_init(&ex, &m, w0);
+        suslov_exact_limit(&ex, w);
+    }
+    return w;
+}
+
+/* The message of a failure: fmt takes a and b as doubles (or only a, or neither). */
+static int say(int status, const char *fmt, double a, double b)
+{
+    snprintf(message, sizeof message, fmt, a, b);
+    return status;
+}
+
+static void put_row(const suslov_row *r)
+{
+    double *o = rows + nrows++ * NCOL;
+    o[0] = (double)r->k;
+    o[1] = r->t;
+    o[2] = r->w[0];
+    o[3] = r->w[1];
+    o[4] = r->w[2];
+    o[5] = r->lambda;
+    o[6] = suslov_energy(row_model, r->w);
+    for (int i = 0; i < 9; i++)
+        o[7 + i] = r->R[i / 3][i % 3];
+}
+
+static int take(void *ctx, const suslov_row *r)
+{
+    (void)ctx;
+    if (nrows == cap)
+        return 1;
+    put_row(r);
+    return 0;
+}
+
+/* Room for the rows 0, K, 2K, ..., N: allocated once, before the run. */
+static int reserve(long steps, long every)
+{
+    const long want = steps / every + 2;
+    if (want > cap) {
+        free(rows);
+        rows = malloc((size_t)want * NCOL * sizeof *rows);
+        cap = rows ? want : 0;
+        if (!rows)
+            return say(1, "out of memory for %.0f rows", (double)want, 0.0);
+    }
+    nrows = 0;
+    return 0;
+}
+
+/* The checks every entry makes before a run, the model of the input body, and the room for
+ * the rows 0, K, 2K, ..., N. N and K come as doubles: a page's N = T / eps may exceed a 32-bit
+ * long. Returns 0 or 2 (bad input, with the message). */
+static int setup(double eps, double nsteps, double nevery)
+{
+    static suslov_model model;
+    char err[256];
+    message[0] = '\0';
+    if (!(eps > 0.0))
+        return say(2, "--eps must be positive, got %.17g", eps, 0);
+    if (!(nsteps >= 1.0 && nevery >= 1.0) || nsteps != floor(nsteps) || nevery != floor(nevery))
+        return say(2, "--steps and --every must be positive integers, got %.17g and %.17g", nsteps, nevery);
+    if (nsteps / nevery + 2.0 > MAX_ROWS)
+        return say(2, "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
+                   floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
+    if (!isfinite(nsteps * eps))
+        return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
+    if (suslov_model_init(&model, input + 2, err, sizeof err) != 0) {
+        snprintf(message, sizeof message, "--inertia: %s", err);
+        return 2;
+    }
+    row_model = &model;
+    return reserve((long)nsteps, (long)nevery);
+}
+
+static int failed(int rc, const suslov_run_report *rep)
+{
+    if (rc == SUSLOV_RUN_OK)
+        return 0;
+    if (rc == SUSLOV_RUN_BLOWUP)
+        return say(3, "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
+                   (double)rep->step, rep->t);
+    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep->step,
+               rep->t);
+}
+
+/* One run of method `method` (registry index; -1 the exact solution) with reconstruction
+ * `recon` (-1: the method's own), step eps, N steps, rows every K-th step. Returns 0, 2 for bad
+ * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
+int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
+{
+    if (method < -1 || method >= suslov_method_count())
+        return say(2, "unknown method", 0, 0);
+    const int rc = setup(eps, nsteps, nevery);
+    if (rc)
+        return rc;
+    const suslov_method *me = method >= 0 ? suslov_method_get(method) : NULL;
+    const suslov_recon rk = recon >= 0 && recon < SUSLOV_RECON_COUNT ? (suslov_recon)recon
+                            : me ? me->recon : SUSLOV_RECON_CAYLEY;
+    const suslov_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
+    suslov_run_report rep;
+    const double w0[2] = {input[0], input[1]};
+    return failed(me ? suslov_run(&cfg, w0, take, NULL, &rep)
+                     : suslov_run_exact(&cfg, w0, take, NULL, &rep), &rep);
+}
+
+/* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per
+ * step instead of Newton. Rows carry k, t, w and E; lambda and R are not part of this reading
+ * (NaN). Same returns as wasm_run. */
+int wasm_sweeps(int n, double eps, double nsteps)
+{
+    const int rc = n < 1 ? say(2, "sweeps must be at least 1, got %.0f", n, 0) : setup(eps, nsteps, 1.0);
+    if (rc)
+        return rc;
+    double w[2] = {input[0], input[1]};
+    for (long k = 0; k <= (long)nsteps; k++) {
+        suslov_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
+        for (int i = 0; i < 9; i++)
+            r.R[i / 3][i % 3] = NAN;
+        put_row(&r);
+        if (!isfinite(rows[(nrows - 1) * NCOL + 6]))
+            return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k,
+                       r.t);
+        double x[2];
+        suslov_midpoint_sweeps(row_model, eps, n, w, x);
+        w[0] = x[0];
+        w[1] = x[1];
+    }
+    return 0;
+}
+
+/* The exact solution without the attitude: closed-form w(t_k) and lambda(w(t_k)) at the rows
+ * 0, K, 2K, ..., N (R is NaN). The full exact run (wasm_run with method -1) integrates the
+ * reference attitude in long double, which WebAssembly emulates in software: far slower. */
+int wasm_exact_omega(double eps, double nsteps, double nevery)
+{
+    const int rc = setup(eps, nsteps, nevery);
+    if (rc)
+        return rc;
+    const long steps = (long)nsteps, every = (long)nevery;
+    suslov_exact ex;
+    const double w0[2] = {input[0], input[1]};
+    suslov_exact_init(&ex, row_model, w0);
+    for (long k = 0;; k = steps - k > every ? k + every : steps) {
+        suslov_row r = {.k = k, .t = (double)k * eps};
+        for (int i = 0; i < 9; i++)
+            r.R[i / 3][i % 3] = NAN;
+        suslov_exact_omega(&ex, r.t, r.w);
+        r.lambda = suslov_lagmult(row_model, r.w);
+        put_row(&r);
+        if (k == steps)
+            return 0;
+    }
+}
