@@ -81,6 +81,81 @@ int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *d
     return 0;
 }
 
+/* Records the residual at the accepted x. */
+static void fn_final(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
+                     const double *x, suslov_step_stats *st)
+{
+    double g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS];
+    G(m, eps, w, x, g, J, &st->scale);
+    st->residual = inf_norm(g, n);
+}
+
+typedef struct {
+    double x[SUSLOV_MAX_UNKNOWNS], residual, scale;
+} newton_point;
+
+static void keep(newton_point *p, const double *x, int n, double residual, double scale)
+{
+    for (int i = 0; i < n; i++)
+        p->x[i] = x[i];
+    p->residual = residual;
+    p->scale = scale;
+}
+
+static void restore(const newton_point *p, double *x, int n, suslov_step_stats *st)
+{
+    for (int i = 0; i < n; i++)
+        x[i] = p->x[i];
+    st->residual = p->residual;
+}
+
+/* The state of one solve: the best iterate (for stagnation), the accepted one (for polishing). */
+typedef struct {
+    newton_point best, ok;
+    double prev;
+    int polishing;
+} newton_state;
+
+/* One decision after evaluating G at x: returns a SUSLOV_STEP_* status to end the solve, or -1 to
+ * take the correction. */
+static int decide(newton_state *s, double *x, int n, suslov_step_stats *st)
+{
+    if (s->polishing) {
+        /* The polished x replaces the accepted one unless round-off made it worse. */
+        if (!(st->residual <= s->ok.residual)) {
+            restore(&s->ok, x, n, st);
+            st->scale = s->ok.scale;
+        }
+        return SUSLOV_STEP_OK;
+    }
+    if (!isfinite(st->residual) || !isfinite(st->scale))
+        return SUSLOV_STEP_NO_CONVERGENCE;
+    if (st->residual < s->best.residual)
+        keep(&s->best, x, n, st->residual, st->scale);
+    /* Stagnation at the round-off floor: near a large or ill-conditioned Jacobian |G| cannot fall
+     * below ~ |J| ulp(x) times a few, which may sit above NEWTON_RTOL * scale. When an iteration
+     * no longer halves |G| and |G| is within NEWTON_STAGNATION * scale, the best iterate is the
+     * root to working precision. */
+    if (st->residual > NEWTON_RTOL * st->scale && st->residual <= NEWTON_STAGNATION * st->scale &&
+        st->residual > 0.5 * s->prev) {
+        restore(&s->best, x, n, st);
+        return SUSLOV_STEP_OK;
+    }
+    s->prev = st->residual;
+    /* Once the residual is at round-off, one more correction takes x from "within the tolerance"
+     * to the round-off floor; without it the tolerance, not round-off, sets a bias that
+     * accumulates over many steps. */
+    if (st->residual <= NEWTON_RTOL * st->scale) {
+        s->polishing = 1;
+        keep(&s->ok, x, n, st->residual, st->scale);
+    } else if (st->iterations == NEWTON_MAXIT) {
+        return SUSLOV_STEP_NO_CONVERGENCE;
+    }
+    return -1;
+}
+
+/* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
+ * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
 int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
                         double *x, suslov_step_stats *st)
 {
