@@ -186,12 +186,13 @@ check: all $(BUILD)/claims.out
 
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
 # summary.tex, and prints its table (claims.out). A run that does not reach its summary line
-# (a crash, a measurement that could not be made) leaves no output, so it runs again.
+# (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
+# grouped rule is whichever target asked for it: the table's path is spelled out.)
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
-	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv >$@.tmp 2>&1; \
-	    if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
-	    else cat $@.tmp; rm -f $@.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
+	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
+	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
+	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
 
 # The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the

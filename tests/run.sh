@@ -45,6 +45,13 @@ if [ "$mode" != test ]; then
     count claims "$B/claims.out"
     # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
     run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
+    # claims.tsv is the TSV (its header first), not the printed table
+    if head -1 "$B/claims.tsv" | grep -q '^id	paper_ref	quantity	measured	expected	tolerance	verdict'; then
+        echo "claims_tsv: 1 passed, 0 failed" >>"$sum"
+    else
+        echo "FAIL claims.tsv does not start with its header"; echo "claims_tsv: 0 passed, 1 failed" >>"$sum"
+        status=1
+    fi
     # No field of the ledger may read nan: a measurement that did not happen is a failure that
     # says so.
     if grep -iqw nan "$B/claims.tsv" 2>/dev/null; then
