@@ -3,10 +3,28 @@ errata), one page per statement of the paper in the paper's order, and the errat
 tables. Everything comes from statements.Statements (the companion's TSVs and the ledger)."""
 import html
 import os
+import re
 
 
 def esc(s):
     return html.escape(s, quote=True)
+
+
+def tex_text(s):
+    """A field of the companion's TSVs (LaTeX text) as HTML: $...$ becomes \\(...\\) for KaTeX's
+    auto-render, \\texttt{x} code, \\emph{x} emphasis, -- and ~ their characters."""
+    out = []
+    for k, part in enumerate(re.split(r"(\$[^$]*\$)", s)):
+        if part.startswith("$") and part.endswith("$") and len(part) > 1:
+            out.append("\\(" + esc(part[1:-1]) + "\\)")
+            continue
+        part = esc(part)
+        part = re.sub(r"\\texttt\{([^{}]*)\}", r"<code>\1</code>", part)
+        part = re.sub(r"\\emph\{([^{}]*)\}", r"<em>\1</em>", part)
+        part = re.sub(r"\\(?:cite|ref|eqref)\{([^{}]*)\}", r"[\1]", part)
+        out.append(part.replace("---", "&mdash;").replace("--", "&ndash;").replace("~", "&nbsp;")
+                   .replace("\\%", "%").replace("\\&amp;", "&amp;").replace("\\_", "_"))
+    return "".join(out)
 
 
 def stmt_page(lab):
@@ -52,9 +70,9 @@ class ArgumentPages:
         for fd in st.findings:
             out.append("<tr id='finding-%s'><td><b>%s</b> %s</td><td>%s</td><td>%s</td><td>%s "
                        "<details><summary>%d ledger lines</summary>%s</details></td></tr>"
-                       % (esc(fd["id"]), esc(fd["id"]), esc(fd["title"]),
+                       % (esc(fd["id"]), esc(fd["id"]), tex_text(fd["title"]),
                           ", ".join(self.stmt_link(lab) for lab in st.of_finding[fd["id"]]) or "&ndash;",
-                          verdict_span(fd["verdict"]), esc(fd["summary"]), len(st.finding_claims(fd)),
+                          verdict_span(fd["verdict"]), tex_text(fd["summary"]), len(st.finding_claims(fd)),
                           ledger_links(st.finding_claims(fd))))
         out.append("</table>")
         if st.errata:
@@ -90,14 +108,14 @@ class ArgumentPages:
             out.append('<div class="math">\\[%s\\]</div>' % esc(tex))
         for fd in st.findings_of(lab):
             out.append("<div class='box'><h4><a href='index.html#finding-%s'>Finding %s</a>: %s &mdash; "
-                       "%s</h4><p>%s</p></div>" % (esc(fd["id"]), esc(fd["id"]), esc(fd["title"]),
-                                                   verdict_span(fd["verdict"]), esc(fd["summary"])))
+                       "%s</h4><p>%s</p></div>" % (esc(fd["id"]), esc(fd["id"]), tex_text(fd["title"]),
+                                                   verdict_span(fd["verdict"]), tex_text(fd["summary"])))
         for e in st.errata_of(lab):
-            out.append("<div class='box'><h4>Erratum %s, %s</h4><p>Printed: <code>%s</code><br>Corrected: "
-                       "<code>%s</code></p><p>%s</p></div>"
-                       % tuple(esc(e[k]) for k in ("id", "location", "printed", "corrected", "evidence")))
+            out.append("<div class='box'><h4>Erratum %s, %s</h4><p>Printed: %s<br>Corrected: %s</p>"
+                       "<p>%s</p></div>"
+                       % tuple(tex_text(e[k]) for k in ("id", "location", "printed", "corrected", "evidence")))
         for r in st.not_tested_of(lab):
-            out.append("<p><b>Not tested.</b> %s</p>" % esc(r["reason"]))
+            out.append("<p><b>Not tested.</b> %s</p>" % tex_text(r["reason"]))
         claims = st.claims_of(lab)
         figs = sorted({f for f in (self.site.claim_figure(c["id"]) for c in claims) if f})
         if kind == "figure" and ("fig" + number) in self.site.figures:
@@ -116,22 +134,22 @@ class ArgumentPages:
 
     def errata_page(self):
         def row(e):
-            where = esc(e["location"]) + "".join("<br>" + self.stmt_link(lab)
+            where = tex_text(e["location"]) + "".join("<br>" + self.stmt_link(lab)
                                                  for lab in self.st.of_erratum[e["id"]])
-            return ("<tr id='erratum-%s'><td>%s</td><td>%s</td><td><code>%s</code></td>"
-                    "<td><code>%s</code></td><td>%s</td></tr>"
-                    % (esc(e["id"]), esc(e["id"]), where, esc(e["printed"]), esc(e["corrected"]),
-                       esc(e["evidence"])))
+            return ("<tr id='erratum-%s'><td>%s</td><td>%s</td><td data-h='printed'>%s</td>"
+                    "<td data-h='corrected'>%s</td><td data-h='evidence'>%s</td></tr>"
+                    % (esc(e["id"]), esc(e["id"]), where, tex_text(e["printed"]), tex_text(e["corrected"]),
+                       tex_text(e["evidence"])))
         rows = "".join(map(row, self.st.errata)) or "<tr><td colspan=5>paper/errata.tsv is missing</td></tr>"
         body = ("<main class='text'><h1>Errata</h1><p class='note'>paper/errata.tsv: a typo or an internal "
                 "inconsistency of the paper, with the evidence.</p><div class='wide'>%s</div></main>"
-                % table(("id", "where", "printed", "corrected", "evidence"), rows))
+                % table(("id", "where", "printed", "corrected", "evidence"), rows, "claims errata"))
         self.site.write_page("errata.html", "Errata", "errata", body)
 
     def not_tested_page(self):
         def row(r):
             name = self.stmt_link(r["label"]) if r["label"] in self.st.order else esc(r["number"])
-            return "<tr><td>%s</td><td>%s</td></tr>" % (name, esc(r["reason"]))
+            return "<tr><td>%s</td><td>%s</td></tr>" % (name, tex_text(r["reason"]))
         rows = ("".join(map(row, self.st.not_tested))
                 or "<tr><td colspan=2>paper/not_tested.tsv is missing</td></tr>")
         body = ("<main class='text'><h1>Not tested</h1><p class='note'>paper/not_tested.tsv: the statements "

@@ -79,8 +79,8 @@ class Statements:
     def mentioned(self, text):
         """The statements a piece of text names: by label (TeoL), by published name
         (Proposition 5.1, Fig. 2, Theorems 6.1-6.3) or by an alias of the ledger."""
-        labs = [w for w in re.findall(r"[A-Za-z][A-Za-z0-9:-]*", text) if w in self.labels
-                and self.labels[w][0] in STATEMENT_KINDS]
+        words = [w.rstrip(":-") for w in re.findall(r"[A-Za-z][A-Za-z0-9:-]*", text)]  # "TeoL: ..."
+        labs = [w for w in words if w in self.labels and self.labels[w][0] in STATEMENT_KINDS]
         for m in NAMED_RE.finditer(text):
             kind = KIND_WORDS[m.group(1).lower()]
             for num in number_range(m.group(2), m.group(3)):
