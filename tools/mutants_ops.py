@@ -107,8 +107,8 @@ def is_operand_end(tok, types):
 
 
 def scaled(lit, factor):
-    body = re.match(r"[0-9.eE+-]+", lit).group()
-    return repr(float(body) * factor) if factor != 2 else repr(float(body) * 2)
+    """A floating literal times factor (0.0 has no such mutant: the generator skips it)."""
+    return repr(float(re.match(r"[0-9.eE+-]+", lit).group()) * factor)
 
 
 def index_mutants(toks, i, types):
@@ -137,7 +137,8 @@ def generate(path, types):
     out = []
     for i, (kind, val, off) in enumerate(toks):
         prev = toks[i - 1] if i else ("op", ";", 0)
-        if kind == "number" and re.search(r"[.eE]", val) and not val.lower().startswith("0x"):
+        floating = kind == "number" and re.search(r"[.eE]", val)
+        if floating and float(re.match(r"[0-9.eE+-]+", val).group()) != 0:
             out.append((path, off, len(val), scaled(val, 1 + 1e-6), "lit*(1+1e-6)"))
             out.append((path, off, len(val), scaled(val, 2), "lit*2"))
         elif val in SWAP and val in ("+=", "-=", "*=", "/="):
