@@ -10,6 +10,7 @@
 #include "so3.h"
 
 #include <math.h>
+#include <string.h>
 
 #define TOL 1e-13 /* a few roundings of sums of O(1) terms; any mutant changes >= 1e-7 of a term */
 #define SEED 20261123u
@@ -172,10 +173,29 @@ static void paper_data_checks(void)
           SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
 }
 
+/* Every entry that is not finite is refused and named (as the CLI's --inertia reports it). */
+static void model_init_checks(void)
+{
+    const double bad[2] = {INFINITY, NAN};
+    for (int i = 0; i < 9; i++)
+        for (int k = 0; k < 2; k++) {
+            double I[9];
+            char err[128] = "", want[48];
+            for (int j = 0; j < 9; j++)
+                I[j] = BODIES[1][j];
+            I[i] = bad[k];
+            suslov_model m;
+            const int rc = suslov_model_init(&m, I, err, sizeof err);
+            snprintf(want, sizeof want, "entry %d is not finite", i + 1);
+            CHECK(rc == -1 && strstr(err, want), "entry %d = %g refused: \"%s\"", i + 1, bad[k], err);
+        }
+}
+
 int main(void)
 {
     printf("test_mutant_kills: seed %u\n", SEED);
     paper_data_checks();
+    model_init_checks();
     for (int b = 0; b < 4; b++) {
         suslov_model m;
         char err[128];
