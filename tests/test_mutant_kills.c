@@ -191,11 +191,30 @@ static void model_init_checks(void)
         }
 }
 
+/* I_m's symmetry is checked to round-off, as documented in src/model.c: |I12 - I21| <= 4 u S with
+ * S = |I11| + |I12| + |I21| + |I22|. An asymmetry 1e-8 (relative) above that bound is refused,
+ * one 1e-8 below accepted; I12 ~ 1e-9 makes the asymmetry adjustable that finely. */
+static void symmetry_bound_checks(void)
+{
+    const double u = 2.220446049250313e-16;
+    for (int above = 0; above < 2; above++) {
+        double I[9] = {1.3, 1e-9, 0.0, 1e-9, 0.7, 0.0, 0.2, -0.1, 1.0};
+        const double S = 1.3 + 2e-9 + 0.7;
+        I[3] = I[1] + 4.0 * u * S * (above ? 1.0 + 1e-8 : 1.0 - 1e-8);
+        suslov_model m;
+        char err[128] = "";
+        const int rc = suslov_model_init(&m, I, err, sizeof err);
+        CHECK(rc == (above ? -1 : 0), "asymmetry %.10g of the bound 4 u S %s: %s",
+              fabs(I[3] - I[1]) / (4.0 * u * S), above ? "refused" : "accepted", rc ? err : "ok");
+    }
+}
+
 int main(void)
 {
     printf("test_mutant_kills: seed %u\n", SEED);
     paper_data_checks();
     model_init_checks();
+    symmetry_bound_checks();
     for (int b = 0; b < 4; b++) {
         suslov_model m;
         char err[128];
