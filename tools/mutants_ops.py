@@ -298,6 +298,7 @@ def main():
     ap.add_argument("--sample", type=int, default=0)
     ap.add_argument("--seed", type=int, default=20261123)
     ap.add_argument("--out", default="")
+    ap.add_argument("--first", type=int, default=1, help="start at this mutant (1-based): resume a run")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/mutants_equivalent")
     a = ap.parse_args()
@@ -307,6 +308,7 @@ def main():
     if a.sample and a.sample < len(muts):
         pick = sorted(random.Random(a.seed).sample(range(len(muts)), a.sample))
         muts = [muts[i] for i in pick]
+    muts = muts[a.first - 1:]
     if a.list:
         for m in muts:
             line, orig, new = describe(m, texts[m[0]])
