@@ -192,15 +192,18 @@ static void model_init_checks(void)
 }
 
 /* I_m's symmetry is checked to round-off, as documented in src/model.c: |I12 - I21| <= 4 u S with
- * S = |I11| + |I12| + |I21| + |I22|. An asymmetry 1e-8 (relative) above that bound is refused,
- * one 1e-8 below accepted; I12 ~ 1e-9 makes the asymmetry adjustable that finely. */
+ * S = |I11| + |I12| + |I21| + |I22|. An asymmetry just above that bound is refused, one just
+ * below accepted: 1e-8 (relative) from it with I12 ~ 1e-9, which makes the asymmetry adjustable
+ * that finely, and 10 % from it with I12 = -0.3, where every term of S weighs (ulp(0.3) is 2 %
+ * of the bound). */
 static void symmetry_bound_checks(void)
 {
-    const double u = 2.220446049250313e-16;
-    for (int above = 0; above < 2; above++) {
-        double I[9] = {1.3, 1e-9, 0.0, 1e-9, 0.7, 0.0, 0.2, -0.1, 1.0};
-        const double S = 1.3 + 2e-9 + 0.7;
-        I[3] = I[1] + 4.0 * u * S * (above ? 1.0 + 1e-8 : 1.0 - 1e-8);
+    const double u = 2.220446049250313e-16, i12[2] = {1e-9, -0.3}, margin[2] = {1e-8, 0.1};
+    for (int k = 0; k < 4; k++) {
+        const int above = k % 2, b = k / 2;
+        double I[9] = {1.3, i12[b], 0.0, i12[b], 0.7, 0.0, 0.2, -0.1, 1.0};
+        const double S = 1.3 + 2.0 * fabs(i12[b]) + 0.7;
+        I[3] = I[1] + 4.0 * u * S * (above ? 1.0 + margin[b] : 1.0 - margin[b]);
         suslov_model m;
         char err[128] = "";
         const int rc = suslov_model_init(&m, I, err, sizeof err);
