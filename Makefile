@@ -329,8 +329,10 @@ mutants: | $(DEPS_CHECK)
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
 MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
-.PHONY: mutants-ops
-mutants-ops: | $(DEPS_CHECK)
+.PHONY: mutants-ops deps-mutants
+deps-mutants:
+	@sh tools/deps.sh mutants
+mutants-ops: | deps-mutants
 	@mkdir -p $(BUILD)
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
 	    --out $(MUTANTS_OPS_OUT) $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))

@@ -7,11 +7,12 @@
 #   paper    figures + TeX Live (make paper; the default). make paper also runs the bench,
 #            so the Makefile adds the bench profile there
 #   bench    check + g++ and Boost.Odeint headers (make bench: the Boost peers; never make check)
+#   mutants  check + python3 (make mutants-ops: tools/mutants_ops.py)
 set -eu
 profile=${1:-paper}
 case $profile in
-    check|figures|paper|bench) ;;
-    *) echo "deps: unknown profile '$profile' (check, figures, paper or bench)" >&2; exit 2 ;;
+    check|figures|paper|bench|mutants) ;;
+    *) echo "deps: unknown profile '$profile' (check, figures, paper, bench or mutants)" >&2; exit 2 ;;
 esac
 have() { command -v "$1" >/dev/null 2>&1; }
 missing=""
@@ -39,8 +40,12 @@ if [ "$profile" = bench ]; then
     have g++ || missing="$missing g++"
     [ -f /usr/include/boost/numeric/odeint.hpp ] || missing="$missing libboost1.74-dev"
 fi
+# make mutants-ops: the generator and runner of the operator mutants
+if [ "$profile" = mutants ]; then
+    have python3 || missing="$missing python3"
+fi
 # the animation's video (optional at run time: without it the frames remain)
-if [ "$profile" != check ] && [ "$profile" != bench ]; then
+if [ "$profile" != check ] && [ "$profile" != bench ] && [ "$profile" != mutants ]; then
     have ffmpeg || missing="$missing ffmpeg"
 fi
 [ -z "$missing" ] && exit 0

@@ -24,6 +24,7 @@ Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-no
 Exit status 1 when a mutant survives unexplained.
 """
 import argparse
+import glob
 import os
 import random
 import re
@@ -110,8 +111,8 @@ def is_operand_end(tok, types):
 
 
 def scaled(lit, factor):
-    body = re.match(r"[0-9.eE+-]+", lit).group()
-    return repr(float(body) * factor) if factor != 2 else repr(float(body) * 2)
+    """A floating literal times factor (0.0 has no such mutant: the generator skips it)."""
+    return repr(float(re.match(r"[0-9.eE+-]+", lit).group()) * factor)
 
 
 def index_mutants(toks, i, types):
@@ -140,7 +141,8 @@ def generate(path, types):
     out = []
     for i, (kind, val, off) in enumerate(toks):
         prev = toks[i - 1] if i else ("op", ";", 0)
-        if kind == "number" and re.search(r"[.eE]", val) and not val.lower().startswith("0x"):
+        floating = kind == "number" and re.search(r"[.eE]", val)
+        if floating and float(re.match(r"[0-9.eE+-]+", val).group()) != 0:
             out.append((path, off, len(val), scaled(val, 1 + 1e-6), "lit*(1+1e-6)"))
             out.append((path, off, len(val), scaled(val, 2), "lit*2"))
         elif val in SWAP and val in ("+=", "-=", "*=", "/="):
@@ -301,15 +303,17 @@ def main():
     ap.add_argument("--sample", type=int, default=0)
     ap.add_argument("--seed", type=int, default=20261123)
     ap.add_argument("--out", default="")
+    ap.add_argument("--first", type=int, default=1, help="start at this mutant (1-based): resume a run")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/build/mutants_equivalent")
     a = ap.parse_args()
-    types = typedef_names([os.path.join("src", f) for f in os.listdir("src") if f.endswith((".h", ".c"))])
+    types = typedef_names(sorted(glob.glob("src/*/*.h") + glob.glob("src/*/*.c")))
     texts = {p: open(p).read() for p in a.files}
     muts = [m for p in a.files for m in generate(p, types)]
     if a.sample and a.sample < len(muts):
         pick = sorted(random.Random(a.seed).sample(range(len(muts)), a.sample))
         muts = [muts[i] for i in pick]
+    muts = muts[a.first - 1:]
     if a.list:
         for m in muts:
             line, orig, new = describe(m, texts[m[0]])

@@ -10,6 +10,7 @@
 #include "so3.h"
 
 #include <math.h>
+#include <string.h>
 
 #define TOL 1e-13 /* a few roundings of sums of O(1) terms; any mutant changes >= 1e-7 of a term */
 #define SEED 20261123u
@@ -168,10 +169,54 @@ static void paper_data_checks(void)
           SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
 }
 
+/* Every entry that is not finite is refused and named (as the CLI's --inertia reports it). */
+static void model_init_checks(void)
+{
+    const double bad[2] = {INFINITY, NAN};
+    for (int i = 0; i < 9; i++)
+        for (int k = 0; k < 2; k++) {
+            double I[9];
+            char err[128] = "", want[48];
+            for (int j = 0; j < 9; j++)
+                I[j] = BODIES[1][j];
+            I[i] = bad[k];
+            suslov_model m;
+            const int rc = suslov_model_init(&m, I, err, sizeof err);
+            snprintf(want, sizeof want, "entry %d is not finite", i + 1);
+            CHECK(rc == -1 && strstr(err, want), "entry %d = %g refused: \"%s\"", i + 1, bad[k], err);
+        }
+}
+
+/* I_m's symmetry is checked to round-off, as documented in src/model.c: |I12 - I21| <= 4 u S with
+ * S = |I11| + |I12| + |I21| + |I22|. An asymmetry just above that bound is refused, one just
+ * below accepted: 1e-8 (relative) from it with I12 ~ 1e-9, which makes the asymmetry adjustable
+ * that finely, and 10 % from it with I12 = -0.3, where every term of S weighs (ulp(0.3) is 2 %
+ * of the bound). */
+static void symmetry_bound_checks(void)
+{
+    const double u = 2.220446049250313e-16, i12[2] = {1e-9, -0.3}, margin[2] = {1e-8, 0.1};
+    for (int k = 0; k < 4; k++) {
+        const int above = k % 2, b = k / 2;
+        double I[9] = {1.3, i12[b], 0.0, i12[b], 0.7, 0.0, 0.2, -0.1, 1.0};
+        const double S = 1.3 + 2.0 * fabs(i12[b]) + 0.7;
+        I[3] = I[1] + 4.0 * u * S * (above ? 1.0 + margin[b] : 1.0 - margin[b]);
+        suslov_model m;
+        char err[128] = "";
+        const int rc = suslov_model_init(&m, I, err, sizeof err);
+        char names[96]; /* a refusal names both entries */
+        snprintf(names, sizeof names, "I12 = %.17g but I21 = %.17g", I[1], I[3]);
+        CHECK(rc == (above ? -1 : 0) && (!above || strstr(err, names)),
+              "asymmetry %.10g of the bound 4 u S %s: %s",
+              fabs(I[3] - I[1]) / (4.0 * u * S), above ? "refused" : "accepted", rc ? err : "ok");
+    }
+}
+
 int main(void)
 {
     printf("test_mutant_kills: seed %u\n", SEED);
     paper_data_checks();
+    model_init_checks();
+    symmetry_bound_checks();
     for (int b = 0; b < 4; b++) {
         suslov_model m;
         char err[128];
