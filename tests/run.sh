@@ -36,6 +36,7 @@ if [ "$mode" != ledger ]; then
     run test_animation_errors sh tests/cli/test_animation_errors.sh "$B"
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
+    run style sh tests/build/style.sh
     run eqmap sh tools/eqmap.sh check
 fi
 if [ "$mode" != test ]; then

@@ -57,7 +57,8 @@ static void magnus4_l(const exact_l *e, long double t0, long double t1, long n, 
         om[2] = 0.5L * h * (a1[2] + a2[2]) + k2 * (a1[0] * a2[1] - a1[1] * a2[0]);
         /* Rodrigues in long double, half-angle form (no cancellation) */
         const long double th = sqrtl(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
-        const long double a = th > 0 ? sinl(th) / th : 1, hs = th > 0 ? sinl(th / 2) / (th / 2) : 1, b = hs * hs / 2;
+        const long double a = th > 0 ? sinl(th) / th : 1, hs = th > 0 ? sinl(th / 2) / (th / 2) : 1,
+                          b = hs * hs / 2;
         const long double W[3][3] = {{0, -om[2], om[1]}, {om[2], 0, -om[0]}, {-om[1], om[0], 0}};
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) {

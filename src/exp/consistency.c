@@ -34,7 +34,8 @@ int suslov_local_errors(const suslov_model *m, const suslov_stepper_type *steppe
         if (stepper->apply_full) { /* the attitude is advanced inside the step (e.g. after every substep) */
             double w_full[3], lambda_full;
             suslov_step_stats st;
-            const int sf = stepper->apply_full(m, ref->eps, (suslov_recon)r, &att, ref->w_k, w_full, &lambda_full, &st);
+            const int sf =
+                stepper->apply_full(m, ref->eps, (suslov_recon)r, &att, ref->w_k, w_full, &lambda_full, &st);
             if (sf != SUSLOV_STEP_OK)
                 return sf;
         } else { /* (algo) after the w-step already taken */

@@ -1,7 +1,8 @@
 /* The convergence sweep behind the order claims and the convergence figure: for eps = 2^-j,
  * j = 0..SUSLOV_CONV_NJ-1, the local errors (one step from exact data, largest over a set of
  * t_k) and the global errors at T of every DSP, in w, lambda and on SO(3) with both
- * reconstructions, for every method of the registry; plus the accuracy of the reference attitude (refattitude.h) against Magnus4. */
+ * reconstructions, for every method of the registry; plus the accuracy of the reference attitude
+ * (refattitude.h) against Magnus4. */
 #ifndef SUSLOV_CONVERGENCE_H
 #define SUSLOV_CONVERGENCE_H
 

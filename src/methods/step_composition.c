@@ -1,6 +1,6 @@
 /* The composition methods as steppers: the midpoint DSP (Discretization) composed with the
- * weights of src/methods/composition_coeffs.c (the engine is src/methods/composition.c). One stepper per table;
- * apply is the w-step, apply_full advances (w, R) with the reconstruction after every substep. */
+ * weights of src/methods/composition_coeffs.c (the engine is src/methods/composition.c). One stepper per
+ * table; apply is the w-step, apply_full advances (w, R) with the reconstruction after every substep. */
 #include "composition.h"
 
 #define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE) \

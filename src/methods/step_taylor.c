@@ -281,24 +281,24 @@ double suslov_taylor_stability(int p, double z)
     return r;
 }
 
-#define TAYLOR_STEPPER(P)                                                                                      \
-    static int taylor##P##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],       \
-                                 double *lambda_next, suslov_step_stats *st)                                   \
-    {                                                                                                          \
-        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                            \
-    }                                                                                                          \
-    static int taylor##P##_apply_full(const suslov_model *m, double eps, suslov_recon recon,                   \
-                                      suslov_attitude *att, const double w[3], double w_next[3],               \
-                                      double *lambda_next, suslov_step_stats *st)                              \
-    {                                                                                                          \
-        (void)recon;                                                                                           \
-        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                  \
-    }                                                                                                          \
-    double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                          \
-    const suslov_stepper_type suslov_taylor##P##_type = {                                                     \
-        .name = "taylor" #P, .order = P, .lambda_order = P, .apply = taylor##P##_apply,                         \
-        .apply_full = taylor##P##_apply_full, .stability = suslov_stab_taylor##P, .conserves_energy = 1,       \
-        .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                                 \
+#define TAYLOR_STEPPER(P)                                                                                    \
+    static int taylor##P##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],     \
+                                 double *lambda_next, suslov_step_stats *st)                                 \
+    {                                                                                                        \
+        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                          \
+    }                                                                                                        \
+    static int taylor##P##_apply_full(const suslov_model *m, double eps, suslov_recon recon,                 \
+                                      suslov_attitude *att, const double w[3], double w_next[3],             \
+                                      double *lambda_next, suslov_step_stats *st)                            \
+    {                                                                                                        \
+        (void)recon;                                                                                         \
+        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                \
+    }                                                                                                        \
+    double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                         \
+    const suslov_stepper_type suslov_taylor##P##_type = {                                                    \
+        .name = "taylor" #P, .order = P, .lambda_order = P, .apply = taylor##P##_apply,                      \
+        .apply_full = taylor##P##_apply_full, .stability = suslov_stab_taylor##P, .conserves_energy = 1,     \
+        .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                                \
         .apply_order = suslov_taylor_apply_full, .source = __FILE__};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,

@@ -1,5 +1,6 @@
 // Boost.Odeint peers for make bench (see bench_odeint.h). The right-hand sides are the same
-// (ContDyn) as everywhere (model.h), with R' = R w^ or q' = 1/2 q (x) (0, w) for the attitude (none for w alone).
+// (ContDyn) as everywhere (model.h), with R' = R w^ or q' = 1/2 q (x) (0, w) for the attitude (none for w
+// alone).
 #include "bench_odeint.h"
 
 extern "C" {

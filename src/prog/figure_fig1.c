@@ -60,7 +60,11 @@ static void draw(cairo_t *cr, void *vctx)
     /* (e) the constraint: w3 = 0 exactly, and the unreduced constraint of R_k w^_k */
     plot_axes ax;
     plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
-    plot_frame(&ax, "t", "|\xe2\x9f\xa8" "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 \xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|", "(e)");
+    plot_frame(&ax, "t",
+               "|\xe2\x9f\xa8"
+               "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
+               "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
+               "(e)");
     plot_markers(&ax, f->mid.t, f->mu_mid, n, MARK_EVERY / 5, &mid);
     plot_markers(&ax, f->var.t, f->mu_var, n, MARK_EVERY / 5, &var);
     const plot_style lege[2] = {mid, var};
@@ -84,14 +88,16 @@ int main(int argc, char **argv)
     char path[4096];
     fig1 f;
     const long N = suslov_experiment_steps(T_END, EPS);
-    if (suslov_series_init(&f.ex, N, EVERY) || suslov_series_init(&f.mid, N, EVERY) || suslov_series_init(&f.var, N, EVERY)) {
+    if (suslov_series_init(&f.ex, N, EVERY) || suslov_series_init(&f.mid, N, EVERY) ||
+        suslov_series_init(&f.var, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");
         return 1;
     }
     suslov_run_report rep;
     const suslov_run_config cm = {&m, suslov_step_midpoint, SUSLOV_RECON_CAYLEY, EPS, N, EVERY};
     const suslov_run_config cv = {&m, suslov_step_variational, SUSLOV_RECON_CAYLEY, EPS, N, EVERY};
-    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) || suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
+    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) ||
+        suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
         fprintf(stderr, "figure_fig1: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
         return 3;
     }
@@ -120,28 +126,33 @@ int main(int argc, char **argv)
                       17, cols, n, 1) != 0)
         return 1;
     char cap[4096];
-    snprintf(cap, sizeof cap,
-             "Figure 1 (the paper's Figure 1, reproduced). Regenerate: make figures (src/prog/figure_fig1.c).\n"
-             "Run: midpoint DSP ((Discretization) with the midpoint l1, l2, lambda_{k+1} = lambda(w^{k+1})) and the\n"
-             "variational integrator ((taudyn), (taualg)), implicit steps solved by Newton to round-off;\n"
-             "reconstruction R_{k+1} = R_k cay(eps w_k). eps = 1e-3, t in [0, %g] (%ld steps; the paper gives no\n"
-             "interval: %g = 8.7/k covers the whole transient to the steady rotation, k = %.4f), inertia by rows\n"
-             "[[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] as printed, w(0) = (0.4, 0.5).\n"
-             "Reference (red line): the closed-form solution (the paper used RK4).\n"
-             "(a), (b) w1, w2 of the midpoint rule (blue dots every 0.5 time units) against the reference.\n"
-             "(c) lambda of the midpoint rule; (d) lambda of the variational integrator (taualg): offset from the\n"
-             "reference by O_0 of PropoFinal (at most %.3g here), the inconsistent multiplier.\n"
-             "(e) w3 is 0 exactly for both (imposed by (DSP)); plotted is the unreduced constraint of the\n"
-             "reconstructed velocity, |<e3, vee(R_k^T R_k w^_k)>| <= %.2g (round-off; zeros are not drawn).\n"
-             "(f) |E_k - E_0|: midpoint <= %.2g (round-off: the implicit midpoint rule conserves E), variational\n"
-             "<= %.2g (not conserved, O(eps^2), invisible at the scale of (a)-(d)).\n"
-             "max |w_mid - w_var| = %.2g over the run, against max |lambda_mid - lambda_var| = %.3g.\n"
-             "Data: data/fig1.csv (every %dth step).\n",
-             T_END, N, T_END, ex.k, suslov_series_maxdiff(&f.ex, &f.var, offsetof(suslov_series, lambda)),
-             fmax(suslov_series_maxdrift(&f.mid, offsetof(suslov_series, mu)), suslov_series_maxdrift(&f.var, offsetof(suslov_series, mu))),
-             suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
-             suslov_series_maxdrift(&f.var, offsetof(suslov_series, energy)),
-             fmax(suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w1)), suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w2))),
-             suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, lambda)), EVERY);
+    snprintf(
+        cap, sizeof cap,
+        "Figure 1 (the paper's Figure 1, reproduced). Regenerate: make figures (src/prog/figure_fig1.c).\n"
+        "Run: midpoint DSP ((Discretization) with the midpoint l1, l2, lambda_{k+1} = lambda(w^{k+1})) and "
+        "the\n"
+        "variational integrator ((taudyn), (taualg)), implicit steps solved by Newton to round-off;\n"
+        "reconstruction R_{k+1} = R_k cay(eps w_k). eps = 1e-3, t in [0, %g] (%ld steps; the paper gives no\n"
+        "interval: %g = 8.7/k covers the whole transient to the steady rotation, k = %.4f), inertia by rows\n"
+        "[[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] as printed, w(0) = (0.4, 0.5).\n"
+        "Reference (red line): the closed-form solution (the paper used RK4).\n"
+        "(a), (b) w1, w2 of the midpoint rule (blue dots every 0.5 time units) against the reference.\n"
+        "(c) lambda of the midpoint rule; (d) lambda of the variational integrator (taualg): offset from "
+        "the\n"
+        "reference by O_0 of PropoFinal (at most %.3g here), the inconsistent multiplier.\n"
+        "(e) w3 is 0 exactly for both (imposed by (DSP)); plotted is the unreduced constraint of the\n"
+        "reconstructed velocity, |<e3, vee(R_k^T R_k w^_k)>| <= %.2g (round-off; zeros are not drawn).\n"
+        "(f) |E_k - E_0|: midpoint <= %.2g (round-off: the implicit midpoint rule conserves E), variational\n"
+        "<= %.2g (not conserved, O(eps^2), invisible at the scale of (a)-(d)).\n"
+        "max |w_mid - w_var| = %.2g over the run, against max |lambda_mid - lambda_var| = %.3g.\n"
+        "Data: data/fig1.csv (every %dth step).\n",
+        T_END, N, T_END, ex.k, suslov_series_maxdiff(&f.ex, &f.var, offsetof(suslov_series, lambda)),
+        fmax(suslov_series_maxdrift(&f.mid, offsetof(suslov_series, mu)),
+             suslov_series_maxdrift(&f.var, offsetof(suslov_series, mu))),
+        suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
+        suslov_series_maxdrift(&f.var, offsetof(suslov_series, energy)),
+        fmax(suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w1)),
+             suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w2))),
+        suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, lambda)), EVERY);
     return fig_write_figure(argv[1], "fig1", 540, 660, draw, &f, cap) != 0;
 }

@@ -37,7 +37,8 @@ static void draw(cairo_t *cr, void *vctx)
         {f->ex.w1, f->mid.w1, f->var.w1, "\xcf\x89\xe2\x82\x81"},
         {f->ex.w2, f->mid.w2, f->var.w2, "\xcf\x89\xe2\x82\x82"},
         {f->ex.lambda, f->mid.lambda, f->var.lambda, "\xce\xbb"},
-        {f->ex.energy, f->mid.energy, f->var.energy, "E = \xc2\xbd\xe2\x9f\xa8I\xe2\x82\x98\xcf\x89, \xcf\x89\xe2\x9f\xa9"},
+        {f->ex.energy, f->mid.energy, f->var.energy,
+         "E = \xc2\xbd\xe2\x9f\xa8I\xe2\x82\x98\xcf\x89, \xcf\x89\xe2\x9f\xa9"},
     };
     static const char *letters[] = {"(a)", "(b)", "(c)", "(d)", "(e)", "(f)"};
     plot_text(cr, W / 2, 14,
@@ -60,7 +61,11 @@ static void draw(cairo_t *cr, void *vctx)
     }
     plot_axes ax;
     plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
-    plot_frame(&ax, "t", "|\xe2\x9f\xa8" "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 \xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|", letters[4]);
+    plot_frame(&ax, "t",
+               "|\xe2\x9f\xa8"
+               "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
+               "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
+               letters[4]);
     plot_markers(&ax, f->mid.t, f->mu[0], f->mid.n, 1, &mid);
     plot_markers(&ax, f->var.t, f->mu[1], f->var.n, 1, &var);
     plot_legend(&ax, leg + 1, 2, 1);
@@ -68,7 +73,8 @@ static void draw(cairo_t *cr, void *vctx)
     plot_extend(&lo, &hi, f->dist[1], f->mid.n, 1, 1);
     plot_extend(&lo, &hi, f->dist[2], f->var.n, 1, 1);
     plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, fmax(lo, 1e-17), hi, 0, 1);
-    plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)", letters[5]);
+    plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
+               letters[5]);
     plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
     plot_markers(&ax, f->mid.t, f->dist[1], f->mid.n, 1, &mid);
     plot_markers(&ax, f->var.t, f->dist[2], f->var.n, 1, &var);
@@ -86,14 +92,16 @@ int main(int argc, char **argv)
     fig2 f;
     suslov_exact_limit(&ex, f.winf);
     const long N = suslov_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
-    if (suslov_series_init(&f.mid, N, 1) || suslov_series_init(&f.var, N, 1) || suslov_series_init(&f.ex, NF, 1)) {
+    if (suslov_series_init(&f.mid, N, 1) || suslov_series_init(&f.var, N, 1) ||
+        suslov_series_init(&f.ex, NF, 1)) {
         fprintf(stderr, "figure_fig2: out of memory\n");
         return 1;
     }
     suslov_run_report rep;
     const suslov_run_config cm = {&m, suslov_step_midpoint, SUSLOV_RECON_CAYLEY, EPS, N, 1};
     const suslov_run_config cv = {&m, suslov_step_variational, SUSLOV_RECON_CAYLEY, EPS, N, 1};
-    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) || suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
+    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) ||
+        suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
         fprintf(stderr, "figure_fig2: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
         return 3;
     }
@@ -130,22 +138,26 @@ int main(int argc, char **argv)
         return 1;
     const size_t last = f.mid.n - 1;
     char cap[4096];
-    snprintf(cap, sizeof cap,
-             "Figure 2 (the paper's Figure 2, reproduced; the measurements contradict its caption).\n"
-             "Regenerate: make figures (src/prog/figure_fig2.c).\n"
-             "Run: midpoint DSP (green circles) and variational integrator (blue dots), eps = 1, t in [0, %g]\n"
-             "(%ld steps; the paper gives no interval), implicit steps solved by Newton to round-off, inertia by\n"
-             "rows as printed, w(0) = (0.4, 0.5). Reference (red line): the closed-form solution (the paper used RK4).\n"
-             "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; (e) w3 = 0 exactly for both, plotted is the\n"
-             "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; zeros are not drawn); (f) |w_k - w_inf|,\n"
-             "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
-             "Measured: the midpoint rule conserves E to %.1e and ends %.1e from w_inf; the variational\n"
-             "integrator loses %.3g of E (%.2f%%) and ends %.2e from w_inf, at a wrong steady rotation.\n"
-             "The paper's caption (variational better, mainly in energy; midpoint decays fast) is not reproduced;\n"
-             "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
-             "Data: data/fig2.csv (every step).\n",
-             T_END, N, f.winf[0], f.winf[1], suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
-             f.dist[1][last], f.var.energy[0] - f.var.energy[last],
-             100.0 * (f.var.energy[0] - f.var.energy[last]) / f.var.energy[0], f.dist[2][last]);
+    snprintf(
+        cap, sizeof cap,
+        "Figure 2 (the paper's Figure 2, reproduced; the measurements contradict its caption).\n"
+        "Regenerate: make figures (src/prog/figure_fig2.c).\n"
+        "Run: midpoint DSP (green circles) and variational integrator (blue dots), eps = 1, t in [0, %g]\n"
+        "(%ld steps; the paper gives no interval), implicit steps solved by Newton to round-off, inertia by\n"
+        "rows as printed, w(0) = (0.4, 0.5). Reference (red line): the closed-form solution (the paper used "
+        "RK4).\n"
+        "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; (e) w3 = 0 exactly for both, plotted is the\n"
+        "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; zeros are not drawn); (f) |w_k - "
+        "w_inf|,\n"
+        "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
+        "Measured: the midpoint rule conserves E to %.1e and ends %.1e from w_inf; the variational\n"
+        "integrator loses %.3g of E (%.2f%%) and ends %.2e from w_inf, at a wrong steady rotation.\n"
+        "The paper's caption (variational better, mainly in energy; midpoint decays fast) is not "
+        "reproduced;\n"
+        "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
+        "Data: data/fig2.csv (every step).\n",
+        T_END, N, f.winf[0], f.winf[1], suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
+        f.dist[1][last], f.var.energy[0] - f.var.energy[last],
+        100.0 * (f.var.energy[0] - f.var.energy[last]) / f.var.energy[0], f.dist[2][last]);
     return fig_write_figure(argv[1], "fig2", 540, 660, draw, &f, cap) != 0;
 }

@@ -30,8 +30,12 @@ typedef struct {
 
 static plot_style curve_style(int c)
 {
-    static const char *labels[NCURVE] = {"midpoint, Newton", "1 sweep (= explicit Euler)",
-                                         "2 sweeps (= explicit midpoint)", "3 sweeps", "5 sweeps", "variational"};
+    static const char *labels[NCURVE] = {"midpoint, Newton",
+                                         "1 sweep (= explicit Euler)",
+                                         "2 sweeps (= explicit midpoint)",
+                                         "3 sweeps",
+                                         "5 sweeps",
+                                         "variational"};
     const double *colours[NCURVE] = {PLOT_GREEN, PLOT_ORANGE, PLOT_PURPLE, PLOT_GREY, PLOT_BLACK, PLOT_BLUE};
     return plot_style_of(colours[c], c == 0 || c == NCURVE - 1 ? 1.6 : 1.0, c >= 3 && c < NCURVE - 1 ? 1 : 0,
                          PLOT_NONE, 0, labels[c]);
@@ -44,7 +48,9 @@ static void draw(cairo_t *cr, void *vctx)
     plot_style st[NCURVE];
     for (int c = 0; c < NCURVE; c++)
         st[c] = curve_style(c);
-    plot_text(cr, W / 2, 14, "Energy of the midpoint rule at \xce\xb5 = 1: every reading of its implicit equation", 11, 0.5, 0.5, 1);
+    plot_text(cr, W / 2, 14,
+              "Energy of the midpoint rule at \xce\xb5 = 1: every reading of its implicit equation", 11, 0.5,
+              0.5, 1);
     plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     for (int c = 0; c < NCURVE; c++)
@@ -114,6 +120,40 @@ static void draw(cairo_t *cr, void *vctx)
     }
 }
 
+/* Each curve of (a)-(b): E_k - E_0 along the run of its reading. Returns 3 when a run fails. */
+static int run_curves(const suslov_model *m, readings *r)
+{
+    double E[N_STEPS + 1], wN[2];
+    for (int c = 0; c < NCURVE; c++) {
+        if (curve_sweeps[c] > 0) {
+            suslov_midpoint_sweeps_run(m, EPS, curve_sweeps[c], SUSLOV_PAPER_OMEGA0, N_STEPS, E, wN);
+        } else {
+            suslov_series s;
+            suslov_run_report rep;
+            const suslov_run_config cfg = {
+                m,
+                curve_sweeps[c] == 0 ? suslov_step_midpoint : suslov_step_variational,
+                SUSLOV_RECON_CAYLEY,
+                EPS,
+                N_STEPS,
+                1};
+            if (suslov_series_init(&s, N_STEPS, 1) ||
+                suslov_series_run(&s, &cfg, SUSLOV_PAPER_OMEGA0, &rep)) {
+                fprintf(stderr, "figure_fig2_energy: run failed\n");
+                return 3;
+            }
+            for (int k = 0; k <= N_STEPS; k++)
+                E[k] = s.energy[k];
+            suslov_series_free(&s);
+        }
+        for (int k = 0; k <= N_STEPS; k++) {
+            r->dE[c][k] = E[k] - E[0];
+            r->adE[c][k] = fabs(E[k] - E[0]);
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     suslov_model m;
@@ -131,28 +171,9 @@ int main(int argc, char **argv)
         return 1;
     for (int k = 0; k <= N_STEPS; k++)
         r->t[k] = k * EPS;
+    if (run_curves(&m, r) != 0)
+        return 3;
     double E[N_STEPS + 1], wN[2];
-    for (int c = 0; c < NCURVE; c++) {
-        if (curve_sweeps[c] > 0) {
-            suslov_midpoint_sweeps_run(&m, EPS, curve_sweeps[c], SUSLOV_PAPER_OMEGA0, N_STEPS, E, wN);
-        } else {
-            suslov_series s;
-            suslov_run_report rep;
-            const suslov_run_config cfg = {&m, curve_sweeps[c] == 0 ? suslov_step_midpoint : suslov_step_variational,
-                                           SUSLOV_RECON_CAYLEY, EPS, N_STEPS, 1};
-            if (suslov_series_init(&s, N_STEPS, 1) || suslov_series_run(&s, &cfg, SUSLOV_PAPER_OMEGA0, &rep)) {
-                fprintf(stderr, "figure_fig2_energy: run failed\n");
-                return 3;
-            }
-            for (int k = 0; k <= N_STEPS; k++)
-                E[k] = s.energy[k];
-            suslov_series_free(&s);
-        }
-        for (int k = 0; k <= N_STEPS; k++) {
-            r->dE[c][k] = E[k] - E[0];
-            r->adE[c][k] = fabs(E[k] - E[0]);
-        }
-    }
     r->var_final = r->dE[NCURVE - 1][N_STEPS];
     r->newton_final = r->adE[0][N_STEPS];
     for (int i = 0; i < NSWEEP; i++) {
@@ -164,23 +185,29 @@ int main(int argc, char **argv)
     r->var_final = fabs(r->var_final);
     const double *cols[] = {r->t, r->dE[0], r->dE[1], r->dE[2], r->dE[3], r->dE[4], r->dE[5]};
     if (fig_write_csv(fig_path(path, sizeof path, argv[2], "fig2_energy", "csv"),
-                      "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_sweeps5,dE_variational",
+                      "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_"
+                      "sweeps5,dE_variational",
                       7, cols, N_STEPS + 1, 1) != 0)
         return 1;
     char cap[2048];
-    snprintf(cap, sizeof cap,
-             "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the fig2-energy lines of\n"
-             "the claims ledger). Regenerate: make figures (src/prog/figure_fig2_energy.c).\n"
-             "Run: eps = 1, t in [0, %g], inertia as printed, w(0) = (0.4, 0.5). The implicit equation\n"
-             "(Discretization) with the midpoint l1, l2 is solved (i) by Newton to round-off, (ii) by n fixed-point\n"
-             "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = w^k (n = 1 is explicit Euler, n = 2 the explicit\n"
-             "midpoint rule); the variational integrator (taudyn) is solved by Newton.\n"
-             "(a) E_k - E_0; (b) |E_k - E_0|, log scale; (c) |E_N - E_0| at t = %g against n, with the variational\n"
-             "loss as a dashed line; (d) the numbers.\n"
-             "Measured: Newton |dE| = %.2g; variational loses %.4g; n = 1 gains %.4g; n = 2 loses %.4g; n = 3 %s %.3g.\n"
-             "No reading loses energy faster than the variational integrator.\n"
-             "Data: data/fig2_energy.csv.\n",
-             T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
-             r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
+    snprintf(
+        cap, sizeof cap,
+        "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the fig2-energy lines "
+        "of\n"
+        "the claims ledger). Regenerate: make figures (src/prog/figure_fig2_energy.c).\n"
+        "Run: eps = 1, t in [0, %g], inertia as printed, w(0) = (0.4, 0.5). The implicit equation\n"
+        "(Discretization) with the midpoint l1, l2 is solved (i) by Newton to round-off, (ii) by n "
+        "fixed-point\n"
+        "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = w^k (n = 1 is explicit Euler, n = 2 the explicit\n"
+        "midpoint rule); the variational integrator (taudyn) is solved by Newton.\n"
+        "(a) E_k - E_0; (b) |E_k - E_0|, log scale; (c) |E_N - E_0| at t = %g against n, with the "
+        "variational\n"
+        "loss as a dashed line; (d) the numbers.\n"
+        "Measured: Newton |dE| = %.2g; variational loses %.4g; n = 1 gains %.4g; n = 2 loses %.4g; n = 3 %s "
+        "%.3g.\n"
+        "No reading loses energy faster than the variational integrator.\n"
+        "Data: data/fig2_energy.csv.\n",
+        T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
+        r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
     return fig_write_figure(argv[1], "fig2_energy", 560, 520, draw, r, cap) != 0;
 }

@@ -24,11 +24,17 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const inertia_fig *f = vctx;
     const double W = 560, H = 420;
-    const plot_style r1 = plot_style_of(PLOT_RED, 1.4, 0, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
+    const plot_style r1 = plot_style_of(PLOT_RED, 1.4, 0, PLOT_NONE, 0,
+                                        "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
     const plot_style r2 = plot_style_of(PLOT_RED, 1.4, 1, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third row");
-    const plot_style c1 = plot_style_of(PLOT_BLUE, 1.4, 0, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
-    const plot_style c2 = plot_style_of(PLOT_BLUE, 1.4, 1, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
-    plot_text(cr, W / 2, 14, "Which inertia? The printed I is not symmetric (I\xe2\x82\x82\xe2\x82\x83 = 0.2, I\xe2\x82\x83\xe2\x82\x82 = 0.1)", 11, 0.5, 0.5, 1);
+    const plot_style c1 =
+        plot_style_of(PLOT_BLUE, 1.4, 0, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
+    const plot_style c2 =
+        plot_style_of(PLOT_BLUE, 1.4, 1, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
+    plot_text(cr, W / 2, 14,
+              "Which inertia? The printed I is not symmetric (I\xe2\x82\x82\xe2\x82\x83 = 0.2, "
+              "I\xe2\x82\x83\xe2\x82\x82 = 0.1)",
+              11, 0.5, 0.5, 1);
     plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     plot_extend(&lo, &hi, f->row.w1, f->row.n, 1, 0);
@@ -67,9 +73,13 @@ static void draw(cairo_t *cr, void *vctx)
     const plot_style lega[4] = {r1, r2, c1, c2};
     plot_legend(&ax, lega, 4, 0);
     char line[128];
-    snprintf(line, sizeof line, "rate k to the steady rotation: %.4f (row), %.4f (column)", f->k_row, f->k_col);
+    snprintf(line, sizeof line, "rate k to the steady rotation: %.4f (row), %.4f (column)", f->k_row,
+             f->k_col);
     plot_text(cr, x - 36, y + 76, line, 8.0, 0.0, 0.0, 0);
-    plot_text(cr, x - 36, y + 90, "Only I_m and (I\xe2\x82\x83\xe2\x82\x81, I\xe2\x82\x83\xe2\x82\x82) enter (ContDyn)/(LagMult);", 8.0, 0.0, 0.0, 0);
+    plot_text(
+        cr, x - 36, y + 90,
+        "Only I_m and (I\xe2\x82\x83\xe2\x82\x81, I\xe2\x82\x83\xe2\x82\x82) enter (ContDyn)/(LagMult);", 8.0,
+        0.0, 0.0, 0);
     plot_text(cr, x - 36, y + 102, "all our other figures use the row as printed.", 8.0, 0.0, 0.0, 0);
 }
 
@@ -90,7 +100,8 @@ int main(int argc, char **argv)
         return 1;
     }
     suslov_inertia_column_swap(SUSLOV_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
-    if (suslov_model_init(&mr, SUSLOV_PAPER_INERTIA, err, sizeof err) || suslov_model_init(&mc, Icol, err, sizeof err)) {
+    if (suslov_model_init(&mr, SUSLOV_PAPER_INERTIA, err, sizeof err) ||
+        suslov_model_init(&mc, Icol, err, sizeof err)) {
         fprintf(stderr, "figure_inertia: an inertia tensor is rejected: %s\n", err);
         return 1;
     }
@@ -106,7 +117,8 @@ int main(int argc, char **argv)
         f.dist[i] = hypot(f.row.w1[i] - f.col.w1[i], f.row.w2[i] - f.col.w2[i]);
     const double *cols[] = {f.row.t, f.row.w1, f.row.w2, f.row.lambda, f.col.w1, f.col.w2, f.col.lambda};
     if (fig_write_csv(fig_path(path, sizeof path, argv[2], "inertia", "csv"),
-                      "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n, 1) != 0)
+                      "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n,
+                      1) != 0)
         return 1;
     double maxd = 0.0;
     for (size_t i = 0; i < f.row.n; i++)
@@ -117,9 +129,12 @@ int main(int argc, char **argv)
     char cap[2048];
     snprintf(cap, sizeof cap,
              "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
-             "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. (RGB2)/(ContDyn)/(LagMult)\n"
-             "use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); a symmetric body with the\n"
-             "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t in [0, %g].\n"
+             "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
+             "(RGB2)/(ContDyn)/(LagMult)\n"
+             "use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); a symmetric body "
+             "with the\n"
+             "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t in "
+             "[0, %g].\n"
              "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row - w_col|, at most %.3f. Steady rotations:\n"
              "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
              "Data: data/inertia.csv.\n",

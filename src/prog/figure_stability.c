@@ -32,7 +32,8 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const stab_fig *f = vctx;
     const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
-    plot_text(cr, W / 2, 14, "Where each method stops working: step h = \xce\xb5k against the initial angle", 11, 0.5, 0.5, 1);
+    plot_text(cr, W / 2, 14, "Where each method stops working: step h = \xce\xb5k against the initial angle",
+              11, 0.5, 0.5, 1);
     for (int m = 0; m < f->nm; m++) {
         plot_axes ax;
         char letter[8];
@@ -70,6 +71,33 @@ static void draw(cairo_t *cr, void *vctx)
     }
 }
 
+/* data/stability.csv: one row per (method, h, starting angle) with its class and error. */
+static int write_csv(const stab_fig *f, const char *dir)
+{
+    char err[256], path[4096];
+    atomic_file af;
+    if (atomic_file_open(&af, fig_path(path, sizeof path, dir, "stability", "csv"), err, sizeof err) !=
+        0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    fprintf(af.fp, "method,h,theta0_degrees,class,class_name,failed_step,final_relative_error\n");
+    for (int m = 0; m < f->nm; m++)
+        for (int i = 0; i < NH; i++)
+            for (int a = 0; a < NANGLE; a++) {
+                const stab_result *r = &f->res[m][i * NANGLE + a];
+                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", suslov_method_get(m)->type->name, f->hs[i],
+                        (2.0 * 3.14159265358979323846 * a / NANGLE + STAB_ANGLE0) * 180.0 /
+                            3.14159265358979323846,
+                        r->cls, STAB_NAMES[r->cls], r->step, r->final_err);
+            }
+    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     suslov_model model;
@@ -77,7 +105,6 @@ int main(int argc, char **argv)
     const int setup = fig_setup_paper(argc, "stability", &model, &paper);
     if (setup != 0)
         return setup;
-    char err[256], path[4096];
     stab_fig *f = malloc(sizeof *f);
     if (!f)
         return 1;
@@ -98,54 +125,48 @@ int main(int argc, char **argv)
         }
     }
     if (unclassified) {
-        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n", unclassified);
+        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
+                unclassified);
         return 1;
     }
-    atomic_file af;
-    if (atomic_file_open(&af, fig_path(path, sizeof path, argv[2], "stability", "csv"), err, sizeof err) != 0) {
-        fprintf(stderr, "figure_stability: %s\n", err);
+    if (write_csv(f, argv[2]) != 0)
         return 1;
-    }
-    fprintf(af.fp, "method,h,theta0_degrees,class,class_name,failed_step,final_relative_error\n");
-    for (int m = 0; m < f->nm; m++)
-        for (int i = 0; i < NH; i++)
-            for (int a = 0; a < NANGLE; a++) {
-                const stab_result *r = &f->res[m][i * NANGLE + a];
-                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", suslov_method_get(m)->type->name, f->hs[i],
-                        (2.0 * 3.14159265358979323846 * a / NANGLE + STAB_ANGLE0) * 180.0 / 3.14159265358979323846,
-                        r->cls, STAB_NAMES[r->cls], r->step, r->final_err);
-            }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
-        fprintf(stderr, "figure_stability: %s\n", err);
-        return 1;
-    }
     char limits[1024] = "";
     for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
         len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
                         suslov_method_get(m)->type->name, f->limit[m]);
     char cap[4096];
-    snprintf(cap, sizeof cap,
-             "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in src/exp/stability.h).\n"
-             "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
-             "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
-             "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run lasts\n"
-             "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
-             "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
-             "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = Newton fails or lands on another root than\n"
-             "the continued branch, or a Taylor step lies beyond its series' radius of convergence; regularity lost = the (REGLOC) block is singular or has changed sign.\n"
-             "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
-             "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; checked\n"
-             "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: no\n"
-             "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ 1 for Euler).\n"
-             "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
-             "conserves E: every run is good up to h ~ 3. From h ~ 4 on, for starts on part of the ellipse, its\n"
-             "quadratic step equation, solved by Newton from an explicit predictor whose error grows like h^3,\n"
-             "lands on another root than the branch continued from eps = 0 (solver failure) or on a root past a\n"
-             "fold of that branch (regularity lost); the runs that stay on the branch remain good. The variational\n"
-             "step has no linear limit either (its linearisation at the rotation has spectral radius < 1 for all\n"
-             "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
-             "its cubic step equation loses the continued branch from h ~ 150.\n"
-             "Data: data/stability.csv.\n",
-             paper.k, NH, STAB_BRANCH_H, limits);
+    snprintf(
+        cap, sizeof cap,
+        "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
+        "src/exp/stability.h).\n"
+        "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
+        "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
+        "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run "
+        "lasts\n"
+        "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
+        "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
+        "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = Newton fails or lands on another root "
+        "than\n"
+        "the continued branch, or a Taylor step lies beyond its series' radius of convergence; regularity "
+        "lost = the (REGLOC) block is singular or has changed sign.\n"
+        "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
+        "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; "
+        "checked\n"
+        "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: "
+        "no\n"
+        "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ "
+        "1 for Euler).\n"
+        "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
+        "conserves E: every run is good up to h ~ 3. From h ~ 4 on, for starts on part of the ellipse, its\n"
+        "quadratic step equation, solved by Newton from an explicit predictor whose error grows like h^3,\n"
+        "lands on another root than the branch continued from eps = 0 (solver failure) or on a root past a\n"
+        "fold of that branch (regularity lost); the runs that stay on the branch remain good. The "
+        "variational\n"
+        "step has no linear limit either (its linearisation at the rotation has spectral radius < 1 for all\n"
+        "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
+        "its cubic step equation loses the continued branch from h ~ 150.\n"
+        "Data: data/stability.csv.\n",
+        paper.k, NH, STAB_BRANCH_H, limits);
     return fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
 }

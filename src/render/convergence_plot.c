@@ -78,12 +78,14 @@ static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char 
         const double *err = curve(f, m, what, f->spec->solid) + j0;
         /* the legend carries the least-squares slope over the ledger's window */
         suslov_order_fit fit;
-        const int ok = suslov_fit_order(eps, err, nj, SUSLOV_FIT_EPS_MAX, SUSLOV_FIT_FLOOR_REL * size, &fit) == 0;
+        const int ok =
+            suslov_fit_order(eps, err, nj, SUSLOV_FIT_EPS_MAX, SUSLOV_FIT_FLOOR_REL * size, &fit) == 0;
         const char *name = suslov_method_get(m)->type->name;
         if (!f->spec->legend_slopes)
             snprintf(labels[m], sizeof labels[m], "%s", name);
         else if (ok)
-            snprintf(labels[m], sizeof labels[m], "%s, slope %.2f", name, fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
+            snprintf(labels[m], sizeof labels[m], "%s, slope %.2f", name,
+                     fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
         else
             snprintf(labels[m], sizeof labels[m], "%s, no slope", name);
         leg[nleg] = method_style(m, 0, 1);
@@ -109,8 +111,8 @@ static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char 
     for (int s = 0; s < nslopes; s++) {
         char lab[8];
         snprintf(lab, sizeof lab, "%d", slopes[s]);
-        plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j], ax.y1 * top * f->spec->slope_drop,
-                   slopes[s], lab);
+        plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j],
+                   ax.y1 * top * f->spec->slope_drop, slopes[s], lab);
     }
     plot_legend(&ax, leg, nleg, f->spec->legend_corner);
     free(labels);
@@ -120,15 +122,28 @@ static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char 
 static void draw(cairo_t *cr, void *vctx)
 {
     const conv_fig *f = vctx;
-    plot_text(cr, 280, 14, "Convergence against \xce\xb5 (local: one step from exact data; global: at t = 10)", 11, 0.5, 0.5, 1);
+    plot_text(cr, 280, 14,
+              "Convergence against \xce\xb5 (local: one step from exact data; global: at t = 10)", 11, 0.5,
+              0.5, 1);
     const int *s_loc = f->spec->slopes_local, *s_glob = f->spec->slopes_global, ns = f->spec->nslopes;
-    const int *s_so3loc = f->spec->slopes_so3_local, *s_so3glob = f->spec->slopes_so3_global, nso3 = f->spec->nslopes_so3;
-    panel(cr, 0, f, LOC_W, "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|", "(a)", s_loc, ns, 0.1, SUSLOV_SIZE_W);
-    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", s_glob, ns, 0.1, SUSLOV_SIZE_W);
-    panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)", "(c)", s_so3loc, nso3, 0.1, SUSLOV_SIZE_R);
-    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", s_so3glob, nso3, 0.1, SUSLOV_SIZE_R);
-    panel(cr, 4, f, LOC_LAMBDA, "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|", "(e)", s_loc, ns, 0.01, SUSLOV_SIZE_LAMBDA);
-    panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)", s_glob, ns, 0.01, SUSLOV_SIZE_LAMBDA);
+    const int *s_so3loc = f->spec->slopes_so3_local, *s_so3glob = f->spec->slopes_so3_global,
+              nso3 = f->spec->nslopes_so3;
+    panel(
+        cr, 0, f, LOC_W,
+        "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
+        "(a)", s_loc, ns, 0.1, SUSLOV_SIZE_W);
+    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", s_glob, ns, 0.1,
+          SUSLOV_SIZE_W);
+    panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)",
+          "(c)", s_so3loc, nso3, 0.1, SUSLOV_SIZE_R);
+    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", s_so3glob, nso3, 0.1,
+          SUSLOV_SIZE_R);
+    panel(
+        cr, 4, f, LOC_LAMBDA,
+        "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
+        "(e)", s_loc, ns, 0.01, SUSLOV_SIZE_LAMBDA);
+    panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)", s_glob, ns,
+          0.01, SUSLOV_SIZE_LAMBDA);
 }
 
 int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec)

@@ -95,7 +95,9 @@ int scene_init(scene *s, const suslov_model *mdl, int vw, int vh)
     gsl_vector_free(ev);
     gsl_matrix_free(V);
     gsl_matrix_free(S);
-    const double eye[3] = {5.95, 4.55, 4.0}, up[3] = {0.0, 0.0, 1.0}; /* far enough that a 1/3-wide viewport holds the body and its arrows */
+    const double eye[3] = {5.95, 4.55, 4.0},
+                 up[3] = {0.0, 0.0,
+                          1.0}; /* far enough that a 1/3-wide viewport holds the body and its arrows */
     perspective(s->proj, 38.0, (double)vw / (double)vh, 0.5, 20.0);
     look_at(s->view, eye, up);
     return 0;

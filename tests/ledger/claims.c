@@ -453,7 +453,8 @@ static void negative_controls(void)
                naive, SO3_PRESERVE_TOL, 1, LEDGER_EXTENSION);
 }
 
-/* The registry as a table (src/methods/registry.h), methods.tsv beside the claims file, whole or not at all. */
+/* The registry as a table (src/methods/registry.h), methods.tsv beside the claims file, whole or not at all.
+ */
 static void write_methods(const char *tsv)
 {
     char path[4096], err[256];

@@ -28,7 +28,8 @@ typedef struct {
     double own100; /* |w(100) - w(10^4)| */
 } fig2_reading_run;
 
-static fig2_reading_run run_reading(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st)
+static fig2_reading_run run_reading(const suslov_model *m, const suslov_exact *ex,
+                                    const suslov_stepper_type *st)
 {
     double w[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], lam, we[2], winf[2], w100[2] = {0, 0};
     fig2_reading_run r = {0};
@@ -82,9 +83,11 @@ static void reading(const char *name, const char *id, const double I[9])
     ledger_number(key, a.own100);
     snprintf(key, sizeof key, "FigTwoReading%sOwnMid", name);
     ledger_number(key, b.own100);
-    snprintf(q, sizeof q,
-             "of Figure 2's statements energy, faster, limit, own (see the file), how many hold with the labels "
-             "as printed and I read by %s; the caption claims all 4", id);
+    snprintf(
+        q, sizeof q,
+        "of Figure 2's statements energy, faster, limit, own (see the file), how many hold with the labels "
+        "as printed and I read by %s; the caption claims all 4",
+        id);
     char lid[64];
     snprintf(lid, sizeof lid, "fig2-inertia-%s", id);
     /* a count of statements is an integer: 0.5 tells 4 from 3 */

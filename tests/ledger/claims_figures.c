@@ -1,5 +1,6 @@
 /* The claims the captions of Figures 1 and 2 make, measured on the same runs the figures draw
- * (src/prog/figure_fig1.c, src/prog/figure_fig2.c, src/prog/figure_fig2_energy.c, src/prog/figure_inertia.c). */
+ * (src/prog/figure_fig1.c, src/prog/figure_fig2.c, src/prog/figure_fig2_energy.c, src/prog/figure_inertia.c).
+ */
 #include "claims_figures.h"
 
 #include "experiments.h"
@@ -16,7 +17,8 @@
 
 #define FIELD(f) offsetof(suslov_series, f)
 
-static void run(suslov_series *s, const suslov_model *m, const suslov_stepper_type *st, double eps, long N, long every)
+static void run(suslov_series *s, const suslov_model *m, const suslov_stepper_type *st, double eps, long N,
+                long every)
 {
     suslov_run_report rep;
     const suslov_run_config cfg = {m, st, SUSLOV_RECON_CAYLEY, eps, N, every};
@@ -31,8 +33,9 @@ static void run(suslov_series *s, const suslov_model *m, const suslov_stepper_ty
  * steady rotation of the initial energy, |w| ~ 0.64). A zeroed or truncated series fails. */
 static int series_is_run(const suslov_series *s, const suslov_model *m, double eps, long N, long every)
 {
-    if (s->n != (size_t)(N / every + 1) || s->t[0] != 0.0 || fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps
-        || s->w1[0] != SUSLOV_PAPER_OMEGA0[0] || s->w2[0] != SUSLOV_PAPER_OMEGA0[1])
+    if (s->n != (size_t)(N / every + 1) || s->t[0] != 0.0 ||
+        fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps || s->w1[0] != SUSLOV_PAPER_OMEGA0[0] ||
+        s->w2[0] != SUSLOV_PAPER_OMEGA0[1])
         return 0;
     for (size_t i = 0; i < s->n; i++) {
         const double w[2] = {s->w1[i], s->w2[i]};
@@ -65,8 +68,8 @@ static int violating_step(const suslov_model *m, double eps, const double w[3], 
     w_next[2] = VIOLATION;
     return status;
 }
-static const suslov_stepper_type violating_type = {.name = "midpoint+violation", .order = 2, .lambda_order = 2,
-                                                   .apply = violating_step};
+static const suslov_stepper_type violating_type = {
+    .name = "midpoint+violation", .order = 2, .lambda_order = 2, .apply = violating_step};
 
 /* max over the recorded rows of |w3| and |mu|, when the series is the run it claims to be,
  * and its mu column agrees with the constraint recomputed here from R_k and w_k (to 1e-15: the
@@ -90,15 +93,16 @@ static int recheck(void *vctx, const suslov_row *row)
     return 0;
 }
 
-static double constraint_of(const suslov_series *s, const suslov_model *m, const suslov_stepper_type *st, double eps,
-                            long N, long every)
+static double constraint_of(const suslov_series *s, const suslov_model *m, const suslov_stepper_type *st,
+                            double eps, long N, long every)
 {
     if (!series_is_run(s, m, eps, N, every))
         return NAN;
     recheck_ctx c = {s, 0, 0.0, 0.0};
     suslov_run_report rep;
     const suslov_run_config cfg = {m, st, SUSLOV_RECON_CAYLEY, eps, N, every};
-    if (suslov_run(&cfg, SUSLOV_PAPER_OMEGA0, recheck, &c, &rep) != 0 || c.i != s->n || !(c.mismatch <= 1e-15))
+    if (suslov_run(&cfg, SUSLOV_PAPER_OMEGA0, recheck, &c, &rep) != 0 || c.i != s->n ||
+        !(c.mismatch <= 1e-15))
         return NAN;
     return fmax(c.worst, fmax(suslov_series_maxdrift(s, FIELD(w3)) + fabs(s->w3[0]),
                               suslov_series_maxdrift(s, FIELD(mu)) + fabs(s->mu[0])));
@@ -107,8 +111,9 @@ static double constraint_of(const suslov_series *s, const suslov_model *m, const
 /* The constraint claim of a figure panel (e): both runs, each checked as above, plus the
  * positive control on the same eps and steps: w3 = 1e-9 injected each step must be measured
  * as 1e-9 (vee(R^T R w^)_3 = w3 (1 + O(|R^T R - I|)), so within 10%). */
-static void constraint_claims(const char *fig, const char *ref, const suslov_model *m, const suslov_series *mid,
-                              const suslov_series *var, double eps, long N, long every)
+static void constraint_claims(const char *fig, const char *ref, const suslov_model *m,
+                              const suslov_series *mid, const suslov_series *var, double eps, long N,
+                              long every)
 {
     char id[64], what[256];
     const double cm = constraint_of(mid, m, suslov_step_midpoint, eps, N, every);
@@ -116,20 +121,24 @@ static void constraint_claims(const char *fig, const char *ref, const suslov_mod
     const double c = isnan(cm) || isnan(cv) ? NAN : fmax(cm, cv); /* fmax would drop a NaN */
     snprintf(id, sizeof id, "%s-constraint", fig);
     snprintf(what, sizeof what,
-             "max over both methods of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), eps = %g, %ld steps (series checked "
-             "complete and recomputed from R_k)", eps, N);
+             "max over both methods of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), eps = %g, %ld steps (series "
+             "checked "
+             "complete and recomputed from R_k)",
+             eps, N);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
     ledger_add(id, ref, what, c, 0.0, 1e-14, LEDGER_REPRODUCED);
     suslov_series v;
     suslov_run_report rep;
     const suslov_run_config cfg = {m, &violating_type, SUSLOV_RECON_CAYLEY, eps, N, every};
     double seen = NAN;
-    if (suslov_series_init(&v, N, every) == 0 && suslov_series_run(&v, &cfg, SUSLOV_PAPER_OMEGA0, &rep) == 0) {
+    if (suslov_series_init(&v, N, every) == 0 &&
+        suslov_series_run(&v, &cfg, SUSLOV_PAPER_OMEGA0, &rep) == 0) {
         seen = constraint_of(&v, m, &violating_type, eps, N, every);
         suslov_series_free(&v);
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
-    snprintf(what, sizeof what, "the same measurement on a midpoint run with w3 = %g injected every step: it sees it",
+    snprintf(what, sizeof what,
+             "the same measurement on a midpoint run with w3 = %g injected every step: it sees it",
              VIOLATION);
     ledger_add(id, "(test of the test)", what, seen, VIOLATION, 0.1 * VIOLATION, LEDGER_EXTENSION);
 }
@@ -141,7 +150,8 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
     const long N = suslov_experiment_steps(SUSLOV_FIG1_T_END, eps), every = SUSLOV_FIG1_EVERY;
     run(&mid, m, suslov_step_midpoint, eps, N, every);
     run(&var, m, suslov_step_variational, eps, N, every);
-    const double dw = fmax(suslov_series_maxdiff(&mid, &var, FIELD(w1)), suslov_series_maxdiff(&mid, &var, FIELD(w2)));
+    const double dw =
+        fmax(suslov_series_maxdiff(&mid, &var, FIELD(w1)), suslov_series_maxdiff(&mid, &var, FIELD(w2)));
     /* A difference invisible in panels (a)-(b): the smallest plotted range (w2: 0.50 .. 0.68)
      * spans ~400 pixels at 150 dpi, so 1e-4 is a fraction of a pixel. */
     ledger_add("fig1-indistinguishable", "Sec. 5.6 text, Fig. 1",
@@ -166,19 +176,23 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
     if (mid.n < 2)
         off = NAN;
     char q[256];
-    snprintf(q, sizeof q,
-             "max_k>=1 |(lambda_mid - lambda_var)_k - O_0(w(t_k))| at eps = 1e-3: the multipliers differ by O_0 "
-             "(PropoFinal), up to max |O_0| = %.4g",
-             o0);
+    snprintf(
+        q, sizeof q,
+        "max_k>=1 |(lambda_mid - lambda_var)_k - O_0(w(t_k))| at eps = 1e-3: the multipliers differ by O_0 "
+        "(PropoFinal), up to max |O_0| = %.4g",
+        o0);
     ledger_number("FigOneMaxOZero", o0);
-    ledger_add("fig1-multipliers-differ", "Sec. 5.6 text, Fig. 1(c)-(d)", q, off, 0.0, 1e-4, LEDGER_REPRODUCED);
+    ledger_add("fig1-multipliers-differ", "Sec. 5.6 text, Fig. 1(c)-(d)", q, off, 0.0, 1e-4,
+               LEDGER_REPRODUCED);
     constraint_claims("fig1", "Fig. 1(e)", m, &mid, &var, eps, N, every);
     /* Round-off in E over 6e4 steps walks like sqrt(N) u E ~ 1e-14; 1e-13 leaves a factor 10. */
-    ledger_add("fig1-energy-midpoint", "Fig. 1(f)",
-               "max_k |E_k - E_0| of the midpoint rule, eps = 1e-3: conserved to round-off (it conserves E exactly)",
-               suslov_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
+    ledger_add(
+        "fig1-energy-midpoint", "Fig. 1(f)",
+        "max_k |E_k - E_0| of the midpoint rule, eps = 1e-3: conserved to round-off (it conserves E exactly)",
+        suslov_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
     ledger_add_bound("fig1-energy-variational", "Fig. 1(f) (extension)",
-                     "max_k |E_k - E_0| of the variational integrator, eps = 1e-3: at least 1e-12, i.e. not round-off (O(eps^2) drift)",
+                     "max_k |E_k - E_0| of the variational integrator, eps = 1e-3: at least 1e-12, i.e. not "
+                     "round-off (O(eps^2) drift)",
                      suslov_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
     suslov_series_free(&mid);
     suslov_series_free(&var);
@@ -207,8 +221,10 @@ static void sweeps_are_explicit_methods(const suslov_model *m, double eps, long 
             w[1] += eps * f[1];
         }
         char id[64], what[160];
-        snprintf(id, sizeof id, "fig2-reading-%d-sweep%s", n, n == 1 ? "-is-euler" : "s-are-explicit-midpoint");
-        snprintf(what, sizeof what, "max_k |E_k| difference, %d fixed-point sweep%s against %s written out, eps = %g, %ld steps",
+        snprintf(id, sizeof id, "fig2-reading-%d-sweep%s", n,
+                 n == 1 ? "-is-euler" : "s-are-explicit-midpoint");
+        snprintf(what, sizeof what,
+                 "max_k |E_k| difference, %d fixed-point sweep%s against %s written out, eps = %g, %ld steps",
                  n, n == 1 ? "" : "s", n == 1 ? "explicit Euler" : "the explicit midpoint rule", eps, N);
         ledger_add(id, "Fig. 2(d) (evidence)", what, d, 0.0, 1e-15, LEDGER_EXTENSION);
     }
@@ -228,7 +244,8 @@ static void fig2_accuracy_claims(const suslov_exact *ex, const suslov_series *mi
     const double r0 = hypot(SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
     char q_buf[256];
     snprintf(q_buf, sizeof q_buf,
-             "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200], above the midpoint rule's (expected); the paper's "
+             "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200], above the midpoint rule's (expected); "
+             "the paper's "
              "'quite well' gives no tolerance to test");
     /* The paper gives no tolerance for "quite well" and its figure image is missing, so no
      * verdict on the paper can follow from a threshold we would choose; what is measured is the
@@ -254,15 +271,18 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
     constraint_claims("fig2", "Fig. 2(e)", m, &mid, &var, eps, N, 1);
     /* The caption: midpoint shows a fast decay of energy, the variational integrator is better. */
     ledger_add_bound("fig2-energy-midpoint", "Fig. 2(d), Sec. 5.6 text",
-                     "energy lost by the midpoint rule over [0, 200], eps = 1; the paper's 'fast decay' needs it to exceed the variational loss (expected)",
+                     "energy lost by the midpoint rule over [0, 200], eps = 1; the paper's 'fast decay' "
+                     "needs it to exceed the variational loss (expected)",
                      loss_mid, loss_var, 1, LEDGER_NOT_REPRODUCED);
     ledger_add_bound("fig2-energy-variational", "Fig. 2(d), Sec. 5.6 text",
-                     "|E_N - E_0| of the variational integrator, eps = 1; 'much better' needs it below the midpoint's |E_N - E_0| (expected)",
+                     "|E_N - E_0| of the variational integrator, eps = 1; 'much better' needs it below the "
+                     "midpoint's |E_N - E_0| (expected)",
                      fabs(loss_var), fabs(loss_mid), 0, LEDGER_NOT_REPRODUCED);
     /* 200 steps, each changing E by at most a few roundings u E ~ 1e-16 (Newton solves to 16 u
      * of its scale): a walk of sqrt(200) u E ~ 1e-15; 1e-14 leaves a factor 10. */
     ledger_add("fig2-energy-midpoint-conserved", "(extension)",
-               "max_k |E_k - E_0| of the midpoint rule at eps = 1 over 200 steps: round-off, the implicit midpoint rule conserves E",
+               "max_k |E_k - E_0| of the midpoint rule at eps = 1 over 200 steps: round-off, the implicit "
+               "midpoint rule conserves E",
                suslov_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
     /* Every reading of the midpoint rule's implicit equation tried (figures/fig2_energy). */
     double worst_loss = loss_mid, *E = malloc((size_t)(N + 1) * sizeof *E), wN[2];
@@ -278,14 +298,17 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
     free(E);
     ledger_number("FigTwoReadingsWorstLoss", worst_loss);
     ledger_add_bound("fig2-energy-readings", "Fig. 2(d) (evidence)",
-                     "largest energy loss at t = 200 over the readings of the midpoint rule (Newton; 1..8 fixed-point sweeps, incl. explicit Euler and explicit midpoint); the caption needs it above the variational loss (expected)",
+                     "largest energy loss at t = 200 over the readings of the midpoint rule (Newton; 1..8 "
+                     "fixed-point sweeps, incl. explicit Euler and explicit midpoint); the caption needs it "
+                     "above the variational loss (expected)",
                      worst_loss, loss_var, 1, LEDGER_NOT_REPRODUCED);
     fig2_accuracy_claims(ex, &mid, &var);
     ledger_number("FigTwoVarEnergyLossPercent", 100.0 * loss_var / E0);
     const double lim_var = hypot(var.w1[last] - winf[0], var.w2[last] - winf[1]);
     const double lim_mid = hypot(mid.w1[last] - winf[0], mid.w2[last] - winf[1]);
     ledger_add_bound("fig2-longterm", "Fig. 2 caption",
-                     "|w_var(200) - w_inf|, eps = 1: 'long-term behaviour much more accurate' needs it below the midpoint's |w_mid(200) - w_inf| (expected)",
+                     "|w_var(200) - w_inf|, eps = 1: 'long-term behaviour much more accurate' needs it below "
+                     "the midpoint's |w_mid(200) - w_inf| (expected)",
                      lim_var, lim_mid, 0, LEDGER_NOT_REPRODUCED);
     /* The midpoint rule conserves E, and its fixed points are the zeros of f on the energy
      * ellipse: it tends to the exact steady rotation. At t = 200 the exact distance is
@@ -299,9 +322,10 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
      * e^{-200 k} ~ 3e-13 from it, and 1e-9 allows the variational run to settle a thousand
      * times more slowly than the exact one. */
     const double predicted = hypot(winf[0], winf[1]) * (1.0 - sqrt(var.energy[last] / E0));
-    ledger_add("fig2-limit-variational", "(extension)",
-               "|w_var(200) - w_inf| against |w_inf| (1 - sqrt(E_N / E_0)): a steady rotation at the wrong energy",
-               lim_var, predicted, 1e-9, LEDGER_EXTENSION);
+    ledger_add(
+        "fig2-limit-variational", "(extension)",
+        "|w_var(200) - w_inf| against |w_inf| (1 - sqrt(E_N / E_0)): a steady rotation at the wrong energy",
+        lim_var, predicted, 1e-9, LEDGER_EXTENSION);
     suslov_series_free(&mid);
     suslov_series_free(&var);
 }
@@ -330,7 +354,8 @@ static void inertia_ambiguity(const suslov_model *m)
         d = fmax(d, hypot(a[0] - b[0], a[1] - b[1]));
     }
     ledger_add_bound("inertia-row-vs-column", "(RGB2) with I as printed (extension)",
-                     "max_t |w_row(t) - w_col(t)| on [0, 60], exact solutions with (I31, I32) = (0.2, 0.1) vs (0.2, 0.2): the choice is visible (> 1e-3)",
+                     "max_t |w_row(t) - w_col(t)| on [0, 60], exact solutions with (I31, I32) = (0.2, 0.1) "
+                     "vs (0.2, 0.2): the choice is visible (> 1e-3)",
                      d, 1e-3, 1, LEDGER_EXTENSION);
 }
 

@@ -85,24 +85,30 @@ void propocons1_claims(const suslov_model *m, const suslov_exact *ex)
                 el[j] = fmax(el[j], fabs(ref.lambda_exact - suslov_lagmult(m, xi)));
             }
         }
-        const double r = fit(eps, eR, SUSLOV_SIZE_R), l = fit(eps, exi, SUSLOV_SIZE_W), s = fit(eps, el, SUSLOV_SIZE_LAMBDA);
+        const double r = fit(eps, eR, SUSLOV_SIZE_R), l = fit(eps, exi, SUSLOV_SIZE_W),
+                     s = fit(eps, el, SUSLOV_SIZE_LAMBDA);
         char id[64], q[256];
         snprintf(id, sizeof id, "propocons1-r-%s", it->id);
-        snprintf(q, sizeof q, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1, %s on (LdAeqs)", it->id);
+        snprintf(q, sizeof q, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1, %s on (LdAeqs)",
+                 it->id);
         ledger_add(id, "Def. UnredConsis (extension)", q, r, it->r, ORDER_TOL, LEDGER_EXTENSION);
         snprintf(id, sizeof id, "propocons1-reduced-%s", it->id);
         snprintf(q, sizeof q,
-                 "order of xi_k = vee(R_k^T V_k) (= l, left-trivialized velocity: PropoCons1 holds by Def. UnredConsis 2), %s; r = %.2f, min(r, l) = %d; l = %d",
+                 "order of xi_k = vee(R_k^T V_k) (= l, left-trivialized velocity: PropoCons1 holds by Def. "
+                 "UnredConsis 2), %s; r = %.2f, min(r, l) = %d; l = %d",
                  it->id, r, it->r < it->l ? it->r : it->l, it->l);
         ledger_add(id, "PropoCons1", q, l, it->l, ORDER_TOL, LEDGER_REPRODUCED);
         snprintf(id, sizeof id, "propocons1-lambda-%s", it->id);
-        snprintf(q, sizeof q, "s of lambda(xi_{k+1}) (LagMult), %s: it carries over with l = %d", it->id, it->l);
+        snprintf(q, sizeof q, "s of lambda(xi_{k+1}) (LagMult), %s: it carries over with l = %d", it->id,
+                 it->l);
         ledger_add(id, "PropoCons1", q, s, it->l, ORDER_TOL, LEDGER_REPRODUCED);
         if (it->r != it->l) {
             /* the reduced order is l, not min(r, l); PropoCons1 itself holds by definition (the
              * reduced variable is the velocity whose order is l), so this shows only that */
             snprintf(id, sizeof id, "propocons1-not-min-%s", it->id);
-            snprintf(q, sizeof q, "reduced order minus r for %s (r = %.2f): the reduced order is l, not min(r, l) (PropoCons1 holds by Def. UnredConsis 2); l - r = %d expected",
+            snprintf(q, sizeof q,
+                     "reduced order minus r for %s (r = %.2f): the reduced order is l, not min(r, l) "
+                     "(PropoCons1 holds by Def. UnredConsis 2); l - r = %d expected",
                      it->id, r, it->l - it->r);
             ledger_add_bound(id, "PropoCons1", q, l - r, 1.5, 1, LEDGER_REPRODUCED);
         }

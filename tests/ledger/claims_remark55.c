@@ -1,7 +1,7 @@
 /* Remark 5.5 (RemarkLambda) measured. The local error expansion of each method is derived from
- * f = (ContDyn) as a power series (src/exp/lambda_shift.h) and checked against the steps themselves; the shift
- * l_lambda built from its first one or two terms is applied to lambda(w^{k+1}), and the
- * multiplier order s is fitted from one step from exact data (Definition RedConsis).
+ * f = (ContDyn) as a power series (src/exp/lambda_shift.h) and checked against the steps themselves; the
+ * shift l_lambda built from its first one or two terms is applied to lambda(w^{k+1}), and the multiplier
+ * order s is fitted from one step from exact data (Definition RedConsis).
  *
  * What theory gives: removing m terms of the local error's series leaves grad lambda . e_{p+m+1}
  * eps^{p+m+1} and the Hessian term O(eps^{2p+2}), so s = min(p + m, 2p + 1). The remark's n counts

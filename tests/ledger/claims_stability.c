@@ -47,7 +47,8 @@ static double theory_limit(const suslov_method *me)
     return 0.5 * (lo + hi);
 }
 
-void stability_claims(const suslov_exact *paper)
+/* The linear stability boundary of every method with a stability function, against bisection. */
+static void boundary_claims(const suslov_exact *paper)
 {
     char id[64], q[256];
     for (int m = 0; m < suslov_method_count(); m++) {
@@ -65,16 +66,21 @@ void stability_claims(const suslov_exact *paper)
         if (isfinite(predicted)) {
             /* The bisection stops at 1e-4 relative and 4000 steps resolve |R(-h)| - 1 to ~1e-4; the
              * start 1e-6 off the rotation keeps nonlinear terms at 1e-6: 1e-3 h is ample. */
-            snprintf(q, sizeof q, "largest h = eps k at which a start 1e-6 off the steady rotation returns (bisection), "
-                                  "against the linear limit |R(-h)| = 1 of %s (%s)", st->name,
-                     isfinite(theory) ? "R = sum_{n<=p} z^n/n!, theory" : "R(z) of src/methods/stability_fn.c");
+            snprintf(q, sizeof q,
+                     "largest h = eps k at which a start 1e-6 off the steady rotation returns (bisection), "
+                     "against the linear limit |R(-h)| = 1 of %s (%s)",
+                     st->name,
+                     isfinite(theory) ? "R = sum_{n<=p} z^n/n!, theory"
+                                      : "R(z) of src/methods/stability_fn.c");
             const double expect = isfinite(theory) ? theory : predicted; /* theory where it is known */
             ledger_add(id, "(extension)", q, measured, expect, 1e-3 * expect, LEDGER_EXTENSION);
             /* and R(z) in src/ against the truncated exponential of theory (both root-found to
              * 1e-14; 1e-10 leaves room) */
             if (isfinite(theory)) {
                 snprintf(id, sizeof id, "stability-boundary-theory-%s", st->name);
-                snprintf(q, sizeof q, "linear limit of %s from src/'s R(z) against the first h with |sum_{n<=p} (-h)^n/n!| = 1 (theory, p = %d)",
+                snprintf(q, sizeof q,
+                         "linear limit of %s from src/'s R(z) against the first h with |sum_{n<=p} "
+                         "(-h)^n/n!| = 1 (theory, p = %d)",
                          st->name, expected_order_of(st->name)->p);
                 ledger_add(id, "(extension)", q, predicted, theory, 1e-10 * theory, LEDGER_EXTENSION);
             }
@@ -82,12 +88,20 @@ void stability_claims(const suslov_exact *paper)
             /* No linear limit up to H_MAX (|R(-h)| <= 1 there, or no linear stability function):
              * the start near the rotation must still return at h = H_MAX, where the measurement
              * gives INFINITY; a NaN (no return even at h = 0.1) fails. */
-            snprintf(q, sizeof q, "%s has no linear stability limit (%s): the start 1e-6 off the rotation still returns "
-                                  "at h = %g (largest h tested)", st->name,
+            snprintf(q, sizeof q,
+                     "%s has no linear stability limit (%s): the start 1e-6 off the rotation still returns "
+                     "at h = %g (largest h tested)",
+                     st->name,
                      me->type->stability ? "|R(-h)| <= 1 for all h tested" : "no stability function", H_MAX);
             ledger_add_bound_unbounded(id, "(extension)", q, measured, H_MAX, 1, LEDGER_EXTENSION);
         }
     }
+}
+
+/* Where the implicit steps stop being solvable. */
+static void solvable_claims(const suslov_exact *paper)
+{
+    char id[64], q[256];
     /* The implicit steps stop being solvable far beyond the paper's eps = 1 (h = 0.145): the
      * smallest h at which a run from the energy ellipse (12 angles, h = 10^-2 .. 10^3 by 0.2
      * decades) meets a solver failure or a loss of regularity. Asserted: not below h = 1, i.e.
@@ -111,19 +125,31 @@ void stability_claims(const suslov_exact *paper)
          * inside the grid (finite, <= H_MAX), else NaN fails the line: a step whose solver failures
          * went unseen would run everywhere. */
         snprintf(id, sizeof id, "stability-solvable-%s", me->type->name);
-        snprintf(q, sizeof q, "smallest h at which a %s run (12 angles, h = 0.01..1000) fails to solve its step or loses "
-                              "(REGLOC) regularity: at least 1 (7x the paper's eps = 1) and within the grid", me->type->name);
+        snprintf(q, sizeof q,
+                 "smallest h at which a %s run (12 angles, h = 0.01..1000) fails to solve its step or loses "
+                 "(REGLOC) regularity: at least 1 (7x the paper's eps = 1) and within the grid",
+                 me->type->name);
         ledger_add_bound(id, "(extension)", q, first <= H_MAX ? first : NAN, 1.0, 1, LEDGER_EXTENSION);
         /* Where the README states the limit from the stability map (figures/stability): the midpoint
          * rule good up to h ~ 3 for every start (Newton from the explicit predictor then lands on
          * another root), the variational step losing its branch from h ~ 150. The grid resolves 0.2
          * decades: the first failure must lie within a quarter decade of the stated value. */
-        const double stated = me->type == suslov_step_midpoint ? 3.0 : me->type == suslov_step_variational ? 150.0 : NAN;
+        const double stated = me->type == suslov_step_midpoint      ? 3.0
+                              : me->type == suslov_step_variational ? 150.0
+                                                                    : NAN;
         if (isfinite(stated)) {
             snprintf(id, sizeof id, "stability-solvable-where-%s", me->type->name);
-            snprintf(q, sizeof q, "log10 of the first failing h of %s (grid 0.2 decades) against the README's h ~ %g "
-                                  "(from the stability map): within 0.25 decades", me->type->name, stated);
+            snprintf(q, sizeof q,
+                     "log10 of the first failing h of %s (grid 0.2 decades) against the README's h ~ %g "
+                     "(from the stability map): within 0.25 decades",
+                     me->type->name, stated);
             ledger_add(id, "(extension)", q, log10(first), log10(stated), 0.25, LEDGER_EXTENSION);
         }
     }
+}
+
+void stability_claims(const suslov_exact *paper)
+{
+    boundary_claims(paper);
+    solvable_claims(paper);
 }

@@ -21,7 +21,8 @@ static int same_run(const suslov_model *m, const gsl_odeiv2_step_type *type, siz
     suslov_peer fresh, used;
     double y0[11], y1[11], y2[11];
     long n0 = 0, n1 = 0, n2 = 0;
-    if (suslov_peer_open(&fresh, m, type, dim, api, TOL, hstart) || suslov_peer_open(&used, m, type, dim, api, TOL, hstart))
+    if (suslov_peer_open(&fresh, m, type, dim, api, TOL, hstart) ||
+        suslov_peer_open(&used, m, type, dim, api, TOL, hstart))
         return 0;
     const int s0 = suslov_peer_run(&fresh, w0, T_END, y0, &n0);
     /* a run to another end time leaves the configuration with another step size */
@@ -48,7 +49,7 @@ int main(void)
             for (int d = 0; d < 3; d++)
                 for (int h = 0; h < 4; h++)
                     CHECK(same_run(&m, types[k], dims[d], (suslov_peer_api)api, hstarts[h]),
-                          "GSL %s dim %zu %s hstart %g: a repeated run equals a fresh run, bit for bit", types[k]->name,
-                          dims[d], api ? "evolve" : "driver", hstarts[h]);
+                          "GSL %s dim %zu %s hstart %g: a repeated run equals a fresh run, bit for bit",
+                          types[k]->name, dims[d], api ? "evolve" : "driver", hstarts[h]);
     return check_summary("test_peers");
 }

@@ -40,7 +40,8 @@ int main(void)
     suslov_model m;
     suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
     gl_context *gl = gl_context_create(W, H);
-    CHECK(gl != NULL, "an off-screen OSMesa context of %dx%d with a depth buffer is created (no display)", W, H);
+    CHECK(gl != NULL, "an off-screen OSMesa context of %dx%d with a depth buffer is created (no display)", W,
+          H);
     if (!gl)
         return check_summary("test_render");
     scene sc;
@@ -60,9 +61,10 @@ int main(void)
         const int n = green_centroid(px, &cx, &cy);
         scene_project(&sc, b.R, tip, W / 3, 0, W / 3, H, H, &qx, &qy);
         /* a 7-pixel point: its centroid sits on the projected point to within a pixel */
-        CHECK(n > 10 && hypot(cx - qx, cy - qy) < 1.5,
-              "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, %.2f), projected (%.2f, %.2f) (%d pixels)",
-              rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
+        CHECK(
+            n > 10 && hypot(cx - qx, cy - qy) < 1.5,
+            "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, %.2f), projected (%.2f, %.2f) (%d pixels)",
+            rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
     }
     /* a full frame: not blank, not one colour */
     scene_body b = {{{0}}, {0.4, 0.5, 0.0}, {{0}}, 0};

@@ -85,7 +85,8 @@ static void jacobians(const suslov_model *m, const char *bname)
         double worst = 0.0;
         for (int k = 0; k < 30; k++) {
             const double a = 0.37 * k, eps = 0.05 * (1 + k % 7), h = 1e-6;
-            const double w[2] = {0.6 * cos(a), 0.5 * sin(a)}, w1[2] = {0.6 * cos(a + 0.1), 0.5 * sin(a + 0.1)};
+            const double w[2] = {0.6 * cos(a), 0.5 * sin(a)},
+                         w1[2] = {0.6 * cos(a + 0.1), 0.5 * sin(a + 0.1)};
             double x[NX], g[NX], J[NX * NX], sc;
             st->guess(m, eps, w, x);
             for (int i = 0; i < n; i++)
@@ -104,8 +105,9 @@ static void jacobians(const suslov_model *m, const char *bname)
             }
         }
         /* G is a cubic polynomial: central differences err by O(h^2) ~ 1e-12 plus u/h ~ 1e-10 */
-        CHECK(worst < 1e-8, "%s, %s: analytic Jacobian of the step equation = central differences; worst %.2e",
-              bname, st->name, worst);
+        CHECK(worst < 1e-8,
+              "%s, %s: analytic Jacobian of the step equation = central differences; worst %.2e", bname,
+              st->name, worst);
     }
 }
 

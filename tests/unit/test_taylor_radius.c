@@ -32,7 +32,8 @@ static int sweep(const suslov_stepper_type *st, const suslov_model *m, const dou
     const double w[3] = {w0[0], w0[1], 0.0}, a = hypot(w0[0], w0[1]), kappa = condition(m);
     int ran = 0;
     for (int i = 0; i < NGRID; i++) {
-        const double eps = EPS_MAX * pow(10.0, -5.0 * (double)(NGRID - 1 - i) / (NGRID - 1)); /* 1e-3 ... 100 */
+        const double eps =
+            EPS_MAX * pow(10.0, -5.0 * (double)(NGRID - 1 - i) / (NGRID - 1)); /* 1e-3 ... 100 */
         double x[3], lam, ref[2];
         suslov_step_stats stats;
         const int status = st->apply(m, eps, w, x, &lam, &stats);
@@ -73,9 +74,10 @@ int main(void)
         for (int k = 0; k < 4; k++) {
             double worst = 0.0;
             const int ran = sweep(types[k], &m, starts[b], &worst);
-            CHECK(ran > 0, "%s, case %d: over steps 1e-3 ... 100 every step that runs (%d of %d) is within its "
-                  "proved bound (worst error / bound %.2g), the others exit DIVERGED", types[k]->name, b, ran,
-                  NGRID, worst);
+            CHECK(ran > 0,
+                  "%s, case %d: over steps 1e-3 ... 100 every step that runs (%d of %d) is within its "
+                  "proved bound (worst error / bound %.2g), the others exit DIVERGED",
+                  types[k]->name, b, ran, NGRID, worst);
         }
     }
     return check_summary("test_taylor_radius");

@@ -1,0 +1,22 @@
+#!/bin/sh
+# Short functions and short lines: no function body in src/ or tests/ longer than 80 lines
+# (from its opening brace in column 0 to its closing one), and no line of C longer than 110
+# columns. Last line "style: N passed, N failed".
+set -u
+cd "$(dirname "$0")/../.." || exit 2
+files=$(ls src/*/*.c src/*/*.h src/*/*.cpp tests/*/*.c tests/*/*.h 2>/dev/null)
+# shellcheck disable=SC2086
+awk -v maxf=80 -v maxl=110 '
+FNR == 1 { start = 0 }
+length($0) > maxl { printf "FAIL style: %s:%d is %d columns (at most %d)\n", FILENAME, FNR, length($0), maxl; bad++ }
+/^\{$/ { start = FNR }
+/^\}$/ && start {
+    n = FNR - start + 1; nf++
+    if (n > maxf) { printf "FAIL style: %s:%d: a function of %d lines (at most %d)\n", FILENAME, start, n, maxf; bad++ }
+    start = 0
+}
+END {
+    printf "%s style: %d functions and every line checked, %d too long\n", bad ? "FAIL" : "PASS", nf, bad
+    printf "style: %d passed, %d failed\n", bad ? 0 : 1, bad ? 1 : 0
+    exit bad > 0
+}' $files
