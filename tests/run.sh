@@ -53,6 +53,10 @@ if [ "$mode" != test ]; then
         echo "FAIL claims.tsv does not start with its header"; echo "claims_tsv: 0 passed, 1 failed" >>"$sum"
         status=1
     fi
+    # every id once: the companion makes a macro of each
+    dup=$(cut -f1 "$B/claims.tsv" | sort | uniq -d | head -3 | tr '\n' ' ')
+    if [ -z "$dup" ]; then echo "claims_ids: 1 passed, 0 failed" >>"$sum"; else
+        echo "FAIL claims.tsv repeats ids: $dup"; echo "claims_ids: 0 passed, 1 failed" >>"$sum"; status=1; fi
     # No field of the ledger may read nan: a measurement that did not happen is a failure that
     # says so.
     if grep -iqw nan "$B/claims.tsv" 2>/dev/null; then

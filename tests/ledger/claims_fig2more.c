@@ -169,5 +169,5 @@ void fig2more_claims(const suslov_model *m, const suslov_exact *ex)
     ledger_add_bound("fig2-trapezoidal-energy", "Fig. 2(d) (reading)", q, t200.loss / v200.loss, 1.0, 1,
                      LEDGER_NOT_REPRODUCED);
     ledger_number("FigTwoTrapezoidalLoss", t200.loss);
-    fig2_readings_claims(m, ex);
+    fig2_range_claims(m, ex);
 }

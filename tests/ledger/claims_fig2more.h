@@ -13,9 +13,9 @@ void fig2more_claims(const suslov_model *m, const suslov_exact *ex);
  * (Discretization), solved by fixed-point iteration. */
 extern const suslov_stepper_type fig2_trapezoidal;
 
-/* The audit's readings of Figure 2 (tests/claims_fig2_readings.c): "none loses energy faster"
+/* The audit's readings of Figure 2 (tests/ledger/claims_fig2_ranges.c): "none loses energy faster"
  * over eps in [0.25, 8] for every reading of the midpoint rule, and the variational/midpoint
  * error ratio over t in [2, 60], as a ratio of maxima over [0, 60] and at t = 10. */
-void fig2_readings_claims(const suslov_model *m, const suslov_exact *ex);
+void fig2_range_claims(const suslov_model *m, const suslov_exact *ex);
 
 #endif

@@ -154,7 +154,7 @@ static void ratio_over_t_claims(const suslov_model *m, const suslov_exact *ex)
                      1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 }
 
-void fig2_readings_claims(const suslov_model *m, const suslov_exact *ex)
+void fig2_range_claims(const suslov_model *m, const suslov_exact *ex)
 {
     energy_range_claims(m);
     ratio_over_t_claims(m, ex);
