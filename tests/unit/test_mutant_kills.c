@@ -7,6 +7,7 @@
 #include "check.h"
 #include "model.h"
 #include "quaternion.h"
+#include "registry.h"
 #include "so3.h"
 
 #include <math.h>
@@ -211,6 +212,54 @@ static void symmetry_bound_checks(void)
     }
 }
 
+/* The yardstick of the implicit step equations (stepper.h: scale = the sum of |terms| of G, what
+ * Newton's stopping test and the round-off checks measure against), recomputed from the terms of
+ * the equation as written: the midpoint DSP's I_m (x - w) - eps l(mid) and (taudyn)'s
+ * I_m (x - w) + eps/2 (x c(x) + w c(w))^perp + eps^2/4 (x s(x) - w s(w)), s(v) = <v, I_m v>. The
+ * states run over two decades of |w|, where a yardstick scaled wrongly by |x| shows. */
+static double terms_scale(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2],
+                          const double x[2])
+{
+    double sI = 0.0;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            sI += fabs(m->I[i][j]);
+    const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
+    if (st == suslov_step_midpoint) {
+        const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])}, c = suslov_c(m, mid);
+        return sI * sx + eps * (fabs(mid[1] * c) + fabs(mid[0] * c));
+    }
+    double sv[2];
+    for (int k = 0; k < 2; k++) {
+        const double *v = k ? w : x;
+        sv[k] = 0.0;
+        for (int i = 0; i < 2; i++)
+            for (int j = 0; j < 2; j++)
+                sv[k] += v[i] * m->I[i][j] * v[j];
+    }
+    const double cx = suslov_c(m, x), cw = suslov_c(m, w);
+    return sI * sx + 0.5 * eps * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
+           0.25 * eps * eps * (fabs(x[0] * sv[0]) + fabs(w[0] * sv[1]) + fabs(x[1] * sv[0]) + fabs(w[1] * sv[1]));
+}
+
+static void scale_checks(int b, const suslov_model *m)
+{
+    const suslov_stepper_type *const st[2] = {suslov_step_midpoint, suslov_step_variational};
+    for (int k = 0; k < 2; k++) {
+        double worst = 0.0;
+        for (int n = 0; n < 12; n++) {
+            const double r = pow(10.0, -1.0 + 0.2 * n), eps = uniform(0.05, 1.0);
+            const double w[2] = {r * uniform(-1, 1), r * uniform(-1, 1)}, x[2] = {r * uniform(-1, 1),
+                                                                                   r * uniform(-1, 1)};
+            double g[2], J[4], sc;
+            st[k]->residual(m, eps, w, x, g, J, &sc);
+            worst = fmax(worst, rel(sc, terms_scale(m, st[k], eps, w, x)));
+        }
+        CHECK(worst <= 8 * TOL, "body %d, %s: the residual's scale is the sum of |terms| of G (%.2g)", b,
+              st[k]->name, worst);
+    }
+}
+
 int main(void)
 {
     printf("test_mutant_kills: seed %u\n", SEED);
@@ -228,6 +277,7 @@ int main(void)
             const double w[2] = {uniform(-1.5, 1.5), uniform(-1.5, 1.5)};
             model_checks(b, &m, w);
         }
+        scale_checks(b, &m);
     }
     for (int k = 0; k < NSTATE; k++) {
         const double w[3] = {uniform(-2, 2), uniform(-2, 2), uniform(-2, 2)};
