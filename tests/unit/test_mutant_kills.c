@@ -239,7 +239,8 @@ static double terms_scale(const suslov_model *m, const suslov_stepper_type *st, 
     }
     const double cx = suslov_c(m, x), cw = suslov_c(m, w);
     return sI * sx + 0.5 * eps * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
-           0.25 * eps * eps * (fabs(x[0] * sv[0]) + fabs(w[0] * sv[1]) + fabs(x[1] * sv[0]) + fabs(w[1] * sv[1]));
+           0.25 * eps * eps *
+               (fabs(x[0] * sv[0]) + fabs(w[0] * sv[1]) + fabs(x[1] * sv[0]) + fabs(w[1] * sv[1]));
 }
 
 static void scale_checks(int b, const suslov_model *m)
