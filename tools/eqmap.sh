@@ -40,7 +40,7 @@ if [ "$mode" = tex ]; then
         printf '%s\n' '\toprule paper & label & file & function & tests that name it\\ \midrule \endhead'
         for l in $declared; do
             printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { printf "%s\t%s\n", $2, $3 }' | while IFS="$(printf '\t')" read -r f fn; do
-                printf '\\PaperRefOr{%s} & (\\textsf{%s}) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$l" "$(echo "$f" | sed 's/_/\\_/g')" "$(echo "$fn" | sed 's/_/\\_/g')" \
+                printf '\\PaperRefOr{%s} & (\\textsf{%s}) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$l" "$(echo "$f" | sed 's/_/\\_/g; s#/#/\\allowbreak{}#g')" "$(echo "$fn" | sed 's/_/\\_\\allowbreak{}/g')" \
                     "$(tests_of "$l" | sed 's/_/\\_/g')"
             done
         done

@@ -74,8 +74,8 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
       id = substr($0, RSTART + 8, RLENGTH - 9); gsub(/\\allowbreak\{\}/, "", id); sub(/-\*$/, "-", id)
       link = ""
       for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
-      if (link != "") { file = link; sub(/:[0-9]+$/, "", file)
-          $0 = substr($0, 1, RLENGTH) " {\\tiny\\href{../" file "}{\\texttt{" link "}}}" substr($0, RLENGTH + 1) } }
+      if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; gsub(/_/, "\\\\_", shown)
+          $0 = substr($0, 1, RLENGTH) " {\\tiny\\href{../" file "}{\\texttt{" shown "}}}" substr($0, RLENGTH + 1) } }
   while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
       if (l in pos) { key = pos[l]; break }
