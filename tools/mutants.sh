@@ -18,9 +18,10 @@ LIST=$(cd "$(dirname "${1:-tests/mutants}")" && pwd)/$(basename "${1:-tests/muta
 STRIDE=${2:-1}
 ROOT=$(pwd)
 S=$(mktemp -d)
+chmod 755 "$S" # the permission tests run the scratch build as the user nobody
 trap 'rm -rf "$S"' EXIT
 unset MAKEFLAGS MFLAGS MAKELEVEL SAN BUILD  # a fresh make of its own, whatever called it
-cp -R src tests tools paper Makefile "$S"/
+cp -R src tests tools paper Makefile README.md "$S"/
 mkdir -p "$S/data" "$S/figures"
 cp data/animation.cfg "$S/data/" 2>/dev/null || true
 cd "$S" || exit 2
@@ -49,6 +50,9 @@ tests() {
     done
     run_one test_cli_values 300 sh tests/cli/test_cli_values.sh $B || { echo "test_cli_values ($why)"; return 1; }
     run_one test_cli 300 sh tests/cli/test_cli.sh $B || { echo "test_cli ($why)"; return 1; }
+    run_one test_cli_promises 300 sh tests/cli/test_cli_promises.sh $B || { echo "test_cli_promises ($why)"; return 1; }
+    run_one test_cli_conventions 300 sh tests/cli/test_cli_conventions.sh $B ||
+        { echo "test_cli_conventions ($why)"; return 1; }
     run_one claims 900 $B/claims $B/claims.tsv || { echo "claims ($why)"; return 1; }
     return 0
 }
@@ -57,12 +61,14 @@ if ! build; then cat "$S/build.log"; echo "mutants: the unmutated tree does not 
 # The unmutated tree should pass every test. Where it does not (work in progress), its failures
 # are recorded and a mutant is killed only by a failure beyond them; the run then fails anyway.
 base_bad=0
-for t in $B/test_* test_cli_values test_cli claims; do
+for t in $B/test_* test_cli_values test_cli test_cli_promises test_cli_conventions claims; do
     case $t in *.d | *.o) continue ;; esac
     name=$(basename "$t")
     case $name in
         test_cli_values) set -- sh tests/cli/test_cli_values.sh $B ;;
         test_cli) set -- sh tests/cli/test_cli.sh $B ;;
+        test_cli_promises) set -- sh tests/cli/test_cli_promises.sh $B ;;
+        test_cli_conventions) set -- sh tests/cli/test_cli_conventions.sh $B ;;
         claims) set -- $B/claims $B/claims.tsv ;;
         *) set -- "$t" ;;
     esac
