@@ -48,7 +48,6 @@ ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
 # The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is
 # compiled with only its own and the lower folders on the include path, so an include of a
 # higher layer does not build; each library layer is one archive, libsus_LAYER.a.
-LAYERS     := util core methods exp render prog
 LIB_LAYERS := util core methods exp render prog
 inc_util    := -Isrc/util
 inc_core    := $(inc_util) -Isrc/core
