@@ -24,7 +24,7 @@ for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev; do
     mod=${pair%%:*} pkg=${pair#*:}
     { have pkg-config && pkg-config --exists "$mod"; } || missing="$missing $pkg"
 done
-# a font the figures can name (PLOT_FONT in src/render/plot.h)
+# a font the figures can name (SUS_PLOT_FONT in src/render/plot.h)
 dpkg -s fonts-dejavu-core >/dev/null 2>&1 || missing="$missing fonts-dejavu-core"
 # make paper: pdflatex with the LaTeX packages the companion uses (booktabs, listings, ...)
 if [ "$profile" = paper ]; then

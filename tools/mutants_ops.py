@@ -88,7 +88,7 @@ def tokens(text):
 
 
 def typedef_names(paths):
-    """Type names declared by typedef in the headers (so that `suslov_model *m` is no product)."""
+    """Type names declared by typedef in the headers (so that `sus_model *m` is no product)."""
     names = set()
     for p in paths:
         toks = tokens(open(p).read())

@@ -17,8 +17,8 @@ snip() { sh tools/snippet.sh "$(where "$1")" "$2" >"$P/snip_$2.c"; }
 snip step_midpoint.c mid_residual
 snip step_variational.c taudyn_residual
 snip step_variational.c taualg
-snip reconstruct.c suslov_reconstruct
-snip exact.c suslov_exact_omega
+snip reconstruct.c sus_reconstruct
+snip exact.c sus_exact_omega
 awk 'NR == 1, /\*\// { print }' "$(where exact.h)" >"$P/snip_exact_derivation.c"
 # A gap in the equation map fails make check (tests/run.sh); here it is reported, not fatal.
 sh tools/eqmap.sh tex "$P/eqmap.tex" >/dev/null ||

@@ -2,7 +2,7 @@
 
 #include <math.h>
 
-int suslov_row_finite(const suslov_row *r)
+int sus_row_finite(const sus_row *r)
 {
     int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2])
           && isfinite(r->lambda);
@@ -12,15 +12,15 @@ int suslov_row_finite(const suslov_row *r)
     return ok;
 }
 
-int suslov_keep_last(void *ctx, const suslov_row *row)
+int sus_keep_last(void *ctx, const sus_row *row)
 {
-    *(suslov_row *)ctx = *row;
+    *(sus_row *)ctx = *row;
     return 0;
 }
 
 /* Every step's blow-up check, without building R: w, lambda and the attitude as stored (a unit
  * quaternion, or the matrix; R(q) of a finite unit q is finite, and lo is finite with hi). */
-static int state_finite(const double w[3], double lambda, const suslov_attitude *a)
+static int state_finite(const double w[3], double lambda, const sus_attitude *a)
 {
     int ok = isfinite(w[0]) && isfinite(w[1]) && isfinite(w[2]) && isfinite(lambda);
     if (a->r_stale)
@@ -31,33 +31,33 @@ static int state_finite(const double w[3], double lambda, const suslov_attitude 
     return ok;
 }
 
-int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit, void *ctx,
-               suslov_run_report *report)
+int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
+               sus_run_report *report)
 {
-    suslov_row row = {.k = 0, .t = 0.0, .w = {w0[0], w0[1], 0.0}};
-    suslov_attitude att;
-    row.lambda = suslov_lagmult(cfg->model, row.w);
-    suslov_attitude_identity(&att);
-    suslov_attitude_get(&att, row.R);
-    *report = (suslov_run_report){.status = SUSLOV_STEP_OK};
-    if (!suslov_row_finite(&row))
-        return SUSLOV_RUN_BLOWUP; /* report->step = 0, t = 0 */
+    sus_row row = {.k = 0, .t = 0.0, .w = {w0[0], w0[1], 0.0}};
+    sus_attitude att;
+    row.lambda = sus_lagmult(cfg->model, row.w);
+    sus_attitude_identity(&att);
+    sus_attitude_get(&att, row.R);
+    *report = (sus_run_report){.status = SUS_STEPPER_OK};
+    if (!sus_row_finite(&row))
+        return SUS_RUN_BLOWUP; /* report->step = 0, t = 0 */
     if (emit(ctx, &row))
-        return SUSLOV_RUN_STOPPED;
+        return SUS_RUN_STOPPED;
     for (long k = 0; k < cfg->steps; k++) {
         double w_next[3], lambda;
-        suslov_step_stats st;
-        const int status = suslov_step_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w,
+        sus_stepper_stats st;
+        const int status = sus_stepper_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w,
                                             w_next, &lambda, &st);
-        report->newton_iterations += st.iterations;
+        report->sus_newton_iterations += st.iterations;
         if (st.iterations > report->max_iterations)
             report->max_iterations = st.iterations;
-        if (status != SUSLOV_STEP_OK) {
+        if (status != SUS_STEPPER_OK) {
             report->status = status;
             report->step = k + 1;
             report->t = (double)(k + 1) * cfg->eps;
             report->stats = st;
-            return SUSLOV_RUN_STEP_FAILED;
+            return SUS_RUN_STEP_FAILED;
         }
         row.k = k + 1;
         row.t = (double)(k + 1) * cfg->eps;
@@ -67,15 +67,15 @@ int suslov_run(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn 
         row.lambda = lambda;
         const int emitted = row.k % cfg->every == 0 || row.k == cfg->steps;
         if (emitted) /* R only for the rows written */
-            suslov_attitude_get(&att, row.R);
-        if (!state_finite(row.w, row.lambda, &att) || (emitted && !suslov_row_finite(&row))) {
+            sus_attitude_get(&att, row.R);
+        if (!state_finite(row.w, row.lambda, &att) || (emitted && !sus_row_finite(&row))) {
             report->step = row.k;
             report->t = row.t;
             report->stats = st;
-            return SUSLOV_RUN_BLOWUP;
+            return SUS_RUN_BLOWUP;
         }
         if (emitted && emit(ctx, &row))
-            return SUSLOV_RUN_STOPPED;
+            return SUS_RUN_STOPPED;
     }
-    return SUSLOV_RUN_OK;
+    return SUS_RUN_OK;
 }

@@ -2,7 +2,7 @@
 
 #include <math.h>
 
-void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[2])
+void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
 {
     const double (*I)[3] = m->I;
     ex->model = m;
@@ -39,7 +39,7 @@ void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[
 }
 
 /* w = L^{-T} u with u = r R(beta) (cos psi, sin psi). */
-static void omega_from_psi(const suslov_exact *ex, double cp, double sp, double w[2])
+static void omega_from_psi(const sus_exact *ex, double cp, double sp, double w[2])
 {
     const double u1 = ex->r * (ex->cb * cp - ex->sb * sp);
     const double u2 = ex->r * (ex->sb * cp + ex->cb * sp);
@@ -47,7 +47,7 @@ static void omega_from_psi(const suslov_exact *ex, double cp, double sp, double 
     w[0] = (u1 - ex->l21 * w[1]) / ex->l11;
 }
 
-void suslov_exact_omega(const suslov_exact *ex, double t, double w[2])
+void sus_exact_omega(const sus_exact *ex, double t, double w[2])
 {
     if (ex->fixed) {
         w[0] = ex->w0[0];
@@ -61,7 +61,7 @@ void suslov_exact_omega(const suslov_exact *ex, double t, double w[2])
 }
 
 /* The steady rotation w(t -> infinity): psi = pi/2. */
-void suslov_exact_limit(const suslov_exact *ex, double w[2])
+void sus_exact_limit(const sus_exact *ex, double w[2])
 {
     if (ex->fixed) {
         w[0] = ex->w0[0];

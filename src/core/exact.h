@@ -15,13 +15,13 @@
  * with (C, S) = (cos psi0, sin psi0) and sigma = sign C. Every motion with C != 0 tends to
  * psi = pi/2: the steady rotation with c(w) = 0 reached at the rate k. Nothing here
  * overflows for any t: sech is evaluated as 2 e^{-|s|} / (1 + e^{-2|s|}). */
-#ifndef SUSLOV_EXACT_H
-#define SUSLOV_EXACT_H
+#ifndef SUS_EXACT_H
+#define SUS_EXACT_H
 
 #include "model.h"
 
 typedef struct {
-    const suslov_model *model;
+    const sus_model *model;
     double l11, l21, l22;  /* Cholesky factor of I_m */
     double r;              /* |u| = sqrt(2E) */
     double cb, sb;         /* (cos beta, sin beta) */
@@ -29,10 +29,10 @@ typedef struct {
     double sigma, s0;
     int fixed;             /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0) */
     double w0[2];
-} suslov_exact;
+} sus_exact;
 
-void suslov_exact_init(suslov_exact *ex, const suslov_model *m, const double w0[2]);
-void suslov_exact_omega(const suslov_exact *ex, double t, double w[2]);
-void suslov_exact_limit(const suslov_exact *ex, double w[2]);
+void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2]);
+void sus_exact_omega(const sus_exact *ex, double t, double w[2]);
+void sus_exact_limit(const sus_exact *ex, double w[2]);
 
 #endif

@@ -18,9 +18,9 @@
  * differ by at most the integral of |w - w*| (their propagators are rotations), which is
  * <= 4 |L^{-1}|_F r e^{-a_s} / k. Setting that to the tolerance gives a_s. An equilibrium
  * (ex->fixed) is a steady rotation from t = 0. */
-static double steady_time(const suslov_exact *ex, double wstar[3])
+static double steady_time(const sus_exact *ex, double wstar[3])
 {
-    suslov_exact_limit(ex, wstar);
+    sus_exact_limit(ex, wstar);
     wstar[2] = 0.0;
     if (ex->fixed)
         return 0.0;
@@ -64,26 +64,26 @@ static void rotation_about(const double a[3], double theta, double R[3][3])
 
 /* Scaled-time reference attitude (speed_scale) with the closed-form tail beyond tau_s. */
 typedef struct {
-    suslov_exact ex;   /* from w0 / c */
-    suslov_refatt ra;
+    sus_exact ex;   /* from w0 / c */
+    sus_refatt ra;
     double c, tau_s, speed, axis[3];
     int steady;        /* R_s = R~(tau_s) is known */
     double R_s[3][3];
 } scaled_attitude;
 
-static void scaled_init(scaled_attitude *sa, const suslov_model *m, const double w0[2])
+static void scaled_init(scaled_attitude *sa, const sus_model *m, const double w0[2])
 {
     double I3[3][3], wstar[3];
     sa->c = speed_scale(w0);
     const double v0[2] = {w0[0] / sa->c, w0[1] / sa->c};
-    suslov_exact_init(&sa->ex, m, v0);
+    sus_exact_init(&sa->ex, m, v0);
     sa->tau_s = steady_time(&sa->ex, wstar);
     sa->speed = sqrt(wstar[0] * wstar[0] + wstar[1] * wstar[1]);
     for (int i = 0; i < 3; i++)
         sa->axis[i] = sa->speed > 0.0 ? wstar[i] / sa->speed : 0.0;
     sa->steady = 0;
-    mat3_identity(I3);
-    suslov_refatt_init(&sa->ra, &sa->ex, 0.0, I3);
+    sus_mat3_identity(I3);
+    sus_refatt_init(&sa->ra, &sa->ex, 0.0, I3);
 }
 
 /* R(t) = R~(c t), the tail R~(tau) = R~(tau_s) exp((tau - tau_s) w~*^). The angle is formed in
@@ -92,11 +92,11 @@ static void scaled_attitude_at(scaled_attitude *sa, double t, double R[3][3])
 {
     const long double tau = (long double)t * sa->c;
     if (tau <= sa->tau_s) {
-        suslov_refatt_advance(&sa->ra, (double)tau, R);
+        sus_refatt_advance(&sa->ra, (double)tau, R);
         return;
     }
     if (!sa->steady)
-        suslov_refatt_advance(&sa->ra, sa->tau_s, sa->R_s);
+        sus_refatt_advance(&sa->ra, sa->tau_s, sa->R_s);
     sa->steady = 1;
     long double angle = (tau - sa->tau_s) * sa->speed;
     /* beyond the double range the phase is already lost to the rounding of t; any angle is
@@ -105,37 +105,37 @@ static void scaled_attitude_at(scaled_attitude *sa, double t, double R[3][3])
         angle = fmodl(angle, 6.283185307179586476925286766559L);
     double E[3][3];
     rotation_about(sa->axis, (double)angle, E);
-    mat3_mul(R, sa->R_s, E);
+    sus_mat3_mul(R, sa->R_s, E);
 }
 
-double suslov_exact_reference_steps(const suslov_model *m, const double w0[2], double T)
+double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T)
 {
     scaled_attitude sa;
     scaled_init(&sa, m, w0);
-    return fmin((double)((long double)T * sa.c), sa.tau_s) * SUSLOV_REFATT_PRECISE_STEPS;
+    return fmin((double)((long double)T * sa.c), sa.tau_s) * SUS_REFATT_PRECISE_STEPS;
 }
 
-int suslov_run_exact(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit,
-                     void *ctx, suslov_run_report *report)
+int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
+                     void *ctx, sus_run_report *report)
 {
-    suslov_exact ex;
+    sus_exact ex;
     scaled_attitude sa;
-    suslov_exact_init(&ex, cfg->model, w0);
+    sus_exact_init(&ex, cfg->model, w0);
     scaled_init(&sa, cfg->model, w0);
-    *report = (suslov_run_report){.status = SUSLOV_STEP_OK};
-    int rc = SUSLOV_RUN_OK;
-    for (long k = 0; rc == SUSLOV_RUN_OK;) {
-        suslov_row row = {.k = k, .t = (double)k * cfg->eps};
-        suslov_exact_omega(&ex, row.t, row.w);
+    *report = (sus_run_report){.status = SUS_STEPPER_OK};
+    int rc = SUS_RUN_OK;
+    for (long k = 0; rc == SUS_RUN_OK;) {
+        sus_row row = {.k = k, .t = (double)k * cfg->eps};
+        sus_exact_omega(&ex, row.t, row.w);
         row.w[2] = 0.0;
-        row.lambda = suslov_lagmult(cfg->model, row.w);
+        row.lambda = sus_lagmult(cfg->model, row.w);
         scaled_attitude_at(&sa, row.t, row.R);
-        if (!suslov_row_finite(&row)) {
+        if (!sus_row_finite(&row)) {
             report->step = k;
             report->t = row.t;
-            rc = SUSLOV_RUN_BLOWUP;
+            rc = SUS_RUN_BLOWUP;
         } else if (emit(ctx, &row)) {
-            rc = SUSLOV_RUN_STOPPED;
+            rc = SUS_RUN_STOPPED;
         }
         if (k == cfg->steps)
             break;

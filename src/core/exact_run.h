@@ -1,7 +1,7 @@
 /* The exact solution on the same grid and with the same row format as the integrators:
  * closed-form w(t_k) and lambda(w(t_k)), and the reference R(t_k) (refattitude.h). */
-#ifndef SUSLOV_EXACT_RUN_H
-#define SUSLOV_EXACT_RUN_H
+#ifndef SUS_EXACT_RUN_H
+#define SUS_EXACT_RUN_H
 
 #include "driver.h"
 #include "exact.h"
@@ -10,15 +10,15 @@
  * (refattitude.h) up to the time t_s after which w(t) is the steady rotation w* to within a
  * total rotation angle of u = 2^-53, and from the closed form R(t_s) exp((t - t_s) w*^) beyond
  * (exact_run.c): the cost is O(1) in T for large T, and bounded in |w0|: the attitude is
- * integrated in the rescaled time |w0| t (to a power of two). Returns a suslov_run_status (driver.h): _OK,
+ * integrated in the rescaled time |w0| t (to a power of two). Returns a sus_run_status (driver.h): _OK,
  * _STOPPED or _BLOWUP (report->step, t). */
 /* The number of reference Taylor steps (refattitude.h) a run to time T costs, whatever the
  * number of rows: bounded in |w0| (the attitude is integrated in a rescaled time, exact_run.c),
  * but growing without bound as the body's I31, I32 or w0's distance from an equilibrium go to
  * zero; a caller checks it before the run. */
-double suslov_exact_reference_steps(const suslov_model *m, const double w0[2], double T);
+double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T);
 
-int suslov_run_exact(const suslov_run_config *cfg, const double w0[2], suslov_emit_fn emit,
-                     void *ctx, suslov_run_report *report);
+int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
+                     void *ctx, sus_run_report *report);
 
 #endif

@@ -10,7 +10,7 @@ typedef struct {
     long double l11, l21, l22, r, cb, sb, k, sigma, s0;
 } exact_l;
 
-static void exact_l_init(exact_l *e, const suslov_model *m, const double w0[2])
+static void exact_l_init(exact_l *e, const sus_model *m, const double w0[2])
 {
     const double (*I)[3] = m->I;
     e->l11 = sqrtl(I[0][0]);
@@ -78,7 +78,7 @@ static void magnus4_l(const exact_l *e, long double t0, long double t1, long n, 
 
 /* R <- R Phi(t0, t1): the long-double scheme from t0 with n and 2n steps, extrapolated
  * (16 Phi_2n - Phi_n) / 15 (the error of the fourth-order Magnus scheme is even in h). */
-void suslov_magnus4(const suslov_exact *ex, double t0, double t1, long n, double R[3][3])
+void sus_magnus4(const sus_exact *ex, double t0, double t1, long n, double R[3][3])
 {
     exact_l e;
     long double A[3][3], B[3][3];
@@ -89,6 +89,6 @@ void suslov_magnus4(const suslov_exact *ex, double t0, double t1, long n, double
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             Phi[i][j] = (double)((16 * B[i][j] - A[i][j]) / 15);
-    mat3_mul(Rn, R, Phi);
-    mat3_copy(R, Rn);
+    sus_mat3_mul(Rn, R, Phi);
+    sus_mat3_copy(R, Rn);
 }

@@ -3,8 +3,8 @@
 #include <math.h>
 #include <stdio.h>
 
-const double SUSLOV_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
-const double SUSLOV_PAPER_OMEGA0[2] = {0.4, 0.5};
+const double SUS_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
+const double SUS_PAPER_OMEGA0[2] = {0.4, 0.5};
 
 /* ||fA||_2, the largest singular value of the 2x2 matrix in closed form,
  * s^2 = (F + sqrt(F^2 - 4 det^2)) / 2 with F the squared Frobenius norm; rounded up by a few
@@ -16,7 +16,7 @@ static double norm2x2(const double M[2][2])
     return sqrt(0.5 * (F + sqrt(fmax(F * F - 4.0 * det * det, 0.0)))) * (1.0 + 1e-14);
 }
 
-int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errlen)
+int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
 {
     for (int i = 0; i < 9; i++) {
         if (!isfinite(I[i])) {
@@ -27,7 +27,7 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
     }
     const double scale = fabs(I[0]) + fabs(I[1]) + fabs(I[3]) + fabs(I[4]);
     /* I_m must be symmetric for E to be conserved by (ContDyn); allow only round-off. */
-    if (fabs(I[1] - I[3]) > 4.0 * SUSLOV_U * scale) {
+    if (fabs(I[1] - I[3]) > 4.0 * SUS_U * scale) {
         snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
         return -1;
     }
@@ -50,10 +50,10 @@ int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errl
 }
 
 /* Df of (ContDyn), for the Newton iterations and linear stability. */
-void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[2][2])
+void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
 {
     const double (*I)[3] = m->I;
-    const double d = m->det_m, c = suslov_c(m, w);
+    const double d = m->det_m, c = sus_c(m, w);
     const double p = I[1][1] * w[1] + I[0][1] * w[0];
     const double q = I[1][0] * w[1] + I[0][0] * w[0];
     J[0][0] = -(I[0][1] * c + p * m->b[0]) / d;
@@ -63,7 +63,7 @@ void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[
 }
 
 /* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). */
-double suslov_energy(const suslov_model *m, const double w[2])
+double sus_energy(const sus_model *m, const double w[2])
 {
     const double (*I)[3] = m->I;
     return 0.5 * (w[0] * (I[0][0] * w[0] + I[0][1] * w[1])

@@ -1,14 +1,14 @@
 /* The reduced Suslov problem of Section 5.2: the differential part (ContDyn), the multiplier
  * (LagMult) and the reduced energy, for an inertia tensor given by rows as printed. Only the
  * block I_m = (I_ij), i,j in {1,2}, and the third row (I31, I32) enter, exactly as in (RGB2). */
-#ifndef SUSLOV_MODEL_H
-#define SUSLOV_MODEL_H
+#ifndef SUS_MODEL_H
+#define SUS_MODEL_H
 
 #include <float.h>
 #include <stddef.h>
 
 /* u: the spacing of doubles at 1 (2^-52), the unit every round-off yardstick is counted in. */
-#define SUSLOV_U DBL_EPSILON
+#define SUS_U DBL_EPSILON
 
 typedef struct {
     double I[3][3];  /* the inertia tensor, rows as printed */
@@ -19,51 +19,51 @@ typedef struct {
     /* |b|_2 and ||fA||_2, rounded up, so |c(v) fA u| <= K |v| |u| with K = norm_b norm_fA: the
      * majorant that bounds the Taylor steps (step_taylor.c) */
     double norm_b, norm_fA;
-} suslov_model;
+} sus_model;
 
 /* The paper's body: I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] and w(0) = (0.4, 0.5). */
-extern const double SUSLOV_PAPER_INERTIA[9];
-extern const double SUSLOV_PAPER_OMEGA0[2];
+extern const double SUS_PAPER_INERTIA[9];
+extern const double SUS_PAPER_OMEGA0[2];
 
 /* Returns 0, or -1 with a one-line reason in err when an entry is not finite or I_m is not
  * symmetric positive definite. */
-int suslov_model_init(suslov_model *m, const double I[9], char *err, size_t errlen);
+int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen);
 
 /* c(w) = I_3i w_i, i in {1,2}: the factor shared by (ContDyn) and (LagMult). */
-static inline double suslov_c(const suslov_model *m, const double w[2])
+static inline double sus_c(const sus_model *m, const double w[2])
 {
     return m->b[0] * w[0] + m->b[1] * w[1];
 }
 
 /* (ContDyn): w1' = -(I22 w2 + I12 w1) c / |I_m|,  w2' = (I21 w2 + I11 w1) c / |I_m|.
- * Inline, with the division done once in suslov_model_init: every stepper evaluates it. */
-static inline void suslov_contdyn(const suslov_model *m, const double w[2], double f[2])
+ * Inline, with the division done once in sus_model_init: every stepper evaluates it. */
+static inline void sus_contdyn(const sus_model *m, const double w[2], double f[2])
 {
-    const double c = suslov_c(m, w);
+    const double c = sus_c(m, w);
     f[0] = c * (m->fA[0][0] * w[0] + m->fA[0][1] * w[1]);
     f[1] = c * (m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
 }
 
-void suslov_contdyn_jacobian(const suslov_model *m, const double w[2], double J[2][2]);
+void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2]);
 
 /* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the
  * O_0 of the proof of PropoFinal. */
-static inline double suslov_lagmult_o0(const suslov_model *m, const double w[2])
+static inline double sus_lagmult_o0(const sus_model *m, const double w[2])
 {
     const double (*I)[3] = m->I;
-    return suslov_c(m, w) * m->inv_det_m
+    return sus_c(m, w) * m->inv_det_m
          * ((I[2][1] * I[1][0] - I[2][0] * I[1][1]) * w[1]
             + (I[2][1] * I[0][0] - I[2][0] * I[0][1]) * w[0]);
 }
 
 /* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
-static inline double suslov_lagmult(const suslov_model *m, const double w[2])
+static inline double sus_lagmult(const sus_model *m, const double w[2])
 {
     const double (*I)[3] = m->I;
     return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
          - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
-         + suslov_lagmult_o0(m, w);
+         + sus_lagmult_o0(m, w);
 }
-double suslov_energy(const suslov_model *m, const double w[2]);
+double sus_energy(const sus_model *m, const double w[2]);
 
 #endif

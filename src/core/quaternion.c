@@ -12,7 +12,7 @@ static void unit(const double q[4], double u[4])
 }
 
 /* R(s, v) = I + 2 s v^ + 2 v^ v^ for a unit quaternion, written out entry by entry. */
-void quat_unit_rotation(const double u[4], double R[3][3])
+void sus_quat_unit_rotation(const double u[4], double R[3][3])
 {
     const double s = u[0], x = u[1], y = u[2], z = u[3];
     R[0][0] = 1.0 - 2.0 * (y * y + z * z);
@@ -26,14 +26,14 @@ void quat_unit_rotation(const double u[4], double R[3][3])
     R[2][2] = 1.0 - 2.0 * (x * x + y * y);
 }
 
-void quat_rotation(const double q[4], double R[3][3])
+void sus_quat_rotation(const double q[4], double R[3][3])
 {
     double u[4];
     unit(q, u);
-    quat_unit_rotation(u, R);
+    sus_quat_unit_rotation(u, R);
 }
 
-void quat_from_rotation(const double R[3][3], double q[4])
+void sus_quat_from_rotation(const double R[3][3], double q[4])
 {
     const double tr = R[0][0] + R[1][1] + R[2][2];
     int k = -1; /* -1: the trace is the largest */
@@ -62,20 +62,20 @@ void quat_from_rotation(const double R[3][3], double q[4])
     }
 }
 
-void quat_of_attitude(const suslov_attitude *a, double q[4])
+void sus_quat_of_attitude(const sus_attitude *a, double q[4])
 {
     if (a->has_q) {
         memcpy(q, a->q, sizeof a->q);
         return;
     }
     double R[3][3];
-    suslov_attitude_get(a, R);
-    quat_from_rotation(R, q);
+    sus_attitude_get(a, R);
+    sus_quat_from_rotation(R, q);
 }
 
-/* The matrix is built only when asked for (suslov_attitude_get): a method that carries q builds
+/* The matrix is built only when asked for (sus_attitude_get): a method that carries q builds
  * no matrix on the steps whose rows nobody reads. */
-void quat_to_attitude(const double q[4], suslov_attitude *a)
+void sus_quat_to_attitude(const double q[4], sus_attitude *a)
 {
     unit(q, a->q);
     a->has_q = 1;

@@ -1,12 +1,12 @@
 /* Unit quaternions q = (s, v) for attitudes: the rotation of q, and the product with a pure
  * quaternion (0, w) that the kinematics q' = 1/2 q (x) (0, w) needs (R' = R w^ for R = R(q)). */
-#ifndef SUSLOV_QUATERNION_H
-#define SUSLOV_QUATERNION_H
+#ifndef SUS_QUATERNION_H
+#define SUS_QUATERNION_H
 
 #include "so3.h"
 
 /* p = q (x) (0, w): (-v.w, s w + v x w). */
-static inline void quat_mul_pure(double p[4], const double q[4], const double w[3])
+static inline void sus_quat_mul_pure(double p[4], const double q[4], const double w[3])
 {
     p[0] = -(q[1] * w[0] + q[2] * w[1] + q[3] * w[2]);
     p[1] = q[0] * w[0] + q[2] * w[2] - q[3] * w[1];
@@ -15,7 +15,7 @@ static inline void quat_mul_pure(double p[4], const double q[4], const double w[
 }
 
 /* p = a (x) b (Hamilton product). */
-static inline void quat_mul(double p[4], const double a[4], const double b[4])
+static inline void sus_quat_mul(double p[4], const double a[4], const double b[4])
 {
     p[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
     p[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
@@ -25,18 +25,18 @@ static inline void quat_mul(double p[4], const double a[4], const double b[4])
 
 /* The unit quaternion of a rotation R (Shepperd's method: the largest of 1 + tr R, 1 + 2 R_ii - tr R
  * under the square root, so no cancellation), sign fixed by q0 >= 0. */
-void quat_from_rotation(const double R[3][3], double q[4]);
+void sus_quat_from_rotation(const double R[3][3], double q[4]);
 
 /* R(q/|q|). */
-void quat_rotation(const double q[4], double R[3][3]);
+void sus_quat_rotation(const double q[4], double R[3][3]);
 
 /* A method that carries its attitude as a quaternion (the Taylor methods, the compositions):
  * q of R_k, and R_{k+1} = R(q/|q|) written back (lo = 0). The orthogonality defect is then one
  * rounding of R(q), whatever the number of steps: nothing accumulates. */
 #include "reconstruct.h"
-void quat_of_attitude(const suslov_attitude *a, double q[4]);
-void quat_to_attitude(const double q[4], suslov_attitude *a);
+void sus_quat_of_attitude(const sus_attitude *a, double q[4]);
+void sus_quat_to_attitude(const double q[4], sus_attitude *a);
 /* R(q) for a unit quaternion q (no normalisation). */
-void quat_unit_rotation(const double q[4], double R[3][3]);
+void sus_quat_unit_rotation(const double q[4], double R[3][3]);
 
 #endif

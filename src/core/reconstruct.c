@@ -7,9 +7,9 @@
 #include <math.h>
 #include <string.h>
 
-void suslov_attitude_identity(suslov_attitude *a)
+void sus_attitude_identity(sus_attitude *a)
 {
-    mat3_identity(a->hi);
+    sus_mat3_identity(a->hi);
     memset(a->lo, 0, sizeof a->lo);
     a->q[0] = 1.0;
     a->q[1] = a->q[2] = a->q[3] = 0.0;
@@ -17,10 +17,10 @@ void suslov_attitude_identity(suslov_attitude *a)
     a->r_stale = 0;
 }
 
-void suslov_attitude_get(const suslov_attitude *a, double R[3][3])
+void sus_attitude_get(const sus_attitude *a, double R[3][3])
 {
     if (a->r_stale) {
-        quat_unit_rotation(a->q, R);
+        sus_quat_unit_rotation(a->q, R);
         return;
     }
     for (int i = 0; i < 3; i++)
@@ -29,27 +29,27 @@ void suslov_attitude_get(const suslov_attitude *a, double R[3][3])
 }
 
 /* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
-void suslov_reconstruct(suslov_recon kind, double eps, suslov_attitude *a, const double w[3],
+void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
                         const double w_next[3])
 {
     double xi[3], D[3][3];
     for (int i = 0; i < 3; i++)
-        xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
-    if (kind == SUSLOV_RECON_EXP_MID)
-        so3_exp_minus_identity(xi, D);
+        xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+    if (kind == SUS_RECON_EXP_MID)
+        sus_so3_exp_minus_identity(xi, D);
     else
-        so3_cay_minus_identity(xi, D);
-    suslov_attitude_increment(a, D);
+        sus_so3_cay_minus_identity(xi, D);
+    sus_attitude_increment(a, D);
 }
 
 /* (algo), step 3, on a quaternion of R_k (reconstruct.h). */
-void suslov_reconstruct_quat(suslov_recon kind, double eps, double q[4], const double w[3],
+void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double w[3],
                              const double w_next[3])
 {
     double xi[3], dq[4], p[4];
     for (int i = 0; i < 3; i++)
-        xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
-    if (kind == SUSLOV_RECON_EXP_MID) {
+        xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+    if (kind == SUS_RECON_EXP_MID) {
         const double th = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
         const double s = th > 0.0 ? 0.5 * sin(0.5 * th) / (0.5 * th) : 0.5; /* sin(th/2)/th */
         dq[0] = cos(0.5 * th);
@@ -63,22 +63,22 @@ void suslov_reconstruct_quat(suslov_recon kind, double eps, double q[4], const d
         for (int i = 0; i < 4; i++)
             dq[i] *= n;
     }
-    quat_mul(p, q, dq);
+    sus_quat_mul(p, q, dq);
     for (int i = 0; i < 4; i++)
         q[i] = p[i];
 }
 
-void suslov_attitude_increment(suslov_attitude *a, const double D[3][3])
+void sus_attitude_increment(sus_attitude *a, const double D[3][3])
 {
     double R[3][3], dR[3][3];
-    suslov_attitude_get(a, R);
+    sus_attitude_get(a, R);
     if (a->r_stale) { /* the matrix from here on */
         memcpy(a->hi, R, sizeof R);
         memset(a->lo, 0, sizeof a->lo);
         a->r_stale = 0;
     }
     a->has_q = 0;
-    mat3_mul(dR, R, D);
+    sus_mat3_mul(dR, R, D);
     /* Kahan: hi + lo + dR, keeping what the addition to hi rounds away in lo. */
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
@@ -89,18 +89,18 @@ void suslov_attitude_increment(suslov_attitude *a, const double D[3][3])
         }
 }
 
-const char *const SUSLOV_RECON_NAMES[SUSLOV_RECON_COUNT] = {"cayley", "cayley-mid", "exp-mid"};
-const char *const SUSLOV_RECON_ABOUT[SUSLOV_RECON_COUNT] = {
+const char *const SUS_RECON_NAMES[SUS_RECON_COUNT] = {"cayley", "cayley-mid", "exp-mid"};
+const char *const SUS_RECON_ABOUT[SUS_RECON_COUNT] = {
     "R_{k+1} = R_k cay(H w_k^), Algorithm (algo)",
     "R_{k+1} = R_k cay(H (w_k^ + w_{k+1}^)/2) (extension)",
     "R_{k+1} = R_k exp(H (w_k^ + w_{k+1}^)/2), Rodrigues (extension)",
 };
 
-int suslov_recon_by_name(const char *name, suslov_recon *kind)
+int sus_recon_by_name(const char *name, sus_recon *kind)
 {
-    for (int k = 0; k < SUSLOV_RECON_COUNT; k++)
-        if (strcmp(name, SUSLOV_RECON_NAMES[k]) == 0) {
-            *kind = (suslov_recon)k;
+    for (int k = 0; k < SUS_RECON_COUNT; k++)
+        if (strcmp(name, SUS_RECON_NAMES[k]) == 0) {
+            *kind = (sus_recon)k;
             return 0;
         }
     return -1;

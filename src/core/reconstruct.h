@@ -9,19 +9,19 @@
  * floating point the plain product R_k cay drifts off SO(3) linearly, by ~u/2 per step
  * (1e-10 after 10^6 steps: correlated rounding once the motion is a steady rotation), while
  * the compensated sum stays near 1e-14. The claims ledger measures both. */
-#ifndef SUSLOV_RECONSTRUCT_H
-#define SUSLOV_RECONSTRUCT_H
+#ifndef SUS_RECONSTRUCT_H
+#define SUS_RECONSTRUCT_H
 
 typedef enum {
-    SUSLOV_RECON_CAYLEY = 0,
-    SUSLOV_RECON_CAYLEY_MID = 1,
-    SUSLOV_RECON_EXP_MID = 2,
-    SUSLOV_RECON_COUNT
-} suslov_recon;
+    SUS_RECON_CAYLEY = 0,
+    SUS_RECON_CAYLEY_MID = 1,
+    SUS_RECON_EXP_MID = 2,
+    SUS_RECON_COUNT
+} sus_recon;
 
-/* The --reconstruct names and one-line descriptions, indexed by suslov_recon. */
-extern const char *const SUSLOV_RECON_NAMES[SUSLOV_RECON_COUNT];
-extern const char *const SUSLOV_RECON_ABOUT[SUSLOV_RECON_COUNT];
+/* The --reconstruct names and one-line descriptions, indexed by sus_recon. */
+extern const char *const SUS_RECON_NAMES[SUS_RECON_COUNT];
+extern const char *const SUS_RECON_ABOUT[SUS_RECON_COUNT];
 
 typedef struct {
     double hi[3][3], lo[3][3];  /* R = hi + lo */
@@ -30,24 +30,24 @@ typedef struct {
      * reconstructions clear has_q. */
     double q[4];
     int has_q;
-    /* hi and lo are not built yet: R is R(q), made when asked for (suslov_attitude_get), so a
+    /* hi and lo are not built yet: R is R(q), made when asked for (sus_attitude_get), so a
      * method that carries q builds no matrix on the steps whose rows nobody reads. */
     int r_stale;
-} suslov_attitude;
+} sus_attitude;
 
-void suslov_attitude_identity(suslov_attitude *a);
-void suslov_attitude_get(const suslov_attitude *a, double R[3][3]);
+void sus_attitude_identity(sus_attitude *a);
+void sus_attitude_get(const sus_attitude *a, double R[3][3]);
 
 /* (algo), step 3: advances a from R_k to R_{k+1}. */
-void suslov_reconstruct(suslov_recon kind, double eps, suslov_attitude *a, const double w[3],
+void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
                         const double w_next[3]);
 /* The same map on a quaternion q of R_k: q <- q (x) dq with dq the quaternion of cay(xi^)
  * ((1, xi/2) normalised) or of exp(xi^) ((cos |xi|/2, sin(|xi|/2) xi/|xi|)). Methods that
  * carry their attitude as a quaternion through many substeps use it (src/methods/composition.c). */
-void suslov_reconstruct_quat(suslov_recon kind, double eps, double q[4], const double w[3],
+void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double w[3],
                              const double w_next[3]);
 /* R <- R (I + D), accumulated with the compensated sum above: D = tau(xi) - I, small. */
-void suslov_attitude_increment(suslov_attitude *a, const double D[3][3]);
-int suslov_recon_by_name(const char *name, suslov_recon *kind);
+void sus_attitude_increment(sus_attitude *a, const double D[3][3]);
+int sus_recon_by_name(const char *name, sus_recon *kind);
 
 #endif

@@ -6,9 +6,9 @@
 
 /* One Taylor step of order P in long double: the Cauchy-product recursions of (ContDyn)
  * (w' = c(w) fA w) and of q' = 1/2 q (x) (0, w), with scaled coefficients (W_n = w_n h^n). */
-static void precise_step(const suslov_model *m, long double h, long double w[2], long double q[4])
+static void precise_step(const sus_model *m, long double h, long double w[2], long double q[4])
 {
-    enum { P = SUSLOV_REFATT_PRECISE_ORDER };
+    enum { P = SUS_REFATT_PRECISE_ORDER };
     long double W[P + 1][2], Q[P + 1][4], C[P + 1], U[P + 1][2];
     const long double b0 = m->b[0], b1 = m->b[1];
     /* fA in long double from the printed inertia (the double values the model holds) */
@@ -65,10 +65,10 @@ static void rotation_of(const long double q[4], double R[3][3])
 /* From t to t1 in equal steps of at most 1/SUSLOV_REFATT_PRECISE_STEPS. The step count is
  * converted to an integer only below 2^62 (the conversion of a larger double is undefined);
  * a longer stretch is run in pieces, which callers avoid by checking the cost first
- * (suslov_exact_reference_steps), and an infinite one gives a non-finite attitude. */
-static void integrate(const suslov_model *m, long double w[2], long double q[4], double t, double t1)
+ * (sus_exact_reference_steps), and an infinite one gives a non-finite attitude. */
+static void integrate(const sus_model *m, long double w[2], long double q[4], double t, double t1)
 {
-    const double steps = ceil((t1 - t) * SUSLOV_REFATT_PRECISE_STEPS);
+    const double steps = ceil((t1 - t) * SUS_REFATT_PRECISE_STEPS);
     if (!isfinite(steps)) { /* no finite answer: make the rows say so (a non-finite R) */
         q[0] = q[1] = q[2] = q[3] = NAN;
         return;
@@ -87,24 +87,24 @@ static void integrate(const suslov_model *m, long double w[2], long double q[4],
         precise_step(m, h, w, q);
 }
 
-void suslov_refatt_init(suslov_refatt *ra, const suslov_exact *ex, double t0, const double R0[3][3])
+void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const double R0[3][3])
 {
     double w[2], q[4];
     ra->ex = ex;
     ra->t = t0;
-    suslov_exact_omega(ex, t0, w);
+    sus_exact_omega(ex, t0, w);
     if (t0 == 0.0) { /* w0 itself, not its closed-form evaluation (an ulp off: 3e-15 in R(50)) */
         w[0] = ex->w0[0];
         w[1] = ex->w0[1];
     }
-    quat_from_rotation(R0, q);
+    sus_quat_from_rotation(R0, q);
     for (int i = 0; i < 4; i++)
         ra->q[i] = q[i];
     ra->w[0] = w[0];
     ra->w[1] = w[1];
 }
 
-void suslov_refatt_advance(suslov_refatt *ra, double t1, double R[3][3])
+void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3])
 {
     if (t1 > ra->t) {
         integrate(ra->ex->model, ra->w, ra->q, ra->t, t1);
@@ -113,7 +113,7 @@ void suslov_refatt_advance(suslov_refatt *ra, double t1, double R[3][3])
     rotation_of(ra->q, R);
 }
 
-void suslov_refatt_precise(const suslov_model *m, const double w0[2], double T, double w[2], double R[3][3])
+void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3])
 {
     long double wl[2] = {w0[0], w0[1]}, q[4] = {1, 0, 0, 0};
     integrate(m, wl, q, 0.0, T);
@@ -122,10 +122,10 @@ void suslov_refatt_precise(const suslov_model *m, const double w0[2], double T, 
     w[1] = (double)wl[1];
 }
 
-void suslov_refatt_increment(const suslov_exact *ex, double t0, double t1, double Phi[3][3])
+void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3])
 {
-    suslov_refatt ra;
+    sus_refatt ra;
     double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    suslov_refatt_init(&ra, ex, t0, I3);
-    suslov_refatt_advance(&ra, t1, Phi);
+    sus_refatt_init(&ra, ex, t0, I3);
+    sus_refatt_advance(&ra, t1, Phi);
 }

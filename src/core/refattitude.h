@@ -1,5 +1,5 @@
 /* Reference attitude: R(t) with R' = R w^(t), w(t) the solution of (ContDyn), integrated in long
- * double by a Taylor series of order SUSLOV_REFATT_PRECISE_ORDER (the Cauchy-product
+ * double by a Taylor series of order SUS_REFATT_PRECISE_ORDER (the Cauchy-product
  * recursions of (ContDyn) and of the quaternion kinematics q' = 1/2 q (x) (0, w)), with steps of
  * at most 1/SUSLOV_REFATT_PRECISE_STEPS time units. Truncation per step is ~(h/rho)^29 with
  * rho ~ 10.8 the distance of the field's complex singularity from the real axis (below 1e-40);
@@ -9,30 +9,30 @@
  * computation, a long-double fourth-order Magnus integration along the closed-form w(t) with
  * Richardson extrapolation (magnus4.h), in tests/unit/test_highorder.c and in the claims ledger.
  * (Until issue 11 the reference was GSL's rk8pd at tolerance 1e-13: about 1e-13 off at t = 50.) */
-#ifndef SUSLOV_REFATTITUDE_H
-#define SUSLOV_REFATTITUDE_H
+#ifndef SUS_REFATTITUDE_H
+#define SUS_REFATTITUDE_H
 
 #include "exact.h"
 
-#define SUSLOV_REFATT_PRECISE_ORDER 28
-#define SUSLOV_REFATT_PRECISE_STEPS 4
+#define SUS_REFATT_PRECISE_ORDER 28
+#define SUS_REFATT_PRECISE_STEPS 4
 
 typedef struct {
-    const suslov_exact *ex;
+    const sus_exact *ex;
     double t;
     long double w[2], q[4]; /* w(t) and the attitude as a quaternion (not normalised) */
-} suslov_refatt;
+} sus_refatt;
 
 /* Starts at t0 with R(t0) = R0 (a rotation) and w(t0) from the closed form. The integration
  * cannot fail and allocates nothing, so there is nothing to check and nothing to free. */
-void suslov_refatt_init(suslov_refatt *ra, const suslov_exact *ex, double t0, const double R0[3][3]);
+void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const double R0[3][3]);
 /* Advances to t1 >= the current time and copies R(t1). */
-void suslov_refatt_advance(suslov_refatt *ra, double t1, double R[3][3]);
+void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3]);
 
 /* w(T) and R(T) from w(0) = w0, R(0) = I. */
-void suslov_refatt_precise(const suslov_model *m, const double w0[2], double T, double w[2], double R[3][3]);
+void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3]);
 
 /* R(t0)^{-1} R(t1): the exact increment over one step, from the identity. */
-void suslov_refatt_increment(const suslov_exact *ex, double t0, double t1, double Phi[3][3]);
+void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3]);
 
 #endif

@@ -2,7 +2,7 @@
 #include "mat3.h"
 
 /* (Isom): w -> w^, so that w^ v = w x v. */
-void so3_hat(const double w[3], double W[3][3])
+void sus_so3_hat(const double w[3], double W[3][3])
 {
     W[0][0] = 0.0;   W[0][1] = -w[2]; W[0][2] = w[1];
     W[1][0] = w[2];  W[1][1] = 0.0;   W[1][2] = -w[0];
@@ -11,7 +11,7 @@ void so3_hat(const double w[3], double W[3][3])
 
 /* Inverse of (Isom) on the skew part, so a matrix that is skew only up to round-off
  * still gives the nearest vector. */
-void so3_vee(const double W[3][3], double w[3])
+void sus_so3_vee(const double W[3][3], double w[3])
 {
     w[0] = 0.5 * (W[2][1] - W[1][2]);
     w[1] = 0.5 * (W[0][2] - W[2][0]);
@@ -20,11 +20,11 @@ void so3_vee(const double W[3][3], double w[3])
 
 /* (caypart) without its leading I: cay(w^) - I = (w^ + w^2/2) / (1 + |w/2|^2). Small for
  * small w, so it can be accumulated without losing its low-order bits against I. */
-void so3_cay_minus_identity(const double w[3], double D[3][3])
+void sus_so3_cay_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];
-    so3_hat(w, W);
-    mat3_mul(W2, W, W);
+    sus_so3_hat(w, W);
+    sus_mat3_mul(W2, W, W);
     const double a = 1.0 / (1.0 + 0.25 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -32,16 +32,16 @@ void so3_cay_minus_identity(const double w[3], double D[3][3])
 }
 
 /* (caypart): cay(w^) = I + (w^ + w^2/2) / (1 + |w/2|^2). */
-void so3_cay(const double w[3], double R[3][3])
+void sus_so3_cay(const double w[3], double R[3][3])
 {
-    so3_cay_minus_identity(w, R);
+    sus_so3_cay_minus_identity(w, R);
     for (int i = 0; i < 3; i++)
         R[i][i] += 1.0;
 }
 
 /* Inverse of (caypart): w = 2 vee(R - R^T) / (1 + tr R), valid away from tr R = -1
  * (rotations by pi, where the Cayley chart ends). */
-void so3_cay_inv(const double R[3][3], double w[3])
+void sus_so3_cay_inv(const double R[3][3], double w[3])
 {
     const double s = 2.0 / (1.0 + R[0][0] + R[1][1] + R[2][2]);
     w[0] = s * (R[2][1] - R[1][2]);
@@ -50,10 +50,10 @@ void so3_cay_inv(const double R[3][3], double w[3])
 }
 
 /* dcay_w = (I + w^/2) / (1 + |w/2|^2), the formula after (caypart). */
-void so3_dcay(const double w[3], double D[3][3])
+void sus_so3_dcay(const double w[3], double D[3][3])
 {
     double W[3][3];
-    so3_hat(w, W);
+    sus_so3_hat(w, W);
     const double a = 1.0 / (1.0 + 0.25 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -61,19 +61,19 @@ void so3_dcay(const double w[3], double D[3][3])
 }
 
 /* dcay_w^{-1} = I - w^/2 + w w^T / 4, the formula after (caypart). */
-void so3_dcay_inv(const double w[3], double D[3][3])
+void sus_so3_dcay_inv(const double w[3], double D[3][3])
 {
     double W[3][3];
-    so3_hat(w, W);
+    sus_so3_hat(w, W);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             D[i][j] = (i == j) - 0.5 * W[i][j] + 0.25 * w[i] * w[j];
 }
 
 /* (cayinver): dcay^{-1}_{eps w} for w_3 = 0, entry by entry as printed. Note the printed
- * (3,3) entry is 0, whereas so3_dcay_inv gives 1 there; tests and the claims ledger
+ * (3,3) entry is 0, whereas sus_so3_dcay_inv gives 1 there; tests and the claims ledger
  * measure what that single entry does to (taualg). */
-void so3_cayinver_printed(double eps, const double w[2], double D[3][3])
+void sus_so3_cayinver_printed(double eps, const double w[2], double D[3][3])
 {
     const double e2 = 0.25 * eps * eps, e1 = 0.5 * eps;
     D[0][0] = 1.0 + e2 * w[0] * w[0]; D[0][1] = e2 * w[0] * w[1];       D[0][2] = -e1 * w[1];
@@ -85,11 +85,11 @@ void so3_cayinver_printed(double eps, const double w[2], double D[3][3])
  * b = (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2, t = |w|. The half-angle form has no cancellation,
  * so a and b keep full relative accuracy at every angle (1 - cos t loses them all near t = 0),
  * and the result, small for small w, can be accumulated against I like the Cayley increment. */
-void so3_exp_minus_identity(const double w[3], double D[3][3])
+void sus_so3_exp_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];
-    so3_hat(w, W);
-    mat3_mul(W2, W, W);
+    sus_so3_hat(w, W);
+    sus_mat3_mul(W2, W, W);
     const double th = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     double a = 1.0, b = 0.5;
     if (th > 0.0) {
@@ -103,29 +103,29 @@ void so3_exp_minus_identity(const double w[3], double D[3][3])
 }
 
 /* Rodrigues' formula for exp(w^). */
-void so3_exp(const double w[3], double R[3][3])
+void sus_so3_exp(const double w[3], double R[3][3])
 {
-    so3_exp_minus_identity(w, R);
+    sus_so3_exp_minus_identity(w, R);
     for (int i = 0; i < 3; i++)
         R[i][i] += 1.0;
 }
 
 /* (MetMat): dist(R1, R2) = |I - R1 R2^T| in the Frobenius norm. */
-double so3_dist(const double R1[3][3], const double R2[3][3])
+double sus_so3_dist(const double R1[3][3], const double R2[3][3])
 {
     double P[3][3];
-    mat3_mul_bt(P, R1, R2);
+    sus_mat3_mul_bt(P, R1, R2);
     for (int i = 0; i < 3; i++)
         P[i][i] -= 1.0;
-    return mat3_frobenius(P);
+    return sus_mat3_frobenius(P);
 }
 
 /* (Groudist): |R^T R - I| (= |I - R R^T| for square R), how far a matrix is from the group. */
-double so3_orth_defect(const double R[3][3])
+double sus_so3_orth_defect(const double R[3][3])
 {
     double P[3][3];
-    mat3_mul_at(P, R, R);
+    sus_mat3_mul_at(P, R, R);
     for (int i = 0; i < 3; i++)
         P[i][i] -= 1.0;
-    return mat3_frobenius(P);
+    return sus_mat3_frobenius(P);
 }

@@ -1,20 +1,20 @@
 /* SO(3) tools of Sections 4.1-4.2 and 5.5 of the paper: the hat map (Isom), the Cayley
  * retraction (caypart) with its trivialized derivative and inverse, (cayinver) as printed,
  * the exponential map, the distance (MetMat) and the orthogonality defect. */
-#ifndef SUSLOV_SO3_H
-#define SUSLOV_SO3_H
+#ifndef SUS_SO3_H
+#define SUS_SO3_H
 
-void so3_hat(const double w[3], double W[3][3]);
-void so3_vee(const double W[3][3], double w[3]);
-void so3_cay(const double w[3], double R[3][3]);
-void so3_cay_minus_identity(const double w[3], double D[3][3]);
-void so3_cay_inv(const double R[3][3], double w[3]);
-void so3_dcay(const double w[3], double D[3][3]);
-void so3_dcay_inv(const double w[3], double D[3][3]);
-void so3_cayinver_printed(double eps, const double w[2], double D[3][3]);
-void so3_exp_minus_identity(const double w[3], double D[3][3]);
-void so3_exp(const double w[3], double R[3][3]);
-double so3_dist(const double R1[3][3], const double R2[3][3]);
-double so3_orth_defect(const double R[3][3]);
+void sus_so3_hat(const double w[3], double W[3][3]);
+void sus_so3_vee(const double W[3][3], double w[3]);
+void sus_so3_cay(const double w[3], double R[3][3]);
+void sus_so3_cay_minus_identity(const double w[3], double D[3][3]);
+void sus_so3_cay_inv(const double R[3][3], double w[3]);
+void sus_so3_dcay(const double w[3], double D[3][3]);
+void sus_so3_dcay_inv(const double w[3], double D[3][3]);
+void sus_so3_cayinver_printed(double eps, const double w[2], double D[3][3]);
+void sus_so3_exp_minus_identity(const double w[3], double D[3][3]);
+void sus_so3_exp(const double w[3], double R[3][3]);
+double sus_so3_dist(const double R1[3][3], const double R2[3][3]);
+double sus_so3_orth_defect(const double R[3][3]);
 
 #endif

@@ -1,29 +1,29 @@
 #include "stepper.h"
 
-int suslov_step_full(const suslov_stepper_type *st, const suslov_model *m, double eps, suslov_recon recon,
-                     suslov_attitude *att, const double w[3], double w_next[3], double *lambda_next,
-                     suslov_step_stats *stats)
+int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps, sus_recon recon,
+                     sus_attitude *att, const double w[3], double w_next[3], double *lambda_next,
+                     sus_stepper_stats *stats)
 {
     if (st->apply_full)
         return st->apply_full(m, eps, recon, att, w, w_next, lambda_next, stats);
     const int status = st->apply(m, eps, w, w_next, lambda_next, stats);
-    if (status == SUSLOV_STEP_OK)
-        suslov_reconstruct(recon, eps, att, w, w_next);
+    if (status == SUS_STEPPER_OK)
+        sus_reconstruct(recon, eps, att, w, w_next);
     return status;
 }
 
-void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2])
+void sus_predict(const sus_model *m, double eps, const double w[2], double x[2])
 {
     double f[2], mid[2];
-    suslov_contdyn(m, w, f);
+    sus_contdyn(m, w, f);
     mid[0] = w[0] + 0.5 * eps * f[0];
     mid[1] = w[1] + 0.5 * eps * f[1];
-    suslov_contdyn(m, mid, f);
+    sus_contdyn(m, mid, f);
     x[0] = w[0] + eps * f[0];
     x[1] = w[1] + eps * f[1];
 }
 
-void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x,
+void sus_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,
                         double w_next[2])
 {
     (void)m;

@@ -2,19 +2,19 @@
  * (w^{k+1})_3 = 0, in the spirit of GSL's gsl_odeiv2_step_type: a stepper is a constant
  * struct with a name, the orders the paper proves, and an apply function; the driver knows
  * only this struct. Steps keep all state on the stack: no allocation per step. */
-#ifndef SUSLOV_STEPPER_H
-#define SUSLOV_STEPPER_H
+#ifndef SUS_STEPPER_H
+#define SUS_STEPPER_H
 
 #include "model.h"
 #include "reconstruct.h"
 
-/* SUSLOV_STEP_DIVERGED: an explicit series step beyond the radius its series is proved to
+/* SUS_STEPPER_DIVERGED: an explicit series step beyond the radius its series is proved to
  * converge in (the step over that radius in stats.residual, |w^k|_2 in stats.scale). */
 enum {
-    SUSLOV_STEP_OK = 0,
-    SUSLOV_STEP_NO_CONVERGENCE = 1,
-    SUSLOV_STEP_SINGULAR = 2,
-    SUSLOV_STEP_DIVERGED = 3
+    SUS_STEPPER_OK = 0,
+    SUS_STEPPER_NO_CONVERGENCE = 1,
+    SUS_STEPPER_SINGULAR = 2,
+    SUS_STEPPER_DIVERGED = 3
 };
 
 typedef struct {
@@ -22,79 +22,70 @@ typedef struct {
     double residual;  /* final |G|_inf of the implicit equation */
     double scale;     /* sum of |terms| of G: the round-off yardstick for residual */
     double det;       /* determinant of the n x n Jacobian of G; for n = 2 the (REGLOC) block */
-} suslov_step_stats;
+} sus_stepper_stats;
 
 /* The largest number of unknowns of an implicit step equation: Newton keeps its n x n Jacobian
  * on the stack. */
-#define SUSLOV_MAX_UNKNOWNS 8
+#define SUS_MAX_UNKNOWNS 8
 
 /* An implicit DSP's step equation G(x) = 0 in its n unknowns x (type->unknowns), given w = w^k:
  * the residual g[n], its Jacobian J[n*n] in x (row-major; for x = w^{k+1} the upper-left block
  * of (REGLOC)), and scale = sum of |terms| of G, the yardstick for its round-off. */
-typedef void (*suslov_residual_fn)(const suslov_model *m, double eps, const double w[2],
+typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2],
                                    const double *x, double *g, double *J, double *scale);
 
 /* How a method advances the attitude R_k. NONE: it steps w only and the driver reconstructs R
  * as a rotation matrix with the requested reconstruction; QUAT: apply_full carries R as a unit
  * quaternion and writes back R(q/|q|). */
-typedef enum { SUSLOV_ATTITUDE_NONE = 0, SUSLOV_ATTITUDE_MATRIX, SUSLOV_ATTITUDE_QUAT } suslov_attitude_form;
+typedef enum { SUS_ATTITUDE_NONE = 0, SUS_ATTITUDE_MATRIX, SUS_ATTITUDE_QUAT } sus_attitude_form;
 
 typedef struct {
     const char *name;
     int order;         /* p: local w error O(eps^{p+1}) */
     int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
     /* w and w_next are 3-vectors of so(3) ~ R^3; w[2] must be 0 and the step sets
-     * w_next[2] = 0, the second equation of (DSP). Returns SUSLOV_STEP_*. */
-    int (*apply)(const suslov_model *m, double eps, const double w[3], double w_next[3],
-                 double *lambda_next, suslov_step_stats *st);
+     * w_next[2] = 0, the second equation of (DSP). Returns SUS_STEPPER_*. */
+    int (*apply)(const sus_model *m, double eps, const double w[3], double w_next[3],
+                 double *lambda_next, sus_stepper_stats *st);
     /* Optional: one step of the whole state (w, R_k) -> (w^{k+1}, R_{k+1}). When set, the driver
-     * calls it instead of apply followed by suslov_reconstruct, and the method advances the
+     * calls it instead of apply followed by sus_reconstruct, and the method advances the
      * attitude itself (see attitude, follows_recon). apply must still give the w-only step. */
-    int (*apply_full)(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att,
-                      const double w[3], double w_next[3], double *lambda_next, suslov_step_stats *st);
+    int (*apply_full)(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
+                      const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st);
     int implicit;      /* 1 when a step solves an equation (its own, or in its substeps) */
     /* The implicit step equation: unknowns = n (0 for an explicit step), residual its G, guess
      * the starting point of Newton, and result w^{k+1} from the root x. NULL for explicit steps. */
     int unknowns;
-    suslov_residual_fn residual;
-    void (*guess)(const suslov_model *m, double eps, const double w[2], double *x);
-    void (*result)(const suslov_model *m, double eps, const double w[2], const double *x, double w_next[2]);
+    sus_residual_fn residual;
+    void (*guess)(const sus_model *m, double eps, const double w[2], double *x);
+    void (*result)(const sus_model *m, double eps, const double w[2], const double *x, double w_next[2]);
     /* The linear stability function R(z) of the w-step for real z = eps * eigenvalue (the
      * transverse eigenvalue at the attracting rotation is real, -k); NULL when the step has none
      * (not a linear one-step map of f, or no single limit). */
     double (*stability)(double z);
     int conserves_energy;            /* E = 1/2 <I_m w, w> exact up to round-off */
-    suslov_attitude_form attitude;   /* what apply_full carries */
+    sus_attitude_form attitude;   /* what apply_full carries */
     int follows_recon;               /* 1 when the requested reconstruction is used */
     int substeps;                    /* base steps per step: the round-off accumulates per substep */
     /* Order fitting: 1 when the error constants grow with the order (a series truncated within
      * its radius), so that a slope over a few octaves of eps can fall a whole order short of p. */
     int pre_asymptotic;
     /* Optional: the same method at another order p (a ledger control); NULL if not parametrised. */
-    int (*apply_order)(int p, const suslov_model *m, double eps, suslov_attitude *att,
-                       const double w[3], double w_next[3], double *lambda_next, suslov_step_stats *st);
+    int (*apply_order)(int p, const sus_model *m, double eps, sus_attitude *att,
+                       const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st);
     const char *source;              /* the file that defines the step (__FILE__) */
-} suslov_stepper_type;
-
-/* The types by name (for the registry table, src/methods/registry.c) and as pointers, like GSL's
- * gsl_odeiv2_step_rk4. */
-extern const suslov_stepper_type suslov_euler_type, suslov_rk4_type, suslov_midpoint_type,
-    suslov_variational_type;
-extern const suslov_stepper_type *const suslov_step_euler;
-extern const suslov_stepper_type *const suslov_step_rk4;
-extern const suslov_stepper_type *const suslov_step_midpoint;
-extern const suslov_stepper_type *const suslov_step_variational;
+} sus_stepper_type;
 
 /* One step of (w, R): apply_full when the type has it, else apply and then (algo)'s
  * reconstruction of the given kind. */
-int suslov_step_full(const suslov_stepper_type *st, const suslov_model *m, double eps, suslov_recon recon,
-                     suslov_attitude *att, const double w[3], double w_next[3], double *lambda_next,
-                     suslov_step_stats *stats);
+int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps, sus_recon recon,
+                     sus_attitude *att, const double w[3], double w_next[3], double *lambda_next,
+                     sus_stepper_stats *stats);
 
 /* Explicit midpoint (second order) prediction, the starting point of the Newton solves. */
-void suslov_predict(const suslov_model *m, double eps, const double w[2], double x[2]);
+void sus_predict(const sus_model *m, double eps, const double w[2], double x[2]);
 /* The result hook of a step whose unknowns are x = w^{k+1} itself. */
-void suslov_result_is_x(const suslov_model *m, double eps, const double w[2], const double *x,
+void sus_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,
                         double w_next[2]);
 
 #endif

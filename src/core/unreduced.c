@@ -6,44 +6,44 @@
 #include <math.h>
 #include <stdio.h>
 
-int suslov_unreduced_init(suslov_unreduced *u, const suslov_model *m, char *err, size_t errlen)
+int sus_unreduced_init(sus_unreduced *u, const sus_model *m, char *err, size_t errlen)
 {
     u->m = m;
-    if (mat3_inverse(m->I, u->Iinv) != 0) {
+    if (sus_mat3_inverse(m->I, u->Iinv) != 0) {
         snprintf(err, errlen, "the inertia tensor is singular");
         return -1;
     }
     return 0;
 }
 
-void suslov_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3])
+void sus_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3])
 {
     double P[3][3];
-    mat3_mul_at(P, R, V);
-    so3_vee(P, xi);
+    sus_mat3_mul_at(P, R, V);
+    sus_so3_vee(P, xi);
 }
 
 /* (LdAeqs) left-trivialized: I xi' = (I xi) x xi + lambda(xi) e3, the velocity part of field(). */
-static void xi_field(const suslov_unreduced *u, const double xi[3], double d[3])
+static void xi_field(const sus_unreduced *u, const double xi[3], double d[3])
 {
     double Iw[3], rhs[3];
-    mat3_vec(Iw, u->m->I, xi);
-    vec3_cross(rhs, Iw, xi);
-    rhs[2] += suslov_lagmult(u->m, xi);
-    mat3_vec(d, u->Iinv, rhs);
+    sus_mat3_vec(Iw, u->m->I, xi);
+    sus_vec3_cross(rhs, Iw, xi);
+    rhs[2] += sus_lagmult(u->m, xi);
+    sus_mat3_vec(d, u->Iinv, rhs);
 }
 
 /* (LdAeqs): the vector field of the unreduced equations in the coordinates (R, V). */
-static void field(const suslov_unreduced *u, const double R[3][3], const double V[3][3],
+static void field(const sus_unreduced *u, const double R[3][3], const double V[3][3],
                   double dR[3][3], double dV[3][3])
 {
     double w[3], wdot[3], W[3][3], Wd[3][3], A[3][3], B[3][3];
-    suslov_unreduced_xi(R, V, w);
+    sus_unreduced_xi(R, V, w);
     xi_field(u, w, wdot);
-    so3_hat(w, W);
-    so3_hat(wdot, Wd);
-    mat3_mul(A, V, W);
-    mat3_mul(B, R, Wd);
+    sus_so3_hat(w, W);
+    sus_so3_hat(wdot, Wd);
+    sus_mat3_mul(A, V, W);
+    sus_mat3_mul(B, R, Wd);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             dR[i][j] = V[i][j];
@@ -52,14 +52,14 @@ static void field(const suslov_unreduced *u, const double R[3][3], const double 
 }
 
 /* The tables (Hairer, Norsett, Wanner, Solving ODEs I, Sect. II.1). */
-const suslov_butcher SUSLOV_BUTCHER_RK4 = {
+const sus_butcher SUS_BUTCHER_RK4 = {
     "rk4", 4, 4, {{0}, {0.5}, {0, 0.5}, {0, 0, 1}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, {0, 0.5, 0.5, 1}};
-const suslov_butcher SUSLOV_BUTCHER_KUTTA3 = {
+const sus_butcher SUS_BUTCHER_KUTTA3 = {
     "kutta3", 3, 3, {{0}, {0.5}, {-1, 2}}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {0, 0.5, 1}};
-const suslov_butcher SUSLOV_BUTCHER_HEUN2 = {"heun2", 2, 2, {{0}, {1}}, {0.5, 0.5}, {0, 1}};
+const sus_butcher SUS_BUTCHER_HEUN2 = {"heun2", 2, 2, {{0}, {1}}, {0.5, 0.5}, {0, 1}};
 
 /* (LdAeqs) stepped by an explicit Runge-Kutta table on (R, V). */
-void suslov_unreduced_rk(const suslov_unreduced *u, const suslov_butcher *tab, double eps, double R[3][3],
+void sus_unreduced_rk(const sus_unreduced *u, const sus_butcher *tab, double eps, double R[3][3],
                          double V[3][3])
 {
     double kR[4][3][3], kV[4][3][3], Rs[3][3], Vs[3][3];
@@ -88,17 +88,17 @@ void suslov_unreduced_rk(const suslov_unreduced *u, const suslov_butcher *tab, d
         }
 }
 
-void suslov_unreduced_rk4(const suslov_unreduced *u, double eps, double R[3][3], double V[3][3])
+void sus_unreduced_rk4(const sus_unreduced *u, double eps, double R[3][3], double V[3][3])
 {
-    suslov_unreduced_rk(u, &SUSLOV_BUTCHER_RK4, eps, R, V);
+    sus_unreduced_rk(u, &SUS_BUTCHER_RK4, eps, R, V);
 }
 
 /* (LdAeqs) with the table on xi and the first-order reconstruction R_{k+1} = R_k cay(eps xi_k^). */
-void suslov_unreduced_rk_cayley(const suslov_unreduced *u, const suslov_butcher *tab, double eps,
+void sus_unreduced_rk_cayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
                                 double R[3][3], double V[3][3])
 {
     double xi[3], k[4][3], C[3][3], Rn[3][3], X[3][3];
-    suslov_unreduced_xi(R, V, xi);
+    sus_unreduced_xi(R, V, xi);
     for (int s = 0; s < tab->stages; s++) {
         double y[3];
         for (int i = 0; i < 3; i++) {
@@ -110,35 +110,35 @@ void suslov_unreduced_rk_cayley(const suslov_unreduced *u, const suslov_butcher 
         xi_field(u, y, k[s]);
     }
     const double e[3] = {eps * xi[0], eps * xi[1], eps * xi[2]};
-    so3_cay(e, C);
-    mat3_mul(Rn, R, C);
+    sus_so3_cay(e, C);
+    sus_mat3_mul(Rn, R, C);
     for (int i = 0; i < 3; i++) {
         double d = 0.0;
         for (int s = 0; s < tab->stages; s++)
             d += tab->b[s] * k[s][i];
         xi[i] += eps * d;
     }
-    so3_hat(xi, X);
-    mat3_copy(R, Rn);
-    mat3_mul(V, Rn, X);
+    sus_so3_hat(xi, X);
+    sus_mat3_copy(R, Rn);
+    sus_mat3_mul(V, Rn, X);
 }
 
 /* (LdAeqs) stepped by the table on (R, V) in 3x3 coordinates (the velocity stages read R through
  * w = vee(R^T V)); the new velocity is its left-trivialization xi_{k+1} = vee(R~^T V~) of that
  * step, the attitude the first-order R_{k+1} = R_k cay(eps xi_k^), V_{k+1} = R_{k+1} xi_{k+1}^. */
-void suslov_unreduced_rk_recayley(const suslov_unreduced *u, const suslov_butcher *tab, double eps,
+void sus_unreduced_rk_recayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
                                   double R[3][3], double V[3][3])
 {
     double xi0[3], xi[3], Rt[3][3], Vt[3][3], C[3][3], Rn[3][3], X[3][3];
-    suslov_unreduced_xi(R, V, xi0);
-    mat3_copy(Rt, R);
-    mat3_copy(Vt, V);
-    suslov_unreduced_rk(u, tab, eps, Rt, Vt);
-    suslov_unreduced_xi(Rt, Vt, xi);
+    sus_unreduced_xi(R, V, xi0);
+    sus_mat3_copy(Rt, R);
+    sus_mat3_copy(Vt, V);
+    sus_unreduced_rk(u, tab, eps, Rt, Vt);
+    sus_unreduced_xi(Rt, Vt, xi);
     const double e[3] = {eps * xi0[0], eps * xi0[1], eps * xi0[2]};
-    so3_cay(e, C);
-    mat3_mul(Rn, R, C);
-    so3_hat(xi, X);
-    mat3_copy(R, Rn);
-    mat3_mul(V, Rn, X);
+    sus_so3_cay(e, C);
+    sus_mat3_mul(Rn, R, C);
+    sus_so3_hat(xi, X);
+    sus_mat3_copy(R, Rn);
+    sus_mat3_mul(V, Rn, X);
 }

@@ -19,62 +19,62 @@
 /* The larger of a and b, NaN when either is: one failed start fails the point. */
 static double fmax_nan(double a, double b) { return isnan(a) || isnan(b) ? NAN : fmax(a, b); }
 
-int suslov_convergence_run(suslov_convergence *c, const suslov_exact *ex, const double *tk, int ntk,
+int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const double *tk, int ntk,
                            double T)
 {
     memset(c, 0, sizeof *c);
-    c->nmethod = suslov_method_count();
+    c->nmethod = sus_step_method_count();
     c->m = calloc((size_t)c->nmethod, sizeof *c->m);
     if (!c->m) {
         fprintf(stderr, "convergence: out of memory\n");
         return -1;
     }
-    for (int j = 0; j < SUSLOV_CONV_NJ; j++) {
-        c->eps[j] = ldexp(1.0, SUSLOV_CONV_J0 - j);
+    for (int j = 0; j < SUS_EXP_CONV_NJ; j++) {
+        c->eps[j] = ldexp(1.0, SUS_EXP_CONV_J0 - j);
         c->glob_eps[j] = T / (double)llround(fmax(1.0, round(T / c->eps[j])));
     }
 
-    for (int j = 0; j < SUSLOV_CONV_NJ; j++)
+    for (int j = 0; j < SUS_EXP_CONV_NJ; j++)
         for (int t = 0; t < ntk; t++) {
-            suslov_local_ref ref;
+            sus_exp_local_ref ref;
             double M[3][3];
-            suslov_local_ref_init(&ref, ex, tk[t], c->eps[j]);
-            mat3_identity(M);
-            suslov_magnus4(ex, tk[t], tk[t] + c->eps[j], (long)ceil(c->eps[j] * MAGNUS_SUBSTEPS_PER_UNIT), M);
-            c->ref_local_err = fmax(c->ref_local_err, so3_dist(ref.Phi, M));
+            sus_exp_local_ref_init(&ref, ex, tk[t], c->eps[j]);
+            sus_mat3_identity(M);
+            sus_magnus4(ex, tk[t], tk[t] + c->eps[j], (long)ceil(c->eps[j] * MAGNUS_SUBSTEPS_PER_UNIT), M);
+            c->ref_local_err = fmax(c->ref_local_err, sus_so3_dist(ref.Phi, M));
             for (int m = 0; m < c->nmethod; m++) {
-                const suslov_stepper_type *st = suslov_method_get(m)->type;
-                suslov_conv_method *cm = &c->m[m];
-                suslov_local_err e;
-                if (suslov_local_errors(ex->model, st, &ref, &e) != SUSLOV_STEP_OK) {
+                const sus_stepper_type *st = sus_step_method_get(m)->type;
+                sus_exp_conv_method *cm = &c->m[m];
+                sus_exp_local_err e;
+                if (sus_exp_local_errors(ex->model, st, &ref, &e) != SUS_STEPPER_OK) {
                     e.w = e.lambda = NAN;
-                    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+                    for (int r = 0; r < SUS_RECON_COUNT; r++)
                         e.so3[r] = NAN;
                 }
                 cm->loc_w[j] = fmax_nan(cm->loc_w[j], e.w);
                 cm->loc_lambda[j] = fmax_nan(cm->loc_lambda[j], e.lambda);
-                for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+                for (int r = 0; r < SUS_RECON_COUNT; r++)
                     cm->loc_so3[r][j] = fmax_nan(cm->loc_so3[r][j], e.so3[r]);
             }
         }
 
     double I3[3][3], Rm[3][3];
-    suslov_refatt ra;
-    mat3_identity(I3);
-    mat3_identity(Rm);
-    suslov_refatt_init(&ra, ex, 0.0, I3);
-    suslov_refatt_advance(&ra, T, c->R_T);
-    suslov_magnus4(ex, 0.0, T, (long)ceil(T / MAGNUS_GLOBAL_STEP), Rm);
-    c->ref_global_err = so3_dist(c->R_T, Rm);
+    sus_refatt ra;
+    sus_mat3_identity(I3);
+    sus_mat3_identity(Rm);
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    sus_refatt_advance(&ra, T, c->R_T);
+    sus_magnus4(ex, 0.0, T, (long)ceil(T / MAGNUS_GLOBAL_STEP), Rm);
+    c->ref_global_err = sus_so3_dist(c->R_T, Rm);
 
     for (int m = 0; m < c->nmethod; m++)
-        for (int j = 0; j < SUSLOV_CONV_NJ; j++)
-            for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-                const suslov_stepper_type *st = suslov_method_get(m)->type;
-                suslov_conv_method *cm = &c->m[m];
-                suslov_global_err g;
+        for (int j = 0; j < SUS_EXP_CONV_NJ; j++)
+            for (int r = 0; r < SUS_RECON_COUNT; r++) {
+                const sus_stepper_type *st = sus_step_method_get(m)->type;
+                sus_exp_conv_method *cm = &c->m[m];
+                sus_exp_global_err g;
                 const long N = llround(T / c->glob_eps[j]);
-                if (suslov_global_errors(ex, st, (suslov_recon)r, T, N, c->R_T, &g) != 0)
+                if (sus_exp_global_errors(ex, st, (sus_recon)r, T, N, c->R_T, &g) != 0)
                     g.w = g.lambda = g.so3 = NAN;
                 cm->glob_w[j] = g.w;
                 cm->glob_lambda[j] = g.lambda;
@@ -83,7 +83,7 @@ int suslov_convergence_run(suslov_convergence *c, const suslov_exact *ex, const 
     return 0;
 }
 
-void suslov_convergence_free(suslov_convergence *c)
+void sus_exp_convergence_free(sus_exp_convergence *c)
 {
     free(c->m);
     c->m = NULL;

@@ -1,9 +1,10 @@
 #include "lambda_shift.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <string.h>
 
-#define N SUSLOV_SERIES_N
+#define N SUS_EXP_SERIES_N
 
 typedef double ser[N];
 
@@ -18,7 +19,7 @@ static void ser_mul(const double *a, const double *b, double *out)
 }
 
 /* f(y) = c(y) fA y on a series y; f's series in out. */
-static void field_series(const suslov_model *m, const suslov_wseries *y, suslov_wseries *out)
+static void field_series(const sus_model *m, const sus_exp_wseries *y, sus_exp_wseries *out)
 {
     ser c, v0, v1;
     for (int n = 0; n < N; n++) {
@@ -30,7 +31,7 @@ static void field_series(const suslov_model *m, const suslov_wseries *y, suslov_
     ser_mul(c, v1, out->c[1]);
 }
 
-static void constant(suslov_wseries *s, const double w[2])
+static void constant(sus_exp_wseries *s, const double w[2])
 {
     memset(s, 0, sizeof *s);
     s->c[0][0] = w[0];
@@ -38,9 +39,9 @@ static void constant(suslov_wseries *s, const double w[2])
 }
 
 /* out = w + a eps * s (a series times eps: shifted by one) */
-static void w_plus_eps(const double w[2], double a, const suslov_wseries *s, suslov_wseries *out)
+static void w_plus_eps(const double w[2], double a, const sus_exp_wseries *s, sus_exp_wseries *out)
 {
-    suslov_wseries r;
+    sus_exp_wseries r;
     constant(&r, w);
     for (int i = 0; i < 2; i++)
         for (int n = 1; n < N; n++)
@@ -49,9 +50,9 @@ static void w_plus_eps(const double w[2], double a, const suslov_wseries *s, sus
 }
 
 /* (ContDyn): the Taylor series in eps of the exact flow from w (lambda_shift.h). */
-void suslov_series_flow(const suslov_model *m, const double w[2], suslov_wseries *s)
+void sus_exp_series_flow(const sus_model *m, const double w[2], sus_exp_wseries *s)
 {
-    suslov_wseries f;
+    sus_exp_wseries f;
     constant(s, w);
     /* y_{n+1} = [t^n] f(y) / (n + 1); [t^n] f(y) needs y_0 .. y_n only */
     for (int n = 0; n + 1 < N; n++) {
@@ -62,7 +63,7 @@ void suslov_series_flow(const suslov_model *m, const double w[2], suslov_wseries
 }
 
 /* y <y, I_m y> on series (the eps^2/4 terms of (taudyn)) */
-static void quartic_series(const suslov_model *m, const suslov_wseries *y, suslov_wseries *q)
+static void quartic_series(const sus_model *m, const sus_exp_wseries *y, sus_exp_wseries *q)
 {
     const double (*I)[3] = m->I;
     ser p0, p1, a, b, s;
@@ -79,18 +80,18 @@ static void quartic_series(const suslov_model *m, const suslov_wseries *y, suslo
 }
 
 /* (Discretization) with l = I_m f(w^k): explicit Euler. */
-static void euler_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+static void euler_series(const sus_model *m, const double w[2], sus_exp_wseries *s)
 {
-    suslov_wseries f, y;
+    sus_exp_wseries f, y;
     constant(&y, w);
     field_series(m, &y, &f);
     w_plus_eps(w, 1.0, &f, s);
 }
 
 /* (Discretization) with the classical Runge-Kutta increment, stage by stage. */
-static void rk4_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+static void rk4_series(const sus_model *m, const double w[2], sus_exp_wseries *s)
 {
-    suslov_wseries f, k1, k2, k3, k4, y;
+    sus_exp_wseries f, k1, k2, k3, k4, y;
     constant(&y, w);
     field_series(m, &y, &k1);
     w_plus_eps(w, 0.5, &k1, &y);
@@ -107,12 +108,12 @@ static void rk4_series(const suslov_model *m, const double w[2], suslov_wseries 
 
 /* (Discretization) with the midpoint l1, l2: x = w + eps f((w + x)/2) solved for x by Picard
  * iteration on the series. */
-static void midpoint_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+static void midpoint_series(const sus_model *m, const double w[2], sus_exp_wseries *s)
 {
-    suslov_wseries f;
+    sus_exp_wseries f;
     constant(s, w);
     for (int it = 0; it < N; it++) {
-        suslov_wseries mid;
+        sus_exp_wseries mid;
         for (int i = 0; i < 2; i++)
             for (int n = 0; n < N; n++)
                 mid.c[i][n] = 0.5 * (s->c[i][n] + (n == 0 ? w[i] : 0.0));
@@ -121,19 +122,19 @@ static void midpoint_series(const suslov_model *m, const double w[2], suslov_wse
     }
 }
 
-static void variational_series(const suslov_model *m, const double w[2], suslov_wseries *s)
+static void variational_series(const sus_model *m, const double w[2], sus_exp_wseries *s)
 {
     /* (taudyn): I_m (x - w) + eps/2 T(x, w) + eps^2/4 (q(x) - q(w)) = 0 with
      * T = (x2 c(x) + w2 c(w), -x1 c(x) - w1 c(w)), solved as x = w - I_m^{-1}(...) */
     const double (*I)[3] = m->I;
-    const double cw = suslov_c(m, w);
+    const double cw = sus_c(m, w);
     double qw[2];
     const double sw = w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
     qw[0] = w[0] * sw;
     qw[1] = w[1] * sw;
     constant(s, w);
     for (int it = 0; it < N; it++) {
-        suslov_wseries q, r;
+        sus_exp_wseries q, r;
         ser c, t0, t1;
         for (int n = 0; n < N; n++)
             c[n] = m->b[0] * s->c[0][n] + m->b[1] * s->c[1][n];
@@ -162,17 +163,17 @@ static void variational_series(const suslov_model *m, const double w[2], suslov_
 
 /* The steps whose series is derived here, by type. */
 static const struct {
-    const suslov_stepper_type *type;
-    void (*series)(const suslov_model *m, const double w[2], suslov_wseries *s);
-} SERIES[] = {{&suslov_euler_type, euler_series},
-              {&suslov_rk4_type, rk4_series},
-              {&suslov_midpoint_type, midpoint_series},
-              {&suslov_variational_type, variational_series}};
+    const sus_stepper_type *type;
+    void (*series)(const sus_model *m, const double w[2], sus_exp_wseries *s);
+} SERIES[] = {{&sus_step_euler_type, euler_series},
+              {&sus_step_rk4_type, rk4_series},
+              {&sus_step_midpoint_type, midpoint_series},
+              {&sus_step_variational_type, variational_series}};
 
 /* (Discretization), and (taudyn) for the variational step: the series in eps of one step of the
  * method from w (lambda_shift.h). */
-int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2],
-                       suslov_wseries *s)
+int sus_exp_series_step(const sus_model *m, const sus_stepper_type *st, const double w[2],
+                       sus_exp_wseries *s)
 {
     for (size_t i = 0; i < sizeof SERIES / sizeof SERIES[0]; i++)
         if (SERIES[i].type == st) {
@@ -182,7 +183,7 @@ int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, con
     return -1;
 }
 
-void suslov_series_eval(const suslov_wseries *s, double eps, double out[2])
+void sus_exp_series_eval(const sus_exp_wseries *s, double eps, double out[2])
 {
     for (int i = 0; i < 2; i++) {
         double acc = 0.0;
@@ -193,30 +194,30 @@ void suslov_series_eval(const suslov_wseries *s, double eps, double out[2])
 }
 
 /* (LagMult): the gradient of lambda(w) in w. */
-void suslov_lagmult_grad(const suslov_model *m, const double w[2], double g[2])
+void sus_exp_lagmult_grad(const sus_model *m, const double w[2], double g[2])
 {
     const double h = 1e-3;
     for (int i = 0; i < 2; i++) {
         double a[2] = {w[0], w[1]}, b[2] = {w[0], w[1]};
         a[i] += h;
         b[i] -= h;
-        g[i] = (suslov_lagmult(m, a) - suslov_lagmult(m, b)) / (2.0 * h);
+        g[i] = (sus_lagmult(m, a) - sus_lagmult(m, b)) / (2.0 * h);
     }
 }
 
 /* (RemarkLambda): l_lambda = -grad lambda(w^{k+1}) . sum_{j=p+1}^{p+nterms} e_j(w^k) eps^j. */
-int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps,
+int sus_exp_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms, double eps,
                         const double w[2], const double x[2], double *l_lambda)
 {
-    suslov_wseries a, y;
+    sus_exp_wseries a, y;
     double g[2], d[2] = {0.0, 0.0};
-    if (suslov_series_step(m, st, w, &a) != 0)
+    if (sus_exp_series_step(m, st, w, &a) != 0)
         return -1;
-    suslov_series_flow(m, w, &y);
+    sus_exp_series_flow(m, w, &y);
     for (int j = p + 1; j <= p + nterms && j < N; j++)
         for (int i = 0; i < 2; i++)
             d[i] += (a.c[i][j] - y.c[i][j]) * pow(eps, j);
-    suslov_lagmult_grad(m, x, g);
+    sus_exp_lagmult_grad(m, x, g);
     *l_lambda = -(g[0] * d[0] + g[1] * d[1]);
     return 0;
 }

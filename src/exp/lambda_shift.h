@@ -9,31 +9,31 @@
  * e_j = 0 for j <= p; l_lambda = -grad lambda(w^{k+1}) . sum_{j=p+1}^{p+n} e_j(w^k) eps^j removes n
  * terms of lambda(w^{k+1}) - lambda(F(eps, w^k)), whose error then starts at eps^{p+n+1} (or at
  * the Hessian term eps^{2p+2}, whichever comes first). */
-#ifndef SUSLOV_LAMBDA_SHIFT_H
-#define SUSLOV_LAMBDA_SHIFT_H
+#ifndef SUS_EXP_LAMBDA_SHIFT_H
+#define SUS_EXP_LAMBDA_SHIFT_H
 
 #include "model.h"
 #include "stepper.h"
 
-#define SUSLOV_SERIES_N 12  /* coefficients of eps^0 .. eps^11 */
+#define SUS_EXP_SERIES_N 12  /* coefficients of eps^0 .. eps^11 */
 
 typedef struct {
-    double c[2][SUSLOV_SERIES_N];
-} suslov_wseries;
+    double c[2][SUS_EXP_SERIES_N];
+} sus_exp_wseries;
 
 /* Taylor coefficients in eps of F(eps, w). */
-void suslov_series_flow(const suslov_model *m, const double w[2], suslov_wseries *s);
+void sus_exp_series_flow(const sus_model *m, const double w[2], sus_exp_wseries *s);
 /* Taylor coefficients in eps of one step of st (euler, midpoint, rk4, variational: the steps whose
  * series is derived). Returns 0, or -1 for another step. */
-int suslov_series_step(const suslov_model *m, const suslov_stepper_type *st, const double w[2],
-                       suslov_wseries *s);
+int sus_exp_series_step(const sus_model *m, const sus_stepper_type *st, const double w[2],
+                       sus_exp_wseries *s);
 /* sum_j s_j eps^j */
-void suslov_series_eval(const suslov_wseries *s, double eps, double out[2]);
+void sus_exp_series_eval(const sus_exp_wseries *s, double eps, double out[2]);
 /* grad lambda(w) of (LagMult) (a quadratic form: central differences are exact up to round-off). */
-void suslov_lagmult_grad(const suslov_model *m, const double w[2], double g[2]);
+void sus_exp_lagmult_grad(const sus_model *m, const double w[2], double g[2]);
 /* l_lambda of RemarkLambda from the local error coefficients e_{p+1} .. e_{p+nterms} at w = w^k,
  * the gradient at x = w^{k+1}. Returns 0, or -1 for a method without a series. */
-int suslov_lambda_shift(const suslov_model *m, const suslov_stepper_type *st, int p, int nterms, double eps,
+int sus_exp_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms, double eps,
                         const double w[2], const double x[2], double *l_lambda);
 
 #endif

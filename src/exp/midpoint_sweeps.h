@@ -3,15 +3,15 @@
  *     x <- w^k + eps I_m^{-1} (l1, l2)(w^k, x),   x_0 = w^k.
  * One sweep is explicit Euler, two are the explicit midpoint rule (RK2), and as n grows the
  * sweeps converge (for small eps) to the Newton solution, which conserves E exactly. */
-#ifndef SUSLOV_MIDPOINT_SWEEPS_H
-#define SUSLOV_MIDPOINT_SWEEPS_H
+#ifndef SUS_EXP_MIDPOINT_SWEEPS_H
+#define SUS_EXP_MIDPOINT_SWEEPS_H
 
 #include "model.h"
 
-void suslov_midpoint_sweeps(const suslov_model *m, double eps, int n, const double w[2], double x[2]);
+void sus_exp_midpoint_sweeps(const sus_model *m, double eps, int n, const double w[2], double x[2]);
 
 /* N steps from w0; energy[k] = E(w_k) for k = 0..N (caller's array, N+1 long), and w_N. */
-void suslov_midpoint_sweeps_run(const suslov_model *m, double eps, int n, const double w0[2], long N,
+void sus_exp_midpoint_sweeps_run(const sus_model *m, double eps, int n, const double w0[2], long N,
                                 double *energy, double wN[2]);
 
 #endif

@@ -5,8 +5,8 @@
 
 #define ORDERFIT_MAXPTS 64
 
-int suslov_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
-                     suslov_order_fit *fit)
+int sus_exp_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
+                     sus_exp_order_fit *fit)
 {
     double x[ORDERFIT_MAXPTS], y[ORDERFIT_MAXPTS], c00, c01, c11, sumsq;
     int m = 0;

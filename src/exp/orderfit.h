@@ -1,7 +1,7 @@
 /* Order of convergence as the least-squares slope of log(error) against log(eps)
  * (gsl_fit_linear), over the points that are neither pre-asymptotic nor at round-off. */
-#ifndef SUSLOV_ORDERFIT_H
-#define SUSLOV_ORDERFIT_H
+#ifndef SUS_EXP_ORDERFIT_H
+#define SUS_EXP_ORDERFIT_H
 
 #include "model.h"
 
@@ -11,21 +11,21 @@
  * thousand times the round-off of the quantity itself (u times its size: |w| <= 0.8,
  * |lambda| <= 0.04, entries of R <= 1) are left out, so that round-off moves no fitted point by
  * more than 0.1%. */
-#define SUSLOV_FIT_EPS_MAX 0.25
-#define SUSLOV_FIT_FLOOR_REL (1000.0 * SUSLOV_U)
-#define SUSLOV_SIZE_W 0.8
-#define SUSLOV_SIZE_LAMBDA 0.04
-#define SUSLOV_SIZE_R 1.0
+#define SUS_EXP_FIT_EPS_MAX 0.25
+#define SUS_EXP_FIT_FLOOR_REL (1000.0 * SUS_U)
+#define SUS_EXP_SIZE_W 0.8
+#define SUS_EXP_SIZE_LAMBDA 0.04
+#define SUS_EXP_SIZE_R 1.0
 
 typedef struct {
     double slope, intercept;
     int used;               /* points in the fit */
     double eps_lo, eps_hi;  /* the eps range actually fitted */
-} suslov_order_fit;
+} sus_exp_order_fit;
 
 /* Fits the points with eps <= eps_max and floor < err. Returns 0, or -1 when fewer than
  * three points qualify or a point inside the window is not finite (no honest slope then). */
-int suslov_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
-                     suslov_order_fit *fit);
+int sus_exp_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
+                     sus_exp_order_fit *fit);
 
 #endif

@@ -7,37 +7,37 @@
 #include <gsl/gsl_errno.h>
 #include <string.h>
 
-int suslov_peer_rhs_wR(double t, const double y[], double f[], void *params)
+int sus_exp_peer_rhs_wR(double t, const double y[], double f[], void *params)
 {
     (void)t;
     double W[3][3];
     const double w[3] = {y[0], y[1], 0.0};
-    suslov_contdyn(params, y, f);
-    so3_hat(w, W);
-    mat3_mul(*(double(*)[3][3])(f + 2), *(const double(*)[3][3])(y + 2), W);
+    sus_contdyn(params, y, f);
+    sus_so3_hat(w, W);
+    sus_mat3_mul(*(double(*)[3][3])(f + 2), *(const double(*)[3][3])(y + 2), W);
     return GSL_SUCCESS;
 }
 
-int suslov_peer_rhs_wq(double t, const double y[], double f[], void *params)
+int sus_exp_peer_rhs_wq(double t, const double y[], double f[], void *params)
 {
     (void)t;
     const double w[3] = {y[0], y[1], 0.0};
     double dq[4];
-    suslov_contdyn(params, y, f);
-    quat_mul_pure(dq, y + 2, w);
+    sus_contdyn(params, y, f);
+    sus_quat_mul_pure(dq, y + 2, w);
     for (int i = 0; i < 4; i++)
         f[2 + i] = 0.5 * dq[i];
     return GSL_SUCCESS;
 }
 
-int suslov_peer_rhs_w(double t, const double y[], double f[], void *params)
+int sus_exp_peer_rhs_w(double t, const double y[], double f[], void *params)
 {
     (void)t;
-    suslov_contdyn(params, y, f);
+    sus_contdyn(params, y, f);
     return GSL_SUCCESS;
 }
 
-void suslov_peer_initial(size_t dim, const double w0[2], double *y)
+void sus_exp_peer_initial(size_t dim, const double w0[2], double *y)
 {
     memset(y, 0, dim * sizeof *y);
     y[0] = w0[0];
@@ -48,26 +48,26 @@ void suslov_peer_initial(size_t dim, const double w0[2], double *y)
         y[2] = 1.0;
 }
 
-void suslov_peer_attitude(size_t dim, const double *y, double R[3][3])
+void sus_exp_peer_attitude(size_t dim, const double *y, double R[3][3])
 {
     if (dim == 11)
         memcpy(R, y + 2, 9 * sizeof(double));
     else
-        quat_rotation(y + 2, R);
+        sus_quat_rotation(y + 2, R);
 }
 
-int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_step_type *type, size_t dim,
-                     suslov_peer_api api, double tol, double hstart)
+int sus_exp_peer_open(sus_exp_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type, size_t dim,
+                     sus_exp_peer_api api, double tol, double hstart)
 {
-    *p = (suslov_peer){.type = type, .api = api, .dim = dim, .tol = tol, .hstart = hstart};
-    int (*rhs)(double, const double[], double[], void *) = dim == 11 ? suslov_peer_rhs_wR
-                                                         : dim == 6  ? suslov_peer_rhs_wq
-                                                                     : suslov_peer_rhs_w;
+    *p = (sus_exp_peer){.type = type, .api = api, .dim = dim, .tol = tol, .hstart = hstart};
+    int (*rhs)(double, const double[], double[], void *) = dim == 11 ? sus_exp_peer_rhs_wR
+                                                         : dim == 6  ? sus_exp_peer_rhs_wq
+                                                                     : sus_exp_peer_rhs_w;
     p->sys = (gsl_odeiv2_system){rhs, NULL, dim, (void *)m};
-    if (api == SUSLOV_PEER_DRIVER) {
+    if (api == SUS_EXP_PEER_DRIVER) {
         p->d = gsl_odeiv2_driver_alloc_y_new(&p->sys, type, hstart, tol, tol);
         if (p->d)
-            gsl_odeiv2_driver_set_nmax(p->d, SUSLOV_PEER_MAX_STEPS);
+            gsl_odeiv2_driver_set_nmax(p->d, SUS_EXP_PEER_MAX_STEPS);
         return p->d ? 0 : -1;
     }
     p->s = gsl_odeiv2_step_alloc(type, dim);
@@ -75,28 +75,28 @@ int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_ste
     p->e = gsl_odeiv2_evolve_alloc(dim);
     if (p->s && p->c && p->e)
         return 0;
-    suslov_peer_close(p);
+    sus_exp_peer_close(p);
     return -1;
 }
 
-static int evolve_run(suslov_peer *p, double T, double *y, long *steps)
+static int evolve_run(sus_exp_peer *p, double T, double *y, long *steps)
 {
     double t = 0.0, h = p->hstart;
     gsl_odeiv2_evolve_reset(p->e);
     gsl_odeiv2_step_reset(p->s);
     int status = GSL_SUCCESS;
     while (t < T && status == GSL_SUCCESS)
-        status = p->e->count < SUSLOV_PEER_MAX_STEPS
+        status = p->e->count < SUS_EXP_PEER_MAX_STEPS
                    ? gsl_odeiv2_evolve_apply(p->e, p->c, p->s, &p->sys, &t, T, &h, y)
                    : GSL_EMAXITER;
     *steps = (long)p->e->count;
     return status;
 }
 
-int suslov_peer_run(suslov_peer *p, const double w0[2], double T, double *y, long *steps)
+int sus_exp_peer_run(sus_exp_peer *p, const double w0[2], double T, double *y, long *steps)
 {
-    suslov_peer_initial(p->dim, w0, y);
-    if (p->api == SUSLOV_PEER_EVOLVE)
+    sus_exp_peer_initial(p->dim, w0, y);
+    if (p->api == SUS_EXP_PEER_EVOLVE)
         return evolve_run(p, T, y, steps);
     double t = 0.0;
     gsl_odeiv2_driver_reset_hstart(p->d, p->hstart); /* resets the evolve and step objects too */
@@ -105,7 +105,7 @@ int suslov_peer_run(suslov_peer *p, const double w0[2], double T, double *y, lon
     return status;
 }
 
-void suslov_peer_close(suslov_peer *p)
+void sus_exp_peer_close(sus_exp_peer *p)
 {
     if (p->d)
         gsl_odeiv2_driver_free(p->d);
@@ -115,5 +115,5 @@ void suslov_peer_close(suslov_peer *p)
         gsl_odeiv2_control_free(p->c);
     if (p->s)
         gsl_odeiv2_step_free(p->s);
-    *p = (suslov_peer){0};
+    *p = (sus_exp_peer){0};
 }

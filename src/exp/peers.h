@@ -1,33 +1,33 @@
 /* The library integrators' view of the problem (make bench, figures/longrun): (ContDyn) with the
  * attitude either as R, R' = R w^ (y = (w1, w2, R row-major), 11 unknowns), or as a quaternion,
  * q' = 1/2 q (x) (0, w) (y = (w1, w2, q), 6 unknowns), as GSL odeiv2 right-hand sides. */
-#ifndef SUSLOV_PEERS_H
-#define SUSLOV_PEERS_H
+#ifndef SUS_EXP_PEERS_H
+#define SUS_EXP_PEERS_H
 
 #include "model.h"
 
 #include <gsl/gsl_odeiv2.h>
 #include <stddef.h>
 
-/* GSL odeiv2 right-hand sides; params is the suslov_model. */
-int suslov_peer_rhs_wR(double t, const double y[], double f[], void *params);
-int suslov_peer_rhs_wq(double t, const double y[], double f[], void *params);
-int suslov_peer_rhs_w(double t, const double y[], double f[], void *params);
+/* GSL odeiv2 right-hand sides; params is the sus_model. */
+int sus_exp_peer_rhs_wR(double t, const double y[], double f[], void *params);
+int sus_exp_peer_rhs_wq(double t, const double y[], double f[], void *params);
+int sus_exp_peer_rhs_w(double t, const double y[], double f[], void *params);
 /* y(0) for dim 11, 6 or 2: w0, then R = I or q = (1, 0, 0, 0). */
-void suslov_peer_initial(size_t dim, const double w0[2], double *y);
+void sus_exp_peer_initial(size_t dim, const double w0[2], double *y);
 /* R of the state: the 3x3 block, or R(q/|q|). */
-void suslov_peer_attitude(size_t dim, const double *y, double R[3][3]);
+void sus_exp_peer_attitude(size_t dim, const double *y, double R[3][3]);
 
 /* One configuration of an adaptive GSL peer: stepper, formulation (dim 11, 6 or 2), API (the
- * driver or the evolve loop), abs = rel tolerance and initial step. Every suslov_peer_run starts
+ * driver or the evolve loop), abs = rel tolerance and initial step. Every sus_exp_peer_run starts
  * from the same state, the step size included (gsl_odeiv2_driver_reset keeps the step the
- * previous run ended with; suslov_peer_run resets it to hstart), so a repeated (timed) run
+ * previous run ended with; sus_exp_peer_run resets it to hstart), so a repeated (timed) run
  * gives bit for bit the result of the first. */
-typedef enum { SUSLOV_PEER_DRIVER = 0, SUSLOV_PEER_EVOLVE = 1 } suslov_peer_api;
+typedef enum { SUS_EXP_PEER_DRIVER = 0, SUS_EXP_PEER_EVOLVE = 1 } sus_exp_peer_api;
 
 typedef struct {
     const gsl_odeiv2_step_type *type;
-    suslov_peer_api api;
+    sus_exp_peer_api api;
     size_t dim;
     double tol, hstart;
     gsl_odeiv2_system sys;
@@ -35,18 +35,18 @@ typedef struct {
     gsl_odeiv2_step *s;                       /* the evolve API */
     gsl_odeiv2_control *c;
     gsl_odeiv2_evolve *e;
-} suslov_peer;
+} sus_exp_peer;
 
 /* A run that needs more steps than this has lost its way (its tolerance below what round-off
  * allows, where the step shrinks without end): it fails instead of running for hours. */
-#define SUSLOV_PEER_MAX_STEPS 200000UL
+#define SUS_EXP_PEER_MAX_STEPS 200000UL
 
 /* Returns 0, or -1 when GSL cannot allocate. */
-int suslov_peer_open(suslov_peer *p, const suslov_model *m, const gsl_odeiv2_step_type *type, size_t dim,
-                     suslov_peer_api api, double tol, double hstart);
-/* From y(0) (suslov_peer_initial) to t = T with the step reset to hstart; steps taken (accepted
+int sus_exp_peer_open(sus_exp_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type, size_t dim,
+                     sus_exp_peer_api api, double tol, double hstart);
+/* From y(0) (sus_exp_peer_initial) to t = T with the step reset to hstart; steps taken (accepted
  * and rejected) in *steps. Returns the GSL status. */
-int suslov_peer_run(suslov_peer *p, const double w0[2], double T, double *y, long *steps);
-void suslov_peer_close(suslov_peer *p);
+int sus_exp_peer_run(sus_exp_peer *p, const double w0[2], double T, double *y, long *steps);
+void sus_exp_peer_close(sus_exp_peer *p);
 
 #endif

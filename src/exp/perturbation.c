@@ -9,20 +9,20 @@
 #include <math.h>
 #include <string.h>
 
-int suslov_perturb_init(suslov_perturb *P, const suslov_model *m, const suslov_stepper_type *st, double eps)
+int sus_exp_perturb_init(sus_exp_perturb *P, const sus_model *m, const sus_stepper_type *st, double eps)
 {
     memset(P, 0, sizeof *P);
     P->m = m;
     P->st = st;
     P->eps = eps;
-    return mat3_inverse(m->I, P->Iinv);
+    return sus_mat3_inverse(m->I, P->Iinv);
 }
 
 /* The standard C^infinity step: psi(u) = exp(-1/u) for u > 0, chi = psi(v) / (psi(v) + psi(1-v))
  * with v rescaled from [a, 1-a]; every derivative vanishes where chi is 0 or 1. */
-double suslov_perturb_chi(double s, double *dchi)
+double sus_exp_perturb_chi(double s, double *dchi)
 {
-    const double a = SUSLOV_PERTURB_FLAT, v = (s - a) / (1.0 - 2.0 * a);
+    const double a = SUS_EXP_PERTURB_FLAT, v = (s - a) / (1.0 - 2.0 * a);
     *dchi = 0.0;
     if (v <= 0.0)
         return 0.0;
@@ -35,66 +35,66 @@ double suslov_perturb_chi(double s, double *dchi)
 }
 
 /* F(t, x): the exact flow of (ContDyn), any sign of t. */
-static void flow(const suslov_model *m, double t, const double x[2], double y[2])
+static void flow(const sus_model *m, double t, const double x[2], double y[2])
 {
-    suslov_exact ex;
-    suslov_exact_init(&ex, m, x);
-    suslov_exact_omega(&ex, t, y);
+    sus_exact ex;
+    sus_exact_init(&ex, m, x);
+    sus_exact_omega(&ex, t, y);
 }
 
 /* (TheoPer): the blend of the forward flow from x0 and the backward flow from x1 = phi(eps, x0). */
-void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2],
+void sus_exp_perturb_curve(const sus_exp_perturb *P, double t, const double x0[2], const double x1[2],
                           double X[2], double Xdot[2])
 {
     double dchi, A[2], B[2], fA[2], fB[2];
-    const double chi = suslov_perturb_chi(t / P->eps, &dchi);
+    const double chi = sus_exp_perturb_chi(t / P->eps, &dchi);
     flow(P->m, t, x0, A);
     flow(P->m, t - P->eps, x1, B);
-    suslov_contdyn(P->m, A, fA);
-    suslov_contdyn(P->m, B, fB);
+    sus_contdyn(P->m, A, fA);
+    sus_contdyn(P->m, B, fB);
     for (int i = 0; i < 2; i++) {
         X[i] = (1.0 - chi) * A[i] + chi * B[i];
         Xdot[i] = (1.0 - chi) * fA[i] + chi * fB[i] + dchi / P->eps * (B[i] - A[i]);
     }
 }
 
-static int phi(const suslov_perturb *P, const double x0[2], double x1[2])
+static int phi(const sus_exp_perturb *P, const double x0[2], double x1[2])
 {
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
-    suslov_step_stats st;
-    if (P->st->apply(P->m, P->eps, w, wn, &lam, &st) != SUSLOV_STEP_OK)
-        return SUSLOV_PERTURB_STEP_FAILED;
+    sus_stepper_stats st;
+    if (P->st->apply(P->m, P->eps, w, wn, &lam, &st) != SUS_STEPPER_OK)
+        return SUS_EXP_PERTURB_STEP_FAILED;
     x1[0] = wn[0];
     x1[1] = wn[1];
-    return SUSLOV_PERTURB_OK;
+    return SUS_EXP_PERTURB_OK;
 }
 
 /* r = X(t; x0) - x and Xdot. */
-static int blend_residual(const suslov_perturb *P, double t, const double x0[2], const double x[2],
+static int blend_residual(const sus_exp_perturb *P, double t, const double x0[2], const double x[2],
                           double r[2], double Xdot[2])
 {
     double x1[2], X[2];
     const int s = phi(P, x0, x1);
-    if (s != SUSLOV_PERTURB_OK)
+    if (s != SUS_EXP_PERTURB_OK)
         return s;
-    suslov_perturb_curve(P, t, x0, x1, X, Xdot);
+    sus_exp_perturb_curve(P, t, x0, x1, X, Xdot);
     r[0] = X[0] - x[0];
     r[1] = X[1] - x[1];
-    return SUSLOV_PERTURB_OK;
+    return SUS_EXP_PERTURB_OK;
 }
 
 /* The residual is evaluated to a few ulps of |x| (closed-form flow, one DSP step); 64 u |x|
  * is the round-off yardstick Newton must reach. */
 #define NEWTON_TOL_U 64.0
-#define NEWTON_MAXIT 12
+#define SUS_STEP_NEWTON_MAXIT 12
 
 /* (PerTh), through (Per1): eps^p d(eps, t/eps, x) = X'(t; x0) - h(x) with x0 from x = X(t; x0) by Newton; the
  * Jacobian dX/dx0 (close to dF(t)/dx0) by central differences. */
-int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double g[2], double x0_out[2])
+int sus_exp_perturb_field(sus_exp_perturb *P, double t, const double x[2], double g[2], double x0_out[2])
 {
     const double eps = P->eps, tau = t - eps * floor(t / eps);
     double dchi, x0[2], r[2], Xdot[2], f[2];
-    const double chi = suslov_perturb_chi(tau / eps, &dchi);
+    const double chi = sus_exp_perturb_chi(tau / eps, &dchi);
     P->field_evals++;
     if (dchi == 0.0 && (chi == 0.0 || chi == 1.0)) {
         /* a flat end: X is an exact trajectory, the perturbation is 0 */
@@ -105,14 +105,14 @@ int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double 
             else
                 x0_out[0] = x0_out[1] = NAN;
         }
-        return SUSLOV_PERTURB_OK;
+        return SUS_EXP_PERTURB_OK;
     }
     flow(P->m, -tau, x, x0);  /* exact when the perturbation is 0 */
-    const double scale = fabs(x[0]) + fabs(x[1]), tol = NEWTON_TOL_U * SUSLOV_U * scale;
+    const double scale = fabs(x[0]) + fabs(x[1]), tol = NEWTON_TOL_U * SUS_U * scale;
     int it, s;
     double res = INFINITY;
-    for (it = 0; it < NEWTON_MAXIT; it++) {
-        if ((s = blend_residual(P, tau, x0, x, r, Xdot)) != SUSLOV_PERTURB_OK)
+    for (it = 0; it < SUS_STEP_NEWTON_MAXIT; it++) {
+        if ((s = blend_residual(P, tau, x0, x, r, Xdot)) != SUS_EXP_PERTURB_OK)
             return s;
         res = fmax(fabs(r[0]), fabs(r[1]));
         if (res <= tol)
@@ -123,36 +123,36 @@ int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double 
             double xp[2] = {x0[0], x0[1]}, xm[2] = {x0[0], x0[1]}, rp[2], rm[2], dd[2];
             xp[j] += h;
             xm[j] -= h;
-            if ((s = blend_residual(P, tau, xp, x, rp, dd)) != SUSLOV_PERTURB_OK ||
-                (s = blend_residual(P, tau, xm, x, rm, dd)) != SUSLOV_PERTURB_OK)
+            if ((s = blend_residual(P, tau, xp, x, rp, dd)) != SUS_EXP_PERTURB_OK ||
+                (s = blend_residual(P, tau, xm, x, rm, dd)) != SUS_EXP_PERTURB_OK)
                 return s;
             J[0][j] = (rp[0] - rm[0]) / (2.0 * h);
             J[1][j] = (rp[1] - rm[1]) / (2.0 * h);
         }
         const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
         if (!(fabs(det) > 0.0))
-            return SUSLOV_PERTURB_NEWTON_FAILED;
+            return SUS_EXP_PERTURB_NEWTON_FAILED;
         x0[0] -= (J[1][1] * r[0] - J[0][1] * r[1]) / det;
         x0[1] -= (J[0][0] * r[1] - J[1][0] * r[0]) / det;
     }
-    P->newton_its += it;
-    P->newton_res = fmax(P->newton_res, res);
+    P->sus_exp_newton_its += it;
+    P->sus_exp_newton_res = fmax(P->sus_exp_newton_res, res);
     if (!(res <= tol))
-        return SUSLOV_PERTURB_NEWTON_FAILED;
-    suslov_contdyn(P->m, x, f);
+        return SUS_EXP_PERTURB_NEWTON_FAILED;
+    sus_contdyn(P->m, x, f);
     g[0] = Xdot[0] - f[0];
     g[1] = Xdot[1] - f[1];
     if (x0_out) {
         x0_out[0] = x0[0];
         x0_out[1] = x0[1];
     }
-    return SUSLOV_PERTURB_OK;
+    return SUS_EXP_PERTURB_OK;
 }
 
 /* ---- the period map, by rk8pd on the perturbed field ---- */
 
 typedef struct {
-    suslov_perturb *P;
+    sus_exp_perturb *P;
     int status;
     double max_xi3, max_dlambda;
 } ode_ctx;
@@ -162,12 +162,12 @@ static int eq2_rhs(double t, const double y[], double dydt[], void *params)
 {
     ode_ctx *c = params;
     double g[2], f[2];
-    const int s = suslov_perturb_field(c->P, t, y, g, NULL);
-    if (s != SUSLOV_PERTURB_OK) {
+    const int s = sus_exp_perturb_field(c->P, t, y, g, NULL);
+    if (s != SUS_EXP_PERTURB_OK) {
         c->status = s;
         return GSL_EBADFUNC;
     }
-    suslov_contdyn(c->P->m, y, f);
+    sus_contdyn(c->P->m, y, f);
     dydt[0] = f[0] + g[0];
     dydt[1] = f[1] + g[1];
     return GSL_SUCCESS;
@@ -177,20 +177,20 @@ static int integrate(gsl_odeiv2_system *sys, ode_ctx *c, double eps, double tol,
 {
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 0.05 * eps, tol, tol);
     if (!d)
-        return SUSLOV_PERTURB_ODE_FAILED;
+        return SUS_EXP_PERTURB_ODE_FAILED;
     double t = 0.0;
-    c->P->newton_its = c->P->field_evals = 0;
+    c->P->sus_exp_newton_its = c->P->field_evals = 0;
     const int st = gsl_odeiv2_driver_apply(d, &t, eps, y);
     gsl_odeiv2_driver_free(d);
-    if (c->status != SUSLOV_PERTURB_OK)
+    if (c->status != SUS_EXP_PERTURB_OK)
         return c->status;
-    return st == GSL_SUCCESS ? SUSLOV_PERTURB_OK : SUSLOV_PERTURB_ODE_FAILED;
+    return st == GSL_SUCCESS ? SUS_EXP_PERTURB_OK : SUS_EXP_PERTURB_ODE_FAILED;
 }
 
 /* (TheoPer): the period map of the perturbed equation from x0 (perturbation.h). */
-int suslov_perturb_period_map(suslov_perturb *P, const double x0[2], double tol, double x_end[2])
+int sus_exp_perturb_period_map(sus_exp_perturb *P, const double x0[2], double tol, double x_end[2])
 {
-    ode_ctx c = {P, SUSLOV_PERTURB_OK, 0.0, 0.0};
+    ode_ctx c = {P, SUS_EXP_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {eq2_rhs, NULL, 2, &c};
     double y[2] = {x0[0], x0[1]};
     const int s = integrate(&sys, &c, P->eps, tol, y);
@@ -200,14 +200,14 @@ int suslov_perturb_period_map(suslov_perturb *P, const double x0[2], double tol,
 }
 
 /* (TheoPer): the perturbed solution over one period from x0 (perturbation.h). */
-int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol, int n, double (*x)[2])
+int sus_exp_perturb_trajectory(sus_exp_perturb *P, const double x0[2], double tol, int n, double (*x)[2])
 {
-    ode_ctx c = {P, SUSLOV_PERTURB_OK, 0.0, 0.0};
+    ode_ctx c = {P, SUS_EXP_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {eq2_rhs, NULL, 2, &c};
     gsl_odeiv2_driver *d =
         gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 0.05 * P->eps, tol, tol);
     if (!d)
-        return SUSLOV_PERTURB_ODE_FAILED;
+        return SUS_EXP_PERTURB_ODE_FAILED;
     double y[2] = {x0[0], x0[1]}, t = 0.0;
     int st = GSL_SUCCESS;
     x[0][0] = y[0];
@@ -218,9 +218,9 @@ int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol,
         x[i][1] = y[1];
     }
     gsl_odeiv2_driver_free(d);
-    if (c.status != SUSLOV_PERTURB_OK)
+    if (c.status != SUS_EXP_PERTURB_OK)
         return c.status;
-    return st == GSL_SUCCESS ? SUSLOV_PERTURB_OK : SUSLOV_PERTURB_ODE_FAILED;
+    return st == GSL_SUCCESS ? SUS_EXP_PERTURB_OK : SUS_EXP_PERTURB_ODE_FAILED;
 }
 
 /* (PerFin2): I xi' = (I xi) x xi + lambda e3 + (I_m g, 0), lambda from <e3, xi'> = 0, i.e.
@@ -228,31 +228,31 @@ int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol,
 static int perfin2_rhs(double t, const double y[], double dydt[], void *params)
 {
     ode_ctx *c = params;
-    const suslov_perturb *P = c->P;
+    const sus_exp_perturb *P = c->P;
     const double (*I)[3] = P->m->I;
     double g[2], Iw[3], q[3];
-    const int s = suslov_perturb_field(c->P, t, y, g, NULL);
-    if (s != SUSLOV_PERTURB_OK) {
+    const int s = sus_exp_perturb_field(c->P, t, y, g, NULL);
+    if (s != SUS_EXP_PERTURB_OK) {
         c->status = s;
         return GSL_EBADFUNC;
     }
-    mat3_vec(Iw, I, y);
-    vec3_cross(q, Iw, y);
+    sus_mat3_vec(Iw, I, y);
+    sus_vec3_cross(q, Iw, y);
     q[0] += I[0][0] * g[0] + I[0][1] * g[1];
     q[1] += I[1][0] * g[0] + I[1][1] * g[1];
     const double lambda =
         -(P->Iinv[2][0] * q[0] + P->Iinv[2][1] * q[1] + P->Iinv[2][2] * q[2]) / P->Iinv[2][2];
     q[2] += lambda;
-    mat3_vec(dydt, P->Iinv, q);
+    sus_mat3_vec(dydt, P->Iinv, q);
     c->max_xi3 = fmax(c->max_xi3, fabs(y[2]));
-    c->max_dlambda = fmax(c->max_dlambda, fabs(lambda - suslov_lagmult(P->m, y)));
+    c->max_dlambda = fmax(c->max_dlambda, fabs(lambda - sus_lagmult(P->m, y)));
     return GSL_SUCCESS;
 }
 
-int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3],
+int sus_exp_perturb_perfin2(sus_exp_perturb *P, const double x0[2], double tol, double xi_end[3],
                            double *max_xi3, double *max_dlambda)
 {
-    ode_ctx c = {P, SUSLOV_PERTURB_OK, 0.0, 0.0};
+    ode_ctx c = {P, SUS_EXP_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {perfin2_rhs, NULL, 3, &c};
     double y[3] = {x0[0], x0[1], 0.0};
     const int s = integrate(&sys, &c, P->eps, tol, y);
@@ -265,30 +265,30 @@ int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, do
 /* ---- sizes along one period ---- */
 
 /* (TheoPer): the size of the perturbation over one period (perturbation.h). */
-int suslov_perturb_sup_reduced(suslov_perturb *P, const double x0[2], int n, double *sup_g)
+int sus_exp_perturb_sup_reduced(sus_exp_perturb *P, const double x0[2], int n, double *sup_g)
 {
     double x1[2];
     const int s = phi(P, x0, x1);
     *sup_g = 0.0;
-    if (s != SUSLOV_PERTURB_OK)
+    if (s != SUS_EXP_PERTURB_OK)
         return s;
     for (int i = 0; i <= n; i++) {
         double X[2], Xd[2], f[2];
-        suslov_perturb_curve(P, P->eps * i / n, x0, x1, X, Xd);
-        suslov_contdyn(P->m, X, f);
+        sus_exp_perturb_curve(P, P->eps * i / n, x0, x1, X, Xd);
+        sus_contdyn(P->m, X, f);
         *sup_g = fmax(*sup_g, hypot(Xd[0] - f[0], Xd[1] - f[1]));
     }
-    return SUSLOV_PERTURB_OK;
+    return SUS_EXP_PERTURB_OK;
 }
 
 /* R' = R w^(t) along the closed-form w(t) from a given w. */
 static int att_rhs(double t, const double y[], double dydt[], void *params)
 {
-    const suslov_exact *ex = params;
+    const sus_exact *ex = params;
     double w[3] = {0.0, 0.0, 0.0}, W[3][3];
-    suslov_exact_omega(ex, t, w);
-    so3_hat(w, W);
-    mat3_mul(*(double(*)[3][3])dydt, *(const double(*)[3][3])y, W);
+    sus_exact_omega(ex, t, w);
+    sus_so3_hat(w, W);
+    sus_mat3_mul(*(double(*)[3][3])dydt, *(const double(*)[3][3])y, W);
     return GSL_SUCCESS;
 }
 
@@ -296,8 +296,8 @@ static int att_rhs(double t, const double y[], double dydt[], void *params)
 static void so3_log(const double Q[3][3], double v[3])
 {
     double a[3];
-    so3_vee(Q, a);
-    const double sn = vec3_norm(a), cs = 0.5 * (Q[0][0] + Q[1][1] + Q[2][2] - 1.0);
+    sus_so3_vee(Q, a);
+    const double sn = sus_vec3_norm(a), cs = 0.5 * (Q[0][0] + Q[1][1] + Q[2][2] - 1.0);
     const double th = atan2(sn, cs), f = sn > 0.0 ? th / sn : 1.0;
     for (int i = 0; i < 3; i++)
         v[i] = f * a[i];
@@ -307,16 +307,16 @@ static void so3_log(const double Q[3][3], double v[3])
 #define NFD 5  /* the stencil -2, -1, 0, 1, 2 (times the step hd) */
 
 /* Attitudes along the exact flow from (R0, x) at the times t[i] (monotone), into R[i]. */
-static int attitudes(const suslov_model *m, const double R0[3][3], const double x[2], double t0,
+static int attitudes(const sus_model *m, const double R0[3][3], const double x[2], double t0,
                      const double *t, int n, double (*R)[3][3], double tol)
 {
-    suslov_exact ex;
-    suslov_exact_init(&ex, m, x);
+    sus_exact ex;
+    sus_exact_init(&ex, m, x);
     gsl_odeiv2_system sys = {att_rhs, NULL, 9, &ex};
     const double h0 = n > 1 ? 0.5 * (t[1] - t[0]) : 1e-3;
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, h0, tol, tol);
     if (!d)
-        return SUSLOV_PERTURB_ODE_FAILED;
+        return SUS_EXP_PERTURB_ODE_FAILED;
     double y[9], tt = t0;
     memcpy(y, R0, sizeof y);
     int st = GSL_SUCCESS;
@@ -326,14 +326,14 @@ static int attitudes(const suslov_model *m, const double R0[3][3], const double 
         memcpy(R[i], y, sizeof y);
     }
     gsl_odeiv2_driver_free(d);
-    return st == GSL_SUCCESS ? SUSLOV_PERTURB_OK : SUSLOV_PERTURB_ODE_FAILED;
+    return st == GSL_SUCCESS ? SUS_EXP_PERTURB_OK : SUS_EXP_PERTURB_ODE_FAILED;
 }
 
 /* (Per11): the geodesic blend R = R_A exp(chi log(R_A^T R_B)) of the exact attitude from
  * (I, x0) and the exact one backward from the method's (R1, x1); its perturbation is
  * vee(R^T R') - w, with R' from a fourth-order central difference. Only the times where chi
  * is not flat are sampled: elsewhere R is an exact trajectory and the perturbation 0. */
-int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x0[2], int n, double tol,
+int sus_exp_perturb_sup_so3(sus_exp_perturb *P, sus_recon recon, const double x0[2], int n, double tol,
                            double *sup_att, double *sup_g)
 {
     static const double cfd[NFD] = {1.0 / 12.0, -2.0 / 3.0, 0.0, 2.0 / 3.0, -1.0 / 12.0};
@@ -343,7 +343,7 @@ int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x
         n = SUP_MAXN;
     /* the stencil spans a fifth of the sample spacing, so the times stay in order; its
      * truncation error hd^4 |R^(5)| / 30 is below 1e-9 of the perturbation at any eps <= 1 */
-    const double eps = P->eps, a = SUSLOV_PERTURB_FLAT, hd = 0.1 * (1.0 - 2.0 * a) * eps / n;
+    const double eps = P->eps, a = SUS_EXP_PERTURB_FLAT, hd = 0.1 * (1.0 - 2.0 * a) * eps / n;
     const int np = (n + 1) * NFD;
     for (int i = 0; i <= n; i++)
         for (int k = 0; k < NFD; k++) {
@@ -352,18 +352,18 @@ int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x
             tB[np - 1 - (i * NFD + k)] = t - eps;  /* descending: integrated backward from 0 */
         }
     /* the method's step of (w, R) from (x0, I) */
-    suslov_attitude att;
+    sus_attitude att;
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam, R1[3][3], I3[3][3];
-    suslov_step_stats sst;
-    suslov_attitude_identity(&att);
-    if (suslov_step_full(P->st, P->m, eps, recon, &att, w, wn, &lam, &sst) != SUSLOV_STEP_OK)
-        return SUSLOV_PERTURB_STEP_FAILED;
-    suslov_attitude_get(&att, R1);
-    mat3_identity(I3);
+    sus_stepper_stats sst;
+    sus_attitude_identity(&att);
+    if (sus_stepper_full(P->st, P->m, eps, recon, &att, w, wn, &lam, &sst) != SUS_STEPPER_OK)
+        return SUS_EXP_PERTURB_STEP_FAILED;
+    sus_attitude_get(&att, R1);
+    sus_mat3_identity(I3);
     const double x1[2] = {wn[0], wn[1]};
     int s;
-    if ((s = attitudes(P->m, I3, x0, 0.0, tA, np, RA, tol)) != SUSLOV_PERTURB_OK ||
-        (s = attitudes(P->m, R1, x1, 0.0, tB, np, RB, tol)) != SUSLOV_PERTURB_OK)
+    if ((s = attitudes(P->m, I3, x0, 0.0, tA, np, RA, tol)) != SUS_EXP_PERTURB_OK ||
+        (s = attitudes(P->m, R1, x1, 0.0, tB, np, RB, tol)) != SUS_EXP_PERTURB_OK)
         return s;
     *sup_att = *sup_g = 0.0;
     for (int i = 0; i <= n; i++) {
@@ -371,28 +371,28 @@ int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x
         for (int k = 0; k < NFD; k++) {
             const int ia = i * NFD + k, ib = np - 1 - ia;
             double Q[3][3], L[3], E[3][3], dchi;
-            const double chi = suslov_perturb_chi(tA[ia] / eps, &dchi);
-            mat3_mul_at(Q, RA[ia], RB[ib]);
+            const double chi = sus_exp_perturb_chi(tA[ia] / eps, &dchi);
+            sus_mat3_mul_at(Q, RA[ia], RB[ib]);
             so3_log(Q, L);
             for (int j = 0; j < 3; j++)
                 L[j] *= chi;
-            so3_exp(L, E);
-            mat3_mul(Rk[k], RA[ia], E);
+            sus_so3_exp(L, E);
+            sus_mat3_mul(Rk[k], RA[ia], E);
         }
         for (int k = 0; k < NFD; k++)
             for (int r = 0; r < 3; r++)
                 for (int c = 0; c < 3; c++)
                     Rd[r][c] += cfd[k] * Rk[k][r][c] / hd;
-        mat3_mul_at(P3, Rk[2], Rd);
+        sus_mat3_mul_at(P3, Rk[2], Rd);
         double body[3];
-        so3_vee(P3, body);
-        suslov_perturb_curve(P, tA[i * NFD + 2], x0, x1, X, Xd);
+        sus_so3_vee(P3, body);
+        sus_exp_perturb_curve(P, tA[i * NFD + 2], x0, x1, X, Xd);
         v[0] = body[0] - X[0];
         v[1] = body[1] - X[1];
         v[2] = body[2];
-        *sup_att = fmax(*sup_att, vec3_norm(v));
-        suslov_contdyn(P->m, X, f);
+        *sup_att = fmax(*sup_att, sus_vec3_norm(v));
+        sus_contdyn(P->m, X, f);
         *sup_g = fmax(*sup_g, hypot(Xd[0] - f[0], Xd[1] - f[1]));
     }
-    return SUSLOV_PERTURB_OK;
+    return SUS_EXP_PERTURB_OK;
 }

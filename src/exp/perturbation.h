@@ -14,8 +14,8 @@
  * The same on SO(3) x R^2 (Per11): the attitude blends R_A(t) = R0 Phi(t; x0) (exact) and
  * R_B(t) = R1 Phi_1(t - eps) (exact, backward from the method's (R1, x1)) along the geodesic,
  * R = R_A exp(chi log(R_A^T R_B)); the attitude perturbation is vee(R^T R') - w. */
-#ifndef SUSLOV_PERTURBATION_H
-#define SUSLOV_PERTURBATION_H
+#ifndef SUS_EXP_PERTURBATION_H
+#define SUS_EXP_PERTURBATION_H
 
 #include "model.h"
 #include "orderfit.h"
@@ -25,7 +25,7 @@
 #include <float.h>
 
 /* chi is flat (0 or 1) on the first and last tenth of the period. */
-#define SUSLOV_PERTURB_FLAT 0.1
+#define SUS_EXP_PERTURB_FLAT 0.1
 
 /* The round-off floors of the perturbation's sizes, shared by the ledger (claims_section6.c) and
  * the figure; both grow like 1/eps, so a size at eps is compared with FLOOR / eps.
@@ -33,59 +33,59 @@
  * chi' < 3); a fitted point must sit 1000 times above it (orderfit.h: round-off moves no fitted
  * point by more than 0.1%).
  * FLOOR_ATT: on SO(3) the attitudes come from rk8pd at ATT_TOL and enter a difference quotient
- * over the stencil step 0.1 (1 - 2 FLAT) eps / 32 = 0.0025 eps of suslov_perturb_sup_so3 with 32
+ * over the stencil step 0.1 (1 - 2 FLAT) eps / 32 = 0.0025 eps of sus_exp_perturb_sup_so3 with 32
  * samples; 100 ATT_TOL / (0.0025 eps) keeps that noise below 1% of a fitted point. */
-#define SUSLOV_PERTURB_ATT_TOL 1e-14
-#define SUSLOV_PERTURB_FLOOR_G (1000.0 * SUSLOV_U * SUSLOV_SIZE_W * 3.0)
-#define SUSLOV_PERTURB_FLOOR_ATT (100.0 * SUSLOV_PERTURB_ATT_TOL / 0.0025)
+#define SUS_EXP_PERTURB_ATT_TOL 1e-14
+#define SUS_EXP_PERTURB_FLOOR_G (1000.0 * SUS_U * SUS_EXP_SIZE_W * 3.0)
+#define SUS_EXP_PERTURB_FLOOR_ATT (100.0 * SUS_EXP_PERTURB_ATT_TOL / 0.0025)
 
-enum { SUSLOV_PERTURB_OK = 0, SUSLOV_PERTURB_STEP_FAILED = 1, SUSLOV_PERTURB_NEWTON_FAILED = 2,
-       SUSLOV_PERTURB_ODE_FAILED = 3 };
+enum { SUS_EXP_PERTURB_OK = 0, SUS_EXP_PERTURB_STEP_FAILED = 1, SUS_EXP_PERTURB_NEWTON_FAILED = 2,
+       SUS_EXP_PERTURB_ODE_FAILED = 3 };
 
 typedef struct {
-    const suslov_model *m;
-    const suslov_stepper_type *st;  /* phi: its w-step (apply) */
+    const sus_model *m;
+    const sus_stepper_type *st;  /* phi: its w-step (apply) */
     double eps;
     double Iinv[3][3];              /* the full inertia inverse, for (PerFin2) */
-    long newton_its, field_evals;   /* counters of the last period map */
-    double newton_res;              /* largest final Newton residual seen */
-} suslov_perturb;
+    long sus_exp_newton_its, field_evals;   /* counters of the last period map */
+    double sus_exp_newton_res;              /* largest final Newton residual seen */
+} sus_exp_perturb;
 
 /* Returns 0, or -1 when the full inertia tensor is singular. */
-int suslov_perturb_init(suslov_perturb *P, const suslov_model *m, const suslov_stepper_type *st, double eps);
+int sus_exp_perturb_init(sus_exp_perturb *P, const sus_model *m, const sus_stepper_type *st, double eps);
 
 /* The weight chi(s) and its derivative dchi/ds. */
-double suslov_perturb_chi(double s, double *dchi);
+double sus_exp_perturb_chi(double s, double *dchi);
 
 /* The blended curve X(t; x0) and X'(t) for t in [0, eps], given x1 = phi(eps, x0). */
-void suslov_perturb_curve(const suslov_perturb *P, double t, const double x0[2], const double x1[2],
+void sus_exp_perturb_curve(const sus_exp_perturb *P, double t, const double x0[2], const double x1[2],
                           double X[2], double Xdot[2]);
 
 /* eps^p d(eps, t/eps, x): the perturbation at time t (any t: reduced mod eps) and point x,
  * with x0 such that x = X(t mod eps; x0) (may be NULL). Returns SUSLOV_PERTURB_*. */
-int suslov_perturb_field(suslov_perturb *P, double t, const double x[2], double g[2], double x0[2]);
+int sus_exp_perturb_field(sus_exp_perturb *P, double t, const double x[2], double g[2], double x0[2]);
 
 /* The period map of (Eq2) from x0: rk8pd at tolerance tol (abs and rel) over [0, eps] on the
  * perturbed field, into x_end. Returns SUSLOV_PERTURB_*. */
-int suslov_perturb_period_map(suslov_perturb *P, const double x0[2], double tol, double x_end[2]);
+int sus_exp_perturb_period_map(sus_exp_perturb *P, const double x0[2], double tol, double x_end[2]);
 
 /* The solution of (Eq2) over one period from x0, sampled at t = i eps / n, i = 0 .. n, into
  * x[i][0..1] (the last one is the period map). Returns SUSLOV_PERTURB_*. */
-int suslov_perturb_trajectory(suslov_perturb *P, const double x0[2], double tol, int n, double (*x)[2]);
+int sus_exp_perturb_trajectory(sus_exp_perturb *P, const double x0[2], double tol, int n, double (*x)[2]);
 
 /* The same on the three-dimensional (PerFin2): I xi' = (I xi) x xi + lambda e3 + dt, with the
  * perturbing force dt = (I_m g, 0) in the constraint-free rows and lambda eliminated so that
  * <e3, xi'> = 0. Integrates from (x0, 0) over [0, eps]; returns xi(eps), the largest |xi_3| seen
  * and the largest |lambda - lambda(xi)| over the period (the multiplier shift). */
-int suslov_perturb_perfin2(suslov_perturb *P, const double x0[2], double tol, double xi_end[3],
+int sus_exp_perturb_perfin2(sus_exp_perturb *P, const double x0[2], double tol, double xi_end[3],
                            double *max_xi3, double *max_dlambda);
 
 /* Along the curve from x0, sampled at n + 1 equally spaced times: the largest |g| (reduced
  * perturbation, eps^p d); and on SO(3) with reconstruction recon (R0 = I, the method's own
- * attitude step, suslov_step_full), the largest |vee(R^T R') - w| of the geodesic blend, at n + 1
+ * attitude step, sus_stepper_full), the largest |vee(R^T R') - w| of the geodesic blend, at n + 1
  * times where chi is not flat (n <= 64). Returns SUSLOV_PERTURB_*. */
-int suslov_perturb_sup_reduced(suslov_perturb *P, const double x0[2], int n, double *sup_g);
-int suslov_perturb_sup_so3(suslov_perturb *P, suslov_recon recon, const double x0[2], int n, double tol,
+int sus_exp_perturb_sup_reduced(sus_exp_perturb *P, const double x0[2], int n, double *sup_g);
+int sus_exp_perturb_sup_so3(sus_exp_perturb *P, sus_recon recon, const double x0[2], int n, double tol,
                            double *sup_att, double *sup_g);
 
 #endif

@@ -1,8 +1,8 @@
 /* A run recorded into arrays for the figures and the figure claims: t, w, lambda, E and the
  * constraint of the reconstructed velocity, for every row the driver emits. Storage is
  * allocated once, before the run: the integrator loop itself allocates nothing. */
-#ifndef SUSLOV_SERIES_H
-#define SUSLOV_SERIES_H
+#ifndef SUS_EXP_SERIES_H
+#define SUS_EXP_SERIES_H
 
 #include "driver.h"
 #include "exact.h"
@@ -13,20 +13,20 @@ typedef struct {
     size_t n, cap;
     double *t, *w1, *w2, *w3, *lambda, *energy;
     double *mu;  /* <e3, vee(R_k^T R_k w^_k)>: the unreduced constraint of step 6 of (algo) */
-} suslov_series;
+} sus_exp_series;
 
 /* Room for the rows of a run of `steps` steps written every `every` steps. Returns 0 or -1. */
-int suslov_series_init(suslov_series *s, long steps, long every);
-void suslov_series_free(suslov_series *s);
-/* As suslov_run, recording the rows. */
-int suslov_series_run(suslov_series *s, const suslov_run_config *cfg, const double w0[2],
-                      suslov_run_report *report);
+int sus_exp_series_init(sus_exp_series *s, long steps, long every);
+void sus_exp_series_free(sus_exp_series *s);
+/* As sus_run, recording the rows. */
+int sus_exp_series_run(sus_exp_series *s, const sus_run_config *cfg, const double w0[2],
+                      sus_run_report *report);
 /* The closed form at t_i = i dt, i = 0 .. n-1 (at most the capacity; mu = 0). */
-void suslov_series_exact(suslov_series *s, const suslov_exact *ex, double dt, size_t n);
+void sus_exp_series_exact(sus_exp_series *s, const sus_exact *ex, double dt, size_t n);
 
 /* max_k |a_k - b_k| over two series of the same rows, for one field (offsetof in the struct). */
-double suslov_series_maxdiff(const suslov_series *a, const suslov_series *b, size_t field);
+double sus_exp_series_maxdiff(const sus_exp_series *a, const sus_exp_series *b, size_t field);
 /* max_k |v_k - v_0| of one field. */
-double suslov_series_maxdrift(const suslov_series *s, size_t field);
+double sus_exp_series_maxdrift(const sus_exp_series *s, size_t field);
 
 #endif

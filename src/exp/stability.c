@@ -7,29 +7,29 @@
 
 #include <math.h>
 
-const char *const STAB_NAMES[STAB_NCLASS] = {"good", "wrong limit", "blow-up", "solver failure",
-                                             "regularity lost"};
+const char *const SUS_EXP_STAB_NAMES[SUS_EXP_STAB_NCLASS] = {"good", "wrong limit", "blow-up",
+                                                             "solver failure", "regularity lost"};
 
 /* Continuation of the implicit step in eps from 0 (where the root is the trivial one) to eps: the
  * physical branch. Returns 0 with w^{k+1} of that root in x, or -1 when a continuation step
  * fails or the Jacobian's determinant changes sign (a fold). */
-static int continue_root(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2],
+static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
                          double x[2])
 {
     const int n = st->unknowns;
-    double prev[SUSLOV_MAX_UNKNOWNS], cur[SUSLOV_MAX_UNKNOWNS], guess[SUSLOV_MAX_UNKNOWNS];
+    double prev[SUS_MAX_UNKNOWNS], cur[SUS_MAX_UNKNOWNS], guess[SUS_MAX_UNKNOWNS];
     st->guess(m, 0.0, w, cur); /* the root at eps = 0 */
     for (int i = 0; i < n; i++)
         prev[i] = cur[i];
-    for (int j = 1; j <= STAB_CONTINUATION_STEPS; j++) {
-        const double e = eps * j / STAB_CONTINUATION_STEPS;
+    for (int j = 1; j <= SUS_EXP_STAB_CONTINUATION_STEPS; j++) {
+        const double e = eps * j / SUS_EXP_STAB_CONTINUATION_STEPS;
         if (j == 1)
             st->guess(m, e, w, guess);
         else
             for (int i = 0; i < n; i++) /* linear extrapolation */
                 guess[i] = 2.0 * cur[i] - prev[i];
-        suslov_step_stats s;
-        if (suslov_newton_solve(st->residual, n, m, e, w, guess, &s) != SUSLOV_STEP_OK || !(s.det > 0.0))
+        sus_stepper_stats s;
+        if (sus_step_newton_solve(st->residual, n, m, e, w, guess, &s) != SUS_STEPPER_OK || !(s.det > 0.0))
             return -1;
         for (int i = 0; i < n; i++) {
             prev[i] = cur[i];
@@ -40,39 +40,39 @@ static int continue_root(const suslov_model *m, const suslov_stepper_type *st, d
     return 0;
 }
 
-void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st, double eps, long N,
-                          int check_branch, stab_result *res)
+void sus_exp_stability_run(const sus_exact *ex, const sus_stepper_type *st, double eps, long N,
+                          int check_branch, sus_exp_stab_result *res)
 {
-    const suslov_model *m = ex->model;
+    const sus_model *m = ex->model;
     double w[3] = {ex->w0[0], ex->w0[1], 0.0}, winf[2];
     const double r0 = hypot(w[0], w[1]);
-    suslov_exact_limit(ex, winf);
-    *res = (stab_result){STAB_GOOD, 0, NAN};
+    sus_exact_limit(ex, winf);
+    *res = (sus_exp_stab_result){SUS_EXP_STAB_GOOD, 0, NAN};
     for (long k = 1; k <= N; k++) {
         double x[3], lam;
-        suslov_step_stats s;
+        sus_stepper_stats s;
         const int status = st->apply(m, eps, w, x, &lam, &s);
         res->step = k;
-        if (status == SUSLOV_STEP_SINGULAR || (st->unknowns && status == SUSLOV_STEP_OK && !(s.det > 0.0))) {
-            res->cls = STAB_REGULARITY;
+        if (status == SUS_STEPPER_SINGULAR || (st->unknowns && status == SUS_STEPPER_OK && !(s.det > 0.0))) {
+            res->cls = SUS_EXP_STAB_REGULARITY;
             return;
         }
-        if (status != SUSLOV_STEP_OK) {
-            res->cls = STAB_SOLVER;
+        if (status != SUS_STEPPER_OK) {
+            res->cls = SUS_EXP_STAB_SOLVER;
             return;
         }
-        if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > STAB_BLOWUP_FACTOR * r0) {
-            res->cls = STAB_BLOWUP;
+        if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > SUS_EXP_STAB_BLOWUP_FACTOR * r0) {
+            res->cls = SUS_EXP_STAB_BLOWUP;
             return;
         }
         if (check_branch && st->unknowns) {
             double xc[2];
             if (continue_root(m, st, eps, w, xc) != 0) {
-                res->cls = STAB_REGULARITY;
+                res->cls = SUS_EXP_STAB_REGULARITY;
                 return;
             }
             if (hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + r0)) {
-                res->cls = STAB_SOLVER;
+                res->cls = SUS_EXP_STAB_SOLVER;
                 return;
             }
         }
@@ -81,10 +81,10 @@ void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st,
     }
     res->step = 0;
     res->final_err = hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
-    res->cls = res->final_err <= STAB_GOOD_TOL ? STAB_GOOD : STAB_WRONG_LIMIT;
+    res->cls = res->final_err <= SUS_EXP_STAB_GOOD_TOL ? SUS_EXP_STAB_GOOD : SUS_EXP_STAB_WRONG_LIMIT;
 }
 
-void suslov_ellipse_point(const suslov_exact *ref, double theta, double w[2])
+void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2])
 {
     const double u1 = ref->r * cos(theta), u2 = ref->r * sin(theta);
     w[1] = u2 / ref->l22;
@@ -92,24 +92,24 @@ void suslov_ellipse_point(const suslov_exact *ref, double theta, double w[2])
 }
 
 /* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? */
-static int returns(const suslov_exact *ex, const suslov_stepper_type *st, double h)
+static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
 {
     const double theta = atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
     double w[3] = {0.0, 0.0, 0.0};
-    suslov_ellipse_point(ex, theta, w);
-    const double c0 = fabs(suslov_c(ex->model, w)), eps = h / ex->k;
+    sus_exp_ellipse_point(ex, theta, w);
+    const double c0 = fabs(sus_c(ex->model, w)), eps = h / ex->k;
     for (int k = 0; k < 4000; k++) {
         double x[3], lam;
-        suslov_step_stats s;
-        if (st->apply(ex->model, eps, w, x, &lam, &s) != SUSLOV_STEP_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        sus_stepper_stats s;
+        if (st->apply(ex->model, eps, w, x, &lam, &s) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
             return 0;
         w[0] = x[0];
         w[1] = x[1];
     }
-    return fabs(suslov_c(ex->model, w)) < c0;
+    return fabs(sus_c(ex->model, w)) < c0;
 }
 
-double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type *st, double lo, double hi)
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi)
 {
     if (!returns(ex, st, lo))
         return NAN;
@@ -125,22 +125,22 @@ double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type 
     return 0.5 * (lo + hi);
 }
 
-long suslov_stability_steps(double h)
+long sus_exp_stability_steps(double h)
 {
     return (long)fmin(40000.0, fmax(40.0 / h, 10.0 * h) + 50.0);
 }
 
-void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *st, const double *hs, int nh,
-                          int nangle, stab_result *results)
+void sus_exp_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs, int nh,
+                          int nangle, sus_exp_stab_result *results)
 {
     for (int i = 0; i < nh; i++)
         for (int a = 0; a < nangle; a++) {
             double w0[2];
-            suslov_exact ex;
-            suslov_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + STAB_ANGLE0, w0);
-            suslov_exact_init(&ex, paper->model, w0);
-            suslov_stability_run(&ex, st, hs[i] / paper->k, suslov_stability_steps(hs[i]),
-                                 hs[i] >= STAB_BRANCH_H, &results[i * nangle + a]);
+            sus_exact ex;
+            sus_exp_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + SUS_EXP_STAB_ANGLE0, w0);
+            sus_exact_init(&ex, paper->model, w0);
+            sus_exp_stability_run(&ex, st, hs[i] / paper->k, sus_exp_stability_steps(hs[i]),
+                                 hs[i] >= SUS_EXP_STAB_BRANCH_H, &results[i * nangle + a]);
         }
 }
 
@@ -151,7 +151,7 @@ static double excess(double h, void *params)
     return fabs(R(-h)) - 1.0;
 }
 
-double suslov_linear_limit(const suslov_method *me, double h_max)
+double sus_exp_linear_limit(const sus_step_method *me, double h_max)
 {
     if (!me->type->stability)
         return NAN;

@@ -1,62 +1,69 @@
 /* Where the integrators stop working. The Suslov field is homogeneous of degree 2, so the step
  * that matters is the dimensionless h = eps k, k the rate at which w approaches the steady
  * rotation (exact.h). A run from w0 with step eps over N steps is classified as
- *   GOOD        it ends within STAB_GOOD_TOL |w_inf| of the exact steady rotation w_inf;
+ *   GOOD        it ends within SUS_EXP_STAB_GOOD_TOL |w_inf| of the exact steady rotation w_inf;
  *   WRONG_LIMIT bounded, but ends elsewhere (a wrong steady rotation, a cycle, ...);
- *   BLOWUP      |w| exceeds STAB_BLOWUP_FACTOR |w0| or stops being finite;
+ *   BLOWUP      |w| exceeds SUS_EXP_STAB_BLOWUP_FACTOR |w0| or stops being finite;
  *   SOLVER      Newton did not converge, or converged to another root than the branch that
  *               continuation in eps from eps = 0 follows (checked when check_branch is set),
  *               or a Taylor step's series diverges (beyond its radius of convergence);
  *   REGULARITY  the (REGLOC) block is singular at the root or has changed sign from its
  *               eps -> 0 value (det I_m > 0), or the continuation in eps meets a fold: the
  *               discrete flow stops being defined. */
-#ifndef SUSLOV_STABILITY_H
-#define SUSLOV_STABILITY_H
+#ifndef SUS_EXP_STABILITY_H
+#define SUS_EXP_STABILITY_H
 
 #include "exact.h"
 #include "registry.h"
 
-enum { STAB_GOOD, STAB_WRONG_LIMIT, STAB_BLOWUP, STAB_SOLVER, STAB_REGULARITY, STAB_NCLASS };
-extern const char *const STAB_NAMES[STAB_NCLASS];
+enum {
+    SUS_EXP_STAB_GOOD,
+    SUS_EXP_STAB_WRONG_LIMIT,
+    SUS_EXP_STAB_BLOWUP,
+    SUS_EXP_STAB_SOLVER,
+    SUS_EXP_STAB_REGULARITY,
+    SUS_EXP_STAB_NCLASS
+};
+extern const char *const SUS_EXP_STAB_NAMES[SUS_EXP_STAB_NCLASS];
 
-#define STAB_GOOD_TOL 0.01
-#define STAB_BLOWUP_FACTOR 100.0
-#define STAB_CONTINUATION_STEPS 8
+#define SUS_EXP_STAB_GOOD_TOL 0.01
+#define SUS_EXP_STAB_BLOWUP_FACTOR 100.0
+#define SUS_EXP_STAB_CONTINUATION_STEPS 8
 
 typedef struct {
     int cls;
     long step;        /* where a failure happened (0 when none) */
     double final_err; /* |w_N - w_inf| / |w_inf| (NaN after a failure) */
-} stab_result;
+} sus_exp_stab_result;
 
-void suslov_stability_run(const suslov_exact *ex, const suslov_stepper_type *st, double eps, long N,
-                          int check_branch, stab_result *res);
+void sus_exp_stability_run(const sus_exact *ex, const sus_stepper_type *st, double eps, long N,
+                          int check_branch, sus_exp_stab_result *res);
 
 /* The point of the energy ellipse of the paper's w(0) at angle theta in the Cholesky
  * coordinates of exact.h (theta = psi + beta), and the rate k there (the same all round). */
-void suslov_ellipse_point(const suslov_exact *ref, double theta, double w[2]);
+void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2]);
 
 /* The linear stability limit of an explicit stepper at the attracting steady rotation,
  * measured: the largest h for which a start 1e-6 off the rotation returns to the line of
  * steady rotations (bisection to 1e-4 relative over [lo, hi]). Returns INFINITY when it still
  * returns at hi, NAN when it does not even return at lo. */
-double suslov_stability_limit(const suslov_exact *ex, const suslov_stepper_type *st, double lo, double hi);
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi);
 
 /* The run length for step h: long enough for the exact motion (k t = 40) and for a method
  * whose contraction per step is only 1 - O(1/h) (the A-stable midpoint rule at large h). */
-long suslov_stability_steps(double h);
+long sus_exp_stability_steps(double h);
 
-/* The map: classes[i * nangle + a] for h = hs[i] and w0 at angle 2 pi a / nangle + STAB_ANGLE0
- * on the paper's energy ellipse; the branch check runs for h >= STAB_BRANCH_H. */
-#define STAB_ANGLE0 0.01
-#define STAB_BRANCH_H 0.05
-void suslov_stability_map(const suslov_exact *paper, const suslov_stepper_type *st, const double *hs, int nh,
-                          int nangle, stab_result *results);
+/* The map: classes[i * nangle + a] for h = hs[i] and w0 at angle 2 pi a / nangle + SUS_EXP_STAB_ANGLE0
+ * on the paper's energy ellipse; the branch check runs for h >= SUS_EXP_STAB_BRANCH_H. */
+#define SUS_EXP_STAB_ANGLE0 0.01
+#define SUS_EXP_STAB_BRANCH_H 0.05
+void sus_exp_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs, int nh,
+                          int nangle, sus_exp_stab_result *results);
 
 /* The linear stability limit at the attracting rotation, where the transverse eigenvalue of Df is
  * -k: the smallest h > 0 with |R(-h)| = 1 for the method's stability function R (Euler: 2; RK4:
  * 2.7853); INFINITY when |R(-h)| <= 1 up to h_max (the midpoint rule is A-stable); NAN when the
  * method has no stability function in the registry. */
-double suslov_linear_limit(const suslov_method *me, double h_max);
+double sus_exp_linear_limit(const sus_step_method *me, double h_max);
 
 #endif

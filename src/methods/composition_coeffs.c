@@ -39,11 +39,11 @@ static const double SS10[] = {0.07879572252168641926390768, 0.313096103415108527
 
 #define HALF(a) ((int)(sizeof a / sizeof a[0]))
 
-const suslov_composition suslov_comp_suzuki4 = {"Suzuki s=5", "Suzuki 1990; HLW Sect. V.3", 4, HALF(SZ4),
+const sus_step_composition sus_step_comp_suzuki4 = {"Suzuki s=5", "Suzuki 1990; HLW Sect. V.3", 4, HALF(SZ4),
                                                 SZ4};
-const suslov_composition suslov_comp_kahan_li6 = {"Kahan-Li s=9", "Kahan & Li 1997; HLW Sect. V.3", 6,
+const sus_step_composition sus_step_comp_kahan_li6 = {"Kahan-Li s=9", "Kahan & Li 1997; HLW Sect. V.3", 6,
                                                   HALF(KL6), KL6};
-const suslov_composition suslov_comp_kahan_li8 = {"Kahan-Li s=17", "Kahan & Li 1997; HLW Sect. V.3", 8,
+const sus_step_composition sus_step_comp_kahan_li8 = {"Kahan-Li s=17", "Kahan & Li 1997; HLW Sect. V.3", 8,
                                                   HALF(KL8), KL8};
-const suslov_composition suslov_comp_sofroniou10 = {
+const sus_step_composition sus_step_comp_sofroniou10 = {
     "Sofroniou-Spaletta s=35", "Sofroniou & Spaletta 2005; HLW Sect. V.3", 10, HALF(SS10), SS10};

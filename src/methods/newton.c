@@ -29,18 +29,18 @@ static double row_norm_product(const double *J, int n)
  * n by Gaussian elimination with partial pivoting, on the stack. Written here rather than taken
  * from GSL: GSL's LU was most of the cost of a gauss4 step (n = 8), and the WebAssembly build of
  * the methods has no GSL. */
-int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det)
 {
     if (n == 2) {
         *det = J[0] * J[3] - J[1] * J[2];
-        if (fabs(*det) <= 4.0 * SUSLOV_U * (fabs(J[0] * J[3]) + fabs(J[1] * J[2])))
+        if (fabs(*det) <= 4.0 * SUS_U * (fabs(J[0] * J[3]) + fabs(J[1] * J[2])))
             return -1;
         dx[0] = (J[3] * g[0] - J[1] * g[1]) / *det;
         dx[1] = (J[0] * g[1] - J[2] * g[0]) / *det;
         return 0;
     }
-    const double bound = 4.0 * n * SUSLOV_U * row_norm_product(J, n);
-    double b[SUSLOV_MAX_UNKNOWNS];
+    const double bound = 4.0 * n * SUS_U * row_norm_product(J, n);
+    double b[SUS_MAX_UNKNOWNS];
     for (int i = 0; i < n; i++)
         b[i] = g[i];
     *det = 1.0;
@@ -82,16 +82,16 @@ int suslov_linear_solve(int n, double *J, const double *g, double *dx, double *d
 }
 
 /* Records the residual at the accepted x. */
-static void fn_final(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
-                     const double *x, suslov_step_stats *st)
+static void fn_final(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
+                     const double *x, sus_stepper_stats *st)
 {
-    double g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS];
+    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS];
     G(m, eps, w, x, g, J, &st->scale);
     st->residual = inf_norm(g, n);
 }
 
 typedef struct {
-    double x[SUSLOV_MAX_UNKNOWNS], residual, scale;
+    double x[SUS_MAX_UNKNOWNS], residual, scale;
 } newton_point;
 
 static void keep(newton_point *p, const double *x, int n, double residual, double scale)
@@ -102,7 +102,7 @@ static void keep(newton_point *p, const double *x, int n, double residual, doubl
     p->scale = scale;
 }
 
-static void restore(const newton_point *p, double *x, int n, suslov_step_stats *st)
+static void restore(const newton_point *p, double *x, int n, sus_stepper_stats *st)
 {
     for (int i = 0; i < n; i++)
         x[i] = p->x[i];
@@ -116,9 +116,9 @@ typedef struct {
     int polishing;
 } newton_state;
 
-/* One decision after evaluating G at x: returns a SUSLOV_STEP_* status to end the solve, or -1 to
+/* One decision after evaluating G at x: returns a SUS_STEPPER_* status to end the solve, or -1 to
  * take the correction. */
-static int decide(newton_state *s, double *x, int n, suslov_step_stats *st)
+static int decide(newton_state *s, double *x, int n, sus_stepper_stats *st)
 {
     if (s->polishing) {
         /* The polished x replaces the accepted one unless round-off made it worse. */
@@ -126,40 +126,40 @@ static int decide(newton_state *s, double *x, int n, suslov_step_stats *st)
             restore(&s->ok, x, n, st);
             st->scale = s->ok.scale;
         }
-        return SUSLOV_STEP_OK;
+        return SUS_STEPPER_OK;
     }
     if (!isfinite(st->residual) || !isfinite(st->scale))
-        return SUSLOV_STEP_NO_CONVERGENCE;
+        return SUS_STEPPER_NO_CONVERGENCE;
     if (st->residual < s->best.residual)
         keep(&s->best, x, n, st->residual, st->scale);
     /* Stagnation at the round-off floor: near a large or ill-conditioned Jacobian |G| cannot fall
-     * below ~ |J| ulp(x) times a few, which may sit above NEWTON_RTOL * scale. When an iteration
-     * no longer halves |G| and |G| is within NEWTON_STAGNATION * scale, the best iterate is the
+     * below ~ |J| ulp(x) times a few, which may sit above SUS_STEP_NEWTON_RTOL * scale. When an iteration
+     * no longer halves |G| and |G| is within SUS_STEP_NEWTON_STAGNATION * scale, the best iterate is the
      * root to working precision. */
-    if (st->residual > NEWTON_RTOL * st->scale && st->residual <= NEWTON_STAGNATION * st->scale &&
-        st->residual > 0.5 * s->prev) {
+    if (st->residual > SUS_STEP_NEWTON_RTOL * st->scale &&
+        st->residual <= SUS_STEP_NEWTON_STAGNATION * st->scale && st->residual > 0.5 * s->prev) {
         restore(&s->best, x, n, st);
-        return SUSLOV_STEP_OK;
+        return SUS_STEPPER_OK;
     }
     s->prev = st->residual;
     /* Once the residual is at round-off, one more correction takes x from "within the tolerance"
      * to the round-off floor; without it the tolerance, not round-off, sets a bias that
      * accumulates over many steps. */
-    if (st->residual <= NEWTON_RTOL * st->scale) {
+    if (st->residual <= SUS_STEP_NEWTON_RTOL * st->scale) {
         s->polishing = 1;
         keep(&s->ok, x, n, st->residual, st->scale);
-    } else if (st->iterations == NEWTON_MAXIT) {
-        return SUSLOV_STEP_NO_CONVERGENCE;
+    } else if (st->iterations == SUS_STEP_NEWTON_MAXIT) {
+        return SUS_STEPPER_NO_CONVERGENCE;
     }
     return -1;
 }
 
 /* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
  * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
-int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, double eps, const double w[2],
-                        double *x, suslov_step_stats *st)
+int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
+                        double *x, sus_stepper_stats *st)
 {
-    double g[SUSLOV_MAX_UNKNOWNS], J[SUSLOV_MAX_UNKNOWNS * SUSLOV_MAX_UNKNOWNS], dx[SUSLOV_MAX_UNKNOWNS];
+    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS];
     newton_state s = {.prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY};
     keep(&s.best, x, n, INFINITY, 0.0);
     st->iterations = 0;
@@ -167,32 +167,32 @@ int suslov_newton_solve(suslov_residual_fn G, int n, const suslov_model *m, doub
     for (;;) {
         G(m, eps, w, x, g, J, &st->scale);
         st->residual = inf_norm(g, n);
-        const int singular = suslov_linear_solve(n, J, g, dx, &st->det) != 0;
+        const int singular = sus_step_linear_solve(n, J, g, dx, &st->det) != 0;
         const int status = decide(&s, x, n, st);
         if (status >= 0)
             return status;
         /* (REGLOC): the step is defined only where this matrix is invertible. */
         if (singular)
-            return s.polishing ? SUSLOV_STEP_OK : SUSLOV_STEP_SINGULAR;
+            return s.polishing ? SUS_STEPPER_OK : SUS_STEPPER_SINGULAR;
         for (int i = 0; i < n; i++)
             x[i] -= dx[i];
         st->iterations++;
         /* A correction below the spacing of doubles at x leaves x unchanged: x is the root to
-         * working precision even when a large Jacobian keeps |G| above NEWTON_RTOL * scale
+         * working precision even when a large Jacobian keeps |G| above SUS_STEP_NEWTON_RTOL * scale
          * (|G| >= |J| ulp(x) there). */
-        if (!s.polishing && inf_norm(dx, n) <= 2.0 * SUSLOV_U * inf_norm(x, n)) {
+        if (!s.polishing && inf_norm(dx, n) <= 2.0 * SUS_U * inf_norm(x, n)) {
             fn_final(G, n, m, eps, w, x, st);
-            return SUSLOV_STEP_OK;
+            return SUS_STEPPER_OK;
         }
     }
 }
 
-int suslov_implicit_solve(const suslov_stepper_type *type, const suslov_model *m, double eps,
-                          const double w[3], double w_next[3], suslov_step_stats *st)
+int sus_step_implicit_solve(const sus_stepper_type *type, const sus_model *m, double eps,
+                          const double w[3], double w_next[3], sus_stepper_stats *st)
 {
-    double x[SUSLOV_MAX_UNKNOWNS];
+    double x[SUS_MAX_UNKNOWNS];
     type->guess(m, eps, w, x);
-    const int status = suslov_newton_solve(type->residual, type->unknowns, m, eps, w, x, st);
+    const int status = sus_step_newton_solve(type->residual, type->unknowns, m, eps, w, x, st);
     type->result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
     return status;

@@ -6,7 +6,7 @@
 /* One line per method: its stepper type (suslov_ID_type, defined in its stepper file), a display
  * family, the \label of the statement it tests (NULL for an extension), its default
  * reconstruction, and one line for --help. Everything else a consumer needs is in the type. */
-#define SUSLOV_METHODS(M) \
+#define SUS_STEP_METHODS(M) \
     M(euler, "paper DSP", "Discretization", CAYLEY, "(Discretization) with l = I_m f(w^k): explicit Euler") \
     M(midpoint, "paper DSP", "Discretization", CAYLEY, \
       "(Discretization) with the midpoint l1, l2 (Figures 1-2)") \
@@ -26,20 +26,20 @@
 #define TAYLOR_ABOUT(P) \
     "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
 
-#define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const suslov_stepper_type suslov_##ID##_type;
-SUSLOV_METHODS(DECLARE)
-#define ENTRY(ID, FAMILY, REF, RECON, ABOUT) {&suslov_##ID##_type, FAMILY, REF, SUSLOV_RECON_##RECON, ABOUT},
-static const suslov_method METHODS[] = {SUSLOV_METHODS(ENTRY)};
+#define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const sus_stepper_type sus_step_##ID##_type;
+SUS_STEP_METHODS(DECLARE)
+#define ENTRY(ID, FAMILY, REF, RECON, ABOUT) {&sus_step_##ID##_type, FAMILY, REF, SUS_RECON_##RECON, ABOUT},
+static const sus_step_method METHODS[] = {SUS_STEP_METHODS(ENTRY)};
 #define NMETHODS ((int)(sizeof METHODS / sizeof METHODS[0]))
 
-int suslov_method_count(void) { return NMETHODS; }
+int sus_step_method_count(void) { return NMETHODS; }
 
-const suslov_method *suslov_method_get(int i)
+const sus_step_method *sus_step_method_get(int i)
 {
     return i >= 0 && i < NMETHODS ? &METHODS[i] : NULL;
 }
 
-int suslov_method_index(const char *name)
+int sus_step_method_index(const char *name)
 {
     for (int i = 0; i < NMETHODS; i++)
         if (strcmp(METHODS[i].type->name, name) == 0)
@@ -47,7 +47,7 @@ int suslov_method_index(const char *name)
     return -1;
 }
 
-int suslov_method_index_of(const suslov_stepper_type *type)
+int sus_step_method_index_of(const sus_stepper_type *type)
 {
     for (int i = 0; i < NMETHODS; i++)
         if (METHODS[i].type == type)
@@ -55,12 +55,12 @@ int suslov_method_index_of(const suslov_stepper_type *type)
     return -1;
 }
 
-const suslov_method *suslov_method_by_name(const char *name)
+const sus_step_method *sus_step_method_by_name(const char *name)
 {
-    return suslov_method_get(suslov_method_index(name));
+    return sus_step_method_get(sus_step_method_index(name));
 }
 
-const char *suslov_method_names(char *buf, unsigned long len, const char *sep)
+const char *sus_step_method_names(char *buf, unsigned long len, const char *sep)
 {
     size_t used = 0;
     buf[0] = '\0';
@@ -71,17 +71,17 @@ const char *suslov_method_names(char *buf, unsigned long len, const char *sep)
 
 static const char *const ATTITUDE_NAMES[] = {"none", "matrix", "quaternion"};
 
-int suslov_methods_write_tsv(FILE *fp)
+int sus_step_methods_write_tsv(FILE *fp)
 {
     fprintf(fp, "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
                 "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
     for (int i = 0; i < NMETHODS; i++) {
-        const suslov_method *me = &METHODS[i];
-        const suslov_stepper_type *t = me->type;
+        const sus_step_method *me = &METHODS[i];
+        const sus_stepper_type *t = me->type;
         fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
                 t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
                 ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL,
-                SUSLOV_RECON_NAMES[me->recon],
+                SUS_RECON_NAMES[me->recon],
                 me->paper_ref ? me->paper_ref : "-", t->source, me->about);
     }
     return ferror(fp) ? -1 : 0;

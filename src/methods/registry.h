@@ -1,10 +1,10 @@
 /* The one list of methods. Every consumer (the suslov command, the convergence sweep and its
  * figure, the stability map, the bench, the claims ledger) iterates over it, so adding a method
- * is one stepper file plus one line in src/methods/registry.c (its SUSLOV_METHODS list). What the paper
+ * is one stepper file plus one line in src/methods/registry.c (its SUS_STEP_METHODS list). What the paper
  * or theory says a method's orders are is NOT here: the ledger keeps that in its own table
  * (tests/ledger/expected_orders.c), so that no expected value comes from the code under test. */
-#ifndef SUSLOV_REGISTRY_H
-#define SUSLOV_REGISTRY_H
+#ifndef SUS_STEP_REGISTRY_H
+#define SUS_STEP_REGISTRY_H
 
 #include "reconstruct.h"
 #include "stepper.h"
@@ -15,24 +15,24 @@
  * equation, stability function, energy, attitude, substeps, source file) and what the registry
  * adds. family is a display label only: no consumer decides anything from it. */
 typedef struct {
-    const suslov_stepper_type *type;
+    const sus_stepper_type *type;
     const char *family;             /* "paper DSP", "variational", "composition", ... */
     const char *paper_ref;          /* \label of the statement it tests; NULL for an extension */
-    suslov_recon recon;             /* its default reconstruction */
+    sus_recon recon;             /* its default reconstruction */
     const char *about;              /* one line for --help */
-} suslov_method;
+} sus_step_method;
 
-int suslov_method_count(void);
-const suslov_method *suslov_method_get(int i);          /* NULL past the end */
-const suslov_method *suslov_method_by_name(const char *name);
+int sus_step_method_count(void);
+const sus_step_method *sus_step_method_get(int i);          /* NULL past the end */
+const sus_step_method *sus_step_method_by_name(const char *name);
 /* The index of a method in the registry, or -1: by name (for user input) and by type. */
-int suslov_method_index(const char *name);
-int suslov_method_index_of(const suslov_stepper_type *type);
+int sus_step_method_index(const char *name);
+int sus_step_method_index_of(const sus_stepper_type *type);
 /* "euler|midpoint|..." into buf: the names for usage lines and error messages. */
-const char *suslov_method_names(char *buf, unsigned long len, const char *sep);
+const char *sus_step_method_names(char *buf, unsigned long len, const char *sep);
 /* The registry as a table (build/methods.tsv): a header row, then one row per method with
  * name family order lambda_order implicit unknowns conserves_energy attitude follows_recon substeps
  * stability recon paper_ref source about. Returns 0, or -1 on a write error. */
-int suslov_methods_write_tsv(FILE *fp);
+int sus_step_methods_write_tsv(FILE *fp);
 
 #endif

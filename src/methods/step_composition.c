@@ -4,21 +4,21 @@
 #include "composition.h"
 
 #define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE) \
-    static int ID##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3], \
-                          double *lambda_next, suslov_step_stats *st) \
+    static int ID##_apply(const sus_model *m, double eps, const double w[3], double w_next[3], \
+                          double *lambda_next, sus_stepper_stats *st) \
     { \
-        return suslov_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st); \
+        return sus_step_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st); \
     } \
-    static int ID##_apply_full(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att, \
+    static int ID##_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att, \
                                const double w[3], double w_next[3], double *lambda_next, \
-                               suslov_step_stats *st) \
+                               sus_stepper_stats *st) \
     { \
-        return suslov_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st); \
+        return sus_step_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st); \
     } \
-    const suslov_stepper_type suslov_##ID##_type = { \
+    const sus_stepper_type sus_step_##ID##_type = { \
         .name = NAME, .order = ORDER, .lambda_order = ORDER, .apply = ID##_apply, \
         .apply_full = ID##_apply_full, \
-        .implicit = 1, .conserves_energy = 1, .attitude = SUSLOV_ATTITUDE_QUAT, .follows_recon = 1, \
+        .implicit = 1, .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .follows_recon = 1, \
         .substeps = STAGES, .source = __FILE__};
 
 /* lambda_{k+1} = lambda(w^{k+1}) from (LagMult), as for the midpoint DSP: its order is p. Every
@@ -27,7 +27,7 @@
  * has a pole at z = 2/g_i for each negative weight, where a backward substep's linear step
  * equation is singular, and predicts neither the return near the rotation nor the Newton failures
  * from the energy ellipse (figures/stability). */
-COMPOSITION_STEPPER(comp4_s5, "comp4-s5", 4, 5, suslov_comp_suzuki4)
-COMPOSITION_STEPPER(comp6_kl, "comp6-kl", 6, 9, suslov_comp_kahan_li6)
-COMPOSITION_STEPPER(comp8_kl, "comp8-kl", 8, 17, suslov_comp_kahan_li8)
-COMPOSITION_STEPPER(comp10_ss, "comp10-ss", 10, 35, suslov_comp_sofroniou10)
+COMPOSITION_STEPPER(comp4_s5, "comp4-s5", 4, 5, sus_step_comp_suzuki4)
+COMPOSITION_STEPPER(comp6_kl, "comp6-kl", 6, 9, sus_step_comp_kahan_li6)
+COMPOSITION_STEPPER(comp8_kl, "comp8-kl", 8, 17, sus_step_comp_kahan_li8)
+COMPOSITION_STEPPER(comp10_ss, "comp10-ss", 10, 35, sus_step_comp_sofroniou10)

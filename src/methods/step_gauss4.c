@@ -22,9 +22,9 @@ static const double B[2] = {0.5, 0.5};
 static const double C[2] = {0.5 - SQRT3_6, 0.5 + SQRT3_6};
 
 /* l(W) = I_m f(W) of (ContDyn), and its Jacobian dl/dW. */
-static void l_of(const suslov_model *m, const double W[2], double l[2], double dl[2][2])
+static void l_of(const sus_model *m, const double W[2], double l[2], double dl[2][2])
 {
-    const double c = suslov_c(m, W), *b = m->b;
+    const double c = sus_c(m, W), *b = m->b;
     l[0] = -W[1] * c;
     l[1] = W[0] * c;
     dl[0][0] = -W[1] * b[0];
@@ -34,7 +34,7 @@ static void l_of(const suslov_model *m, const double W[2], double l[2], double d
 }
 
 /* (Discretization) with the collocation l: G(x) for x = (W_1, W_2), its 4 x 4 Jacobian. */
-static void gauss4_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+static void gauss4_residual(const sus_model *m, double eps, const double w[2], const double *x,
                             double *g, double *J, double *scale)
 {
     const double (*I)[3] = m->I;
@@ -60,18 +60,18 @@ static void gauss4_residual(const suslov_model *m, double eps, const double w[2]
 }
 
 /* The stages from the explicit midpoint prediction to each node c_i eps. */
-static void gauss4_guess(const suslov_model *m, double eps, const double w[2], double *x)
+static void gauss4_guess(const sus_model *m, double eps, const double w[2], double *x)
 {
-    suslov_predict(m, C[0] * eps, w, x);
-    suslov_predict(m, C[1] * eps, w, x + 2);
+    sus_predict(m, C[0] * eps, w, x);
+    sus_predict(m, C[1] * eps, w, x + 2);
 }
 
-static void gauss4_result(const suslov_model *m, double eps, const double w[2], const double *x,
+static void gauss4_result(const sus_model *m, double eps, const double w[2], const double *x,
                           double w_next[2])
 {
     double f0[2], f1[2];
-    suslov_contdyn(m, x, f0);
-    suslov_contdyn(m, x + 2, f1);
+    sus_contdyn(m, x, f0);
+    sus_contdyn(m, x + 2, f1);
     w_next[0] = w[0] + eps * (B[0] * f0[0] + B[1] * f1[0]);
     w_next[1] = w[1] + eps * (B[0] * f0[1] + B[1] * f1[1]);
 }
@@ -83,19 +83,19 @@ static double gauss4_stability(double z)
 }
 
 /* The stages x = (W_1, W_2) by Newton, w^{k+1} and lambda_{k+1} from them. */
-static int gauss4_stages(const suslov_model *m, double eps, const double w[3], double x[4], double w_next[3],
-                         double *lambda_next, suslov_step_stats *st)
+static int gauss4_stages(const sus_model *m, double eps, const double w[3], double x[4], double w_next[3],
+                         double *lambda_next, sus_stepper_stats *st)
 {
     gauss4_guess(m, eps, w, x);
-    const int status = suslov_newton_solve(gauss4_residual, 4, m, eps, w, x, st);
+    const int status = sus_step_newton_solve(gauss4_residual, 4, m, eps, w, x, st);
     gauss4_result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
-    *lambda_next = suslov_lagmult(m, w_next);
+    *lambda_next = sus_lagmult(m, w_next);
     return status;
 }
 
-static int gauss4_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
-                        double *lambda_next, suslov_step_stats *st)
+static int gauss4_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                        double *lambda_next, sus_stepper_stats *st)
 {
     double x[4];
     return gauss4_stages(m, eps, w, x, w_next, lambda_next, st);
@@ -108,7 +108,7 @@ static void kinematics(const double W[2], double M[4][4])
     for (int k = 0; k < 4; k++) {
         double e[4] = {0.0, 0.0, 0.0, 0.0}, p[4];
         e[k] = 1.0;
-        quat_mul_pure(p, e, v);
+        sus_quat_mul_pure(p, e, v);
         for (int i = 0; i < 4; i++)
             M[i][k] = p[i];
     }
@@ -126,7 +126,7 @@ static int attitude_step(double eps, const double x[4], double q[4])
         for (int c = 0; c < 8; c++)
             K[r * 8 + c] = (r == c) - 0.5 * eps * A[r / 4][c / 4] * M[c / 4][r % 4][c % 4];
     }
-    if (suslov_linear_solve(8, K, rhs, Q, &det) != 0)
+    if (sus_step_linear_solve(8, K, rhs, Q, &det) != 0)
         return -1;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 2; j++)
@@ -137,23 +137,23 @@ static int attitude_step(double eps, const double x[4], double q[4])
 
 /* The whole step: w by the collocation above, the attitude by the same collocation (whatever
  * reconstruction is asked for: it is the method's own). */
-static int gauss4_apply_full(const suslov_model *m, double eps, suslov_recon recon, suslov_attitude *att,
-                             const double w[3], double w_next[3], double *lambda_next, suslov_step_stats *st)
+static int gauss4_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
+                             const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
     (void)recon;
     double x[4], q[4];
     const int status = gauss4_stages(m, eps, w, x, w_next, lambda_next, st);
-    if (status != SUSLOV_STEP_OK)
+    if (status != SUS_STEPPER_OK)
         return status;
-    quat_of_attitude(att, q);
+    sus_quat_of_attitude(att, q);
     if (attitude_step(eps, x, q) != 0)
-        return SUSLOV_STEP_SINGULAR;
-    quat_to_attitude(q, att);
-    return SUSLOV_STEP_OK;
+        return SUS_STEPPER_SINGULAR;
+    sus_quat_to_attitude(q, att);
+    return SUS_STEPPER_OK;
 }
 
-const suslov_stepper_type suslov_gauss4_type = {
+const sus_stepper_type sus_step_gauss4_type = {
     .name = "gauss4", .order = 4, .lambda_order = 4, .apply = gauss4_apply, .apply_full = gauss4_apply_full,
     .implicit = 1, .unknowns = 4, .residual = gauss4_residual, .guess = gauss4_guess, .result = gauss4_result,
-    .stability = gauss4_stability, .conserves_energy = 1, .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1,
+    .stability = gauss4_stability, .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
     .source = __FILE__};

@@ -6,16 +6,17 @@
  * is solved by Newton from an explicit prediction. */
 #include "newton.h"
 #include "stability_fn.h"
+#include "dsp.h"
 
 #include <math.h>
 
 /* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. */
-static void mid_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+static void mid_residual(const sus_model *m, double eps, const double w[2], const double *x,
                          double *g, double *J, double *scale)
 {
     const double (*I)[3] = m->I;
     const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
-    const double c = suslov_c(m, mid);
+    const double c = sus_c(m, mid);
     const double l1 = -mid[1] * c, l2 = mid[0] * c;
     const double d0 = x[0] - w[0], d1 = x[1] - w[1];
     g[0] = I[0][0] * d0 + I[0][1] * d1 - eps * l1;
@@ -30,19 +31,19 @@ static void mid_residual(const suslov_model *m, double eps, const double w[2], c
            + eps * (fabs(l1) + fabs(l2));
 }
 
-static int midpoint_apply(const suslov_model *m, double eps, const double w[3],
-                          double w_next[3], double *lambda_next, suslov_step_stats *st)
+static int midpoint_apply(const sus_model *m, double eps, const double w[3],
+                          double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = suslov_implicit_solve(&suslov_midpoint_type, m, eps, w, w_next, st);
-    *lambda_next = suslov_lagmult(m, w_next);
+    const int status = sus_step_implicit_solve(&sus_step_midpoint_type, m, eps, w, w_next, st);
+    *lambda_next = sus_lagmult(m, w_next);
     return status;
 }
 
 /* The midpoint rule conserves the quadratic invariant E of (ContDyn). */
-const suslov_stepper_type suslov_midpoint_type = {
+const sus_stepper_type sus_step_midpoint_type = {
     .name = "midpoint", .order = 2, .lambda_order = 2, .apply = midpoint_apply,
-    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = suslov_predict,
-    .result = suslov_result_is_x,
-    .stability = suslov_stab_midpoint, .conserves_energy = 1, .follows_recon = 1, .substeps = 1,
+    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = sus_predict,
+    .result = sus_result_is_x,
+    .stability = sus_step_stab_midpoint, .conserves_energy = 1, .follows_recon = 1, .substeps = 1,
     .source = __FILE__};
-const suslov_stepper_type *const suslov_step_midpoint = &suslov_midpoint_type;
+const sus_stepper_type *const sus_step_midpoint = &sus_step_midpoint_type;

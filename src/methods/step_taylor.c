@@ -30,9 +30,9 @@
 typedef double v2d __attribute__((vector_size(16)));
 
 typedef struct {
-    v2d W[SUSLOV_TAYLOR_MAX_ORDER + 1];  /* (w1, w2) coefficients, scaled: W_n = w_n h^n */
-    v2d P[SUSLOV_TAYLOR_MAX_ORDER + 1];  /* (q0, q3) coefficients of the attitude increment */
-    v2d M[SUSLOV_TAYLOR_MAX_ORDER + 1];  /* (q1, q2) */
+    v2d W[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (w1, w2) coefficients, scaled: W_n = w_n h^n */
+    v2d P[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (q0, q3) coefficients of the attitude increment */
+    v2d M[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (q1, q2) */
 } taylor_series;
 
 /* (a, b) -> (-b, a). */
@@ -52,12 +52,12 @@ static inline v2d rot90(v2d v) { return (v2d){-v[1], v[0]}; }
  * (j = 0 and j = n) last. Always inlined with p constant and fully unrolled: loops of 1..p trips
  * cost a mispredicted exit branch each (cachegrind, taylor12: 22 mispredictions and 3260
  * instructions a step rolled, 0.2 and 2430 unrolled). */
-static inline __attribute__((always_inline)) void series(const suslov_model *m, const int p,
+static inline __attribute__((always_inline)) void series(const sus_model *m, const int p,
                                                          const double h, const double w[2], const int with_q,
                                                          taylor_series *t)
 {
-    double C[SUSLOV_TAYLOR_MAX_ORDER + 1];
-    v2d U[SUSLOV_TAYLOR_MAX_ORDER + 1];
+    double C[SUS_STEP_TAYLOR_MAX_ORDER + 1];
+    v2d U[SUS_STEP_TAYLOR_MAX_ORDER + 1];
     const v2d a0 = {m->fA[0][0], m->fA[1][0]}, a1 = {m->fA[0][1], m->fA[1][1]};
     t->W[0] = (v2d){w[0], w[1]};
     t->P[0] = (v2d){1.0, 0.0};
@@ -119,7 +119,7 @@ static inline __attribute__((always_inline)) v2d tail_sum(const v2d *X, const in
 }
 
 /* w^{k+1} = w^k + sum_{n>=1} W_n, then scaled back onto E(w^k). */
-static inline __attribute__((always_inline)) void w_next_from(const suslov_model *m, const int p,
+static inline __attribute__((always_inline)) void w_next_from(const sus_model *m, const int p,
                                                               const taylor_series *t, double w_next[3])
 {
     const v2d d = tail_sum(t->W, p);
@@ -127,7 +127,7 @@ static inline __attribute__((always_inline)) void w_next_from(const suslov_model
     w_next[0] = w[0] + d[0];
     w_next[1] = w[1] + d[1];
     w_next[2] = 0.0;
-    const double e0 = suslov_energy(m, w), e1 = suslov_energy(m, w_next);
+    const double e0 = sus_energy(m, w), e1 = sus_energy(m, w_next);
     /* An overflowed series (a step far beyond its radius) keeps its infinite energy, so the
      * driver reports the blow-up at this step instead of scaling w_next onto 0. */
     if (e1 > 0.0 && e0 > 0.0 && isfinite(e1)) {
@@ -152,9 +152,9 @@ typedef struct {
     double K, z0, beta, F;
 } taylor_majorant;
 
-static taylor_majorant majorant_of(const suslov_model *m, const double w[2])
+static taylor_majorant majorant_of(const sus_model *m, const double w[2])
 {
-    const double c = fabs(suslov_c(m, w));
+    const double c = fabs(sus_c(m, w));
     const double nAw = hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
                              m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
     taylor_majorant mj = {m->norm_b * m->norm_fA, 0.0, 0.0, c * nAw};
@@ -186,7 +186,7 @@ static double majorant_value(const taylor_majorant *mj, double t)
     return mj->beta * (1.0 + g) / (1.0 - g) - mj->z0;
 }
 
-double suslov_taylor_radius(const suslov_model *m, const double w[2])
+double sus_step_taylor_radius(const sus_model *m, const double w[2])
 {
     const taylor_majorant mj = majorant_of(m, w);
     return majorant_radius(&mj);
@@ -195,7 +195,7 @@ double suslov_taylor_radius(const suslov_model *m, const double w[2])
 /* Cauchy's estimate on a circle of radius R in (h, rho): the coefficients of y satisfy
  * y_n <= y(R) / R^n, so the tail past degree p is at most y(R) q^{p+1} / (1 - q), q = h/R; the
  * best R of a grid. */
-double suslov_taylor_tail_bound(int p, const suslov_model *m, double h, const double w[2])
+double sus_step_taylor_tail_bound(int p, const sus_model *m, double h, const double w[2])
 {
     const taylor_majorant mj = majorant_of(m, w);
     const double rho = majorant_radius(&mj);
@@ -215,63 +215,63 @@ double suslov_taylor_tail_bound(int p, const suslov_model *m, double h, const do
 /* A step outside the proved radius is refused, not summed: its sum, scaled onto the energy
  * ellipse, would be a finite but possibly meaningless w^{k+1}. stats: the step over the radius
  * (an upper bound of it below 1 from the cheap test) and |w|_2. */
-static inline __attribute__((always_inline)) int diverged(const suslov_model *m, double h, const double w[2],
-                                                          suslov_step_stats *st)
+static inline __attribute__((always_inline)) int diverged(const sus_model *m, double h, const double w[2],
+                                                          sus_stepper_stats *st)
 {
     const double a = sqrt(w[0] * w[0] + w[1] * w[1]);
-    *st = (suslov_step_stats){.residual = m->norm_b * m->norm_fA * a * fabs(h), .scale = a};
+    *st = (sus_stepper_stats){.residual = m->norm_b * m->norm_fA * a * fabs(h), .scale = a};
     if (st->residual < 1.0)
         return 0;
-    st->residual = fabs(h) / suslov_taylor_radius(m, w);
+    st->residual = fabs(h) / sus_step_taylor_radius(m, w);
     return !(st->residual < 1.0);
 }
 
-static inline __attribute__((always_inline)) int taylor_apply(const int p, const suslov_model *m, double eps,
+static inline __attribute__((always_inline)) int taylor_apply(const int p, const sus_model *m, double eps,
                                                                 const double w[3], double w_next[3],
-                                                                double *lambda_next, suslov_step_stats *st)
+                                                                double *lambda_next, sus_stepper_stats *st)
 {
     taylor_series t;
     if (diverged(m, eps, w, st))
-        return SUSLOV_STEP_DIVERGED;
+        return SUS_STEPPER_DIVERGED;
     series(m, p, eps, w, 0, &t);
     w_next_from(m, p, &t, w_next);
-    *lambda_next = suslov_lagmult(m, w_next);
-    return SUSLOV_STEP_OK;
+    *lambda_next = sus_lagmult(m, w_next);
+    return SUS_STEPPER_OK;
 }
 
-static inline __attribute__((always_inline)) int taylor_apply_full(const int p, const suslov_model *m,
-                                                                     double eps, suslov_attitude *att,
+static inline __attribute__((always_inline)) int taylor_apply_full(const int p, const sus_model *m,
+                                                                     double eps, sus_attitude *att,
                                                                      const double w[3],
                                                                      double w_next[3], double *lambda_next,
-                                                                     suslov_step_stats *st)
+                                                                     sus_stepper_stats *st)
 {
     taylor_series t;
     if (diverged(m, eps, w, st))
-        return SUSLOV_STEP_DIVERGED;
+        return SUS_STEPPER_DIVERGED;
     series(m, p, eps, w, 1, &t);
     const v2d P = tail_sum(t.P, p), M = tail_sum(t.M, p);
     const double dq[4] = {1.0 + P[0], M[0], M[1], P[1]};
     double q[4], q1[4];
-    quat_of_attitude(att, q);
-    quat_mul(q1, q, dq); /* R_{k+1} = R_k R(dq) */
-    quat_to_attitude(q1, att);
+    sus_quat_of_attitude(att, q);
+    sus_quat_mul(q1, q, dq); /* R_{k+1} = R_k R(dq) */
+    sus_quat_to_attitude(q1, att);
     w_next_from(m, p, &t, w_next);
-    *lambda_next = suslov_lagmult(m, w_next);
-    return SUSLOV_STEP_OK;
+    *lambda_next = sus_lagmult(m, w_next);
+    return SUS_STEPPER_OK;
 }
 
 /* The step with p known only at run time (not on any hot path: the registered steppers below use
  * the inlined forms with p constant). */
-int suslov_taylor_apply_full(int p, const suslov_model *m, double eps, suslov_attitude *att,
+int sus_step_taylor_apply_full(int p, const sus_model *m, double eps, sus_attitude *att,
                              const double w[3], double w_next[3], double *lambda_next,
-                             suslov_step_stats *st)
+                             sus_stepper_stats *st)
 {
     return taylor_apply_full(p, m, eps, att, w, w_next, lambda_next, st);
 }
 
 /* The truncated exponential sum_{n<=p} z^n/n!: the energy projection scales w along itself, which
  * is transverse to the linearised motion along the energy ellipse, so it does not enter. */
-double suslov_taylor_stability(int p, double z)
+double sus_step_taylor_stability(int p, double z)
 {
     double r = 1.0, t = 1.0;
     for (int n = 1; n <= p; n++) {
@@ -282,24 +282,34 @@ double suslov_taylor_stability(int p, double z)
 }
 
 #define TAYLOR_STEPPER(P)                                                                                    \
-    static int taylor##P##_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],     \
-                                 double *lambda_next, suslov_step_stats *st)                                 \
+    static int taylor##P##_apply(const sus_model *m, double eps, const double w[3], double w_next[3],        \
+                                 double *lambda_next, sus_stepper_stats *st)                                 \
     {                                                                                                        \
         return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                          \
     }                                                                                                        \
-    static int taylor##P##_apply_full(const suslov_model *m, double eps, suslov_recon recon,                 \
-                                      suslov_attitude *att, const double w[3], double w_next[3],             \
-                                      double *lambda_next, suslov_step_stats *st)                            \
+    static int taylor##P##_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,    \
+                                      const double w[3], double w_next[3], double *lambda_next,              \
+                                      sus_stepper_stats *st)                                                 \
     {                                                                                                        \
         (void)recon;                                                                                         \
         return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                                \
     }                                                                                                        \
-    double suslov_stab_taylor##P(double z) { return suslov_taylor_stability(P, z); }                         \
-    const suslov_stepper_type suslov_taylor##P##_type = {                                                    \
-        .name = "taylor" #P, .order = P, .lambda_order = P, .apply = taylor##P##_apply,                      \
-        .apply_full = taylor##P##_apply_full, .stability = suslov_stab_taylor##P, .conserves_energy = 1,     \
-        .attitude = SUSLOV_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                                \
-        .apply_order = suslov_taylor_apply_full, .source = __FILE__};
+    double sus_step_stab_taylor##P(double z)                                                                 \
+    {                                                                                                        \
+        return sus_step_taylor_stability(P, z);                                                              \
+    }                                                                                                        \
+    const sus_stepper_type sus_step_taylor##P##_type = {.name = "taylor" #P,                                 \
+                                                        .order = P,                                          \
+                                                        .lambda_order = P,                                   \
+                                                        .apply = taylor##P##_apply,                          \
+                                                        .apply_full = taylor##P##_apply_full,                \
+                                                        .stability = sus_step_stab_taylor##P,                \
+                                                        .conserves_energy = 1,                               \
+                                                        .attitude = SUS_ATTITUDE_QUAT,                       \
+                                                        .substeps = 1,                                       \
+                                                        .pre_asymptotic = 1,                                 \
+                                                        .apply_order = sus_step_taylor_apply_full,           \
+                                                        .source = __FILE__};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,
  * orders 6 to 20, issue 11 follow-up): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,

@@ -1,6 +1,7 @@
 /* The nonholonomic variational integrator of Section 5.5: (taudyn) for w^{k+1}, solved by
  * Newton from an explicit prediction, and (taualg) for lambda_{k+1}, both as printed. */
 #include "newton.h"
+#include "dsp.h"
 
 #include <math.h>
 
@@ -14,12 +15,12 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
 }
 
 /* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block). */
-static void taudyn_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+static void taudyn_residual(const sus_model *m, double eps, const double w[2], const double *x,
                             double *g, double *J, double *scale)
 {
     const double (*I)[3] = m->I;
     const double *b = m->b;
-    const double cx = suslov_c(m, x), cw = suslov_c(m, w);
+    const double cx = sus_c(m, x), cw = sus_c(m, w);
     double qx[2], qw[2];
     quartic_term(I, x, qx);
     quartic_term(I, w, qw);
@@ -46,25 +47,25 @@ static void taudyn_residual(const suslov_model *m, double eps, const double w[2]
 }
 
 /* (taualg): the multiplier after the rescaling lambda -> -lambda / eps^2. */
-static double taualg(const suslov_model *m, const double x[2], const double w[2])
+static double taualg(const sus_model *m, const double x[2], const double w[2])
 {
     const double (*I)[3] = m->I;
     return 0.5 * (x[0] * (I[1][0] * x[0] + I[1][1] * x[1]) + w[0] * (I[1][0] * w[0] + I[1][1] * w[1]))
          - 0.5 * (x[1] * (I[0][0] * x[0] + I[0][1] * x[1]) + w[1] * (I[0][0] * w[0] + I[0][1] * w[1]));
 }
 
-static int variational_apply(const suslov_model *m, double eps, const double w[3],
-                             double w_next[3], double *lambda_next, suslov_step_stats *st)
+static int variational_apply(const sus_model *m, double eps, const double w[3],
+                             double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = suslov_implicit_solve(&suslov_variational_type, m, eps, w, w_next, st);
+    const int status = sus_step_implicit_solve(&sus_step_variational_type, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
 
 /* (taudyn) is not a linear one-step map of f: no stability function. */
-const suslov_stepper_type suslov_variational_type = {
+const sus_stepper_type sus_step_variational_type = {
     .name = "variational", .order = 2, .lambda_order = -1, .apply = variational_apply,
-    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = suslov_predict,
-    .result = suslov_result_is_x,
+    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = sus_predict,
+    .result = sus_result_is_x,
     .follows_recon = 1, .substeps = 1, .source = __FILE__};
-const suslov_stepper_type *const suslov_step_variational = &suslov_variational_type;
+const sus_stepper_type *const sus_step_variational = &sus_step_variational_type;

@@ -20,6 +20,7 @@
 #include "refattitude.h"
 #include "scene.h"
 #include "so3.h"
+#include "dsp.h"
 
 #include <GL/gl.h>
 #include <cairo.h>
@@ -50,7 +51,7 @@ static void on_signal(int sig)
     }
     if (video_tmp[0])
         unlink(video_tmp);
-    atomic_file_remove_temporaries(); /* a frame being written (named fallback) */
+    sus_sys_atomic_file_remove_temporaries(); /* a frame being written (named fallback) */
     signal(sig, SIG_DFL);
     raise(sig);
 }
@@ -70,8 +71,8 @@ static void stop_video(void)
 
 /* What main allocates, released at exit on every path (an error return included). */
 static struct {
-    suslov_row *rows[2];
-    gl_context *gl;
+    sus_row *rows[2];
+    sus_plot_gl_context *gl;
     uint32_t *strip;
 } owned;
 
@@ -80,7 +81,7 @@ static void release_owned(void)
     for (int m = 0; m < 2; m++)
         free(owned.rows[m]);
     if (owned.gl)
-        gl_context_destroy(owned.gl);
+        sus_plot_gl_context_destroy(owned.gl);
     free(owned.strip);
     memset(&owned, 0, sizeof owned);
 }
@@ -180,10 +181,10 @@ static int read_config(const char *path, anim_config *c)
 
 typedef struct {
     long n;          /* rows 0..n */
-    suslov_row *rows;
+    sus_row *rows;
 } dsp_track;
 
-static int store(void *vctx, const suslov_row *row)
+static int store(void *vctx, const sus_row *row)
 {
     dsp_track *t = vctx;
     if (row->k > t->n)
@@ -199,33 +200,33 @@ static void dsp_state(const dsp_track *t, double eps, double time, double R[3][3
     long k = (long)floor(time / eps + 1e-9);
     if (k > t->n)
         k = t->n;
-    const suslov_row *r = &t->rows[k];
+    const sus_row *r = &t->rows[k];
     const double s = time - (double)k * eps;
     double xi[3] = {s * r->w[0], s * r->w[1], s * r->w[2]}, C[3][3];
-    so3_cay(xi, C);
-    mat3_mul(R, r->R, C);
+    sus_so3_cay(xi, C);
+    sus_mat3_mul(R, r->R, C);
     memcpy(w, r->w, 3 * sizeof(double));
 }
 
 static int write_attitude_csv(const char *path, const dsp_track *t, const char *const *names, int nm)
 {
     char err[256];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "animation: %s\n", err);
         return -1;
     }
     fprintf(af.fp, "method,k,t,R11,R12,R13,R21,R22,R23,R31,R32,R33\n");
     for (int m = 0; m < nm; m++)
         for (long k = 0; k <= t[m].n; k++) {
-            const suslov_row *r = &t[m].rows[k];
+            const sus_row *r = &t[m].rows[k];
             fprintf(af.fp, "%s,%ld,%.17g", names[m], r->k, r->t);
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
                     fprintf(af.fp, ",%.17g", r->R[i][j]);
             fputc('\n', af.fp);
         }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "animation: %s\n", err);
         return -1;
     }
@@ -265,7 +266,7 @@ static void label_frame(uint32_t *px, int W, int H, double time)
 static int write_surface_png(cairo_surface_t *s, const char *path)
 {
     char err[512];
-    if (plot_write_surface_png(s, path, err, sizeof err) != 0) {
+    if (sus_plot_write_surface_png(s, path, err, sizeof err) != 0) {
         fprintf(stderr, "animation: %s\n", err);
         return -1;
     }
@@ -301,17 +302,17 @@ static void handle_signals(void)
 static const char *const NAMES[2] = {"midpoint", "variational"};
 
 /* The two integrators through the driver, every step kept (N is small). */
-static int run_integrators(const anim_config *cfg, const suslov_model *model, const suslov_exact *ex,
+static int run_integrators(const anim_config *cfg, const sus_model *model, const sus_exact *ex,
                            dsp_track track[2])
 {
     const long N = (long)ceil(cfg->t_end / cfg->eps - 1e-9);
-    const suslov_stepper_type *st[2] = {suslov_step_midpoint, suslov_step_variational};
+    const sus_stepper_type *st[2] = {sus_step_midpoint, sus_step_variational};
     for (int m = 0; m < 2; m++) {
         track[m].n = N;
-        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(suslov_row));
-        const suslov_run_config rc = {model, st[m], SUSLOV_RECON_CAYLEY, cfg->eps, N, 1};
-        suslov_run_report rep;
-        if (!track[m].rows || suslov_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
+        track[m].rows = owned.rows[m] = calloc((size_t)N + 1, sizeof(sus_row));
+        const sus_run_config rc = {model, st[m], SUS_RECON_CAYLEY, cfg->eps, N, 1};
+        sus_run_report rep;
+        if (!track[m].rows || sus_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
             fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", NAMES[m], rep.step, rep.t);
             return -1;
         }
@@ -351,34 +352,34 @@ static void close_video(FILE *video, const char *mp4)
 /* What the frame loop draws from and into. */
 typedef struct {
     const anim_config *cfg;
-    const suslov_exact *ex;
+    const sus_exact *ex;
     const dsp_track *track;
-    scene sc;
+    sus_plot_scene sc;
     uint32_t *px, *strip;
     int W, H, nframes, strip_next;
-    scene_body body[3];
+    sus_plot_scene_body body[3];
 } frames;
 
 /* Frame f: the exact body and the two integrators side by side, labelled, to PNG and video. */
-static int draw_frame(frames *fr, suslov_refatt *ra, int f, const char *figdir, FILE **video)
+static int draw_frame(frames *fr, sus_refatt *ra, int f, const char *figdir, FILE **video)
 {
     const anim_config *cfg = fr->cfg;
     const int W = fr->W, H = fr->H;
     const double time = cfg->t_end * f / (fr->nframes > 1 ? fr->nframes - 1 : 1);
     double wex[2];
     char path[4096];
-    suslov_exact_omega(fr->ex, time, wex);
+    sus_exact_omega(fr->ex, time, wex);
     fr->body[0].w[0] = wex[0];
     fr->body[0].w[1] = wex[1];
-    suslov_refatt_advance(ra, time, fr->body[0].R);
+    sus_refatt_advance(ra, time, fr->body[0].R);
     for (int m = 0; m < 2; m++)
         dsp_state(&fr->track[m], cfg->eps, time, fr->body[1 + m].R, fr->body[1 + m].w);
     glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
     glViewport(0, 0, W, H);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (int b = 0; b < 3; b++) {
-        scene_body_push_trail(&fr->body[b]);
-        scene_draw(&fr->sc, &fr->body[b], b * (W / 3), 0, W / 3, H, 0);
+        sus_plot_scene_body_push_trail(&fr->body[b]);
+        sus_plot_scene_draw(&fr->sc, &fr->body[b], b * (W / 3), 0, W / 3, H, 0);
     }
     glFinish();
     label_frame(fr->px, W, H, time);
@@ -440,11 +441,11 @@ static int write_filmstrip(const frames *fr, double eps, const char *figdir)
 static int write_caption(const anim_config *cfg, const frames *fr, const char *figdir)
 {
     const int W = fr->W, H = fr->H, nframes = fr->nframes;
-    const scene_body *body = fr->body;
+    const sus_plot_scene_body *body = fr->body;
     char path[4096];
     double dist[2];
     for (int m = 0; m < 2; m++)
-        dist[m] = so3_dist(body[0].R, body[1 + m].R);
+        dist[m] = sus_so3_dist(body[0].R, body[1 + m].R);
     char cap[2048];
     snprintf(
         cap, sizeof cap,
@@ -467,7 +468,7 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
         cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps, STRIP[0] * cfg->t_end,
         STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end, STRIP[4] * cfg->t_end,
         STRIP[5] * cfg->t_end);
-    if (fig_write_text(fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+    if (sus_plot_fig_write_text(sus_plot_fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
         return -1;
     return 0;
 }
@@ -483,10 +484,10 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir)
     }
     snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
     FILE *video = open_video(cfg, figdir, mp4);
-    suslov_refatt ra;
+    sus_refatt ra;
     double I3[3][3];
-    mat3_identity(I3);
-    suslov_refatt_init(&ra, fr->ex, 0.0, I3);
+    sus_mat3_identity(I3);
+    sus_refatt_init(&ra, fr->ex, 0.0, I3);
     fr->strip = owned.strip = malloc(6 * (size_t)fr->W * fr->H * sizeof(uint32_t));
     for (int f = 0; f < fr->nframes; f++)
         if (draw_frame(fr, &ra, f, figdir, &video) != 0)
@@ -511,31 +512,32 @@ int main(int argc, char **argv)
         return 2;
     const char *figdir = argv[2], *datadir = argv[3];
     char err[256], path[4096];
-    suslov_model model;
-    suslov_exact ex;
-    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+    sus_model model;
+    sus_exact ex;
+    if (sus_model_init(&model, SUS_PAPER_INERTIA, err, sizeof err) != 0) {
         fprintf(stderr, "animation: the paper's inertia is rejected: %s\n", err);
         return 1;
     }
-    suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
+    sus_exact_init(&ex, &model, SUS_PAPER_OMEGA0);
     handle_signals();
     dsp_track track[2];
     if (run_integrators(&cfg, &model, &ex, track) != 0)
         return 3;
-    if (write_attitude_csv(fig_path(path, sizeof path, datadir, "attitude", "csv"), track, NAMES, 2) != 0)
+    if (write_attitude_csv(sus_plot_fig_path(path, sizeof path, datadir, "attitude", "csv"), track, NAMES,
+                           2) != 0)
         return 1;
     frames fr = {.cfg = &cfg, .ex = &ex, .track = track, .W = cfg.width, .H = cfg.height,
                  .nframes = (int)lround(cfg.fps * cfg.seconds)};
-    gl_context *gl = owned.gl = gl_context_create(fr.W, fr.H);
-    if (!gl || scene_init(&fr.sc, &model, fr.W / 3, fr.H) != 0) {
+    sus_plot_gl_context *gl = owned.gl = sus_plot_gl_context_create(fr.W, fr.H);
+    if (!gl || sus_plot_scene_init(&fr.sc, &model, fr.W / 3, fr.H) != 0) {
         fprintf(stderr, "animation: cannot create an off-screen OpenGL context (OSMesa)\n");
         return 1;
     }
-    fr.px = gl_context_pixels(gl);
-    const double t0 = suslov_now();
+    fr.px = sus_plot_gl_context_pixels(gl);
+    const double t0 = sus_sys_now();
     if (render(&fr, &cfg, figdir) != 0 || write_caption(&cfg, &fr, figdir) != 0)
         return 1;
-    const double elapsed = suslov_now() - t0;
+    const double elapsed = sus_sys_now() - t0;
     printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", fr.nframes, fr.W,
            fr.H, elapsed, fr.nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */

@@ -15,7 +15,7 @@
  * (src/exp/peers.c), and the error credited to a point is the one its timed runs end with. The
  * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.
  * Errors: |w(50) - w_n| against the closed form, dist(R(50), R_n) (MetMat) against the precise
- * long-double reference suslov_refatt_precise (good to ~1e-17, see refattitude.h). */
+ * long-double reference sus_refatt_precise (good to ~1e-17, see refattitude.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
 #include "driver.h"
@@ -29,6 +29,7 @@
 #include "refattitude.h"
 #include "registry.h"
 #include "so3.h"
+#include "dsp.h"
 #ifdef SUSLOV_WITH_ODEINT
 #include "bench_odeint.h"
 #endif
@@ -91,38 +92,38 @@ static void *xrealloc(void *p, size_t n, size_t size)
 
 /* ---- the problem ---- */
 
-static suslov_model model;
-static suslov_exact ex;
+static sus_model model;
+static sus_exact ex;
 static double w_T[2], R_T[3][3];
 
 /* ---- what a method is, for the bench: one predicate each, so no consumer compares names ---- */
 
 /* The Taylor methods carry their own quaternion attitude (no reconstruction to choose) and have
  * a w-step that does not depend on the attitude series. */
-static int own_attitude(const suslov_method *me) { return !me->type->follows_recon; }
+static int own_attitude(const sus_step_method *me) { return !me->type->follows_recon; }
 
 /* Keeps E, w3 = 0 and R in SO(3) by construction, as the method's type says of itself. */
-static int keeps_structure(const suslov_method *me) { return me->type->conserves_energy; }
+static int keeps_structure(const sus_step_method *me) { return me->type->conserves_energy; }
 
 /* A step made of several implicit substeps: the compositions. */
-static int composed(const suslov_method *me) { return me->type->implicit && me->type->substeps > 1; }
+static int composed(const sus_step_method *me) { return me->type->implicit && me->type->substeps > 1; }
 
 /* ---- our methods through the driver (reconstruction included), as `suslov` runs them ---- */
 
 typedef struct {
-    const suslov_stepper_type *st;
-    suslov_recon recon;
+    const sus_stepper_type *st;
+    sus_recon recon;
     long N;
     double T;
-    suslov_row last;
-    suslov_run_report rep;
+    sus_row last;
+    sus_run_report rep;
 } dsp_run;
 
 static void dsp_fn(void *vctx)
 {
     dsp_run *r = vctx;
-    const suslov_run_config cfg = {&model, r->st, r->recon, r->T / (double)r->N, r->N, r->N};
-    suslov_run(&cfg, ex.w0, suslov_keep_last, &r->last, &r->rep);
+    const sus_run_config cfg = {&model, r->st, r->recon, r->T / (double)r->N, r->N, r->N};
+    sus_run(&cfg, ex.w0, sus_keep_last, &r->last, &r->rep);
     sink += r->last.w[0];
 }
 
@@ -131,14 +132,14 @@ static int dsp_result(void *vctx, double w[2], double R[3][3])
     const dsp_run *r = vctx;
     memcpy(w, r->last.w, 2 * sizeof(double));
     memcpy(R, r->last.R, 9 * sizeof(double));
-    return r->rep.status == SUSLOV_STEP_OK;
+    return r->rep.status == SUS_STEPPER_OK;
 }
 
 /* ---- w alone (no attitude): the driver's w-steps without the reconstruction, for a user who
  * needs only w (the peers get the same choice, 2 unknowns), and the per-step cost ---- */
 
 typedef struct {
-    const suslov_stepper_type *st;
+    const sus_stepper_type *st;
     long N;
     double T, w[3], newton;
     int status;
@@ -149,10 +150,10 @@ static void w_fn(void *vctx)
     w_run *r = vctx;
     double w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam = 0.0;
     long it = 0;
-    suslov_step_stats stats;
+    sus_stepper_stats stats;
     const double eps = r->T / (double)r->N;
-    r->status = SUSLOV_STEP_OK;
-    for (long k = 0; k < r->N && r->status == SUSLOV_STEP_OK; k++) {
+    r->status = SUS_STEPPER_OK;
+    for (long k = 0; k < r->N && r->status == SUS_STEPPER_OK; k++) {
         r->status = r->st->apply(&model, eps, w, x, &lam, &stats);
         it += stats.iterations;
         w[0] = x[0];
@@ -168,13 +169,13 @@ static int w_result(void *vctx, double w[2], double R[3][3])
     const w_run *r = vctx;
     (void)R;
     memcpy(w, r->w, 2 * sizeof(double));
-    return r->status == SUSLOV_STEP_OK;
+    return r->status == SUS_STEPPER_OK;
 }
 
 /* ---- GSL odeiv2 peers (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2 ---- */
 
 typedef struct {
-    suslov_peer p;
+    sus_exp_peer p;
     double y[11];
     long steps;
     int status;
@@ -183,14 +184,14 @@ typedef struct {
 static void peer_fn(void *vctx)
 {
     peer_run *g = vctx;
-    g->status = suslov_peer_run(&g->p, ex.w0, T_END, g->y, &g->steps);
+    g->status = sus_exp_peer_run(&g->p, ex.w0, T_END, g->y, &g->steps);
     sink += g->y[0];
 }
 
 static void peer_long_fn(void *vctx)
 {
     peer_run *g = vctx;
-    g->status = suslov_peer_run(&g->p, ex.w0, T_LONG, g->y, &g->steps);
+    g->status = sus_exp_peer_run(&g->p, ex.w0, T_LONG, g->y, &g->steps);
     sink += g->y[0];
 }
 
@@ -199,7 +200,7 @@ static int peer_result(void *vctx, double w[2], double R[3][3])
     const peer_run *g = vctx;
     memcpy(w, g->y, 2 * sizeof(double));
     if (g->p.dim != 2)
-        suslov_peer_attitude(g->p.dim, g->y, R);
+        sus_exp_peer_attitude(g->p.dim, g->y, R);
     return g->status == GSL_SUCCESS;
 }
 
@@ -215,7 +216,7 @@ typedef struct {
 static void odeint_fn(void *vctx)
 {
     odeint_run *r = vctx;
-    suslov_peer_initial(r->dim, ex.w0, r->y);
+    sus_exp_peer_initial(r->dim, ex.w0, r->y);
     r->steps = suslov_odeint_run(r->o, r->T, r->y);
     sink += r->y[0];
 }
@@ -225,7 +226,7 @@ static int odeint_result(void *vctx, double w[2], double R[3][3])
     const odeint_run *r = vctx;
     memcpy(w, r->y, 2 * sizeof(double));
     if (r->dim != 2)
-        suslov_peer_attitude(r->dim, r->y, R);
+        sus_exp_peer_attitude(r->dim, r->y, R);
     return 1;
 }
 #endif
@@ -240,10 +241,10 @@ typedef struct {
     int preserves; /* keeps E, w3 = 0 and R in SO(3) by construction */
     int w_only; /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
     const char *method;
-    suslov_recon recon;
+    sus_recon recon;
     const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
     size_t dim;
-    suslov_peer_api api;
+    sus_exp_peer_api api;
     double hstart;
     int n;
     double param[MAXPTS], err_w[MAXPTS], err_R[MAXPTS], sec[MAXPTS], smin[MAXPTS], smax[MAXPTS];
@@ -288,7 +289,7 @@ static void add_point(void (*fn)(void *), int (*result)(void *, double[2], doubl
 static void errors_of(const wp_series *s, const double w[2], const double R[3][3], double *ew, double *eR)
 {
     *ew = hypot(w[0] - w_T[0], w[1] - w_T[1]);
-    *eR = s->w_only ? INFINITY : so3_dist(R_T, R);
+    *eR = s->w_only ? INFINITY : sus_so3_dist(R_T, R);
 }
 
 /* Runs ctx once and keeps the point unless the run failed or diverged (an error above 1 says
@@ -346,10 +347,10 @@ static int sweep_done(const wp_series *s)
     return 0;
 }
 
-static void sweep_ours(const suslov_method *me, suslov_recon recon)
+static void sweep_ours(const sus_step_method *me, sus_recon recon)
 {
     wp_series *s = new_series();
-    snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUSLOV_RECON_NAMES[recon]);
+    snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUS_RECON_NAMES[recon]);
     const int fine = own_attitude(me), high = me->type->order > 4;
     if (fine) /* the attitude is its own: no reconstruction */
         snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
@@ -378,7 +379,7 @@ static void sweep_ours(const suslov_method *me, suslov_recon recon)
 
 /* A Taylor method's w alone (its w-step does not depend on the attitude series, so the row's
  * suslov_args reproduce its w error), on the same N grid as sweep_ours. */
-static void sweep_ours_w(const suslov_method *me)
+static void sweep_ours_w(const sus_step_method *me)
 {
     wp_series *s = new_series();
     snprintf(s->name, sizeof s->name, "%s (w only)", me->type->name);
@@ -411,11 +412,11 @@ static const char *dim_name(size_t dim) { return dim == 11 ? "(w,R)" : dim == 6 
 #define PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / TOLS_PER_DECADE)
 #define PEER_TOL_MIN 0.99e-15
 
-static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, suslov_peer_api api, double hstart)
+static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, sus_exp_peer_api api, double hstart)
 {
     wp_series *s = new_series();
     snprintf(s->name, sizeof s->name, "GSL %s %s %s h0 %g", type->name, dim_name(dim),
-             api == SUSLOV_PEER_DRIVER ? "driver" : "evolve", hstart);
+             api == SUS_EXP_PEER_DRIVER ? "driver" : "evolve", hstart);
     s->w_only = dim == 2;
     s->type = type;
     s->dim = dim;
@@ -423,12 +424,12 @@ static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, suslov_peer_
     s->hstart = hstart;
     for (int j = 0; j < MAXPTS && PEER_TOL(j) >= PEER_TOL_MIN; j++) {
         peer_run *g = xcalloc(1, sizeof *g);
-        if (suslov_peer_open(&g->p, &model, type, dim, api, PEER_TOL(j), hstart) != 0) {
+        if (sus_exp_peer_open(&g->p, &model, type, dim, api, PEER_TOL(j), hstart) != 0) {
             fprintf(stderr, "bench: GSL allocation failed\n");
             exit(1);
         }
         if (!record(s, PEER_TOL(j), peer_fn, peer_result, g)) {
-            suslov_peer_close(&g->p);
+            sus_exp_peer_close(&g->p);
             free(g);
             continue;
         }
@@ -463,9 +464,9 @@ static void sweep_odeint(int stepper, size_t dim)
 static void calibrate_batches(void)
 {
     for (int p = 0; p < npoints; p++) {
-        const double t0 = suslov_now();
+        const double t0 = sus_sys_now();
         points[p].fn(points[p].ctx);
-        const double t1 = suslov_now() - t0;
+        const double t1 = sus_sys_now() - t0;
         points[p].batch = t1 >= BATCH_SECONDS ? 1 : (int)ceil(BATCH_SECONDS / fmax(t1, 1e-7));
     }
 }
@@ -496,7 +497,7 @@ static int timed_errors_differ(void)
 static void free_point(wp_point *pt)
 {
     if (pt->fn == peer_fn)
-        suslov_peer_close(&((peer_run *)pt->ctx)->p);
+        sus_exp_peer_close(&((peer_run *)pt->ctx)->p);
 #ifdef SUSLOV_WITH_ODEINT
     if (pt->fn == odeint_fn)
         suslov_odeint_close(((odeint_run *)pt->ctx)->o);
@@ -513,10 +514,10 @@ static int time_points(void)
         snprintf(msg, sizeof msg, "work-precision, round %d of %d (%d points)", r + 1, WP_ROUNDS, npoints);
         progress(msg);
         for (int p = 0; p < npoints; p++) {
-            const double t0 = suslov_now();
+            const double t0 = sus_sys_now();
             for (int b = 0; b < points[p].batch; b++)
                 points[p].fn(points[p].ctx);
-            points[p].t[r] = (suslov_now() - t0) / points[p].batch;
+            points[p].t[r] = (sus_sys_now() - t0) / points[p].batch;
         }
     }
     const int bad = timed_errors_differ();
@@ -605,12 +606,12 @@ static void direct_fn(void *vctx)
 {
     dsp_run *r = vctx;
     double w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam = 0.0;
-    suslov_attitude att;
-    suslov_step_stats stats;
+    sus_attitude att;
+    sus_stepper_stats stats;
     const double eps = r->T / (double)r->N;
-    suslov_attitude_identity(&att);
+    sus_attitude_identity(&att);
     for (long k = 0; k < r->N; k++) {
-        suslov_step_full(r->st, &model, eps, r->recon, &att, w, x, &lam, &stats);
+        sus_stepper_full(r->st, &model, eps, r->recon, &att, w, x, &lam, &stats);
         w[0] = x[0];
         w[1] = x[1];
     }
@@ -629,7 +630,7 @@ static void gsl_fixed_fn(void *vctx)
 {
     gsl_fixed_run *g = vctx;
     double t = 0.0;
-    suslov_peer_initial(2, ex.w0, g->y);
+    sus_exp_peer_initial(2, ex.w0, g->y);
     gsl_odeiv2_driver_reset_hstart(g->d, g->h);
     gsl_odeiv2_driver_apply_fixed_step(g->d, &t, g->h, (unsigned long)g->N, g->y);
     sink += g->y[0];
@@ -644,7 +645,7 @@ static void exact_fn(void *vctx)
     const exact_run *e = vctx;
     double acc = 0.0, w[2];
     for (long i = 0; i < e->n; i++) {
-        suslov_exact_omega(&ex, T_END * (double)i / (double)e->n, w);
+        sus_exact_omega(&ex, T_END * (double)i / (double)e->n, w);
         acc += w[0];
     }
     sink += acc;
@@ -689,16 +690,16 @@ static void take_costs(cost_cfg *cfg, int n)
         snprintf(msg, sizeof msg, "per-step costs, round %d of %d", r + 1, ROUNDS);
         progress(msg);
         for (int c = 0; c < n; c++) {
-            const double t0 = suslov_now();
+            const double t0 = sus_sys_now();
             cfg[c].fn(cfg[c].ctx);
-            cfg[c].t[r] = suslov_now() - t0;
+            cfg[c].t[r] = sus_sys_now() - t0;
         }
     }
 }
 
 static void measure_step_costs(void)
 {
-    const int nm = suslov_method_count();
+    const int nm = sus_step_method_count();
     w_run *raw = xcalloc((size_t)nm, sizeof *raw);
     dsp_run *rec = xcalloc((size_t)nm, sizeof *rec);
     cost_cfg *cfg = xcalloc((size_t)(3 * nm + 2), sizeof *cfg); /* raw, driver, GSL, exact, direct */
@@ -709,7 +710,7 @@ static void measure_step_costs(void)
     cost.ns_full_min = xcalloc((size_t)nm, sizeof(double));
     cost.newton = xcalloc((size_t)nm, sizeof(double));
     for (int m = 0; m < nm; m++) {
-        const suslov_method *me = suslov_method_get(m);
+        const sus_step_method *me = sus_step_method_get(m);
         raw[m] = (w_run){me->type, COST_STEPS, T_END, {0}, 0.0, 0};
         rec[m] = (dsp_run){me->type, me->recon, COST_STEPS, T_END, {0}, {0}};
         cfg[m] = (cost_cfg){w_fn, &raw[m], {0}};
@@ -717,7 +718,7 @@ static void measure_step_costs(void)
         cfg[2 * nm + 2 + m] = (cost_cfg){direct_fn, &rec[m], {0}};
     }
     gsl_fixed_run g = {
-        {suslov_peer_rhs_w, NULL, 2, &model}, NULL, COST_STEPS, T_END / (double)COST_STEPS, {0}};
+        {sus_exp_peer_rhs_w, NULL, 2, &model}, NULL, COST_STEPS, T_END / (double)COST_STEPS, {0}};
     if (!(g.d = gsl_odeiv2_driver_alloc_y_new(&g.sys, gsl_odeiv2_step_rk4, g.h, 1e-6, 1e-6))) {
         fprintf(stderr, "bench: GSL allocation failed\n");
         exit(1);
@@ -758,42 +759,42 @@ typedef struct {
     double e0, orth, energy, w3;
 } lr_acc;
 
-static int lr_emit(void *vctx, const suslov_row *row)
+static int lr_emit(void *vctx, const sus_row *row)
 {
     lr_acc *a = vctx;
-    a->orth = fmax(a->orth, so3_orth_defect(row->R));
-    a->energy = fmax(a->energy, fabs(suslov_energy(&model, row->w) - a->e0));
+    a->orth = fmax(a->orth, sus_so3_orth_defect(row->R));
+    a->energy = fmax(a->energy, fabs(sus_energy(&model, row->w) - a->e0));
     a->w3 = fmax(a->w3, fabs(row->w[2]));
     return 0;
 }
 
 static void long_run_ours(const wp_series *s, int j, lr_acc *a)
 {
-    const suslov_method *me = suslov_method_by_name(s->method);
+    const sus_step_method *me = sus_step_method_by_name(s->method);
     const double eps = s->param[j];
     const long N = lround(T_LONG / eps);
-    const suslov_run_config cfg = {&model, me->type, s->recon, eps, N, N / 1000 > 0 ? N / 1000 : 1};
-    suslov_run_report rep;
-    suslov_run(&cfg, ex.w0, lr_emit, a, &rep);
+    const sus_run_config cfg = {&model, me->type, s->recon, eps, N, N / 1000 > 0 ? N / 1000 : 1};
+    sus_run_report rep;
+    sus_run(&cfg, ex.w0, lr_emit, a, &rep);
 }
 
 /* For (w, q) the attitude is R(q/|q|), orthogonal by construction; ||q| - 1| is its drift,
  * reported in place of |R^T R - I|. */
 static void long_run_peer(const wp_series *s, int j, lr_acc *a)
 {
-    gsl_odeiv2_system sys = {s->dim == 11 ? suslov_peer_rhs_wR : suslov_peer_rhs_wq, NULL, s->dim, &model};
+    gsl_odeiv2_system sys = {s->dim == 11 ? sus_exp_peer_rhs_wR : sus_exp_peer_rhs_wq, NULL, s->dim, &model};
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, s->type, s->hstart, s->param[j], s->param[j]);
     double y[11], t = 0.0;
-    suslov_peer_initial(s->dim, ex.w0, y);
+    sus_exp_peer_initial(s->dim, ex.w0, y);
     for (int k = 1; d && k <= 1000; k++) {
         if (gsl_odeiv2_driver_apply(d, &t, T_LONG * k / 1000.0, y) != GSL_SUCCESS)
             break;
         double R[3][3];
-        suslov_peer_attitude(s->dim, y, R);
+        sus_exp_peer_attitude(s->dim, y, R);
         const double nq = sqrt(y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5]);
         const double w[3] = {y[0], y[1], 0.0};
-        a->orth = fmax(a->orth, s->dim == 11 ? so3_orth_defect(R) : fabs(nq - 1.0));
-        a->energy = fmax(a->energy, fabs(suslov_energy(&model, w) - a->e0));
+        a->orth = fmax(a->orth, s->dim == 11 ? sus_so3_orth_defect(R) : fabs(nq - 1.0));
+        a->energy = fmax(a->energy, fabs(sus_energy(&model, w) - a->e0));
     }
     if (d)
         gsl_odeiv2_driver_free(d);
@@ -805,7 +806,7 @@ static int long_run_wanted(const wp_series *s)
 {
     if (s->ours)
         return s->preserves && !s->w_only;
-    return s->type == gsl_odeiv2_step_rk8pd && s->api == SUSLOV_PEER_DRIVER && s->hstart == 1e-3
+    return s->type == gsl_odeiv2_step_rk8pd && s->api == SUS_EXP_PEER_DRIVER && s->hstart == 1e-3
         && s->dim != 2;
 }
 
@@ -813,7 +814,7 @@ static int long_run_wanted(const wp_series *s)
  * the peers at the tolerance that did, sampled 1000 times over [0, T_LONG]. */
 static void long_runs(void)
 {
-    const double E0 = suslov_energy(&model, ex.w0);
+    const double E0 = sus_energy(&model, ex.w0);
     LR = xcalloc((size_t)nseries, sizeof *LR);
     for (int i = 0; i < nseries; i++) {
         int j = -1;
@@ -841,9 +842,9 @@ static double min_seconds(void (*fn)(void *), void *ctx)
 {
     double best = INFINITY;
     for (int r = 0; r < EQ_REPEATS; r++) {
-        const double t0 = suslov_now();
+        const double t0 = sus_sys_now();
         fn(ctx);
-        best = fmin(best, suslov_now() - t0);
+        best = fmin(best, sus_sys_now() - t0);
     }
     return best;
 }
@@ -859,16 +860,16 @@ static long_point rk8pd_matching(double err, const double R_ref[3][3])
     for (int j = 0; PEER_TOL(j) >= PEER_TOL_MIN; j++) {
         peer_run g = {0};
         const double tol = PEER_TOL(j);
-        if (suslov_peer_open(&g.p, &model, gsl_odeiv2_step_rk8pd, 6, SUSLOV_PEER_DRIVER, tol, 1e-3) != 0)
+        if (sus_exp_peer_open(&g.p, &model, gsl_odeiv2_step_rk8pd, 6, SUS_EXP_PEER_DRIVER, tol, 1e-3) != 0)
             break;
-        g.status = suslov_peer_run(&g.p, ex.w0, T_LONG, g.y, &g.steps);
+        g.status = sus_exp_peer_run(&g.p, ex.w0, T_LONG, g.y, &g.steps);
         double R[3][3];
-        suslov_peer_attitude(6, g.y, R);
-        const double e = so3_dist(R_ref, R);
+        sus_exp_peer_attitude(6, g.y, R);
+        const double e = sus_so3_dist(R_ref, R);
         long_point lp = {INFINITY, e, PEER_TOL(j)};
         if (g.status == GSL_SUCCESS && e <= err)
             lp.sec = min_seconds(peer_long_fn, &g);
-        suslov_peer_close(&g.p);
+        sus_exp_peer_close(&g.p);
         if (isfinite(lp.sec))
             return lp;
     }
@@ -880,10 +881,10 @@ static long_point rk8pd_matching(double err, const double R_ref[3][3])
 static void print_equal_error_long(void)
 {
     double w_ref[2], R_ref[3][3];
-    suslov_refatt_precise(&model, ex.w0, T_LONG, w_ref, R_ref);
+    sus_refatt_precise(&model, ex.w0, T_LONG, w_ref, R_ref);
     for (int i = 0; i < nseries; i++) {
         const wp_series *s = S[i];
-        const suslov_method *me = s->ours && !s->w_only ? suslov_method_by_name(s->method) : NULL;
+        const sus_step_method *me = s->ours && !s->w_only ? sus_step_method_by_name(s->method) : NULL;
         int j = -1;
         for (int k = 0; me && own_attitude(me) && k < s->n && j < 0; k++)
             if (s->err_R[k] <= 1e-10)
@@ -891,7 +892,7 @@ static void print_equal_error_long(void)
         if (j < 0)
             continue;
         dsp_run r = {me->type, s->recon, lround(T_LONG / s->param[j]), T_LONG, {0}, {0}};
-        const double sec = min_seconds(dsp_fn, &r), err = so3_dist(R_ref, r.last.R);
+        const double sec = min_seconds(dsp_fn, &r), err = sus_so3_dist(R_ref, r.last.R);
         const long_point p = rk8pd_matching(err, R_ref);
         const double ratio = p.sec / sec;
         printf("  %s T = 1e4 at equal error: %s (eps %.4g) %.3g s, error %.2g, vs GSL rk8pd (w,q) tol %.2g "
@@ -905,7 +906,7 @@ static void print_equal_error_long(void)
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
     snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
-             SUSLOV_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
+             SUS_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
 }
 
 /* Runs `suslov ARGS --every N` and compares the last row's errors with the bench's: the same
@@ -933,7 +934,7 @@ static int reproduce(const char *suslov, const wp_series *s, int j, double *dw, 
     }
     const double R[3][3] = {{v[7], v[8], v[9]}, {v[10], v[11], v[12]}, {v[13], v[14], v[15]}};
     *dw = fabs(hypot(v[2] - w_T[0], v[3] - w_T[1]) - s->err_w[j]);
-    *dR = s->w_only ? 0.0 : fabs(so3_dist(R_T, R) - s->err_R[j]);
+    *dR = s->w_only ? 0.0 : fabs(sus_so3_dist(R_T, R) - s->err_R[j]);
     return 0;
 }
 
@@ -1010,7 +1011,7 @@ static void draw_wp_notes(cairo_t *cr, double y)
     };
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (size_t i = 0; i < sizeof notes / sizeof notes[0]; i++)
-        plot_text(cr, 44, y + 12.0 * (double)i, notes[i], 8, 0, 0.5, 0);
+        sus_plot_text(cr, 44, y + 12.0 * (double)i, notes[i], 8, 0, 0.5, 0);
 }
 
 #define WP_W 760.0
@@ -1019,46 +1020,50 @@ static void draw_wp_notes(cairo_t *cr, double y)
 static void draw_wp(cairo_t *cr, void *vctx)
 {
     (void)vctx;
-    static const int mk[6] = {PLOT_CIRCLE, PLOT_SQUARE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS, PLOT_DOT};
-    plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11, 0.5,
-              0.5, 1);
-    plot_style *st = xcalloc((size_t)nseries, sizeof *st), *ours = xcalloc((size_t)nseries, sizeof *ours);
+    static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
+                              SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
+    sus_plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11,
+                  0.5, 0.5, 1);
+    sus_plot_style *st = xcalloc((size_t)nseries, sizeof *st), *ours = xcalloc((size_t)nseries, sizeof *ours);
     double(*rgb)[3] = xcalloc((size_t)nseries, sizeof *rgb);
     for (int p = 0; p < 2; p++) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (int i = 0; i < nseries; i++) {
             if (p && S[i]->w_only)
                 continue; /* no attitude */
-            plot_extend(&x0, &x1, S[i]->sec, (size_t)S[i]->n, 1, 1);
-            plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
+            sus_plot_extend(&x0, &x1, S[i]->sec, (size_t)S[i]->n, 1, 1);
+            sus_plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
         }
-        plot_axes ax;
-        plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17),
+        sus_plot_axes ax;
+        sus_plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17),
                        fmin(y1, 1.0), 1, 1);
-        plot_pad(&ax.x0, &ax.x1, 1);
-        plot_pad(&ax.y0, &ax.y1, 1);
-        plot_frame(&ax, "seconds per run",
+        sus_plot_pad(&ax.x0, &ax.x1, 1);
+        sus_plot_pad(&ax.y0, &ax.y1, 1);
+        sus_plot_frame(&ax, "seconds per run",
                    p ? "attitude error dist(R(50), R\xe2\x82\x99)"
                      : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
                    p ? "(b)" : "(a)");
         int k = 0;
         for (int i = 0; i < nseries; i++) { /* peers first, underneath */
             series_colour(i, rgb[i]);
-            st[i] = plot_style_of(rgb[i], S[i]->ours ? 1.1 : 0.5, 0, S[i]->ours ? mk[k++ % 6] : PLOT_DOT,
+            st[i] =
+                sus_plot_style_of(rgb[i], S[i]->ours ? 1.1 : 0.5, 0, S[i]->ours ? mk[k++ % 6] : SUS_PLOT_DOT,
                                   S[i]->ours ? 3.5 : 2.0, S[i]->ours ? S[i]->name : NULL);
         }
         for (int pass = 0; pass < 2; pass++)
             for (int i = 0; i < nseries; i++)
                 if (S[i]->ours == pass && !(p && S[i]->w_only)) {
-                    plot_series(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, &st[i]);
-                    plot_markers(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, &st[i]);
+                    sus_plot_series(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1,
+                                    &st[i]);
+                    sus_plot_markers(&ax, S[i]->sec, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1,
+                                     &st[i]);
                 }
-        const plot_style es = plot_style_of(PLOT_BLACK, 2.2, 0, PLOT_NONE, 0, NULL);
-        plot_series(&ax, env[p].sec, env[p].err, (size_t)env[p].n, 1, &es);
+        const sus_plot_style es = sus_plot_style_of(SUS_PLOT_BLACK, 2.2, 0, SUS_PLOT_NONE, 0, NULL);
+        sus_plot_series(&ax, env[p].sec, env[p].err, (size_t)env[p].n, 1, &es);
         for (int l = 0; l < NLEVELS; l++) { /* the target accuracies */
             const double yy[2] = {LEVELS[l], LEVELS[l]}, xx[2] = {ax.x0, ax.x1};
-            const plot_style ls = plot_style_of(PLOT_GREY, 0.3, 2, PLOT_NONE, 0, NULL);
-            plot_series(&ax, xx, yy, 2, 1, &ls);
+            const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_GREY, 0.3, 2, SUS_PLOT_NONE, 0, NULL);
+            sus_plot_series(&ax, xx, yy, 2, 1, &ls);
         }
     }
     /* legend: ours in two columns below the panels, then what the peers were given */
@@ -1067,11 +1072,11 @@ static void draw_wp(cairo_t *cr, void *vctx)
         if (S[i]->ours)
             ours[nours++] = st[i];
     const int half = (nours + 1) / 2;
-    plot_axes la;
-    plot_axes_init(&la, cr, 40, 385, 330, 120, 0, 1, 0, 1, 0, 0);
-    plot_legend(&la, ours, half, 0);
-    plot_axes_init(&la, cr, 400, 385, 330, 120, 0, 1, 0, 1, 0, 0);
-    plot_legend(&la, ours + half, nours - half, 0);
+    sus_plot_axes la;
+    sus_plot_axes_init(&la, cr, 40, 385, 330, 120, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, ours, half, 0);
+    sus_plot_axes_init(&la, cr, 400, 385, 330, 120, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, ours + half, nours - half, 0);
     draw_wp_notes(cr, 400 + 11.0 * half + 12);
     free(st);
     free(ours);
@@ -1083,7 +1088,7 @@ static void draw_cost(cairo_t *cr, void *vctx)
     (void)vctx;
     const int nb = cost.n + 2;
     const double W = 90.0 + 46.0 * nb, H = 280;
-    plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
+    sus_plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
     double *v1 = xcalloc((size_t)nb, sizeof *v1), *v2 = xcalloc((size_t)nb, sizeof *v2);
     for (int m = 0; m < cost.n; m++) {
         v1[m] = cost.ns_raw[m];
@@ -1094,11 +1099,11 @@ static void draw_cost(cairo_t *cr, void *vctx)
     double hi = 0.0;
     for (int i = 0; i < nb; i++)
         hi = fmax(hi, fmax(v1[i], v2[i]));
-    plot_axes ax;
-    plot_axes_init(&ax, cr, 60, 40, W - 80, H - 100, 0.0, nb, 1.0, hi * 1.5, 0, 1);
-    plot_pad(&ax.y0, &ax.y1, 1);
+    sus_plot_axes ax;
+    sus_plot_axes_init(&ax, cr, 60, 40, W - 80, H - 100, 0.0, nb, 1.0, hi * 1.5, 0, 1);
+    sus_plot_pad(&ax.y0, &ax.y1, 1);
     ax.no_xticks = 1;
-    plot_frame(&ax, NULL, "ns per step", NULL);
+    sus_plot_frame(&ax, NULL, "ns per step", NULL);
     const double bw = ax.w / nb;
     for (int i = 0; i < nb; i++) {
         const double bx = ax.x + i * bw;
@@ -1112,24 +1117,24 @@ static void draw_cost(cairo_t *cr, void *vctx)
             cairo_rectangle(cr, bx + 0.52 * bw, ax.y + ax.h - h2, 0.36 * bw, h2);
             cairo_fill(cr);
         }
-        const char *name = i < cost.n ? suslov_method_get(i)->type->name
+        const char *name = i < cost.n ? sus_step_method_get(i)->type->name
             : i == cost.n             ? "GSL rk4"
                                       : "exact \xcf\x89(t)";
         cairo_save(cr);
         cairo_translate(cr, bx + 0.5 * bw, ax.y + ax.h + 5);
         cairo_rotate(cr, 0.7853981633974483); /* 45 degrees */
         cairo_set_source_rgb(cr, 0, 0, 0);
-        plot_text(cr, 0, 0, name, 8.0, 0.0, 0.5, 0);
+        sus_plot_text(cr, 0, 0, name, 8.0, 0.0, 0.5, 0);
         cairo_restore(cr);
         char lab[32];
         snprintf(lab, sizeof lab, "%.0f", i < cost.n ? v2[i] : v1[i]);
-        plot_text(cr, bx + 0.5 * bw, ax.y + ax.h - fmax(h1, h2) - 8, lab, 7.0, 0.5, 0.0, 0);
+        sus_plot_text(cr, bx + 0.5 * bw, ax.y + ax.h - fmax(h1, h2) - 8, lab, 7.0, 0.5, 0.0, 0);
     }
-    const plot_style leg[2] = {
-        plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, PLOT_NONE, 0, "w-step only"),
-        plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, PLOT_NONE, 0,
+    const sus_plot_style leg[2] = {
+        sus_plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0, SUS_PLOT_NONE, 0, "w-step only"),
+        sus_plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0, SUS_PLOT_NONE, 0,
                       "whole step (w, R), default reconstruction")};
-    plot_legend(&ax, leg, 2, 0);
+    sus_plot_legend(&ax, leg, 2, 0);
     free(v1);
     free(v2);
 }
@@ -1139,8 +1144,8 @@ static void draw_cost(cairo_t *cr, void *vctx)
 static int write_csv(const char *path)
 {
     char err[256], args[256];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
@@ -1162,9 +1167,9 @@ static int write_csv(const char *path)
                     S[i]->steps[j], S[i]->err_w[j], eR, S[i]->sec[j], S[i]->smin[j], S[i]->smax[j], args);
         }
     for (int m = 0; m < cost.n; m++) {
-        const suslov_method *me = suslov_method_get(m);
+        const sus_step_method *me = sus_step_method_get(m);
         fprintf(af.fp, "step,%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, cost.ns_raw[m], cost.newton[m]);
-        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUSLOV_RECON_NAMES[me->recon],
+        fprintf(af.fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, SUS_RECON_NAMES[me->recon],
                 cost.ns_full[m], cost.newton[m]);
     }
     fprintf(af.fp, "step,gsl-rk4-driver,peer,,,,,,,,,%.4g,,\n", cost.ns_gsl_rk4);
@@ -1172,7 +1177,7 @@ static int write_csv(const char *path)
     for (int i = 0; i < nlr; i++)
         fprintf(af.fp, "longrun,\"%s\",%s,,%g,,%.3g,%.3g,,,,,,\n", LR[i].name,
                 strncmp(LR[i].name, "GSL", 3) ? "ours" : "peer", T_LONG, LR[i].energy, LR[i].orth);
-    return atomic_file_commit(&af, err, sizeof err);
+    return sus_sys_atomic_file_commit(&af, err, sizeof err);
 }
 
 /* ---- the steps of main ---- */
@@ -1180,28 +1185,28 @@ static int write_csv(const char *path)
 static int set_up_problem(void)
 {
     char err[256];
-    if (suslov_model_init(&model, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+    if (sus_model_init(&model, SUS_PAPER_INERTIA, err, sizeof err) != 0) {
         fprintf(stderr, "bench: the paper's inertia is rejected: %s\n", err);
         return -1;
     }
-    suslov_exact_init(&ex, &model, SUSLOV_PAPER_OMEGA0);
-    suslov_exact_omega(&ex, T_END, w_T);
+    sus_exact_init(&ex, &model, SUS_PAPER_OMEGA0);
+    sus_exact_omega(&ex, T_END, w_T);
     double w_ref[2];
-    suslov_refatt_precise(&model, ex.w0, T_END, w_ref, R_T);
+    sus_refatt_precise(&model, ex.w0, T_END, w_ref, R_T);
     return 0;
 }
 
 static void sweep_all(void)
 {
     progress("sweeping");
-    for (int m = 0; m < suslov_method_count(); m++) {
-        const suslov_method *me = suslov_method_get(m);
+    for (int m = 0; m < sus_step_method_count(); m++) {
+        const sus_step_method *me = sus_step_method_get(m);
         sweep_ours(me, me->recon);
         if (own_attitude(me))
             sweep_ours_w(me);
         /* the symmetric Cayley reconstruction beside the default one, where it differs */
-        else if (me->type->order >= 2 && me->recon != SUSLOV_RECON_CAYLEY_MID)
-            sweep_ours(me, SUSLOV_RECON_CAYLEY_MID);
+        else if (me->type->order >= 2 && me->recon != SUS_RECON_CAYLEY_MID)
+            sweep_ours(me, SUS_RECON_CAYLEY_MID);
     }
     /* the two the issue found fastest, in every configuration a user might pick */
     const gsl_odeiv2_step_type *tuned[2] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck};
@@ -1211,9 +1216,9 @@ static void sweep_all(void)
         for (int k = 0; k < 2; k++)
             for (int api = 0; api < 2; api++)
                 for (int h = 0; h < 4; h++)
-                    sweep_gsl(tuned[k], dims[d], (suslov_peer_api)api, hstarts[h]);
-        sweep_gsl(gsl_odeiv2_step_rkf45, dims[d], SUSLOV_PEER_DRIVER, 1e-3);
-        sweep_gsl(gsl_odeiv2_step_msadams, dims[d], SUSLOV_PEER_DRIVER, 1e-3);
+                    sweep_gsl(tuned[k], dims[d], (sus_exp_peer_api)api, hstarts[h]);
+        sweep_gsl(gsl_odeiv2_step_rkf45, dims[d], SUS_EXP_PEER_DRIVER, 1e-3);
+        sweep_gsl(gsl_odeiv2_step_msadams, dims[d], SUS_EXP_PEER_DRIVER, 1e-3);
 #ifdef SUSLOV_WITH_ODEINT
         for (int k = 0; k < 2; k++)
             sweep_odeint(k, dims[d]);
@@ -1225,13 +1230,13 @@ static void print_costs(void)
 {
     printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS,
            COST_STEPS, T_END / (double)COST_STEPS);
-    const int irk4 = suslov_method_index_of(suslov_step_rk4);
+    const int irk4 = sus_step_method_index_of(sus_step_rk4);
     printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
            "x our rk4");
     for (int m = 0; m < cost.n; m++)
-        printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", suslov_method_get(m)->type->name, cost.ns_raw[m],
-               cost.ns_full[m], SUSLOV_RECON_NAMES[suslov_method_get(m)->recon], cost.newton[m],
-               cost.ns_raw[m] / cost.ns_raw[irk4]);
+        printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", sus_step_method_get(m)->type->name,
+               cost.ns_raw[m], cost.ns_full[m], SUS_RECON_NAMES[sus_step_method_get(m)->recon],
+               cost.newton[m], cost.ns_raw[m] / cost.ns_raw[irk4]);
     printf("  %-12s %10.1f\n", "GSL rk4", cost.ns_gsl_rk4);
     printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", cost.ns_exact);
 }
@@ -1239,14 +1244,14 @@ static void print_costs(void)
 /* The per-step targets; returns 1 when every implicit step passes. */
 static int print_step_targets(double *speedup)
 {
-    const int irk4 = suslov_method_index_of(suslov_step_rk4);
+    const int irk4 = sus_step_method_index_of(sus_step_rk4);
     *speedup = cost.ns_gsl_rk4 / cost.ns_raw[irk4];
     printf(
         "  %s our rk4 step is >= 5x faster than GSL rk4 through gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
         *speedup >= 5 ? "PASS" : "MISS", *speedup);
     int implicit_pass = 1;
     for (int m = 0; m < cost.n; m++) {
-        const suslov_method *me = suslov_method_get(m);
+        const sus_step_method *me = sus_step_method_get(m);
         if (!me->type->implicit || composed(me))
             continue;
         const double r = cost.ns_raw[m] / cost.ns_raw[irk4];
@@ -1255,7 +1260,7 @@ static int print_step_targets(double *speedup)
                r <= 3 ? "PASS" : "MISS", me->type->name, r, cost.newton[m]);
     }
     for (int m = 0; m < cost.n; m++) {
-        const suslov_method *me = suslov_method_get(m);
+        const sus_step_method *me = sus_step_method_get(m);
         if (!own_attitude(me))
             continue;
         const double over = cost.ns_full_min[m] / cost.ns_direct[m] - 1.0;
@@ -1278,10 +1283,10 @@ static double floor_seconds(double level, int which)
     double best = INFINITY;
     for (int i = 0; i < nseries; i++) {
         const wp_series *s = S[i];
-        const suslov_method *me = s->ours && s->preserves ? suslov_method_by_name(s->method) : NULL;
+        const sus_step_method *me = s->ours && s->preserves ? sus_step_method_by_name(s->method) : NULL;
         if (!me || me->type->implicit || (which && s->w_only))
             continue;
-        const int m = suslov_method_index(s->method);
+        const int m = sus_step_method_index(s->method);
         for (int j = 0; j < s->n; j++)
             if ((which ? s->err_R[j] : s->err_w[j]) <= level)
                 best =
@@ -1374,14 +1379,14 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
                      double ratio[2][NLEVELS])
 {
     char err[256];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
-    const int irk4 = suslov_method_index_of(suslov_step_rk4),
-              imid = suslov_method_index_of(suslov_step_midpoint),
-              ivar = suslov_method_index_of(suslov_step_variational);
+    const int irk4 = sus_step_method_index_of(sus_step_rk4),
+              imid = sus_step_method_index_of(sus_step_midpoint),
+              ivar = sus_step_method_index_of(sus_step_variational);
     fprintf(af.fp,
             "%% Generated by make bench (src/prog/bench.c): do not edit.\n"
             "\\newcommand{\\BenchRkNs}{%.3g}\n\\newcommand{\\BenchGslRkNs}{%.3g}\n"
@@ -1400,7 +1405,7 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
         fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l],
                 pass[1][l] ? "PASS" : "MISS", lvl[l], pass[0][l] ? "PASS" : "MISS");
     }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
@@ -1412,8 +1417,8 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
 static int write_what_to_use(const char *path)
 {
     char err[256], args[256];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
@@ -1434,7 +1439,7 @@ static int write_what_to_use(const char *path)
                     p.series < 0 ? NAN : S[p.series]->param[p.point], p.series < 0 ? NAN : p.sec, ratio,
                     LEVEL_TARGET[l], ratio >= LEVEL_TARGET[l] ? "PASS" : "MISS", args);
         }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
@@ -1450,12 +1455,12 @@ static int write_figures(const char *figdir)
         nours += S[i]->ours;
     /* tall enough for the legend (two columns of 11 px rows from y = 400) and eight lines of notes */
     const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 84.0 + 16.0);
-    if (plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
+    if (sus_plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
     snprintf(path, sizeof path, "%s/step_cost", figdir);
-    if (plot_write(path, 90.0 + 46.0 * (cost.n + 2), 280, draw_cost, NULL, err, sizeof err) != 0) {
+    if (sus_plot_write(path, 90.0 + 46.0 * (cost.n + 2), 280, draw_cost, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }
@@ -1486,7 +1491,7 @@ int main(int argc, char **argv)
     progress_tty = isatty(2);
     if (set_up_problem() != 0)
         return 1;
-    const double t_start = suslov_now();
+    const double t_start = sus_sys_now();
     sweep_all();
     const int differ = time_points();
     build_envelope(0, &env[0]);
@@ -1509,14 +1514,13 @@ int main(int argc, char **argv)
     print_long_runs();
     print_equal_error_long();
     check_reproduce(argv[0]);
-    printf("\nbench ran for %.1f s\n", suslov_now() - t_start);
+    printf("\nbench ran for %.1f s\n", sus_sys_now() - t_start);
     char path[4096];
-    if (write_csv(fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0
-        || write_tex(fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass,
-                     ratio)
-            != 0
-        || write_what_to_use(fig_path(path, sizeof path, argv[2], "what_to_use", "tsv")) != 0
-        || write_figures(argv[1]) != 0)
+    if (write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0 ||
+        write_tex(sus_plot_fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass,
+                  ratio) != 0 ||
+        write_what_to_use(sus_plot_fig_path(path, sizeof path, argv[2], "what_to_use", "tsv")) != 0 ||
+        write_figures(argv[1]) != 0)
         return 1;
     return 0;
 }

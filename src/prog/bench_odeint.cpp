@@ -23,10 +23,10 @@ namespace odeint = boost::numeric::odeint;
 namespace {
 
 template <std::size_t N> struct rhs {
-    const suslov_model *m;
+    const sus_model *m;
     void operator()(const std::array<double, N> &y, std::array<double, N> &f, double) const
     {
-        suslov_contdyn(m, y.data(), f.data());
+        sus_contdyn(m, y.data(), f.data());
         if constexpr (N == 11) {
             // R' = R w^ with w = (w1, w2, 0): (R w^)_ij = sum_k R_ik (w^)_kj.
             const double w0 = y[0], w1 = y[1];
@@ -40,7 +40,7 @@ template <std::size_t N> struct rhs {
         } else if constexpr (N == 6) {
             const double w[3] = {y[0], y[1], 0.0};
             double p[4];
-            quat_mul_pure(p, y.data() + 2, w);
+            sus_quat_mul_pure(p, y.data() + 2, w);
             for (int i = 0; i < 4; i++)
                 f[2 + i] = 0.5 * p[i];
         }
@@ -55,7 +55,7 @@ struct base {
 template <std::size_t N> struct rkf78 final : base {
     rhs<N> f;
     double tol;
-    rkf78(const suslov_model *m, double t) : f{m}, tol(t) {}
+    rkf78(const sus_model *m, double t) : f{m}, tol(t) {}
     long run(double T, double *y) override
     {
         std::array<double, N> s;
@@ -72,7 +72,7 @@ template <std::size_t N> struct rkf78 final : base {
 template <std::size_t N> struct bs final : base {
     rhs<N> f;
     odeint::bulirsch_stoer<std::array<double, N>> st;
-    bs(const suslov_model *m, double t) : f{m}, st(t, t) {}
+    bs(const sus_model *m, double t) : f{m}, st(t, t) {}
     long run(double T, double *y) override
     {
         std::array<double, N> s;
@@ -92,7 +92,7 @@ struct suslov_odeint {
     base *impl;
 };
 
-extern "C" suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, const suslov_model *m)
+extern "C" suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, const sus_model *m)
 {
     base *b = nullptr;
     if (stepper == SUSLOV_ODEINT_RKF78)

@@ -16,7 +16,7 @@ typedef struct suslov_odeint suslov_odeint;
 
 /* stepper SUSLOV_ODEINT_*, dim 11 ((w1, w2, R row-major)), 6 ((w1, w2, q)) or 2 ((w1, w2)), abs = rel = tol.
  * Returns NULL when out of memory. */
-suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, const suslov_model *m);
+suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, const sus_model *m);
 /* Integrates y (dim entries) from 0 to T; returns the number of steps odeint reports. */
 long suslov_odeint_run(suslov_odeint *o, double T, double *y);
 void suslov_odeint_close(suslov_odeint *o);

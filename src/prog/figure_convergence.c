@@ -5,9 +5,9 @@
 
 #include <stdio.h>
 
-static int paper_method(const suslov_method *me) { return me->paper_ref != NULL; }
+static int paper_method(const sus_step_method *me) { return me->paper_ref != NULL; }
 
-static void caption(char *buf, size_t len, const conv_fig *f)
+static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 {
     snprintf(
         buf, len,
@@ -38,13 +38,13 @@ static const int S_LOC[] = {2, 3, 5}, S_GLOB[] = {1, 2, 4}, S_SO3_LOC[] = {2, 3}
 
 int main(int argc, char **argv)
 {
-    const conv_figure_spec spec = {
+    const sus_plot_conv_figure_spec spec = {
         .name = "convergence", .select = paper_method,
-        .solid = SUSLOV_RECON_CAYLEY, .dashed = SUSLOV_RECON_CAYLEY_MID, .eps_plot_max = 1.0,
+        .solid = SUS_RECON_CAYLEY, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 1.0,
         .slopes_local = S_LOC, .slopes_global = S_GLOB, .nslopes = 3,
         .slopes_so3_local = S_SO3_LOC, .slopes_so3_global = S_SO3_GLOB, .nslopes_so3 = 2,
         /* slopes in the empty upper left, eps = 2^-8 .. 2^-6; legend lower right */
-        .slope_j = SUSLOV_CONV_J0 + 6, .slope_drop = 1.0, .legend_corner = 3, .legend_slopes = 1,
+        .slope_j = SUS_EXP_CONV_J0 + 6, .slope_drop = 1.0, .legend_corner = 3, .legend_slopes = 1,
         .caption = caption};
-    return conv_figure_main(argc, argv, &spec);
+    return sus_plot_conv_figure_main(argc, argv, &spec);
 }

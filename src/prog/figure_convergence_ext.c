@@ -8,12 +8,12 @@
 #include <stdio.h>
 
 /* The extensions, and the paper's methods that conserve E (the midpoint DSP) as the baseline. */
-static int extension_or_baseline(const suslov_method *me)
+static int extension_or_baseline(const sus_step_method *me)
 {
     return me->paper_ref == NULL || me->type->conserves_energy;
 }
 
-static void caption(char *buf, size_t len, const conv_fig *f)
+static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 {
     (void)f;
     snprintf(
@@ -41,9 +41,9 @@ int main(int argc, char **argv)
     /* No reference slopes (the curves fill the panels' lower right and the legend their upper
      * left) and no legend slopes (over the paper's window these methods are at round-off, and a
      * slope fitted to round-off means nothing). */
-    const conv_figure_spec spec = {
+    const sus_plot_conv_figure_spec spec = {
         .name = "convergence_ext", .select = extension_or_baseline,
-        .solid = SUSLOV_RECON_EXP_MID, .dashed = SUSLOV_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
+        .solid = SUS_RECON_EXP_MID, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
         .slope_drop = 1.0, .legend_corner = 0, .legend_slopes = 0, .caption = caption};
-    return conv_figure_main(argc, argv, &spec);
+    return sus_plot_conv_figure_main(argc, argv, &spec);
 }

@@ -5,19 +5,20 @@
 #include "fig_setup.h"
 #include "plot.h"
 #include "series.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUSLOV_FIG1_EPS
-#define T_END SUSLOV_FIG1_T_END
-#define EVERY SUSLOV_FIG1_EVERY
+#define EPS SUS_EXP_FIG1_EPS
+#define T_END SUS_EXP_FIG1_T_END
+#define EVERY SUS_EXP_FIG1_EVERY
 #define MARK_EVERY 50  /* markers: every 50th kept row = every 0.5 time units */
 
 typedef struct {
-    suslov_series ex, mid, var;
+    sus_exp_series ex, mid, var;
     double *dE_mid, *dE_var, *mu_mid, *mu_var;
 } fig1;
 
@@ -26,14 +27,14 @@ static void draw(cairo_t *cr, void *vctx)
     const fig1 *f = vctx;
     const double W = 540, H = 660;
     const size_t n = f->ex.n;
-    const plot_style ref = plot_style_of(PLOT_RED, 1.2, 0, PLOT_NONE, 0, "exact");
-    const plot_style mid = plot_style_of(PLOT_BLUE, 0, 0, PLOT_DOT, 2.6, "midpoint");
-    const plot_style var = plot_style_of(PLOT_GREEN, 0, 0, PLOT_DOT, 2.6, "variational");
-    const plot_style midl = plot_style_of(PLOT_BLUE, 1.0, 0, PLOT_NONE, 0, "midpoint");
-    const plot_style varl = plot_style_of(PLOT_GREEN, 1.0, 0, PLOT_NONE, 0, "variational");
+    const sus_plot_style ref = sus_plot_style_of(SUS_PLOT_RED, 1.2, 0, SUS_PLOT_NONE, 0, "exact");
+    const sus_plot_style mid = sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.6, "midpoint");
+    const sus_plot_style var = sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_DOT, 2.6, "variational");
+    const sus_plot_style midl = sus_plot_style_of(SUS_PLOT_BLUE, 1.0, 0, SUS_PLOT_NONE, 0, "midpoint");
+    const sus_plot_style varl = sus_plot_style_of(SUS_PLOT_GREEN, 1.0, 0, SUS_PLOT_NONE, 0, "variational");
     struct {
         const double *yref, *y;
-        const plot_style *st;
+        const sus_plot_style *st;
         const char *ylabel, *letter;
     } top[4] = {
         {f->ex.w1, f->mid.w1, &mid, "\xcf\x89\xe2\x82\x81 (body angular velocity)", "(a)"},
@@ -41,67 +42,67 @@ static void draw(cairo_t *cr, void *vctx)
         {f->ex.lambda, f->mid.lambda, &mid, "\xce\xbb, midpoint", "(c)"},
         {f->ex.lambda, f->var.lambda, &var, "\xce\xbb, variational", "(d)"},
     };
-    plot_text(cr, W / 2, 14,
+    sus_plot_text(cr, W / 2, 14,
               "The paper's Figure 1 redrawn: "
               "midpoint rule and variational integrator, \xce\xb5 = 10\xe2\x81\xbb\xc2\xb3",
               11, 0.5, 0.5, 1);
     for (int p = 0; p < 4; p++) {
-        plot_axes ax;
+        sus_plot_axes ax;
         double lo = INFINITY, hi = -INFINITY;
-        plot_extend(&lo, &hi, top[p].yref, n, 1, 0);
-        plot_extend(&lo, &hi, top[p].y, n, 1, 0);
-        plot_axes_cell(&ax, cr, W, H, 3, 2, p, 0.0, T_END, lo, hi, 0, 0);
-        plot_frame(&ax, "t", top[p].ylabel, top[p].letter);
-        plot_series(&ax, f->ex.t, top[p].yref, n, 1, &ref);
-        plot_markers(&ax, f->mid.t, top[p].y, n, MARK_EVERY, top[p].st);
-        const plot_style leg[2] = {ref, *top[p].st};
-        plot_legend(&ax, leg, 2, p == 1 ? 3 : 1);
+        sus_plot_extend(&lo, &hi, top[p].yref, n, 1, 0);
+        sus_plot_extend(&lo, &hi, top[p].y, n, 1, 0);
+        sus_plot_axes_cell(&ax, cr, W, H, 3, 2, p, 0.0, T_END, lo, hi, 0, 0);
+        sus_plot_frame(&ax, "t", top[p].ylabel, top[p].letter);
+        sus_plot_series(&ax, f->ex.t, top[p].yref, n, 1, &ref);
+        sus_plot_markers(&ax, f->mid.t, top[p].y, n, MARK_EVERY, top[p].st);
+        const sus_plot_style leg[2] = {ref, *top[p].st};
+        sus_plot_legend(&ax, leg, 2, p == 1 ? 3 : 1);
     }
     /* (e) the constraint: w3 = 0 exactly, and the unreduced constraint of R_k w^_k */
-    plot_axes ax;
-    plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
-    plot_frame(&ax, "t",
+    sus_plot_axes ax;
+    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
+    sus_plot_frame(&ax, "t",
                "|\xe2\x9f\xa8"
                "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
                "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
                "(e)");
-    plot_markers(&ax, f->mid.t, f->mu_mid, n, MARK_EVERY / 5, &mid);
-    plot_markers(&ax, f->var.t, f->mu_var, n, MARK_EVERY / 5, &var);
-    const plot_style lege[2] = {mid, var};
-    plot_legend(&ax, lege, 2, 1);
+    sus_plot_markers(&ax, f->mid.t, f->mu_mid, n, MARK_EVERY / 5, &mid);
+    sus_plot_markers(&ax, f->var.t, f->mu_var, n, MARK_EVERY / 5, &var);
+    const sus_plot_style lege[2] = {mid, var};
+    sus_plot_legend(&ax, lege, 2, 1);
     /* (f) energy */
-    plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, 1e-18, 1e-8, 0, 1);
-    plot_frame(&ax, "t", "|E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80|", "(f)");
-    plot_series(&ax, f->mid.t, f->dE_mid, n, 1, &midl);
-    plot_series(&ax, f->var.t, f->dE_var, n, 1, &varl);
-    const plot_style legf[2] = {midl, varl};
-    plot_legend(&ax, legf, 2, 3);
+    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, 1e-18, 1e-8, 0, 1);
+    sus_plot_frame(&ax, "t", "|E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80|", "(f)");
+    sus_plot_series(&ax, f->mid.t, f->dE_mid, n, 1, &midl);
+    sus_plot_series(&ax, f->var.t, f->dE_var, n, 1, &varl);
+    const sus_plot_style legf[2] = {midl, varl};
+    sus_plot_legend(&ax, legf, 2, 3);
 }
 
 int main(int argc, char **argv)
 {
-    suslov_model m;
-    suslov_exact ex;
-    const int setup = fig_setup_paper(argc, "fig1", &m, &ex);
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, "fig1", &m, &ex);
     if (setup != 0)
         return setup;
     char path[4096];
     fig1 f;
-    const long N = suslov_experiment_steps(T_END, EPS);
-    if (suslov_series_init(&f.ex, N, EVERY) || suslov_series_init(&f.mid, N, EVERY) ||
-        suslov_series_init(&f.var, N, EVERY)) {
+    const long N = sus_exp_experiment_steps(T_END, EPS);
+    if (sus_exp_series_init(&f.ex, N, EVERY) || sus_exp_series_init(&f.mid, N, EVERY) ||
+        sus_exp_series_init(&f.var, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");
         return 1;
     }
-    suslov_run_report rep;
-    const suslov_run_config cm = {&m, suslov_step_midpoint, SUSLOV_RECON_CAYLEY, EPS, N, EVERY};
-    const suslov_run_config cv = {&m, suslov_step_variational, SUSLOV_RECON_CAYLEY, EPS, N, EVERY};
-    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) ||
-        suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
+    sus_run_report rep;
+    const sus_run_config cm = {&m, sus_step_midpoint, SUS_RECON_CAYLEY, EPS, N, EVERY};
+    const sus_run_config cv = {&m, sus_step_variational, SUS_RECON_CAYLEY, EPS, N, EVERY};
+    if (sus_exp_series_run(&f.mid, &cm, SUS_PAPER_OMEGA0, &rep) ||
+        sus_exp_series_run(&f.var, &cv, SUS_PAPER_OMEGA0, &rep)) {
         fprintf(stderr, "figure_fig1: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
         return 3;
     }
-    suslov_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
+    sus_exp_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
     const size_t n = f.mid.n;
     double *buf = malloc(4 * n * sizeof(double));
     if (!buf)
@@ -119,7 +120,7 @@ int main(int argc, char **argv)
     const double *cols[] = {f.ex.t, f.ex.w1, f.ex.w2, f.ex.lambda, f.ex.energy,
                             f.mid.w1, f.mid.w2, f.mid.w3, f.mid.lambda, f.mid.energy, f.mid.mu,
                             f.var.w1, f.var.w2, f.var.w3, f.var.lambda, f.var.energy, f.var.mu};
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "fig1", "csv"),
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "fig1", "csv"),
                       "t,omega1_exact,omega2_exact,lambda_exact,energy_exact,"
                       "omega1_mid,omega2_mid,omega3_mid,lambda_mid,energy_mid,mu_mid,"
                       "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
@@ -146,13 +147,13 @@ int main(int argc, char **argv)
         "<= %.2g (not conserved, O(eps^2), invisible at the scale of (a)-(d)).\n"
         "max |w_mid - w_var| = %.2g over the run, against max |lambda_mid - lambda_var| = %.3g.\n"
         "Data: data/fig1.csv (every %dth step).\n",
-        T_END, N, T_END, ex.k, suslov_series_maxdiff(&f.ex, &f.var, offsetof(suslov_series, lambda)),
-        fmax(suslov_series_maxdrift(&f.mid, offsetof(suslov_series, mu)),
-             suslov_series_maxdrift(&f.var, offsetof(suslov_series, mu))),
-        suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
-        suslov_series_maxdrift(&f.var, offsetof(suslov_series, energy)),
-        fmax(suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w1)),
-             suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, w2))),
-        suslov_series_maxdiff(&f.mid, &f.var, offsetof(suslov_series, lambda)), EVERY);
-    return fig_write_figure(argv[1], "fig1", 540, 660, draw, &f, cap) != 0;
+        T_END, N, T_END, ex.k, sus_exp_series_maxdiff(&f.ex, &f.var, offsetof(sus_exp_series, lambda)),
+        fmax(sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, mu)),
+             sus_exp_series_maxdrift(&f.var, offsetof(sus_exp_series, mu))),
+        sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, energy)),
+        sus_exp_series_maxdrift(&f.var, offsetof(sus_exp_series, energy)),
+        fmax(sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, w1)),
+             sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, w2))),
+        sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, lambda)), EVERY);
+    return sus_plot_fig_write_figure(argv[1], "fig1", 540, 660, draw, &f, cap) != 0;
 }

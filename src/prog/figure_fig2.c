@@ -5,18 +5,19 @@
 #include "fig_setup.h"
 #include "plot.h"
 #include "series.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUSLOV_FIG2_EPS
-#define T_END SUSLOV_FIG2_T_END
+#define EPS SUS_EXP_FIG2_EPS
+#define T_END SUS_EXP_FIG2_T_END
 #define FINE 0.05     /* the reference line is drawn on this finer grid */
 
 typedef struct {
-    suslov_series mid, var, ex;   /* ex on the fine grid */
+    sus_exp_series mid, var, ex;   /* ex on the fine grid */
     double *dist[3];              /* |w - w_inf| for exact (fine), midpoint, variational */
     double *mu[2];
     double winf[2];
@@ -26,10 +27,10 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const fig2 *f = vctx;
     const double W = 540, H = 660;
-    const plot_style ref = plot_style_of(PLOT_RED, 1.2, 0, PLOT_NONE, 0, "exact");
-    const plot_style mid = plot_style_of(PLOT_GREEN, 0, 0, PLOT_CIRCLE, 3.2, "midpoint");
-    const plot_style var = plot_style_of(PLOT_BLUE, 0, 0, PLOT_DOT, 2.4, "variational");
-    const plot_style leg[3] = {ref, mid, var};
+    const sus_plot_style ref = sus_plot_style_of(SUS_PLOT_RED, 1.2, 0, SUS_PLOT_NONE, 0, "exact");
+    const sus_plot_style mid = sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_CIRCLE, 3.2, "midpoint");
+    const sus_plot_style var = sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.4, "variational");
+    const sus_plot_style leg[3] = {ref, mid, var};
     struct {
         const double *yref, *ym, *yv;
         const char *ylabel;
@@ -41,71 +42,71 @@ static void draw(cairo_t *cr, void *vctx)
          "E = \xc2\xbd\xe2\x9f\xa8I\xe2\x82\x98\xcf\x89, \xcf\x89\xe2\x9f\xa9"},
     };
     static const char *letters[] = {"(a)", "(b)", "(c)", "(d)", "(e)", "(f)"};
-    plot_text(cr, W / 2, 14,
+    sus_plot_text(cr, W / 2, 14,
               "The paper's Figure 2 redrawn: "
               "midpoint rule and variational integrator, \xce\xb5 = 1",
               11, 0.5, 0.5, 1);
     for (int p = 0; p < 4; p++) {
-        plot_axes ax;
+        sus_plot_axes ax;
         double lo = INFINITY, hi = -INFINITY;
-        plot_extend(&lo, &hi, panels[p].yref, f->ex.n, 1, 0);
-        plot_extend(&lo, &hi, panels[p].ym, f->mid.n, 1, 0);
-        plot_extend(&lo, &hi, panels[p].yv, f->var.n, 1, 0);
-        plot_axes_cell(&ax, cr, W, H, 3, 2, p, 0.0, T_END, lo, hi, 0, 0);
-        plot_frame(&ax, "t", panels[p].ylabel, letters[p]);
-        plot_series(&ax, f->ex.t, panels[p].yref, f->ex.n, 1, &ref);
-        plot_markers(&ax, f->mid.t, panels[p].ym, f->mid.n, 1, &mid);
-        plot_markers(&ax, f->var.t, panels[p].yv, f->var.n, 1, &var);
+        sus_plot_extend(&lo, &hi, panels[p].yref, f->ex.n, 1, 0);
+        sus_plot_extend(&lo, &hi, panels[p].ym, f->mid.n, 1, 0);
+        sus_plot_extend(&lo, &hi, panels[p].yv, f->var.n, 1, 0);
+        sus_plot_axes_cell(&ax, cr, W, H, 3, 2, p, 0.0, T_END, lo, hi, 0, 0);
+        sus_plot_frame(&ax, "t", panels[p].ylabel, letters[p]);
+        sus_plot_series(&ax, f->ex.t, panels[p].yref, f->ex.n, 1, &ref);
+        sus_plot_markers(&ax, f->mid.t, panels[p].ym, f->mid.n, 1, &mid);
+        sus_plot_markers(&ax, f->var.t, panels[p].yv, f->var.n, 1, &var);
         static const int corner[4] = {1, 1, 3, 5};
-        plot_legend(&ax, leg, 3, corner[p]);
+        sus_plot_legend(&ax, leg, 3, corner[p]);
     }
-    plot_axes ax;
-    plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
-    plot_frame(&ax, "t",
+    sus_plot_axes ax;
+    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
+    sus_plot_frame(&ax, "t",
                "|\xe2\x9f\xa8"
                "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
                "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
                letters[4]);
-    plot_markers(&ax, f->mid.t, f->mu[0], f->mid.n, 1, &mid);
-    plot_markers(&ax, f->var.t, f->mu[1], f->var.n, 1, &var);
-    plot_legend(&ax, leg + 1, 2, 1);
+    sus_plot_markers(&ax, f->mid.t, f->mu[0], f->mid.n, 1, &mid);
+    sus_plot_markers(&ax, f->var.t, f->mu[1], f->var.n, 1, &var);
+    sus_plot_legend(&ax, leg + 1, 2, 1);
     double lo = INFINITY, hi = -INFINITY;
-    plot_extend(&lo, &hi, f->dist[1], f->mid.n, 1, 1);
-    plot_extend(&lo, &hi, f->dist[2], f->var.n, 1, 1);
-    plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, fmax(lo, 1e-17), hi, 0, 1);
-    plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
+    sus_plot_extend(&lo, &hi, f->dist[1], f->mid.n, 1, 1);
+    sus_plot_extend(&lo, &hi, f->dist[2], f->var.n, 1, 1);
+    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, fmax(lo, 1e-17), hi, 0, 1);
+    sus_plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
                letters[5]);
-    plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
-    plot_markers(&ax, f->mid.t, f->dist[1], f->mid.n, 1, &mid);
-    plot_markers(&ax, f->var.t, f->dist[2], f->var.n, 1, &var);
-    plot_legend(&ax, leg, 3, 2);
+    sus_plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
+    sus_plot_markers(&ax, f->mid.t, f->dist[1], f->mid.n, 1, &mid);
+    sus_plot_markers(&ax, f->var.t, f->dist[2], f->var.n, 1, &var);
+    sus_plot_legend(&ax, leg, 3, 2);
 }
 
 int main(int argc, char **argv)
 {
-    suslov_model m;
-    suslov_exact ex;
-    const int setup = fig_setup_paper(argc, "fig2", &m, &ex);
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, "fig2", &m, &ex);
     if (setup != 0)
         return setup;
     char path[4096];
     fig2 f;
-    suslov_exact_limit(&ex, f.winf);
-    const long N = suslov_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
-    if (suslov_series_init(&f.mid, N, 1) || suslov_series_init(&f.var, N, 1) ||
-        suslov_series_init(&f.ex, NF, 1)) {
+    sus_exact_limit(&ex, f.winf);
+    const long N = sus_exp_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
+    if (sus_exp_series_init(&f.mid, N, 1) || sus_exp_series_init(&f.var, N, 1) ||
+        sus_exp_series_init(&f.ex, NF, 1)) {
         fprintf(stderr, "figure_fig2: out of memory\n");
         return 1;
     }
-    suslov_run_report rep;
-    const suslov_run_config cm = {&m, suslov_step_midpoint, SUSLOV_RECON_CAYLEY, EPS, N, 1};
-    const suslov_run_config cv = {&m, suslov_step_variational, SUSLOV_RECON_CAYLEY, EPS, N, 1};
-    if (suslov_series_run(&f.mid, &cm, SUSLOV_PAPER_OMEGA0, &rep) ||
-        suslov_series_run(&f.var, &cv, SUSLOV_PAPER_OMEGA0, &rep)) {
+    sus_run_report rep;
+    const sus_run_config cm = {&m, sus_step_midpoint, SUS_RECON_CAYLEY, EPS, N, 1};
+    const sus_run_config cv = {&m, sus_step_variational, SUS_RECON_CAYLEY, EPS, N, 1};
+    if (sus_exp_series_run(&f.mid, &cm, SUS_PAPER_OMEGA0, &rep) ||
+        sus_exp_series_run(&f.var, &cv, SUS_PAPER_OMEGA0, &rep)) {
         fprintf(stderr, "figure_fig2: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
         return 3;
     }
-    suslov_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
+    sus_exp_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
     double *buf = malloc((f.ex.n + 4 * f.mid.n) * sizeof(double));
     if (!buf)
         return 1;
@@ -123,14 +124,14 @@ int main(int argc, char **argv)
         f.mu[1][i] = fabs(f.var.mu[i]);
     }
     /* the reference at the step times, for the data file */
-    suslov_series exs;
-    if (suslov_series_init(&exs, N, 1))
+    sus_exp_series exs;
+    if (sus_exp_series_init(&exs, N, 1))
         return 1;
-    suslov_series_exact(&exs, &ex, EPS, f.mid.n);
+    sus_exp_series_exact(&exs, &ex, EPS, f.mid.n);
     const double *cols[] = {f.mid.t, exs.w1, exs.w2, exs.lambda, exs.energy,
                             f.mid.w1, f.mid.w2, f.mid.w3, f.mid.lambda, f.mid.energy, f.mid.mu,
                             f.var.w1, f.var.w2, f.var.w3, f.var.lambda, f.var.energy, f.var.mu};
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "fig2", "csv"),
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "fig2", "csv"),
                       "t,omega1_exact,omega2_exact,lambda_exact,energy_exact,"
                       "omega1_mid,omega2_mid,omega3_mid,lambda_mid,energy_mid,mu_mid,"
                       "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
@@ -156,8 +157,8 @@ int main(int argc, char **argv)
         "reproduced;\n"
         "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
         "Data: data/fig2.csv (every step).\n",
-        T_END, N, f.winf[0], f.winf[1], suslov_series_maxdrift(&f.mid, offsetof(suslov_series, energy)),
+        T_END, N, f.winf[0], f.winf[1], sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, energy)),
         f.dist[1][last], f.var.energy[0] - f.var.energy[last],
         100.0 * (f.var.energy[0] - f.var.energy[last]) / f.var.energy[0], f.dist[2][last]);
-    return fig_write_figure(argv[1], "fig2", 540, 660, draw, &f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "fig2", 540, 660, draw, &f, cap) != 0;
 }

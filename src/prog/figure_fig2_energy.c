@@ -8,15 +8,16 @@
 #include "midpoint_sweeps.h"
 #include "plot.h"
 #include "series.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUSLOV_FIG2_EPS
-#define T_END SUSLOV_FIG2_T_END
+#define EPS SUS_EXP_FIG2_EPS
+#define T_END SUS_EXP_FIG2_T_END
 #define N_STEPS 200   /* T_END / EPS, checked in main */
-#define NSWEEP SUSLOV_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
+#define NSWEEP SUS_EXP_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
 #define NCURVE 6      /* Newton, n = 1, 2, 3, 5, variational */
 
 static const int curve_sweeps[NCURVE] = {0, 1, 2, 3, 5, -1}; /* 0 = Newton, -1 = variational */
@@ -28,7 +29,7 @@ typedef struct {
     double var_final, newton_final;
 } readings;
 
-static plot_style curve_style(int c)
+static sus_plot_style curve_style(int c)
 {
     static const char *labels[NCURVE] = {"midpoint, Newton",
                                          "1 sweep (= explicit Euler)",
@@ -36,41 +37,44 @@ static plot_style curve_style(int c)
                                          "3 sweeps",
                                          "5 sweeps",
                                          "variational"};
-    const double *colours[NCURVE] = {PLOT_GREEN, PLOT_ORANGE, PLOT_PURPLE, PLOT_GREY, PLOT_BLACK, PLOT_BLUE};
-    return plot_style_of(colours[c], c == 0 || c == NCURVE - 1 ? 1.6 : 1.0, c >= 3 && c < NCURVE - 1 ? 1 : 0,
-                         PLOT_NONE, 0, labels[c]);
+    const double *colours[NCURVE] = {SUS_PLOT_GREEN, SUS_PLOT_ORANGE, SUS_PLOT_PURPLE,
+                                     SUS_PLOT_GREY,  SUS_PLOT_BLACK,  SUS_PLOT_BLUE};
+    return sus_plot_style_of(colours[c], c == 0 || c == NCURVE - 1 ? 1.6 : 1.0,
+                             c >= 3 && c < NCURVE - 1 ? 1 : 0, SUS_PLOT_NONE, 0, labels[c]);
 }
 
 static void draw(cairo_t *cr, void *vctx)
 {
     const readings *r = vctx;
     const double W = 560, H = 520;
-    plot_style st[NCURVE];
+    sus_plot_style st[NCURVE];
     for (int c = 0; c < NCURVE; c++)
         st[c] = curve_style(c);
-    plot_text(cr, W / 2, 14,
+    sus_plot_text(cr, W / 2, 14,
               "Energy of the midpoint rule at \xce\xb5 = 1: every reading of its implicit equation", 11, 0.5,
               0.5, 1);
-    plot_axes ax;
+    sus_plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     for (int c = 0; c < NCURVE; c++)
-        plot_extend(&lo, &hi, r->dE[c], N_STEPS + 1, 1, 0);
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 0, 0.0, T_END, lo, hi, 0, 0);
-    plot_frame(&ax, "t", "E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80", "(a)");
+        sus_plot_extend(&lo, &hi, r->dE[c], N_STEPS + 1, 1, 0);
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 0, 0.0, T_END, lo, hi, 0, 0);
+    sus_plot_frame(&ax, "t", "E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80", "(a)");
     for (int c = 0; c < NCURVE; c++)
-        plot_series(&ax, r->t, r->dE[c], N_STEPS + 1, 1, &st[c]);
-    plot_legend(&ax, st, NCURVE, 5);
+        sus_plot_series(&ax, r->t, r->dE[c], N_STEPS + 1, 1, &st[c]);
+    sus_plot_legend(&ax, st, NCURVE, 5);
 
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 1, 0.0, T_END, 1e-17, 1e-1, 0, 1);
-    plot_frame(&ax, "t", "|E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80|", "(b)");
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 1, 0.0, T_END, 1e-17, 1e-1, 0, 1);
+    sus_plot_frame(&ax, "t", "|E\xe2\x82\x96 \xe2\x88\x92 E\xe2\x82\x80|", "(b)");
     for (int c = 0; c < NCURVE; c++)
-        plot_series(&ax, r->t, r->adE[c], N_STEPS + 1, 1, &st[c]);
+        sus_plot_series(&ax, r->t, r->adE[c], N_STEPS + 1, 1, &st[c]);
 
     /* (c) |E_N - E_0| against the number of sweeps; the variational value as a line */
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0.5, NSWEEP + 0.5, 1e-12, 1e-1, 0, 1);
-    plot_frame(&ax, "fixed-point sweeps n", "|E\xe2\x82\x99 \xe2\x88\x92 E\xe2\x82\x80| at t = 200", "(c)");
-    const plot_style decay = plot_style_of(PLOT_PURPLE, 0, 0, PLOT_DOT, 5, "energy lost (decay)");
-    const plot_style grow = plot_style_of(PLOT_ORANGE, 0, 0, PLOT_SQUARE, 5, "energy gained");
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0.5, NSWEEP + 0.5, 1e-12, 1e-1, 0, 1);
+    sus_plot_frame(&ax, "fixed-point sweeps n", "|E\xe2\x82\x99 \xe2\x88\x92 E\xe2\x82\x80| at t = 200",
+                   "(c)");
+    const sus_plot_style decay =
+        sus_plot_style_of(SUS_PLOT_PURPLE, 0, 0, SUS_PLOT_DOT, 5, "energy lost (decay)");
+    const sus_plot_style grow = sus_plot_style_of(SUS_PLOT_ORANGE, 0, 0, SUS_PLOT_SQUARE, 5, "energy gained");
     double xd[NSWEEP], yd[NSWEEP], xg[NSWEEP], yg[NSWEEP];
     int nd = 0, ng = 0;
     for (int i = 0; i < NSWEEP; i++) {
@@ -82,19 +86,20 @@ static void draw(cairo_t *cr, void *vctx)
             yg[ng++] = r->final_adE[i];
         }
     }
-    plot_markers(&ax, xd, yd, (size_t)nd, 1, &decay);
-    plot_markers(&ax, xg, yg, (size_t)ng, 1, &grow);
+    sus_plot_markers(&ax, xd, yd, (size_t)nd, 1, &decay);
+    sus_plot_markers(&ax, xg, yg, (size_t)ng, 1, &grow);
     const double hx[2] = {0.5, NSWEEP + 0.5}, hy[2] = {r->var_final, r->var_final};
-    const plot_style varl = plot_style_of(PLOT_BLUE, 1.2, 1, PLOT_NONE, 0, "variational (decay)");
-    plot_series(&ax, hx, hy, 2, 1, &varl);
-    const plot_style legc[3] = {decay, grow, varl};
-    plot_legend(&ax, legc, 3, 1);
+    const sus_plot_style varl =
+        sus_plot_style_of(SUS_PLOT_BLUE, 1.2, 1, SUS_PLOT_NONE, 0, "variational (decay)");
+    sus_plot_series(&ax, hx, hy, 2, 1, &varl);
+    const sus_plot_style legc[3] = {decay, grow, varl};
+    sus_plot_legend(&ax, legc, 3, 1);
 
     /* (d) the caption in words, measured numbers */
     double x, y, w, h;
     char line[160];
-    plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
-    plot_text(cr, x - 44, y - 6, "(d)", 10.5, 0.0, 1.0, 1);
+    sus_plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
+    sus_plot_text(cr, x - 44, y - 6, "(d)", 10.5, 0.0, 1.0, 1);
     const char *text[] = {"The paper: the variational integrator preserves",
                           "energy much better; the midpoint rule shows a",
                           "\"fast decay\" of energy (Figure 2).",
@@ -116,35 +121,35 @@ static void draw(cairo_t *cr, void *vctx)
     text[8] = l8;
     for (int i = 0; i < (int)(sizeof text / sizeof text[0]); i++) {
         snprintf(line, sizeof line, "%s", text[i]);
-        plot_text(cr, x - 30, y + 6 + 13.5 * i, line, 8.6, 0.0, 0.0, 0);
+        sus_plot_text(cr, x - 30, y + 6 + 13.5 * i, line, 8.6, 0.0, 0.0, 0);
     }
 }
 
 /* Each curve of (a)-(b): E_k - E_0 along the run of its reading. Returns 3 when a run fails. */
-static int run_curves(const suslov_model *m, readings *r)
+static int run_curves(const sus_model *m, readings *r)
 {
     double E[N_STEPS + 1], wN[2];
     for (int c = 0; c < NCURVE; c++) {
         if (curve_sweeps[c] > 0) {
-            suslov_midpoint_sweeps_run(m, EPS, curve_sweeps[c], SUSLOV_PAPER_OMEGA0, N_STEPS, E, wN);
+            sus_exp_midpoint_sweeps_run(m, EPS, curve_sweeps[c], SUS_PAPER_OMEGA0, N_STEPS, E, wN);
         } else {
-            suslov_series s;
-            suslov_run_report rep;
-            const suslov_run_config cfg = {
+            sus_exp_series s;
+            sus_run_report rep;
+            const sus_run_config cfg = {
                 m,
-                curve_sweeps[c] == 0 ? suslov_step_midpoint : suslov_step_variational,
-                SUSLOV_RECON_CAYLEY,
+                curve_sweeps[c] == 0 ? sus_step_midpoint : sus_step_variational,
+                SUS_RECON_CAYLEY,
                 EPS,
                 N_STEPS,
                 1};
-            if (suslov_series_init(&s, N_STEPS, 1) ||
-                suslov_series_run(&s, &cfg, SUSLOV_PAPER_OMEGA0, &rep)) {
+            if (sus_exp_series_init(&s, N_STEPS, 1) ||
+                sus_exp_series_run(&s, &cfg, SUS_PAPER_OMEGA0, &rep)) {
                 fprintf(stderr, "figure_fig2_energy: run failed\n");
                 return 3;
             }
             for (int k = 0; k <= N_STEPS; k++)
                 E[k] = s.energy[k];
-            suslov_series_free(&s);
+            sus_exp_series_free(&s);
         }
         for (int k = 0; k <= N_STEPS; k++) {
             r->dE[c][k] = E[k] - E[0];
@@ -156,13 +161,13 @@ static int run_curves(const suslov_model *m, readings *r)
 
 int main(int argc, char **argv)
 {
-    suslov_model m;
-    suslov_exact ex;
-    const int setup = fig_setup_paper(argc, "fig2_energy", &m, &ex);
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, "fig2_energy", &m, &ex);
     if (setup != 0)
         return setup;
     char path[4096];
-    if (suslov_experiment_steps(T_END, EPS) != N_STEPS) {
+    if (sus_exp_experiment_steps(T_END, EPS) != N_STEPS) {
         fprintf(stderr, "figure_fig2_energy: N_STEPS does not match src/exp/experiments.h\n");
         return 1;
     }
@@ -178,13 +183,13 @@ int main(int argc, char **argv)
     r->newton_final = r->adE[0][N_STEPS];
     for (int i = 0; i < NSWEEP; i++) {
         r->n[i] = i + 1;
-        suslov_midpoint_sweeps_run(&m, EPS, i + 1, SUSLOV_PAPER_OMEGA0, N_STEPS, E, wN);
+        sus_exp_midpoint_sweeps_run(&m, EPS, i + 1, SUS_PAPER_OMEGA0, N_STEPS, E, wN);
         r->final_dE[i] = E[N_STEPS] - E[0];
         r->final_adE[i] = fabs(r->final_dE[i]);
     }
     r->var_final = fabs(r->var_final);
     const double *cols[] = {r->t, r->dE[0], r->dE[1], r->dE[2], r->dE[3], r->dE[4], r->dE[5]};
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "fig2_energy", "csv"),
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "fig2_energy", "csv"),
                       "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_"
                       "sweeps5,dE_variational",
                       7, cols, N_STEPS + 1, 1) != 0)
@@ -209,5 +214,5 @@ int main(int argc, char **argv)
         "Data: data/fig2_energy.csv.\n",
         T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
         r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
-    return fig_write_figure(argv[1], "fig2_energy", 560, 520, draw, r, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "fig2_energy", 560, 520, draw, r, cap) != 0;
 }

@@ -10,12 +10,12 @@
 #include <math.h>
 #include <stdio.h>
 
-#define T_END SUSLOV_INERTIA_T_END
-#define DT SUSLOV_INERTIA_DT
+#define T_END SUS_EXP_INERTIA_T_END
+#define DT SUS_EXP_INERTIA_DT
 #define NPTS 1201     /* T_END / DT + 1, checked in main */
 
 typedef struct {
-    suslov_series row, col;
+    sus_exp_series row, col;
     double dist[NPTS];
     double k_row, k_col;
 } inertia_fig;
@@ -24,63 +24,64 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const inertia_fig *f = vctx;
     const double W = 560, H = 420;
-    const plot_style r1 = plot_style_of(PLOT_RED, 1.4, 0, PLOT_NONE, 0,
+    const sus_plot_style r1 = sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0,
                                         "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
-    const plot_style r2 = plot_style_of(PLOT_RED, 1.4, 1, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third row");
-    const plot_style c1 =
-        plot_style_of(PLOT_BLUE, 1.4, 0, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
-    const plot_style c2 =
-        plot_style_of(PLOT_BLUE, 1.4, 1, PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
-    plot_text(cr, W / 2, 14,
+    const sus_plot_style r2 =
+        sus_plot_style_of(SUS_PLOT_RED, 1.4, 1, SUS_PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third row");
+    const sus_plot_style c1 = sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 0, SUS_PLOT_NONE, 0,
+                                                "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
+    const sus_plot_style c2 =
+        sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 1, SUS_PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
+    sus_plot_text(cr, W / 2, 14,
               "Which inertia? The printed I is not symmetric (I\xe2\x82\x82\xe2\x82\x83 = 0.2, "
               "I\xe2\x82\x83\xe2\x82\x82 = 0.1)",
               11, 0.5, 0.5, 1);
-    plot_axes ax;
+    sus_plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
-    plot_extend(&lo, &hi, f->row.w1, f->row.n, 1, 0);
-    plot_extend(&lo, &hi, f->row.w2, f->row.n, 1, 0);
-    plot_extend(&lo, &hi, f->col.w1, f->col.n, 1, 0);
-    plot_extend(&lo, &hi, f->col.w2, f->col.n, 1, 0);
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 0, 0, T_END, lo, hi, 0, 0);
-    plot_frame(&ax, "t", "\xcf\x89 (exact)", "(a)");
-    plot_series(&ax, f->row.t, f->row.w1, f->row.n, 1, &r1);
-    plot_series(&ax, f->row.t, f->row.w2, f->row.n, 1, &r2);
-    plot_series(&ax, f->col.t, f->col.w1, f->col.n, 1, &c1);
-    plot_series(&ax, f->col.t, f->col.w2, f->col.n, 1, &c2);
+    sus_plot_extend(&lo, &hi, f->row.w1, f->row.n, 1, 0);
+    sus_plot_extend(&lo, &hi, f->row.w2, f->row.n, 1, 0);
+    sus_plot_extend(&lo, &hi, f->col.w1, f->col.n, 1, 0);
+    sus_plot_extend(&lo, &hi, f->col.w2, f->col.n, 1, 0);
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 0, 0, T_END, lo, hi, 0, 0);
+    sus_plot_frame(&ax, "t", "\xcf\x89 (exact)", "(a)");
+    sus_plot_series(&ax, f->row.t, f->row.w1, f->row.n, 1, &r1);
+    sus_plot_series(&ax, f->row.t, f->row.w2, f->row.n, 1, &r2);
+    sus_plot_series(&ax, f->col.t, f->col.w1, f->col.n, 1, &c1);
+    sus_plot_series(&ax, f->col.t, f->col.w2, f->col.n, 1, &c2);
     lo = INFINITY;
     hi = -INFINITY;
-    plot_extend(&lo, &hi, f->row.lambda, f->row.n, 1, 0);
-    plot_extend(&lo, &hi, f->col.lambda, f->col.n, 1, 0);
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 1, 0, T_END, lo, hi, 0, 0);
-    plot_frame(&ax, "t", "\xce\xbb (exact)", "(b)");
-    const plot_style lr = plot_style_of(PLOT_RED, 1.4, 0, PLOT_NONE, 0, "third row");
-    const plot_style lc = plot_style_of(PLOT_BLUE, 1.4, 0, PLOT_NONE, 0, "third column");
-    plot_series(&ax, f->row.t, f->row.lambda, f->row.n, 1, &lr);
-    plot_series(&ax, f->col.t, f->col.lambda, f->col.n, 1, &lc);
-    const plot_style legb[2] = {lr, lc};
-    plot_legend(&ax, legb, 2, 3);
+    sus_plot_extend(&lo, &hi, f->row.lambda, f->row.n, 1, 0);
+    sus_plot_extend(&lo, &hi, f->col.lambda, f->col.n, 1, 0);
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 1, 0, T_END, lo, hi, 0, 0);
+    sus_plot_frame(&ax, "t", "\xce\xbb (exact)", "(b)");
+    const sus_plot_style lr = sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0, "third row");
+    const sus_plot_style lc = sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 0, SUS_PLOT_NONE, 0, "third column");
+    sus_plot_series(&ax, f->row.t, f->row.lambda, f->row.n, 1, &lr);
+    sus_plot_series(&ax, f->col.t, f->col.lambda, f->col.n, 1, &lc);
+    const sus_plot_style legb[2] = {lr, lc};
+    sus_plot_legend(&ax, legb, 2, 3);
     lo = INFINITY;
     hi = -INFINITY;
-    plot_extend(&lo, &hi, f->dist, f->row.n, 1, 0);
-    plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0, T_END, 0.0, hi, 0, 0);
-    plot_frame(&ax, "t", "|\xcf\x89_row \xe2\x88\x92 \xcf\x89_col|", "(c)");
-    const plot_style d = plot_style_of(PLOT_BLACK, 1.4, 0, PLOT_NONE, 0, NULL);
-    plot_series(&ax, f->row.t, f->dist, f->row.n, 1, &d);
+    sus_plot_extend(&lo, &hi, f->dist, f->row.n, 1, 0);
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0, T_END, 0.0, hi, 0, 0);
+    sus_plot_frame(&ax, "t", "|\xcf\x89_row \xe2\x88\x92 \xcf\x89_col|", "(c)");
+    const sus_plot_style d = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 0, SUS_PLOT_NONE, 0, NULL);
+    sus_plot_series(&ax, f->row.t, f->dist, f->row.n, 1, &d);
     /* (d): the legend of (a), with the rates */
     double x, y, w, h;
-    plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
-    plot_axes_init(&ax, cr, x - 40, y, w + 40, 62, 0, 1, 0, 1, 0, 0);
-    const plot_style lega[4] = {r1, r2, c1, c2};
-    plot_legend(&ax, lega, 4, 0);
+    sus_plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
+    sus_plot_axes_init(&ax, cr, x - 40, y, w + 40, 62, 0, 1, 0, 1, 0, 0);
+    const sus_plot_style lega[4] = {r1, r2, c1, c2};
+    sus_plot_legend(&ax, lega, 4, 0);
     char line[128];
     snprintf(line, sizeof line, "rate k to the steady rotation: %.4f (row), %.4f (column)", f->k_row,
              f->k_col);
-    plot_text(cr, x - 36, y + 76, line, 8.0, 0.0, 0.0, 0);
-    plot_text(
+    sus_plot_text(cr, x - 36, y + 76, line, 8.0, 0.0, 0.0, 0);
+    sus_plot_text(
         cr, x - 36, y + 90,
         "Only I_m and (I\xe2\x82\x83\xe2\x82\x81, I\xe2\x82\x83\xe2\x82\x82) enter (ContDyn)/(LagMult);", 8.0,
         0.0, 0.0, 0);
-    plot_text(cr, x - 36, y + 102, "all our other figures use the row as printed.", 8.0, 0.0, 0.0, 0);
+    sus_plot_text(cr, x - 36, y + 102, "all our other figures use the row as printed.", 8.0, 0.0, 0.0, 0);
 }
 
 int main(int argc, char **argv)
@@ -93,30 +94,30 @@ int main(int argc, char **argv)
     char err[256], path[4096];
     static inertia_fig f;
     double Icol[9];
-    suslov_model mr, mc;
-    suslov_exact er, ec;
-    if (suslov_experiment_steps(T_END, DT) + 1 != NPTS) {
+    sus_model mr, mc;
+    sus_exact er, ec;
+    if (sus_exp_experiment_steps(T_END, DT) + 1 != NPTS) {
         fprintf(stderr, "figure_inertia: NPTS does not match src/exp/experiments.h\n");
         return 1;
     }
-    suslov_inertia_column_swap(SUSLOV_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
-    if (suslov_model_init(&mr, SUSLOV_PAPER_INERTIA, err, sizeof err) ||
-        suslov_model_init(&mc, Icol, err, sizeof err)) {
+    sus_exp_inertia_column_swap(SUS_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
+    if (sus_model_init(&mr, SUS_PAPER_INERTIA, err, sizeof err) ||
+        sus_model_init(&mc, Icol, err, sizeof err)) {
         fprintf(stderr, "figure_inertia: an inertia tensor is rejected: %s\n", err);
         return 1;
     }
-    suslov_exact_init(&er, &mr, SUSLOV_PAPER_OMEGA0);
-    suslov_exact_init(&ec, &mc, SUSLOV_PAPER_OMEGA0);
+    sus_exact_init(&er, &mr, SUS_PAPER_OMEGA0);
+    sus_exact_init(&ec, &mc, SUS_PAPER_OMEGA0);
     f.k_row = er.k;
     f.k_col = ec.k;
-    if (suslov_series_init(&f.row, NPTS - 1, 1) || suslov_series_init(&f.col, NPTS - 1, 1))
+    if (sus_exp_series_init(&f.row, NPTS - 1, 1) || sus_exp_series_init(&f.col, NPTS - 1, 1))
         return 1;
-    suslov_series_exact(&f.row, &er, DT, NPTS);
-    suslov_series_exact(&f.col, &ec, DT, NPTS);
+    sus_exp_series_exact(&f.row, &er, DT, NPTS);
+    sus_exp_series_exact(&f.col, &ec, DT, NPTS);
     for (size_t i = 0; i < f.row.n; i++)
         f.dist[i] = hypot(f.row.w1[i] - f.col.w1[i], f.row.w2[i] - f.col.w2[i]);
     const double *cols[] = {f.row.t, f.row.w1, f.row.w2, f.row.lambda, f.col.w1, f.col.w2, f.col.lambda};
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], "inertia", "csv"),
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "inertia", "csv"),
                       "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n,
                       1) != 0)
         return 1;
@@ -124,8 +125,8 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < f.row.n; i++)
         maxd = fmax(maxd, f.dist[i]);
     double lr[2], lc[2];
-    suslov_exact_limit(&er, lr);
-    suslov_exact_limit(&ec, lc);
+    sus_exact_limit(&er, lr);
+    sus_exact_limit(&ec, lc);
     char cap[2048];
     snprintf(cap, sizeof cap,
              "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
@@ -139,5 +140,5 @@ int main(int argc, char **argv)
              "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
              "Data: data/inertia.csv.\n",
              T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
-    return fig_write_figure(argv[1], "inertia", 560, 420, draw, &f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "inertia", 560, 420, draw, &f, cap) != 0;
 }

@@ -36,8 +36,8 @@ typedef struct {
 
 static curve *C; /* one per selected method and peer, allocated once */
 static int nc;
-static suslov_model model;
-static suslov_exact ex;
+static sus_model model;
+static sus_exact ex;
 static double R50[3][3];
 
 typedef struct {
@@ -46,32 +46,32 @@ typedef struct {
     int k;
 } sampler;
 
-static int sample(void *vctx, const suslov_row *row)
+static int sample(void *vctx, const sus_row *row)
 {
     sampler *s = vctx;
     if (s->k > NS)
         return 0;
     curve *c = s->c;
     c->t[s->k] = row->t;
-    c->orth[s->k] = fmax(so3_orth_defect(row->R), FLOOR);
-    c->energy[s->k] = fmax(fabs(suslov_energy(&model, row->w) - s->e0), FLOOR);
+    c->orth[s->k] = fmax(sus_so3_orth_defect(row->R), FLOOR);
+    c->energy[s->k] = fmax(fabs(sus_energy(&model, row->w) - s->e0), FLOOR);
     c->w3max = fmax(c->w3max, fabs(row->w[2]));
     s->k++;
     return 0;
 }
 
 /* attitude error at t = 50 of a method with N steps */
-static double error_at_50(const suslov_method *me, long N)
+static double error_at_50(const sus_step_method *me, long N)
 {
-    suslov_row last = {0};
-    suslov_run_report rep;
-    const suslov_run_config cfg = {&model, me->type, me->recon, T_MATCH / (double)N, N, N};
-    if (suslov_run(&cfg, ex.w0, suslov_keep_last, &last, &rep) != 0)
+    sus_row last = {0};
+    sus_run_report rep;
+    const sus_run_config cfg = {&model, me->type, me->recon, T_MATCH / (double)N, N, N};
+    if (sus_run(&cfg, ex.w0, sus_keep_last, &last, &rep) != 0)
         return INFINITY;
-    return so3_dist(R50, last.R);
+    return sus_so3_dist(R50, last.R);
 }
 
-static void ours(const suslov_method *me)
+static void ours(const sus_step_method *me)
 {
     long N = 4;
     while (N < 100000 && !(error_at_50(me, N) <= LEVEL))
@@ -80,28 +80,28 @@ static void ours(const suslov_method *me)
     const double eps = T_MATCH / (double)N;
     const int own = !me->type->follows_recon; /* its own attitude, whatever the recon */
     snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, own ? "(quaternion)" : "+ ",
-             own ? "" : SUSLOV_RECON_NAMES[me->recon], eps);
+             own ? "" : SUS_RECON_NAMES[me->recon], eps);
     c->ours = 1;
     c->param = eps;
     const long steps = lround(T_LONG / eps);
-    sampler s = {c, suslov_energy(&model, ex.w0), 0};
-    const suslov_run_config cfg = {&model, me->type, me->recon, T_LONG / (double)steps, steps, steps / NS};
-    suslov_run_report rep;
-    suslov_run(&cfg, ex.w0, sample, &s, &rep);
+    sampler s = {c, sus_energy(&model, ex.w0), 0};
+    const sus_run_config cfg = {&model, me->type, me->recon, T_LONG / (double)steps, steps, steps / NS};
+    sus_run_report rep;
+    sus_run(&cfg, ex.w0, sample, &s, &rep);
 }
 
 static void peer(size_t dim)
 {
-    gsl_odeiv2_system sys = {dim == 11 ? suslov_peer_rhs_wR : suslov_peer_rhs_wq, NULL, dim, &model};
+    gsl_odeiv2_system sys = {dim == 11 ? sus_exp_peer_rhs_wR : sus_exp_peer_rhs_wq, NULL, dim, &model};
     double y[11], R[3][3], tol = 1e-3;
     for (; tol >= 1e-14; tol /= 10.0) { /* the loosest tolerance reaching LEVEL at t = 50 */
         gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
         double t = 0.0;
-        suslov_peer_initial(dim, ex.w0, y);
+        sus_exp_peer_initial(dim, ex.w0, y);
         const int st = gsl_odeiv2_driver_apply(d, &t, T_MATCH, y);
         gsl_odeiv2_driver_free(d);
-        suslov_peer_attitude(dim, y, R);
-        if (st == GSL_SUCCESS && so3_dist(R50, R) <= LEVEL)
+        sus_exp_peer_attitude(dim, y, R);
+        if (st == GSL_SUCCESS && sus_so3_dist(R50, R) <= LEVEL)
             break;
     }
     curve *c = &C[nc++];
@@ -110,17 +110,17 @@ static void peer(size_t dim)
     c->param = tol;
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
     double t = 0.0;
-    const double e0 = suslov_energy(&model, ex.w0);
-    suslov_peer_initial(dim, ex.w0, y);
+    const double e0 = sus_energy(&model, ex.w0);
+    sus_exp_peer_initial(dim, ex.w0, y);
     for (int k = 0; k <= NS; k++) {
         if (k > 0 && gsl_odeiv2_driver_apply(d, &t, T_LONG * k / NS, y) != GSL_SUCCESS)
             break;
-        suslov_peer_attitude(dim, y, R);
+        sus_exp_peer_attitude(dim, y, R);
         const double q2 = y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
         const double nq = dim == 6 ? fabs(sqrt(q2) - 1.0) : 0.0;
         c->t[k] = t;
-        c->orth[k] = fmax(dim == 11 ? so3_orth_defect(R) : nq, FLOOR);
-        c->energy[k] = fmax(fabs(suslov_energy(&model, y) - e0), FLOOR);
+        c->orth[k] = fmax(dim == 11 ? sus_so3_orth_defect(R) : nq, FLOOR);
+        c->energy[k] = fmax(fabs(sus_energy(&model, y) - e0), FLOOR);
     }
     gsl_odeiv2_driver_free(d);
 }
@@ -129,30 +129,31 @@ static void draw(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     const double W = 760;
-    plot_text(cr, W / 2, 14,
+    sus_plot_text(cr, W / 2, 14,
               "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy "
               "(attitude 1e-10 at t = 50)",
               11, 0.5,
               0.5, 1);
-    plot_style st[nc > 0 ? nc : 1];
+    sus_plot_style st[nc > 0 ? nc : 1];
     int k = 0;
     for (int i = 0; i < nc; i++)
-        st[i] = C[i].ours ? plot_style_of(PLOT_PALETTE[k++ % PLOT_PALETTE_N], 1.1, 0, PLOT_NONE, 0, C[i].name)
-                          : plot_style_of(PLOT_GREY, 1.6, i % 2 ? 2 : 1, PLOT_NONE, 0, C[i].name);
+        st[i] = C[i].ours ? sus_plot_style_of(SUS_PLOT_PALETTE[k++ % SUS_PLOT_PALETTE_N], 1.1, 0,
+                                              SUS_PLOT_NONE, 0, C[i].name)
+                          : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0, C[i].name);
     for (int p = 0; p < 2; p++) {
-        plot_axes ax;
-        plot_axes_init(&ax, cr, 60 + p * (W / 2), 40, W / 2 - 85, 250, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
+        sus_plot_axes ax;
+        sus_plot_axes_init(&ax, cr, 60 + p * (W / 2), 40, W / 2 - 85, 250, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
         const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
-        plot_frame(&ax, "t", ylabel,
+        sus_plot_frame(&ax, "t", ylabel,
                    p ? "(b)" : "(a)");
         for (int i = 0; i < nc; i++)
-            plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
+            sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
-    plot_axes la;
-    plot_axes_init(&la, cr, 40, 330, 680, 120, 0, 1, 0, 1, 0, 0);
-    plot_legend(&la, st, nc, 0);
+    sus_plot_axes la;
+    sus_plot_axes_init(&la, cr, 40, 330, 680, 120, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, st, nc, 0);
 }
 
 /* One row per curve and sample. */
@@ -173,7 +174,7 @@ static int write_data(const char *datadir)
         }
     const double *cols[] = {idx, t, o, e};
     char path[4096];
-    const int rc = fig_write_csv(fig_path(path, sizeof path, datadir, "longrun", "csv"),
+    const int rc = sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "longrun", "csv"),
                                  "curve,t,orth_defect,energy_error", 4, cols, n, 1);
     free(buf);
     return rc != 0;
@@ -207,16 +208,16 @@ static void caption(char *cap, size_t size)
 
 int main(int argc, char **argv)
 {
-    const int setup = fig_setup_paper(argc, "longrun", &model, &ex);
+    const int setup = sus_plot_fig_setup_paper(argc, "longrun", &model, &ex);
     if (setup != 0)
         return setup;
     double w50[2];
-    suslov_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
-    C = calloc((size_t)suslov_method_count() + 2, sizeof *C);
+    sus_refatt_precise(&model, ex.w0, T_MATCH, w50, R50);
+    C = calloc((size_t)sus_step_method_count() + 2, sizeof *C);
     if (!C)
         return 1;
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         if (me->type->conserves_energy && me->type->order > 2) /* high order, structure-preserving */
             ours(me);
     }
@@ -226,7 +227,7 @@ int main(int argc, char **argv)
         return 1;
     char cap[8192];
     caption(cap, sizeof cap);
-    const int rc = fig_write_figure(argv[1], "longrun", 760, 470, draw, NULL, cap) != 0;
+    const int rc = sus_plot_fig_write_figure(argv[1], "longrun", 760, 470, draw, NULL, cap) != 0;
     free(C);
     return rc;
 }

@@ -10,6 +10,7 @@
 #include "perturbation.h"
 #include "plot.h"
 #include "registry.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -23,8 +24,8 @@
 #define NE_SO3 10     /* eps = 2 .. 2^-8 (claims_section6.c) */
 #define TOL 1e-14
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
-#define FLOOR_G SUSLOV_PERTURB_FLOOR_G
-#define FLOOR_ATT SUSLOV_PERTURB_FLOOR_ATT
+#define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
+#define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
 
 typedef struct {
     double t[NPA], w[NPA][2], ex[NPA][2];
@@ -33,7 +34,7 @@ typedef struct {
     const char **names;   /* their names */
     double (*g)[NE];      /* and their sizes, allocated once */
     double eps[NE];
-    double att[SUSLOV_RECON_COUNT][NE];
+    double att[SUS_RECON_COUNT][NE];
 } pert_fig;
 
 static void die(const char *what, int status)
@@ -44,7 +45,8 @@ static void die(const char *what, int status)
 
 static const double *colour(int i)
 {
-    const double *c[] = {PLOT_ORANGE, PLOT_GREEN, PLOT_PURPLE, PLOT_BLUE, PLOT_RED, PLOT_BLACK, PLOT_GREY};
+    const double *c[] = {SUS_PLOT_ORANGE, SUS_PLOT_GREEN, SUS_PLOT_PURPLE, SUS_PLOT_BLUE,
+                         SUS_PLOT_RED,    SUS_PLOT_BLACK, SUS_PLOT_GREY};
     return c[i % 7];
 }
 
@@ -52,12 +54,15 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const pert_fig *f = vctx;
     const double W = 600, H = 560;
-    plot_text(cr, W / 2, 14, "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)",
-              11, 0.5, 0.5, 1);
-    const plot_style sp =
-        plot_style_of(PLOT_BLUE, 1.2, 0, PLOT_NONE, 0, "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
-    const plot_style se = plot_style_of(PLOT_GREY, 1.0, 1, PLOT_NONE, 0, "exact flow from \xcf\x89(0)");
-    const plot_style sk = plot_style_of(PLOT_RED, 0, 0, PLOT_CIRCLE, 5.0, "euler steps, \xce\xb5 = 4");
+    sus_plot_text(cr, W / 2, 14,
+                  "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)", 11, 0.5, 0.5,
+                  1);
+    const sus_plot_style sp = sus_plot_style_of(SUS_PLOT_BLUE, 1.2, 0, SUS_PLOT_NONE, 0,
+                                                "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
+    const sus_plot_style se =
+        sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, "exact flow from \xcf\x89(0)");
+    const sus_plot_style sk =
+        sus_plot_style_of(SUS_PLOT_RED, 0, 0, SUS_PLOT_CIRCLE, 5.0, "euler steps, \xce\xb5 = 4");
     for (int c = 0; c < 2; c++) {
         double x[NPA], e[NPA], xk[NSTEP_A + 1], lo = INFINITY, hi = -INFINITY;
         for (int i = 0; i < NPA; i++) {
@@ -66,30 +71,31 @@ static void draw(cairo_t *cr, void *vctx)
         }
         for (int k = 0; k <= NSTEP_A; k++)
             xk[k] = f->wk[k][c];
-        plot_extend(&lo, &hi, x, NPA, 1, 0);
-        plot_extend(&lo, &hi, e, NPA, 1, 0);
-        plot_axes ax;
-        plot_axes_cell(&ax, cr, W, H, 2, 2, c, 0, f->t[NPA - 1], lo, hi, 0, 0);
-        plot_frame(&ax, "t", c ? "\xcf\x89\xe2\x82\x82" : "\xcf\x89\xe2\x82\x81", c ? "(b)" : "(a)");
-        plot_series(&ax, f->t, e, NPA, 1, &se);
-        plot_series(&ax, f->t, x, NPA, 1, &sp);
-        plot_markers(&ax, f->tk, xk, NSTEP_A + 1, 1, &sk);
+        sus_plot_extend(&lo, &hi, x, NPA, 1, 0);
+        sus_plot_extend(&lo, &hi, e, NPA, 1, 0);
+        sus_plot_axes ax;
+        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, c, 0, f->t[NPA - 1], lo, hi, 0, 0);
+        sus_plot_frame(&ax, "t", c ? "\xcf\x89\xe2\x82\x82" : "\xcf\x89\xe2\x82\x81", c ? "(b)" : "(a)");
+        sus_plot_series(&ax, f->t, e, NPA, 1, &se);
+        sus_plot_series(&ax, f->t, x, NPA, 1, &sp);
+        sus_plot_markers(&ax, f->tk, xk, NSTEP_A + 1, 1, &sk);
         if (c == 0) {
-            const plot_style leg[3] = {sp, se, sk};
-            plot_legend(&ax, leg, 3, 1);
+            const sus_plot_style leg[3] = {sp, se, sk};
+            sus_plot_legend(&ax, leg, 3, 1);
         }
     }
     /* (c) sizes against eps, every method */
     {
         double lo = INFINITY, hi = -INFINITY;
         for (int m = 0; m < f->nm; m++)
-            plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
+            sus_plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
         hi *= 100.0; /* room for the legend above the lines */
-        plot_axes ax;
-        plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
-        plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
-        plot_style leg[f->nm];
-        static const int mk[] = {PLOT_SQUARE, PLOT_CIRCLE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS, PLOT_DOT};
+        sus_plot_axes ax;
+        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
+        sus_plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
+        sus_plot_style leg[f->nm];
+        static const int mk[] = {SUS_PLOT_SQUARE,  SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE,
+                                 SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
         int nl = 0;
         for (int m = 0; m < f->nm; m++) {
             int drawn = 0;
@@ -98,51 +104,52 @@ static void draw(cairo_t *cr, void *vctx)
             if (drawn < 2) /* at round-off for every eps: said in the caption */
                 continue;
             /* dashed where the colours come round again */
-            leg[nl] = plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
-            plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
-            plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
+            leg[nl] = sus_plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
+            sus_plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
+            sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             nl++;
         }
-        plot_legend(&ax, leg, nl, 0);
-        plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
-        plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
+        sus_plot_legend(&ax, leg, nl, 0);
+        sus_plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
+        sus_plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
     }
     /* (d) the attitude perturbation, midpoint DSP */
     {
         double lo = INFINITY, hi = -INFINITY;
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
-            plot_extend(&lo, &hi, f->att[r], NE_SO3, 1, 1);
-        plot_axes ax;
-        plot_axes_cell(&ax, cr, W, H, 2, 2, 3, f->eps[NE_SO3 - 1], f->eps[0], lo, hi, 1, 1);
-        plot_frame(&ax, "\xce\xb5", "sup |vee(R\xe1\xb5\x80R') \xe2\x88\x92 \xcf\x89|", "(d)");
-        plot_style leg[SUSLOV_RECON_COUNT];
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-            leg[r] = plot_style_of(colour(r + 3), 1.0, r == 2, PLOT_CIRCLE + r, 4.0, SUSLOV_RECON_NAMES[r]);
-            plot_series(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
-            plot_markers(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
+        for (int r = 0; r < SUS_RECON_COUNT; r++)
+            sus_plot_extend(&lo, &hi, f->att[r], NE_SO3, 1, 1);
+        sus_plot_axes ax;
+        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 3, f->eps[NE_SO3 - 1], f->eps[0], lo, hi, 1, 1);
+        sus_plot_frame(&ax, "\xce\xb5", "sup |vee(R\xe1\xb5\x80R') \xe2\x88\x92 \xcf\x89|", "(d)");
+        sus_plot_style leg[SUS_RECON_COUNT];
+        for (int r = 0; r < SUS_RECON_COUNT; r++) {
+            leg[r] =
+                sus_plot_style_of(colour(r + 3), 1.0, r == 2, SUS_PLOT_CIRCLE + r, 4.0, SUS_RECON_NAMES[r]);
+            sus_plot_series(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
+            sus_plot_markers(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
         }
-        plot_legend(&ax, leg, SUSLOV_RECON_COUNT, 3);
+        sus_plot_legend(&ax, leg, SUS_RECON_COUNT, 3);
     }
 }
 
 /* Panels (a)-(b): NSTEP_A periods of (Eq2), each from the method's previous point; the largest gap
  * between the period map and the Euler step in *gap. Returns 0, or 3 when a solve fails. */
-static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex, double *gap)
+static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, double *gap)
 {
-    suslov_perturb P;
-    if (suslov_perturb_init(&P, m, suslov_step_euler, EPS_A) != 0)
+    sus_exp_perturb P;
+    if (sus_exp_perturb_init(&P, m, sus_step_euler, EPS_A) != 0)
         die("singular inertia", 1);
-    double x[2] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}, seg[NSUB + 1][2];
+    double x[2] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}, seg[NSUB + 1][2];
     *gap = 0.0;
     f->tk[0] = 0.0;
     f->wk[0][0] = x[0];
     f->wk[0][1] = x[1];
     for (int k = 0; k < NSTEP_A; k++) {
-        if (suslov_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUSLOV_PERTURB_OK) {
+        if (sus_exp_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_EXP_PERTURB_OK) {
             fprintf(stderr,
                     "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n",
                     k,
-                    EPS_A * k, EPS_A * (k + 1), P.newton_res);
+                    EPS_A * k, EPS_A * (k + 1), P.sus_exp_newton_res);
             return 3;
         }
         for (int i = (k ? 1 : 0); i <= NSUB; i++) {
@@ -150,11 +157,11 @@ static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex
             f->t[n] = EPS_A * (k + (double)i / NSUB);
             f->w[n][0] = seg[i][0];
             f->w[n][1] = seg[i][1];
-            suslov_exact_omega(ex, f->t[n], f->ex[n]);
+            sus_exact_omega(ex, f->t[n], f->ex[n]);
         }
         double w3[3] = {x[0], x[1], 0.0}, wn[3], lam;
-        suslov_step_stats st;
-        if (P.st->apply(m, EPS_A, w3, wn, &lam, &st) != SUSLOV_STEP_OK) {
+        sus_stepper_stats st;
+        if (P.st->apply(m, EPS_A, w3, wn, &lam, &st) != SUS_STEPPER_OK) {
             fprintf(stderr, "figure_perturbation: euler step %d failed at t = %g\n", k, EPS_A * k);
             return 3;
         }
@@ -171,21 +178,21 @@ static int trajectory(pert_fig *f, const suslov_model *m, const suslov_exact *ex
 static const double TK[] = {0.0, 3.0, 7.0};
 
 /* Panel (c): sizes along one period from w(0), w(3), w(7), every method */
-static void sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
+static void sizes(pert_fig *f, const sus_model *m, const sus_exact *ex)
 {
     for (int j = 0; j < NE; j++)
         f->eps[j] = ldexp(1.0, 1 - j);
     for (int i = 0; i < f->nm; i++) {
-        f->names[i] = suslov_method_get(i)->type->name;
+        f->names[i] = sus_step_method_get(i)->type->name;
         for (int j = 0; j < NE; j++) {
-            suslov_perturb Q;
+            sus_exp_perturb Q;
             double s = 0.0;
-            if (suslov_perturb_init(&Q, m, suslov_method_get(i)->type, f->eps[j]) != 0)
+            if (sus_exp_perturb_init(&Q, m, sus_step_method_get(i)->type, f->eps[j]) != 0)
                 die("singular inertia", 1);
             for (int t = 0; t < 3; t++) {
                 double x0[2], v;
-                suslov_exact_omega(ex, TK[t], x0);
-                if (suslov_perturb_sup_reduced(&Q, x0, 64, &v) != SUSLOV_PERTURB_OK)
+                sus_exact_omega(ex, TK[t], x0);
+                if (sus_exp_perturb_sup_reduced(&Q, x0, 64, &v) != SUS_EXP_PERTURB_OK)
                     die("a perturbation size failed", 3);
                 s = fmax(s, v);
             }
@@ -195,22 +202,22 @@ static void sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
 }
 
 /* Panel (d): the attitude part for the midpoint DSP */
-static void attitude_sizes(pert_fig *f, const suslov_model *m, const suslov_exact *ex)
+static void attitude_sizes(pert_fig *f, const sus_model *m, const sus_exact *ex)
 {
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+    for (int r = 0; r < SUS_RECON_COUNT; r++)
         for (int j = 0; j < NE; j++) {
             f->att[r][j] = NAN;
             if (j >= NE_SO3)
                 continue;
-            suslov_perturb Q;
+            sus_exp_perturb Q;
             double s = 0.0;
-            if (suslov_perturb_init(&Q, m, suslov_step_midpoint, f->eps[j]) != 0)
+            if (sus_exp_perturb_init(&Q, m, sus_step_midpoint, f->eps[j]) != 0)
                 die("singular inertia", 1);
             for (int t = 0; t < 2; t++) {
                 double x0[2], a, g;
-                suslov_exact_omega(ex, TK[t], x0);
-                if (suslov_perturb_sup_so3(&Q, (suslov_recon)r, x0, 32, SUSLOV_PERTURB_ATT_TOL, &a, &g) !=
-                    SUSLOV_PERTURB_OK)
+                sus_exact_omega(ex, TK[t], x0);
+                if (sus_exp_perturb_sup_so3(&Q, (sus_recon)r, x0, 32, SUS_EXP_PERTURB_ATT_TOL, &a, &g) !=
+                    SUS_EXP_PERTURB_OK)
                     die("an attitude blend failed", 3);
                 s = fmax(s, a);
             }
@@ -231,35 +238,35 @@ static int write_data(const pert_fig *f, const char *datadir)
         e2[i] = f->ex[i][1];
     }
     const double *cols[] = {tcol, c1, c2, e1, e2};
-    if (fig_write_csv(fig_path(path, sizeof path, datadir, "perturbation", "csv"),
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "perturbation", "csv"),
                       "t,omega1_perturbed,omega2_perturbed,omega1_exact,omega2_exact", 5, cols, NPA, 1) != 0)
         return 1;
     char header[8192];
-    const double *scols[1 + f->nm + SUSLOV_RECON_COUNT];
+    const double *scols[1 + f->nm + SUS_RECON_COUNT];
     int nc = 0, used = snprintf(header, sizeof header, "eps");
     scols[nc++] = f->eps;
     for (int i = 0; i < f->nm; i++) {
         used += snprintf(header + used, sizeof header - (size_t)used, ",sup_g_%s", f->names[i]);
         scols[nc++] = f->g[i];
     }
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+    for (int r = 0; r < SUS_RECON_COUNT; r++) {
         used += snprintf(header + used, sizeof header - (size_t)used, ",attitude_midpoint_%s",
-                         SUSLOV_RECON_NAMES[r]);
+                         SUS_RECON_NAMES[r]);
         scols[nc++] = f->att[r];
     }
-    fig_path(path, sizeof path, datadir, "perturbation_sizes", "csv");
-    return fig_write_csv(path, header, nc, scols, NE, 1) != 0;
+    sus_plot_fig_path(path, sizeof path, datadir, "perturbation_sizes", "csv");
+    return sus_plot_fig_write_csv(path, header, nc, scols, NE, 1) != 0;
 }
 
 int main(int argc, char **argv)
 {
-    suslov_model m;
-    suslov_exact ex;
-    const int setup = fig_setup_paper(argc, "perturbation", &m, &ex);
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, "perturbation", &m, &ex);
     if (setup != 0)
         return setup;
     static pert_fig f;
-    f.nm = suslov_method_count();
+    f.nm = sus_step_method_count();
     f.names = calloc((size_t)f.nm, sizeof *f.names);
     f.g = calloc((size_t)f.nm, sizeof *f.g);
     if (!f.names || !f.g)
@@ -294,5 +301,5 @@ int main(int argc, char **argv)
              "2 with the\n"
              "symmetric reconstructions. Data: data/perturbation.csv, data/perturbation_sizes.csv.\n",
              NSTEP_A, EPS_A, gap, FLOOR_G);
-    return fig_write_figure(argv[1], "perturbation", 600, 560, draw, &f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "perturbation", 600, 560, draw, &f, cap) != 0;
 }

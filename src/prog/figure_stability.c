@@ -17,7 +17,7 @@
 typedef struct {
     double hs[NH];
     int nm;                    /* every method of the registry, in its order */
-    stab_result (*res)[NH * NANGLE];
+    sus_exp_stab_result (*res)[NH * NANGLE];
     double *limit;
 } stab_fig;
 
@@ -25,49 +25,51 @@ typedef struct {
 #define PANEL_H 240.0
 static double fig_height(int nm) { return 40.0 + PANEL_H * ((nm + 1) / 2); }
 
-static const double CLASS_RGB[STAB_NCLASS][3] = {
+static const double CLASS_RGB[SUS_EXP_STAB_NCLASS][3] = {
     {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
 
 static void draw(cairo_t *cr, void *vctx)
 {
     const stab_fig *f = vctx;
     const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
-    plot_text(cr, W / 2, 14, "Where each method stops working: step h = \xce\xb5k against the initial angle",
-              11, 0.5, 0.5, 1);
+    sus_plot_text(cr, W / 2, 14,
+                  "Where each method stops working: step h = \xce\xb5k against the initial angle", 11, 0.5,
+                  0.5, 1);
     for (int m = 0; m < f->nm; m++) {
-        plot_axes ax;
+        sus_plot_axes ax;
         char letter[8];
         snprintf(letter, sizeof letter, "(%c)", 'a' + m % 26);
-        plot_axes_cell(&ax, cr, W, H - 40, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0, 360.0, 1, 0);
+        sus_plot_axes_cell(&ax, cr, W, H - 40, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0, 360.0, 1,
+                           0);
         ax.x0 = f->hs[0] / step;
         ax.x1 = f->hs[NH - 1] * step;
         ax.y0 = 0.0;
         ax.y1 = 360.0;
         for (int i = 0; i < NH; i++)
             for (int a = 0; a < NANGLE; a++)
-                plot_rect(&ax, f->hs[i] / step, f->hs[i] * step, 10.0 * a, 10.0 * (a + 1),
+                sus_plot_rect(&ax, f->hs[i] / step, f->hs[i] * step, 10.0 * a, 10.0 * (a + 1),
                           CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
         char title[96];
-        snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", suslov_method_get(m)->type->name);
-        plot_frame(&ax, title, "initial angle \xce\xb8\xe2\x82\x80 (degrees)", letter);
+        snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", sus_step_method_get(m)->type->name);
+        sus_plot_frame(&ax, title, "initial angle \xce\xb8\xe2\x82\x80 (degrees)", letter);
         if (isfinite(f->limit[m])) {
             const double lx[2] = {f->limit[m], f->limit[m]}, ly[2] = {0.0, 360.0};
-            const plot_style ls = plot_style_of(PLOT_BLACK, 1.4, 1, PLOT_NONE, 0, NULL);
-            plot_series(&ax, lx, ly, 2, 1, &ls);
+            const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 1, SUS_PLOT_NONE, 0, NULL);
+            sus_plot_series(&ax, lx, ly, 2, 1, &ls);
             char lab[64];
             snprintf(lab, sizeof lab, "linear limit h = %.4g", f->limit[m]);
-            plot_text(cr, ax.x + 4, ax.y + 10, lab, 8.0, 0.0, 0.5, 0);
+            sus_plot_text(cr, ax.x + 4, ax.y + 10, lab, 8.0, 0.0, 0.5, 0);
         } else {
-            plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
+            sus_plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
         }
     }
-    plot_style leg[STAB_NCLASS];
-    for (int c = 0; c < STAB_NCLASS; c++)
-        leg[c] = plot_style_of(CLASS_RGB[c], 0, 0, PLOT_DOT, 7, STAB_NAMES[c]);
-    for (int c = 0; c < STAB_NCLASS; c++) { /* a horizontal legend along the bottom */
-        plot_axes la;
-        plot_axes_init(&la, cr, 40 + 112 * c, H - 34, 110, 20, 0, 1, 0, 1, 0, 0);
-        plot_legend(&la, &leg[c], 1, 0);
+    sus_plot_style leg[SUS_EXP_STAB_NCLASS];
+    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++)
+        leg[c] = sus_plot_style_of(CLASS_RGB[c], 0, 0, SUS_PLOT_DOT, 7, SUS_EXP_STAB_NAMES[c]);
+    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++) { /* a horizontal legend along the bottom */
+        sus_plot_axes la;
+        sus_plot_axes_init(&la, cr, 40 + 112 * c, H - 34, 110, 20, 0, 1, 0, 1, 0, 0);
+        sus_plot_legend(&la, &leg[c], 1, 0);
     }
 }
 
@@ -75,9 +77,9 @@ static void draw(cairo_t *cr, void *vctx)
 static int write_csv(const stab_fig *f, const char *dir)
 {
     char err[256], path[4096];
-    atomic_file af;
-    if (atomic_file_open(&af, fig_path(path, sizeof path, dir, "stability", "csv"), err, sizeof err) !=
-        0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, sus_plot_fig_path(path, sizeof path, dir, "stability", "csv"), err,
+                                 sizeof err) != 0) {
         fprintf(stderr, "figure_stability: %s\n", err);
         return 1;
     }
@@ -85,13 +87,13 @@ static int write_csv(const stab_fig *f, const char *dir)
     for (int m = 0; m < f->nm; m++)
         for (int i = 0; i < NH; i++)
             for (int a = 0; a < NANGLE; a++) {
-                const stab_result *r = &f->res[m][i * NANGLE + a];
-                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", suslov_method_get(m)->type->name, f->hs[i],
-                        (2.0 * 3.14159265358979323846 * a / NANGLE + STAB_ANGLE0) * 180.0 /
+                const sus_exp_stab_result *r = &f->res[m][i * NANGLE + a];
+                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", sus_step_method_get(m)->type->name, f->hs[i],
+                        (2.0 * 3.14159265358979323846 * a / NANGLE + SUS_EXP_STAB_ANGLE0) * 180.0 /
                             3.14159265358979323846,
-                        r->cls, STAB_NAMES[r->cls], r->step, r->final_err);
+                        r->cls, SUS_EXP_STAB_NAMES[r->cls], r->step, r->final_err);
             }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "figure_stability: %s\n", err);
         return 1;
     }
@@ -100,15 +102,15 @@ static int write_csv(const stab_fig *f, const char *dir)
 
 int main(int argc, char **argv)
 {
-    suslov_model model;
-    suslov_exact paper;
-    const int setup = fig_setup_paper(argc, "stability", &model, &paper);
+    sus_model model;
+    sus_exact paper;
+    const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);
     if (setup != 0)
         return setup;
     stab_fig *f = malloc(sizeof *f);
     if (!f)
         return 1;
-    f->nm = suslov_method_count();
+    f->nm = sus_step_method_count();
     f->res = calloc((size_t)f->nm, sizeof *f->res);
     f->limit = calloc((size_t)f->nm, sizeof *f->limit);
     if (!f->res || !f->limit)
@@ -117,11 +119,11 @@ int main(int argc, char **argv)
         f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
     int unclassified = 0;
     for (int m = 0; m < f->nm; m++) {
-        suslov_stability_map(&paper, suslov_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
-        f->limit[m] = suslov_linear_limit(suslov_method_get(m), f->hs[NH - 1]);
+        sus_exp_stability_map(&paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
+        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
         for (int j = 0; j < NH * NANGLE; j++) {
-            const stab_result *r = &f->res[m][j];
-            unclassified += r->cls < STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+            const sus_exp_stab_result *r = &f->res[m][j];
+            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
         }
     }
     if (unclassified) {
@@ -134,7 +136,7 @@ int main(int argc, char **argv)
     char limits[1024] = "";
     for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
         len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
-                        suslov_method_get(m)->type->name, f->limit[m]);
+                        sus_step_method_get(m)->type->name, f->limit[m]);
     char cap[4096];
     snprintf(
         cap, sizeof cap,
@@ -167,6 +169,6 @@ int main(int argc, char **argv)
         "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
         "its cubic step equation loses the continued branch from h ~ 150.\n"
         "Data: data/stability.csv.\n",
-        paper.k, NH, STAB_BRANCH_H, limits);
-    return fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
+        paper.k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+    return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
 }

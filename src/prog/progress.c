@@ -21,7 +21,7 @@ void progress_start(int on, long total)
     const char *term = getenv("TERM"), *no_color = getenv("NO_COLOR");
     pr.on = on;
     pr.total = total;
-    pr.start = pr.next = suslov_now();
+    pr.start = pr.next = sus_sys_now();
     /* https://no-color.org: a set, non-empty NO_COLOR; a dumb terminal knows no escapes */
     pr.plain = (no_color && *no_color) || (term && strcmp(term, "dumb") == 0);
     /* SUSLOV_PROGRESS_AFTER=0 (a test hook) shows it from the first step. */
@@ -49,7 +49,7 @@ void progress_tick(long k, double t)
 {
     if (!pr.on)
         return;
-    const double now = suslov_now(), dt = now - pr.start;
+    const double now = sus_sys_now(), dt = now - pr.start;
     if (now < pr.next)
         return;
     pr.next = now + PROGRESS_EVERY;

@@ -23,7 +23,7 @@ enum { EXIT_WRITE = 1, EXIT_SOLVER = 3 };
 
 typedef struct {
     FILE *fp;
-    const suslov_model *m;
+    const sus_model *m;
     long every, steps;
     long next;            /* the next row to write: 0, K, 2K, ..., N (no division per step) */
     unsigned tick_mask;   /* check the clock when (calls & mask) == 0 */
@@ -32,13 +32,13 @@ typedef struct {
     long blow_k;
     double blow_t;
     int have_pending;     /* `pending` is the last good row and was not written */
-    suslov_row pending;
+    sus_row pending;
 } csv_ctx;
 
-static int print_row(csv_ctx *ctx, const suslov_row *r)
+static int print_row(csv_ctx *ctx, const sus_row *r)
 {
     fprintf(ctx->fp, "%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", r->k, r->t, r->w[0], r->w[1], r->w[2],
-            r->lambda, suslov_energy(ctx->m, r->w));
+            r->lambda, sus_energy(ctx->m, r->w));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             fprintf(ctx->fp, ",%.17g", r->R[i][j]);
@@ -48,12 +48,12 @@ static int print_row(csv_ctx *ctx, const suslov_row *r)
 
 /* The driver hands over every row (its every = 1); the rows 0, K, 2K, ... and N are written,
  * the others kept one at a time so that the last good row can be written before a failure. */
-static int take_row(void *vctx, const suslov_row *r)
+static int take_row(void *vctx, const sus_row *r)
 {
     csv_ctx *ctx = vctx;
     if ((ctx->calls++ & ctx->tick_mask) == 0)
         progress_tick(r->k, r->t);
-    if (!isfinite(suslov_energy(ctx->m, r->w))) {
+    if (!isfinite(sus_energy(ctx->m, r->w))) {
         ctx->blowup = 1;
         ctx->blow_k = r->k;
         ctx->blow_t = r->t;
@@ -72,17 +72,17 @@ static int take_row(void *vctx, const suslov_row *r)
 /* ---- the failure message ---- */
 
 /* One line naming the step and t; a NaN or infinity is described, never printed. */
-static void failure_message(char *msg, size_t len, const char *name, int rc, const suslov_run_report *rep)
+static void failure_message(char *msg, size_t len, const char *name, int rc, const sus_run_report *rep)
 {
-    const suslov_step_stats *st = &rep->stats;
+    const sus_stepper_stats *st = &rep->stats;
     const int n = snprintf(msg, len, "%s ", name);
     msg += n;
     len -= (size_t)n;
-    if (rc == SUSLOV_RUN_BLOWUP)
+    if (rc == SUS_RUN_BLOWUP)
         snprintf(msg, len,
                  "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
                  rep->step, rep->t);
-    else if (rep->status == SUSLOV_STEP_DIVERGED)
+    else if (rep->status == SUS_STEPPER_DIVERGED)
         snprintf(msg, len,
                  "step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
                  "converge: the step is %.3g times the radius proved for it (|w|_2 = %.3g)",
@@ -95,7 +95,7 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
                  "step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), Jacobian determinant "
                  "%.3g, after %d Newton iterations",
                  rep->step, rep->t,
-                 rep->status == SUSLOV_STEP_SINGULAR
+                 rep->status == SUS_STEPPER_SINGULAR
                      ? "the Jacobian of the step equation is singular ((REGLOC) fails)"
                      : "Newton did not converge",
                  st->residual, st->scale, st->det, st->iterations);
@@ -103,37 +103,37 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
 
 /* ---- the run ---- */
 
-static int run(const suslov_args *a, FILE *fp, suslov_run_report *report, csv_ctx *ctx)
+static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
 {
     const int exact = a->method == NULL;
     /* The exact run computes only the rows it writes (each may cost a stretch of the reference
      * integration), so it gets its K; the integrators step every k anyway and hand every row
      * to take_row. */
-    const suslov_run_config cfg = {&a->model, exact ? NULL : a->method->type, a->recon, a->eps, a->steps,
+    const sus_run_config cfg = {&a->model, exact ? NULL : a->method->type, a->recon, a->eps, a->steps,
                                    exact ? a->every : 1};
     *ctx = (csv_ctx){.fp = fp, .m = &a->model, .every = a->every, .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
     /* Progress only where a person watches stderr and the rows do not scroll over it. */
     progress_start(!a->quiet && isatty(STDERR_FILENO) && (a->output != NULL || !isatty(STDOUT_FILENO)),
                    a->steps);
-    int rc = exact ? suslov_run_exact(&cfg, a->w0, take_row, ctx, report)
-                   : suslov_run(&cfg, a->w0, take_row, ctx, report);
+    int rc = exact ? sus_run_exact(&cfg, a->w0, take_row, ctx, report)
+                   : sus_run(&cfg, a->w0, take_row, ctx, report);
     progress_erase();
-    if (rc == SUSLOV_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
-        rc = SUSLOV_RUN_BLOWUP;
+    if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
+        rc = SUS_RUN_BLOWUP;
         report->step = ctx->blow_k;
         report->t = ctx->blow_t;
     }
     /* A failure: the last good row goes out as it would at the end of a normal run. */
-    if (rc != SUSLOV_RUN_OK && rc != SUSLOV_RUN_STOPPED && ctx->have_pending && print_row(ctx, &ctx->pending))
-        rc = SUSLOV_RUN_STOPPED;
+    if (rc != SUS_RUN_OK && rc != SUS_RUN_STOPPED && ctx->have_pending && print_row(ctx, &ctx->pending))
+        rc = SUS_RUN_STOPPED;
     return rc;
 }
 
-static int write_failed(atomic_file *af, const char *output)
+static int write_failed(sus_sys_atomic_file *af, const char *output)
 {
     const int saved = errno;
-    atomic_file_abort(af);
+    sus_sys_atomic_file_abort(af);
     cli_error("writing %s failed: %s", output && strcmp(output, "-") ? output : "stdout", strerror(saved));
     return EXIT_WRITE;
 }
@@ -144,8 +144,8 @@ int main(int argc, char **argv)
     char err[1024], msg[1024];
     suslov_cli_parse(&a, argc, argv);
     gsl_set_error_handler_off();
-    atomic_file af;
-    if (atomic_file_open(&af, a.output, err, sizeof err) != 0) { /* checked before: the system */
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) { /* checked before: the system */
         cli_error("--output: %s", err);
         return EXIT_WRITE;
     }
@@ -154,21 +154,21 @@ int main(int argc, char **argv)
     if (a.header)
         suslov_cli_header(&a, argc, argv, af.fp);
     fputs("k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n", af.fp);
-    suslov_run_report report;
+    sus_run_report report;
     csv_ctx ctx;
     const int rc = run(&a, af.fp, &report, &ctx);
-    if (rc == SUSLOV_RUN_STOPPED)
+    if (rc == SUS_RUN_STOPPED)
         return write_failed(&af, a.output);
-    if (rc != SUSLOV_RUN_OK) {
+    if (rc != SUS_RUN_OK) {
         failure_message(msg, sizeof msg, a.method ? a.method->type->name : "exact", rc, &report);
         if (a.header && fprintf(af.fp, "# incomplete: the run stopped with exit status 3: %s\n", msg) < 0)
             return write_failed(&af, a.output);
     }
-    if (atomic_file_commit(&af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         cli_error("%s", err);
         return EXIT_WRITE;
     }
-    if (rc == SUSLOV_RUN_OK)
+    if (rc == SUS_RUN_OK)
         return 0;
     cli_error("%s", msg);
     return EXIT_SOLVER;

@@ -110,27 +110,27 @@ static void show_version(void *g, const cli_option *o, const char *v)
 static void more_methods(FILE *fp, int man)
 {
     cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         cli_line(fp, man, "%-12s %s", me->type->name, me->about);
     }
 }
 
 static void more_recons(FILE *fp, int man)
 {
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
-        cli_line(fp, man, "%-12s %s", SUSLOV_RECON_NAMES[r], SUSLOV_RECON_ABOUT[r]);
+    for (int r = 0; r < SUS_RECON_COUNT; r++)
+        cli_line(fp, man, "%-12s %s", SUS_RECON_NAMES[r], SUS_RECON_ABOUT[r]);
     cli_line(fp, man, "default, the method's own:");
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+    for (int r = 0; r < SUS_RECON_COUNT; r++) {
         char names[512];
         size_t n = 0;
         names[0] = '\0';
-        for (int i = 0; i < suslov_method_count(); i++)
-            if (suslov_method_get(i)->recon == (suslov_recon)r && n < sizeof names)
+        for (int i = 0; i < sus_step_method_count(); i++)
+            if (sus_step_method_get(i)->recon == (sus_recon)r && n < sizeof names)
                 n += (size_t)snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "  ",
-                                      suslov_method_get(i)->type->name);
+                                      sus_step_method_get(i)->type->name);
         if (n)
-            cli_line(fp, man, "%s: %s", names, SUSLOV_RECON_NAMES[r]);
+            cli_line(fp, man, "%s: %s", names, SUS_RECON_NAMES[r]);
     }
 }
 
@@ -209,25 +209,25 @@ static const cli_spec SPEC = {
 
 /* ---- --method list ---- */
 
-static int uses_reconstruction(const suslov_method *me, const suslov_model *m);
+static int uses_reconstruction(const sus_step_method *me, const sus_model *m);
 
 /* The reconstruction column says "own" for a method that carries its own attitude. */
 static void method_list(void)
 {
     char err[256];
-    suslov_model paper;
-    if (suslov_model_init(&paper, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0)
+    sus_model paper;
+    if (sus_model_init(&paper, SUS_PAPER_INERTIA, err, sizeof err) != 0)
         cli_die("the paper's inertia is rejected: %s", err);
     const int tty = isatty(STDOUT_FILENO);
     const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
     printf(fmt, "name", "family", "order", "reconstruct", "about");
     printf(fmt, "exact", "closed form", "-", "-", "closed-form w(t), lambda(w(t)), reference R(t)");
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         char order[16];
         snprintf(order, sizeof order, "%d", me->type->order);
         printf(fmt, me->type->name, me->family, order,
-               uses_reconstruction(me, &paper) ? SUSLOV_RECON_NAMES[me->recon] : "own", me->about);
+               uses_reconstruction(me, &paper) ? SUS_RECON_NAMES[me->recon] : "own", me->about);
     }
     cli_exit_stdout();
 }
@@ -238,7 +238,7 @@ static void method_list(void)
  * M = max |I_m entry| so that nothing overflows (the unscaled sum of |entries| is inf at
  * 1e308, and inf > 4u inf is false), and its determinant, which (ContDyn) divides by, must
  * be a finite normal number. The tolerance 4u (1 + 1 + 1 + 1) allows the rounding of four
- * entries of size <= M; suslov_model_init repeats the unscaled test for the other callers. */
+ * entries of size <= M; sus_model_init repeats the unscaled test for the other callers. */
 static void check_inertia(const double I[9])
 {
     for (int i = 0; i < 9; i++)
@@ -294,17 +294,17 @@ static long steps_for_time(double T, double eps)
 /* Whether a method's attitude depends on --reconstruct: one step from the paper's start with
  * two reconstructions. A method that carries its own attitude (a Taylor series) gives the same
  * R both ways; this asks the method itself, so no list of names is kept here. */
-static int uses_reconstruction(const suslov_method *me, const suslov_model *m)
+static int uses_reconstruction(const sus_step_method *me, const sus_model *m)
 {
     double R[2][3][3];
     for (int r = 0; r < 2; r++) {
-        suslov_attitude att;
-        double w[3] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
-        suslov_step_stats st;
-        suslov_attitude_identity(&att);
-        suslov_step_full(me->type, m, 0.25, r ? SUSLOV_RECON_CAYLEY : SUSLOV_RECON_EXP_MID, &att, w, wn, &lam,
+        sus_attitude att;
+        double w[3] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
+        sus_stepper_stats st;
+        sus_attitude_identity(&att);
+        sus_stepper_full(me->type, m, 0.25, r ? SUS_RECON_CAYLEY : SUS_RECON_EXP_MID, &att, w, wn, &lam,
                          &st);
-        suslov_attitude_get(&att, R[r]);
+        sus_attitude_get(&att, R[r]);
     }
     return memcmp(R[0], R[1], sizeof R[0]) != 0;
 }
@@ -315,18 +315,18 @@ static int resolve_method(suslov_args *a, const given *g)
 {
     char names[1024];
     const int exact = strcmp(g->method, "exact") == 0;
-    a->method = exact ? NULL : suslov_method_by_name(g->method);
+    a->method = exact ? NULL : sus_step_method_by_name(g->method);
     if (!exact && !a->method)
         cli_die("unknown method '%s' (exact, %s; or list)", g->method,
-                suslov_method_names(names, sizeof names, ", "));
-    a->recon = a->method ? a->method->recon : SUSLOV_RECON_CAYLEY;
+                sus_step_method_names(names, sizeof names, ", "));
+    a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
         return 0;
-    if (suslov_recon_by_name(g->recon, &a->recon) != 0) {
+    if (sus_recon_by_name(g->recon, &a->recon) != 0) {
         size_t len = 0;
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+        for (int r = 0; r < SUS_RECON_COUNT; r++)
             len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
-                                    SUSLOV_RECON_NAMES[r]);
+                                    SUS_RECON_NAMES[r]);
         cli_die("unknown reconstruction '%s' (%s)", g->recon, names);
     }
     if (exact)
@@ -353,18 +353,18 @@ static void check_run(suslov_args *a, const given *g)
     if (!isfinite((double)a->steps * a->eps))
         cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
     check_inertia(g->inertia);
-    if (suslov_model_init(&a->model, g->inertia, err, sizeof err) != 0)
+    if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0)
         cli_die("--inertia: %s", err);
     const double w[3] = {g->w0[0], g->w0[1], 0.0};
-    if (!isfinite(suslov_energy(&a->model, w)) || !isfinite(suslov_lagmult(&a->model, w)))
+    if (!isfinite(sus_energy(&a->model, w)) || !isfinite(sus_lagmult(&a->model, w)))
         cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
     const int ignored = resolve_method(a, g);
     const double T = (double)a->steps * a->eps;
-    const double cost = a->method ? 0.0 : suslov_exact_reference_steps(&a->model, g->w0, T);
+    const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, T);
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
         cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
                 "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
-    if (atomic_file_check(g->output, err, sizeof err) != 0)
+    if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
         cli_die("--output: %s", err);
     if (ignored)
         cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
@@ -373,8 +373,8 @@ static void check_run(suslov_args *a, const given *g)
 void suslov_cli_parse(suslov_args *a, int argc, char **argv)
 {
     given g = {.eps = NAN, .T = NAN, .every = 1, .header = 1,
-               .w0 = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}};
-    memcpy(g.inertia, SUSLOV_PAPER_INERTIA, sizeof g.inertia);
+               .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
+    memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
     cli_parse(&SPEC, argc, argv, &g);
     memset(a, 0, sizeof *a);
     check_run(a, &g);
@@ -419,7 +419,7 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
     }
     if (a->method)
         fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
-                a->method->family, a->method->type->order, SUSLOV_RECON_NAMES[a->recon]);
+                a->method->family, a->method->type->order, SUS_RECON_NAMES[a->recon]);
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,

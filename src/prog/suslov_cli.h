@@ -9,14 +9,14 @@
 #include <stdio.h>
 
 typedef struct {
-    const suslov_method *method; /* NULL for exact */
-    suslov_recon recon;
+    const sus_step_method *method; /* NULL for exact */
+    sus_recon recon;
     const char *output;          /* NULL or "-" for stdout */
     double eps;
     long steps, every;
     double w0[2], inertia[9];
     int quiet, header;
-    suslov_model model;
+    sus_model model;
 } suslov_args;
 
 /* Parses and checks everything that can be checked before the run (bad input: one line, exit

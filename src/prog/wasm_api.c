@@ -23,23 +23,23 @@ static double input[11];
 static double *rows;
 static long nrows, cap;
 static char message[512];
-static const suslov_model *row_model;
+static const sus_model *row_model;
 
 double *wasm_input(void) { return input; }
 double *wasm_rows(void) { return rows; }
 long wasm_nrows(void) { return nrows; }
 const char *wasm_message(void) { return message; }
-int wasm_method_count(void) { return suslov_method_count(); }
-const char *wasm_method_name(int i) { return suslov_method_get(i)->type->name; }
-const char *wasm_method_about(int i) { return suslov_method_get(i)->about; }
-int wasm_method_recon(int i) { return (int)suslov_method_get(i)->recon; }
+int wasm_method_count(void) { return sus_step_method_count(); }
+const char *wasm_method_name(int i) { return sus_step_method_get(i)->type->name; }
+const char *wasm_method_about(int i) { return sus_step_method_get(i)->about; }
+int wasm_method_recon(int i) { return (int)sus_step_method_get(i)->recon; }
 
 /* The other reading of the printed inertia (experiments.h): the input body's third row replaced
  * by its third column. */
 void wasm_inertia_column(void)
 {
     double I[9];
-    suslov_inertia_column_swap(input + 2, I);
+    sus_exp_inertia_column_swap(input + 2, I);
     memcpy(input + 2, I, sizeof I);
 }
 
@@ -47,14 +47,14 @@ void wasm_inertia_column(void)
 double *wasm_limit(void)
 {
     static double w[2];
-    suslov_model m;
-    suslov_exact ex;
+    sus_model m;
+    sus_exact ex;
     char err[256];
     const double w0[2] = {input[0], input[1]};
     w[0] = w[1] = NAN;
-    if (suslov_model_init(&m, input + 2, err, sizeof err) == 0) {
-        suslov_exact_init(&ex, &m, w0);
-        suslov_exact_limit(&ex, w);
+    if (sus_model_init(&m, input + 2, err, sizeof err) == 0) {
+        sus_exact_init(&ex, &m, w0);
+        sus_exact_limit(&ex, w);
     }
     return w;
 }
@@ -66,7 +66,7 @@ static int say(int status, const char *fmt, double a, double b)
     return status;
 }
 
-static void put_row(const suslov_row *r)
+static void put_row(const sus_row *r)
 {
     double *o = rows + nrows++ * NCOL;
     o[0] = (double)r->k;
@@ -75,12 +75,12 @@ static void put_row(const suslov_row *r)
     o[3] = r->w[1];
     o[4] = r->w[2];
     o[5] = r->lambda;
-    o[6] = suslov_energy(row_model, r->w);
+    o[6] = sus_energy(row_model, r->w);
     for (int i = 0; i < 9; i++)
         o[7 + i] = r->R[i / 3][i % 3];
 }
 
-static int take(void *ctx, const suslov_row *r)
+static int take(void *ctx, const sus_row *r)
 {
     (void)ctx;
     if (nrows == cap)
@@ -109,7 +109,7 @@ static int reserve(long steps, long every)
  * long. Returns 0 or 2 (bad input, with the message). */
 static int setup(double eps, double nsteps, double nevery)
 {
-    static suslov_model model;
+    static sus_model model;
     char err[256];
     message[0] = '\0';
     if (!(eps > 0.0))
@@ -121,7 +121,7 @@ static int setup(double eps, double nsteps, double nevery)
                    floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
     if (!isfinite(nsteps * eps))
         return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
-    if (suslov_model_init(&model, input + 2, err, sizeof err) != 0) {
+    if (sus_model_init(&model, input + 2, err, sizeof err) != 0) {
         snprintf(message, sizeof message, "--inertia: %s", err);
         return 2;
     }
@@ -129,11 +129,11 @@ static int setup(double eps, double nsteps, double nevery)
     return reserve((long)nsteps, (long)nevery);
 }
 
-static int failed(int rc, const suslov_run_report *rep)
+static int failed(int rc, const sus_run_report *rep)
 {
-    if (rc == SUSLOV_RUN_OK)
+    if (rc == SUS_RUN_OK)
         return 0;
-    if (rc == SUSLOV_RUN_BLOWUP)
+    if (rc == SUS_RUN_BLOWUP)
         return say(3, "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
                    (double)rep->step, rep->t);
     return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep->step,
@@ -145,19 +145,19 @@ static int failed(int rc, const suslov_run_report *rep)
  * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
 int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
 {
-    if (method < -1 || method >= suslov_method_count())
+    if (method < -1 || method >= sus_step_method_count())
         return say(2, "unknown method", 0, 0);
     const int rc = setup(eps, nsteps, nevery);
     if (rc)
         return rc;
-    const suslov_method *me = method >= 0 ? suslov_method_get(method) : NULL;
-    const suslov_recon rk = recon >= 0 && recon < SUSLOV_RECON_COUNT ? (suslov_recon)recon
-                            : me ? me->recon : SUSLOV_RECON_CAYLEY;
-    const suslov_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
-    suslov_run_report rep;
+    const sus_step_method *me = method >= 0 ? sus_step_method_get(method) : NULL;
+    const sus_recon rk = recon >= 0 && recon < SUS_RECON_COUNT ? (sus_recon)recon
+                            : me ? me->recon : SUS_RECON_CAYLEY;
+    const sus_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
+    sus_run_report rep;
     const double w0[2] = {input[0], input[1]};
-    return failed(me ? suslov_run(&cfg, w0, take, NULL, &rep)
-                     : suslov_run_exact(&cfg, w0, take, NULL, &rep), &rep);
+    return failed(me ? sus_run(&cfg, w0, take, NULL, &rep)
+                     : sus_run_exact(&cfg, w0, take, NULL, &rep), &rep);
 }
 
 /* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per
@@ -170,7 +170,7 @@ int wasm_sweeps(int n, double eps, double nsteps)
         return rc;
     double w[2] = {input[0], input[1]};
     for (long k = 0; k <= (long)nsteps; k++) {
-        suslov_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
+        sus_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
         for (int i = 0; i < 9; i++)
             r.R[i / 3][i % 3] = NAN;
         put_row(&r);
@@ -178,7 +178,7 @@ int wasm_sweeps(int n, double eps, double nsteps)
             return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k,
                        r.t);
         double x[2];
-        suslov_midpoint_sweeps(row_model, eps, n, w, x);
+        sus_exp_midpoint_sweeps(row_model, eps, n, w, x);
         w[0] = x[0];
         w[1] = x[1];
     }
@@ -194,15 +194,15 @@ int wasm_exact_omega(double eps, double nsteps, double nevery)
     if (rc)
         return rc;
     const long steps = (long)nsteps, every = (long)nevery;
-    suslov_exact ex;
+    sus_exact ex;
     const double w0[2] = {input[0], input[1]};
-    suslov_exact_init(&ex, row_model, w0);
+    sus_exact_init(&ex, row_model, w0);
     for (long k = 0;; k = steps - k > every ? k + every : steps) {
-        suslov_row r = {.k = k, .t = (double)k * eps};
+        sus_row r = {.k = k, .t = (double)k * eps};
         for (int i = 0; i < 9; i++)
             r.R[i / 3][i % 3] = NAN;
-        suslov_exact_omega(&ex, r.t, r.w);
-        r.lambda = suslov_lagmult(row_model, r.w);
+        sus_exact_omega(&ex, r.t, r.w);
+        r.lambda = sus_lagmult(row_model, r.w);
         put_row(&r);
         if (k == steps)
             return 0;

@@ -13,26 +13,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NJ SUSLOV_CONV_NJ
+#define NJ SUS_EXP_CONV_NJ
 static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define T_GLOBAL 10.0
 
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
  * the five shapes, so neighbours in the registry never share both. */
-static plot_style method_style(int m, int dashed, int with_label)
+static sus_plot_style method_style(int m, int dashed, int with_label)
 {
-    static const int mk[] = {PLOT_SQUARE, PLOT_CIRCLE, PLOT_TRIANGLE, PLOT_DIAMOND, PLOT_CROSS};
+    static const int mk[] = {SUS_PLOT_SQUARE, SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE, SUS_PLOT_DIAMOND,
+                             SUS_PLOT_CROSS};
     const int nmk = (int)(sizeof mk / sizeof mk[0]);
-    return plot_style_of(PLOT_PALETTE[m % PLOT_PALETTE_N], 1.0, dashed, mk[m % nmk], 4.2,
-                         with_label ? suslov_method_get(m)->type->name : NULL);
+    return sus_plot_style_of(SUS_PLOT_PALETTE[m % SUS_PLOT_PALETTE_N], 1.0, dashed, mk[m % nmk], 4.2,
+                         with_label ? sus_step_method_get(m)->type->name : NULL);
 }
 
 /* The error curve `what` of method m; so3 curves pick reconstruction r. */
 enum { LOC_W, GLOB_W, LOC_SO3, GLOB_SO3, LOC_LAMBDA, GLOB_LAMBDA };
-static const double *curve(const conv_fig *f, int m, int what, int r)
+static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
 {
-    const suslov_conv_method *c = &f->c.m[m];
+    const sus_exp_conv_method *c = &f->c.m[m];
     switch (what) {
     case LOC_W: return c->loc_w;
     case GLOB_W: return c->glob_w;
@@ -45,14 +46,14 @@ static const double *curve(const conv_fig *f, int m, int what, int r)
 
 /* One log-log panel of curve `what` (and, for SO(3), the cayley-mid curves dashed) with reference
  * slopes anchored under the data at eps = 2^-2. */
-static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char *ylabel, const char *letter,
-                  const int *slopes, int nslopes, double top, double size)
+static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, const char *ylabel,
+                  const char *letter, const int *slopes, int nslopes, double top, double size)
 {
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0, nj = NJ - f->j0;
     const int global = what == GLOB_W || what == GLOB_SO3 || what == GLOB_LAMBDA;
     const double *eps = (global ? f->c.glob_eps : f->c.eps) + j0;
     char (*labels)[48] = calloc((size_t)nm, sizeof *labels);
-    plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
+    sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (!labels || !leg) {
         free(labels);
         free(leg);
@@ -61,26 +62,26 @@ static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char 
     const double W = 560, H = 700;
     double lo = INFINITY, hi = -INFINITY;
     for (int m = 0; m < nm; m++) {
-        if (!f->spec->select(suslov_method_get(m)))
+        if (!f->spec->select(sus_step_method_get(m)))
             continue;
-        plot_extend(&lo, &hi, curve(f, m, what, f->spec->solid) + j0, (size_t)nj, 1, 1);
+        sus_plot_extend(&lo, &hi, curve(f, m, what, f->spec->solid) + j0, (size_t)nj, 1, 1);
         if (so3)
-            plot_extend(&lo, &hi, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, 1);
+            sus_plot_extend(&lo, &hi, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, 1);
     }
     lo = fmax(lo, 1e-17);
-    plot_axes ax;
-    plot_axes_cell(&ax, cr, W, H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[j0], lo, hi, 1, 1);
-    plot_frame(&ax, "\xce\xb5", ylabel, letter);
+    sus_plot_axes ax;
+    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[j0], lo, hi, 1, 1);
+    sus_plot_frame(&ax, "\xce\xb5", ylabel, letter);
     int nleg = 0;
     for (int m = 0; m < nm; m++) {
-        if (!f->spec->select(suslov_method_get(m)))
+        if (!f->spec->select(sus_step_method_get(m)))
             continue;
         const double *err = curve(f, m, what, f->spec->solid) + j0;
         /* the legend carries the least-squares slope over the ledger's window */
-        suslov_order_fit fit;
+        sus_exp_order_fit fit;
         const int ok =
-            suslov_fit_order(eps, err, nj, SUSLOV_FIT_EPS_MAX, SUSLOV_FIT_FLOOR_REL * size, &fit) == 0;
-        const char *name = suslov_method_get(m)->type->name;
+            sus_exp_fit_order(eps, err, nj, SUS_EXP_FIT_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * size, &fit) == 0;
+        const char *name = sus_step_method_get(m)->type->name;
         if (!f->spec->legend_slopes)
             snprintf(labels[m], sizeof labels[m], "%s", name);
         else if (ok)
@@ -90,39 +91,39 @@ static void panel(cairo_t *cr, int idx, const conv_fig *f, int what, const char 
             snprintf(labels[m], sizeof labels[m], "%s, no slope", name);
         leg[nleg] = method_style(m, 0, 1);
         leg[nleg].label = labels[m];
-        plot_series(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
-        plot_markers(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
+        sus_plot_series(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
+        sus_plot_markers(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
         nleg++;
         if (so3) {
-            const plot_style d = method_style(m, 1, 0);
-            plot_series(&ax, eps, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, &d);
+            const sus_plot_style d = method_style(m, 1, 0);
+            sus_plot_series(&ax, eps, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, &d);
         }
     }
     char dashed[48], solid[48];
-    snprintf(dashed, sizeof dashed, "dashed: %s", SUSLOV_RECON_NAMES[f->spec->dashed]);
-    snprintf(solid, sizeof solid, "solid: %s", SUSLOV_RECON_NAMES[f->spec->solid]);
+    snprintf(dashed, sizeof dashed, "dashed: %s", SUS_RECON_NAMES[f->spec->dashed]);
+    snprintf(solid, sizeof solid, "solid: %s", SUS_RECON_NAMES[f->spec->solid]);
     if (so3) {
-        leg[nleg++] = plot_style_of(PLOT_GREY, 1.0, 0, PLOT_NONE, 0, solid);
-        leg[nleg++] = plot_style_of(PLOT_GREY, 1.0, 1, PLOT_NONE, 0, dashed);
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 0, SUS_PLOT_NONE, 0, solid);
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, dashed);
     }
     if (nslopes)
-        leg[nleg++] = plot_style_of(PLOT_GREY, 0.8, 1, PLOT_NONE, 0, "reference slopes");
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, "reference slopes");
     /* reference slopes where the figure has room for them, `top` under the panel's top */
     for (int s = 0; s < nslopes; s++) {
         char lab[8];
         snprintf(lab, sizeof lab, "%d", slopes[s]);
-        plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j],
+        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j],
                    ax.y1 * top * f->spec->slope_drop, slopes[s], lab);
     }
-    plot_legend(&ax, leg, nleg, f->spec->legend_corner);
+    sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
     free(labels);
     free(leg);
 }
 
 static void draw(cairo_t *cr, void *vctx)
 {
-    const conv_fig *f = vctx;
-    plot_text(cr, 280, 14,
+    const sus_plot_conv_fig *f = vctx;
+    sus_plot_text(cr, 280, 14,
               "Convergence against \xce\xb5 (local: one step from exact data; global: at t = 10)", 11, 0.5,
               0.5, 1);
     const int *s_loc = f->spec->slopes_local, *s_glob = f->spec->slopes_global, ns = f->spec->nslopes;
@@ -131,31 +132,31 @@ static void draw(cairo_t *cr, void *vctx)
     panel(
         cr, 0, f, LOC_W,
         "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(a)", s_loc, ns, 0.1, SUSLOV_SIZE_W);
+        "(a)", s_loc, ns, 0.1, SUS_EXP_SIZE_W);
     panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", s_glob, ns, 0.1,
-          SUSLOV_SIZE_W);
+          SUS_EXP_SIZE_W);
     panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)",
-          "(c)", s_so3loc, nso3, 0.1, SUSLOV_SIZE_R);
+          "(c)", s_so3loc, nso3, 0.1, SUS_EXP_SIZE_R);
     panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", s_so3glob, nso3, 0.1,
-          SUSLOV_SIZE_R);
+          SUS_EXP_SIZE_R);
     panel(
         cr, 4, f, LOC_LAMBDA,
         "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(e)", s_loc, ns, 0.01, SUSLOV_SIZE_LAMBDA);
+        "(e)", s_loc, ns, 0.01, SUS_EXP_SIZE_LAMBDA);
     panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)", s_glob, ns,
-          0.01, SUSLOV_SIZE_LAMBDA);
+          0.01, SUS_EXP_SIZE_LAMBDA);
 }
 
-int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec)
+int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_spec *spec)
 {
-    suslov_model m;
-    suslov_exact ex;
-    const int setup = fig_setup_paper(argc, spec->name, &m, &ex);
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, spec->name, &m, &ex);
     if (setup != 0)
         return setup;
     char path[4096];
-    conv_fig *f = malloc(sizeof *f);
-    if (!f || suslov_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
+    sus_plot_conv_fig *f = malloc(sizeof *f);
+    if (!f || sus_exp_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
         return 1;
     f->spec = spec;
     for (f->j0 = 0; f->j0 < NJ && f->c.eps[f->j0] > spec->eps_plot_max; f->j0++)
@@ -163,11 +164,11 @@ int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec)
     f->o0max = 0.0;
     for (size_t t = 0; t < sizeof TK / sizeof TK[0]; t++) {
         double w[2];
-        suslov_exact_omega(&ex, TK[t], w);
-        f->o0max = fmax(f->o0max, fabs(suslov_lagmult_o0(&m, w)));
+        sus_exact_omega(&ex, TK[t], w);
+        f->o0max = fmax(f->o0max, fabs(sus_lagmult_o0(&m, w)));
     }
     /* data: eps and, per method, its error curves (w, lambda, and SO(3) per reconstruction) */
-    enum { NQ = 4 + 2 * SUSLOV_RECON_COUNT };
+    enum { NQ = 4 + 2 * SUS_RECON_COUNT };
     const int nm = f->c.nmethod;
     const double **cols = calloc(2 + (size_t)NQ * (size_t)nm, sizeof *cols);
     char *header = calloc(64 * (2 + (size_t)NQ * (size_t)nm), 1);
@@ -178,30 +179,31 @@ int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec)
     cols[nc++] = f->c.eps;
     cols[nc++] = f->c.glob_eps;
     for (int k = 0; k < nm; k++) {
-        if (!spec->select(suslov_method_get(k)))
+        if (!spec->select(sus_step_method_get(k)))
             continue;
-        const char *name = suslov_method_get(k)->type->name;
-        const suslov_conv_method *c = &f->c.m[k];
+        const char *name = sus_step_method_get(k)->type->name;
+        const sus_exp_conv_method *c = &f->c.m[k];
         cols[nc++] = c->loc_w;
         cols[nc++] = c->loc_lambda;
         len += (size_t)sprintf(header + len, ",local_w_%s,local_lambda_%s", name, name);
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        for (int r = 0; r < SUS_RECON_COUNT; r++) {
             cols[nc++] = c->loc_so3[r];
-            len += (size_t)sprintf(header + len, ",local_so3_%s_%s", SUSLOV_RECON_NAMES[r], name);
+            len += (size_t)sprintf(header + len, ",local_so3_%s_%s", SUS_RECON_NAMES[r], name);
         }
         cols[nc++] = c->glob_w;
         cols[nc++] = c->glob_lambda;
         len += (size_t)sprintf(header + len, ",global_w_%s,global_lambda_%s", name, name);
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        for (int r = 0; r < SUS_RECON_COUNT; r++) {
             cols[nc++] = c->glob_so3[r];
-            len += (size_t)sprintf(header + len, ",global_so3_%s_%s", SUSLOV_RECON_NAMES[r], name);
+            len += (size_t)sprintf(header + len, ",global_so3_%s_%s", SUS_RECON_NAMES[r], name);
         }
     }
-    if (fig_write_csv(fig_path(path, sizeof path, argv[2], spec->name, "csv"), header, nc, cols, NJ, 1) != 0)
+    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], spec->name, "csv"), header, nc,
+                               cols, NJ, 1) != 0)
         return 1;
     free(cols);
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    return fig_write_figure(argv[1], spec->name, 560, 700, draw, f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], spec->name, 560, 700, draw, f, cap) != 0;
 }

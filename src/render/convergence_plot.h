@@ -1,25 +1,25 @@
 /* What the convergence figures share (src/render/convergence_plot.c). */
-#ifndef SUSLOV_CONVERGENCE_PLOT_H
-#define SUSLOV_CONVERGENCE_PLOT_H
+#ifndef SUS_PLOT_CONVERGENCE_PLOT_H
+#define SUS_PLOT_CONVERGENCE_PLOT_H
 
 #include "convergence.h"
 #include "registry.h"
 
 #include <stddef.h>
 
-typedef struct conv_figure_spec conv_figure_spec;
+typedef struct sus_plot_conv_figure_spec sus_plot_conv_figure_spec;
 
 typedef struct {
-    suslov_convergence c;
-    const conv_figure_spec *spec;
+    sus_exp_convergence c;
+    const sus_plot_conv_figure_spec *spec;
     int j0;         /* first sweep point drawn: eps[j0] <= spec->eps_plot_max */
     double o0max;   /* max |O_0| over the t_k: the variational multiplier's plateau */
-} conv_fig;
+} sus_plot_conv_fig;
 
-struct conv_figure_spec {
+struct sus_plot_conv_figure_spec {
     const char *name;                          /* figures/NAME.*, data/NAME.csv */
-    int (*select)(const suslov_method *me);    /* the registered methods it draws */
-    suslov_recon solid, dashed;                /* the SO(3) curves drawn solid and dashed */
+    int (*select)(const sus_step_method *me);    /* the registered methods it draws */
+    sus_recon solid, dashed;                /* the SO(3) curves drawn solid and dashed */
     double eps_plot_max;                       /* right end of the eps axes */
     const int *slopes_local, *slopes_global;   /* reference slope triangles for w and lambda */
     int nslopes;
@@ -27,12 +27,12 @@ struct conv_figure_spec {
     int nslopes_so3;
     int slope_j;          /* the reference slopes run from eps[slope_j + 2] to eps[slope_j] ... */
     double slope_drop;    /* ... ending this factor under the panel's top */
-    int legend_corner;    /* plot_legend's corner */
+    int legend_corner;    /* sus_plot_legend's corner */
     int legend_slopes;    /* 1: each legend entry gives the slope fitted over the paper's window */
-    void (*caption)(char *buf, size_t len, const conv_fig *f);
+    void (*caption)(char *buf, size_t len, const sus_plot_conv_fig *f);
 };
 
 /* The whole program: argument check, sweep, figure, data, caption. Returns the exit status. */
-int conv_figure_main(int argc, char **argv, const conv_figure_spec *spec);
+int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_spec *spec);
 
 #endif

@@ -5,10 +5,10 @@
 
 #include <stdio.h>
 
-static int finish(atomic_file *af, const char *path)
+static int finish(sus_sys_atomic_file *af, const char *path)
 {
     char err[512];
-    if (atomic_file_commit(af, err, sizeof err) != 0) {
+    if (sus_sys_atomic_file_commit(af, err, sizeof err) != 0) {
         fprintf(stderr, "error: %s\n", err);
         return -1;
     }
@@ -16,12 +16,12 @@ static int finish(atomic_file *af, const char *path)
     return 0;
 }
 
-int fig_write_csv(const char *path, const char *header, int ncols, const double *const *cols,
+int sus_plot_fig_write_csv(const char *path, const char *header, int ncols, const double *const *cols,
                   size_t nrows, size_t every)
 {
     char err[512];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "error: %s\n", err);
         return -1;
     }
@@ -32,11 +32,11 @@ int fig_write_csv(const char *path, const char *header, int ncols, const double 
     return finish(&af, path);
 }
 
-int fig_write_text(const char *path, const char *text)
+int sus_plot_fig_write_text(const char *path, const char *text)
 {
     char err[512];
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0) {
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
         fprintf(stderr, "error: %s\n", err);
         return -1;
     }
@@ -44,20 +44,20 @@ int fig_write_text(const char *path, const char *text)
     return finish(&af, path);
 }
 
-const char *fig_path(char *buf, size_t len, const char *dir, const char *name, const char *ext)
+const char *sus_plot_fig_path(char *buf, size_t len, const char *dir, const char *name, const char *ext)
 {
     snprintf(buf, len, "%s/%s.%s", dir, name, ext);
     return buf;
 }
 
-int fig_write_figure(const char *dir, const char *name, double width, double height,
+int sus_plot_fig_write_figure(const char *dir, const char *name, double width, double height,
                      void (*draw)(cairo_t *, void *), void *ctx, const char *caption)
 {
     char base[4096], err[512];
     snprintf(base, sizeof base, "%s/%s", dir, name);
-    if (plot_write(base, width, height, draw, ctx, err, sizeof err) != 0) {
+    if (sus_plot_write(base, width, height, draw, ctx, err, sizeof err) != 0) {
         fprintf(stderr, "error: %s: %s\n", name, err);
         return -1;
     }
-    return fig_write_text(fig_path(base, sizeof base, dir, name, "txt"), caption);
+    return sus_plot_fig_write_text(sus_plot_fig_path(base, sizeof base, dir, name, "txt"), caption);
 }

@@ -3,7 +3,7 @@
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 
-int fig_setup_paper(int argc, const char *name, suslov_model *m, suslov_exact *ex)
+int sus_plot_fig_setup_paper(int argc, const char *name, sus_model *m, sus_exact *ex)
 {
     if (argc != 3) {
         fprintf(stderr, "usage: figure_%s FIGDIR DATADIR\n", name);
@@ -11,10 +11,10 @@ int fig_setup_paper(int argc, const char *name, suslov_model *m, suslov_exact *e
     }
     gsl_set_error_handler_off();
     char err[256];
-    if (suslov_model_init(m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) {
+    if (sus_model_init(m, SUS_PAPER_INERTIA, err, sizeof err) != 0) {
         fprintf(stderr, "figure_%s: the paper's inertia is rejected: %s\n", name, err);
         return 1;
     }
-    suslov_exact_init(ex, m, SUSLOV_PAPER_OMEGA0);
+    sus_exact_init(ex, m, SUS_PAPER_OMEGA0);
     return 0;
 }

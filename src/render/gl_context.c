@@ -3,15 +3,15 @@
 #include <GL/osmesa.h>
 #include <stdlib.h>
 
-struct gl_context {
+struct sus_plot_gl_context {
     OSMesaContext ctx;
     uint32_t *pixels;
     int width, height;
 };
 
-gl_context *gl_context_create(int width, int height)
+sus_plot_gl_context *sus_plot_gl_context_create(int width, int height)
 {
-    gl_context *c = calloc(1, sizeof *c);
+    sus_plot_gl_context *c = calloc(1, sizeof *c);
     if (!c)
         return NULL;
     c->width = width;
@@ -20,19 +20,19 @@ gl_context *gl_context_create(int width, int height)
     /* depthBits = 24: with 0 there is no depth buffer and the depth test silently passes */
     c->ctx = OSMesaCreateContextExt(OSMESA_BGRA, 24, 0, 0, NULL);
     if (!c->pixels || !c->ctx || !OSMesaMakeCurrent(c->ctx, c->pixels, GL_UNSIGNED_BYTE, width, height)) {
-        gl_context_destroy(c);
+        sus_plot_gl_context_destroy(c);
         return NULL;
     }
     OSMesaPixelStore(OSMESA_Y_UP, 0); /* row 0 at the top, as image files want it */
     return c;
 }
 
-uint32_t *gl_context_pixels(gl_context *c)
+uint32_t *sus_plot_gl_context_pixels(sus_plot_gl_context *c)
 {
     return c->pixels;
 }
 
-void gl_context_destroy(gl_context *c)
+void sus_plot_gl_context_destroy(sus_plot_gl_context *c)
 {
     if (!c)
         return;

@@ -12,25 +12,25 @@
 
 #define PLOT_PI 3.14159265358979323846
 
-const double PLOT_PALETTE[PLOT_PALETTE_N][3] = {
+const double SUS_PLOT_PALETTE[SUS_PLOT_PALETTE_N][3] = {
     {0.90, 0.62, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65}, {0.00, 0.45, 0.70},
     {0.84, 0.37, 0.00}, {0.34, 0.71, 0.91}, {0.60, 0.10, 0.15}, {0.20, 0.20, 0.20},
     {0.55, 0.35, 0.10}, {0.40, 0.40, 0.85}, {0.10, 0.40, 0.20}, {0.65, 0.65, 0.00}};
-const double PLOT_RED[3] = {0.85, 0.15, 0.10}, PLOT_BLUE[3] = {0.12, 0.35, 0.80},
-             PLOT_GREEN[3] = {0.10, 0.60, 0.20}, PLOT_ORANGE[3] = {0.95, 0.55, 0.05},
-             PLOT_PURPLE[3] = {0.55, 0.25, 0.70}, PLOT_GREY[3] = {0.45, 0.45, 0.45},
-             PLOT_BLACK[3] = {0.0, 0.0, 0.0};
+const double SUS_PLOT_RED[3] = {0.85, 0.15, 0.10}, SUS_PLOT_BLUE[3] = {0.12, 0.35, 0.80},
+             SUS_PLOT_GREEN[3] = {0.10, 0.60, 0.20}, SUS_PLOT_ORANGE[3] = {0.95, 0.55, 0.05},
+             SUS_PLOT_PURPLE[3] = {0.55, 0.25, 0.70}, SUS_PLOT_GREY[3] = {0.45, 0.45, 0.45},
+             SUS_PLOT_BLACK[3] = {0.0, 0.0, 0.0};
 
 #define TICK_FONT 8.0
 #define LABEL_FONT 9.5
 
-plot_style plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
+sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
                          const char *label)
 {
-    return (plot_style){rgb[0], rgb[1], rgb[2], width, dash, marker, size, label};
+    return (sus_plot_style){rgb[0], rgb[1], rgb[2], width, dash, marker, size, label};
 }
 
-void plot_extend(double *lo, double *hi, const double *v, size_t n, size_t stride, int log)
+void sus_plot_extend(double *lo, double *hi, const double *v, size_t n, size_t stride, int log)
 {
     for (size_t i = 0; i < n; i += stride) {
         if (!isfinite(v[i]) || (log && !(v[i] > 0.0)))
@@ -40,7 +40,7 @@ void plot_extend(double *lo, double *hi, const double *v, size_t n, size_t strid
     }
 }
 
-void plot_pad(double *lo, double *hi, int log)
+void sus_plot_pad(double *lo, double *hi, int log)
 {
     if (!(*lo <= *hi)) { /* nothing to show */
         *lo = log ? 0.1 : 0.0;
@@ -64,13 +64,13 @@ void plot_pad(double *lo, double *hi, int log)
     *hi += 0.05 * span;
 }
 
-void plot_axes_init(plot_axes *ax, cairo_t *cr, double x, double y, double w, double h,
+void sus_plot_axes_init(sus_plot_axes *ax, cairo_t *cr, double x, double y, double w, double h,
                     double x0, double x1, double y0, double y1, int xlog, int ylog)
 {
-    *ax = (plot_axes){cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog, 0};
+    *ax = (sus_plot_axes){cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog, 0};
 }
 
-void plot_cell(double width, double height, int rows, int cols, int idx, double *x, double *y,
+void sus_plot_cell(double width, double height, int rows, int cols, int idx, double *x, double *y,
                double *w, double *h)
 {
     const double left = 64.0, right = 14.0, top = 40.0, bottom = 36.0, hgap = 70.0, vgap = 50.0;
@@ -80,38 +80,38 @@ void plot_cell(double width, double height, int rows, int cols, int idx, double 
     *y = top + (idx / cols) * (*h + vgap);
 }
 
-void plot_axes_cell(plot_axes *ax, cairo_t *cr, double width, double height, int rows, int cols,
+void sus_plot_axes_cell(sus_plot_axes *ax, cairo_t *cr, double width, double height, int rows, int cols,
                     int idx, double x0, double x1, double y0, double y1, int xlog, int ylog)
 {
     double x, y, w, h;
-    plot_cell(width, height, rows, cols, idx, &x, &y, &w, &h);
-    plot_pad(&y0, &y1, ylog);
+    sus_plot_cell(width, height, rows, cols, idx, &x, &y, &w, &h);
+    sus_plot_pad(&y0, &y1, ylog);
     if (xlog) { /* a whole decade of padding would leave the data in a corner */
         x0 /= 1.25;
         x1 *= 1.25;
     }
-    plot_axes_init(ax, cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog);
+    sus_plot_axes_init(ax, cr, x, y, w, h, x0, x1, y0, y1, xlog, ylog);
 }
 
 static double tx(double v, int log) { return log ? log10(v) : v; }
 
-static double map_x(const plot_axes *ax, double v)
+static double map_x(const sus_plot_axes *ax, double v)
 {
     return ax->x +
            (tx(v, ax->xlog) - tx(ax->x0, ax->xlog)) / (tx(ax->x1, ax->xlog) - tx(ax->x0, ax->xlog)) * ax->w;
 }
 
-static double map_y(const plot_axes *ax, double v)
+static double map_y(const sus_plot_axes *ax, double v)
 {
     return ax->y + ax->h -
            (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
 }
 
-void plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
+void sus_plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
                double valign, int bold)
 {
     cairo_text_extents_t te;
-    cairo_select_font_face(cr, PLOT_FONT, CAIRO_FONT_SLANT_NORMAL,
+    cairo_select_font_face(cr, SUS_PLOT_FONT, CAIRO_FONT_SLANT_NORMAL,
                            bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, size);
     cairo_text_extents(cr, text, &te);
@@ -124,13 +124,13 @@ void plot_text(cairo_t *cr, double x, double y, const char *text, double size, d
 static double text_width(cairo_t *cr, const char *text, double size)
 {
     cairo_text_extents_t te;
-    cairo_select_font_face(cr, PLOT_FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_select_font_face(cr, SUS_PLOT_FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, size);
     cairo_text_extents(cr, text, &te);
     return te.x_advance;
 }
 
-/* "10" with a raised exponent, aligned like plot_text. The exponent keeps the tick size: the
+/* "10" with a raised exponent, aligned like sus_plot_text. The exponent keeps the tick size: the
  * figures print at 7/8 of their size in the companion, and 8 pt is the smallest that stays at
  * 7 pt there. */
 static void power_label(cairo_t *cr, double x, double y, int e, double halign, double valign)
@@ -139,8 +139,8 @@ static void power_label(cairo_t *cr, double x, double y, int e, double halign, d
     snprintf(ex, sizeof ex, "%d", e);
     const double w10 = text_width(cr, "10", TICK_FONT), we = text_width(cr, ex, TICK_FONT);
     const double x0 = x - halign * (w10 + 0.5 + we);
-    plot_text(cr, x0, y, "10", TICK_FONT, 0.0, valign, 0);
-    plot_text(cr, x0 + w10 + 0.5, y - TICK_FONT * 0.42, ex, TICK_FONT, 0.0, valign, 0);
+    sus_plot_text(cr, x0, y, "10", TICK_FONT, 0.0, valign, 0);
+    sus_plot_text(cr, x0 + w10 + 0.5, y - TICK_FONT * 0.42, ex, TICK_FONT, 0.0, valign, 0);
 }
 
 static double nice_step(double span)
@@ -163,7 +163,7 @@ static void tick_label(char *buf, size_t len, double v, double step)
 }
 
 /* Draws the ticks of one axis (vertical = 0 for x, 1 for y). */
-static void axis_ticks(const plot_axes *ax, int vertical)
+static void axis_ticks(const sus_plot_axes *ax, int vertical)
 {
     cairo_t *cr = ax->cr;
     const int log = vertical ? ax->ylog : ax->xlog;
@@ -209,18 +209,18 @@ static void axis_ticks(const plot_axes *ax, int vertical)
             cairo_move_to(cr, ax->x, py);
             cairo_line_to(cr, ax->x + major, py);
             cairo_stroke(cr);
-            plot_text(cr, ax->x - 3.0, py, buf, TICK_FONT, 1.0, 0.5, 0);
+            sus_plot_text(cr, ax->x - 3.0, py, buf, TICK_FONT, 1.0, 0.5, 0);
         } else {
             const double px = map_x(ax, v);
             cairo_move_to(cr, px, ax->y + ax->h);
             cairo_line_to(cr, px, ax->y + ax->h - major);
             cairo_stroke(cr);
-            plot_text(cr, px, ax->y + ax->h + 4.0, buf, TICK_FONT, 0.5, 0.0, 0);
+            sus_plot_text(cr, px, ax->y + ax->h + 4.0, buf, TICK_FONT, 0.5, 0.0, 0);
         }
     }
 }
 
-void plot_frame(const plot_axes *ax, const char *xlabel, const char *ylabel, const char *letter)
+void sus_plot_frame(const sus_plot_axes *ax, const char *xlabel, const char *ylabel, const char *letter)
 {
     cairo_t *cr = ax->cr;
     cairo_save(cr);
@@ -232,20 +232,20 @@ void plot_frame(const plot_axes *ax, const char *xlabel, const char *ylabel, con
         axis_ticks(ax, 0);
     axis_ticks(ax, 1);
     if (xlabel)
-        plot_text(cr, ax->x + 0.5 * ax->w, ax->y + ax->h + 16.0, xlabel, LABEL_FONT, 0.5, 0.0, 0);
+        sus_plot_text(cr, ax->x + 0.5 * ax->w, ax->y + ax->h + 16.0, xlabel, LABEL_FONT, 0.5, 0.0, 0);
     if (ylabel) {
         cairo_save(cr);
         cairo_translate(cr, ax->x - 40.0, ax->y + 0.5 * ax->h);
         cairo_rotate(cr, -PLOT_PI / 2.0);
-        plot_text(cr, 0.0, 0.0, ylabel, LABEL_FONT, 0.5, 0.5, 0);
+        sus_plot_text(cr, 0.0, 0.0, ylabel, LABEL_FONT, 0.5, 0.5, 0);
         cairo_restore(cr);
     }
     if (letter)
-        plot_text(cr, ax->x - 44.0, ax->y - 6.0, letter, LABEL_FONT + 1.0, 0.0, 1.0, 1);
+        sus_plot_text(cr, ax->x - 44.0, ax->y - 6.0, letter, LABEL_FONT + 1.0, 0.0, 1.0, 1);
     cairo_restore(cr);
 }
 
-static void set_style(cairo_t *cr, const plot_style *st)
+static void set_style(cairo_t *cr, const sus_plot_style *st)
 {
     static const double dashed[] = {4.0, 2.5}, dotted[] = {1.0, 2.0};
     cairo_set_source_rgb(cr, st->r, st->g, st->b);
@@ -260,12 +260,12 @@ static void set_style(cairo_t *cr, const plot_style *st)
         cairo_set_dash(cr, NULL, 0, 0.0);
 }
 
-static int visible(const plot_axes *ax, double x, double y)
+static int visible(const sus_plot_axes *ax, double x, double y)
 {
     return isfinite(x) && isfinite(y) && (!ax->xlog || x > 0.0) && (!ax->ylog || y > 0.0);
 }
 
-static void clip_to(const plot_axes *ax)
+static void clip_to(const sus_plot_axes *ax)
 {
     cairo_rectangle(ax->cr, ax->x, ax->y, ax->w, ax->h);
     cairo_clip(ax->cr);
@@ -276,27 +276,27 @@ static void marker(cairo_t *cr, int shape, double x, double y, double s)
     const double r = 0.5 * s;
     cairo_new_sub_path(cr);
     switch (shape) {
-    case PLOT_DOT:
-    case PLOT_CIRCLE:
+    case SUS_PLOT_DOT:
+    case SUS_PLOT_CIRCLE:
         cairo_arc(cr, x, y, r, 0.0, 2.0 * PLOT_PI);
         break;
-    case PLOT_SQUARE:
+    case SUS_PLOT_SQUARE:
         cairo_rectangle(cr, x - r, y - r, s, s);
         break;
-    case PLOT_TRIANGLE:
+    case SUS_PLOT_TRIANGLE:
         cairo_move_to(cr, x, y - 1.15 * r);
         cairo_line_to(cr, x + r, y + 0.75 * r);
         cairo_line_to(cr, x - r, y + 0.75 * r);
         cairo_close_path(cr);
         break;
-    case PLOT_DIAMOND:
+    case SUS_PLOT_DIAMOND:
         cairo_move_to(cr, x, y - 1.2 * r);
         cairo_line_to(cr, x + r, y);
         cairo_line_to(cr, x, y + 1.2 * r);
         cairo_line_to(cr, x - r, y);
         cairo_close_path(cr);
         break;
-    case PLOT_CROSS:
+    case SUS_PLOT_CROSS:
         cairo_move_to(cr, x - r, y - r);
         cairo_line_to(cr, x + r, y + r);
         cairo_move_to(cr, x - r, y + r);
@@ -310,7 +310,7 @@ static void marker(cairo_t *cr, int shape, double x, double y, double s)
 static void stroke_marker(cairo_t *cr, int shape)
 {
     cairo_set_dash(cr, NULL, 0, 0.0);
-    if (shape == PLOT_DOT)
+    if (shape == SUS_PLOT_DOT)
         cairo_fill(cr);
     else {
         cairo_set_line_width(cr, 0.7);
@@ -318,8 +318,8 @@ static void stroke_marker(cairo_t *cr, int shape)
     }
 }
 
-void plot_series(const plot_axes *ax, const double *x, const double *y, size_t n, size_t stride,
-                 const plot_style *st)
+void sus_plot_series(const sus_plot_axes *ax, const double *x, const double *y, size_t n, size_t stride,
+                 const sus_plot_style *st)
 {
     cairo_t *cr = ax->cr;
     if (st->width <= 0)
@@ -344,11 +344,11 @@ void plot_series(const plot_axes *ax, const double *x, const double *y, size_t n
     cairo_restore(cr);
 }
 
-void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t n, size_t every,
-                  const plot_style *st)
+void sus_plot_markers(const sus_plot_axes *ax, const double *x, const double *y, size_t n, size_t every,
+                  const sus_plot_style *st)
 {
     cairo_t *cr = ax->cr;
-    if (st->marker == PLOT_NONE)
+    if (st->marker == SUS_PLOT_NONE)
         return;
     cairo_save(cr);
     clip_to(ax);
@@ -362,7 +362,7 @@ void plot_markers(const plot_axes *ax, const double *x, const double *y, size_t 
     cairo_restore(cr);
 }
 
-void plot_rect(const plot_axes *ax, double x0, double x1, double y0, double y1, const double rgb[3])
+void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, double y1, const double rgb[3])
 {
     cairo_t *cr = ax->cr;
     cairo_save(cr);
@@ -374,7 +374,7 @@ void plot_rect(const plot_axes *ax, double x0, double x1, double y0, double y1, 
     cairo_restore(cr);
 }
 
-void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
+void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, int corner)
 {
     cairo_t *cr = ax->cr;
     const double row = 11.0, sample = 18.0, pad = 4.0, fs = 8.0;
@@ -415,26 +415,26 @@ void plot_legend(const plot_axes *ax, const plot_style *st, int n, int corner)
             stroke_marker(cr, st[i].marker);
         }
         cairo_set_source_rgb(cr, 0, 0, 0);
-        plot_text(cr, bx + 2 * pad + sample, cy, st[i].label, fs, 0.0, 0.5, 0);
+        sus_plot_text(cr, bx + 2 * pad + sample, cy, st[i].label, fs, 0.0, 0.5, 0);
         k++;
     }
     cairo_restore(cr);
 }
 
-void plot_slope(const plot_axes *ax, double xa, double xb, double yb, double slope, const char *label)
+void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope, const char *label)
 {
     cairo_t *cr = ax->cr;
     const double ya = yb * pow(xa / xb, slope);
     cairo_save(cr);
     clip_to(ax);
-    const plot_style st = plot_style_of(PLOT_GREY, 0.8, 1, PLOT_NONE, 0, NULL);
+    const sus_plot_style st = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, NULL);
     set_style(cr, &st);
     cairo_move_to(cr, map_x(ax, xa), map_y(ax, ya));
     cairo_line_to(cr, map_x(ax, xb), map_y(ax, yb));
     cairo_stroke(cr);
     if (label) { /* at the left end, so that segments sharing a right end keep apart */
         cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-        plot_text(cr, map_x(ax, xa) - 2.0, map_y(ax, ya), label, TICK_FONT, 1.0, 0.5, 0);
+        sus_plot_text(cr, map_x(ax, xa) - 2.0, map_y(ax, ya), label, TICK_FONT, 1.0, 0.5, 0);
     }
     cairo_restore(cr);
 }
@@ -474,11 +474,11 @@ static cairo_status_t draw_pdf(FILE *fp, double width, double height, void (*dra
     return st;
 }
 
-/* At PLOT_PNG_DPI. */
+/* At SUS_PLOT_PNG_DPI. */
 static cairo_status_t draw_png(FILE *fp, double width, double height, void (*draw)(cairo_t *, void *),
                                void *ctx)
 {
-    const double s = PLOT_PNG_DPI / 72.0;
+    const double s = SUS_PLOT_PNG_DPI / 72.0;
     cairo_surface_t *img =
         cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width * s), (int)ceil(height * s));
     cairo_t *cr = cairo_create(img);
@@ -497,33 +497,33 @@ typedef cairo_status_t (*page_writer)(FILE *, double, double, void (*)(cairo_t *
 static int write_one(const char *path, page_writer wr, double width, double height,
                      void (*draw)(cairo_t *, void *), void *ctx, char *err, size_t errlen)
 {
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, errlen) != 0)
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, errlen) != 0)
         return -1;
     const cairo_status_t st = wr(af.fp, width, height, draw, ctx);
     if (st != CAIRO_STATUS_SUCCESS) {
-        atomic_file_abort(&af);
+        sus_sys_atomic_file_abort(&af);
         snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
         return -1;
     }
-    return atomic_file_commit(&af, err, errlen);
+    return sus_sys_atomic_file_commit(&af, err, errlen);
 }
 
-int plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
+int sus_plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
 {
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, errlen) != 0)
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, errlen) != 0)
         return -1;
     const cairo_status_t st = cairo_surface_write_to_png_stream(s, write_to, af.fp);
     if (st != CAIRO_STATUS_SUCCESS) {
-        atomic_file_abort(&af);
+        sus_sys_atomic_file_abort(&af);
         snprintf(err, errlen, "writing %s failed: %s", path, cairo_status_to_string(st));
         return -1;
     }
-    return atomic_file_commit(&af, err, errlen);
+    return sus_sys_atomic_file_commit(&af, err, errlen);
 }
 
-int plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
+int sus_plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
                void *ctx, char *err, size_t errlen)
 {
     char path[4096];

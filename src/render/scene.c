@@ -25,14 +25,14 @@ static void perspective(double m[16], double fovy_deg, double aspect, double zne
 static void look_at(double m[16], const double eye[3], const double up[3])
 {
     double f[3] = {-eye[0], -eye[1], -eye[2]}, s[3], u[3]; /* looking at the origin */
-    const double nf = vec3_norm(f);
+    const double nf = sus_vec3_norm(f);
     for (int i = 0; i < 3; i++)
         f[i] /= nf;
-    vec3_cross(s, f, up);
-    const double ns = vec3_norm(s);
+    sus_vec3_cross(s, f, up);
+    const double ns = sus_vec3_norm(s);
     for (int i = 0; i < 3; i++)
         s[i] /= ns;
-    vec3_cross(u, s, f);
+    sus_vec3_cross(u, s, f);
     memset(m, 0, 16 * sizeof(double));
     for (int i = 0; i < 3; i++) {
         m[4 * i + 0] = s[i];
@@ -61,7 +61,7 @@ static void gl_matrix(const double A[3][3], double m[16])
     m[15] = 1.0;
 }
 
-int scene_init(scene *s, const suslov_model *mdl, int vw, int vh)
+int sus_plot_scene_init(sus_plot_scene *s, const sus_model *mdl, int vw, int vh)
 {
     /* principal axes and moments of the symmetric part of I */
     gsl_matrix *S = gsl_matrix_alloc(3, 3), *V = gsl_matrix_alloc(3, 3);
@@ -80,7 +80,7 @@ int scene_init(scene *s, const suslov_model *mdl, int vw, int vh)
         for (int j = 0; j < 3; j++)
             s->axes[j][i] = gsl_matrix_get(V, j, i);
     }
-    if (mat3_det(s->axes) < 0) /* keep the frame right-handed */
+    if (sus_mat3_det(s->axes) < 0) /* keep the frame right-handed */
         for (int j = 0; j < 3; j++)
             s->axes[j][2] = -s->axes[j][2];
     /* a uniform box with half extents a_i has I_i proportional to a_j^2 + a_k^2 */
@@ -103,11 +103,11 @@ int scene_init(scene *s, const suslov_model *mdl, int vw, int vh)
     return 0;
 }
 
-int scene_project(const scene *s, const double R[3][3], const double p[3], int x0, int y0, int vw, int vh,
-                  int H, double *px, double *py)
+int sus_plot_scene_project(const sus_plot_scene *s, const double R[3][3], const double p[3], int x0, int y0,
+                           int vw, int vh, int H, double *px, double *py)
 {
     double q[3], a[4], b[4], clip[4];
-    mat3_vec(q, R, p);
+    sus_mat3_vec(q, R, p);
     const double v[4] = {q[0], q[1], q[2], 1.0};
     mul4v(s->view, v, a);
     memcpy(b, a, sizeof b);
@@ -121,13 +121,13 @@ int scene_project(const scene *s, const double R[3][3], const double p[3], int x
     return 0;
 }
 
-void scene_body_push_trail(scene_body *b)
+void sus_plot_scene_body_push_trail(sus_plot_scene_body *b)
 {
-    const double e3[3] = {0.0, 0.0, SCENE_E3_TIP};
+    const double e3[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
     double tip[3];
-    mat3_vec(tip, b->R, e3);
-    if (b->ntrail == SCENE_TRAIL) {
-        memmove(b->trail, b->trail + 1, (SCENE_TRAIL - 1) * sizeof b->trail[0]);
+    sus_mat3_vec(tip, b->R, e3);
+    if (b->ntrail == SUS_PLOT_SCENE_TRAIL) {
+        memmove(b->trail, b->trail + 1, (SUS_PLOT_SCENE_TRAIL - 1) * sizeof b->trail[0]);
         b->ntrail--;
     }
     memcpy(b->trail[b->ntrail++], tip, sizeof tip);
@@ -167,7 +167,8 @@ static void arrow(const double from[3], const double to[3], double width)
     glEnd();
 }
 
-void scene_draw(const scene *s, const scene_body *b, int x0, int y0, int vw, int vh, int only_e3_tip)
+void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, int x0, int y0, int vw,
+                         int vh, int only_e3_tip)
 {
     double m[16];
     const double origin[3] = {0, 0, 0};
@@ -179,7 +180,7 @@ void scene_draw(const scene *s, const scene_body *b, int x0, int y0, int vw, int
     glLoadMatrixd(s->view);
     gl_matrix(b->R, m);
     if (only_e3_tip) {
-        const double tip[3] = {0.0, 0.0, SCENE_E3_TIP};
+        const double tip[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
         glDisable(GL_LIGHTING);
         glMultMatrixd(m);
         glColor3d(0.0, 1.0, 0.0);
@@ -214,14 +215,14 @@ void scene_draw(const scene *s, const scene_body *b, int x0, int y0, int vw, int
     glDisable(GL_BLEND);
     /* w in the space frame, R w */
     double ws[3], wtip[3];
-    mat3_vec(ws, b->R, b->w);
+    sus_mat3_vec(ws, b->R, b->w);
     for (int i = 0; i < 3; i++)
         wtip[i] = 2.0 * ws[i];
     glColor3d(0.95, 0.60, 0.05);
     arrow(origin, wtip, 3.0);
     /* the body */
     glMultMatrixd(m);
-    const double e[3][3] = {{1.3, 0, 0}, {0, 1.3, 0}, {0, 0, SCENE_E3_TIP}};
+    const double e[3][3] = {{1.3, 0, 0}, {0, 1.3, 0}, {0, 0, SUS_PLOT_SCENE_E3_TIP}};
     glColor3d(0.30, 0.30, 0.30);
     arrow(origin, e[0], 2.5);
     arrow(origin, e[1], 2.5);

@@ -31,7 +31,7 @@ static volatile sig_atomic_t slot_used[SLOTS];
 /* Async-signal-safe: unlink, sigaction and raise only. The signal is blocked while its
  * handler runs, so raise() leaves it pending; it is delivered with the default action on
  * return and the process ends with the conventional status 128 + signo. */
-void atomic_file_remove_temporaries(void)
+void sus_sys_atomic_file_remove_temporaries(void)
 {
     for (int i = 0; i < SLOTS; i++)
         if (slot_used[i])
@@ -40,7 +40,7 @@ void atomic_file_remove_temporaries(void)
 
 static void cleanup_and_die(int sig)
 {
-    atomic_file_remove_temporaries();
+    sus_sys_atomic_file_remove_temporaries();
     struct sigaction dfl;
     memset(&dfl, 0, sizeof dfl);
     dfl.sa_handler = SIG_DFL;
@@ -219,10 +219,11 @@ static int check_names(const char *path, const char *target, const char *dir, ch
 {
     const char *base = strrchr(target, '/') ? strrchr(target, '/') + 1 : target;
     const long name_max = pathconf(dir, _PC_NAME_MAX);
-    const size_t tmp_len = strlen(dir) + 1 + strlen(ATOMIC_FILE_TMP_PREFIX) + ATOMIC_FILE_TMP_SUFFIX_MAX;
+    const size_t tmp_len =
+        strlen(dir) + 1 + strlen(SUS_SYS_ATOMIC_TMP_PREFIX) + SUS_SYS_ATOMIC_TMP_SUFFIX_MAX;
     if (name_max > 0 && strlen(base) > (size_t)name_max)
         return fail(err, errlen, "cannot write %s: its name is longer than the directory allows", path);
-    if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX || tmp_len >= sizeof((atomic_file *)0)->tmp)
+    if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX || tmp_len >= sizeof((sus_sys_atomic_file *)0)->tmp)
         return fail(err, errlen, "cannot write %s: the path (or its temporary in %s) is too long", path, dir);
     return 0;
 }
@@ -243,7 +244,7 @@ static int check_replace(const char *path, const char *target, const struct stat
     return 0;
 }
 
-int atomic_file_check(const char *path, char *err, size_t errlen)
+int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
 {
     char target[4096], dir[4096];
     struct stat sb;
@@ -282,7 +283,7 @@ int atomic_file_check(const char *path, char *err, size_t errlen)
 }
 
 /* stdout, a descriptor, a device or a pipe: written where it is. */
-static int open_in_place(atomic_file *af, const char *path, int fd, char *err, size_t errlen)
+static int open_in_place(sus_sys_atomic_file *af, const char *path, int fd, char *err, size_t errlen)
 {
     af->in_place = 1;
     af->target[0] = '\0';
@@ -301,10 +302,10 @@ static int open_in_place(atomic_file *af, const char *path, int fd, char *err, s
 }
 
 /* A named temporary in dir, registered for removal on a signal. */
-static int open_named(atomic_file *af, const char *dir)
+static int open_named(sus_sys_atomic_file *af, const char *dir)
 {
     /* the length was checked by check_names */
-    if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%sXXXXXX", dir, ATOMIC_FILE_TMP_PREFIX) >=
+    if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%sXXXXXX", dir, SUS_SYS_ATOMIC_TMP_PREFIX) >=
         sizeof af->tmp) {
         errno = ENAMETOOLONG;
         return -1;
@@ -333,11 +334,11 @@ static mode_t mode_for(int exists, const struct stat *sb)
     return 0666 & ~mask;
 }
 
-int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen)
+int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *err, size_t errlen)
 {
     struct stat sb;
-    *af = (atomic_file){.path = is_stdout(path) ? NULL : path, .slot = -1};
-    if (atomic_file_check(path, err, errlen) != 0)
+    *af = (sus_sys_atomic_file){.path = is_stdout(path) ? NULL : path, .slot = -1};
+    if (sus_sys_atomic_file_check(path, err, errlen) != 0)
         return -1;
     const int dfd = is_stdout(path) ? -1 : fd_of_path(path);
     if (is_stdout(path) || dfd >= 0)
@@ -366,21 +367,21 @@ int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen
     if (fchmod(fd, mode) != 0 || !(af->fp = fdopen(fd, "w"))) {
         snprintf(err, errlen, "cannot create %s: %s", path, strerror(errno));
         close(fd);
-        atomic_file_abort(af);
+        sus_sys_atomic_file_abort(af);
         return -1;
     }
     return 0;
 }
 
 /* Gives the unnamed file a temporary name in the target's directory. */
-static int link_unnamed(atomic_file *af)
+static int link_unnamed(sus_sys_atomic_file *af)
 {
     char proc[64], dir[4096];
     const int fd = fileno(af->fp);
     snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
     dir_of(af->target, dir, sizeof dir);
     for (int i = 0; i < 1000; i++) {
-        if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%s%ld.%d", dir, ATOMIC_FILE_TMP_PREFIX,
+        if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%s%ld.%d", dir, SUS_SYS_ATOMIC_TMP_PREFIX,
                              (long)getpid(), i) >= sizeof af->tmp) {
             errno = ENAMETOOLONG;
             break;
@@ -395,7 +396,7 @@ static int link_unnamed(atomic_file *af)
     return -1;
 }
 
-static int commit_in_place(atomic_file *af, char *err, size_t errlen)
+static int commit_in_place(sus_sys_atomic_file *af, char *err, size_t errlen)
 {
     const char *name = af->path ? af->path : "stdout";
     int bad = (fflush(af->fp) != 0) | ferror(af->fp);
@@ -410,7 +411,7 @@ static int commit_in_place(atomic_file *af, char *err, size_t errlen)
     return bad ? -1 : 0;
 }
 
-int atomic_file_commit(atomic_file *af, char *err, size_t errlen)
+int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen)
 {
     if (af->in_place)
         return commit_in_place(af, err, errlen);
@@ -449,7 +450,7 @@ int atomic_file_commit(atomic_file *af, char *err, size_t errlen)
     return bad ? -1 : 0;
 }
 
-void atomic_file_abort(atomic_file *af)
+void sus_sys_atomic_file_abort(sus_sys_atomic_file *af)
 {
     sigset_t old;
     block_signals(&old);

@@ -6,7 +6,7 @@
  * file is a named mkstemp temporary; every catchable signal whose default action ends the
  * process then removes it before the process dies of that signal (handlers are installed
  * only where the signal has its default action, so e.g. nohup's ignored SIGHUP stays ignored).
- * The temporary's name, ATOMIC_FILE_TMP_PREFIX plus at most ATOMIC_FILE_TMP_SUFFIX_MAX
+ * The temporary's name, SUS_SYS_ATOMIC_TMP_PREFIX plus at most SUS_SYS_ATOMIC_TMP_SUFFIX_MAX
  * characters, does not grow with the target's name, so any valid target name can be written.
  *
  * Unix semantics, as a shell redirection where it can be and as cp without -f where not:
@@ -19,14 +19,14 @@
  *   keeps its mode but not its owner (the writer owns the new file) and not its hard links
  *   (the other names keep the old contents); a read-only file is refused; a symbolic link is
  *   written through (its target is replaced, the link stays). */
-#ifndef SUSLOV_ATOMIC_FILE_H
-#define SUSLOV_ATOMIC_FILE_H
+#ifndef SUS_SYS_ATOMIC_FILE_H
+#define SUS_SYS_ATOMIC_FILE_H
 
 #include <stddef.h>
 #include <stdio.h>
 
-#define ATOMIC_FILE_TMP_PREFIX ".tmp."
-#define ATOMIC_FILE_TMP_SUFFIX_MAX 24 /* "XXXXXX" or "PID.I": a pid and a counter below 1000 */
+#define SUS_SYS_ATOMIC_TMP_PREFIX ".tmp."
+#define SUS_SYS_ATOMIC_TMP_SUFFIX_MAX 24 /* "XXXXXX" or "PID.I": a pid and a counter below 1000 */
 
 typedef struct {
     FILE *fp;
@@ -36,7 +36,7 @@ typedef struct {
     int unnamed;          /* 1: an O_TMPFILE file, named only on commit */
     int in_place;         /* 1: stdout, a descriptor, a device or a pipe: never renamed */
     int slot;             /* its entry in the signal-cleanup table, or -1 */
-} atomic_file;
+} sus_sys_atomic_file;
 
 /* Checks, without creating anything, every condition of a later commit that can be checked
  * now: the path is non-empty and not a directory; for a descriptor, device or pipe, that it
@@ -44,15 +44,15 @@ typedef struct {
  * and is writable, that the temporary's name fits (NAME_MAX, PATH_MAX) and that the rename
  * is permitted (a sticky directory lets only the owner of the file or directory replace it).
  * Returns 0, or -1 with a one-line reason in err. */
-int atomic_file_check(const char *path, char *err, size_t errlen);
+int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen);
 /* Returns 0, or -1 with a one-line reason in err (nothing is left behind). */
-int atomic_file_open(atomic_file *af, const char *path, char *err, size_t errlen);
+int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *err, size_t errlen);
 /* Flushes, closes and renames into place. Returns 0, or -1 with a reason. */
-int atomic_file_commit(atomic_file *af, char *err, size_t errlen);
+int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen);
 /* Closes and removes the temporary file; the final path is left untouched. */
-void atomic_file_abort(atomic_file *af);
+void sus_sys_atomic_file_abort(sus_sys_atomic_file *af);
 /* Removes every named temporary now open; async-signal-safe, for a program that handles a
  * signal itself (its handler then takes precedence over this file's). */
-void atomic_file_remove_temporaries(void);
+void sus_sys_atomic_file_remove_temporaries(void);
 
 #endif

@@ -1,10 +1,10 @@
 /* Seconds on the monotonic clock, for timing the benchmark and the renderer. */
-#ifndef SUSLOV_MONOCLOCK_H
-#define SUSLOV_MONOCLOCK_H
+#ifndef SUS_SYS_MONOCLOCK_H
+#define SUS_SYS_MONOCLOCK_H
 
 #include <time.h>
 
-static inline double suslov_now(void)
+static inline double sus_sys_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);

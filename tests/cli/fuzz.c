@@ -443,17 +443,17 @@ static pid_t spawn(const run_mode *rm, const char *out, const char *err)
 static int wait_run(pid_t pid, const run_mode *rm, int *stopped, int *sent)
 {
     int status = 0;
-    const double t0 = suslov_now();
+    const double t0 = sus_sys_now();
     *stopped = *sent = 0;
     while (waitpid(pid, &status, WNOHANG) != pid) {
-        if (rm->kill_sig && !*sent && suslov_now() - t0 > rm->kill_after) {
+        if (rm->kill_sig && !*sent && sus_sys_now() - t0 > rm->kill_after) {
             kill(pid, rm->kill_sig);
             *sent = 1;
         }
-        if (!*stopped && suslov_now() - t0 > run_limit) {
+        if (!*stopped && sus_sys_now() - t0 > run_limit) {
             kill(pid, SIGTERM);
             *stopped = 1;
-        } else if (*stopped && suslov_now() - t0 > run_limit + 30.0) {
+        } else if (*stopped && sus_sys_now() - t0 > run_limit + 30.0) {
             kill(pid, SIGKILL);
         }
         usleep(2000);
@@ -577,7 +577,7 @@ static double startup_time(void)
 {
     double worst = 0.0;
     for (int i = 0; i < 3; i++) {
-        const double t0 = suslov_now();
+        const double t0 = sus_sys_now();
         const pid_t pid = fork();
         if (pid == 0) {
             const int fd = open("/dev/null", O_WRONLY);
@@ -586,7 +586,7 @@ static double startup_time(void)
             _exit(122);
         }
         waitpid(pid, NULL, 0);
-        const double dt = suslov_now() - t0;
+        const double dt = sus_sys_now() - t0;
         worst = dt > worst ? dt : worst;
     }
     return worst;
@@ -633,8 +633,8 @@ int main(int argc, char **argv)
     fflush(stdout);
     rng_state = seed ? seed : 1;
     long pass = 0, fail = 0;
-    const double start = suslov_now();
-    for (long id = 0; suslov_now() - start < seconds; id++) {
+    const double start = sus_sys_now();
+    for (long id = 0; sus_sys_now() - start < seconds; id++) {
         char why[1024];
         generate();
         run_mode rm = {.no_tmpfile = pick(4) == 0, .as_nobody = root && pick(5) == 0};

@@ -245,7 +245,7 @@ if command -v script >/dev/null; then
         sh -c "test $rc = 0 && grep -q 'suslov: step [0-9]* of 200000 (.*), t = .*steps/s, .* s left' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b && test ! -s '$T/ttyq' -a ! -s '$T/notty'"
 fi
 
-# a write error (emit asks the run to stop: SUSLOV_RUN_STOPPED) is status 1 with one line,
+# a write error (emit asks the run to stop: SUS_RUN_STOPPED) is status 1 with one line,
 # distinct from a solver failure (3)
 if [ -c /dev/full ]; then
     "$S" --no-header --method rk4 --eps 0.1 --steps 100000 >/dev/full 2>"$T/err"; rc1=$?

@@ -16,13 +16,14 @@ check "installed: bin/suslov, lib/libsuslov.a, include/suslov/driver.h, lib/pkgc
 
 cat >"$T/prog.c" <<'C'
 #include <driver.h>
+#include <dsp.h>
 #include <stdio.h>
 int main(void)
 {
-    suslov_model m; char err[256]; suslov_row last; suslov_run_report rep;
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0) return 1;
-    const suslov_run_config cfg = {&m, suslov_step_midpoint, SUSLOV_RECON_CAYLEY, 0.1, 10, 10};
-    if (suslov_run(&cfg, SUSLOV_PAPER_OMEGA0, suslov_keep_last, &last, &rep) != SUSLOV_RUN_OK) return 1;
+    sus_model m; char err[256]; sus_row last; sus_run_report rep;
+    if (sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) != 0) return 1;
+    const sus_run_config cfg = {&m, sus_step_midpoint, SUS_RECON_CAYLEY, 0.1, 10, 10};
+    if (sus_run(&cfg, SUS_PAPER_OMEGA0, sus_keep_last, &last, &rep) != SUS_RUN_OK) return 1;
     printf("%ld,%.17g,%.17g,%.17g\n", last.k, last.t, last.w[0], last.w[1]);
     return 0;
 }

@@ -142,7 +142,7 @@ t300=$(timeout 20 "$S" --no-header --method exact --eps 1e300 --steps 1 --omega0
 ref2=$(last 1 1,0)
 check "exact at t = 1e300, w0 = (1e-300, 0): R equals that at t = 1, w0 = (1, 0) to 1e-14" same "$t300" "$ref2" 1e-300 1e-14
 big=$(timeout 20 "$S" --no-header --method exact --eps 1e155 --steps 1 2>"$T/err" | tail -1); rc=$?
-check "exact at t = 1e155 (the old so3_exp squared the rotation vector): finite, R orthogonal to 1e-14 ($(cat "$T/err"))" \
+check "exact at t = 1e155 (the old sus_so3_exp squared the rotation vector): finite, R orthogonal to 1e-14 ($(cat "$T/err"))" \
     sh -c "echo '$big' | awk -F, '{ for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) { s = 0; for (l = 0; l < 3; l++) s += \$(8 + 3 * i + l) * \$(8 + 3 * j + l); d = s - (i == j); if (d * d > 1e-28) bad = 1 } } END { exit bad || NR != 1 }'"
 a=$("$S" --no-header --method exact --eps 1e19 --steps 1 --omega0 1e-20,0 | tail -1)
 b=$("$S" --no-header --method exact --eps 0.1 --steps 1 --omega0 1,0 | tail -1)

@@ -29,6 +29,7 @@
 #include "refattitude.h"
 #include "so3.h"
 #include "unreduced.h"
+#include "dsp.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
@@ -42,20 +43,20 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NJ 11   /* the paper's window: eps = 2^-j, j = 0 .. 10, for the experiments in this file */
 #define T_GLOBAL 10.0
 
-#define FIT_EPS_MAX SUSLOV_FIT_EPS_MAX
-#define FIT_FLOOR_REL SUSLOV_FIT_FLOOR_REL
-#define SIZE_W SUSLOV_SIZE_W
-#define SIZE_LAMBDA SUSLOV_SIZE_LAMBDA
-#define SIZE_R SUSLOV_SIZE_R
+#define FIT_EPS_MAX SUS_EXP_FIT_EPS_MAX
+#define FIT_FLOOR_REL SUS_EXP_FIT_FLOOR_REL
+#define SIZE_W SUS_EXP_SIZE_W
+#define SIZE_LAMBDA SUS_EXP_SIZE_LAMBDA
+#define SIZE_R SUS_EXP_SIZE_R
 /* An order is an integer; a tenth of the gap between consecutive orders tells p from p +- 1
  * unambiguously and leaves room for the O(k eps) bend over the window. */
 #define ORDER_TOL 0.1
 
 static double eps_of(int j) { return ldexp(1.0, -j); }
 
-static const suslov_model *model;
-static suslov_exact ex;
-static suslov_convergence conv;
+static const sus_model *model;
+static sus_exact ex;
+static sus_exp_convergence conv;
 /* smallest SO(3) errors that entered a fit, local and global: the reference attitude must be
  * far more accurate than these */
 static double min_so3_fitted[2] = {INFINITY, INFINITY};
@@ -66,11 +67,11 @@ static double min_so3_fitted[2] = {INFINITY, INFINITY};
 static double fit_on(const double *eps, const double *err, int n, int local, double size, double eps_max)
 {
     const double floor = FIT_FLOOR_REL * size;
-    suslov_order_fit f;
+    sus_exp_order_fit f;
     for (int j = 0; j < n; j++)
         if (size == SIZE_R && eps[j] <= eps_max && err[j] > floor)
             min_so3_fitted[local] = fmin(min_so3_fitted[local], err[j]);
-    if (suslov_fit_order(eps, err, n, eps_max, floor, &f) != 0)
+    if (sus_exp_fit_order(eps, err, n, eps_max, floor, &f) != 0)
         return NAN;
     return f.slope - (local ? 1.0 : 0.0);
 }
@@ -87,11 +88,11 @@ static double fit(const double *err, int local, double size)
 /* Local (global) order of a convergence-sweep curve, in the paper's window. */
 static double fit_local(const double *err, double size)
 {
-    return fit_on(conv.eps, err, SUSLOV_CONV_NJ, 1, size, FIT_EPS_MAX);
+    return fit_on(conv.eps, err, SUS_EXP_CONV_NJ, 1, size, FIT_EPS_MAX);
 }
 static double fit_global(const double *err, double size)
 {
-    return fit_on(conv.glob_eps, err, SUSLOV_CONV_NJ, 0, size, FIT_EPS_MAX);
+    return fit_on(conv.glob_eps, err, SUS_EXP_CONV_NJ, 0, size, FIT_EPS_MAX);
 }
 
 static void order_line(const char *id, const char *ref, const char *what, double measured, double expected,
@@ -106,7 +107,7 @@ static void order_line(const char *id, const char *ref, const char *what, double
 
 /* The expected orders of a registered method; a method the table does not know fails here, so
  * no expected value is ever taken from the stepper under test. */
-static const expected_order *expected(const suslov_stepper_type *st)
+static const expected_order *expected(const sus_stepper_type *st)
 {
     const expected_order *e = expected_order_of(st->name);
     if (!e) {
@@ -127,9 +128,9 @@ static void local_claims(void)
     char id[64], what[192];
     double unreduced_min = INFINITY;
     for (int s = 0; s < conv.nmethod; s++) {
-        const suslov_method *me = suslov_method_get(s);
-        const suslov_stepper_type *st = me->type;
-        const suslov_conv_method *cm = &conv.m[s];
+        const sus_step_method *me = sus_step_method_get(s);
+        const sus_stepper_type *st = me->type;
+        const sus_exp_conv_method *cm = &conv.m[s];
         const expected_order *eo = expected(st);
         if (!eo || !me->paper_ref)
             continue; /* missing: recorded as a failure; an extension: tests/ledger/claims_methods.c */
@@ -144,14 +145,14 @@ static void local_claims(void)
             order_line(id, eo->ref, what, fit_local(cm->loc_lambda, SIZE_LAMBDA), eo->s,
                        me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
         }
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+        for (int r = 0; r < SUS_RECON_COUNT; r++) {
             /* TeoL: the unreduced order is min(r, l), r from (MetMat) on SO(3), l = p. */
             const double rr = fit_local(cm->loc_so3[r], SIZE_R);
-            const int paper = r == SUSLOV_RECON_CAYLEY && me->paper_ref;
-            snprintf(id, sizeof id, "unreduced-order-%s-%s", SUSLOV_RECON_NAMES[r], st->name);
+            const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
+            snprintf(id, sizeof id, "unreduced-order-%s-%s", SUS_RECON_NAMES[r], st->name);
             snprintf(what, sizeof what, "min(r, p), r: local slope of (MetMat) dist minus 1, "
                                         "reconstruction %s, %s",
-                     SUSLOV_RECON_NAMES[r], st->name);
+                     SUS_RECON_NAMES[r], st->name);
             order_line(id, paper ? "TeoL" : "TeoL (extension)", what, min_nan(rr, p), eo->so3[r],
                        paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
             if (paper)
@@ -179,30 +180,30 @@ static void variational_multiplier_claims(void)
     for (int t = 0; t < NTK; t++) {
         double x[5], y[5], c0, c1, c00, c01, c11, ss;
         for (int i = 0; i < 5; i++) {
-            suslov_local_ref ref;
-            suslov_local_err e;
+            sus_exp_local_ref ref;
+            sus_exp_local_err e;
             x[i] = ldexp(1.0, -10 - i);
-            suslov_local_ref_init(&ref, &ex, TK[t], x[i]);
-            if (suslov_local_errors(model, suslov_step_variational, &ref, &e) != SUSLOV_STEP_OK)
+            sus_exp_local_ref_init(&ref, &ex, TK[t], x[i]);
+            if (sus_exp_local_errors(model, sus_step_variational, &ref, &e) != SUS_STEPPER_OK)
                 ledger_die("variational local step");
             y[i] = e.lambda_signed;
         }
         gsl_fit_linear(x, 1, y, 1, 5, &c0, &c1, &c00, &c01, &c11, &ss);
         double wk[2];
-        suslov_exact_omega(&ex, TK[t], wk);
-        worst = fmax(worst, fabs(c0 - suslov_lagmult_o0(model, wk)));
+        sus_exact_omega(&ex, TK[t], wk);
+        worst = fmax(worst, fabs(c0 - sus_lagmult_o0(model, wk)));
         /* With the exact dcay^{-1} ((3,3) entry 1, not 0) the multiplier gains (c(x) - c(w))/eps. */
         for (int j = 0; j < NJ; j++) {
             const double eps = eps_of(j);
             double w[3] = {wk[0], wk[1], 0.0}, xn[3], lam, wm[2], we[2];
-            suslov_step_stats st;
-            if (suslov_step_variational->apply(model, eps, w, xn, &lam, &st) != SUSLOV_STEP_OK)
+            sus_stepper_stats st;
+            if (sus_step_variational->apply(model, eps, w, xn, &lam, &st) != SUS_STEPPER_OK)
                 ledger_die("variational step");
-            const double full = lam + (suslov_c(model, xn) - suslov_c(model, w)) / eps;
-            suslov_exact_omega(&ex, TK[t] + eps, we);
-            suslov_exact_omega(&ex, TK[t] + 0.5 * eps, wm);
-            full_err[j] = fmax(full_err[j], fabs(suslov_lagmult(model, we) - full));
-            half_err[j] = fmax(half_err[j], fabs(suslov_lagmult(model, wm) - full));
+            const double full = lam + (sus_c(model, xn) - sus_c(model, w)) / eps;
+            sus_exact_omega(&ex, TK[t] + eps, we);
+            sus_exact_omega(&ex, TK[t] + 0.5 * eps, wm);
+            full_err[j] = fmax(full_err[j], fabs(sus_lagmult(model, we) - full));
+            half_err[j] = fmax(half_err[j], fabs(sus_lagmult(model, wm) - full));
         }
     }
     ledger_add("lambda-limit-variational", "PropoFinal (proof)",
@@ -228,8 +229,8 @@ static void cayinver_claim(void)
         const double eps = 0.125 * (n + 1), w[2] = {0.4 + 0.01 * n, 0.5 - 0.02 * n};
         const double ew[3] = {eps * w[0], eps * w[1], 0.0};
         double P[3][3], D[3][3];
-        so3_cayinver_printed(eps, w, P);
-        so3_dcay_inv(ew, D);
+        sus_so3_cayinver_printed(eps, w, P);
+        sus_so3_dcay_inv(ew, D);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 if (i == 2 && j == 2)
@@ -261,9 +262,9 @@ static void global_claims(void)
 {
     char id[64], what[192];
     for (int s = 0; s < conv.nmethod; s++) {
-        const suslov_method *me = suslov_method_get(s);
-        const suslov_stepper_type *st = me->type;
-        const suslov_conv_method *cm = &conv.m[s];
+        const sus_step_method *me = sus_step_method_get(s);
+        const sus_stepper_type *st = me->type;
+        const sus_exp_conv_method *cm = &conv.m[s];
         const expected_order *eo = expected_order_of(st->name);
         if (!eo || !me->paper_ref)
             continue; /* local_claims has recorded the failure; an extension: tests/ledger/claims_methods.c */
@@ -271,10 +272,10 @@ static void global_claims(void)
         snprintf(what, sizeof what, "slope of the global error |w(10) - w_N|, %s", st->name);
         order_line(id, eo->ref, what, fit_global(cm->glob_w, SIZE_W), eo->p,
                    me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-            snprintf(id, sizeof id, "global-so3-order-%s-%s", SUSLOV_RECON_NAMES[r], st->name);
+        for (int r = 0; r < SUS_RECON_COUNT; r++) {
+            snprintf(id, sizeof id, "global-so3-order-%s-%s", SUS_RECON_NAMES[r], st->name);
             snprintf(what, sizeof what, "slope of (MetMat) dist(R(10), R_N), reconstruction %s, %s",
-                     SUSLOV_RECON_NAMES[r], st->name);
+                     SUS_RECON_NAMES[r], st->name);
             order_line(id, "TeoL (extension)", what, fit_global(cm->glob_so3[r], SIZE_R), eo->so3[r],
                        LEDGER_EXTENSION);
         }
@@ -286,37 +287,37 @@ static void global_claims(void)
 static void unreduced_claims(void)
 {
     char err[256];
-    suslov_unreduced u;
-    if (suslov_unreduced_init(&u, model, err, sizeof err) != 0)
+    sus_unreduced u;
+    if (sus_unreduced_init(&u, model, err, sizeof err) != 0)
         ledger_die(err);
     double ev[NJ] = {0}, exi[NJ] = {0}, eR[NJ] = {0}, el[NJ] = {0};
     for (int t = 0; t < NTK; t++) {
         double Rk[3][3], I3[3][3], wk[3] = {0.0, 0.0, 0.0}, W[3][3];
-        suslov_refatt ra;
-        mat3_identity(I3);
-        suslov_refatt_init(&ra, &ex, 0.0, I3);
-        suslov_refatt_advance(&ra, TK[t], Rk);
-        suslov_exact_omega(&ex, TK[t], wk);
-        so3_hat(wk, W);
+        sus_refatt ra;
+        sus_mat3_identity(I3);
+        sus_refatt_init(&ra, &ex, 0.0, I3);
+        sus_refatt_advance(&ra, TK[t], Rk);
+        sus_exact_omega(&ex, TK[t], wk);
+        sus_so3_hat(wk, W);
         for (int j = 0; j < NJ; j++) {
-            suslov_local_ref ref;
-            suslov_local_ref_init(&ref, &ex, TK[t], eps_of(j));
+            sus_exp_local_ref ref;
+            sus_exp_local_ref_init(&ref, &ex, TK[t], eps_of(j));
             double R[3][3], V[3][3], Rx[3][3], Vx[3][3], We[3][3], xi[3], D[3][3];
-            mat3_copy(R, Rk);
-            mat3_mul(V, Rk, W);
-            suslov_unreduced_rk4(&u, eps_of(j), R, V);
-            mat3_mul(Rx, Rk, ref.Phi);          /* R(t_k + eps) */
-            so3_hat(ref.w_exact, We);
-            mat3_mul(Vx, Rx, We);               /* V(t_k + eps) = R w^ */
+            sus_mat3_copy(R, Rk);
+            sus_mat3_mul(V, Rk, W);
+            sus_unreduced_rk4(&u, eps_of(j), R, V);
+            sus_mat3_mul(Rx, Rk, ref.Phi);          /* R(t_k + eps) */
+            sus_so3_hat(ref.w_exact, We);
+            sus_mat3_mul(Vx, Rx, We);               /* V(t_k + eps) = R w^ */
             for (int a = 0; a < 3; a++)
                 for (int b = 0; b < 3; b++)
                     D[a][b] = Vx[a][b] - V[a][b];
-            ev[j] = fmax(ev[j], mat3_frobenius(D));
-            eR[j] = fmax(eR[j], so3_dist(Rx, R));
-            suslov_unreduced_xi(R, V, xi);
+            ev[j] = fmax(ev[j], sus_mat3_frobenius(D));
+            eR[j] = fmax(eR[j], sus_so3_dist(Rx, R));
+            sus_unreduced_xi(R, V, xi);
             const double dxi[3] = {ref.w_exact[0] - xi[0], ref.w_exact[1] - xi[1], ref.w_exact[2] - xi[2]};
-            exi[j] = fmax(exi[j], vec3_norm(dxi));
-            el[j] = fmax(el[j], fabs(ref.lambda_exact - suslov_lagmult(model, xi)));
+            exi[j] = fmax(exi[j], sus_vec3_norm(dxi));
+            el[j] = fmax(el[j], fabs(ref.lambda_exact - sus_lagmult(model, xi)));
         }
     }
     const double l = fit(ev, 1, SIZE_W);
@@ -344,16 +345,16 @@ typedef struct {
 } preserve_ctx;
 
 /* Step 6 of (algo): v_{R_k} = R_k w^_k; the unreduced constraint is <e3, vee(R_k^T v_{R_k})> = 0. */
-static int track(void *vctx, const suslov_row *row)
+static int track(void *vctx, const sus_row *row)
 {
     preserve_ctx *c = vctx;
     double W[3][3], V[3][3], xi[3];
-    so3_hat(row->w, W);
-    mat3_mul(V, row->R, W);
-    suslov_unreduced_xi(row->R, V, xi);
+    sus_so3_hat(row->w, W);
+    sus_mat3_mul(V, row->R, W);
+    sus_unreduced_xi(row->R, V, xi);
     c->w3 = fmax(c->w3, fabs(row->w[2]));
     c->mu = fmax(c->mu, fabs(xi[2]));
-    c->defect = fmax(c->defect, so3_orth_defect(row->R));
+    c->defect = fmax(c->defect, sus_so3_orth_defect(row->R));
     return 0;
 }
 
@@ -367,13 +368,13 @@ static void negative_controls(void);
 static void preservation_claims(void)
 {
     char id[64], what[200];
-    for (int s = 0; s < suslov_method_count(); s++) {
-        const suslov_method *me = suslov_method_get(s);
-        const suslov_stepper_type *st = me->type;
-        const suslov_run_config cfg = {model, st, me->recon, PRESERVE_EPS, PRESERVE_STEPS, 1};
+    for (int s = 0; s < sus_step_method_count(); s++) {
+        const sus_step_method *me = sus_step_method_get(s);
+        const sus_stepper_type *st = me->type;
+        const sus_run_config cfg = {model, st, me->recon, PRESERVE_EPS, PRESERVE_STEPS, 1};
         preserve_ctx c = {0, 0, 0};
-        suslov_run_report rep;
-        if (suslov_run(&cfg, ex.w0, track, &c, &rep) != 0)
+        sus_run_report rep;
+        if (sus_run(&cfg, ex.w0, track, &c, &rep) != 0)
             ledger_die("preservation run");
         /* w3 is set to 0 by the second equation of (DSP); what is measured in floating point is
          * the unreduced constraint of the reconstructed velocity R_k w^_k, whose round-off is a
@@ -381,17 +382,17 @@ static void preservation_claims(void)
         snprintf(id, sizeof id, "constraint-preserved-%s", st->name);
         snprintf(what, sizeof what,
                  "max over 1e6 steps (eps = 0.01) of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), %s + %s",
-                 st->name, SUSLOV_RECON_NAMES[me->recon]);
+                 st->name, SUS_RECON_NAMES[me->recon]);
         ledger_add(id, me->paper_ref ? "Algorithm (algo), Remark" : "(extension)", what, fmax(c.w3, c.mu),
                    0.0, 1e-14, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
         /* A plain sum R + R D rounds each of the N = 1e6 additions at u |R|: a random walk of
          * sqrt(N) u = 1.1e-13 (measured 1.1e-13 .. 7.1e-13 over the methods with the compensation
-         * removed from suslov_attitude_increment). The compensated sum keeps only the error of
+         * removed from sus_attitude_increment). The compensated sum keeps only the error of
          * the computed increments R D, |D| ~ eps |w| = 6e-3 (measured 2.6e-15 .. 2.4e-14). 5e-14,
          * half the plain walk, tells the two apart: the bound fails if the compensation is dropped. */
         snprintf(id, sizeof id, "so3-preserved-%s", st->name);
         snprintf(what, sizeof what, "max over 1e6 steps (eps = 0.01) of |R_k^T R_k - I|, %s + %s", st->name,
-                 SUSLOV_RECON_NAMES[me->recon]);
+                 SUS_RECON_NAMES[me->recon]);
         ledger_add(id, me->paper_ref ? "Algorithm (algo)" : "(extension)", what, c.defect, 0.0,
                    SO3_PRESERVE_TOL, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
@@ -406,20 +407,20 @@ static void negative_controls(void)
      * above measure something that can fail. Its drift per step is O(eps^5): over 1e6 steps
      * it must exceed the bounds above by orders of magnitude. */
     char err[256];
-    suslov_unreduced u;
-    if (suslov_unreduced_init(&u, model, err, sizeof err) != 0)
+    sus_unreduced u;
+    if (sus_unreduced_init(&u, model, err, sizeof err) != 0)
         ledger_die(err);
     double R[3][3], V[3][3], W[3][3], mu = 0.0, defect = 0.0;
     const double w0[3] = {ex.w0[0], ex.w0[1], 0.0};
-    mat3_identity(R);
-    so3_hat(w0, W);
-    mat3_copy(V, W);
+    sus_mat3_identity(R);
+    sus_so3_hat(w0, W);
+    sus_mat3_copy(V, W);
     for (long k = 0; k < PRESERVE_STEPS; k++) {
         double xi[3];
-        suslov_unreduced_rk4(&u, PRESERVE_EPS, R, V);
-        suslov_unreduced_xi(R, V, xi);
+        sus_unreduced_rk4(&u, PRESERVE_EPS, R, V);
+        sus_unreduced_xi(R, V, xi);
         mu = fmax(mu, fabs(xi[2]));
-        defect = fmax(defect, so3_orth_defect(R));
+        defect = fmax(defect, sus_so3_orth_defect(R));
     }
     /* A hundred times the bounds asserted above: the measurement can tell them apart. */
     ledger_add_bound("negative-control-unreduced-rk4", "(extension)",
@@ -434,19 +435,19 @@ static void negative_controls(void)
      * plain product R_{k+1} = R_k cay(eps w_k) along the rk4 run drifts linearly, about u/2
      * per step; the line records that it does exceed the bound (not that it must stay so). */
     double Rn[3][3], C[3][3], P[3][3], w[3] = {ex.w0[0], ex.w0[1], 0.0}, x[3], lam, naive = 0.0;
-    suslov_step_stats sst;
-    mat3_identity(Rn);
+    sus_stepper_stats sst;
+    sus_mat3_identity(Rn);
     for (long k = 0; k < PRESERVE_STEPS; k++) {
         const double xi[3] = {PRESERVE_EPS * w[0], PRESERVE_EPS * w[1], 0.0};
-        if (suslov_step_rk4->apply(model, PRESERVE_EPS, w, x, &lam, &sst) != SUSLOV_STEP_OK)
+        if (sus_step_rk4->apply(model, PRESERVE_EPS, w, x, &lam, &sst) != SUS_STEPPER_OK)
             ledger_die("rk4 step");
-        so3_cay(xi, C);
-        mat3_mul(P, Rn, C);
-        mat3_copy(Rn, P);
+        sus_so3_cay(xi, C);
+        sus_mat3_mul(P, Rn, C);
+        sus_mat3_copy(Rn, P);
         w[0] = x[0];
         w[1] = x[1];
     }
-    naive = so3_orth_defect(Rn);
+    naive = sus_so3_orth_defect(Rn);
     ledger_add_bound("so3-defect-plain-product", "(implementation)",
                "|R_N^T R_N - I| after 1e6 steps of rk4 with the plain product R_k cay(eps w_k): above the "
                "5e-14 bound",
@@ -460,14 +461,14 @@ static void write_methods(const char *tsv)
     char path[4096], err[256];
     const char *slash = strrchr(tsv, '/');
     snprintf(path, sizeof path, "%.*smethods.tsv", slash ? (int)(slash - tsv + 1) : 0, tsv);
-    atomic_file af;
-    if (atomic_file_open(&af, path, err, sizeof err) != 0)
+    sus_sys_atomic_file af;
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0)
         ledger_die(err);
-    if (suslov_methods_write_tsv(af.fp) != 0) {
-        atomic_file_abort(&af);
+    if (sus_step_methods_write_tsv(af.fp) != 0) {
+        sus_sys_atomic_file_abort(&af);
         ledger_die("writing methods.tsv");
     }
-    if (atomic_file_commit(&af, err, sizeof err) != 0)
+    if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0)
         ledger_die(err);
 }
 
@@ -475,20 +476,20 @@ int main(int argc, char **argv)
 {
     const char *tsv = argc > 1 ? argv[1] : "build/claims.tsv";
     char err[256];
-    suslov_model m;
+    sus_model m;
     gsl_set_error_handler_off();
-    if (suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err) != 0)
+    if (sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) != 0)
         ledger_die(err);
     model = &m;
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
+    sus_exact_init(&ex, &m, SUS_PAPER_OMEGA0);
 
     double winf[2];
-    suslov_exact_limit(&ex, winf);
+    sus_exact_limit(&ex, winf);
     ledger_number("RateK", ex.k);
-    ledger_number("EnergyZero", suslov_energy(&m, SUSLOV_PAPER_OMEGA0));
+    ledger_number("EnergyZero", sus_energy(&m, SUS_PAPER_OMEGA0));
     ledger_number("SteadyOmegaOne", winf[0]);
     ledger_number("SteadyOmegaTwo", winf[1]);
-    if (suslov_convergence_run(&conv, &ex, TK, NTK, T_GLOBAL) != 0)
+    if (sus_exp_convergence_run(&conv, &ex, TK, NTK, T_GLOBAL) != 0)
         ledger_die("the convergence sweep");
     local_claims();
     methods_claims();
@@ -518,7 +519,7 @@ int main(int argc, char **argv)
                "|R_ref(10) - R_magnus4(10)| (long-double Taylor reference); tolerance = 1% of the smallest "
                "fitted global SO(3) error",
                conv.ref_global_err, 0.0, 0.01 * min_so3_fitted[0], LEDGER_EXTENSION);
-    suslov_convergence_free(&conv);
+    sus_exp_convergence_free(&conv);
     const int failed = ledger_finish(tsv);
     write_methods(tsv);
     return failed != 0;

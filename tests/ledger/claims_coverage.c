@@ -41,13 +41,13 @@ static void killing_claims(gsl_rng *r) {
         random_vec(r, 2.0, x);
         random_vec(r, 2.0, y);
         random_vec(r, 3.0, a);
-        so3_hat(x, X);
-        so3_hat(y, Y);
-        mat3_mul(XY, X, Y);
-        mat3_mul(YX, Y, X);
-        vec3_cross(xy, x, y);
+        sus_so3_hat(x, X);
+        sus_so3_hat(y, Y);
+        sus_mat3_mul(XY, X, Y);
+        sus_mat3_mul(YX, Y, X);
+        sus_vec3_cross(xy, x, y);
         double C[3][3];
-        so3_hat(xy, C);
+        sus_so3_hat(xy, C);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 bracket = fmax(bracket, fabs(XY[i][j] - YX[i][j] - C[i][j]));
@@ -60,9 +60,9 @@ static void killing_claims(gsl_rng *r) {
         trace = fmax(trace, fabs(-0.5 * tr - dot3(x, y)));
         transpose = fmax(transpose, fabs(0.5 * trt - dot3(x, y)));
         /* Ad_R w = R w for R in SO(3): an automorphism of so(3) */
-        so3_cay(a, R);
-        mat3_vec(Rx, R, x);
-        mat3_vec(Ry, R, y);
+        sus_so3_cay(a, R);
+        sus_mat3_vec(Rx, R, x);
+        sus_mat3_vec(Ry, R, y);
         invariant = fmax(invariant, fabs(dot3(Rx, Ry) - dot3(x, y)));
     }
     /* entries below 2 (and 3 for R): a dozen products and sums, so round-off is below 1e-14 */
@@ -85,12 +85,12 @@ static double corollary_identity(gsl_rng *r) {
         random_vec(r, 2.0, x);
         for (int i = 0; i < 3; i++)
             mx[i] = -x[i];
-        so3_cay(x, R);
-        so3_dcay_inv(x, D);
-        so3_dcay_inv(mx, Dm);
+        sus_so3_cay(x, R);
+        sus_so3_dcay_inv(x, D);
+        sus_so3_dcay_inv(mx, Dm);
         /* Ad*_R = R^T on covectors, so the identity transposed reads dcay^{-1}_x R = dcay^{-1}_{-x} */
-        mat3_mul(DR, D, R);
-        worst = fmax(worst, mat3_dist(DR, Dm));
+        sus_mat3_mul(DR, D, R);
+        worst = fmax(worst, sus_mat3_dist(DR, Dm));
     }
     return worst;
 }
@@ -101,20 +101,20 @@ static double action(const double I[3][3], double eps, const double a[3], const 
                      const double se[3]) {
     double Ga[3][3], Gb[3][3], S[3][3], Gk[3][3], G1[3][3], W[3][3], xi[3], v[3], sum = 0.0;
     double ea[3] = {eps * a[0], eps * a[1], eps * a[2]}, eb[3] = {eps * b[0], eps * b[1], eps * b[2]};
-    so3_cay(ea, Ga);
-    so3_cay(eb, Gb);
-    so3_cay(se, S);
-    mat3_mul(Gk, Ga, S);
-    mat3_mul(G1, Ga, Gb);
+    sus_so3_cay(ea, Ga);
+    sus_so3_cay(eb, Gb);
+    sus_so3_cay(se, S);
+    sus_mat3_mul(Gk, Ga, S);
+    sus_mat3_mul(G1, Ga, Gb);
     for (int side = 0; side < 2; side++) {
         if (side == 0)
-            mat3_copy(W, Gk); /* g_{k-1}^{-1} g_k with g_{k-1} = I */
+            sus_mat3_copy(W, Gk); /* g_{k-1}^{-1} g_k with g_{k-1} = I */
         else
-            mat3_mul_at(W, Gk, G1); /* g_k^T g_{k+1} */
-        so3_cay_inv(W, xi);
+            sus_mat3_mul_at(W, Gk, G1); /* g_k^T g_{k+1} */
+        sus_so3_cay_inv(W, xi);
         for (int i = 0; i < 3; i++)
             xi[i] /= eps;
-        mat3_vec(v, I, xi);
+        sus_mat3_vec(v, I, xi);
         sum += 0.5 * eps * dot3(v, xi);
     }
     return sum;
@@ -137,14 +137,14 @@ static void corollary_covectors(const double I[3][3], double eps, const double a
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             Is[i][j] = 0.5 * eps * (I[i][j] + I[j][i]);
-    mat3_vec(pa, Is, a);
-    mat3_vec(pb, Is, b);
+    sus_mat3_vec(pa, Is, a);
+    sus_mat3_vec(pb, Is, b);
     for (int i = 0; i < 3; i++) {
         ea[i] = -eps * a[i];
         eb[i] = eps * b[i];
     }
-    so3_dcay_inv(ea, Dma);
-    so3_dcay_inv(eb, Db);
+    sus_so3_dcay_inv(ea, Dma);
+    sus_so3_dcay_inv(eb, Db);
     apply_dual(Dma, pa, ta);
     apply_dual(Db, pb, tb);
     for (int i = 0; i < 3; i++) {
@@ -153,7 +153,7 @@ static void corollary_covectors(const double I[3][3], double eps, const double a
     }
 }
 
-static void corollary_claims(gsl_rng *r, const suslov_model *m) {
+static void corollary_claims(gsl_rng *r, const sus_model *m) {
     ledger_add("cor44-identity-cayley", "CoroRetr (proof)",
                "max over 64 x of |dcay^{-1}_x cay(x) - dcay^{-1}_{-x}|: Ad*_{tau(x)} (dtau^{-1}_x)^* = "
                "(dtau^{-1}_{-x})^*",
@@ -197,7 +197,7 @@ typedef struct {
 static double phi_of_xi3(double x3, void *p) {
     const phi_args *a = p;
     double x[3] = {a->eps * a->x1, a->eps * a->x2, a->eps * x3}, D[3][3];
-    so3_cay_minus_identity(x, D);
+    sus_so3_cay_minus_identity(x, D);
     return (a->skew ? 0.5 * (D[1][0] - D[0][1]) : D[1][0]) / a->eps;
 }
 
@@ -227,9 +227,9 @@ static void subspace_claims(void) {
         a.skew = 1;
         skew = fmax(skew, fabs(root_xi3(&a)));
     }
-    suslov_order_fit fit;
+    sus_exp_order_fit fit;
     const double slope =
-        suslov_fit_order(eps, viol, NJ, SUSLOV_FIT_EPS_MAX, 1e-13, &fit) == 0 ? fit.slope : NAN;
+        sus_exp_fit_order(eps, viol, NJ, SUS_EXP_FIT_EPS_MAX, 1e-13, &fit) == 0 ? fit.slope : NAN;
     ledger_number("SecFiveFourViolationEpsQuarter", viol[2]);
     /* a violation a million times round-off at eps = 1/4 cannot be a rounding artefact */
     ledger_add_bound(
@@ -249,7 +249,7 @@ static void subspace_claims(void) {
         skew, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 
-void coverage_claims(const suslov_model *m) {
+void coverage_claims(const sus_model *m) {
     gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
     if (!r)
         ledger_die("gsl_rng_alloc");

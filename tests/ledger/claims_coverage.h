@@ -6,6 +6,6 @@
 
 #include "model.h"
 
-void coverage_claims(const suslov_model *m);
+void coverage_claims(const sus_model *m);
 
 #endif

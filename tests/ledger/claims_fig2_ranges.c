@@ -14,6 +14,7 @@
  * range, the ratio of the two maxima over [0, 60], and its value at t = 10, so that "converges
  * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each. */
 #include "claims_fig2more.h"
+#include "dsp.h"
 
 #include "experiments.h"
 #include "ledger.h"
@@ -28,39 +29,39 @@
 static double grid_eps(int j) { return 0.25 * pow(2.0, 0.25 * j); }
 
 /* E_0 - E_N after N steps of a stepper from w0; NAN when a step fails or a value is not finite. */
-static double stepper_loss(const suslov_model *m, const suslov_stepper_type *st, double eps, long N,
+static double stepper_loss(const sus_model *m, const sus_stepper_type *st, double eps, long N,
                            const double w0[2])
 {
     double w[3] = {w0[0], w0[1], 0.0}, x[3], lam;
-    suslov_step_stats ss;
+    sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
         w[1] = x[1];
     }
-    return suslov_energy(m, w0) - suslov_energy(m, w);
+    return sus_energy(m, w0) - sus_energy(m, w);
 }
 
 /* The same for n fixed-point sweeps (src/exp/midpoint_sweeps.c), without storing the energies. */
-static double sweeps_loss(const suslov_model *m, int n, double eps, long N, const double w0[2])
+static double sweeps_loss(const sus_model *m, int n, double eps, long N, const double w0[2])
 {
     double w[2] = {w0[0], w0[1]}, x[2];
     for (long k = 0; k < N; k++) {
-        suslov_midpoint_sweeps(m, eps, n, w, x);
+        sus_exp_midpoint_sweeps(m, eps, n, w, x);
         if (!isfinite(x[0]) || !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
         w[1] = x[1];
     }
-    return suslov_energy(m, w0) - suslov_energy(m, w);
+    return sus_energy(m, w0) - sus_energy(m, w);
 }
 
 /* One reading: n >= 1 sweeps, 0 the Newton midpoint rule, -1 the trapezoidal rule. */
-static double reading_loss(const suslov_model *m, int reading, double eps, long N, const double w0[2])
+static double reading_loss(const sus_model *m, int reading, double eps, long N, const double w0[2])
 {
     if (reading == 0)
-        return stepper_loss(m, suslov_step_midpoint, eps, N, w0);
+        return stepper_loss(m, sus_step_midpoint, eps, N, w0);
     if (reading < 0)
         return stepper_loss(m, &fig2_trapezoidal, eps, N, w0);
     return sweeps_loss(m, reading, eps, N, w0);
@@ -79,16 +80,16 @@ static void reading_name(int reading, char *id, size_t len)
 }
 
 /* Per reading: the eps range from 0.25 over which it never loses energy faster. */
-static void energy_range_claims(const suslov_model *m)
+static void energy_range_claims(const sus_model *m)
 {
-    const double *w0 = SUSLOV_PAPER_OMEGA0;
+    const double *w0 = SUS_PAPER_OMEGA0;
     double var_loss[NEPS];
     long steps[NEPS];
     for (int j = 0; j < NEPS; j++) {
-        steps[j] = lround(SUSLOV_FIG2_T_END / grid_eps(j));
-        var_loss[j] = stepper_loss(m, suslov_step_variational, grid_eps(j), steps[j], w0);
+        steps[j] = lround(SUS_EXP_FIG2_T_END / grid_eps(j));
+        var_loss[j] = stepper_loss(m, sus_step_variational, grid_eps(j), steps[j], w0);
     }
-    for (int reading = -1; reading <= SUSLOV_FIG2_NSWEEP; reading++) {
+    for (int reading = -1; reading <= SUS_EXP_FIG2_NSWEEP; reading++) {
         double upto = 0.0, first_faster = INFINITY;
         int faster = 0, failed = 0, ended = 0;
         for (int j = 0; j < NEPS; j++) {
@@ -111,24 +112,25 @@ static void energy_range_claims(const suslov_model *m)
                  "more energy over [0, 200] than the variational one; more at %d of 21 eps (from %.3g), "
                  "failed at %d",
                  name, faster, first_faster, failed);
-        ledger_add_bound(id, "Fig. 2(d) (reading, extension)", q, upto, SUSLOV_FIG2_EPS, 1, LEDGER_EXTENSION);
+        ledger_add_bound(id, "Fig. 2(d) (reading, extension)", q, upto, SUS_EXP_FIG2_EPS, 1,
+                         LEDGER_EXTENSION);
     }
 }
 
 /* The error ratio at eps = 1 over t: its range over t = 2..60 and the ratio of the maxima. */
-static void ratio_over_t_claims(const suslov_model *m, const suslov_exact *ex)
+static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
 {
     double wm[3] = {ex->w0[0], ex->w0[1], 0.0}, wv[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], we[2], lam;
     double lo = INFINITY, hi = 0.0, max_var = 0.0, max_mid = 0.0;
-    suslov_step_stats ss;
+    sus_stepper_stats ss;
     for (int k = 1; k <= 60; k++) { /* eps = 1: t_k = k */
-        if (suslov_step_midpoint->apply(m, 1.0, wm, x, &lam, &ss) != SUSLOV_STEP_OK)
+        if (sus_step_midpoint->apply(m, 1.0, wm, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("the midpoint run of the error ratio");
         wm[0] = x[0], wm[1] = x[1];
-        if (suslov_step_variational->apply(m, 1.0, wv, x, &lam, &ss) != SUSLOV_STEP_OK)
+        if (sus_step_variational->apply(m, 1.0, wv, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("the variational run of the error ratio");
         wv[0] = x[0], wv[1] = x[1];
-        suslov_exact_omega(ex, (double)k, we);
+        sus_exact_omega(ex, (double)k, we);
         const double ev = hypot(wv[0] - we[0], wv[1] - we[1]), em = hypot(wm[0] - we[0], wm[1] - we[1]);
         max_var = fmax(max_var, ev);
         max_mid = fmax(max_mid, em);
@@ -154,7 +156,7 @@ static void ratio_over_t_claims(const suslov_model *m, const suslov_exact *ex)
                      1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 }
 
-void fig2_range_claims(const suslov_model *m, const suslov_exact *ex)
+void fig2_range_claims(const sus_model *m, const sus_exact *ex)
 {
     energy_range_claims(m);
     ratio_over_t_claims(m, ex);

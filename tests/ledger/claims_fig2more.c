@@ -5,6 +5,7 @@
  * swapped. Figure 2's image is not in the paper's source (\includegraphics{ } with an empty
  * argument, for Figure 1 too): only the caption and the text can be checked. */
 #include "claims_fig2more.h"
+#include "dsp.h"
 
 #include "ledger.h"
 #include "stepper.h"
@@ -28,29 +29,29 @@ static const char *const SWAP_PRINTED_AT[20] = {
 /* The trapezoidal reading of the midpoint rule: l = I_m (f(w^k) + f(w^{k+1}))/2 in
  * (Discretization), solved by fixed-point iteration to round-off (a contraction: eps |f'| <= 0.2
  * at eps = 1 on this motion). */
-static int trapezoidal_apply(const suslov_model *m, double eps, const double w[3], double w_next[3],
-                             double *lambda_next, suslov_step_stats *st)
+static int trapezoidal_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                             double *lambda_next, sus_stepper_stats *st)
 {
     double fw[2], fx[2], x[2] = {w[0], w[1]};
-    suslov_contdyn(m, w, fw);
+    sus_contdyn(m, w, fw);
     int it;
     for (it = 0; it < 200; it++) {
-        suslov_contdyn(m, x, fx);
+        sus_contdyn(m, x, fx);
         const double y0 = w[0] + 0.5 * eps * (fw[0] + fx[0]), y1 = w[1] + 0.5 * eps * (fw[1] + fx[1]);
         const double d = fabs(y0 - x[0]) + fabs(y1 - x[1]);
         x[0] = y0;
         x[1] = y1;
-        if (d <= 4.0 * SUSLOV_U * (fabs(x[0]) + fabs(x[1])))
+        if (d <= 4.0 * SUS_U * (fabs(x[0]) + fabs(x[1])))
             break;
     }
     w_next[0] = x[0];
     w_next[1] = x[1];
     w_next[2] = 0.0;
-    *lambda_next = suslov_lagmult(m, x);
-    *st = (suslov_step_stats){.iterations = it};
-    return it < 200 ? SUSLOV_STEP_OK : SUSLOV_STEP_NO_CONVERGENCE;
+    *lambda_next = sus_lagmult(m, x);
+    *st = (sus_stepper_stats){.iterations = it};
+    return it < 200 ? SUS_STEPPER_OK : SUS_STEPPER_NO_CONVERGENCE;
 }
-const suslov_stepper_type fig2_trapezoidal = {.name = "trapezoidal", .order = 2, .lambda_order = 2,
+const sus_stepper_type fig2_trapezoidal = {.name = "trapezoidal", .order = 2, .lambda_order = 2,
                                                 .apply = trapezoidal_apply};
 
 typedef struct {
@@ -59,20 +60,20 @@ typedef struct {
     double worst; /* max_k |w_k - w(t_k)| */
 } run_result;
 
-static run_result run(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st,
+static run_result run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
                       double eps, long N)
 {
     double w[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], lam, we[2] = {ex->w0[0], ex->w0[1]}, worst = 0.0;
-    suslov_step_stats ss;
+    sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("a Figure 2 run");
         w[0] = x[0];
         w[1] = x[1];
-        suslov_exact_omega(ex, eps * (double)(k + 1), we);
+        sus_exact_omega(ex, eps * (double)(k + 1), we);
         worst = fmax(worst, hypot(w[0] - we[0], w[1] - we[1]));
     }
-    return (run_result){hypot(w[0] - we[0], w[1] - we[1]), suslov_energy(m, ex->w0) - suslov_energy(m, w),
+    return (run_result){hypot(w[0] - we[0], w[1] - we[1]), sus_energy(m, ex->w0) - sus_energy(m, w),
                         worst};
 }
 
@@ -120,9 +121,9 @@ static void swap_claims(const run_result v10, const run_result m10, const run_re
                fixed[0], 0.0, 0.5, LEDGER_EXTENSION);
 }
 
-void fig2more_claims(const suslov_model *m, const suslov_exact *ex)
+void fig2more_claims(const sus_model *m, const sus_exact *ex)
 {
-    const suslov_stepper_type *mid = suslov_step_midpoint, *var = suslov_step_variational;
+    const sus_stepper_type *mid = sus_step_midpoint, *var = sus_step_variational;
     /* converges much faster: global error at t = 10, eps = 1 and across eps = 2^-j */
     const run_result m10 = run(m, ex, mid, 1.0, 10), v10 = run(m, ex, var, 1.0, 10);
     ledger_add_bound("fig2-converges-faster", "Fig. 2 caption, Conclusions",

@@ -9,6 +9,7 @@
  *           / 10, w(inf) taken at t = 10^4 (both settle geometrically, far below round-off there).
  * "Much" is read as a factor 10, as in claims_fig2more.c, fixed before measuring. */
 #include "claims_fig2readings.h"
+#include "dsp.h"
 
 #include "exact.h"
 #include "experiments.h"
@@ -28,26 +29,26 @@ typedef struct {
     double own100; /* |w(100) - w(10^4)| */
 } fig2_reading_run;
 
-static fig2_reading_run run_reading(const suslov_model *m, const suslov_exact *ex,
-                                    const suslov_stepper_type *st)
+static fig2_reading_run run_reading(const sus_model *m, const sus_exact *ex,
+                                    const sus_stepper_type *st)
 {
     double w[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], lam, we[2], winf[2], w100[2] = {0, 0};
     fig2_reading_run r = {0};
-    suslov_step_stats ss;
-    suslov_exact_limit(ex, winf);
+    sus_stepper_stats ss;
+    sus_exact_limit(ex, winf);
     for (long k = 1; k <= T_OWN_LIMIT; k++) {
-        if (st->apply(m, 1.0, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+        if (st->apply(m, 1.0, w, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("a Figure 2 reading run");
         w[0] = x[0];
         w[1] = x[1];
         if (k == 10) {
-            suslov_exact_omega(ex, 10.0, we);
+            sus_exact_omega(ex, 10.0, we);
             r.err10 = hypot(w[0] - we[0], w[1] - we[1]);
         } else if (k == 100) {
             w100[0] = w[0];
             w100[1] = w[1];
         } else if (k == 200) {
-            r.loss = fabs(suslov_energy(m, w) - suslov_energy(m, ex->w0));
+            r.loss = fabs(sus_energy(m, w) - sus_energy(m, ex->w0));
             r.lim200 = hypot(w[0] - winf[0], w[1] - winf[1]);
         }
     }
@@ -59,14 +60,14 @@ static fig2_reading_run run_reading(const suslov_model *m, const suslov_exact *e
  * statement (\FigTwoReading<R><S>Holds), and the count that hold as a ledger line. */
 static void reading(const char *name, const char *id, const double I[9])
 {
-    suslov_model m;
-    suslov_exact ex;
+    sus_model m;
+    sus_exact ex;
     char err[128], key[96], q[300];
-    if (suslov_model_init(&m, I, err, sizeof err) != 0)
+    if (sus_model_init(&m, I, err, sizeof err) != 0)
         ledger_die(err);
-    suslov_exact_init(&ex, &m, SUSLOV_PAPER_OMEGA0);
-    const fig2_reading_run a = run_reading(&m, &ex, suslov_step_variational);
-    const fig2_reading_run b = run_reading(&m, &ex, suslov_step_midpoint);
+    sus_exact_init(&ex, &m, SUS_PAPER_OMEGA0);
+    const fig2_reading_run a = run_reading(&m, &ex, sus_step_variational);
+    const fig2_reading_run b = run_reading(&m, &ex, sus_step_midpoint);
     const char *stmt[4] = {"Energy", "Faster", "Limit", "Own"};
     const double ratio[4] = {a.loss / b.loss, a.err10 / b.err10, a.lim200 / b.lim200, a.own100 / b.own100};
     const double bound[4] = {1.0, 1.0 / MUCH, 1.0 / MUCH, 1.0 / MUCH};
@@ -94,12 +95,12 @@ static void reading(const char *name, const char *id, const double I[9])
     ledger_add(lid, "Fig. 2 caption, Conclusions", q, holds, 4.0, 0.5, LEDGER_NOT_REPRODUCED);
 }
 
-void fig2readings_claims(const suslov_model *m)
+void fig2readings_claims(const sus_model *m)
 {
     double row[9], col[9], sym[9];
     for (int i = 0; i < 9; i++)
         row[i] = m->I[i / 3][i % 3];
-    suslov_inertia_column_swap(row, col);
+    sus_exp_inertia_column_swap(row, col);
     for (int i = 0; i < 9; i++)
         sym[i] = 0.5 * (m->I[i / 3][i % 3] + m->I[i % 3][i / 3]);
     reading("Row", "row", row);

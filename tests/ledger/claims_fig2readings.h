@@ -6,6 +6,6 @@
 
 #include "model.h"
 
-void fig2readings_claims(const suslov_model *m);
+void fig2readings_claims(const sus_model *m);
 
 #endif

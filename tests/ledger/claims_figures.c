@@ -2,6 +2,7 @@
  * (src/prog/figure_fig1.c, src/prog/figure_fig2.c, src/prog/figure_fig2_energy.c, src/prog/figure_inertia.c).
  */
 #include "claims_figures.h"
+#include "dsp.h"
 
 #include "experiments.h"
 #include "ledger.h"
@@ -15,14 +16,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define FIELD(f) offsetof(suslov_series, f)
+#define FIELD(f) offsetof(sus_exp_series, f)
 
-static void run(suslov_series *s, const suslov_model *m, const suslov_stepper_type *st, double eps, long N,
+static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *st, double eps, long N,
                 long every)
 {
-    suslov_run_report rep;
-    const suslov_run_config cfg = {m, st, SUSLOV_RECON_CAYLEY, eps, N, every};
-    if (suslov_series_init(s, N, every) != 0 || suslov_series_run(s, &cfg, SUSLOV_PAPER_OMEGA0, &rep) != 0) {
+    sus_run_report rep;
+    const sus_run_config cfg = {m, st, SUS_RECON_CAYLEY, eps, N, every};
+    if (sus_exp_series_init(s, N, every) != 0 || sus_exp_series_run(s, &cfg, SUS_PAPER_OMEGA0, &rep) != 0) {
         fprintf(stderr, "claims: %s run at eps = %g failed\n", st->name, eps);
         exit(2);
     }
@@ -31,15 +32,15 @@ static void run(suslov_series *s, const suslov_model *m, const suslov_stepper_ty
 /* Is the series the run it claims to be? N/every + 1 rows (the last one at t = N eps), row 0 at
  * w(0), the energy column E(w_k) of its own w, and w_k nowhere zero (the solution tends to a
  * steady rotation of the initial energy, |w| ~ 0.64). A zeroed or truncated series fails. */
-static int series_is_run(const suslov_series *s, const suslov_model *m, double eps, long N, long every)
+static int series_is_run(const sus_exp_series *s, const sus_model *m, double eps, long N, long every)
 {
     if (s->n != (size_t)(N / every + 1) || s->t[0] != 0.0 ||
-        fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps || s->w1[0] != SUSLOV_PAPER_OMEGA0[0] ||
-        s->w2[0] != SUSLOV_PAPER_OMEGA0[1])
+        fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps || s->w1[0] != SUS_PAPER_OMEGA0[0] ||
+        s->w2[0] != SUS_PAPER_OMEGA0[1])
         return 0;
     for (size_t i = 0; i < s->n; i++) {
         const double w[2] = {s->w1[i], s->w2[i]};
-        if (!(hypot(w[0], w[1]) > 0.1) || s->energy[i] != suslov_energy(m, w) || !isfinite(s->mu[i]))
+        if (!(hypot(w[0], w[1]) > 0.1) || s->energy[i] != sus_energy(m, w) || !isfinite(s->mu[i]))
             return 0;
     }
     return 1;
@@ -47,28 +48,28 @@ static int series_is_run(const suslov_series *s, const suslov_model *m, double e
 
 /* The unreduced constraint of step 6 of (algo), computed here from the row: <e3, vee(R^T R w^)>,
  * with w^ the hat of all three components of w_k (a w3 != 0 shows as itself). */
-static double row_constraint(const suslov_row *row)
+static double row_constraint(const sus_row *row)
 {
     double W[3][3], V[3][3], P[3][3], xi[3];
-    so3_hat(row->w, W);
-    mat3_mul(V, row->R, W);
-    mat3_mul_at(P, row->R, V);
-    so3_vee(P, xi);
+    sus_so3_hat(row->w, W);
+    sus_mat3_mul(V, row->R, W);
+    sus_mat3_mul_at(P, row->R, V);
+    sus_so3_vee(P, xi);
     return xi[2];
 }
 
 /* A midpoint step that then breaks the constraint by setting w3 = VIOLATION: the positive
  * control, showing that the measurement of the figure claims sees a violation. */
 #define VIOLATION 1e-9
-static int violating_step(const suslov_model *m, double eps, const double w[3], double w_next[3],
-                          double *lambda_next, suslov_step_stats *st)
+static int violating_step(const sus_model *m, double eps, const double w[3], double w_next[3],
+                          double *lambda_next, sus_stepper_stats *st)
 {
     const double w_in[3] = {w[0], w[1], 0.0};
-    const int status = suslov_step_midpoint->apply(m, eps, w_in, w_next, lambda_next, st);
+    const int status = sus_step_midpoint->apply(m, eps, w_in, w_next, lambda_next, st);
     w_next[2] = VIOLATION;
     return status;
 }
-static const suslov_stepper_type violating_type = {
+static const sus_stepper_type violating_type = {
     .name = "midpoint+violation", .order = 2, .lambda_order = 2, .apply = violating_step};
 
 /* max over the recorded rows of |w3| and |mu|, when the series is the run it claims to be,
@@ -76,12 +77,12 @@ static const suslov_stepper_type violating_type = {
  * same products, which another FMA contraction could change by a few u |w| ~ 1e-16); NaN
  * otherwise, so the claim fails. */
 typedef struct {
-    const suslov_series *s;
+    const sus_exp_series *s;
     size_t i;
     double worst, mismatch;
 } recheck_ctx;
 
-static int recheck(void *vctx, const suslov_row *row)
+static int recheck(void *vctx, const sus_row *row)
 {
     recheck_ctx *c = vctx;
     if (c->i < c->s->n) {
@@ -93,31 +94,31 @@ static int recheck(void *vctx, const suslov_row *row)
     return 0;
 }
 
-static double constraint_of(const suslov_series *s, const suslov_model *m, const suslov_stepper_type *st,
+static double constraint_of(const sus_exp_series *s, const sus_model *m, const sus_stepper_type *st,
                             double eps, long N, long every)
 {
     if (!series_is_run(s, m, eps, N, every))
         return NAN;
     recheck_ctx c = {s, 0, 0.0, 0.0};
-    suslov_run_report rep;
-    const suslov_run_config cfg = {m, st, SUSLOV_RECON_CAYLEY, eps, N, every};
-    if (suslov_run(&cfg, SUSLOV_PAPER_OMEGA0, recheck, &c, &rep) != 0 || c.i != s->n ||
+    sus_run_report rep;
+    const sus_run_config cfg = {m, st, SUS_RECON_CAYLEY, eps, N, every};
+    if (sus_run(&cfg, SUS_PAPER_OMEGA0, recheck, &c, &rep) != 0 || c.i != s->n ||
         !(c.mismatch <= 1e-15))
         return NAN;
-    return fmax(c.worst, fmax(suslov_series_maxdrift(s, FIELD(w3)) + fabs(s->w3[0]),
-                              suslov_series_maxdrift(s, FIELD(mu)) + fabs(s->mu[0])));
+    return fmax(c.worst, fmax(sus_exp_series_maxdrift(s, FIELD(w3)) + fabs(s->w3[0]),
+                              sus_exp_series_maxdrift(s, FIELD(mu)) + fabs(s->mu[0])));
 }
 
 /* The constraint claim of a figure panel (e): both runs, each checked as above, plus the
  * positive control on the same eps and steps: w3 = 1e-9 injected each step must be measured
  * as 1e-9 (vee(R^T R w^)_3 = w3 (1 + O(|R^T R - I|)), so within 10%). */
-static void constraint_claims(const char *fig, const char *ref, const suslov_model *m,
-                              const suslov_series *mid, const suslov_series *var, double eps, long N,
+static void constraint_claims(const char *fig, const char *ref, const sus_model *m,
+                              const sus_exp_series *mid, const sus_exp_series *var, double eps, long N,
                               long every)
 {
     char id[64], what[256];
-    const double cm = constraint_of(mid, m, suslov_step_midpoint, eps, N, every);
-    const double cv = constraint_of(var, m, suslov_step_variational, eps, N, every);
+    const double cm = constraint_of(mid, m, sus_step_midpoint, eps, N, every);
+    const double cv = constraint_of(var, m, sus_step_variational, eps, N, every);
     const double c = isnan(cm) || isnan(cv) ? NAN : fmax(cm, cv); /* fmax would drop a NaN */
     snprintf(id, sizeof id, "%s-constraint", fig);
     snprintf(what, sizeof what,
@@ -127,14 +128,14 @@ static void constraint_claims(const char *fig, const char *ref, const suslov_mod
              eps, N);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
     ledger_add(id, ref, what, c, 0.0, 1e-14, LEDGER_REPRODUCED);
-    suslov_series v;
-    suslov_run_report rep;
-    const suslov_run_config cfg = {m, &violating_type, SUSLOV_RECON_CAYLEY, eps, N, every};
+    sus_exp_series v;
+    sus_run_report rep;
+    const sus_run_config cfg = {m, &violating_type, SUS_RECON_CAYLEY, eps, N, every};
     double seen = NAN;
-    if (suslov_series_init(&v, N, every) == 0 &&
-        suslov_series_run(&v, &cfg, SUSLOV_PAPER_OMEGA0, &rep) == 0) {
+    if (sus_exp_series_init(&v, N, every) == 0 &&
+        sus_exp_series_run(&v, &cfg, SUS_PAPER_OMEGA0, &rep) == 0) {
         seen = constraint_of(&v, m, &violating_type, eps, N, every);
-        suslov_series_free(&v);
+        sus_exp_series_free(&v);
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
     snprintf(what, sizeof what,
@@ -143,15 +144,15 @@ static void constraint_claims(const char *fig, const char *ref, const suslov_mod
     ledger_add(id, "(test of the test)", what, seen, VIOLATION, 0.1 * VIOLATION, LEDGER_EXTENSION);
 }
 
-static void figure1(const suslov_model *m, const suslov_exact *ex)
+static void figure1(const sus_model *m, const sus_exact *ex)
 {
-    suslov_series mid, var;
-    const double eps = SUSLOV_FIG1_EPS;
-    const long N = suslov_experiment_steps(SUSLOV_FIG1_T_END, eps), every = SUSLOV_FIG1_EVERY;
-    run(&mid, m, suslov_step_midpoint, eps, N, every);
-    run(&var, m, suslov_step_variational, eps, N, every);
+    sus_exp_series mid, var;
+    const double eps = SUS_EXP_FIG1_EPS;
+    const long N = sus_exp_experiment_steps(SUS_EXP_FIG1_T_END, eps), every = SUS_EXP_FIG1_EVERY;
+    run(&mid, m, sus_step_midpoint, eps, N, every);
+    run(&var, m, sus_step_variational, eps, N, every);
     const double dw =
-        fmax(suslov_series_maxdiff(&mid, &var, FIELD(w1)), suslov_series_maxdiff(&mid, &var, FIELD(w2)));
+        fmax(sus_exp_series_maxdiff(&mid, &var, FIELD(w1)), sus_exp_series_maxdiff(&mid, &var, FIELD(w2)));
     /* A difference invisible in panels (a)-(b): the smallest plotted range (w2: 0.50 .. 0.68)
      * spans ~400 pixels at 150 dpi, so 1e-4 is a fraction of a pixel. */
     ledger_add("fig1-indistinguishable", "Sec. 5.6 text, Fig. 1",
@@ -162,16 +163,16 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
     double o0 = 0.0; /* max over the run of |O_0(w(t))| */
     for (size_t i = 0; i < mid.n; i++) {
         double w[2];
-        suslov_exact_omega(ex, mid.t[i], w);
-        o0 = fmax(o0, fabs(suslov_lagmult_o0(m, w)));
+        sus_exact_omega(ex, mid.t[i], w);
+        o0 = fmax(o0, fabs(sus_lagmult_o0(m, w)));
     }
     /* Row by row, not maxima against maxima: lambda_mid - lambda_var must follow O_0(w(t_k)) at
      * every k >= 1 (row 0 carries lambda(w0) for both methods, driver.h). */
     double off = 0.0;
     for (size_t i = 1; i < mid.n; i++) {
         double w[2];
-        suslov_exact_omega(ex, mid.t[i], w);
-        off = fmax(off, fabs(mid.lambda[i] - var.lambda[i] - suslov_lagmult_o0(m, w)));
+        sus_exact_omega(ex, mid.t[i], w);
+        off = fmax(off, fabs(mid.lambda[i] - var.lambda[i] - sus_lagmult_o0(m, w)));
     }
     if (mid.n < 2)
         off = NAN;
@@ -189,13 +190,13 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
     ledger_add(
         "fig1-energy-midpoint", "Fig. 1(f)",
         "max_k |E_k - E_0| of the midpoint rule, eps = 1e-3: conserved to round-off (it conserves E exactly)",
-        suslov_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
+        sus_exp_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
     ledger_add_bound("fig1-energy-variational", "Fig. 1(f) (extension)",
                      "max_k |E_k - E_0| of the variational integrator, eps = 1e-3: at least 1e-12, i.e. not "
                      "round-off (O(eps^2) drift)",
-                     suslov_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
-    suslov_series_free(&mid);
-    suslov_series_free(&var);
+                     sus_exp_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
+    sus_exp_series_free(&mid);
+    sus_exp_series_free(&var);
 }
 
 /* The readings of Figure 2(d) say what they are: one fixed-point sweep of the midpoint rule's
@@ -203,19 +204,19 @@ static void figure1(const suslov_model *m, const suslov_exact *ex)
  * rule, w + eps f(w + eps f(w)/2). Both written out here, step by step on (ContDyn), and
  * compared over the N steps of the figure: the same operations, so equal to round-off (1e-15
  * on E ~ 0.2 allows a different FMA contraction). */
-static void sweeps_are_explicit_methods(const suslov_model *m, double eps, long N, double *E)
+static void sweeps_are_explicit_methods(const sus_model *m, double eps, long N, double *E)
 {
     for (int n = 1; E && n <= 2; n++) {
-        double w[2] = {SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]}, wN[2], d = 0.0;
-        suslov_midpoint_sweeps_run(m, eps, n, SUSLOV_PAPER_OMEGA0, N, E, wN);
+        double w[2] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}, wN[2], d = 0.0;
+        sus_exp_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
         for (long k = 0; k <= N; k++) {
-            d = fmax(d, fabs(E[k] - suslov_energy(m, w)));
+            d = fmax(d, fabs(E[k] - sus_energy(m, w)));
             double f[2], y[2] = {w[0], w[1]};
-            suslov_contdyn(m, w, f);
+            sus_contdyn(m, w, f);
             if (n == 2) {
                 y[0] = w[0] + 0.5 * eps * f[0];
                 y[1] = w[1] + 0.5 * eps * f[1];
-                suslov_contdyn(m, y, f);
+                sus_contdyn(m, y, f);
             }
             w[0] += eps * f[0];
             w[1] += eps * f[1];
@@ -232,16 +233,16 @@ static void sweeps_are_explicit_methods(const suslov_model *m, double eps, long 
 
 /* "works quite well if the step size is relatively big": the variational error relative to
  * |w0|, against the midpoint rule's, over the Figure 2 run. */
-static void fig2_accuracy_claims(const suslov_exact *ex, const suslov_series *mid, const suslov_series *var)
+static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid, const sus_exp_series *var)
 {
     double err_var = 0.0, err_mid = 0.0;
     for (size_t i = 0; i < mid->n; i++) {
         double w[2];
-        suslov_exact_omega(ex, mid->t[i], w);
+        sus_exact_omega(ex, mid->t[i], w);
         err_var = fmax(err_var, hypot(var->w1[i] - w[0], var->w2[i] - w[1]));
         err_mid = fmax(err_mid, hypot(mid->w1[i] - w[0], mid->w2[i] - w[1]));
     }
-    const double r0 = hypot(SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
+    const double r0 = hypot(SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
     char q_buf[256];
     snprintf(q_buf, sizeof q_buf,
              "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200], above the midpoint rule's (expected); "
@@ -255,18 +256,18 @@ static void fig2_accuracy_claims(const suslov_exact *ex, const suslov_series *mi
     ledger_number("FigTwoVarAccuracyPercent", 100.0 * err_var / r0);
 }
 
-static void figure2(const suslov_model *m, const suslov_exact *ex)
+static void figure2(const sus_model *m, const sus_exact *ex)
 {
-    suslov_series mid, var;
-    const double eps = SUSLOV_FIG2_EPS;
-    const long N = suslov_experiment_steps(SUSLOV_FIG2_T_END, eps);
-    run(&mid, m, suslov_step_midpoint, eps, N, 1);
-    run(&var, m, suslov_step_variational, eps, N, 1);
+    sus_exp_series mid, var;
+    const double eps = SUS_EXP_FIG2_EPS;
+    const long N = sus_exp_experiment_steps(SUS_EXP_FIG2_T_END, eps);
+    run(&mid, m, sus_step_midpoint, eps, N, 1);
+    run(&var, m, sus_step_variational, eps, N, 1);
     const size_t last = mid.n - 1;
     const double E0 = mid.energy[0];
     const double loss_mid = E0 - mid.energy[last], loss_var = E0 - var.energy[last];
     double winf[2];
-    suslov_exact_limit(ex, winf);
+    sus_exact_limit(ex, winf);
 
     constraint_claims("fig2", "Fig. 2(e)", m, &mid, &var, eps, N, 1);
     /* The caption: midpoint shows a fast decay of energy, the variational integrator is better. */
@@ -283,16 +284,16 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
     ledger_add("fig2-energy-midpoint-conserved", "(extension)",
                "max_k |E_k - E_0| of the midpoint rule at eps = 1 over 200 steps: round-off, the implicit "
                "midpoint rule conserves E",
-               suslov_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
+               sus_exp_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
     /* Every reading of the midpoint rule's implicit equation tried (figures/fig2_energy). */
     double worst_loss = loss_mid, *E = malloc((size_t)(N + 1) * sizeof *E), wN[2];
     int gaining = 0;
-    for (int n = 1; E && n <= SUSLOV_FIG2_NSWEEP; n++) {
-        suslov_midpoint_sweeps_run(m, eps, n, SUSLOV_PAPER_OMEGA0, N, E, wN);
+    for (int n = 1; E && n <= SUS_EXP_FIG2_NSWEEP; n++) {
+        sus_exp_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
         worst_loss = fmax(worst_loss, E[0] - E[N]);
         gaining += E[N] > E[0];
     }
-    ledger_number("FigTwoSweepsTried", SUSLOV_FIG2_NSWEEP);
+    ledger_number("FigTwoSweepsTried", SUS_EXP_FIG2_NSWEEP);
     ledger_number("FigTwoSweepsGaining", gaining); /* readings that end with more energy than they began */
     sweeps_are_explicit_methods(m, eps, N, E);
     free(E);
@@ -326,31 +327,31 @@ static void figure2(const suslov_model *m, const suslov_exact *ex)
         "fig2-limit-variational", "(extension)",
         "|w_var(200) - w_inf| against |w_inf| (1 - sqrt(E_N / E_0)): a steady rotation at the wrong energy",
         lim_var, predicted, 1e-9, LEDGER_EXTENSION);
-    suslov_series_free(&mid);
-    suslov_series_free(&var);
+    sus_exp_series_free(&mid);
+    sus_exp_series_free(&var);
 }
 
 /* The printed I has I23 = 0.2 but I32 = 0.1. The dynamics use the third row; a symmetric
  * body would have (I31, I32) = (I13, I23) = (0.2, 0.2). How much does the choice matter? */
-static void inertia_ambiguity(const suslov_model *m)
+static void inertia_ambiguity(const sus_model *m)
 {
     double Irow[9], Icol[9];
     for (int i = 0; i < 9; i++)
         Irow[i] = m->I[i / 3][i % 3];
-    suslov_inertia_column_swap(Irow, Icol);
-    suslov_model mc;
-    suslov_exact er, ec;
+    sus_exp_inertia_column_swap(Irow, Icol);
+    sus_model mc;
+    sus_exact er, ec;
     char err[128];
-    if (suslov_model_init(&mc, Icol, err, sizeof err) != 0)
+    if (sus_model_init(&mc, Icol, err, sizeof err) != 0)
         exit(2);
-    suslov_exact_init(&er, m, SUSLOV_PAPER_OMEGA0);
-    suslov_exact_init(&ec, &mc, SUSLOV_PAPER_OMEGA0);
+    sus_exact_init(&er, m, SUS_PAPER_OMEGA0);
+    sus_exact_init(&ec, &mc, SUS_PAPER_OMEGA0);
     double d = 0.0;
-    const long n = suslov_experiment_steps(SUSLOV_INERTIA_T_END, SUSLOV_INERTIA_DT);
+    const long n = sus_exp_experiment_steps(SUS_EXP_INERTIA_T_END, SUS_EXP_INERTIA_DT);
     for (long i = 0; i <= n; i++) { /* the grid src/prog/figure_inertia.c draws */
         double a[2], b[2];
-        suslov_exact_omega(&er, SUSLOV_INERTIA_DT * (double)i, a);
-        suslov_exact_omega(&ec, SUSLOV_INERTIA_DT * (double)i, b);
+        sus_exact_omega(&er, SUS_EXP_INERTIA_DT * (double)i, a);
+        sus_exact_omega(&ec, SUS_EXP_INERTIA_DT * (double)i, b);
         d = fmax(d, hypot(a[0] - b[0], a[1] - b[1]));
     }
     ledger_add_bound("inertia-row-vs-column", "(RGB2) with I as printed (extension)",
@@ -359,7 +360,7 @@ static void inertia_ambiguity(const suslov_model *m)
                      d, 1e-3, 1, LEDGER_EXTENSION);
 }
 
-void figure_claims(const suslov_model *m, const suslov_exact *ex)
+void figure_claims(const sus_model *m, const sus_exact *ex)
 {
     figure1(m, ex);
     figure2(m, ex);

@@ -5,6 +5,6 @@
 #include "exact.h"
 #include "model.h"
 
-void figure_claims(const suslov_model *m, const suslov_exact *ex);
+void figure_claims(const sus_model *m, const sus_exact *ex);
 
 #endif

@@ -45,34 +45,34 @@
 
 typedef struct {
     double R[3][3], w[3], e0, energy, w3, orth;
-    suslov_model const *m;
+    sus_model const *m;
 } last_row;
 
-static int keep_row(void *vctx, const suslov_row *row)
+static int keep_row(void *vctx, const sus_row *row)
 {
     last_row *l = vctx;
     memcpy(l->R, row->R, sizeof l->R);
     memcpy(l->w, row->w, sizeof l->w);
-    l->energy = fmax(l->energy, fabs(suslov_energy(l->m, row->w) - l->e0));
+    l->energy = fmax(l->energy, fabs(sus_energy(l->m, row->w) - l->e0));
     l->w3 = fmax(l->w3, fabs(row->w[2]));
-    l->orth = fmax(l->orth, so3_orth_defect(row->R));
+    l->orth = fmax(l->orth, sus_so3_orth_defect(row->R));
     return 0;
 }
 
 /* Runs a method over [0, T] with N steps, every row tracked every `every` steps. */
-static int run(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st,
-               suslov_recon recon,
+static int run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
+               sus_recon recon,
                double T, long N, long every, last_row *out)
 {
-    *out = (last_row){.e0 = suslov_energy(m, ex->w0), .m = m};
-    const suslov_run_config cfg = {m, st, recon, T / (double)N, N, every};
-    suslov_run_report rep;
-    return suslov_run(&cfg, ex->w0, keep_row, out, &rep);
+    *out = (last_row){.e0 = sus_energy(m, ex->w0), .m = m};
+    const sus_run_config cfg = {m, st, recon, T / (double)N, N, every};
+    sus_run_report rep;
+    return sus_run(&cfg, ex->w0, keep_row, out, &rep);
 }
 
-static void order_rows(const suslov_model *m, const suslov_exact *ex, const suslov_method *me,
+static void order_rows(const sus_model *m, const sus_exact *ex, const sus_step_method *me,
                        const expected_order *eo,
-                       suslov_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
+                       sus_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
 {
     double eps[MAXN], ew[MAXN], eR[MAXN];
     const method_props props = method_props_of(me);
@@ -89,22 +89,22 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
             continue;
         eps[n] = T_ORD / (double)N;
         ew[n] = hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
-        eR[n] = so3_dist(R_T, l.R);
+        eR[n] = sus_so3_dist(R_T, l.R);
         n++;
-        if (ew[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_W
-            && eR[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUSLOV_SIZE_R)
+        if (ew[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUS_EXP_SIZE_W
+            && eR[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUS_EXP_SIZE_R)
             break; /* both at the round-off floor below */
     }
     for (int q = with_w ? 0 : 1; q < 2; q++) {
         const double *err = q ? eR : ew;
-        const double size = q ? SUSLOV_SIZE_R : SUSLOV_SIZE_W;
+        const double size = q ? SUS_EXP_SIZE_R : SUS_EXP_SIZE_W;
         /* keep the points below ERR_MAX and above the round-off of the run: 1000 u times the size
          * (orderfit.h), and a hundred times N s u, the worst-case accumulation of one rounding per
          * substep over N steps of s substeps (a run of 10^4 steps piles up more than 1000 u) */
         double fe[MAXN], fr[MAXN];
         int k = 0;
         for (int j = 0; j < n; j++) {
-            const double N = T_ORD / eps[j], floor = fmax(SUSLOV_FIT_FLOOR_REL * size,
+            const double N = T_ORD / eps[j], floor = fmax(SUS_EXP_FIT_FLOOR_REL * size,
                                                           100.0 * N * stages * 2.220446049250313e-16 * size);
             if (err[j] <= ERR_MAX && err[j] > floor) {
                 fe[k] = eps[j];
@@ -112,19 +112,19 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
                 k++;
             }
         }
-        suslov_order_fit f;
-        const int ok = suslov_fit_order(fe, fr, k, INFINITY, 0.0, &f);
+        sus_exp_order_fit f;
+        const int ok = sus_exp_fit_order(fe, fr, k, INFINITY, 0.0, &f);
         const double slope = ok == 0 ? f.slope : -INFINITY; /* no fit: the line fails */
         const int expected = q ? eo->so3[recon] : eo->p;
         char id[96], what[256];
         if (q)
-            snprintf(id, sizeof id, "highorder-so3-order-%s-%s", SUSLOV_RECON_NAMES[recon], me->type->name);
+            snprintf(id, sizeof id, "highorder-so3-order-%s-%s", SUS_RECON_NAMES[recon], me->type->name);
         else
             snprintf(id, sizeof id, "highorder-w-order-%s", me->type->name);
         snprintf(what, sizeof what, "slope of %s at t = 50 against eps, %s%s%s, errors in [max(1000 u, 100 "
                                     "N s u), 1e-3] (eps %.3g .. %.3g, %d points)",
                  q ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|", me->type->name, q ? " + " : "",
-                     q ? SUSLOV_RECON_NAMES[recon] : "",
+                     q ? SUS_RECON_NAMES[recon] : "",
                  ok == 0 ? f.eps_lo : 0.0, ok == 0 ? f.eps_hi : 0.0, ok == 0 ? f.used : 0);
         if (ok != 0 && !q && expected >= 10)
             continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
@@ -143,22 +143,22 @@ static void order_rows(const suslov_model *m, const suslov_exact *ex, const susl
  * control's errors stay 1000x above round-off up to p = 16 (single starts scatter: coefficients
  * of either sign; the maxima over 8 starts do not by more than 2x). A method of order p - 1 gives
  * 1. Asserted: <= 0.6. */
-static void taylor_control(const suslov_model *m, const suslov_exact *ex, const suslov_method *me, int p)
+static void taylor_control(const sus_model *m, const sus_exact *ex, const sus_step_method *me, int p)
 {
     static const double tk[] = {0.0, 1.0, 2.0, 3.0, 5.0, 7.0, 12.0, 20.0};
     const double eps = 2.0;
     double em = 0.0, ec = 0.0;
     for (int t = 0; t < 8; t++) {
         double wk[2], we[2], wn[3], wc[3], lam;
-        suslov_attitude a1, a2;
-        suslov_step_stats ss;
-        suslov_exact_omega(ex, tk[t], wk);
-        suslov_exact_omega(ex, tk[t] + eps, we);
+        sus_attitude a1, a2;
+        sus_stepper_stats ss;
+        sus_exact_omega(ex, tk[t], wk);
+        sus_exact_omega(ex, tk[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
-        suslov_attitude_identity(&a1);
-        suslov_attitude_identity(&a2);
-        if (suslov_step_full(me->type, m, eps, me->recon, &a1, w, wn, &lam, &ss) != SUSLOV_STEP_OK ||
-            me->type->apply_order(p - 1, m, eps, &a2, w, wc, &lam, &ss) != SUSLOV_STEP_OK) {
+        sus_attitude_identity(&a1);
+        sus_attitude_identity(&a2);
+        if (sus_stepper_full(me->type, m, eps, me->recon, &a1, w, wn, &lam, &ss) != SUS_STEPPER_OK ||
+            me->type->apply_order(p - 1, m, eps, &a2, w, wc, &lam, &ss) != SUS_STEPPER_OK) {
             em = INFINITY; /* a failed step fails the line */
             break;
         }
@@ -178,7 +178,7 @@ static void taylor_control(const suslov_model *m, const suslov_exact *ex, const 
  * substep or per Taylor step (N s u E, the worst case of a drift that never cancels);
  * R^T R - I: R is rebuilt from a unit quaternion at every step, or summed with compensation, so
  * it is one rounding, a few u over 9 entries, whatever N: <= 1e-14. */
-static void long_run(const suslov_model *m, const suslov_exact *ex, const suslov_method *me,
+static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_method *me,
                      const method_props *props)
 {
     const long N = 100000L;
@@ -197,7 +197,7 @@ static void long_run(const suslov_model *m, const suslov_exact *ex, const suslov
     snprintf(id, sizeof id, "highorder-so3-%s", me->type->name);
     snprintf(what, sizeof what, "max |R^T R - I| over %ld steps to T = 1e4, %s + %s; bound 1e-14 (one "
                                 "rounding)", N,
-             me->type->name, SUSLOV_RECON_NAMES[me->recon]);
+             me->type->name, SUS_RECON_NAMES[me->recon]);
     ledger_add_bound(id, "(extension)", what, ok ? l.orth : INFINITY, 1e-14, 0, LEDGER_EXTENSION);
 }
 
@@ -219,18 +219,18 @@ static const struct {
     {"taylor16", 11, 0, 1e-10}, {"taylor12", 21, 0, 1e-12}, {"taylor16", 18, 0, 1e-14},
 };
 
-static void recommended_settings(const suslov_model *m, const suslov_exact *ex, const double w_T[2],
+static void recommended_settings(const sus_model *m, const sus_exact *ex, const double w_T[2],
                                  const double R_T[3][3])
 {
     char id[96], what[256];
     for (size_t i = 0; i < sizeof RECOMMENDED / sizeof RECOMMENDED[0]; i++) {
-        const suslov_method *me = suslov_method_by_name(RECOMMENDED[i].method);
+        const sus_step_method *me = sus_step_method_by_name(RECOMMENDED[i].method);
         if (!me)
             ledger_die("a recommended method is not registered");
         const long N = RECOMMENDED[i].steps;
         last_row l;
         const int ok = run(m, ex, me->type, me->recon, T_ORD, N, 1, &l) == 0;
-        const double err = !ok ? INFINITY : RECOMMENDED[i].attitude ? so3_dist(R_T, l.R)
+        const double err = !ok ? INFINITY : RECOMMENDED[i].attitude ? sus_so3_dist(R_T, l.R)
                                                                     : hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
         snprintf(id, sizeof id, "recommended-%s-%s-%ld", RECOMMENDED[i].attitude ? "attitude" : "w",
                  me->type->name, N);
@@ -248,11 +248,11 @@ static void recommended_settings(const suslov_model *m, const suslov_exact *ex, 
     }
 }
 
-void highorder_claims(const suslov_model *m, const suslov_exact *ex)
+void highorder_claims(const sus_model *m, const sus_exact *ex)
 {
     double w_T[2], R_T[3][3], w_ref[2];
-    suslov_exact_omega(ex, T_ORD, w_T);
-    suslov_refatt_precise(m, ex->w0, T_ORD, w_ref, R_T);
+    sus_exact_omega(ex, T_ORD, w_T);
+    sus_refatt_precise(m, ex->w0, T_ORD, w_ref, R_T);
 
     /* The reference R(50) against the independent long-double Magnus integration along the
      * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17;
@@ -260,12 +260,12 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
      * asks for <= 1e-15: a tenth of the 1e-14 that would blur errors of 1e-12 by 1%. */
     {
         double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        suslov_magnus4(ex, 0.0, T_ORD, 4000, Rm);
+        sus_magnus4(ex, 0.0, T_ORD, 4000, Rm);
         ledger_add("highorder-reference-attitude", "(method)",
                    "dist(R_ref(50), R_magnus(50)): long-double Taylor (order 28) on (ContDyn) + quaternion "
                    "vs long-double "
                    "Magnus-4 (Richardson) along the closed form; claimed <= 1e-15",
-                   so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
+                   sus_so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
         ledger_add("highorder-reference-omega", "(method)",
                    "|w_ref(50) - w_exact(50)|: the reference's w against the closed form, claimed <= 4 u "
                    "|w| ~ 1e-15 "
@@ -274,8 +274,8 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
     }
 
     recommended_settings(m, ex, w_T, R_T);
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo || me->paper_ref)
             continue; /* missing: claims_methods.c fails it; the paper's methods: claims.c */
@@ -284,7 +284,7 @@ void highorder_claims(const suslov_model *m, const suslov_exact *ex)
         if (props.series) /* against its own truncation */
             taylor_control(m, ex, me, eo->p);
         else /* the paper's retraction, symmetrised, beside the exponential */
-            order_rows(m, ex, me, eo, SUSLOV_RECON_CAYLEY_MID, 0, w_T, R_T);
+            order_rows(m, ex, me, eo, SUS_RECON_CAYLEY_MID, 0, w_T, R_T);
 
         long_run(m, ex, me, &props);
     }

@@ -6,6 +6,6 @@
 
 #include "exact.h"
 
-void highorder_claims(const suslov_model *m, const suslov_exact *ex);
+void highorder_claims(const sus_model *m, const sus_exact *ex);
 
 #endif

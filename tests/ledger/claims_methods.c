@@ -59,13 +59,13 @@
 /* An order is an integer: a quarter of the gap tells p from p +- 1 (as claims_fit.c's widened
  * window), and leaves room for the O(eps) bend the window's upper end may still carry. */
 #define ORDER_TOL 0.25
-#define NQ (2 + SUSLOV_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
+#define NQ (2 + SUS_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
 
 typedef struct {
     body b;
-    suslov_model m;
-    suslov_exact ex;
-    suslov_local_ref ref[NE][NTK];
+    sus_model m;
+    sus_exact ex;
+    sus_exp_local_ref ref[NE][NTK];
     double eps[NE];
     double size[NQ];          /* size of w, of lambda, of R along the motion */
 } body_data;
@@ -77,16 +77,16 @@ static body_data bodies[BODIES_COUNT];
 static void body_sizes(body_data *d)
 {
     double wl[2];
-    suslov_exact_limit(&d->ex, wl);
-    double sw = hypot(wl[0], wl[1]), sl = fabs(suslov_lagmult(&d->m, wl));
+    sus_exact_limit(&d->ex, wl);
+    double sw = hypot(wl[0], wl[1]), sl = fabs(sus_lagmult(&d->m, wl));
     for (int t = 0; t < NTK; t++) {
         const double *w = d->ref[0][t].w_k;
         sw = fmax(sw, hypot(w[0], w[1]));
-        sl = fmax(sl, fabs(suslov_lagmult(&d->m, w)));
+        sl = fmax(sl, fabs(sus_lagmult(&d->m, w)));
     }
     d->size[0] = sw;
     d->size[1] = sl;
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+    for (int r = 0; r < SUS_RECON_COUNT; r++)
         d->size[2 + r] = 1.0; /* entries of a rotation */
 }
 
@@ -95,34 +95,34 @@ static void body_init(int k, body_data *d)
     static const double TK_RATE[NTK] = {0.0, 0.45, 1.0, 1.75, 2.9};
     char err[256];
     body_get(k, &d->b);
-    if (suslov_model_init(&d->m, d->b.I, err, sizeof err) != 0)
+    if (sus_model_init(&d->m, d->b.I, err, sizeof err) != 0)
         ledger_die(err);
-    suslov_exact_init(&d->ex, &d->m, d->b.w0);
+    sus_exact_init(&d->ex, &d->m, d->b.w0);
     for (int j = 0; j < NE; j++) {
         d->eps[j] = EPS_K_MAX / d->ex.k * exp2(-0.25 * j);
         for (int t = 0; t < NTK; t++)
-            suslov_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
+            sus_exp_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
     }
     body_sizes(d);
 }
 
 /* The local error curves of one method on one body: err[q][j], the largest over the starts;
  * NaN where a step failed. */
-static void local_curves(const suslov_method *me, const body_data *d, double err[NQ][NE])
+static void local_curves(const sus_step_method *me, const body_data *d, double err[NQ][NE])
 {
     for (int j = 0; j < NE; j++) {
         for (int q = 0; q < NQ; q++)
             err[q][j] = 0.0;
         for (int t = 0; t < NTK; t++) {
-            suslov_local_err e;
-            if (suslov_local_errors(&d->m, me->type, &d->ref[j][t], &e) != SUSLOV_STEP_OK) {
+            sus_exp_local_err e;
+            if (sus_exp_local_errors(&d->m, me->type, &d->ref[j][t], &e) != SUS_STEPPER_OK) {
                 for (int q = 0; q < NQ; q++)
                     err[q][j] = NAN;
                 break;
             }
             err[0][j] = fmax(err[0][j], e.w);
             err[1][j] = fmax(err[1][j], e.lambda);
-            for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+            for (int r = 0; r < SUS_RECON_COUNT; r++)
                 err[2 + r][j] = fmax(err[2 + r][j], e.so3[r]);
         }
     }
@@ -155,7 +155,7 @@ typedef struct {
 
 static int candidate(const double *err, int j, double size)
 {
-    return isfinite(err[j]) && err[j] > SUSLOV_FIT_FLOOR_REL * size && err[j] < size;
+    return isfinite(err[j]) && err[j] > SUS_EXP_FIT_FLOOR_REL * size && err[j] < size;
 }
 
 /* Rule 2: the longest run of candidates with one slope; the grid runs from large eps (j = 0) to
@@ -186,8 +186,8 @@ static curve_order measure_order(const double *eps, const double *err, double si
             ;
         n = hi - lo + 1;
     }
-    suslov_order_fit f;
-    if (n >= 3 && suslov_fit_order(eps + lo, err + lo, n, INFINITY, 0.0, &f) == 0) {
+    sus_exp_order_fit f;
+    if (n >= 3 && sus_exp_fit_order(eps + lo, err + lo, n, INFINITY, 0.0, &f) == 0) {
         c.order = f.slope - 1.0;
         c.eps_lo = f.eps_lo;
         c.eps_hi = f.eps_hi;
@@ -234,7 +234,7 @@ static void summary_add(order_summary *s, curve_order c, double expected, const 
 
 /* One ledger line for one order of one method over every body: two-sided on the worst body when
  * every body has a window of one slope, else one-sided on the lowest order (rule 4). */
-static void order_line(const char *id, const char *what, const suslov_method *me, const order_summary *s,
+static void order_line(const char *id, const char *what, const sus_step_method *me, const order_summary *s,
                        int expected, const char *ref)
 {
     char q[400];
@@ -261,7 +261,7 @@ static void order_line(const char *id, const char *what, const suslov_method *me
 }
 
 /* p, s and the SO(3) order with each reconstruction of one method, on every body. */
-static void method_orders(const suslov_method *me, const expected_order *eo)
+static void method_orders(const sus_step_method *me, const expected_order *eo)
 {
     static double err[BODIES_COUNT][NQ][NE];
     order_summary sum[NQ];
@@ -273,7 +273,7 @@ static void method_orders(const suslov_method *me, const expected_order *eo)
         const curve_order p = measure_order(d->eps, err[k][0], d->size[0]);
         summary_add(&sum[0], p, eo->p, d->b.name);
         summary_add(&sum[1], measure_order(d->eps, err[k][1], d->size[1]), eo->s, d->b.name);
-        for (int r = 0; r < SUSLOV_RECON_COUNT; r++)
+        for (int r = 0; r < SUS_RECON_COUNT; r++)
             summary_add(&sum[2 + r], pair_order(measure_order(d->eps, err[k][2 + r], d->size[2 + r]), p),
                         eo->so3[r], d->b.name);
     }
@@ -283,10 +283,10 @@ static void method_orders(const suslov_method *me, const expected_order *eo)
     snprintf(id, sizeof id, "method-s-%s", me->type->name);
     order_line(id, "s: local lambda error slope - 1", me, &sum[1],
                eo->s, eo->ref);
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
-        snprintf(id, sizeof id, "method-so3-%s-%s", SUSLOV_RECON_NAMES[r], me->type->name);
+    for (int r = 0; r < SUS_RECON_COUNT; r++) {
+        snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
         snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
-                 SUSLOV_RECON_NAMES[r]);
+                 SUS_RECON_NAMES[r]);
         order_line(id, what, me, &sum[2 + r], eo->so3[r], "TeoL: min(r, p)");
     }
 }
@@ -297,16 +297,16 @@ static void method_orders(const suslov_method *me, const expected_order *eo)
 #define STRUCT_STEPS 2000L    /* T = 100: the transient and the approach to the steady rotation */
 
 typedef struct {
-    const suslov_model *m;
+    const sus_model *m;
     double e0, energy, w3, orth;
 } structure_ctx;
 
-static int track(void *vctx, const suslov_row *row)
+static int track(void *vctx, const sus_row *row)
 {
     structure_ctx *c = vctx;
-    c->energy = fmax(c->energy, fabs(suslov_energy(c->m, row->w) - c->e0));
+    c->energy = fmax(c->energy, fabs(sus_energy(c->m, row->w) - c->e0));
     c->w3 = fmax(c->w3, fabs(row->w[2]));
-    c->orth = fmax(c->orth, so3_orth_defect(row->R));
+    c->orth = fmax(c->orth, sus_so3_orth_defect(row->R));
     return 0;
 }
 
@@ -338,16 +338,16 @@ static double orth_bound(const method_props *p, const body_data *d)
 }
 
 /* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body. */
-static void method_structure(const suslov_method *me)
+static void method_structure(const sus_step_method *me)
 {
     const method_props p = method_props_of(me);
     structure_worst w3 = {0}, orth = {0}, en = {0};
     for (int k = 0; k < BODIES_COUNT; k++) {
         const body_data *d = &bodies[k];
-        structure_ctx c = {&d->m, suslov_energy(&d->m, d->b.w0), 0, 0, 0};
-        const suslov_run_config cfg = {&d->m, me->type, me->recon, STRUCT_EPS, STRUCT_STEPS, 1};
-        suslov_run_report rep;
-        if (suslov_run(&cfg, d->b.w0, track, &c, &rep) != 0)
+        structure_ctx c = {&d->m, sus_energy(&d->m, d->b.w0), 0, 0, 0};
+        const sus_run_config cfg = {&d->m, me->type, me->recon, STRUCT_EPS, STRUCT_STEPS, 1};
+        sus_run_report rep;
+        if (sus_run(&cfg, d->b.w0, track, &c, &rep) != 0)
             c.energy = c.w3 = c.orth = INFINITY;
         worst_add(&w3, c.w3, 1.0, d->b.name);
         worst_add(&orth, c.orth, orth_bound(&p, d), d->b.name);
@@ -363,7 +363,7 @@ static void method_structure(const suslov_method *me)
     ledger_add(id, ref, q, w3.value, 0.0, 0.0, truth);
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
     snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s + %s (%s), worst of %d bodies %s; "
-             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUSLOV_RECON_NAMES[me->recon],
+             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUS_RECON_NAMES[me->recon],
              p.attitude == METHOD_ATT_QUATERNION ? "unit quaternion" : "compensated product", BODIES_COUNT,
              orth.body, orth.bound);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
@@ -379,8 +379,8 @@ void methods_claims(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++)
         body_init(k, &bodies[k]);
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo) {
             char id[96];

@@ -26,7 +26,7 @@ static const double TKP[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 
 typedef struct {
     const char *id;
-    const suslov_butcher *tab;
+    const sus_butcher *tab;
     int cayley;     /* 1: the table on xi with R_{k+1} = R_k cay(eps xi_k^); 2: the table on (R, V) for
                      * the velocity, the same attitude */
     int r, l;       /* what theory gives: the table's order for both, or r = 1 (TeoL) and l = the table's */
@@ -34,23 +34,23 @@ typedef struct {
 
 static double fit(const double *eps, const double *err, double size)
 {
-    suslov_order_fit f;
-    if (suslov_fit_order(eps, err, NJP, SUSLOV_FIT_EPS_MAX, SUSLOV_FIT_FLOOR_REL * size, &f) != 0)
+    sus_exp_order_fit f;
+    if (sus_exp_fit_order(eps, err, NJP, SUS_EXP_FIT_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * size, &f) != 0)
         return NAN;
     return f.slope - 1.0;
 }
 
-void propocons1_claims(const suslov_model *m, const suslov_exact *ex)
+void propocons1_claims(const sus_model *m, const sus_exact *ex)
 {
     const integrator list[] = {
-        {"heun2", &SUSLOV_BUTCHER_HEUN2, 0, 2, 2},
-        {"kutta3", &SUSLOV_BUTCHER_KUTTA3, 0, 3, 3},
-        {"rk4-xi-cayley", &SUSLOV_BUTCHER_RK4, 1, 1, 4},
-        {"rk4-rv-cayley", &SUSLOV_BUTCHER_RK4, 2, 1, 4},
+        {"heun2", &SUS_BUTCHER_HEUN2, 0, 2, 2},
+        {"kutta3", &SUS_BUTCHER_KUTTA3, 0, 3, 3},
+        {"rk4-xi-cayley", &SUS_BUTCHER_RK4, 1, 1, 4},
+        {"rk4-rv-cayley", &SUS_BUTCHER_RK4, 2, 1, 4},
     };
     char err[256];
-    suslov_unreduced u;
-    if (suslov_unreduced_init(&u, m, err, sizeof err) != 0)
+    sus_unreduced u;
+    if (sus_unreduced_init(&u, m, err, sizeof err) != 0)
         ledger_die(err);
     for (size_t n = 0; n < sizeof list / sizeof list[0]; n++) {
         const integrator *it = &list[n];
@@ -59,34 +59,34 @@ void propocons1_claims(const suslov_model *m, const suslov_exact *ex)
             eps[j] = ldexp(1.0, -j);
         for (int t = 0; t < NTKP; t++) {
             double Rk[3][3], I3[3][3], wk[3] = {0.0, 0.0, 0.0}, W[3][3];
-            suslov_refatt ra;
-            mat3_identity(I3);
-            suslov_refatt_init(&ra, ex, 0.0, I3);
-            suslov_refatt_advance(&ra, TKP[t], Rk);
-            suslov_exact_omega(ex, TKP[t], wk);
-            so3_hat(wk, W);
+            sus_refatt ra;
+            sus_mat3_identity(I3);
+            sus_refatt_init(&ra, ex, 0.0, I3);
+            sus_refatt_advance(&ra, TKP[t], Rk);
+            sus_exact_omega(ex, TKP[t], wk);
+            sus_so3_hat(wk, W);
             for (int j = 0; j < NJP; j++) {
-                suslov_local_ref ref;
+                sus_exp_local_ref ref;
                 double R[3][3], V[3][3], Rx[3][3], xi[3];
-                suslov_local_ref_init(&ref, ex, TKP[t], eps[j]);
-                mat3_copy(R, Rk);
-                mat3_mul(V, Rk, W);
+                sus_exp_local_ref_init(&ref, ex, TKP[t], eps[j]);
+                sus_mat3_copy(R, Rk);
+                sus_mat3_mul(V, Rk, W);
                 if (it->cayley == 2)
-                    suslov_unreduced_rk_recayley(&u, it->tab, eps[j], R, V);
+                    sus_unreduced_rk_recayley(&u, it->tab, eps[j], R, V);
                 else if (it->cayley)
-                    suslov_unreduced_rk_cayley(&u, it->tab, eps[j], R, V);
+                    sus_unreduced_rk_cayley(&u, it->tab, eps[j], R, V);
                 else
-                    suslov_unreduced_rk(&u, it->tab, eps[j], R, V);
-                mat3_mul(Rx, Rk, ref.Phi);
-                eR[j] = fmax(eR[j], so3_dist(Rx, R));
-                suslov_unreduced_xi(R, V, xi);
+                    sus_unreduced_rk(&u, it->tab, eps[j], R, V);
+                sus_mat3_mul(Rx, Rk, ref.Phi);
+                eR[j] = fmax(eR[j], sus_so3_dist(Rx, R));
+                sus_unreduced_xi(R, V, xi);
                 const double d[3] = {ref.w_exact[0] - xi[0], ref.w_exact[1] - xi[1], ref.w_exact[2] - xi[2]};
-                exi[j] = fmax(exi[j], vec3_norm(d));
-                el[j] = fmax(el[j], fabs(ref.lambda_exact - suslov_lagmult(m, xi)));
+                exi[j] = fmax(exi[j], sus_vec3_norm(d));
+                el[j] = fmax(el[j], fabs(ref.lambda_exact - sus_lagmult(m, xi)));
             }
         }
-        const double r = fit(eps, eR, SUSLOV_SIZE_R), l = fit(eps, exi, SUSLOV_SIZE_W),
-                     s = fit(eps, el, SUSLOV_SIZE_LAMBDA);
+        const double r = fit(eps, eR, SUS_EXP_SIZE_R), l = fit(eps, exi, SUS_EXP_SIZE_W),
+                     s = fit(eps, el, SUS_EXP_SIZE_LAMBDA);
         char id[64], q[256];
         snprintf(id, sizeof id, "propocons1-r-%s", it->id);
         snprintf(q, sizeof q, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1, %s on (LdAeqs)",

@@ -7,6 +7,6 @@
 #include "exact.h"
 #include "model.h"
 
-void propocons1_claims(const suslov_model *m, const suslov_exact *ex);
+void propocons1_claims(const sus_model *m, const sus_exact *ex);
 
 #endif

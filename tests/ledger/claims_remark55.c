@@ -9,6 +9,7 @@
  * 2p + 1 for n = 2, which takes m = p + 1 terms of the series (the n = 2 lines). Two terms only
  * (our truncation, an extension) give min(p + 2, 2p + 1). */
 #include "claims_remark55.h"
+#include "dsp.h"
 
 #include "claims_fit.h"
 #include "expected_orders.h"
@@ -22,57 +23,57 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define U SUSLOV_U
+#define U SUS_U
 #define NJ5 12  /* eps = 2 .. 2^-10 */
 static const double TK5[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK5 5
 /* lambda's round-off: u times its size, a thousand times over (orderfit.h) */
-#define FLOOR_LAMBDA (1000.0 * U * SUSLOV_SIZE_LAMBDA)
+#define FLOOR_LAMBDA (1000.0 * U * SUS_EXP_SIZE_LAMBDA)
 
 static double eps_of(int j) { return ldexp(1.0, 1 - j); }
 
 /* Local multiplier errors of lambda(w^{k+1}) + l_lambda with nterms terms (0: no shift), max
  * over t_k. */
-static void lambda_errors(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st, int p,
+static void lambda_errors(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st, int p,
                           int nterms, double *err)
 {
     for (int j = 0; j < NJ5; j++) {
         err[j] = 0.0;
         for (int t = 0; t < NTK5; t++) {
             double wk[2], we[2], x[3], lam, l = 0.0;
-            suslov_step_stats ss;
-            suslov_exact_omega(ex, TK5[t], wk);
-            suslov_exact_omega(ex, TK5[t] + eps_of(j), we);
+            sus_stepper_stats ss;
+            sus_exact_omega(ex, TK5[t], wk);
+            sus_exact_omega(ex, TK5[t] + eps_of(j), we);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (st->apply(m, eps_of(j), w, x, &lam, &ss) != SUSLOV_STEP_OK)
+            if (st->apply(m, eps_of(j), w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("a step for Remark 5.5");
-            if (nterms > 0 && suslov_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
+            if (nterms > 0 && sus_exp_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
                 ledger_die("the lambda shift");
-            err[j] = fmax(err[j], fabs(suslov_lagmult(m, x) + l - suslov_lagmult(m, we)));
+            err[j] = fmax(err[j], fabs(sus_lagmult(m, x) + l - sus_lagmult(m, we)));
         }
     }
 }
 
 /* The derived expansion against the step and the closed-form flow at eps = 1/8, and its first
  * p coefficients of the local error (must vanish). */
-static void expansion_claim(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st,
+static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
                             int p)
 {
     const double eps = 0.125;
     double dev = 0.0, low = 0.0, lead = 0.0;
     for (int t = 0; t < NTK5; t++) {
         double wk[2], we[2], x[3], lam, sx[2], sy[2];
-        suslov_wseries a, y;
-        suslov_step_stats ss;
-        suslov_exact_omega(ex, TK5[t], wk);
-        suslov_exact_omega(ex, TK5[t] + eps, we);
+        sus_exp_wseries a, y;
+        sus_stepper_stats ss;
+        sus_exact_omega(ex, TK5[t], wk);
+        sus_exact_omega(ex, TK5[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK
-            || suslov_series_step(m, st, wk, &a) != 0)
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK
+            || sus_exp_series_step(m, st, wk, &a) != 0)
             ledger_die("the series of a step");
-        suslov_series_flow(m, wk, &y);
-        suslov_series_eval(&a, eps, sx);
-        suslov_series_eval(&y, eps, sy);
+        sus_exp_series_flow(m, wk, &y);
+        sus_exp_series_eval(&a, eps, sx);
+        sus_exp_series_eval(&y, eps, sy);
         dev = fmax(dev, fmax(hypot(sx[0] - x[0], sx[1] - x[1]), hypot(sy[0] - we[0], sy[1] - we[1])));
         for (int j = 0; j <= p + 1; j++) {
             const double e = hypot(a.c[0][j] - y.c[0][j], a.c[1][j] - y.c[1][j]);
@@ -97,21 +98,21 @@ static void expansion_claim(const suslov_model *m, const suslov_exact *ex, const
  * errors rise above round-off there (as claims_order_or_floor) */
 static double fit_s(const double *eps, const double *err)
 {
-    suslov_order_fit f;
+    sus_exp_order_fit f;
     double e[NJ5];
     for (int j = 0; j < NJ5; j++)
         e[j] = err[j] > FLOOR_LAMBDA ? err[j] : 0.0;
-    if (suslov_fit_order(eps, e, NJ5, SUSLOV_FIT_EPS_MAX, 0.0, &f) == 0
-        || suslov_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
+    if (sus_exp_fit_order(eps, e, NJ5, SUS_EXP_FIT_EPS_MAX, 0.0, &f) == 0
+        || sus_exp_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
         return f.slope - 1.0;
     return NAN;
 }
 
 /* The midpoint DSP's label in the text, against its measured s. */
-static void midpoint_label(const suslov_model *m, const suslov_exact *ex, int p, const double *eps)
+static void midpoint_label(const sus_model *m, const sus_exact *ex, int p, const double *eps)
 {
     double e0[NJ5];
-    lambda_errors(m, ex, suslov_step_midpoint, p, 0, e0);
+    lambda_errors(m, ex, sus_step_midpoint, p, 0, e0);
     /* Sec. 5.5 calls the midpoint DSP "an order (2,1)". Definition RedConsis bounds the errors
      * by O(eps^{s+1}) and Prop 5.2 says "at least of order (1,p)": a (2,2) method is also
      * (2,1): the label is a lower bound, and it holds when s >= 1 (less the tenth of the gap
@@ -127,7 +128,7 @@ static void midpoint_label(const suslov_model *m, const suslov_exact *ex, int p,
                s0, 2.0, 0.1, LEDGER_EXTENSION);
 }
 
-static void method_claims(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st)
+static void method_claims(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st)
 {
     const expected_order *eo = expected_order_of(st->name);
     if (!eo)
@@ -157,7 +158,7 @@ static void method_claims(const suslov_model *m, const suslov_exact *ex, const s
                           "min(p+2, 2p+1) = %d), s1 = %.2f",
              st->name, s2m, s2, s1);
     ledger_add_bound(id, "RemarkLambda", q, s2m - s1, 0.5, 1, LEDGER_EXTENSION);
-    if (st == suslov_step_variational)
+    if (st == sus_step_variational)
         /* After PropoFinal: the shift of lambda(w^{k+1}) makes the variational integrator (2, s), s > 2. */
         ledger_add_bound("remark55-variational-2s", "text after PropoFinal, RemarkLambda",
                          "s of lambda(w^{k+1}) + l_lambda (one term of (taudyn)'s local error) in place of "
@@ -194,18 +195,18 @@ static void method_claims(const suslov_model *m, const suslov_exact *ex, const s
                  p + 1, st->name, 2 * p + 1, 2 * p + 2, worst);
         ledger_add_bound(id, "RemarkLambda (extension)", q, worst, 0.1, 0, LEDGER_EXTENSION);
     }
-    if (st == suslov_step_midpoint)
+    if (st == sus_step_midpoint)
         midpoint_label(m, ex, p, eps);
 }
 
 /* (VSO3) as printed, third row, with the printed (cayinver) and l~_d' = eps I w, then the
  * rescaling lambda -> -lambda / eps^2; (PartCase) has the opposite sign of the left-hand side. */
-static double vso3_lambda(const suslov_model *m, double eps, const double w[2], const double x[2])
+static double vso3_lambda(const sus_model *m, double eps, const double w[2], const double x[2])
 {
     double Px[3][3], Pw[3][3];
     const double mw[2] = {-w[0], -w[1]};
-    so3_cayinver_printed(eps, x, Px);
-    so3_cayinver_printed(eps, mw, Pw);
+    sus_so3_cayinver_printed(eps, x, Px);
+    sus_so3_cayinver_printed(eps, mw, Pw);
     const double (*I)[3] = m->I;
     double vx[3], vw[3];
     for (int i = 0; i < 3; i++) {
@@ -219,17 +220,17 @@ static double vso3_lambda(const suslov_model *m, double eps, const double w[2], 
     return -lv / (eps * eps);
 }
 
-static void small_statements(const suslov_model *m, const suslov_exact *ex)
+static void small_statements(const sus_model *m, const sus_exact *ex)
 {
     double rv_lo = INFINITY, rv_hi = -INFINITY;
     for (int t = 0; t < NTK5; t++)
         for (int j = 0; j < 4; j++) {
             const double eps = ldexp(1.0, -2 * j);
             double wk[2], x[3], lam;
-            suslov_step_stats ss;
-            suslov_exact_omega(ex, TK5[t], wk);
+            sus_stepper_stats ss;
+            sus_exact_omega(ex, TK5[t], wk);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (suslov_step_variational->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+            if (sus_step_variational->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double r = vso3_lambda(m, eps, wk, x) / lam;
             rv_lo = fmin(rv_lo, r);
@@ -257,18 +258,18 @@ static void small_statements(const suslov_model *m, const suslov_exact *ex)
         err[j] = 0.0;
         for (int t = 0; t < NTK5; t++) {
             double wk[2], we[2], x[3], lam;
-            suslov_step_stats ss;
-            suslov_exact_omega(ex, TK5[t], wk);
-            suslov_exact_omega(ex, TK5[t] + eps[j], we);
+            sus_stepper_stats ss;
+            sus_exact_omega(ex, TK5[t], wk);
+            sus_exact_omega(ex, TK5[t] + eps[j], we);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (suslov_step_variational->apply(m, eps[j], w, x, &lam, &ss) != SUSLOV_STEP_OK)
+            if (sus_step_variational->apply(m, eps[j], w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("variational step");
-            const double full = lam + (suslov_c(m, x) - suslov_c(m, wk)) / eps[j];
-            err[j] = fmax(err[j], fabs(full - suslov_lagmult(m, we)));
+            const double full = lam + (sus_c(m, x) - sus_c(m, wk)) / eps[j];
+            err[j] = fmax(err[j], fabs(full - sus_lagmult(m, we)));
         }
     }
-    suslov_order_fit f;
-    if (suslov_fit_order(eps, err, NJ5, SUSLOV_FIT_EPS_MAX, FLOOR_LAMBDA, &f) != 0)
+    sus_exp_order_fit f;
+    if (sus_exp_fit_order(eps, err, NJ5, SUS_EXP_FIT_EPS_MAX, FLOOR_LAMBDA, &f) != 0)
         f.slope = NAN;
     ledger_add("cayinver-corrected-s", "(cayinver) (3,3) = 1 against Fig. 1's midpoint (extension)",
                "s of (taualg) + (c(w^{k+1}) - c(w^k))/eps (the corrected entry) against lambda(t_k+eps): "
@@ -277,10 +278,10 @@ static void small_statements(const suslov_model *m, const suslov_exact *ex)
                f.slope - 1.0, 0.0, 0.1, LEDGER_EXTENSION);
 }
 
-void remark55_claims(const suslov_model *m, const suslov_exact *ex)
+void remark55_claims(const sus_model *m, const sus_exact *ex)
 {
-    const suslov_stepper_type *methods[] = {suslov_step_euler, suslov_step_midpoint, suslov_step_rk4,
-                                            suslov_step_variational};
+    const sus_stepper_type *methods[] = {sus_step_euler, sus_step_midpoint, sus_step_rk4,
+                                            sus_step_variational};
     for (int i = 0; i < 4; i++)
         method_claims(m, ex, methods[i]);
     small_statements(m, ex);

@@ -7,6 +7,6 @@
 #include "exact.h"
 #include "model.h"
 
-void remark55_claims(const suslov_model *m, const suslov_exact *ex);
+void remark55_claims(const sus_model *m, const sus_exact *ex);
 
 #endif

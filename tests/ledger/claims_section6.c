@@ -8,6 +8,7 @@
  *   (Per11)   the same on SO(3) x R^2 with the geodesic blend of attitudes: the perturbation has
  *            the order min(r, p) of TeoL, r = 1 for cayley and 2 for the symmetric ones. */
 #include "claims_section6.h"
+#include "dsp.h"
 
 #include "claims_fit.h"
 #include "expected_orders.h"
@@ -31,19 +32,19 @@ static const double TK6[] = {0.0, 3.0, 7.0};
 #define NTK6 3
 
 /* the round-off floors, with their reasons (perturbation.h) */
-#define FLOOR_G SUSLOV_PERTURB_FLOOR_G
-#define FLOOR_ATT SUSLOV_PERTURB_FLOOR_ATT
-#define ATT_TOL SUSLOV_PERTURB_ATT_TOL
+#define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
+#define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
+#define ATT_TOL SUS_EXP_PERTURB_ATT_TOL
 
 static double norm2(const double a[2], const double b[2]) { return hypot(a[0] - b[0], a[1] - b[1]); }
 
 /* the method's own w-step */
-static void step(const suslov_model *m, const suslov_stepper_type *st, double eps, const double x0[2],
+static void step(const sus_model *m, const sus_stepper_type *st, double eps, const double x0[2],
                  double x1[2])
 {
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
-    suslov_step_stats s;
-    if (st->apply(m, eps, w, wn, &lam, &s) != SUSLOV_STEP_OK)
+    sus_stepper_stats s;
+    if (st->apply(m, eps, w, wn, &lam, &s) != SUS_STEPPER_OK)
         ledger_die("a step in section 6");
     x1[0] = wn[0];
     x1[1] = wn[1];
@@ -58,11 +59,11 @@ typedef struct {
 
 /* (Eq2) and (PerFin2) from one start x0 at eps[j]: the multiplier shift, the constraint, and
  * (at eps = 1, 1/4, 1/16) the period map against the step. */
-static void reduced_start(const suslov_model *m, const suslov_stepper_type *st, suslov_perturb *P, int j,
+static void reduced_start(const sus_model *m, const sus_stepper_type *st, sus_exp_perturb *P, int j,
                           const double x0[2], reduced_data *d)
 {
     double xi[3], mx3, mdl, x1[2];
-    if (suslov_perturb_perfin2(P, x0, ODE_TOL, xi, &mx3, &mdl) != SUSLOV_PERTURB_OK)
+    if (sus_exp_perturb_perfin2(P, x0, ODE_TOL, xi, &mx3, &mdl) != SUS_EXP_PERTURB_OK)
         ledger_die("(PerFin2) period map");
     d->dlam[j] = fmax(d->dlam[j], mdl);
     d->xi3 = fmax(d->xi3, mx3);
@@ -71,39 +72,39 @@ static void reduced_start(const suslov_model *m, const suslov_stepper_type *st, 
     if (j % 2 == 0 || j > 5)
         return;
     double xe[2], F[2];
-    suslov_exact e0;
-    if (suslov_perturb_period_map(P, x0, ODE_TOL, xe) != SUSLOV_PERTURB_OK)
+    sus_exact e0;
+    if (sus_exp_perturb_period_map(P, x0, ODE_TOL, xe) != SUS_EXP_PERTURB_OK)
         ledger_die("(Eq2) period map");
-    d->its += P->newton_its;
+    d->its += P->sus_exp_newton_its;
     d->evals += P->field_evals;
     d->emb = fmax(d->emb, norm2(xe, x1));
-    suslov_exact_init(&e0, m, x0);
-    suslov_exact_omega(&e0, d->eps[j], F);
+    sus_exact_init(&e0, m, x0);
+    sus_exact_omega(&e0, d->eps[j], F);
     d->emb_local = fmin(d->emb_local, norm2(F, x1));
 }
 
-static void reduced_runs(const suslov_model *m, const suslov_exact *ex, const suslov_stepper_type *st,
+static void reduced_runs(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
                          reduced_data *d)
 {
     *d = (reduced_data){.emb_local = INFINITY};
     for (int j = 0; j < NJ6; j++) {
         d->eps[j] = ldexp(1.0, 1 - j);
-        suslov_perturb P;
-        if (suslov_perturb_init(&P, m, st, d->eps[j]) != 0)
+        sus_exp_perturb P;
+        if (sus_exp_perturb_init(&P, m, st, d->eps[j]) != 0)
             ledger_die("perturbation init");
         for (int t = 0; t < NTK6; t++) {
             double x0[2], s;
-            suslov_exact_omega(ex, TK6[t], x0);
-            if (suslov_perturb_sup_reduced(&P, x0, 2 * NSAMP, &s) != SUSLOV_PERTURB_OK)
+            sus_exact_omega(ex, TK6[t], x0);
+            if (sus_exp_perturb_sup_reduced(&P, x0, 2 * NSAMP, &s) != SUS_EXP_PERTURB_OK)
                 ledger_die("perturbation size");
             d->sup_g[j] = fmax(d->sup_g[j], s);
             /* what theory puts a lower estimate on: the perturbation moves the flow by the local
              * error over one period, so sup |eps^p d| >~ |phi(eps, x0) - F(eps, x0)| / eps */
             double xs[2], Fx[2];
-            suslov_exact e1;
+            sus_exact e1;
             step(m, st, d->eps[j], x0, xs);
-            suslov_exact_init(&e1, m, x0);
-            suslov_exact_omega(&e1, d->eps[j], Fx);
+            sus_exact_init(&e1, m, x0);
+            sus_exact_omega(&e1, d->eps[j], Fx);
             d->loc[j] = fmax(d->loc[j], norm2(xs, Fx) / d->eps[j]);
             if (j <= 9) /* (PerFin2) integrated: eps = 2 .. 2^-8 */
                 reduced_start(m, st, &P, j, x0, d);
@@ -114,9 +115,9 @@ static void reduced_runs(const suslov_model *m, const suslov_exact *ex, const su
 /* Orders without a line (nothing above round-off to test): counted for the companion. */
 static int unmeasured;
 
-static void reduced_lines(const suslov_method *me, const expected_order *eo, const reduced_data *d)
+static void reduced_lines(const sus_step_method *me, const expected_order *eo, const reduced_data *d)
 {
-    const suslov_stepper_type *st = me->type;
+    const sus_stepper_type *st = me->type;
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
     const char *ext = me->paper_ref ? "" : " (extension: our method)";
     char id[96], q[400], ref[96];
@@ -153,11 +154,11 @@ static void reduced_lines(const suslov_method *me, const expected_order *eo, con
     /* the multiplier moves by grad lambda . (eps^p d): |grad lambda| ~ 2 |lambda| / |w| */
     double lneed[NJ6];
     for (int j = 0; j < NJ6; j++)
-        lneed[j] = d->loc[j] * 2.0 * SUSLOV_SIZE_LAMBDA / SUSLOV_SIZE_W;
+        lneed[j] = d->loc[j] * 2.0 * SUS_EXP_SIZE_LAMBDA / SUS_EXP_SIZE_W;
     snprintf(ref, sizeof ref, "%s%s", "PerTh (appendix)", ext);
     unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0, eo->p,
                                          truth);
-    if (st == suslov_step_midpoint) {
+    if (st == sus_step_midpoint) {
         ledger_number("SecSixEmbedMid", d->emb);
         ledger_number("SecSixDlamMid", d->dlam[5]);
     }
@@ -165,53 +166,53 @@ static void reduced_lines(const suslov_method *me, const expected_order *eo, con
 
 /* Per11: every reconstruction; the attitude perturbation alone has the reconstruction's
  * order r (1 for cay(eps w_k), TeoL; 2 for the symmetric ones), the whole one min(r, p). */
-static void per11_lines(const suslov_model *m, const suslov_exact *ex, const suslov_method *me,
+static void per11_lines(const sus_model *m, const sus_exact *ex, const sus_step_method *me,
                         const expected_order *eo, const reduced_data *d)
 {
-    const suslov_stepper_type *st = me->type;
+    const sus_stepper_type *st = me->type;
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
     char id[96], q[400], ref[96];
     snprintf(ref, sizeof ref, "Per11%s", me->paper_ref ? "" : " (extension: our method)");
-    for (int r = 0; r < SUSLOV_RECON_COUNT; r++) {
+    for (int r = 0; r < SUS_RECON_COUNT; r++) {
         double att[NJ_SO3] = {0}, all[NJ_SO3] = {0};
         for (int j = 0; j < NJ_SO3; j++) {
-            suslov_perturb P;
-            if (suslov_perturb_init(&P, m, st, d->eps[j]) != 0)
+            sus_exp_perturb P;
+            if (sus_exp_perturb_init(&P, m, st, d->eps[j]) != 0)
                 ledger_die("perturbation init");
             for (int t = 0; t < NTK6 - 1; t++) {
                 double x0[2], a, g;
-                suslov_exact_omega(ex, TK6[t], x0);
-                const suslov_recon rk = (suslov_recon)r;
-                if (suslov_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) != SUSLOV_PERTURB_OK)
+                sus_exact_omega(ex, TK6[t], x0);
+                const sus_recon rk = (sus_recon)r;
+                if (sus_exp_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) != SUS_EXP_PERTURB_OK)
                     ledger_die("(Per11) attitude blend");
                 att[j] = fmax(att[j], a);
                 all[j] = fmax(all[j], fmax(a, g));
             }
         }
-        snprintf(id, sizeof id, "sec6-per11-%s-%s", SUSLOV_RECON_NAMES[r], st->name);
+        snprintf(id, sizeof id, "sec6-per11-%s-%s", SUS_RECON_NAMES[r], st->name);
         snprintf(q, sizeof q, "order of sup max(|vee(R^T R') - w|, |eps^p d|), geodesic blend on SO(3) x "
-                 "R^2, %s, %s; attitude part %.2g at eps = 1/4", st->name, SUSLOV_RECON_NAMES[r], att[3]);
+                 "R^2, %s, %s; attitude part %.2g at eps = 1/4", st->name, SUS_RECON_NAMES[r], att[3]);
         const double floor = fmax(FLOOR_G, FLOOR_ATT);
         unmeasured += !claims_order_or_floor(id, ref, q, d->eps, all, d->loc, NJ_SO3, floor, 1, 0.0,
                                              eo->so3[r], truth);
-        if (st != suslov_step_midpoint)
+        if (st != sus_step_midpoint)
             continue;
         /* the attitude part alone: r = 1 for cayley (TeoL's first-order retraction), 2 for the
          * symmetric reconstructions (the midpoint rule for R' = R w^) */
-        const double rexp = r == SUSLOV_RECON_CAYLEY ? 1.0 : 2.0;
-        snprintf(id, sizeof id, "sec6-per11-attitude-%s", SUSLOV_RECON_NAMES[r]);
+        const double rexp = r == SUS_RECON_CAYLEY ? 1.0 : 2.0;
+        snprintf(id, sizeof id, "sec6-per11-attitude-%s", SUS_RECON_NAMES[r]);
         snprintf(q, sizeof q, "order of sup |vee(R^T R') - w| alone (SO(3) part of (PerFin1)), midpoint, %s",
-                 SUSLOV_RECON_NAMES[r]);
+                 SUS_RECON_NAMES[r]);
         claims_order_or_floor(id, "Per11, TeoL", q, d->eps, att, NULL, NJ_SO3, FLOOR_ATT, 1, 0.0, rexp,
                               LEDGER_REPRODUCED);
     }
 }
 
-void section6_claims(const suslov_model *m, const suslov_exact *ex)
+void section6_claims(const sus_model *m, const sus_exact *ex)
 {
     unmeasured = 0;
-    for (int i = 0; i < suslov_method_count(); i++) {
-        const suslov_method *me = suslov_method_get(i);
+    for (int i = 0; i < sus_step_method_count(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo)
             ledger_die("expected order (tests/ledger/expected_orders.c has no line for a registry method)");

@@ -2,6 +2,7 @@
  * limit of each method at the attracting steady rotation against the one derived from
  * psi' = k cos psi, and where the implicit steps stop being solvable. */
 #include "claims_stability.h"
+#include "dsp.h"
 
 #include "expected_orders.h"
 #include "ledger.h"
@@ -28,10 +29,10 @@ static double truncexp(int p, double z)
     return r;
 }
 
-static double theory_limit(const suslov_method *me)
+static double theory_limit(const sus_step_method *me)
 {
     const expected_order *eo = expected_order_of(me->type->name);
-    const int rk = me->type == suslov_step_euler || me->type == suslov_step_rk4;
+    const int rk = me->type == sus_step_euler || me->type == sus_step_rk4;
     if (!eo || !(rk || me->type->apply_order)) /* apply_order: a series method, any order p */
         return NAN;
     double lo = 0.5, hi = lo;
@@ -48,20 +49,20 @@ static double theory_limit(const suslov_method *me)
 }
 
 /* The linear stability boundary of every method with a stability function, against bisection. */
-static void boundary_claims(const suslov_exact *paper)
+static void boundary_claims(const sus_exact *paper)
 {
     char id[64], q[256];
-    for (int m = 0; m < suslov_method_count(); m++) {
-        const suslov_method *me = suslov_method_get(m);
-        const suslov_stepper_type *st = me->type;
+    for (int m = 0; m < sus_step_method_count(); m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        const sus_stepper_type *st = me->type;
         /* Compositions (issue 11) have no single linear limit: prod (1 + g_i z/2)/(1 - g_i z/2) is
          * unstable only in narrow bands around the poles z = 2/g_i of the negative weights, so
          * the bisection below and a first crossing measure different things; no claim is made
          * (the map in figures/stability shows where they work). */
         if (!me->type->stability && me->type->substeps > 1)
             continue;
-        const double predicted = suslov_linear_limit(me, H_MAX), theory = theory_limit(me);
-        const double measured = suslov_stability_limit(paper, st, 0.1, H_MAX);
+        const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
+        const double measured = sus_exp_stability_limit(paper, st, 0.1, H_MAX);
         snprintf(id, sizeof id, "stability-boundary-%s", st->name);
         if (isfinite(predicted)) {
             /* The bisection stops at 1e-4 relative and 4000 steps resolve |R(-h)| - 1 to ~1e-4; the
@@ -99,7 +100,7 @@ static void boundary_claims(const suslov_exact *paper)
 }
 
 /* Where the implicit steps stop being solvable. */
-static void solvable_claims(const suslov_exact *paper)
+static void solvable_claims(const sus_exact *paper)
 {
     char id[64], q[256];
     /* The implicit steps stop being solvable far beyond the paper's eps = 1 (h = 0.145): the
@@ -111,15 +112,15 @@ static void solvable_claims(const suslov_exact *paper)
     double hs[NHS];
     for (int i = 0; i < NHS; i++)
         hs[i] = pow(10.0, -2.0 + 0.2 * i);
-    for (int m = 0; m < suslov_method_count(); m++) {
-        const suslov_method *me = suslov_method_get(m);
+    for (int m = 0; m < sus_step_method_count(); m++) {
+        const sus_step_method *me = sus_step_method_get(m);
         if (!me->type->implicit)
             continue;
-        stab_result res[NHS * NA];
-        suslov_stability_map(paper, me->type, hs, NHS, NA, res);
+        sus_exp_stab_result res[NHS * NA];
+        sus_exp_stability_map(paper, me->type, hs, NHS, NA, res);
         double first = INFINITY;
         for (int i = 0; i < NHS * NA; i++)
-            if (res[i].cls == STAB_SOLVER || res[i].cls == STAB_REGULARITY)
+            if (res[i].cls == SUS_EXP_STAB_SOLVER || res[i].cls == SUS_EXP_STAB_REGULARITY)
                 first = fmin(first, hs[i / NA]);
         /* Asserted: the first failure is not below h = 1, i.e. 7x the paper's step; and it exists
          * inside the grid (finite, <= H_MAX), else NaN fails the line: a step whose solver failures
@@ -134,8 +135,8 @@ static void solvable_claims(const suslov_exact *paper)
          * rule good up to h ~ 3 for every start (Newton from the explicit predictor then lands on
          * another root), the variational step losing its branch from h ~ 150. The grid resolves 0.2
          * decades: the first failure must lie within a quarter decade of the stated value. */
-        const double stated = me->type == suslov_step_midpoint      ? 3.0
-                              : me->type == suslov_step_variational ? 150.0
+        const double stated = me->type == sus_step_midpoint      ? 3.0
+                              : me->type == sus_step_variational ? 150.0
                                                                     : NAN;
         if (isfinite(stated)) {
             snprintf(id, sizeof id, "stability-solvable-where-%s", me->type->name);
@@ -148,7 +149,7 @@ static void solvable_claims(const suslov_exact *paper)
     }
 }
 
-void stability_claims(const suslov_exact *paper)
+void stability_claims(const sus_exact *paper)
 {
     boundary_claims(paper);
     solvable_claims(paper);

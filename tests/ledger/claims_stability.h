@@ -4,6 +4,6 @@
 
 #include "exact.h"
 
-void stability_claims(const suslov_exact *paper);
+void stability_claims(const sus_exact *paper);
 
 #endif

@@ -7,7 +7,7 @@
  * gives min(1, p); the symmetric reconstructions are second order (the midpoint rule for
  * R' = R w^ on the group), so min(2, p). */
 #define SO3(cayley, cayley_mid, exp_mid) \
-    {[SUSLOV_RECON_CAYLEY] = cayley, [SUSLOV_RECON_CAYLEY_MID] = cayley_mid, [SUSLOV_RECON_EXP_MID] = exp_mid}
+    {[SUS_RECON_CAYLEY] = cayley, [SUS_RECON_CAYLEY_MID] = cayley_mid, [SUS_RECON_EXP_MID] = exp_mid}
 
 static const expected_order TABLE[] = {
     /* The general-DSP proposition: explicit Euler is (1, 1), RK4 is (4, 4); the midpoint DSP is

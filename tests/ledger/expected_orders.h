@@ -10,7 +10,7 @@ typedef struct {
     const char *method;
     int p;                       /* local w error O(eps^{p+1}) */
     int s;                       /* multiplier order; -1 where the paper proves it inconsistent */
-    int so3[SUSLOV_RECON_COUNT]; /* order on SO(3) (TeoL: min(r, p)) with each reconstruction */
+    int so3[SUS_RECON_COUNT]; /* order on SO(3) (TeoL: min(r, p)) with each reconstruction */
     const char *ref;             /* where p and s are stated */
 } expected_order;
 

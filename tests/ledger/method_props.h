@@ -18,6 +18,6 @@ typedef struct {
     int series;                /* a truncated Taylor series (its control: the series one degree short) */
 } method_props;
 
-method_props method_props_of(const suslov_method *me);
+method_props method_props_of(const sus_step_method *me);
 
 #endif

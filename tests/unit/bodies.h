@@ -90,9 +90,9 @@ static inline void body_get(int k, body *b)
 {
     if (k == 0) {
         for (int i = 0; i < 9; i++)
-            b->I[i] = SUSLOV_PAPER_INERTIA[i];
-        b->w0[0] = SUSLOV_PAPER_OMEGA0[0];
-        b->w0[1] = SUSLOV_PAPER_OMEGA0[1];
+            b->I[i] = SUS_PAPER_INERTIA[i];
+        b->w0[0] = SUS_PAPER_OMEGA0[0];
+        b->w0[1] = SUS_PAPER_OMEGA0[1];
         snprintf(b->name, sizeof b->name, "paper");
         return;
     }

@@ -17,7 +17,7 @@ typedef struct {
     double R[3][3];
 } keep_ctx;
 
-static int keep(void *vctx, const suslov_row *r)
+static int keep(void *vctx, const sus_row *r)
 {
     keep_ctx *c = vctx;
     c->rows++;
@@ -26,7 +26,7 @@ static int keep(void *vctx, const suslov_row *r)
     return 0;
 }
 
-static int stop_at_first(void *vctx, const suslov_row *r)
+static int stop_at_first(void *vctx, const sus_row *r)
 {
     (void)r;
     ((keep_ctx *)vctx)->rows++;
@@ -36,13 +36,13 @@ static int stop_at_first(void *vctx, const suslov_row *r)
 /* The closed-form tail against the reference, and an equilibrium, on one body. */
 static void tail_vs_reference(const body *b)
 {
-    suslov_model m;
+    sus_model m;
     char err[256];
-    suslov_model_init(&m, b->I, err, sizeof err);
-    suslov_exact ex;
-    suslov_exact_init(&ex, &m, b->w0);
+    sus_model_init(&m, b->I, err, sizeof err);
+    sus_exact ex;
+    sus_exact_init(&ex, &m, b->w0);
     double wstar[2];
-    suslov_exact_limit(&ex, wstar);
+    sus_exact_limit(&ex, wstar);
     const double wn = hypot(wstar[0], wstar[1]);
 
     /* Beyond t_s (~272 for the paper's body) rows come from the closed form. Both it and the
@@ -51,31 +51,31 @@ static void tail_vs_reference(const body *b)
     const double Ts[] = {300.0, 1000.0, 3000.0};
     for (int i = 0; i < 3; i++) {
         const double T = Ts[i];
-        const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, T / 4.0, 4, 1};
+        const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, T / 4.0, 4, 1};
         keep_ctx c = {0, -1, {{0}}};
-        suslov_run_report rep;
-        const int rc = suslov_run_exact(&cfg, b->w0, keep, &c, &rep);
+        sus_run_report rep;
+        const int rc = sus_run_exact(&cfg, b->w0, keep, &c, &rep);
         double I3[3][3], R[3][3];
-        mat3_identity(I3);
-        suslov_refatt ra;
-        suslov_refatt_init(&ra, &ex, 0.0, I3);
-        suslov_refatt_advance(&ra, T, R);
-        const double d = mat3_dist(c.R, R), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * T);
-        CHECK(rc == SUSLOV_RUN_OK && c.rows == 5 && c.last_k == 4 && d <= bound,
+        sus_mat3_identity(I3);
+        sus_refatt ra;
+        sus_refatt_init(&ra, &ex, 0.0, I3);
+        sus_refatt_advance(&ra, T, R);
+        const double d = sus_mat3_dist(c.R, R), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * T);
+        CHECK(rc == SUS_RUN_OK && c.rows == 5 && c.last_k == 4 && d <= bound,
               "%s: exact run to T = %g: rows 0..4, closed-form R(T) within %.2e of the reference integrated "
               "all the way (bound 4u(1 + |w*|T) = %.2e)", b->name, T, d, bound);
     }
 
     /* An equilibrium (w0 on the steady rotation) rotates uniformly from t = 0: R(t) = exp(t w0^). */
-    const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, 12.5, 1, 1};
+    const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 12.5, 1, 1};
     keep_ctx c = {0, -1, {{0}}};
-    suslov_run_report rep;
-    const int rc = suslov_run_exact(&cfg, wstar, keep, &c, &rep);
+    sus_run_report rep;
+    const int rc = sus_run_exact(&cfg, wstar, keep, &c, &rep);
     const double xi[3] = {12.5 * wstar[0], 12.5 * wstar[1], 0.0};
     double E[3][3];
-    so3_exp(xi, E);
-    const double d = mat3_dist(c.R, E), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * 12.5);
-    CHECK(rc == SUSLOV_RUN_OK && d <= bound,
+    sus_so3_exp(xi, E);
+    const double d = sus_mat3_dist(c.R, E), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * 12.5);
+    CHECK(rc == SUS_RUN_OK && d <= bound,
           "%s: equilibrium w0 = w*: R(12.5) = exp(12.5 w*^) to %.1e (bound 4u(1 + |w*|T) = %.1e)", b->name, d,
           bound);
 }
@@ -87,29 +87,29 @@ int main(void)
         body_get(k, &b);
         tail_vs_reference(&b);
     }
-    suslov_model m;
+    sus_model m;
     char err[256];
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
+    sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err);
 
     /* Steps near 2^63: no k + K overflow, rows 0, K, 2K, 3K and N. */
     {
-        const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, 1e-3, 9223372036854775807L,
+        const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 1e-3, 9223372036854775807L,
                                        3074457345618258602L};
         keep_ctx c = {0, -1, {{0}}};
-        suslov_run_report rep;
-        const int rc = suslov_run_exact(&cfg, SUSLOV_PAPER_OMEGA0, keep, &c, &rep);
-        CHECK(rc == SUSLOV_RUN_OK && c.rows == 5 && c.last_k == 9223372036854775807L,
+        sus_run_report rep;
+        const int rc = sus_run_exact(&cfg, SUS_PAPER_OMEGA0, keep, &c, &rep);
+        CHECK(rc == SUS_RUN_OK && c.rows == 5 && c.last_k == 9223372036854775807L,
               "N = 2^63-1, K = N/3: %ld rows, last k = %ld (no overflow, no wrap)", c.rows, c.last_k);
     }
 
-    /* The error convention: emit asking to stop is SUSLOV_RUN_STOPPED, after the first row. */
+    /* The error convention: emit asking to stop is SUS_RUN_STOPPED, after the first row. */
     {
-        const suslov_run_config cfg = {&m, NULL, SUSLOV_RECON_CAYLEY, 0.1, 10, 1};
+        const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 0.1, 10, 1};
         keep_ctx c = {0, -1, {{0}}};
-        suslov_run_report rep;
-        const int rc = suslov_run_exact(&cfg, SUSLOV_PAPER_OMEGA0, stop_at_first, &c, &rep);
-        CHECK(rc == SUSLOV_RUN_STOPPED && c.rows == 1 && SUSLOV_RUN_STOPPED < 0 && SUSLOV_RUN_OK == 0,
-              "emit asking to stop gives SUSLOV_RUN_STOPPED (%d), distinct from every failure", rc);
+        sus_run_report rep;
+        const int rc = sus_run_exact(&cfg, SUS_PAPER_OMEGA0, stop_at_first, &c, &rep);
+        CHECK(rc == SUS_RUN_STOPPED && c.rows == 1 && SUS_RUN_STOPPED < 0 && SUS_RUN_OK == 0,
+              "emit asking to stop gives SUS_RUN_STOPPED (%d), distinct from every failure", rc);
     }
     return check_summary("test_exact_run");
 }

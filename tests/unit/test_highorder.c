@@ -18,17 +18,17 @@
 #include <gsl/gsl_rng.h>
 #include <math.h>
 
-#define U SUSLOV_U
+#define U SUS_U
 
 static void tables(void)
 {
-    const suslov_composition *c[] = {&suslov_comp_suzuki4, &suslov_comp_kahan_li6, &suslov_comp_kahan_li8,
-                                     &suslov_comp_sofroniou10};
+    const sus_step_composition *c[] = {&sus_step_comp_suzuki4, &sus_step_comp_kahan_li6,
+                                       &sus_step_comp_kahan_li8, &sus_step_comp_sofroniou10};
     for (int k = 0; k < 4; k++) {
-        const int s = suslov_composition_stages(c[k]);
+        const int s = sus_step_composition_stages(c[k]);
         double sum = 0.0, cubes = 0.0, mag = 0.0;
         for (int i = 0; i < s; i++) {
-            const double g = suslov_composition_weight(c[k], i);
+            const double g = sus_step_composition_weight(c[k], i);
             sum += g;
             cubes += g * g * g;
             mag += fabs(g * g * g);
@@ -51,9 +51,9 @@ static void exponential(void)
         double x[3], D[3][3], W[3][3], W2[3][3], E[3][3];
         for (int i = 0; i < 3; i++)
             x[i] = scale * (2.0 * gsl_rng_uniform(r) - 1.0);
-        so3_exp_minus_identity(x, D);
-        so3_hat(x, W);
-        mat3_mul(W2, W, W);
+        sus_so3_exp_minus_identity(x, D);
+        sus_so3_hat(x, W);
+        sus_mat3_mul(W2, W, W);
         const double th2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
         if (th2 < 1e-8) { /* series to th^4, truncation th^6/120 below 1e-24 relative here */
             double S[3][3];
@@ -61,24 +61,24 @@ static void exponential(void)
                 for (int j = 0; j < 3; j++)
                     S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j]
                             + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
-            worst_small = fmax(worst_small, mat3_dist(D, S) / mat3_frobenius(S));
+            worst_small = fmax(worst_small, sus_mat3_dist(D, S) / sus_mat3_frobenius(S));
         }
-        so3_exp(x, E);
-        worst_orth = fmax(worst_orth, so3_orth_defect(E));
+        sus_so3_exp(x, E);
+        worst_orth = fmax(worst_orth, sus_so3_orth_defect(E));
         /* the quaternion form of exp-mid against the matrix form, from a random attitude */
         const double w0[3] = {x[0] / 0.3, x[1] / 0.3, x[2] / 0.3}, w1[3] = {x[1], x[2], x[0]};
-        suslov_attitude a;
-        suslov_attitude_identity(&a);
+        sus_attitude a;
+        sus_attitude_identity(&a);
         double R0[3][3], q[4], Ra[3][3], Rq[3][3];
-        so3_exp((const double[3]){0.3, -1.2, 2.0}, R0);
-        mat3_copy(a.hi, R0);
+        sus_so3_exp((const double[3]){0.3, -1.2, 2.0}, R0);
+        sus_mat3_copy(a.hi, R0);
         a.has_q = 0; /* R set by hand: the quaternion is not R's */
-        quat_from_rotation(R0, q);
-        suslov_reconstruct(SUSLOV_RECON_EXP_MID, 0.3, &a, w0, w1);
-        suslov_reconstruct_quat(SUSLOV_RECON_EXP_MID, 0.3, q, w0, w1);
-        suslov_attitude_get(&a, Ra);
-        quat_rotation(q, Rq);
-        worst_quat = fmax(worst_quat, mat3_dist(Ra, Rq));
+        sus_quat_from_rotation(R0, q);
+        sus_reconstruct(SUS_RECON_EXP_MID, 0.3, &a, w0, w1);
+        sus_reconstruct_quat(SUS_RECON_EXP_MID, 0.3, q, w0, w1);
+        sus_attitude_get(&a, Ra);
+        sus_quat_rotation(q, Rq);
+        worst_quat = fmax(worst_quat, sus_mat3_dist(Ra, Rq));
     }
     gsl_rng_free(r);
     /* a and b in half-angle form keep full relative accuracy: a few ulps */
@@ -101,10 +101,10 @@ static void quaternions(void)
             ang = 3.14159265358979 * gsl_rng_uniform(r);
         for (int i = 0; i < 3; i++)
             x[i] *= ang / n;
-        so3_exp(x, R);
-        quat_from_rotation(R, q);
-        quat_rotation(q, R2);
-        worst = fmax(worst, mat3_dist(R, R2));
+        sus_so3_exp(x, R);
+        sus_quat_from_rotation(R, q);
+        sus_quat_rotation(q, R2);
+        worst = fmax(worst, sus_mat3_dist(R, R2));
     }
     gsl_rng_free(r);
     CHECK(worst <= 20 * U, "R -> q -> R round trip over angles up to pi: %.2g (<= 20 u)", worst);
@@ -112,28 +112,29 @@ static void quaternions(void)
 
 /* The radius of convergence in t of the closed form at t = 0: w is analytic in s = s0 + sigma k t
  * except where sech s has its poles, s = +-i pi/2, so rho = |s0 + i pi/2| / k (exact.h). */
-static double radius(const suslov_exact *ex)
+static double radius(const sus_exact *ex)
 {
     return hypot(ex->s0, 0.5 * M_PI) / ex->k;
 }
 
 static void steps(const body *b)
 {
-    suslov_model m;
+    sus_model m;
     char err[128];
-    suslov_model_init(&m, b->I, err, sizeof err);
-    suslov_exact ex;
-    suslov_exact_init(&ex, &m, b->w0);
+    sus_model_init(&m, b->I, err, sizeof err);
+    sus_exact ex;
+    sus_exact_init(&ex, &m, b->w0);
     const double w0[3] = {ex.w0[0], ex.w0[1], 0.0}, rho = radius(&ex), wn = hypot(w0[0], w0[1]);
     double w1[3], lam, we[2];
-    suslov_step_stats st;
+    sus_stepper_stats st;
     /* one Taylor step of order p at h = rho / q: truncation ~ |w| (h / rho)^(p+1); the bound is ten
      * times that plus 8 u (a truncated series one degree short exceeds it by about q) */
-    const suslov_stepper_type *ty[3] = {&suslov_taylor8_type, &suslov_taylor10_type, &suslov_taylor12_type};
+    const sus_stepper_type *ty[3] = {&sus_step_taylor8_type, &sus_step_taylor10_type,
+                                     &sus_step_taylor12_type};
     for (int i = 0; i < 3; i++) {
         const double q = 30.0, h = rho / q;
         ty[i]->apply(&m, h, w0, w1, &lam, &st);
-        suslov_exact_omega(&ex, h, we);
+        sus_exact_omega(&ex, h, we);
         const double e = hypot(w1[0] - we[0], w1[1] - we[1]);
         const double bound = 10.0 * wn * pow(1.0 / q, ty[i]->order + 1) + 8 * U;
         CHECK(e <= bound && w1[2] == 0.0, "%s: %s, one step h = rho/30 = %.3g against the closed form: "
@@ -141,17 +142,18 @@ static void steps(const body *b)
               b->name, ty[i]->name, h, e, bound);
     }
     /* a composition step keeps E (midpoint substeps: a quadratic invariant) to a few u */
-    suslov_comp8_kl_type.apply(&m, 1.0, w0, w1, &lam, &st);
-    const double e0 = suslov_energy(&m, w0), e1 = suslov_energy(&m, w1);
+    sus_step_comp8_kl_type.apply(&m, 1.0, w0, w1, &lam, &st);
+    const double e0 = sus_energy(&m, w0), e1 = sus_energy(&m, w1);
     CHECK(fabs(e1 - e0) <= 17 * 4 * U * e0, "%s: comp8-kl, one step eps = 1 (17 substeps): |E1 - E0| = %.2g "
           "(<= 4 u E per substep)", b->name, fabs(e1 - e0));
     /* the reference against the independent long-double Magnus integration (Richardson) */
     double wr[2], Rr[3][3], Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    suslov_refatt_precise(&m, ex.w0, 50.0, wr, Rr);
-    suslov_magnus4(&ex, 0.0, 50.0, 4000, Rm);
-    CHECK(so3_dist(Rr, Rm) <= 1e-15, "%s: reference R(50) against Magnus-4 (long double, Richardson): %.2g "
-                                     "(<= 1e-15)",
-          b->name, so3_dist(Rr, Rm));
+    sus_refatt_precise(&m, ex.w0, 50.0, wr, Rr);
+    sus_magnus4(&ex, 0.0, 50.0, 4000, Rm);
+    CHECK(sus_so3_dist(Rr, Rm) <= 1e-15,
+          "%s: reference R(50) against Magnus-4 (long double, Richardson): %.2g "
+          "(<= 1e-15)",
+          b->name, sus_so3_dist(Rr, Rm));
 }
 
 int main(void)

@@ -9,6 +9,7 @@
 #include "quaternion.h"
 #include "registry.h"
 #include "so3.h"
+#include "dsp.h"
 
 #include <math.h>
 #include <string.h>
@@ -51,19 +52,19 @@ static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b));
 
 /* The model: (ContDyn), (LagMult), E = 1/2 <I_m w, w>, and Df, which is exact as a central
  * difference with any step because f is quadratic (h = 1/2: no rounding in w +- h). */
-static void model_checks(int b, const suslov_model *m, const double w[2])
+static void model_checks(int b, const sus_model *m, const double w[2])
 {
     const double *I = BODIES[b];
     double f[2], g[2], J[2][2], fp[2], fm[2];
-    suslov_contdyn(m, w, f);
+    sus_contdyn(m, w, f);
     contdyn_printed(I, w, g);
     CHECK(rel(f[0], g[0]) <= TOL && rel(f[1], g[1]) <= TOL, "body %d: (ContDyn) f = (%.17g, %.17g)", b, f[0],
           f[1]);
-    const double lam = suslov_lagmult(m, w), lp = lagmult_printed(I, w);
+    const double lam = sus_lagmult(m, w), lp = lagmult_printed(I, w);
     CHECK(rel(lam, lp) <= TOL, "body %d: (LagMult) %.17g against %.17g", b, lam, lp);
     const double e = 0.5 * (I[0] * w[0] * w[0] + (I[1] + I[3]) * w[0] * w[1] + I[4] * w[1] * w[1]);
-    CHECK(rel(suslov_energy(m, w), e) <= TOL, "body %d: E %.17g against %.17g", b, suslov_energy(m, w), e);
-    suslov_contdyn_jacobian(m, w, J);
+    CHECK(rel(sus_energy(m, w), e) <= TOL, "body %d: E %.17g against %.17g", b, sus_energy(m, w), e);
+    sus_contdyn_jacobian(m, w, J);
     for (int j = 0; j < 2; j++) {
         double wp[2] = {w[0], w[1]}, wm[2] = {w[0], w[1]};
         wp[j] += 0.5;
@@ -110,9 +111,9 @@ static void so3_checks(const double w[3])
 {
     const double W[3][3] = {{0, -w[2], w[1]}, {w[2], 0, -w[0]}, {-w[1], w[0], 0}};
     double H[3][3], R[3][3], L[3][3], P[3][3], Q[3][3], D[3][3], Di[3][3], E[3][3], v[3];
-    so3_hat(w, H);
+    sus_so3_hat(w, H);
     CHECK(max_diff(H, W) == 0.0, "(Isom) hat of (%.3g, %.3g, %.3g)", w[0], w[1], w[2]);
-    so3_cay(w, R);
+    sus_so3_cay(w, R);
     const double n2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     for (int i = 0; i < 9; i++) {
         L[i / 3][i % 3] = (i % 4 == 0) - 0.5 * W[i / 3][i % 3];
@@ -120,26 +121,26 @@ static void so3_checks(const double w[3])
     }
     mat_mul(L, R, Q);
     CHECK(max_diff(Q, P) <= TOL, "(caypart) (I - w^/2) cay(w) = I + w^/2: %.3g", max_diff(Q, P));
-    so3_cay_inv(R, v);
+    sus_so3_cay_inv(R, v);
     CHECK(fmax(fabs(v[0] - w[0]), fmax(fabs(v[1] - w[1]), fabs(v[2] - w[2]))) <= TOL, "cay^{-1}(cay(w)) = w");
-    so3_dcay(w, D);
-    so3_dcay_inv(w, Di);
+    sus_so3_dcay(w, D);
+    sus_so3_dcay_inv(w, Di);
     for (int i = 0; i < 9; i++) { /* dcay = (I + w^/2) / (1 + |w/2|^2), dcay^{-1} = I - w^/2 + w w^T / 4 */
         P[i / 3][i % 3] /= 1.0 + 0.25 * n2;
         L[i / 3][i % 3] += 0.25 * w[i / 3] * w[i % 3];
     }
     CHECK(max_diff(D, P) <= TOL && max_diff(Di, L) <= TOL, "dcay, dcay^{-1} as printed: %.3g, %.3g",
           max_diff(D, P), max_diff(Di, L));
-    so3_exp(w, R);
+    sus_so3_exp(w, R);
     exp_series(W, E);
     CHECK(max_diff(R, E) <= TOL, "exp(w^) against its series: %.3g", max_diff(R, E));
-    so3_exp_minus_identity(w, D);
+    sus_so3_exp_minus_identity(w, D);
     for (int i = 0; i < 3; i++)
         E[i][i] -= 1.0;
     CHECK(max_diff(D, E) <= TOL, "exp(w^) - I against its series: %.3g", max_diff(D, E));
 }
 
-/* R(q) of a unit quaternion (s, v): I + 2 s v^ + 2 v^ v^; and back with quat_from_rotation. */
+/* R(q) of a unit quaternion (s, v): I + 2 s v^ + 2 v^ v^; and back with sus_quat_from_rotation. */
 static void quaternion_checks(const double q_in[4])
 {
     const double nq = sqrt(q_in[0] * q_in[0] + q_in[1] * q_in[1] + q_in[2] * q_in[2] + q_in[3] * q_in[3]);
@@ -150,9 +151,9 @@ static void quaternion_checks(const double q_in[4])
     mat_mul(V, V, V2);
     for (int i = 0; i < 9; i++)
         Rq[i / 3][i % 3] = (i % 4 == 0) + 2.0 * q[0] * V[i / 3][i % 3] + 2.0 * V2[i / 3][i % 3];
-    quat_rotation(q_in, R);
+    sus_quat_rotation(q_in, R);
     CHECK(max_diff(R, Rq) <= TOL, "R(q) of q/|q|: %.3g", max_diff(R, Rq));
-    quat_from_rotation(R, back);
+    sus_quat_from_rotation(R, back);
     double d = 0.0;
     for (int i = 0; i < 4; i++)
         d = fmax(d, fabs(back[i] - q[i]));
@@ -164,10 +165,10 @@ static void paper_data_checks(void)
 {
     const double printed[9] = {1, 0.1, 0.2, 0.1, 1, 0.2, 0.2, 0.1, 1};
     for (int i = 0; i < 9; i++)
-        CHECK(SUSLOV_PAPER_INERTIA[i] == printed[i], "the paper's I, entry %d: %.17g", i + 1,
-              SUSLOV_PAPER_INERTIA[i]);
-    CHECK(SUSLOV_PAPER_OMEGA0[0] == 0.4 && SUSLOV_PAPER_OMEGA0[1] == 0.5, "the paper's w(0) = (%.17g, %.17g)",
-          SUSLOV_PAPER_OMEGA0[0], SUSLOV_PAPER_OMEGA0[1]);
+        CHECK(SUS_PAPER_INERTIA[i] == printed[i], "the paper's I, entry %d: %.17g", i + 1,
+              SUS_PAPER_INERTIA[i]);
+    CHECK(SUS_PAPER_OMEGA0[0] == 0.4 && SUS_PAPER_OMEGA0[1] == 0.5, "the paper's w(0) = (%.17g, %.17g)",
+          SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
 }
 
 /* Every entry that is not finite is refused and named (as the CLI's --inertia reports it). */
@@ -181,8 +182,8 @@ static void model_init_checks(void)
             for (int j = 0; j < 9; j++)
                 I[j] = BODIES[1][j];
             I[i] = bad[k];
-            suslov_model m;
-            const int rc = suslov_model_init(&m, I, err, sizeof err);
+            sus_model m;
+            const int rc = sus_model_init(&m, I, err, sizeof err);
             snprintf(want, sizeof want, "entry %d is not finite", i + 1);
             CHECK(rc == -1 && strstr(err, want), "entry %d = %g refused: \"%s\"", i + 1, bad[k], err);
         }
@@ -201,9 +202,9 @@ static void symmetry_bound_checks(void)
         double I[9] = {1.3, i12[b], 0.0, i12[b], 0.7, 0.0, 0.2, -0.1, 1.0};
         const double S = 1.3 + 2.0 * fabs(i12[b]) + 0.7;
         I[3] = I[1] + 4.0 * u * S * (above ? 1.0 + margin[b] : 1.0 - margin[b]);
-        suslov_model m;
+        sus_model m;
         char err[128] = "";
-        const int rc = suslov_model_init(&m, I, err, sizeof err);
+        const int rc = sus_model_init(&m, I, err, sizeof err);
         char names[96]; /* a refusal names both entries */
         snprintf(names, sizeof names, "I12 = %.17g but I21 = %.17g", I[1], I[3]);
         CHECK(rc == (above ? -1 : 0) && (!above || strstr(err, names)),
@@ -217,7 +218,7 @@ static void symmetry_bound_checks(void)
  * the equation as written: the midpoint DSP's I_m (x - w) - eps l(mid) and (taudyn)'s
  * I_m (x - w) + eps/2 (x c(x) + w c(w))^perp + eps^2/4 (x s(x) - w s(w)), s(v) = <v, I_m v>. The
  * states run over two decades of |w|, where a yardstick scaled wrongly by |x| shows. */
-static double terms_scale(const suslov_model *m, const suslov_stepper_type *st, double eps, const double w[2],
+static double terms_scale(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
                           const double x[2])
 {
     double sI = 0.0;
@@ -225,8 +226,8 @@ static double terms_scale(const suslov_model *m, const suslov_stepper_type *st, 
         for (int j = 0; j < 2; j++)
             sI += fabs(m->I[i][j]);
     const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
-    if (st == suslov_step_midpoint) {
-        const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])}, c = suslov_c(m, mid);
+    if (st == sus_step_midpoint) {
+        const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])}, c = sus_c(m, mid);
         return sI * sx + eps * (fabs(mid[1] * c) + fabs(mid[0] * c));
     }
     double sv[2];
@@ -237,15 +238,15 @@ static double terms_scale(const suslov_model *m, const suslov_stepper_type *st, 
             for (int j = 0; j < 2; j++)
                 sv[k] += v[i] * m->I[i][j] * v[j];
     }
-    const double cx = suslov_c(m, x), cw = suslov_c(m, w);
+    const double cx = sus_c(m, x), cw = sus_c(m, w);
     return sI * sx + 0.5 * eps * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
            0.25 * eps * eps *
                (fabs(x[0] * sv[0]) + fabs(w[0] * sv[1]) + fabs(x[1] * sv[0]) + fabs(w[1] * sv[1]));
 }
 
-static void scale_checks(int b, const suslov_model *m)
+static void scale_checks(int b, const sus_model *m)
 {
-    const suslov_stepper_type *const st[2] = {suslov_step_midpoint, suslov_step_variational};
+    const sus_stepper_type *const st[2] = {sus_step_midpoint, sus_step_variational};
     for (int k = 0; k < 2; k++) {
         double worst = 0.0;
         for (int n = 0; n < 12; n++) {
@@ -268,9 +269,9 @@ int main(void)
     model_init_checks();
     symmetry_bound_checks();
     for (int b = 0; b < 4; b++) {
-        suslov_model m;
+        sus_model m;
         char err[128];
-        if (suslov_model_init(&m, BODIES[b], err, sizeof err) != 0) {
+        if (sus_model_init(&m, BODIES[b], err, sizeof err) != 0) {
             CHECK(0, "body %d: %s", b, err);
             continue;
         }

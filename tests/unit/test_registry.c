@@ -17,15 +17,15 @@ static const double BODY[9] = {1.3, 0.17, 0.31, 0.17, 0.8, -0.23, 0.29, -0.12, 1
 static const double W0[3] = {0.45, -0.3, 0.0};
 
 /* max |E - E0| over n steps of eps from W0, or NAN when a step fails. */
-static double energy_drift(const suslov_model *m, const suslov_stepper_type *st, double eps, int n)
+static double energy_drift(const sus_model *m, const sus_stepper_type *st, double eps, int n)
 {
     double w[3] = {W0[0], W0[1], 0.0}, x[3], lam, drift = 0.0;
-    const double e0 = suslov_energy(m, w);
+    const double e0 = sus_energy(m, w);
     for (int k = 0; k < n; k++) {
-        suslov_step_stats ss;
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+        sus_stepper_stats ss;
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             return NAN;
-        drift = fmax(drift, fabs(suslov_energy(m, x) - e0));
+        drift = fmax(drift, fabs(sus_energy(m, x) - e0));
         w[0] = x[0];
         w[1] = x[1];
     }
@@ -33,17 +33,17 @@ static double energy_drift(const suslov_model *m, const suslov_stepper_type *st,
 }
 
 /* max |R_a - R_b| over the entries after one whole step with two different reconstructions. */
-static double recon_effect(const suslov_model *m, const suslov_stepper_type *st, double eps)
+static double recon_effect(const sus_model *m, const sus_stepper_type *st, double eps)
 {
     double x[3], lam, Ra[3][3], Rb[3][3];
-    suslov_attitude a, b;
-    suslov_step_stats ss;
-    suslov_attitude_identity(&a);
-    suslov_attitude_identity(&b);
-    suslov_step_full(st, m, eps, SUSLOV_RECON_CAYLEY, &a, W0, x, &lam, &ss);
-    suslov_step_full(st, m, eps, SUSLOV_RECON_EXP_MID, &b, W0, x, &lam, &ss);
-    suslov_attitude_get(&a, Ra);
-    suslov_attitude_get(&b, Rb);
+    sus_attitude a, b;
+    sus_stepper_stats ss;
+    sus_attitude_identity(&a);
+    sus_attitude_identity(&b);
+    sus_stepper_full(st, m, eps, SUS_RECON_CAYLEY, &a, W0, x, &lam, &ss);
+    sus_stepper_full(st, m, eps, SUS_RECON_EXP_MID, &b, W0, x, &lam, &ss);
+    sus_attitude_get(&a, Ra);
+    sus_attitude_get(&b, Rb);
     double d = 0.0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -53,19 +53,19 @@ static double recon_effect(const suslov_model *m, const suslov_stepper_type *st,
 
 /* max over a few starts on the exact motion of the local multiplier error |lambda_{k+1} -
  * lambda(w(t + eps))| of one step from w(t). */
-static double lambda_error(const suslov_model *m, const suslov_stepper_type *st, double eps)
+static double lambda_error(const sus_model *m, const sus_stepper_type *st, double eps)
 {
-    suslov_exact ex;
-    suslov_exact_init(&ex, m, W0);
+    sus_exact ex;
+    sus_exact_init(&ex, m, W0);
     double e = 0.0;
     for (int k = 0; k < 4; k++) {
         double w[3] = {0.0, 0.0, 0.0}, we[2], x[3], lam;
-        suslov_step_stats ss;
-        suslov_exact_omega(&ex, 2.5 * k, w);
-        suslov_exact_omega(&ex, 2.5 * k + eps, we);
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUSLOV_STEP_OK)
+        sus_stepper_stats ss;
+        sus_exact_omega(&ex, 2.5 * k, w);
+        sus_exact_omega(&ex, 2.5 * k + eps, we);
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             return NAN;
-        e = fmax(e, fabs(lam - suslov_lagmult(m, we)));
+        e = fmax(e, fabs(lam - sus_lagmult(m, we)));
     }
     return e;
 }
@@ -76,10 +76,10 @@ static double lambda_error(const suslov_model *m, const suslov_stepper_type *st,
  * 2. Read at the first eps of 1/2, 1/4, 1/8, 1, 2 (asymptotic ones first) where both errors stand
  * above round-off (1000 u times |lambda| <= 0.04); a method at round-off at all of them is said
  * so and not judged. */
-static void check_lambda(const suslov_model *m, const suslov_stepper_type *st)
+static void check_lambda(const sus_model *m, const sus_stepper_type *st)
 {
     static const double EPS[] = {0.5, 0.25, 0.125, 1.0, 2.0};
-    const double floor = 1000.0 * SUSLOV_U * 0.04;
+    const double floor = 1000.0 * SUS_U * 0.04;
     for (int i = 0; i < 5; i++) {
         const double e1 = lambda_error(m, st, EPS[i]), e2 = lambda_error(m, st, 0.5 * EPS[i]);
         if (!(e2 > floor))
@@ -92,23 +92,23 @@ static void check_lambda(const suslov_model *m, const suslov_stepper_type *st)
     printf("NOTE %s: local multiplier error at round-off for every eps <= 2: not judged\n", st->name);
 }
 
-static void check_type(const suslov_model *m, const suslov_stepper_type *st)
+static void check_type(const sus_model *m, const sus_stepper_type *st)
 {
     check_lambda(m, st);
     const int n = st->unknowns, hooks = st->residual && st->guess && st->result;
-    CHECK(n >= 0 && n <= SUSLOV_MAX_UNKNOWNS && (n == 0 || (hooks && st->implicit)) && (n > 0 || !hooks),
+    CHECK(n >= 0 && n <= SUS_MAX_UNKNOWNS && (n == 0 || (hooks && st->implicit)) && (n > 0 || !hooks),
           "%s: %d unknowns, implicit %d, equation hooks %s", st->name, n, st->implicit,
           hooks ? "set" : "unset");
     CHECK(st->source && access(st->source, R_OK) == 0 && strncmp(st->source, "src/", 4) == 0,
           "%s: its source file %s exists", st->name, st->source ? st->source : "(null)");
-    CHECK(st->substeps >= 1 && (st->attitude == SUSLOV_ATTITUDE_NONE) == (st->apply_full == NULL),
+    CHECK(st->substeps >= 1 && (st->attitude == SUS_ATTITUDE_NONE) == (st->apply_full == NULL),
           "%s: %d substeps; attitude form %d with%s apply_full", st->name, st->substeps, (int)st->attitude,
           st->apply_full ? "" : "out");
     /* 200 steps of eps = 0.5: a method that conserves E drifts by round-off, at most a few u E per
      * substep (4 u E0 each, a worst case that never cancels); one that does not drifts by its
      * truncation error, many orders above that at this step. */
-    const double e0 = suslov_energy(m, W0);
-    const double drift = energy_drift(m, st, 0.5, 200), yard = 200.0 * st->substeps * 4.0 * SUSLOV_U * e0;
+    const double e0 = sus_energy(m, W0);
+    const double drift = energy_drift(m, st, 0.5, 200), yard = 200.0 * st->substeps * 4.0 * SUS_U * e0;
     CHECK(st->conserves_energy ? drift <= yard : drift > 100.0 * yard,
           "%s: conserves_energy = %d; |E - E0| over 200 steps of eps = 0.5: %.2e (round-off yardstick %.1e)",
           st->name, st->conserves_energy, drift, yard);
@@ -122,45 +122,45 @@ static void check_type(const suslov_model *m, const suslov_stepper_type *st)
 int main(void)
 {
     char err[256];
-    suslov_model m;
-    if (suslov_model_init(&m, BODY, err, sizeof err) != 0) {
+    sus_model m;
+    if (sus_model_init(&m, BODY, err, sizeof err) != 0) {
         fprintf(stderr, "test_registry: %s\n", err);
         return 1;
     }
-    for (int i = 0; i < suslov_method_count(); i++)
-        check_type(&m, suslov_method_get(i)->type);
+    for (int i = 0; i < sus_step_method_count(); i++)
+        check_type(&m, sus_step_method_get(i)->type);
 
     /* Each composition's substeps are its table's stages. */
     const struct {
-        const suslov_stepper_type *type;
-        const suslov_composition *table;
-    } comp[] = {{&suslov_comp4_s5_type, &suslov_comp_suzuki4},
-                {&suslov_comp6_kl_type, &suslov_comp_kahan_li6},
-                {&suslov_comp8_kl_type, &suslov_comp_kahan_li8},
-                {&suslov_comp10_ss_type, &suslov_comp_sofroniou10}};
+        const sus_stepper_type *type;
+        const sus_step_composition *table;
+    } comp[] = {{&sus_step_comp4_s5_type, &sus_step_comp_suzuki4},
+                {&sus_step_comp6_kl_type, &sus_step_comp_kahan_li6},
+                {&sus_step_comp8_kl_type, &sus_step_comp_kahan_li8},
+                {&sus_step_comp10_ss_type, &sus_step_comp_sofroniou10}};
     for (size_t i = 0; i < sizeof comp / sizeof comp[0]; i++)
-        CHECK(comp[i].type->substeps == suslov_composition_stages(comp[i].table),
+        CHECK(comp[i].type->substeps == sus_step_composition_stages(comp[i].table),
               "%s: %d substeps = %d stages", comp[i].type->name, comp[i].type->substeps,
-              suslov_composition_stages(comp[i].table));
+              sus_step_composition_stages(comp[i].table));
 
     /* build/methods.tsv: a header and one row per method, each found again by index. */
     FILE *fp = tmpfile();
-    int rows = -1, ok = fp && suslov_methods_write_tsv(fp) == 0;
+    int rows = -1, ok = fp && sus_step_methods_write_tsv(fp) == 0;
     char line[1024];
     if (fp) {
         rewind(fp);
         while (fgets(line, sizeof line, fp)) {
-            const suslov_method *me = suslov_method_get(rows);
+            const sus_step_method *me = sus_step_method_get(rows);
             ok &= rows < 0 ? strncmp(line, "name\tfamily\torder\t", 18) == 0
                            : me && strncmp(line, me->type->name, strlen(me->type->name)) == 0;
             rows++;
         }
         fclose(fp);
     }
-    CHECK(ok && rows == suslov_method_count(), "methods.tsv: a header and %d rows for %d methods", rows,
-          suslov_method_count());
-    for (int i = 0; i < suslov_method_count(); i++)
-        CHECK(suslov_method_index_of(suslov_method_get(i)->type) == i, "%s found by its type",
-              suslov_method_get(i)->type->name);
+    CHECK(ok && rows == sus_step_method_count(), "methods.tsv: a header and %d rows for %d methods", rows,
+          sus_step_method_count());
+    for (int i = 0; i < sus_step_method_count(); i++)
+        CHECK(sus_step_method_index_of(sus_step_method_get(i)->type) == i, "%s found by its type",
+              sus_step_method_get(i)->type->name);
     return check_summary("test_registry");
 }

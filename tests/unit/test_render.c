@@ -37,29 +37,29 @@ static int green_centroid(const uint32_t *px, double *cx, double *cy)
 int main(void)
 {
     char err[128];
-    suslov_model m;
-    suslov_model_init(&m, SUSLOV_PAPER_INERTIA, err, sizeof err);
-    gl_context *gl = gl_context_create(W, H);
+    sus_model m;
+    sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err);
+    sus_plot_gl_context *gl = sus_plot_gl_context_create(W, H);
     CHECK(gl != NULL, "an off-screen OSMesa context of %dx%d with a depth buffer is created (no display)", W,
           H);
     if (!gl)
         return check_summary("test_render");
-    scene sc;
-    scene_init(&sc, &m, W / 3, H);
-    uint32_t *px = gl_context_pixels(gl);
+    sus_plot_scene sc;
+    sus_plot_scene_init(&sc, &m, W / 3, H);
+    uint32_t *px = sus_plot_gl_context_pixels(gl);
     const double rot[4][3] = {{0, 0, 0}, {0.7, 0.0, 0.0}, {0.3, -1.1, 0.4}, {-2.0, 0.5, 1.0}};
     for (int i = 0; i < 4; i++) {
-        scene_body b = {{{0}}, {0}, {{0}}, 0};
-        so3_exp(rot[i], b.R);
+        sus_plot_scene_body b = {{{0}}, {0}, {{0}}, 0};
+        sus_so3_exp(rot[i], b.R);
         glClearColor(1, 1, 1, 1);
         glViewport(0, 0, W, H);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        scene_draw(&sc, &b, W / 3, 0, W / 3, H, 1); /* the middle viewport, only the e3 tip */
+        sus_plot_scene_draw(&sc, &b, W / 3, 0, W / 3, H, 1); /* the middle viewport, only the e3 tip */
         glFinish();
         double cx, cy, qx, qy;
-        const double tip[3] = {0.0, 0.0, SCENE_E3_TIP};
+        const double tip[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
         const int n = green_centroid(px, &cx, &cy);
-        scene_project(&sc, b.R, tip, W / 3, 0, W / 3, H, H, &qx, &qy);
+        sus_plot_scene_project(&sc, b.R, tip, W / 3, 0, W / 3, H, H, &qx, &qy);
         /* a 7-pixel point: its centroid sits on the projected point to within a pixel */
         CHECK(
             n > 10 && hypot(cx - qx, cy - qy) < 1.5,
@@ -67,13 +67,13 @@ int main(void)
             rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
     }
     /* a full frame: not blank, not one colour */
-    scene_body b = {{{0}}, {0.4, 0.5, 0.0}, {{0}}, 0};
-    so3_exp(rot[2], b.R);
-    scene_body_push_trail(&b);
+    sus_plot_scene_body b = {{{0}}, {0.4, 0.5, 0.0}, {{0}}, 0};
+    sus_so3_exp(rot[2], b.R);
+    sus_plot_scene_body_push_trail(&b);
     glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
     glViewport(0, 0, W, H);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    scene_draw(&sc, &b, 0, 0, W / 3, H, 0);
+    sus_plot_scene_draw(&sc, &b, 0, 0, W / 3, H, 0);
     glFinish();
     /* each element of the scene is there in its colour: the box (blue > red), e3 (red), w (orange) */
     int changed = 0, box = 0, red = 0, orange = 0;
@@ -87,6 +87,6 @@ int main(void)
     CHECK(changed > W * H / 50 && box > 100 && red > 10 && orange > 10,
           "a full frame has content: %d pixels off the background; box %d, e3 (red) %d, w (orange) %d pixels",
           changed, box, red, orange);
-    gl_context_destroy(gl);
+    sus_plot_gl_context_destroy(gl);
     return check_summary("test_render");
 }

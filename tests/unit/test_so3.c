@@ -20,8 +20,8 @@ static void random_vec(gsl_rng *r, double scale, double v[3])
 static double identity_defect(const double A[3][3])
 {
     double I3[3][3];
-    mat3_identity(I3);
-    return mat3_dist(A, I3);
+    sus_mat3_identity(I3);
+    return sus_mat3_dist(A, I3);
 }
 
 /* cay(w^) by its definition (caypart), (I - w^/2)^{-1} (I + w^/2), the inverse by the adjugate:
@@ -29,7 +29,7 @@ static double identity_defect(const double A[3][3])
 static void cay_by_definition(const double w[3], double C[3][3])
 {
     double W[3][3], A[3][3], B[3][3], adj[3][3];
-    so3_hat(w, W);
+    sus_so3_hat(w, W);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             A[i][j] = (i == j) - 0.5 * W[i][j];
@@ -49,11 +49,11 @@ static void cay_by_definition(const double w[3], double C[3][3])
 static void exp_by_series(const double w[3], double E[3][3])
 {
     double W[3][3], T[3][3], P[3][3];
-    so3_hat(w, W);
-    mat3_identity(E);
-    mat3_identity(T);
+    sus_so3_hat(w, W);
+    sus_mat3_identity(E);
+    sus_mat3_identity(T);
     for (int n = 1; n <= 40; n++) {
-        mat3_mul(P, T, W);
+        sus_mat3_mul(P, T, W);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) {
                 T[i][j] = P[i][j] / n;
@@ -64,26 +64,26 @@ static void exp_by_series(const double w[3], double E[3][3])
 
 /* Step 3 of (algo) and our two symmetric variants, two steps from R_0 = I: R_2 must be
  * tau(xi_0) tau(xi_1) with the tau and xi of each kind, built here from the definitions. */
-static double reconstruct_vs_definition(suslov_recon kind, double eps, const double w[3][3])
+static double reconstruct_vs_definition(sus_recon kind, double eps, const double w[3][3])
 {
-    suslov_attitude a;
-    suslov_attitude_identity(&a);
+    sus_attitude a;
+    sus_attitude_identity(&a);
     double R[3][3], T[3][3], P[3][3];
-    mat3_identity(R);
+    sus_mat3_identity(R);
     for (int k = 0; k < 2; k++) {
         double xi[3];
         for (int i = 0; i < 3; i++)
-            xi[i] = kind == SUSLOV_RECON_CAYLEY ? eps * w[k][i] : 0.5 * eps * (w[k][i] + w[k + 1][i]);
-        if (kind == SUSLOV_RECON_EXP_MID)
+            xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[k][i] : 0.5 * eps * (w[k][i] + w[k + 1][i]);
+        if (kind == SUS_RECON_EXP_MID)
             exp_by_series(xi, T);
         else
             cay_by_definition(xi, T);
-        mat3_mul(P, R, T);
-        mat3_copy(R, P);
-        suslov_reconstruct(kind, eps, &a, w[k], w[k + 1]);
+        sus_mat3_mul(P, R, T);
+        sus_mat3_copy(R, P);
+        sus_reconstruct(kind, eps, &a, w[k], w[k + 1]);
     }
     double got[3][3], d = 0.0;
-    suslov_attitude_get(&a, got);
+    sus_attitude_get(&a, got);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             d = fmax(d, fabs(got[i][j] - R[i][j]));
@@ -94,9 +94,9 @@ static double reconstruct_vs_definition(suslov_recon kind, double eps, const dou
 static void retraction_fd(const double xi[3], const double eta[3], double *w5, double *w6)
 {
     double C[3][3], D[3][3], Di[3][3];
-    so3_cay(xi, C);
-    so3_dcay(xi, D);
-    so3_dcay_inv(xi, Di);
+    sus_so3_cay(xi, C);
+    sus_so3_dcay(xi, D);
+    sus_so3_dcay_inv(xi, Di);
     /* Definition Retr: d/ds cay(xi + s eta) = (dcay_xi eta)^ cay(xi), central differences */
     const double h = 1e-5;
     double xp[3], xm[3], Cp[3][3], Cmm[3][3], FD[3][3], de[3], DE[3][3], AN[3][3];
@@ -104,28 +104,28 @@ static void retraction_fd(const double xi[3], const double eta[3], double *w5, d
         xp[i] = xi[i] + h * eta[i];
         xm[i] = xi[i] - h * eta[i];
     }
-    so3_cay(xp, Cp);
-    so3_cay(xm, Cmm);
+    sus_so3_cay(xp, Cp);
+    sus_so3_cay(xm, Cmm);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             FD[i][j] = (Cp[i][j] - Cmm[i][j]) / (2.0 * h);
-    mat3_vec(de, D, eta);
-    so3_hat(de, DE);
-    mat3_mul(AN, DE, C);
-    *w5 = fmax(*w5, mat3_dist(FD, AN));
+    sus_mat3_vec(de, D, eta);
+    sus_so3_hat(de, DE);
+    sus_mat3_mul(AN, DE, C);
+    *w5 = fmax(*w5, sus_mat3_dist(FD, AN));
     /* and d/ds cay^{-1}(exp(s eta^) cay(xi)) = dcay^{-1}_xi eta */
     double E[3][3], G[3][3], yp[3], ym[3], se[3];
     for (int i = 0; i < 3; i++)
         se[i] = h * eta[i];
-    so3_exp(se, E);
-    mat3_mul(G, E, C);
-    so3_cay_inv(G, yp);
+    sus_so3_exp(se, E);
+    sus_mat3_mul(G, E, C);
+    sus_so3_cay_inv(G, yp);
     for (int i = 0; i < 3; i++)
         se[i] = -h * eta[i];
-    so3_exp(se, E);
-    mat3_mul(G, E, C);
-    so3_cay_inv(G, ym);
-    mat3_vec(de, Di, eta);
+    sus_so3_exp(se, E);
+    sus_mat3_mul(G, E, C);
+    sus_so3_cay_inv(G, ym);
+    sus_mat3_vec(de, Di, eta);
     for (int i = 0; i < 3; i++)
         *w6 = fmax(*w6, fabs((yp[i] - ym[i]) / (2.0 * h) - de[i]));
 }
@@ -140,35 +140,35 @@ static void identities(gsl_rng *rng)
         random_vec(rng, 1.0, eta);
         random_vec(rng, 1.0, v);
         /* (Isom): w^ v = w x v, and vee inverts hat */
-        so3_hat(xi, W);
-        mat3_vec(a, W, v);
-        vec3_cross(b, xi, v);
-        so3_vee(W, a);
+        sus_so3_hat(xi, W);
+        sus_mat3_vec(a, W, v);
+        sus_vec3_cross(b, xi, v);
+        sus_so3_vee(W, a);
         worst[0] = fmax(worst[0], fabs(a[0] - xi[0]) + fabs(a[1] - xi[1]) + fabs(a[2] - xi[2]));
-        mat3_vec(a, W, v);
+        sus_mat3_vec(a, W, v);
         worst[0] = fmax(worst[0], fabs(a[0] - b[0]) + fabs(a[1] - b[1]) + fabs(a[2] - b[2]));
         /* cay(xi) cay(-xi) = I and cay(xi) in SO(3) */
         const double mxi[3] = {-xi[0], -xi[1], -xi[2]};
-        so3_cay(xi, C);
-        so3_cay(mxi, Cm);
-        mat3_mul(P, C, Cm);
+        sus_so3_cay(xi, C);
+        sus_so3_cay(mxi, Cm);
+        sus_mat3_mul(P, C, Cm);
         worst[1] = fmax(worst[1], identity_defect(P));
-        worst[2] = fmax(worst[2], so3_orth_defect(C) + fabs(mat3_det(C) - 1.0));
+        worst[2] = fmax(worst[2], sus_so3_orth_defect(C) + fabs(sus_mat3_det(C) - 1.0));
         /* the inverse chart */
-        so3_cay_inv(C, a);
+        sus_so3_cay_inv(C, a);
         worst[3] = fmax(worst[3], fabs(a[0] - xi[0]) + fabs(a[1] - xi[1]) + fabs(a[2] - xi[2]));
         /* dcay^{-1} dcay = I */
-        so3_dcay(xi, D);
-        so3_dcay_inv(xi, Di);
-        mat3_mul(P, Di, D);
+        sus_so3_dcay(xi, D);
+        sus_so3_dcay_inv(xi, Di);
+        sus_mat3_mul(P, Di, D);
         worst[4] = fmax(worst[4], identity_defect(P));
         retraction_fd(xi, eta, &worst[5], &worst[6]);
         double E[3][3], G[3][3];
         /* exp: in SO(3), exp(w) exp(-w) = I */
-        so3_exp(xi, E);
-        so3_exp(mxi, G);
-        mat3_mul(P, E, G);
-        worst[7] = fmax(worst[7], identity_defect(P) + so3_orth_defect(E));
+        sus_so3_exp(xi, E);
+        sus_so3_exp(mxi, G);
+        sus_mat3_mul(P, E, G);
+        worst[7] = fmax(worst[7], identity_defect(P) + sus_so3_orth_defect(E));
     }
     CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e", worst[0]);
     CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e", worst[1]);
@@ -195,10 +195,10 @@ static void cayinver(gsl_rng *rng)
         random_vec(rng, 1.0, w);
         w[2] = 0.0;
         const double eps = 2.0 * gsl_rng_uniform(rng);
-        so3_cayinver_printed(eps, w, M);
+        sus_so3_cayinver_printed(eps, w, M);
         for (int i = 0; i < 3; i++)
             ew[i] = eps * w[i];
-        so3_dcay_inv(ew, D);
+        sus_so3_dcay_inv(ew, D);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 if (i == 2 && j == 2)
@@ -221,18 +221,19 @@ static void metric(gsl_rng *rng)
         random_vec(rng, 3.0, a);
         random_vec(rng, 3.0, b);
         random_vec(rng, 3.0, c);
-        so3_exp(a, A);
-        so3_exp(b, B);
-        so3_exp(c, C);
-        const double ab = so3_dist(A, B), ba = so3_dist(B, A), ac = so3_dist(A, C), cb = so3_dist(C, B);
+        sus_so3_exp(a, A);
+        sus_so3_exp(b, B);
+        sus_so3_exp(c, C);
+        const double ab = sus_so3_dist(A, B), ba = sus_so3_dist(B, A), ac = sus_so3_dist(A, C),
+                     cb = sus_so3_dist(C, B);
         sym = fmax(sym, fabs(ab - ba));
-        self = fmax(self, so3_dist(A, A));
+        self = fmax(self, sus_so3_dist(A, A));
         tri = fmax(tri, ab - (ac + cb));
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 D[i][j] = A[i][j] - B[i][j];
-        chord = fmax(chord, fabs(ab - mat3_frobenius(D)));
-        minpos = fmin(minpos, ab / mat3_frobenius(D));
+        chord = fmax(chord, fabs(ab - sus_mat3_frobenius(D)));
+        minpos = fmin(minpos, ab / sus_mat3_frobenius(D));
     }
     CHECK(self < ROUNDOFF_TOL, "(MetMat): dist(R, R) = 0; worst %.2e", self);
     CHECK(sym < ROUNDOFF_TOL, "(MetMat): symmetric; worst %.2e", sym);
@@ -240,8 +241,8 @@ static void metric(gsl_rng *rng)
     CHECK(chord < ROUNDOFF_TOL && minpos > 0.999,
           "(MetMat) on SO(3) equals |R1 - R2| (so it is positive for R1 != R2); worst %.2e", chord);
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
-    CHECK(fabs(so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
-          "(Groudist): orthogonality defect of a shear = its exact value %.6e", so3_orth_defect(N));
+    CHECK(fabs(sus_so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
+          "(Groudist): orthogonality defect of a shear = its exact value %.6e", sus_so3_orth_defect(N));
 }
 
 int main(void)
@@ -254,10 +255,10 @@ int main(void)
     /* The reconstructions against their definitions; entries of size 1 after two products of
      * a few round-off each: 1e-15. */
     const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
-    for (int kind = 0; kind < SUSLOV_RECON_COUNT; kind++) {
-        const double d = reconstruct_vs_definition((suslov_recon)kind, 0.8, w);
+    for (int kind = 0; kind < SUS_RECON_COUNT; kind++) {
+        const double d = reconstruct_vs_definition((sus_recon)kind, 0.8, w);
         CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
-              "worst entry %.2e", SUSLOV_RECON_NAMES[kind], d);
+              "worst entry %.2e", SUS_RECON_NAMES[kind], d);
     }
     gsl_rng_free(rng);
     return check_summary("test_so3");

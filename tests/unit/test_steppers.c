@@ -8,6 +8,7 @@
 #include "so3.h"
 #include "registry.h"
 #include "unreduced.h"
+#include "dsp.h"
 
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -15,18 +16,18 @@
 /* (VSO3) written with a generic dcay^{-1} matrix D(eps w) (3x3), l~_d' = eps I w, and the
  * sign convention of (PartCase): DSP = D(-eps w)^T l~'(w) - D(eps x)^T l~'(x) - lambda e3.
  * Returns the first two components in g and the raw lambda solving the third. */
-static double vso3(const suslov_model *m, double eps, const double w[2], const double x[2],
+static double vso3(const sus_model *m, double eps, const double w[2], const double x[2],
                    int printed, double g[2])
 {
     double Dw[3][3], Dx[3][3], pw[3], px[3];
     const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0}, ex[3] = {eps * x[0],
         eps * x[1], 0.0};
     if (printed) {
-        so3_cayinver_printed(eps, mw, Dw);
-        so3_cayinver_printed(eps, x, Dx);
+        sus_so3_cayinver_printed(eps, mw, Dw);
+        sus_so3_cayinver_printed(eps, x, Dx);
     } else {
-        so3_dcay_inv(ew, Dw);
-        so3_dcay_inv(ex, Dx);
+        sus_so3_dcay_inv(ew, Dw);
+        sus_so3_dcay_inv(ex, Dx);
     }
     for (int i = 0; i < 3; i++) {
         pw[i] = eps * (m->I[i][0] * w[0] + m->I[i][1] * w[1]);
@@ -42,7 +43,7 @@ static double vso3(const suslov_model *m, double eps, const double w[2], const d
 }
 
 /* A step equation whose Jacobian is singular everywhere: the (REGLOC) failure path. */
-static void singular_residual(const suslov_model *m, double eps, const double w[2], const double *x,
+static void singular_residual(const sus_model *m, double eps, const double w[2], const double *x,
                               double *g, double *J, double *scale)
 {
     (void)m;
@@ -60,13 +61,13 @@ typedef struct {
     double R0_defect;
 } count_ctx;
 
-static int count_rows(void *vctx, const suslov_row *row)
+static int count_rows(void *vctx, const sus_row *row)
 {
     count_ctx *c = vctx;
     if (row->k == 0) {
         double I3[3][3];
-        mat3_identity(I3);
-        c->R0_defect = so3_dist(row->R, I3);
+        sus_mat3_identity(I3);
+        c->R0_defect = sus_so3_dist(row->R, I3);
     }
     c->rows++;
     c->last_k = row->k;
@@ -74,11 +75,11 @@ static int count_rows(void *vctx, const suslov_row *row)
 }
 
 /* Analytic Jacobians of every registered 2x2 implicit step equation against central differences. */
-static void jacobians(const suslov_model *m, const char *bname)
+static void jacobians(const sus_model *m, const char *bname)
 {
-    enum { NX = SUSLOV_MAX_UNKNOWNS };
-    for (int s = 0; s < suslov_method_count(); s++) {
-        const suslov_stepper_type *st = suslov_method_get(s)->type;
+    enum { NX = SUS_MAX_UNKNOWNS };
+    for (int s = 0; s < sus_step_method_count(); s++) {
+        const sus_stepper_type *st = sus_step_method_get(s)->type;
         const int n = st->unknowns;
         if (!st->residual)
             continue;
@@ -112,25 +113,25 @@ static void jacobians(const suslov_model *m, const char *bname)
 }
 
 /* Each step solves its equation to round-off in a few Newton iterations at small eps. */
-static void newton_solves(const suslov_model *m, const char *bname, const double w0[2])
+static void newton_solves(const sus_model *m, const char *bname, const double w0[2])
 {
-    enum { NX = SUSLOV_MAX_UNKNOWNS };
-    for (int s = 0; s < suslov_method_count(); s++) {
-        const suslov_stepper_type *st = suslov_method_get(s)->type;
+    enum { NX = SUS_MAX_UNKNOWNS };
+    for (int s = 0; s < sus_step_method_count(); s++) {
+        const sus_stepper_type *st = sus_step_method_get(s)->type;
         if (!st->residual)
             continue;
         const double w[3] = {w0[0], w0[1], 0.0};
         double x[NX], g[NX], J[NX * NX], sc, wn[3], wr[2], lam;
-        suslov_step_stats stats, ss;
+        sus_stepper_stats stats, ss;
         const int status = st->apply(m, 0.01, w, wn, &lam, &stats);
         st->guess(m, 0.01, w, x);
-        const int s2 = suslov_newton_solve(st->residual, st->unknowns, m, 0.01, w, x, &ss);
+        const int s2 = sus_step_newton_solve(st->residual, st->unknowns, m, 0.01, w, x, &ss);
         st->residual(m, 0.01, w, x, g, J, &sc);
         st->result(m, 0.01, w, x, wr);
         double gmax = 0.0;
         for (int i = 0; i < st->unknowns; i++)
             gmax = fmax(gmax, fabs(g[i]));
-        CHECK(status == SUSLOV_STEP_OK && s2 == SUSLOV_STEP_OK && gmax <= 16 * SUSLOV_U * sc &&
+        CHECK(status == SUS_STEPPER_OK && s2 == SUS_STEPPER_OK && gmax <= 16 * SUS_U * sc &&
                   stats.iterations <= 4 && wn[2] == 0.0 && wr[0] == wn[0] && wr[1] == wn[1],
               "%s, %s: eps = 0.01 step solved to |G| = %.1e (scale %.2f) in %d Newton iterations, w3 = 0",
               bname, st->name, gmax, sc, stats.iterations);
@@ -139,22 +140,22 @@ static void newton_solves(const suslov_model *m, const char *bname, const double
 
 /* (taudyn) and (taualg) are (VSO3) with (cayinver) as printed, after lambda -> -lambda/eps^2;
  * with the exact dcay^{-1} the multiplier gains (c(x) - c(w))/eps. */
-static void variational_is_vso3(const suslov_model *m, const char *bname, const double w0[2])
+static void variational_is_vso3(const sus_model *m, const char *bname, const double w0[2])
 {
     double worst_dyn = 0.0, worst_alg = 0.0, worst_full = 0.0;
     for (int n = 0; n < 20; n++) {
         const double eps = 0.1 + 0.2 * n, w[3] = {w0[0] - 0.03 * n, w0[1], 0.0};
         double x[3], lam, g[2], gd[2], J[4], sc;
-        suslov_step_stats stats;
-        if (suslov_step_variational->apply(m, eps, w, x, &lam, &stats) != SUSLOV_STEP_OK)
+        sus_stepper_stats stats;
+        if (sus_step_variational->apply(m, eps, w, x, &lam, &stats) != SUS_STEPPER_OK)
             continue; /* a large step may have no solution: nothing to compare */
         const double raw = vso3(m, eps, w, x, 1, g);
-        suslov_step_variational->residual(m, eps, w, x, gd, J, &sc);
+        sus_step_variational->residual(m, eps, w, x, gd, J, &sc);
         /* relative to the size of the terms summed (the residual's scale): two orders of summation */
         worst_dyn = fmax(worst_dyn, (fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1])) / (eps * sc));
         worst_alg = fmax(worst_alg, fabs(-raw / (eps * eps) - lam));
         const double raw_full = vso3(m, eps, w, x, 0, g);
-        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (suslov_c(m, x) - suslov_c(m,
+        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (sus_c(m, x) - sus_c(m,
             w)) / eps)));
     }
     CHECK(worst_dyn < 32 * 2.220446049250313e-16, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
@@ -170,64 +171,64 @@ static void variational_is_vso3(const suslov_model *m, const char *bname, const 
 }
 
 /* The midpoint DSP conserves E exactly in exact arithmetic: E(x) - E(w) = eps <f(mid), I_m mid> = 0. */
-static void midpoint_energy(const suslov_model *m, const char *bname, const double w0[2])
+static void midpoint_energy(const sus_model *m, const char *bname, const double w0[2])
 {
     double w[3] = {w0[0], w0[1], 0.0}, x[3], lam, dE = 0.0;
-    suslov_step_stats stats;
+    sus_stepper_stats stats;
     for (int k = 0; k < 100; k++) {
-        suslov_step_midpoint->apply(m, 0.7, w, x, &lam, &stats);
-        dE = fmax(dE, fabs(suslov_energy(m, x) - suslov_energy(m, w)));
+        sus_step_midpoint->apply(m, 0.7, w, x, &lam, &stats);
+        dE = fmax(dE, fabs(sus_energy(m, x) - sus_energy(m, w)));
         w[0] = x[0];
         w[1] = x[1];
     }
     /* E < 1.5 on the family: a few roundings of it */
-    CHECK(dE < 1e-15 * fmax(1.0, suslov_energy(m, w0)),
+    CHECK(dE < 1e-15 * fmax(1.0, sus_energy(m, w0)),
           "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = 0.7 (round-off)", bname,
               dE);
 }
 
 /* The unreduced integrator: its inverse inertia is right (entries below 2.5, condition < 20). */
-static void unreduced_inverse(const suslov_model *m, const char *bname)
+static void unreduced_inverse(const sus_model *m, const char *bname)
 {
     char err[256];
-    suslov_unreduced u;
+    sus_unreduced u;
     double P[3][3], I3[3][3];
-    suslov_unreduced_init(&u, m, err, sizeof err);
-    mat3_mul(P, u.Iinv, m->I);
-    mat3_identity(I3);
-    CHECK(so3_dist(P, I3) < 1e-14, "%s: unreduced: I^{-1} I = Id to %.1e", bname, so3_dist(P, I3));
+    sus_unreduced_init(&u, m, err, sizeof err);
+    sus_mat3_mul(P, u.Iinv, m->I);
+    sus_mat3_identity(I3);
+    CHECK(sus_so3_dist(P, I3) < 1e-14, "%s: unreduced: I^{-1} I = Id to %.1e", bname, sus_so3_dist(P, I3));
 }
 
 /* The driver: rows 0, K, 2K, ... and always the last one; R_0 = I; a failing step is reported. */
-static void driver(const suslov_model *m)
+static void driver(const sus_model *m)
 {
-    const suslov_run_config cfg = {m, suslov_step_rk4, SUSLOV_RECON_CAYLEY, 0.1, 1003, 100};
+    const sus_run_config cfg = {m, sus_step_rk4, SUS_RECON_CAYLEY, 0.1, 1003, 100};
     count_ctx cc = {0, -1, 1.0};
-    suslov_run_report rep;
+    sus_run_report rep;
     const double w0[2] = {0.4, 0.5};
-    const int rc = suslov_run(&cfg, w0, count_rows, &cc, &rep);
+    const int rc = sus_run(&cfg, w0, count_rows, &cc, &rep);
     CHECK(rc == 0 && cc.rows == 12 && cc.last_k == 1003 && cc.R0_defect == 0.0,
           "driver: N = 1003, K = 100 gives %ld rows (0, 100, ..., 1000, 1003), R_0 = I", cc.rows);
 
     /* A failing step is reported with its index and time, never accepted. */
     const double w_big[2] = {4.0, 5.0};
-    const suslov_run_config bad = {m, suslov_step_variational, SUSLOV_RECON_CAYLEY, 1000.0, 10, 1};
+    const sus_run_config bad = {m, sus_step_variational, SUS_RECON_CAYLEY, 1000.0, 10, 1};
     count_ctx cb = {0, -1, 1.0};
-    const int rb = suslov_run(&bad, w_big, count_rows, &cb, &rep);
-    CHECK(rb == 1 && rep.status == SUSLOV_STEP_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0
+    const int rb = sus_run(&bad, w_big, count_rows, &cb, &rep);
+    CHECK(rb == 1 && rep.status == SUS_STEPPER_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0
           && cb.rows == 1 &&
-              rep.stats.residual > NEWTON_RTOL * rep.stats.scale,
+              rep.stats.residual > SUS_STEP_NEWTON_RTOL * rep.stats.scale,
           "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only "
           "row 0 emitted",
           rep.step, rep.t, rep.stats.residual);
 
     /* A singular (REGLOC) block is reported as such, not iterated on. */
     double x[2] = {0.3, 0.3};
-    suslov_step_stats stats;
+    sus_stepper_stats stats;
     const double w[2] = {0.0, 0.0};
-    const int status = suslov_newton_solve(singular_residual, 2, m, 0.1, w, x, &stats);
-    CHECK(status == SUSLOV_STEP_SINGULAR && stats.det == 0.0 && stats.iterations == 0,
-          "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUSLOV_STEP_SINGULAR", stats.det);
+    const int status = sus_step_newton_solve(singular_residual, 2, m, 0.1, w, x, &stats);
+    CHECK(status == SUS_STEPPER_SINGULAR && stats.det == 0.0 && stats.iterations == 0,
+          "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUS_STEPPER_SINGULAR", stats.det);
 }
 
 int main(void)
@@ -236,9 +237,9 @@ int main(void)
     char err[256];
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
-        suslov_model m;
+        sus_model m;
         body_get(k, &b);
-        if (suslov_model_init(&m, b.I, err, sizeof err) != 0) {
+        if (sus_model_init(&m, b.I, err, sizeof err) != 0) {
             fprintf(stderr, "test_steppers: %s: %s\n", b.name, err);
             return 1;
         }

@@ -1,6 +1,6 @@
 /* A Taylor step never returns a wrong answer as a success: over a grid of steps up to 100 time
  * units, on the paper's body and on general ones, every Taylor method's step either refuses
- * (SUSLOV_STEP_DIVERGED: beyond the radius 1/(K |w|) its series is proved to converge in) or
+ * (SUS_STEPPER_DIVERGED: beyond the radius 1/(K |w|) its series is proved to converge in) or
  * lands within its proved error bound of the closed-form w(eps) (src/core/exact.h, independent of the
  * series). The bound (step_taylor.c): the tail past degree p is at most |w| r^{p+1} / (1 - r),
  * r = K |w| eps; restoring E moves the sum by at most kappa times its distance to the ellipse
@@ -17,7 +17,7 @@
 #define NGRID 60
 #define EPS_MAX 100.0
 
-static double condition(const suslov_model *m)
+static double condition(const sus_model *m)
 {
     const double a = m->I[0][0], b = m->I[0][1], d = m->I[1][1];
     const double mid = 0.5 * (a + d), rad = hypot(0.5 * (a - d), b);
@@ -25,25 +25,25 @@ static double condition(const suslov_model *m)
 }
 
 /* Returns the number of steps that ran (the others refused), or -1 at the first wrong answer. */
-static int sweep(const suslov_stepper_type *st, const suslov_model *m, const double w0[2], double *worst)
+static int sweep(const sus_stepper_type *st, const sus_model *m, const double w0[2], double *worst)
 {
-    suslov_exact ex;
-    suslov_exact_init(&ex, m, w0);
+    sus_exact ex;
+    sus_exact_init(&ex, m, w0);
     const double w[3] = {w0[0], w0[1], 0.0}, a = hypot(w0[0], w0[1]), kappa = condition(m);
     int ran = 0;
     for (int i = 0; i < NGRID; i++) {
         const double eps =
             EPS_MAX * pow(10.0, -5.0 * (double)(NGRID - 1 - i) / (NGRID - 1)); /* 1e-3 ... 100 */
         double x[3], lam, ref[2];
-        suslov_step_stats stats;
+        sus_stepper_stats stats;
         const int status = st->apply(m, eps, w, x, &lam, &stats);
-        if (status == SUSLOV_STEP_DIVERGED)
+        if (status == SUS_STEPPER_DIVERGED)
             continue;
-        suslov_exact_omega(&ex, eps, ref);
+        sus_exact_omega(&ex, eps, ref);
         const double err = hypot(x[0] - ref[0], x[1] - ref[1]);
-        const double bound = (2.0 + kappa) * suslov_taylor_tail_bound(st->order, m, eps, w0) + 1e-14 * a;
+        const double bound = (2.0 + kappa) * sus_step_taylor_tail_bound(st->order, m, eps, w0) + 1e-14 * a;
         *worst = fmax(*worst, err / bound);
-        if (status != SUSLOV_STEP_OK || !isfinite(bound) || !(err <= bound)) /* no proof, no answer */
+        if (status != SUS_STEPPER_OK || !isfinite(bound) || !(err <= bound)) /* no proof, no answer */
             return -1;
         ran++;
     }
@@ -62,12 +62,12 @@ int main(void)
         {2.0, -0.5, 0.1, -0.5, 0.6, 0.3, -1.5, 2.5, 1.0},
     };
     static const double starts[4][2] = {{0.4, 0.5}, {-0.1 * 3.0 + 1e-6, 0.2 * 3.0}, {-0.3, 0.9}, {1.5, -2.0}};
-    const suslov_stepper_type *types[4] = {&suslov_taylor8_type, &suslov_taylor10_type, &suslov_taylor12_type,
-                                           &suslov_taylor16_type};
+    const sus_stepper_type *types[4] = {&sus_step_taylor8_type, &sus_step_taylor10_type,
+                                        &sus_step_taylor12_type, &sus_step_taylor16_type};
     for (int b = 0; b < 4; b++) {
-        suslov_model m;
+        sus_model m;
         char err[256];
-        if (suslov_model_init(&m, bodies[b], err, sizeof err) != 0) {
+        if (sus_model_init(&m, bodies[b], err, sizeof err) != 0) {
             CHECK(0, "body %d: %s", b, err);
             continue;
         }

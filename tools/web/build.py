@@ -268,7 +268,7 @@ def inner_comments(code, shell):
 
 
 # A formula written in ASCII inside a comment (w^{k+1}, lambda_{k+1}, R_k, I_m): a short name
-# with sub- or superscripts, typeset by KaTeX. A C identifier (suslov_run) is not one: after a
+# with sub- or superscripts, typeset by KaTeX. A C identifier (sus_run) is not one: after a
 # one-letter subscript no letter, digit or underscore may follow.
 FORMULA_RE = re.compile(r"(?<![\\\w])([A-Za-z]{1,6}\d?)"
                         r"((?:[_^](?:\{[^{}\s]{1,24}\}|-?[A-Za-z0-9](?![A-Za-z0-9_])))+)(?![\w(])")
@@ -330,7 +330,7 @@ def link_labels(text_html, labels, prefix=""):
 
 def link_functions_in_text(text_html, resolve):
     """Function names in prose -> links to their definitions; outside tags and links only. Only
-    words that read as C names (with an underscore, like suslov_c) are taken: an English word
+    words that read as C names (with an underscore, like sus_c) are taken: an English word
     that happens to name a static helper (draw, field) is left alone."""
     parts = re.split(r"(<[^>]*>)", text_html)
     inside = 0
