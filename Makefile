@@ -58,15 +58,18 @@ inc_prog    := $(inc_render) -Isrc/prog
 inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 
-# The programs' main files (wasm_api.c: the browser's, built only for WebAssembly); the other files of src/prog (suslov's option table, parser and
-# progress line) are the programs' own support, archived like a layer.
+# The programs' main files (wasm_api.c: the browser's, built only for WebAssembly); the other
+# files of src/prog (suslov's option table, parser and progress line) are the programs' own
+# support, archived like a layer.
 PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c) \
              src/prog/wasm_api.c
 src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
 obj_of  = $(patsubst src/%.c,$(BUILD)/obj/%.o,$(call src_of,$(1)))
 lib_of  = $(BUILD)/libsus_$(1).a
-# Link order: higher layers first, so each archive resolves against the ones after it.
-LIBS_LINK := $(foreach l,prog render exp methods core util,$(call lib_of,$(l)))
+# Link order: higher layers first (LIB_LAYERS reversed), so each archive resolves against the
+# ones after it.
+reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
+LIBS_LINK := $(foreach l,$(call reverse,$(LIB_LAYERS)),$(call lib_of,$(l)))
 
 FIG_SRC  := $(wildcard src/prog/figure_*.c)
 FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)

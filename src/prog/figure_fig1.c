@@ -5,7 +5,6 @@
 #include "fig_setup.h"
 #include "plot.h"
 #include "series.h"
-#include "dsp.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -89,18 +88,12 @@ int main(int argc, char **argv)
     char path[4096];
     fig1 f;
     const long N = sus_exp_experiment_steps(T_END, EPS);
-    if (sus_exp_series_init(&f.ex, N, EVERY) || sus_exp_series_init(&f.mid, N, EVERY) ||
-        sus_exp_series_init(&f.var, N, EVERY)) {
+    const int run = sus_plot_fig_run_pair("fig1", &m, EPS, N, EVERY, &f.mid, &f.var);
+    if (run != 0)
+        return run;
+    if (sus_exp_series_init(&f.ex, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");
         return 1;
-    }
-    sus_run_report rep;
-    const sus_run_config cm = {&m, sus_step_midpoint, SUS_RECON_CAYLEY, EPS, N, EVERY};
-    const sus_run_config cv = {&m, sus_step_variational, SUS_RECON_CAYLEY, EPS, N, EVERY};
-    if (sus_exp_series_run(&f.mid, &cm, SUS_PAPER_OMEGA0, &rep) ||
-        sus_exp_series_run(&f.var, &cv, SUS_PAPER_OMEGA0, &rep)) {
-        fprintf(stderr, "figure_fig1: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
-        return 3;
     }
     sus_exp_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
     const size_t n = f.mid.n;

@@ -5,7 +5,6 @@
 #include "fig_setup.h"
 #include "plot.h"
 #include "series.h"
-#include "dsp.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -93,18 +92,12 @@ int main(int argc, char **argv)
     fig2 f;
     sus_exact_limit(&ex, f.winf);
     const long N = sus_exp_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
-    if (sus_exp_series_init(&f.mid, N, 1) || sus_exp_series_init(&f.var, N, 1) ||
-        sus_exp_series_init(&f.ex, NF, 1)) {
+    const int run = sus_plot_fig_run_pair("fig2", &m, EPS, N, 1, &f.mid, &f.var);
+    if (run != 0)
+        return run;
+    if (sus_exp_series_init(&f.ex, NF, 1)) {
         fprintf(stderr, "figure_fig2: out of memory\n");
         return 1;
-    }
-    sus_run_report rep;
-    const sus_run_config cm = {&m, sus_step_midpoint, SUS_RECON_CAYLEY, EPS, N, 1};
-    const sus_run_config cv = {&m, sus_step_variational, SUS_RECON_CAYLEY, EPS, N, 1};
-    if (sus_exp_series_run(&f.mid, &cm, SUS_PAPER_OMEGA0, &rep) ||
-        sus_exp_series_run(&f.var, &cv, SUS_PAPER_OMEGA0, &rep)) {
-        fprintf(stderr, "figure_fig2: a step failed at step %ld (t = %g)\n", rep.step, rep.t);
-        return 3;
     }
     sus_exp_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
     double *buf = malloc((f.ex.n + 4 * f.mid.n) * sizeof(double));

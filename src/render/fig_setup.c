@@ -1,4 +1,5 @@
 #include "fig_setup.h"
+#include "dsp.h"
 
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
@@ -16,5 +17,23 @@ int sus_plot_fig_setup_paper(int argc, const char *name, sus_model *m, sus_exact
         return 1;
     }
     sus_exact_init(ex, m, SUS_PAPER_OMEGA0);
+    return 0;
+}
+
+int sus_plot_fig_run_pair(const char *name, const sus_model *m, double eps, long N, int every,
+                          sus_exp_series *mid, sus_exp_series *var)
+{
+    if (sus_exp_series_init(mid, N, every) || sus_exp_series_init(var, N, every)) {
+        fprintf(stderr, "figure_%s: out of memory\n", name);
+        return 1;
+    }
+    sus_run_report rep;
+    const sus_run_config cm = {m, sus_step_midpoint, SUS_RECON_CAYLEY, eps, N, every};
+    const sus_run_config cv = {m, sus_step_variational, SUS_RECON_CAYLEY, eps, N, every};
+    if (sus_exp_series_run(mid, &cm, SUS_PAPER_OMEGA0, &rep) ||
+        sus_exp_series_run(var, &cv, SUS_PAPER_OMEGA0, &rep)) {
+        fprintf(stderr, "figure_%s: a step failed at step %ld (t = %g)\n", name, rep.step, rep.t);
+        return 3;
+    }
     return 0;
 }

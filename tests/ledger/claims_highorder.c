@@ -27,7 +27,6 @@
 #include "expected_orders.h"
 #include "ledger.h"
 #include "magnus4.h"
-#include "method_props.h"
 #include "orderfit.h"
 #include "reconstruct.h"
 #include "refattitude.h"
@@ -75,8 +74,7 @@ static void order_rows(const sus_model *m, const sus_exact *ex, const sus_step_m
                        sus_recon recon, int with_w, const double w_T[2], const double R_T[3][3])
 {
     double eps[MAXN], ew[MAXN], eR[MAXN];
-    const method_props props = method_props_of(me);
-    const int stages = props.substeps;
+    const int stages = me->type->substeps;
     int n = 0;
     long prev = 0;
     for (double Nd = 4.0; n < MAXN && Nd < 1e5; Nd *= 1.4142135623730951) {
@@ -129,7 +127,7 @@ static void order_rows(const sus_model *m, const sus_exact *ex, const sus_step_m
         if (ok != 0 && !q && expected >= 10)
             continue; /* w of the order-10 composition is at round-off from N = 16 on: nothing to fit
                        * (its attitude, which integrates w, carries the order: the SO(3) row) */
-        const int series = props.series;
+        const int series = me->type->apply_order != NULL; /* a truncated series */
         ledger_add_bound(id, eo->ref, what, slope, expected - (expected <= 8 && !series ? 0.3 : 1.0), 1,
                          LEDGER_EXTENSION);
     }
@@ -178,18 +176,17 @@ static void taylor_control(const sus_model *m, const sus_exact *ex, const sus_st
  * substep or per Taylor step (N s u E, the worst case of a drift that never cancels);
  * R^T R - I: R is rebuilt from a unit quaternion at every step, or summed with compensation, so
  * it is one rounding, a few u over 9 entries, whatever N: <= 1e-14. */
-static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_method *me,
-                     const method_props *props)
+static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_method *me)
 {
     const long N = 100000L;
     char id[96], what[256];
     last_row l;
     const int ok = run(m, ex, me->type, me->recon, 1e4, N, 100, &l) == 0;
-    const double yard = (double)N * props->substeps * 1.1102230246251565e-16 * l.e0;
+    const double yard = (double)N * me->type->substeps * 1.1102230246251565e-16 * l.e0;
     snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
     snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = "
                                 "%.2g (s = %d substeps)",
-             N, 1e4 / (double)N, me->type->name, yard, props->substeps);
+             N, 1e4 / (double)N, me->type->name, yard, me->type->substeps);
     ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0, LEDGER_EXTENSION);
     snprintf(id, sizeof id, "highorder-w3-%s", me->type->name);
     snprintf(what, sizeof what, "max |w3| over %ld steps to T = 1e4, %s: exactly 0", N, me->type->name);
@@ -279,13 +276,12 @@ void highorder_claims(const sus_model *m, const sus_exact *ex)
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo || me->paper_ref)
             continue; /* missing: claims_methods.c fails it; the paper's methods: claims.c */
-        const method_props props = method_props_of(me);
         order_rows(m, ex, me, eo, me->recon, 1, w_T, R_T);
-        if (props.series) /* against its own truncation */
+        if (me->type->apply_order) /* a truncated series: against its own truncation */
             taylor_control(m, ex, me, eo->p);
         else /* the paper's retraction, symmetrised, beside the exponential */
             order_rows(m, ex, me, eo, SUS_RECON_CAYLEY_MID, 0, w_T, R_T);
 
-        long_run(m, ex, me, &props);
+        long_run(m, ex, me);
     }
 }

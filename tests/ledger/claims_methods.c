@@ -2,7 +2,7 @@
  * (lambda) and on SO(3) (each reconstruction), and its structure (w3 = 0, |R^T R - I|, E where it
  * conserves it), on the paper's body and on each body of the seeded family (tests/unit/bodies.h).
  * What is expected comes from tests/ledger/expected_orders.c; what kind of method it is, from
- * method_props_of (tests/ledger/method_props.h). Nothing here knows a method by name.
+ * the fields of its stepper type (src/core/stepper.h). Nothing here knows a method by name.
  *
  * Orders. Local errors as the paper defines consistency (one step from exact data at t_k,
  * against the exact solution at t_k + eps; the largest over 5 starts t_k spread over the
@@ -36,7 +36,6 @@
 #include "driver.h"
 #include "expected_orders.h"
 #include "ledger.h"
-#include "method_props.h"
 #include "orderfit.h"
 #include "registry.h"
 #include "so3.h"
@@ -330,17 +329,17 @@ static void worst_add(structure_worst *s, double value, double bound, const char
  * reconstruction sums R_k D_k with compensation (reconstruct.h): what remains is the rounding of
  * the computed increments, |D| <= |g_i| eps |w| per substep with |g_i| < 2 for every tabulated
  * weight, four roundings per entry: 8 u N s eps |w|, plus 16 u for the last product. */
-static double orth_bound(const method_props *p, const body_data *d)
+static double orth_bound(const sus_stepper_type *t, const body_data *d)
 {
-    if (p->attitude == METHOD_ATT_QUATERNION)
+    if (t->attitude == SUS_ATTITUDE_QUAT)
         return 1e-14;
-    return 16.0 * U + 8.0 * U * (double)STRUCT_STEPS * p->substeps * STRUCT_EPS * d->size[0];
+    return 16.0 * U + 8.0 * U * (double)STRUCT_STEPS * t->substeps * STRUCT_EPS * d->size[0];
 }
 
 /* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body. */
 static void method_structure(const sus_step_method *me)
 {
-    const method_props p = method_props_of(me);
+    const sus_stepper_type *t = me->type;
     structure_worst w3 = {0}, orth = {0}, en = {0};
     for (int k = 0; k < BODIES_COUNT; k++) {
         const body_data *d = &bodies[k];
@@ -350,9 +349,9 @@ static void method_structure(const sus_step_method *me)
         if (sus_run(&cfg, d->b.w0, track, &c, &rep) != 0)
             c.energy = c.w3 = c.orth = INFINITY;
         worst_add(&w3, c.w3, 1.0, d->b.name);
-        worst_add(&orth, c.orth, orth_bound(&p, d), d->b.name);
+        worst_add(&orth, c.orth, orth_bound(t, d), d->b.name);
         /* each substep rounds E a few times and the errors need not cancel: 8 u E per substep */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * p.substeps * c.e0, d->b.name);
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.e0, d->b.name);
     }
     char id[96], q[400];
     const char *ref = me->paper_ref ? "(DSP), Algorithm (algo)" : "(extension)";
@@ -364,14 +363,16 @@ static void method_structure(const sus_step_method *me)
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
     snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s + %s (%s), worst of %d bodies %s; "
              "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUS_RECON_NAMES[me->recon],
-             p.attitude == METHOD_ATT_QUATERNION ? "unit quaternion" : "compensated product", BODIES_COUNT,
+             t->attitude == SUS_ATTITUDE_QUAT ? "unit quaternion" : "compensated product", BODIES_COUNT,
              orth.body, orth.bound);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
-    if (!p.conserves_energy)
+    if (!t->conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
-    snprintf(q, sizeof q, "max |E - E0| over %ld steps of eps %g, %s (%d substeps), worst of %d bodies %s; "
-             "bound 8 u N s E0", STRUCT_STEPS, STRUCT_EPS, me->type->name, p.substeps, BODIES_COUNT, en.body);
+    snprintf(q, sizeof q,
+             "max |E - E0| over %ld steps of eps %g, %s (%d substeps), worst of %d bodies %s; "
+             "bound 8 u N s E0",
+             STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
     ledger_add_bound(id, ref, q, en.value, en.bound, 0, truth);
 }
 
