@@ -37,6 +37,7 @@ if [ "$mode" != ledger ]; then
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
+    run mutants_fresh sh tests/build/mutants_fresh.sh
     run eqmap sh tools/eqmap.sh check
 fi
 if [ "$mode" != test ]; then
