@@ -34,6 +34,7 @@
 #include "so3.h"
 #include "taylor.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -89,8 +90,8 @@ static void order_rows(const sus_model *m, const sus_exact *ex, const sus_step_m
         ew[n] = hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
         eR[n] = sus_so3_dist(R_T, l.R);
         n++;
-        if (ew[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUS_EXP_SIZE_W
-            && eR[n - 1] < 100.0 * N * stages * 2.220446049250313e-16 * SUS_EXP_SIZE_R)
+        if (ew[n - 1] < 100.0 * N * stages * DBL_EPSILON * SUS_EXP_SIZE_W
+            && eR[n - 1] < 100.0 * N * stages * DBL_EPSILON * SUS_EXP_SIZE_R)
             break; /* both at the round-off floor below */
     }
     for (int q = with_w ? 0 : 1; q < 2; q++) {
@@ -103,7 +104,7 @@ static void order_rows(const sus_model *m, const sus_exact *ex, const sus_step_m
         int k = 0;
         for (int j = 0; j < n; j++) {
             const double N = T_ORD / eps[j], floor = fmax(SUS_EXP_FIT_FLOOR_REL * size,
-                                                          100.0 * N * stages * 2.220446049250313e-16 * size);
+                                                          100.0 * N * stages * DBL_EPSILON * size);
             if (err[j] <= ERR_MAX && err[j] > floor) {
                 fe[k] = eps[j];
                 fr[k] = err[j];
@@ -182,7 +183,7 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
     char id[96], what[256];
     last_row l;
     const int ok = run(m, ex, me->type, me->recon, 1e4, N, 100, &l) == 0;
-    const double yard = (double)N * me->type->substeps * 1.1102230246251565e-16 * l.e0;
+    const double yard = (double)N * me->type->substeps * (DBL_EPSILON / 2) * l.e0;
     snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
     snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = "
                                 "%.2g (s = %d substeps)",
@@ -236,7 +237,7 @@ static void recommended_settings(const sus_model *m, const sus_exact *ex, const 
                  "at most that", RECOMMENDED[i].attitude ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|",
                  me->type->name, N, T_ORD / (double)N, RECOMMENDED[i].level);
         ledger_add_bound(id, "README (make bench)", what, err, RECOMMENDED[i].level, 0, LEDGER_EXTENSION);
-        const double yard = 8.0 * (double)N * 2.220446049250313e-16 * l.e0;
+        const double yard = 8.0 * (double)N * DBL_EPSILON * l.e0;
         snprintf(id, sizeof id, "recommended-energy-%s-%ld", me->type->name, N);
         snprintf(what, sizeof what, "max |E - E0| over the same run (%s, eps %.4g): E restored, bound 8 N "
                                     "u E0 = %.2g",

@@ -40,11 +40,12 @@
 #include "registry.h"
 #include "so3.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#define U 2.220446049250313e-16
+#define U DBL_EPSILON
 #define NE 53                 /* eps k = 1.16 * 2^(-j/4), j = 0 .. 52 */
 #define EPS_K_MAX 1.16
 #define NTK 5

@@ -11,6 +11,7 @@
 #include "dsp.h"
 
 #include <gsl/gsl_errno.h>
+#include <float.h>
 #include <math.h>
 
 /* (VSO3) written with a generic dcay^{-1} matrix D(eps w) (3x3), l~_d' = eps I w, and the
@@ -158,7 +159,7 @@ static void variational_is_vso3(const sus_model *m, const char *bname, const dou
         worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (sus_c(m, x) - sus_c(m,
             w)) / eps)));
     }
-    CHECK(worst_dyn < 32 * 2.220446049250313e-16, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
+    CHECK(worst_dyn < 32 * DBL_EPSILON, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
                                                   "(cayinver) "
           "as printed; worst relative to the terms' size %.2e (<= 32 u)",
           bname, worst_dyn);
