@@ -4,11 +4,11 @@
  * at most 1/SUSLOV_REFATT_PRECISE_STEPS time units. Truncation per step is ~(h/rho)^29 with
  * rho ~ 10.8 the distance of the field's complex singularity from the real axis (below 1e-40);
  * round-off is a few long-double ulps (5.4e-20) per step, so R(t) is good to ~1e-17 for t <= 50,
- * well below double's 1.1e-16 (issue 11 needs <= 1e-15 to judge errors of 1e-12). Its w(t) agrees
+ * well below double's 1.1e-16, enough to judge errors of 1e-12 and below. Its w(t) agrees
  * with the closed form of exact.h to round-off. It is checked against an independent
  * computation, a long-double fourth-order Magnus integration along the closed-form w(t) with
  * Richardson extrapolation (magnus4.h), in tests/unit/test_highorder.c and in the claims ledger.
- * (Until issue 11 the reference was GSL's rk8pd at tolerance 1e-13: about 1e-13 off at t = 50.) */
+ * (GSL's rk8pd at tolerance 1e-13, the earlier reference, is about 1e-13 off at t = 50.) */
 #ifndef SUS_REFATTITUDE_H
 #define SUS_REFATTITUDE_H
 

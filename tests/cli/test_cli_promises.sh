@@ -1,5 +1,5 @@
 #!/bin/sh
-# The promises of suslov and the build that a demanding user broke (issue 20), one regression
+# The promises of suslov and the build that a demanding user broke, one regression
 # check each, numbered as there: output through descriptors (/dev/stdout), long names, permissions
 # checked before the run, every signal in the named-temporary mode, figure programs and make
 # interrupted, an empty BUILD, exact for any t and w0, messages without NaN, full devices and

@@ -1,4 +1,4 @@
-/* Ledger rows of the high-order methods of issue 11 (compositions, Taylor series): their orders on
+/* Ledger rows of the high-order methods (compositions, Taylor series): their orders on
  * w and on SO(3), the structure they keep over 10^6 steps and at T = 1e4, and the accuracy of the
  * long-double reference attitude that judges them. */
 #ifndef SUSLOV_CLAIMS_HIGHORDER_H

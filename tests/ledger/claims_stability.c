@@ -55,7 +55,7 @@ static void boundary_claims(const sus_exact *paper)
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
         const sus_stepper_type *st = me->type;
-        /* Compositions (issue 11) have no single linear limit: prod (1 + g_i z/2)/(1 - g_i z/2) is
+        /* Compositions have no single linear limit: prod (1 + g_i z/2)/(1 - g_i z/2) is
          * unstable only in narrow bands around the poles z = 2/g_i of the negative weights, so
          * the bisection below and a first crossing measure different things; no claim is made
          * (the map in figures/stability shows where they work). */
