@@ -12,6 +12,12 @@ typedef struct {
     int s;                       /* multiplier order; -1 where the paper proves it inconsistent */
     int so3[SUS_RECON_COUNT]; /* order on SO(3) (TeoL: min(r, p)) with each reconstruction */
     const char *ref;             /* where p and s are stated */
+    /* Linear stability: 1 when theory gives R(z) = sum_{n<=p} z^n/n! (an explicit Runge-Kutta
+     * method with p = stages <= 4, or a Taylor series of degree p), so that the real stability
+     * limit follows from p alone; and the first step h at which a run fails to solve its step, as
+     * the README states it from the stability map (0: none stated). */
+    int stab_truncated_exp;
+    double solvable_h;
 } expected_order;
 
 const expected_order *expected_order_of(const char *method);
