@@ -242,7 +242,8 @@ PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibli
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
-            tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh
+            tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
+            tools/paper_tolerances.sh
 paper: paper/companion.pdf paper/methods.pdf
 
 # The companion (main text) and the software note (methods, benchmark, whole ledger, source).

@@ -27,6 +27,7 @@ sh tools/eqmap.sh tex "$P/eqmap.tex" >/dev/null ||
 for doc in companion methods; do sh tools/paper_numbers.sh "paper/$doc.tex"; done
 sh tools/paper_coverage.sh "$B/claims.tsv"
 sh tools/paper_tables.sh "$P" "$B/claims.tsv" "$B/summary.tex"
+sh tools/paper_tolerances.sh "$B/claims.tsv" paper/tolerances.tsv "$P/tolerances.tex"
 sh tools/paper_refs.sh paper/labels.tsv "$P/labels.tex"
 sh tools/paper_links.sh "$P/links.tex"
 sh tools/repro.sh "$B" "$P/repro.tex"

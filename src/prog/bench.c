@@ -992,38 +992,36 @@ static void series_colour(int i, double rgb[3])
 static void draw_wp_notes(cairo_t *cr, double y)
 {
     static const char *const notes[] = {
-        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15 "
-        "(four a decade):",
-        "GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through its own "
-        "gsl_odeiv2_evolve_apply loop,",
-        "from initial step 1e-3, 1e-2, 0.1 and 1 (reset before every run); rkf45 and msadams "
-        "(driver, initial step 1e-3)"
+        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15",
+        "(four a decade): GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through",
+        "its own gsl_odeiv2_evolve_apply loop, from initial step 1e-3, 1e-2, 0.1 and 1 (reset before",
+        "every run); rkf45 and msadams (driver, initial step 1e-3)"
 #ifdef SUSLOV_WITH_ODEINT
-        "; Boost.Odeint",
-        "runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive)"
+        "; Boost.Odeint runge_kutta_fehlberg78",
+        "(make_controlled) and bulirsch_stoer (integrate_adaptive)"
 #endif
         ".",
-        "Each on (w1, w2, R), 11 unknowns, on (w1, w2, q), 6 unknowns with R = R(q/|q|), and, in (a), "
+        "Each on (w1, w2, R), 11 unknowns, on (w1, w2, q), 6 unknowns with R = R(q/|q|), and, in (a),",
         "on (w1, w2) alone, like our \"(w only)\" rows.",
         "Thick black: the peers' lower envelope. Every point's time and error come from the same runs.",
-        "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a long-double "
-        "reference R(t) (error ~1e-17).",
+        "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a",
+        "long-double reference R(t) (error ~1e-17).",
     };
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (size_t i = 0; i < sizeof notes / sizeof notes[0]; i++)
-        sus_plot_text(cr, 44, y + 12.0 * (double)i, notes[i], 8, 0, 0.5, 0);
+        sus_plot_text(cr, 16, y + 11.0 * (double)i, notes[i], 8, 0, 0.5, 0);
 }
 
-#define WP_W 760.0
-#define WP_H 580.0
+/* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block. */
+#define WP_W 530.0
+#define WP_PANEL_H 230.0
+#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 42.0)
 
 static void draw_wp(cairo_t *cr, void *vctx)
 {
     (void)vctx;
     static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
                               SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
-    sus_plot_text(cr, WP_W / 2, 14, "Work-precision at t = 50: error against CPU time per run (median)", 11,
-                  0.5, 0.5, 1);
     sus_plot_style *st = xcalloc((size_t)nseries, sizeof *st), *ours = xcalloc((size_t)nseries, sizeof *ours);
     double(*rgb)[3] = xcalloc((size_t)nseries, sizeof *rgb);
     for (int p = 0; p < 2; p++) {
@@ -1035,7 +1033,7 @@ static void draw_wp(cairo_t *cr, void *vctx)
             sus_plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
         }
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 60 + p * (WP_W / 2), 40, WP_W / 2 - 85, 300, x0, x1, fmax(y0, 1e-17),
+        sus_plot_axes_init(&ax, cr, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, WP_PANEL_H, x0, x1, fmax(y0, 1e-17),
                        fmin(y1, 1.0), 1, 1);
         sus_plot_pad(&ax.x0, &ax.x1, 1);
         sus_plot_pad(&ax.y0, &ax.y1, 1);
@@ -1073,11 +1071,11 @@ static void draw_wp(cairo_t *cr, void *vctx)
             ours[nours++] = st[i];
     const int half = (nours + 1) / 2;
     sus_plot_axes la;
-    sus_plot_axes_init(&la, cr, 40, 385, 330, 120, 0, 1, 0, 1, 0, 0);
+    sus_plot_axes_init(&la, cr, 12, WP_LEGEND_Y, WP_W / 2 - 20, 120, 0, 1, 0, 1, 0, 0);
     sus_plot_legend(&la, ours, half, 0);
-    sus_plot_axes_init(&la, cr, 400, 385, 330, 120, 0, 1, 0, 1, 0, 0);
+    sus_plot_axes_init(&la, cr, WP_W / 2 + 4, WP_LEGEND_Y, WP_W / 2 - 20, 120, 0, 1, 0, 1, 0, 0);
     sus_plot_legend(&la, ours + half, nours - half, 0);
-    draw_wp_notes(cr, 400 + 11.0 * half + 12);
+    draw_wp_notes(cr, WP_LEGEND_Y + 11.0 * half + 22);
     free(st);
     free(ours);
     free(rgb);
@@ -1453,8 +1451,8 @@ static int write_figures(const char *figdir)
     int nours = 0;
     for (int i = 0; i < nseries; i++)
         nours += S[i]->ours;
-    /* tall enough for the legend (two columns of 11 px rows from y = 400) and eight lines of notes */
-    const double wp_h = fmax(WP_H, 400.0 + 11.0 * ((nours + 1) / 2) + 12.0 + 84.0 + 16.0);
+    /* tall enough for the legend (two columns of 11 px rows) and ten lines of notes */
+    const double wp_h = WP_LEGEND_Y + 11.0 * ((nours + 1) / 2) + 22.0 + 11.0 * 10 + 6.0;
     if (sus_plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;

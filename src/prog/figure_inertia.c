@@ -13,6 +13,8 @@
 #define T_END SUS_EXP_INERTIA_T_END
 #define DT SUS_EXP_INERTIA_DT
 #define NPTS 1201     /* T_END / DT + 1, checked in main */
+#define FIG_W 530.0
+#define FIG_H 380.0
 
 typedef struct {
     sus_exp_series row, col;
@@ -23,7 +25,7 @@ typedef struct {
 static void draw(cairo_t *cr, void *vctx)
 {
     const inertia_fig *f = vctx;
-    const double W = 560, H = 420;
+    const double W = FIG_W, H = FIG_H;
     const sus_plot_style r1 = sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0,
                                         "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
     const sus_plot_style r2 =
@@ -32,10 +34,6 @@ static void draw(cairo_t *cr, void *vctx)
                                                 "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
     const sus_plot_style c2 =
         sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 1, SUS_PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
-    sus_plot_text(cr, W / 2, 14,
-              "Which inertia? The printed I is not symmetric (I\xe2\x82\x82\xe2\x82\x83 = 0.2, "
-              "I\xe2\x82\x83\xe2\x82\x82 = 0.1)",
-              11, 0.5, 0.5, 1);
     sus_plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     sus_plot_extend(&lo, &hi, f->row.w1, f->row.n, 1, 0);
@@ -67,21 +65,12 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_frame(&ax, "t", "|\xcf\x89_row \xe2\x88\x92 \xcf\x89_col|", "(c)");
     const sus_plot_style d = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 0, SUS_PLOT_NONE, 0, NULL);
     sus_plot_series(&ax, f->row.t, f->dist, f->row.n, 1, &d);
-    /* (d): the legend of (a), with the rates */
+    /* (d): the key of (a); the rates and limits are in the caption */
     double x, y, w, h;
     sus_plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
-    sus_plot_axes_init(&ax, cr, x - 40, y, w + 40, 62, 0, 1, 0, 1, 0, 0);
+    sus_plot_axes_init(&ax, cr, x - 40, y, w + 40, h, 0, 1, 0, 1, 0, 0);
     const sus_plot_style lega[4] = {r1, r2, c1, c2};
-    sus_plot_legend(&ax, lega, 4, 0);
-    char line[128];
-    snprintf(line, sizeof line, "rate k to the steady rotation: %.4f (row), %.4f (column)", f->k_row,
-             f->k_col);
-    sus_plot_text(cr, x - 36, y + 76, line, 8.0, 0.0, 0.0, 0);
-    sus_plot_text(
-        cr, x - 36, y + 90,
-        "Only I_m and (I\xe2\x82\x83\xe2\x82\x81, I\xe2\x82\x83\xe2\x82\x82) enter (ContDyn)/(LagMult);", 8.0,
-        0.0, 0.0, 0);
-    sus_plot_text(cr, x - 36, y + 102, "all our other figures use the row as printed.", 8.0, 0.0, 0.0, 0);
+    sus_plot_legend(&ax, lega, 4, 4);
 }
 
 int main(int argc, char **argv)
@@ -140,5 +129,5 @@ int main(int argc, char **argv)
              "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
              "Data: data/inertia.csv.\n",
              T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
-    return sus_plot_fig_write_figure(argv[1], "inertia", 560, 420, draw, &f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "inertia", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

@@ -25,6 +25,10 @@
 #define T_MATCH 50.0
 #define LEVEL 1e-10
 #define NS 500
+/* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block. */
+#define LR_W 530.0
+#define LR_PANEL_H 220.0
+#define LR_LEGEND_Y (22.0 + LR_PANEL_H + 40.0)
 #define FLOOR 1e-17 /* exact zeros are drawn here on the log axes */
 
 typedef struct {
@@ -128,12 +132,7 @@ static void peer(size_t dim)
 static void draw(cairo_t *cr, void *vctx)
 {
     (void)vctx;
-    const double W = 760;
-    sus_plot_text(cr, W / 2, 14,
-              "Structure over a long run (T = 10\xe2\x81\xb4), at matched accuracy "
-              "(attitude 1e-10 at t = 50)",
-              11, 0.5,
-              0.5, 1);
+    const double W = LR_W;
     sus_plot_style st[nc > 0 ? nc : 1];
     int k = 0;
     for (int i = 0; i < nc; i++)
@@ -142,7 +141,7 @@ static void draw(cairo_t *cr, void *vctx)
                           : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0, C[i].name);
     for (int p = 0; p < 2; p++) {
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 60 + p * (W / 2), 40, W / 2 - 85, 250, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
+        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
         const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
@@ -151,9 +150,12 @@ static void draw(cairo_t *cr, void *vctx)
         for (int i = 0; i < nc; i++)
             sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
+    const int half = (nc + 1) / 2; /* the legend in two columns below the panels */
     sus_plot_axes la;
-    sus_plot_axes_init(&la, cr, 40, 330, 680, 120, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, st, nc, 0);
+    sus_plot_axes_init(&la, cr, 12, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, st, half, 0);
+    sus_plot_axes_init(&la, cr, W / 2 + 4, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, st + half, nc - half, 0);
 }
 
 /* One row per curve and sample. */
@@ -227,7 +229,8 @@ int main(int argc, char **argv)
         return 1;
     char cap[8192];
     caption(cap, sizeof cap);
-    const int rc = sus_plot_fig_write_figure(argv[1], "longrun", 760, 470, draw, NULL, cap) != 0;
+    const double h = LR_LEGEND_Y + 11.0 * ((nc + 1) / 2) + 20.0; /* two legend columns of 11-unit rows */
+    const int rc = sus_plot_fig_write_figure(argv[1], "longrun", LR_W, h, draw, NULL, cap) != 0;
     free(C);
     return rc;
 }

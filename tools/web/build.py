@@ -632,7 +632,9 @@ class Site:
                "<p class='note'>Each entry: the label and the number the paper prints for it (counted from the "
                "paper's LaTeX source), the equation as we restate it, the functions marked "
                "<code>/* (label) */</code> that implement it, the tests that name it and the claims-ledger lines "
-               "that measure it. Numbers follow the arXiv source; the restatements are ours.</p>"]
+               "that measure it. Numbers are counted from the paper's LaTeX source on arXiv (1506.01289) by "
+               "<code>tools/paper_labels.py</code>; every number the findings cite is checked there against the "
+               "published article (J. Geom. Mech. 10(1), 2018). The restatements are ours.</p>"]
         for lab, desc in self.declared.items():
             out.append(self.equation_entry(lab, desc))
         others = sorted({lab for lab in list(self.cited) + list(self.label_claims) + list(REFERENCED)
