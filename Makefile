@@ -29,6 +29,9 @@ $(error BUILD='$(BUILD)' holds a space: make cannot name targets inside it)
 endif
 CFLAGS  ?= -O2 -g
 WARN    := -std=c17 -Wall -Wextra -Wshadow -Wstrict-prototypes
+# The same bits in every build (the CLI and the browser's WebAssembly module): no product and
+# sum fused into one fma, which a compiler may otherwise do where the target has one.
+WARN    += -ffp-contract=off
 ifeq ($(WERROR),1)
 WARN    += -Werror
 endif

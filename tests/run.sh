@@ -30,6 +30,7 @@ if [ "$mode" != ledger ]; then
     for t in "$@"; do run "$(basename "$t")" "$t"; done
     run test_cli sh tests/cli/test_cli.sh "$B"
     run test_cli_values sh tests/cli/test_cli_values.sh "$B"
+    run test_cli_sweeps sh tests/cli/test_cli_sweeps.sh "$B"
     run test_cli_promises sh tests/cli/test_cli_promises.sh "$B"
     run test_cli_conventions sh tests/cli/test_cli_conventions.sh "$B"
     run test_cli_install sh tests/cli/test_cli_install.sh "$B"

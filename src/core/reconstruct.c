@@ -51,8 +51,9 @@ void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double 
         xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
     if (kind == SUS_RECON_EXP_MID) {
         const double th = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
-        const double s = th > 0.0 ? 0.5 * sin(0.5 * th) / (0.5 * th) : 0.5; /* sin(th/2)/th */
-        dq[0] = cos(0.5 * th);
+        double half_sin;
+        sus_so3_sincos(0.5 * th, &half_sin, &dq[0]); /* so3_trig.c: the same bits in every build */
+        const double s = th > 0.0 ? half_sin / th : 0.5; /* sin(th/2)/th */
         for (int i = 0; i < 3; i++)
             dq[1 + i] = s * xi[i];
     } else {

@@ -84,19 +84,15 @@ void sus_so3_cayinver_printed(double eps, const double w[2], double D[3][3])
 /* Rodrigues' formula without its leading I: exp(w^) - I = a w^ + b w^2 with a = sin t / t and
  * b = (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2, t = |w|. The half-angle form has no cancellation,
  * so a and b keep full relative accuracy at every angle (1 - cos t loses them all near t = 0),
- * and the result, small for small w, can be accumulated against I like the Cayley increment. */
+ * and the result, small for small w, can be accumulated against I like the Cayley increment.
+ * sinc t = sin t / t comes from so3_trig.c, not the C library, so that every build gets the same bits. */
 void sus_so3_exp_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];
     sus_so3_hat(w, W);
     sus_mat3_mul(W2, W, W);
     const double th = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    double a = 1.0, b = 0.5;
-    if (th > 0.0) {
-        const double s = sin(0.5 * th) / (0.5 * th);
-        a = sin(th) / th;
-        b = 0.5 * s * s;
-    }
+    const double s = sus_so3_sinc(0.5 * th), a = sus_so3_sinc(th), b = 0.5 * s * s;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             D[i][j] = a * W[i][j] + b * W2[i][j];

@@ -16,5 +16,9 @@ void sus_so3_exp_minus_identity(const double w[3], double D[3][3]);
 void sus_so3_exp(const double w[3], double R[3][3]);
 double sus_so3_dist(const double R1[3][3], const double R2[3][3]);
 double sus_so3_orth_defect(const double R[3][3]);
+/* sin t, cos t and sin t / t by the project's own reduction and polynomials (so3_trig.c): the
+ * same bits in every build (CLI and WebAssembly), within about 2 u of the true values. */
+void sus_so3_sincos(double t, double *s, double *c);
+double sus_so3_sinc(double t);
 
 #endif

@@ -7,11 +7,20 @@
 #define SUS_EXP_MIDPOINT_SWEEPS_H
 
 #include "model.h"
+#include "stepper.h"
+
+/* The most sweeps a stepper type is made for (Figure 2's readings run 1 to 8). */
+#define SUS_EXP_MAX_SWEEPS 8
 
 void sus_exp_midpoint_sweeps(const sus_model *m, double eps, int n, const double w[2], double x[2]);
 
 /* N steps from w0; energy[k] = E(w_k) for k = 0..N (caller's array, N+1 long), and w_N. */
 void sus_exp_midpoint_sweeps_run(const sus_model *m, double eps, int n, const double w0[2], long N,
                                 double *energy, double wN[2]);
+
+/* The reading as a stepper for the driver (the suslov command's --sweeps, the browser's page):
+ * w^{k+1} from n sweeps, lambda_{k+1} = lambda(w^{k+1}) from (LagMult) as the midpoint DSP
+ * has it, R by the requested reconstruction. NULL unless 1 <= n <= SUS_EXP_MAX_SWEEPS. */
+const sus_stepper_type *sus_exp_midpoint_sweeps_type(int n);
 
 #endif

@@ -109,7 +109,7 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
     /* The exact run computes only the rows it writes (each may cost a stretch of the reference
      * integration), so it gets its K; the integrators step every k anyway and hand every row
      * to take_row. */
-    const sus_run_config cfg = {&a->model, exact ? NULL : a->method->type, a->recon, a->eps, a->steps,
+    const sus_run_config cfg = {&a->model, a->stepper, a->recon, a->eps, a->steps,
                                    exact ? a->every : 1};
     *ctx = (csv_ctx){.fp = fp, .m = &a->model, .every = a->every, .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
@@ -160,7 +160,7 @@ int main(int argc, char **argv)
     if (rc == SUS_RUN_STOPPED)
         return write_failed(&af, a.output);
     if (rc != SUS_RUN_OK) {
-        failure_message(msg, sizeof msg, a.method ? a.method->type->name : "exact", rc, &report);
+        failure_message(msg, sizeof msg, a.stepper ? a.stepper->name : "exact", rc, &report);
         if (a.header && fprintf(af.fp, "# incomplete: the run stopped with exit status 3: %s\n", msg) < 0)
             return write_failed(&af, a.output);
     }

@@ -3,7 +3,10 @@
 
 #include "atomic_file.h"
 #include "cli_options.h"
+#include "dsp.h"
 #include "exact_run.h"
+#include "inertia_check.h"
+#include "midpoint_sweeps.h"
 #include "stepper.h"
 
 #include <float.h>
@@ -28,6 +31,7 @@ typedef struct {
     long steps, every;
     double w0[2], inertia[9];
     int quiet, header, header_given, list;
+    long sweeps;
 } given;
 
 static const cli_spec SPEC;
@@ -65,6 +69,10 @@ static void set_recon(void *g, const cli_option *o, const char *v)
 static void set_every(void *g, const cli_option *o, const char *v)
 {
     ((given *)g)->every = cli_count(o->name, v);
+}
+static void set_sweeps(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->sweeps = cli_count(o->name, v);
 }
 static void set_output(void *g, const cli_option *o, const char *v)
 {
@@ -151,6 +159,9 @@ static const cli_option OPTIONS[] = {
     {"--reconstruct", "R", "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
                            "method that carries its own attitude (it is ignored there):", set_recon,
      more_recons},
+    {"--sweeps", "N", "with --method midpoint: solve its implicit equation by N fixed-point\n"
+                      "sweeps instead of Newton, 1 <= N <= 8 (Figure 2's readings: 1 is explicit\n"
+                      "Euler, 2 the explicit midpoint rule)", set_sweeps, NULL},
     {"--every", "K", "write step 0, every K-th step and the last step; default 1", set_every, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
     {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
@@ -234,31 +245,6 @@ static void method_list(void)
 
 /* ---- checks that need several options ---- */
 
-/* I_m (upper-left 2x2 of I) must be symmetric and positive definite, tested relative to
- * M = max |I_m entry| so that nothing overflows (the unscaled sum of |entries| is inf at
- * 1e308, and inf > 4u inf is false), and its determinant, which (ContDyn) divides by, must
- * be a finite normal number. The tolerance 4u (1 + 1 + 1 + 1) allows the rounding of four
- * entries of size <= M; sus_model_init repeats the unscaled test for the other callers. */
-static void check_inertia(const double I[9])
-{
-    for (int i = 0; i < 9; i++)
-        if (!isfinite(I[i]))
-            cli_die("--inertia: entry %d is not finite", i + 1);
-    const double M = fmax(fmax(fabs(I[0]), fabs(I[1])), fmax(fabs(I[3]), fabs(I[4])));
-    if (M == 0.0)
-        cli_die("--inertia: I_m is zero, not positive definite");
-    const double a = I[0] / M, b = I[1] / M, c = I[3] / M, d = I[4] / M;
-    if (fabs(b - c) > 4.0 * DBL_EPSILON * (fabs(a) + fabs(b) + fabs(c) + fabs(d)))
-        cli_die("--inertia: I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
-    if (!(a > 0.0) || !(a * d - b * c > 0.0))
-        cli_die("--inertia: I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[0], I[4],
-                I[1]);
-    const double det = I[0] * I[4] - I[1] * I[3];
-    if (!isfinite(det) || !(det >= DBL_MIN))
-        cli_die("--inertia: the determinant of I_m, %.17g * %.17g - %.17g * %.17g, is not a finite "
-                "normal number (entries too large or too small)", I[0], I[4], I[1], I[3]);
-}
-
 /* The nearest final time to n steps, written as briefly as it is still accepted. */
 static void time_choice(char *buf, size_t len, double n, double eps)
 {
@@ -334,6 +320,20 @@ static int resolve_method(suslov_args *a, const given *g)
     return !uses_reconstruction(a->method, &a->model);
 }
 
+/* --sweeps replaces the midpoint rule's Newton solve, so it needs that method. */
+static void check_sweeps(suslov_args *a, const given *g)
+{
+    a->stepper = a->method ? a->method->type : NULL;
+    if (!g->sweeps)
+        return;
+    if (!a->method || a->method->type != sus_step_midpoint)
+        cli_die("--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
+    if (g->sweeps > SUS_EXP_MAX_SWEEPS)
+        cli_die("--sweeps must be at most %d, got %ld", SUS_EXP_MAX_SWEEPS, g->sweeps);
+    a->sweeps = (int)g->sweeps;
+    a->stepper = sus_exp_midpoint_sweeps_type(a->sweeps);
+}
+
 static void check_run(suslov_args *a, const given *g)
 {
     char err[1024];
@@ -352,13 +352,16 @@ static void check_run(suslov_args *a, const given *g)
     /* Every t_k = k eps <= N eps must be a finite number. */
     if (!isfinite((double)a->steps * a->eps))
         cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
-    check_inertia(g->inertia);
+    char bad[512];
+    if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
+        cli_die("%s", bad);
     if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0)
         cli_die("--inertia: %s", err);
     const double w[3] = {g->w0[0], g->w0[1], 0.0};
     if (!isfinite(sus_energy(&a->model, w)) || !isfinite(sus_lagmult(&a->model, w)))
         cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
     const int ignored = resolve_method(a, g);
+    check_sweeps(a, g);
     const double T = (double)a->steps * a->eps;
     const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, T);
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
@@ -422,6 +425,9 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
                 a->method->family, a->method->type->order, SUS_RECON_NAMES[a->recon]);
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
+    if (a->sweeps)
+        fprintf(fp, "# sweeps: the implicit equation solved by %d fixed-point sweeps, not Newton\n",
+                a->sweeps);
     fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
             (double)a->steps * a->eps);
     fputs("# inertia (rows of I):", fp);

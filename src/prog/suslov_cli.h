@@ -10,6 +10,8 @@
 
 typedef struct {
     const sus_step_method *method; /* NULL for exact */
+    const sus_stepper_type *stepper; /* the step the run takes: the method's, or --sweeps' */
+    int sweeps;                  /* --sweeps N, or 0 */
     sus_recon recon;
     const char *output;          /* NULL or "-" for stdout */
     double eps;

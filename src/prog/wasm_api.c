@@ -4,9 +4,11 @@
  * the CSV's column order (k, t, w1, w2, w3, lambda, E, R11 .. R33), so that the page shows the
  * numbers the CLI prints. Inputs go through one static block the page fills. */
 #include "driver.h"
+#include "dsp.h"
 #include "exact.h"
 #include "exact_run.h"
 #include "experiments.h"
+#include "inertia_check.h"
 #include "midpoint_sweeps.h"
 #include "model.h"
 #include "registry.h"
@@ -121,6 +123,8 @@ static int setup(double eps, double nsteps, double nevery)
                    floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
     if (!isfinite(nsteps * eps))
         return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
+    if (suslov_inertia_check(input + 2, message, sizeof message) != 0) /* the CLI's own check */
+        return 2;
     if (sus_model_init(&model, input + 2, err, sizeof err) != 0) {
         snprintf(message, sizeof message, "--inertia: %s", err);
         return 2;
@@ -140,6 +144,26 @@ static int failed(int rc, const sus_run_report *rep)
                rep->t);
 }
 
+/* A run of stepper `type` (NULL: the exact solution) with reconstruction rk, step eps, N steps,
+ * rows every K-th step. */
+static int run_stepper(const sus_stepper_type *type, sus_recon rk, double eps, double nsteps, double nevery)
+{
+    const int rc = setup(eps, nsteps, nevery);
+    if (rc)
+        return rc;
+    const sus_run_config cfg = {row_model, type, rk, eps, (long)nsteps, (long)nevery};
+    sus_run_report rep;
+    const double w0[2] = {input[0], input[1]};
+    return failed(type ? sus_run(&cfg, w0, take, NULL, &rep) : sus_run_exact(&cfg, w0, take, NULL, &rep),
+                  &rep);
+}
+
+/* The reconstruction `recon`, or (-1) the method's own. */
+static sus_recon recon_or(int recon, sus_recon own)
+{
+    return recon >= 0 && recon < SUS_RECON_COUNT ? (sus_recon)recon : own;
+}
+
 /* One run of method `method` (registry index; -1 the exact solution) with reconstruction
  * `recon` (-1: the method's own), step eps, N steps, rows every K-th step. Returns 0, 2 for bad
  * input, 3 for a failed step or a blow-up (wasm_message says which, as the CLI does). */
@@ -147,42 +171,25 @@ int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
 {
     if (method < -1 || method >= sus_step_method_count())
         return say(2, "unknown method", 0, 0);
-    const int rc = setup(eps, nsteps, nevery);
-    if (rc)
-        return rc;
     const sus_step_method *me = method >= 0 ? sus_step_method_get(method) : NULL;
-    const sus_recon rk = recon >= 0 && recon < SUS_RECON_COUNT ? (sus_recon)recon
-                            : me ? me->recon : SUS_RECON_CAYLEY;
-    const sus_run_config cfg = {row_model, me ? me->type : NULL, rk, eps, (long)nsteps, (long)nevery};
-    sus_run_report rep;
-    const double w0[2] = {input[0], input[1]};
-    return failed(me ? sus_run(&cfg, w0, take, NULL, &rep)
-                     : sus_run_exact(&cfg, w0, take, NULL, &rep), &rep);
+    return run_stepper(me ? me->type : NULL, recon_or(recon, me ? me->recon : SUS_RECON_CAYLEY), eps, nsteps,
+                       nevery);
 }
 
-/* Figure 2's other readings of the midpoint rule (midpoint_sweeps.h): n fixed-point sweeps per
- * step instead of Newton. Rows carry k, t, w and E; lambda and R are not part of this reading
- * (NaN). Same returns as wasm_run. */
-int wasm_sweeps(int n, double eps, double nsteps)
+/* Figure 2's other readings of the midpoint rule, as suslov --method midpoint --sweeps n
+ * (midpoint_sweeps.h): n fixed-point sweeps per step instead of Newton, reconstruction `recon`
+ * (-1: the midpoint method's own). Same returns as wasm_run. */
+int wasm_sweeps(int n, int recon, double eps, double nsteps, double nevery)
 {
-    const int rc = n < 1 ? say(2, "sweeps must be at least 1, got %.0f", n, 0) : setup(eps, nsteps, 1.0);
-    if (rc)
-        return rc;
-    double w[2] = {input[0], input[1]};
-    for (long k = 0; k <= (long)nsteps; k++) {
-        sus_row r = {.k = k, .t = (double)k * eps, .w = {w[0], w[1], 0.0}, .lambda = NAN};
-        for (int i = 0; i < 9; i++)
-            r.R[i / 3][i % 3] = NAN;
-        put_row(&r);
-        if (!isfinite(rows[(nrows - 1) * NCOL + 6]))
-            return say(3, "blow-up at step %.0f (t = %.17g): the energy is not a finite number", (double)k,
-                       r.t);
-        double x[2];
-        sus_exp_midpoint_sweeps(row_model, eps, n, w, x);
-        w[0] = x[0];
-        w[1] = x[1];
-    }
-    return 0;
+    const sus_stepper_type *type = sus_exp_midpoint_sweeps_type(n);
+    if (!type)
+        return n < 1 ? say(2, "--sweeps must be positive, got %.0f", n, 0)
+                     : say(2, "--sweeps must be at most %.0f, got %.0f", SUS_EXP_MAX_SWEEPS, n);
+    sus_recon own = SUS_RECON_CAYLEY;
+    for (int i = 0; i < sus_step_method_count(); i++)
+        if (sus_step_method_get(i)->type == sus_step_midpoint)
+            own = sus_step_method_get(i)->recon;
+    return run_stepper(type, recon_or(recon, own), eps, nsteps, nevery);
 }
 
 /* The exact solution without the attitude: closed-form w(t_k) and lambda(w(t_k)) at the rows

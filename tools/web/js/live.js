@@ -21,7 +21,7 @@ function workerMain() {
         if (j.kind === 'limit')
             return {rc: 0, limit: Array.from(new Float64Array(e.memory.buffer, e.wasm_limit(), 2))};
         const t0 = performance.now();
-        const rc = j.kind === 'sweeps' ? e.wasm_sweeps(j.n, j.eps, j.steps) :
+        const rc = j.kind === 'sweeps' ? e.wasm_sweeps(j.n, j.recon, j.eps, j.steps, j.every) :
             j.kind === 'omega'         ? e.wasm_exact_omega(j.eps, j.steps, j.every) :
                                          e.wasm_run(j.method, j.recon, j.eps, j.steps, j.every);
         const ms = performance.now() - t0;
