@@ -231,14 +231,14 @@ double *wasm_fit(int n, double eps_max, double size)
 {
     static double out[6];
     sus_exp_order_fit f;
-    const double floor = SUS_EXP_FIT_FLOOR_REL * size;
+    const double round_off = SUS_EXP_FIT_FLOOR_REL * size;
     const int ok =
-        n >= 0 && n <= FIT_MAX && sus_exp_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, floor, &f) == 0;
+        n >= 0 && n <= FIT_MAX && sus_exp_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
     out[0] = ok ? f.slope : NAN;
     out[1] = ok ? f.intercept : NAN;
     out[2] = ok ? f.used : 0;
     out[3] = ok ? f.eps_lo : NAN;
     out[4] = ok ? f.eps_hi : NAN;
-    out[5] = floor;
+    out[5] = round_off;
     return out;
 }
