@@ -284,7 +284,7 @@ WASM_AR   ?= llvm-ar
 WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
 WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
 WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about \
-                method_recon run sweeps exact_omega
+                method_recon recon_count recon_name run sweeps exact_omega fit_input fit
 .PHONY: wasm
 wasm: $(WASM)
 

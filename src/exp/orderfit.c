@@ -1,14 +1,34 @@
 #include "orderfit.h"
 
-#include <gsl/gsl_fit.h>
 #include <math.h>
 
 #define ORDERFIT_MAXPTS 64
 
+/* The least-squares line y = a + b x through m points: b = cov(x, y) / var(x), a = mean y - b mean x,
+ * with the means and the centred second moments accumulated as running means (each update
+ * adds (v - mean) / (i + 1)), the order of operations of GSL's gsl_fit_linear, so that the
+ * ledger's slopes keep their bits. Written here, not linked from GSL, because the browser's
+ * WebAssembly build of this file (the convergence page) has no GSL. */
+static void line_fit(const double *x, const double *y, int m, double *a, double *b)
+{
+    double mx = 0.0, my = 0.0, sxx = 0.0, sxy = 0.0;
+    for (int i = 0; i < m; i++) {
+        mx += (x[i] - mx) / (i + 1.0);
+        my += (y[i] - my) / (i + 1.0);
+    }
+    for (int i = 0; i < m; i++) {
+        const double dx = x[i] - mx, dy = y[i] - my;
+        sxx += (dx * dx - sxx) / (i + 1.0);
+        sxy += (dx * dy - sxy) / (i + 1.0);
+    }
+    *b = sxy / sxx;
+    *a = my - mx * *b;
+}
+
 int sus_exp_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
                      sus_exp_order_fit *fit)
 {
-    double x[ORDERFIT_MAXPTS], y[ORDERFIT_MAXPTS], c00, c01, c11, sumsq;
+    double x[ORDERFIT_MAXPTS], y[ORDERFIT_MAXPTS];
     int m = 0;
     fit->eps_lo = INFINITY;
     fit->eps_hi = 0.0;
@@ -30,6 +50,6 @@ int sus_exp_fit_order(const double *eps, const double *err, int n, double eps_ma
     fit->used = m;
     if (m < 3)
         return -1;
-    gsl_fit_linear(x, 1, y, 1, (size_t)m, &fit->intercept, &fit->slope, &c00, &c01, &c11, &sumsq);
+    line_fit(x, y, m, &fit->intercept, &fit->slope);
     return 0;
 }

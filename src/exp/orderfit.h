@@ -1,5 +1,6 @@
 /* Order of convergence as the least-squares slope of log(error) against log(eps)
- * (gsl_fit_linear), over the points that are neither pre-asymptotic nor at round-off. */
+ * (GSL's gsl_fit_linear, written out in orderfit.c for the browser's build), over the points
+ * that are neither pre-asymptotic nor at round-off. */
 #ifndef SUS_EXP_ORDERFIT_H
 #define SUS_EXP_ORDERFIT_H
 

@@ -11,6 +11,7 @@
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
 #include "model.h"
+#include "orderfit.h"
 #include "registry.h"
 
 #include <math.h>
@@ -35,6 +36,8 @@ int wasm_method_count(void) { return sus_step_method_count(); }
 const char *wasm_method_name(int i) { return sus_step_method_get(i)->type->name; }
 const char *wasm_method_about(int i) { return sus_step_method_get(i)->about; }
 int wasm_method_recon(int i) { return (int)sus_step_method_get(i)->recon; }
+int wasm_recon_count(void) { return SUS_RECON_COUNT; }
+const char *wasm_recon_name(int i) { return i >= 0 && i < SUS_RECON_COUNT ? SUS_RECON_NAMES[i] : ""; }
 
 /* The other reading of the printed inertia (experiments.h): the input body's third row replaced
  * by its third column. */
@@ -214,4 +217,28 @@ int wasm_exact_omega(double eps, double nsteps, double nevery)
         if (k == steps)
             return 0;
     }
+}
+
+/* The convergence page's fit: the page writes n <= FIT_MAX steps eps_i at fit_in[i] and their
+ * errors at fit_in[FIT_MAX + i], and sus_exp_fit_order (orderfit.c, the ledger's fit) fits
+ * the points with eps <= eps_max above the round-off floor 1000 u size. Returns slope,
+ * intercept, points used, the eps range fitted and the floor (slope NaN when no fit). */
+enum { FIT_MAX = 64 };
+static double fit_in[2 * FIT_MAX];
+double *wasm_fit_input(void) { return fit_in; }
+
+double *wasm_fit(int n, double eps_max, double size)
+{
+    static double out[6];
+    sus_exp_order_fit f;
+    const double round_off = SUS_EXP_FIT_FLOOR_REL * size;
+    const int ok =
+        n >= 0 && n <= FIT_MAX && sus_exp_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
+    out[0] = ok ? f.slope : NAN;
+    out[1] = ok ? f.intercept : NAN;
+    out[2] = ok ? f.used : 0;
+    out[3] = ok ? f.eps_lo : NAN;
+    out[4] = ok ? f.eps_hi : NAN;
+    out[5] = round_off;
+    return out;
 }

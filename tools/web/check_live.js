@@ -1,7 +1,9 @@
 // make check-web, the live pages: the numbers the Figure 2 page computes in the browser (the
 // library compiled to WebAssembly) against the suslov command's CSV for the same method, step,
 // body and w(0), to the last printed digit (%.17g prints every double exactly, so the test is
-// bit equality); bad input gets the CLI's message; a re-run of Figure 2 to t = 200 is timed
+// bit equality), the midpoint rule by fixed-point sweeps against suslov --sweeps, the convergence
+// page's fitted order against the ledger's; bad input gets the CLI's message (the CLI's own check
+// for the inertia); a re-run of Figure 2 to t = 200 is timed
 // (a PASS/MISS line against 200 ms, never a failure).
 'use strict';
 const {execFileSync, spawnSync} = require('child_process');
@@ -18,13 +20,14 @@ const POINTS = [
 // Columns of a row: k t w1 w2 w3 lambda E | R11 .. R33
 const W_COLS = 7;
 
-function cli(suslov, method, eps, steps, body, w0) {
+// The CLI's rows for the options `how` (--method M, and --sweeps N) and the rest.
+function cli(suslov, how, eps, steps, body, w0, every) {
     const out = execFileSync(
         suslov,
-        [
-            '--method', method, '--eps', eps, '--steps', String(steps), '--inertia', body, '--omega0', w0,
-            '--quiet'
-        ],
+        how.concat([
+            '--eps', eps, '--steps', String(steps), '--inertia', body, '--omega0', w0, '--every',
+            String(every || 1), '--quiet'
+        ]),
         {encoding: 'utf8', maxBuffer: 1 << 28});
     return out.split('\n')
         .filter((l) => l && !l.startsWith('#'))
@@ -74,54 +77,114 @@ async function submit(page, fields) {
         }));
 }
 
-// R of the exp-mid reconstruction calls sin and cos, which the browser module takes from
-// wasi-libc (musl) and the CLI from glibc: each is within 1 ulp of the true value in both, so
-// one step's rotation may differ by a few u and N steps by at most about N of them. The bound
-// 10 N u (|R| = 1) is that estimate with room for the products around the two calls.
-const U = Math.pow(2, -53);
-function compareRun(check, label, want, got, libmBound) {
-    let wbad = 0, rbad = 0, rmax = 0, rabs = 0;
+// Every column of every row, bit for bit: the browser's module and the CLI compile the same C
+// and compute the same bits (the exponential map's sin and cos are the project's own,
+// src/core/so3_trig.c, not the two C libraries'), so any difference is a defect.
+function compareRun(check, label, want, got) {
+    let bad = 0, umax = 0;
     want.forEach((row, i) => row.forEach((v, c) => {
         const u = ulps(got[i * 16 + c], v);
-        if (c < W_COLS)
-            wbad += u !== 0;
-        else if (u) {
-            rbad++;
-            rmax = Math.max(rmax, u);
-            rabs = Math.max(rabs, Math.abs(got[i * 16 + c] - v));
-        }
+        bad += u !== 0;
+        umax = Math.max(umax, u);
     }));
     check(
-        got.length === want.length * 16 && wbad === 0,
-        `${label}: k, t, w, lambda, E of ${want.length} rows equal the CLI's CSV bit for bit`,
-        `${wbad} values differ`);
-    const detail = `${rbad} of ${want.length * 9} entries differ, by at most ${rmax} ulp, |dR| <= ${
-                       rabs.toExponential(2)} ` +
-        `= ${(rabs / (want.length * U)).toFixed(3)} N u`;
-    if (libmBound) {
-        console.log(`check-web: ${label}: R (exp-mid, two libms): ${detail}`);
-        check(
-            rabs <= 10 * want.length * U,
-            `${label}: R within 10 N u of the CLI's (exp-mid: sin, cos of two libms)`, detail);
-    } else {
-        check(rbad === 0, `${label}: R of ${want.length} rows equals the CLI's CSV bit for bit`, detail);
-    }
+        got.length === want.length * 16 && bad === 0,
+        `${label}: all 16 columns of ${want.length} rows equal the CLI's CSV bit for bit`,
+        `${bad} of ${want.length * 16} values differ, by at most ${umax} ulp; ${got.length / 16} rows`);
 }
 
 async function comparePoints(page, suslov, check) {
-    const methods = await page.evaluate(() => Live.methods());
     for (const [a, b, eps, T, body, w0] of POINTS) {
         const r =
             await submit(page, {a, b, eps, T, reading: 'custom', inertia: body, omega0: w0, sweeps: '0'});
         if (!check(r.error === '', `live Figure 2 runs ${a}, ${b} at eps ${eps}`, r.error)) continue;
         const steps = Math.round(Number(T) / Number(eps));
         [a, b].forEach((m, j) => {
-            const me = methods.find((x) => x.name === m);
             compareRun(
-                check, `live ${m} eps ${eps} body ${body}`, cli(suslov, m, eps, steps, body, w0),
-                r.last.results[j].rows, me.recon === 2);
+                check, `live ${m} eps ${eps} body ${body}`, cli(suslov, ['--method', m], eps, steps, body, w0),
+                r.last.results[j].rows);
         });
     }
+}
+
+// Figure 2's other readings of the midpoint rule: method A by n fixed-point sweeps against
+// suslov --method midpoint --sweeps n (k, t, w, lambda, E and R).
+const SWEEP_POINTS = [
+    ['1', '1', '200', '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5'],
+    ['2', '1', '200', '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5'],
+    ['5', '0.5', '40', '1.3,-0.2,0.5,-0.2,0.9,0.1,-0.3,0.6,1.1', '-0.5,0.3'],
+];
+async function compareSweeps(page, suslov, check) {
+    for (const [n, eps, T, body, w0] of SWEEP_POINTS) {
+        const r = await submit(
+            page, {a: 'midpoint', b: 'variational', eps, T, reading: 'custom', inertia: body, omega0: w0, sweeps: n});
+        if (!check(r.error === '', `live Figure 2 runs the midpoint rule by ${n} sweeps at eps ${eps}`, r.error))
+            continue;
+        const steps = Math.round(Number(T) / Number(eps));
+        compareRun(
+            check, `live midpoint, ${n} sweeps, eps ${eps} body ${body}`,
+            cli(suslov, ['--method', 'midpoint', '--sweeps', n], eps, steps, body, w0), r.last.results[0].rows);
+    }
+}
+
+// The attitude page, where the reader picks the reconstruction: each one on a general body,
+// against suslov --reconstruct R (rows every ceil(N / 600)-th step, as the page keeps them).
+const RECON_POINTS = [
+    ['midpoint', 'cayley-mid', '0.5', '60', '3,1,0,1,2,0,0.5,0.7,1', '0.2,0.9'],
+    ['rk4', 'exp-mid', '0.25', '30', '1.3,-0.2,0.5,-0.2,0.9,0.1,-0.3,0.6,1.1', '-0.5,0.3'],
+    ['comp4-s5', 'cayley', '0.5', '40', '2,0.3,0.1,0.3,1.5,0.2,0.4,-0.3,1', '0.7,-0.2'],
+    ['variational', 'exp-mid', '0.1', '200', '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5'],
+];
+async function compareRecons(ctx, webdir, suslov, check) {
+    const page = await ctx.newPage();
+    await page.goto(pathToFileURL(path.join(webdir, 'live-attitude.html')).href, {waitUntil: 'load'});
+    for (const [m, recon, eps, T, body, w0] of RECON_POINTS) {
+        const r = await submit(page, {m, recon, eps, T, reading: 'custom', inertia: body, omega0: w0});
+        if (!check(r.error === '', `live attitude runs ${m} with ${recon} at eps ${eps}`, r.error)) continue;
+        const steps = Math.round(Number(T) / Number(eps)), every = Math.max(1, Math.ceil(steps / 600));
+        compareRun(
+            check, `live ${m} + ${recon} eps ${eps} body ${body}`,
+            cli(suslov, ['--method', m, '--reconstruct', recon], eps, steps, body, w0, every),
+            r.last.results[0].rows);
+    }
+    await page.close();
+}
+
+// The convergence page's fitted order (the C fit, orderfit.c, in the module) for the ledger's
+// data: the paper's body, eps = 2^-2 .. 2^-10 (T/N with N = round(T/eps)), T = 10. It must equal
+// the ledger's global-order line to the ledger's printed digits, and equal bit for bit the same
+// fit of the errors computed from the CLI's CSV (method and exact runs) for the same eps.
+async function compareFit(ctx, webdir, suslov, claims, check) {
+    const page = await ctx.newPage();
+    await page.goto(pathToFileURL(path.join(webdir, 'live-convergence.html')).href, {waitUntil: 'load'});
+    for (const m of ['euler', 'midpoint', 'rk4', 'variational']) {
+        const r = await submit(page, {m, epsmax: '0.25', halvings: '8', T: '10', reading: 'row',
+                                      inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', omega0: '0.4,0.5'});
+        const slope = Number(await page.evaluate(() => document.getElementById('order').dataset.slope));
+        const ledger = claims.get(`global-order-${m}`);
+        if (!check(r.error === '' && ledger !== undefined, `live convergence runs ${m}`, r.error || 'no ledger line'))
+            continue;
+        check(
+            Number(slope.toPrecision(6)) === Number(ledger),
+            `live convergence, ${m}: fitted order ${slope} is the ledger's global-order-${m} (${ledger})`, '');
+        const eps = [], err = [];
+        let size = 0;
+        for (let j = 0; j <= 8; j++) {
+            const N = Math.round(10 / (0.25 / 2 ** j)), h = String(10 / N);
+            const a = cli(suslov, ['--method', m], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5', N).pop();
+            const b = cli(suslov, ['--method', 'exact'], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5', N).pop();
+            eps.push(10 / N);
+            err.push(Math.hypot(a[2] - b[2], a[3] - b[3]));
+            size = Math.max(size, Math.hypot(b[2], b[3]));
+        }
+        const fit = await page.evaluate(
+            (j) => Live.run([j]).then((res) => res[0].fit), {kind: 'fit', eps, err, epsMax: Infinity, size});
+        check(
+            Object.is(fit[0], slope),
+            `live convergence, ${m}: the same fit of the CLI's errors gives the page's order bit for bit`,
+            `CLI data ${fit[0]}, page ${slope}`);
+    }
+    await page.close();
 }
 
 // Bad input: the page shows what the CLI says on its one line (without "suslov: error: " and
@@ -134,6 +197,9 @@ async function badInput(page, suslov, check) {
             {eps: '1', reading: 'custom', inertia: '1,2,0,2,1,0,0.2,0.1,1'},
             ['--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia', '1,2,0,2,1,0,0.2,0.1,1']
         ],
+        ...['0,0,0,0,0,0,0.2,0.1,1', '1,0.1,0.2,0.10000000000001,1,0.2,0.2,0.1,1', '1e200,0,0,0,1e200,0,0,0,1']
+            .map((I) => [{eps: '1', reading: 'custom', inertia: I},
+                         ['--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia', I]]),
         [{eps: '1e-9', inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1'}, null],
     ];
     for (const [fields, argv] of cases) {
@@ -153,10 +219,11 @@ async function badInput(page, suslov, check) {
     }
 }
 
-async function run(ctx, webdir, suslov, check) {
+async function run(ctx, webdir, suslov, claims, check) {
     const page = await ctx.newPage();
     await page.goto(pathToFileURL(path.join(webdir, 'live-fig2.html')).href, {waitUntil: 'load'});
     await comparePoints(page, suslov, check);
+    await compareSweeps(page, suslov, check);
     await badInput(page, suslov, check);
     // A re-run of the paper's Figure 2 to t = 200, from Run to the panels drawn, as the page
     // times it (performance.now); median of 5 (2 cores shared by other work: say so).
@@ -187,6 +254,8 @@ async function run(ctx, webdir, suslov, check) {
     const ok = times.length === 5 && med < 200;
     console.log(`check-web: ${ok ? 'PASS' : 'MISS'} Figure 2 re-run to t = 200 under 200 ms (median of 5)`);
     await page.close();
+    await compareFit(ctx, webdir, suslov, claims, check);
+    await compareRecons(ctx, webdir, suslov, check);
 }
 
 module.exports = {run};

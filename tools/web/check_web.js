@@ -184,7 +184,12 @@ async function main() {
         const missing = claims.filter((c) => !(ids['ledger.html'] || new Set()).has('claim-' + c));
         check(missing.length === 0, `ledger.html: a row for each of the ${claims.length} claims`, missing.slice(0, 5).join(', '));
         await checkLedger(page, webdir, claimsTsv, lineText, check);
-        if (suslov) await checkLive.run(ctx, webdir, suslov, check);
+        if (suslov) {
+            // id -> measured value as printed (%g), for the live pages' comparison with the ledger
+            const measured = new Map(fs.readFileSync(claimsTsv, 'utf8').split('\n').slice(1)
+                                         .filter((l) => l.trim()).map((l) => l.split('\t')).map((f) => [f[0], f[3]]));
+            await checkLive.run(ctx, webdir, suslov, measured, check);
+        }
         else console.log('check-web: no SUSLOV given: the live pages were not compared with the CLI');
         await page.goto(pathToFileURL(path.join(webdir, 'figures.html')).href, { waitUntil: 'load' });
         const imgs = await page.evaluate(() => Array.from(document.images).map((i) => [i.getAttribute('src'), i.naturalWidth]));

@@ -71,7 +71,8 @@ def convergence_page(site):
         "each run goes to T and its error |&omega;<sub>N</sub> &minus; &omega;(T)| against the exact "
         "solution is plotted. The fitted order is the least-squares slope of log error against log "
         "&epsilon; over the points above the round-off floor (error &gt; 10<sup>3</sup> u "
-        "|&omega;(T)|, u = 2<sup>&minus;53</sup>).</p>",
+        "|&omega;(T)|, u = 2<sup>&minus;53</sup>; at least three), computed by the ledger's own fit, "
+        "<code>src/exp/orderfit.c</code>, in the WebAssembly module.</p>",
         form([method_select("m", "method", "rk4"), field("epsmax", "&epsilon; max", "0.25", 6),
               field("halvings", "halvings", "8", 4), field("T", "T", "10", 5), body_fields()]),
         "<div class='panels' id='panels'></div><p id='order' class='result'></p>"
@@ -95,7 +96,9 @@ def attitude_page(site):
         "<p>The body frame reconstructed by a method (left) beside the exact attitude R(t) (right), "
         "from the same WebAssembly run; move the slider through time. The OSMesa animation "
         "(<code>make animation</code>) stays the reference rendering.</p>",
-        form(run_fields("0.5", "60", "midpoint") + [body_fields()]),
+        form(run_fields("0.5", "60", "midpoint") + [
+            '<label>reconstruction <select name="recon" data-recons><option value="-1">the method\'s own'
+            '</option></select></label>', body_fields()]),
         "<div class='attitude'><canvas id='gl' width='640' height='320'></canvas></div>"
         "<label class='slider'>t <input type='range' id='k' min='0' max='0' value='0'> "
         "<span id='kt'></span></label><p id='dist' class='result'></p>",

@@ -15,7 +15,15 @@ function workerMain() {
         while (b[q]) q++;
         return new TextDecoder().decode(b.subarray(p, q));
     };
+    // The C fit of orderfit.c over the points (eps, err): slope, intercept, used, eps range, floor.
+    function fit(j) {
+        const FIT_MAX = 64, buf = new Float64Array(e.memory.buffer, e.wasm_fit_input(), 2 * FIT_MAX);
+        buf.set(j.eps);
+        buf.set(j.err, FIT_MAX);
+        return {rc: 0, fit: Array.from(new Float64Array(e.memory.buffer, e.wasm_fit(j.eps.length, j.epsMax, j.size), 6))};
+    }
     function job(j) {
+        if (j.kind === 'fit') return fit(j);
         new Float64Array(e.memory.buffer, e.wasm_input(), 11).set(j.w0.concat(j.inertia));
         if (j.column) e.wasm_inertia_column();
         if (j.kind === 'limit')
@@ -47,7 +55,9 @@ function workerMain() {
                     recon: e.wasm_method_recon(i),
                     index: i
                 });
-            self.postMessage({ready: true, methods});
+            const recons = [];
+            for (let i = 0; i < e.wasm_recon_count(); i++) recons.push(text(e.wasm_recon_name(i)));
+            self.postMessage({ready: true, methods, recons});
             return;
         }
         const out = [];
@@ -61,13 +71,14 @@ function workerMain() {
     };
 }
 
-let worker = null, ready = null, pending = null, nextId = 1;
+let worker = null, ready = null, pending = null, nextId = 1, reconNames = [];
 function start() {
     const blob = new Blob(['(' + workerMain.toString() + ')()'], {type: 'text/javascript'});
     worker = new Worker(URL.createObjectURL(blob));
     ready = new Promise((resolve) => {
         worker.onmessage = (ev) => {
             if (ev.data.ready) {
+                reconNames = ev.data.recons;
                 resolve(ev.data.methods);
                 return;
             }
@@ -150,6 +161,9 @@ function bindForm(form, handler) {
             for (const m of ms) sel.add(new Option(m.name, m.index, false, m.name === sel.dataset.default));
             sel.title = 'registered methods of src/methods/registry.c';
         }
+        // the reconstructions of src/core/reconstruct.c, after "the method's own" (-1)
+        for (const sel of form.querySelectorAll('select[data-recons]'))
+            reconNames.forEach((r, i) => sel.add(new Option(r, i)));
         form.dataset.ready = '1';
     });
     form.stop.onclick = () => {

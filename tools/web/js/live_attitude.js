@@ -91,7 +91,7 @@ async function draw(f) {
     if (!(steps >= 1))
         throw new Error(`--time ${T} with --eps ${eps} gives ${steps} steps; need at least 1`);
     const every = Math.max(1, Math.ceil(steps / 600));
-    const job = Object.assign({kind: 'run', method: m, recon: -1, eps, steps, every}, Live.body(f));
+    const job = Object.assign({kind: 'run', method: m, recon: Number(f.recon.value), eps, steps, every}, Live.body(f));
     runs = await Live.runAll([job, Object.assign({}, job, {method: -1})], f);
     slider.max = String(runs[0].rows.length / Live.NCOL - 1);
     slider.value = slider.max;

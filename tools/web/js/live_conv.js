@@ -1,20 +1,10 @@
 // Convergence, live: a method's global error at T against the exact solution for
-// eps = eps_max 2^-j, and the least-squares slope of log error on log eps (the fitted order).
+// eps = eps_max 2^-j, and the least-squares slope of log error on log eps (the fitted order), by
+// the ledger's own fit (src/exp/orderfit.c in the WebAssembly module), above its round-off floor
+// 1000 u |w(T)|.
 'use strict';
 (function() {
 const form = document.querySelector('form.live');
-const U = Math.pow(2, -53), FLOOR = 1e3;  // points below FLOOR u |w(T)| are round-off, not fitted
-
-function slope(xs, ys) {
-    const n = xs.length, mx = xs.reduce((a, b) => a + b, 0) / n, my = ys.reduce((a, b) => a + b, 0) / n;
-    let sxy = 0, sxx = 0;
-    for (let i = 0; i < n; i++) {
-        sxy += (xs[i] - mx) * (ys[i] - my);
-        sxx += (xs[i] - mx) ** 2;
-    }
-    return sxy / sxx;
-}
-
 async function draw(f) {
     const m = Number(f.m.value), emax = Live.number('eps max', f.epsmax.value),
           T = Live.number('--time', f.T.value);
@@ -30,18 +20,26 @@ async function draw(f) {
     }
     const res = await Live.runAll(jobs, f);
     const pts = [];
+    let size = 0;
     for (let j = 0; j < res.length; j += 2) {
         const a = res[j].rows, b = res[j + 1].rows, n = a.length - Live.NCOL;
-        const err = Math.hypot(a[n + 2] - b[n + 2], a[n + 3] - b[n + 3]);
-        pts.push({eps: jobs[j].eps, err, fitted: err > FLOOR * U * Math.hypot(b[n + 2], b[n + 3])});
+        pts.push({eps: jobs[j].eps, err: Math.hypot(a[n + 2] - b[n + 2], a[n + 3] - b[n + 3])});
+        size = Math.max(size, Math.hypot(b[n + 2], b[n + 3]));
     }
-    const use = pts.filter((p) => p.fitted);
-    const p =
-        use.length >= 2 ? slope(use.map((q) => Math.log(q.eps)), use.map((q) => Math.log(q.err))) : NaN;
-    document.getElementById('order').textContent = use.length >= 2 ?
-        `fitted order ${p.toFixed(3)} over ${use.length} points (ε from ${
-            use[use.length - 1].eps.toPrecision(3)} to ${use[0].eps.toPrecision(3)})` :
-        'fewer than two points above the round-off floor: no order fitted';
+    const [fit] = await Live.runAll(
+        [{kind: 'fit', eps: pts.map((q) => q.eps), err: pts.map((q) => q.err), epsMax: Infinity, size}], f);
+    const [p, , used, lo, hi, floor] = fit.fit;
+    // the points the C fit took: those inside its eps range and above its floor
+    pts.forEach((q) => {
+        q.fitted = used > 0 && q.eps >= lo && q.eps <= hi && q.err > floor;
+    });
+    const use = pts.filter((q) => q.fitted);
+    const order = document.getElementById('order');
+    order.dataset.slope = String(p);
+    order.textContent = used > 0 ?
+        `fitted order ${p.toPrecision(6)} over ${used} points (ε from ${lo.toPrecision(3)} to ${
+            hi.toPrecision(3)})` :
+        'fewer than three points above the round-off floor: no order fitted';
     Plot.plot(document.getElementById('panels'), {
         title: 'global error at T',
         xlabel: 'ε',
