@@ -1033,8 +1033,8 @@ static void draw_wp(cairo_t *cr, void *vctx)
             sus_plot_extend(&y0, &y1, p ? S[i]->err_R : S[i]->err_w, (size_t)S[i]->n, 1, 1);
         }
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, WP_PANEL_H, x0, x1, fmax(y0, 1e-17),
-                       fmin(y1, 1.0), 1, 1);
+        sus_plot_axes_init(&ax, cr, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, WP_PANEL_H, x0, x1,
+                           fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
         sus_plot_pad(&ax.x0, &ax.x1, 1);
         sus_plot_pad(&ax.y0, &ax.y1, 1);
         sus_plot_frame(&ax, "seconds per run",

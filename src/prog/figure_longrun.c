@@ -141,7 +141,8 @@ static void draw(cairo_t *cr, void *vctx)
                           : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0, C[i].name);
     for (int p = 0; p < 2; p++) {
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4, 1, 1);
+        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4,
+                           1, 1);
         const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
