@@ -14,7 +14,7 @@
 #define DT SUS_EXP_INERTIA_DT
 #define NPTS 1201     /* T_END / DT + 1, checked in main */
 #define FIG_W 530.0
-#define FIG_H 380.0
+#define FIG_H 340.0
 
 typedef struct {
     sus_exp_series row, col;
