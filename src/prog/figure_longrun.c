@@ -151,12 +151,7 @@ static void draw(cairo_t *cr, void *vctx)
         for (int i = 0; i < nc; i++)
             sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
-    const int half = (nc + 1) / 2; /* the legend in two columns below the panels */
-    sus_plot_axes la;
-    sus_plot_axes_init(&la, cr, 12, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, st, half, 0);
-    sus_plot_axes_init(&la, cr, W / 2 + 4, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, st + half, nc - half, 0);
+    sus_plot_legend_columns(cr, 12, LR_LEGEND_Y, W - 8, st, nc);
 }
 
 /* One row per curve and sample. */
