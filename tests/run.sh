@@ -48,6 +48,8 @@ if [ "$mode" != test ]; then
     count claims "$B/claims.out"
     # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
     run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
+    # Every tolerance of the ledger has a rule with its reason in paper/tolerances.tsv.
+    run paper_tolerances sh tools/paper_tolerances.sh "$B/claims.tsv" paper/tolerances.tsv "$B/tolerances.tex"
     # claims.tsv is the TSV (its header first), not the printed table
     if head -1 "$B/claims.tsv" | grep -q '^id	paper_ref	quantity	measured	expected	tolerance	verdict'; then
         echo "claims_tsv: 1 passed, 0 failed" >>"$sum"

@@ -19,8 +19,8 @@ head_row "$O/findings.tex" 'The findings, one row per independent finding, with 
     '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
     '& finding & verdict & what we measure (ledger lines)'
 awk -F'\t' 'NR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
-    ids = $4; gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
-    printf "%s & %s & %s & %s {\\scriptsize(\\texttt{%s})}\\\\\n", $1, $2, v, $5, ids }' paper/findings.tsv >>"$O/findings.tex"
+    ids = $4; n = split(ids, a, " "); gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
+    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s})}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids }' paper/findings.tsv >>"$O/findings.tex"
 printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]

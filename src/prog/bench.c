@@ -1069,13 +1069,8 @@ static void draw_wp(cairo_t *cr, void *vctx)
     for (int i = 0; i < nseries; i++)
         if (S[i]->ours)
             ours[nours++] = st[i];
-    const int half = (nours + 1) / 2;
-    sus_plot_axes la;
-    sus_plot_axes_init(&la, cr, 12, WP_LEGEND_Y, WP_W / 2 - 20, 120, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, ours, half, 0);
-    sus_plot_axes_init(&la, cr, WP_W / 2 + 4, WP_LEGEND_Y, WP_W / 2 - 20, 120, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, ours + half, nours - half, 0);
-    draw_wp_notes(cr, WP_LEGEND_Y + 11.0 * half + 22);
+    sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
+    draw_wp_notes(cr, WP_LEGEND_Y + 11.0 * ((nours + 1) / 2) + 22);
     free(st);
     free(ours);
     free(rgb);

@@ -19,7 +19,7 @@
 #define N_STEPS 200   /* T_END / EPS, checked in main */
 #define NSWEEP SUS_EXP_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
 #define FIG_W 530.0
-#define FIG_H 440.0
+#define FIG_H 380.0
 #define NCURVE 6      /* Newton, n = 1, 2, 3, 5, variational */
 
 static const int curve_sweeps[NCURVE] = {0, 1, 2, 3, 5, -1}; /* 0 = Newton, -1 = variational */

@@ -14,7 +14,7 @@
 #define DT SUS_EXP_INERTIA_DT
 #define NPTS 1201     /* T_END / DT + 1, checked in main */
 #define FIG_W 530.0
-#define FIG_H 380.0
+#define FIG_H 340.0
 
 typedef struct {
     sus_exp_series row, col;
@@ -62,7 +62,7 @@ static void draw(cairo_t *cr, void *vctx)
     hi = -INFINITY;
     sus_plot_extend(&lo, &hi, f->dist, f->row.n, 1, 0);
     sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0, T_END, 0.0, hi, 0, 0);
-    sus_plot_frame(&ax, "t", "|\xcf\x89_row \xe2\x88\x92 \xcf\x89_col|", "(c)");
+    sus_plot_frame(&ax, "t", "|\xcf\x89(row) \xe2\x88\x92 \xcf\x89(column)|", "(c)");
     const sus_plot_style d = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 0, SUS_PLOT_NONE, 0, NULL);
     sus_plot_series(&ax, f->row.t, f->dist, f->row.n, 1, &d);
     /* (d): the key of (a); the rates and limits are in the caption */

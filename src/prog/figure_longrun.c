@@ -141,8 +141,8 @@ static void draw(cairo_t *cr, void *vctx)
                           : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0, C[i].name);
     for (int p = 0; p < 2; p++) {
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4, 1,
-                           1);
+        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4,
+                           1, 1);
         const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
@@ -151,12 +151,7 @@ static void draw(cairo_t *cr, void *vctx)
         for (int i = 0; i < nc; i++)
             sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
-    const int half = (nc + 1) / 2; /* the legend in two columns below the panels */
-    sus_plot_axes la;
-    sus_plot_axes_init(&la, cr, 12, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, st, half, 0);
-    sus_plot_axes_init(&la, cr, W / 2 + 4, LR_LEGEND_Y, W / 2 - 20, 80, 0, 1, 0, 1, 0, 0);
-    sus_plot_legend(&la, st + half, nc - half, 0);
+    sus_plot_legend_columns(cr, 12, LR_LEGEND_Y, W - 8, st, nc);
 }
 
 /* One row per curve and sample. */

@@ -16,6 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* The width of the text block at the page's figure scale; the caption carries the title. */
+#define FIG_W 540.0
+#define FIG_H 480.0
 #define EPS_A 4.0     /* explicit Euler at h = eps k = 0.58: its steps visibly leave the exact curve */
 #define NSTEP_A 10
 #define NSUB 40       /* samples per period */
@@ -53,10 +56,7 @@ static const double *colour(int i)
 static void draw(cairo_t *cr, void *vctx)
 {
     const pert_fig *f = vctx;
-    const double W = 600, H = 560;
-    sus_plot_text(cr, W / 2, 14,
-                  "A method is the period map of an \xce\xb5-periodic perturbation (Section 6)", 11, 0.5, 0.5,
-                  1);
+    const double W = FIG_W, H = FIG_H;
     const sus_plot_style sp = sus_plot_style_of(SUS_PLOT_BLUE, 1.2, 0, SUS_PLOT_NONE, 0,
                                                 "x' = h(x) + \xce\xb5\xe1\xb5\x96 d, rk8pd");
     const sus_plot_style se =
@@ -301,5 +301,5 @@ int main(int argc, char **argv)
              "2 with the\n"
              "symmetric reconstructions. Data: data/perturbation.csv, data/perturbation_sizes.csv.\n",
              NSTEP_A, EPS_A, gap, FLOOR_G);
-    return sus_plot_fig_write_figure(argv[1], "perturbation", 600, 560, draw, &f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "perturbation", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

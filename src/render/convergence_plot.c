@@ -16,6 +16,9 @@
 #define NJ SUS_EXP_CONV_NJ
 static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define T_GLOBAL 10.0
+/* Three rows of panels at the page's figure scale; the caption says what is local and global. */
+#define CONV_W 560.0
+#define CONV_H 620.0
 
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
@@ -59,7 +62,7 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
         free(leg);
         return;
     }
-    const double W = 560, H = 700;
+    const double W = CONV_W, H = CONV_H;
     double lo = INFINITY, hi = -INFINITY;
     for (int m = 0; m < nm; m++) {
         if (!f->spec->select(sus_step_method_get(m)))
@@ -123,9 +126,6 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
 static void draw(cairo_t *cr, void *vctx)
 {
     const sus_plot_conv_fig *f = vctx;
-    sus_plot_text(cr, 280, 14,
-              "Convergence against \xce\xb5 (local: one step from exact data; global: at t = 10)", 11, 0.5,
-              0.5, 1);
     const int *s_loc = f->spec->slopes_local, *s_glob = f->spec->slopes_global, ns = f->spec->nslopes;
     const int *s_so3loc = f->spec->slopes_so3_local, *s_so3glob = f->spec->slopes_so3_global,
               nso3 = f->spec->nslopes_so3;
@@ -205,5 +205,5 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    return sus_plot_fig_write_figure(argv[1], spec->name, 560, 700, draw, f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, CONV_H, draw, f, cap) != 0;
 }

@@ -421,6 +421,16 @@ void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, i
     cairo_restore(cr);
 }
 
+void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const sus_plot_style *st, int n)
+{
+    const int half = (n + 1) / 2;
+    sus_plot_axes la;
+    sus_plot_axes_init(&la, cr, x, y, w / 2 - 16, 1, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, st, half, 0);
+    sus_plot_axes_init(&la, cr, x + w / 2, y, w / 2 - 16, 1, 0, 1, 0, 1, 0, 0);
+    sus_plot_legend(&la, st + half, n - half, 0);
+}
+
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope, const char *label)
 {
     cairo_t *cr = ax->cr;

@@ -76,6 +76,9 @@ void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, dou
 /* A legend box: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right, 4 middle-left,
  * 5 middle-right. */
 void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, int corner);
+/* The legend of a figure in two columns below its panels, each half of width w from x, top at y:
+ * a portrait page has room for one long legend only side by side. */
+void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const sus_plot_style *st, int n);
 /* A dashed grey segment of slope `slope` in log-log axes from xa to (xb, yb), labelled at xa. */
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope,
                     const char *label);
