@@ -41,10 +41,6 @@ static void draw(cairo_t *cr, void *vctx)
         {f->ex.lambda, f->mid.lambda, &mid, "\xce\xbb, midpoint", "(c)"},
         {f->ex.lambda, f->var.lambda, &var, "\xce\xbb, variational", "(d)"},
     };
-    sus_plot_text(cr, W / 2, 14,
-              "The paper's Figure 1 redrawn: "
-              "midpoint rule and variational integrator, \xce\xb5 = 10\xe2\x81\xbb\xc2\xb3",
-              11, 0.5, 0.5, 1);
     for (int p = 0; p < 4; p++) {
         sus_plot_axes ax;
         double lo = INFINITY, hi = -INFINITY;

@@ -41,10 +41,6 @@ static void draw(cairo_t *cr, void *vctx)
          "E = \xc2\xbd\xe2\x9f\xa8I\xe2\x82\x98\xcf\x89, \xcf\x89\xe2\x9f\xa9"},
     };
     static const char *letters[] = {"(a)", "(b)", "(c)", "(d)", "(e)", "(f)"};
-    sus_plot_text(cr, W / 2, 14,
-              "The paper's Figure 2 redrawn: "
-              "midpoint rule and variational integrator, \xce\xb5 = 1",
-              11, 0.5, 0.5, 1);
     for (int p = 0; p < 4; p++) {
         sus_plot_axes ax;
         double lo = INFINITY, hi = -INFINITY;
