@@ -9,17 +9,16 @@ typedef struct {
     const sus_tol_config *cfg;
     const sus_tol_ops *ops;
     sus_tol_work *wk;
-    sus_row row;        /* the state at the end of the last accepted step */
+    sus_row row; /* the state at the end of the last accepted step */
     sus_attitude att;
-    long next_out;      /* the next output time is next_out * every_time */
+    long next_out; /* the next output time is next_out * every_time */
 } tol_run;
 
 static int fail(tol_run *r, sus_run_report *report, int rc, long step, double t, const sus_stepper_stats *st)
 {
     report->step = step;
     report->t = t;
-    if (st)
-        report->stats = *st;
+    if (st) report->stats = *st;
     r->ops->free(r->wk);
     return rc;
 }
@@ -29,8 +28,7 @@ static int emit_row(tol_run *r, sus_row *row, const sus_attitude *att, sus_emit_
                     sus_run_report *report)
 {
     sus_attitude_get(att, row->R);
-    if (!sus_row_finite(row))
-        return fail(r, report, SUS_RUN_BLOWUP, row->k, row->t, NULL);
+    if (!sus_row_finite(row)) return fail(r, report, SUS_RUN_BLOWUP, row->k, row->t, NULL);
     if (emit(ctx, row)) {
         r->ops->free(r->wk);
         return SUS_RUN_STOPPED;
@@ -48,8 +46,7 @@ static int dense_rows(tol_run *r, double t0, sus_emit_fn emit, void *ctx, sus_ru
         sus_attitude a = r->att;
         r->ops->dense(r->wk, tj - t0, d.w, &d.lambda, &a);
         const int rc = emit_row(r, &d, &a, emit, ctx, report);
-        if (rc != SUS_RUN_OK)
-            return rc;
+        if (rc != SUS_RUN_OK) return rc;
     }
     return SUS_RUN_OK;
 }
@@ -71,19 +68,16 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
         sus_stepper_stats st;
         const int status = r.ops->step(r.wk, cfg->t_end, &r.row.t, r.row.w, &r.row.lambda, &r.att, &st);
         report->sus_newton_iterations += st.iterations; /* here: the rejected tries */
-        if (st.iterations > report->max_iterations)
-            report->max_iterations = st.iterations;
+        if (st.iterations > report->max_iterations) report->max_iterations = st.iterations;
         if (status != SUS_STEPPER_OK) {
             report->status = status;
             return fail(&r, report, SUS_RUN_STEP_FAILED, r.row.k + 1, t0, &st);
         }
         r.row.k++;
-        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK)
-            return rc;
+        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK) return rc;
         if (cfg->every_time <= 0.0 || r.row.t >= cfg->t_end)
             rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);
     }
-    if (rc == SUS_RUN_OK)
-        r.ops->free(r.wk);
+    if (rc == SUS_RUN_OK) r.ops->free(r.wk);
     return rc;
 }

@@ -43,12 +43,12 @@
 
 struct sus_tol_work {
     const sus_model *m;
-    double tol, e0;         /* the tolerance and E(w_0), the energy every step restores */
+    double tol, e0; /* the tolerance and E(w_0), the energy every step restores */
     const struct adaptive_order *order;
-    double h_next;          /* the next step to try (0: none yet) */
-    double h;               /* the last accepted step */
-    double q0[4];           /* the attitude quaternion at its start */
-    taylor_series t;        /* its series, for dense output */
+    double h_next; /* the next step to try (0: none yet) */
+    double h; /* the last accepted step */
+    double q0[4]; /* the attitude quaternion at its start */
+    taylor_series t; /* its series, for dense output */
 };
 
 /* max(|a|_inf, |b|_inf) of two pairs; NaN if any entry is NaN. */
@@ -82,7 +82,7 @@ typedef struct adaptive_order {
 } adaptive_order;
 
 #define ADAPTIVE_ORDER(N)                                                                                    \
-    static double try##N(sus_tol_work *wk, double h, const double w[2])                                     \
+    static double try##N(sus_tol_work *wk, double h, const double w[2])                                      \
     {                                                                                                        \
         series(wk->m, N, h, w, 1, &wk->t);                                                                   \
         return estimate(&wk->t, N);                                                                          \
@@ -101,7 +101,10 @@ ADAPTIVE_ORDER(14)
 ADAPTIVE_ORDER(16)
 ADAPTIVE_ORDER(18)
 ADAPTIVE_ORDER(20)
-#define ENTRY(N) {N, try##N, sums##N}
+#define ENTRY(N)                                                                                             \
+    {                                                                                                        \
+        N, try##N, sums##N                                                                                   \
+    }
 static const adaptive_order ADAPTIVE_ORDERS[] = {ENTRY(6),  ENTRY(8),  ENTRY(10), ENTRY(12),
                                                  ENTRY(14), ENTRY(16), ENTRY(18), ENTRY(20)};
 #define NORDERS ((int)(sizeof ADAPTIVE_ORDERS / sizeof ADAPTIVE_ORDERS[0]))
@@ -110,23 +113,27 @@ static const adaptive_order *order_for(double tol)
 {
     const double want = -0.5 * log(tol) + 1.0;
     for (int i = 0; i < NORDERS; i++)
-        if (ADAPTIVE_ORDERS[i].p >= want)
-            return &ADAPTIVE_ORDERS[i];
+        if (ADAPTIVE_ORDERS[i].p >= want) return &ADAPTIVE_ORDERS[i];
     return &ADAPTIVE_ORDERS[NORDERS - 1];
 }
 
-int sus_step_taylor_adaptive_order(double tol) { return order_for(tol)->p; }
+int sus_step_taylor_adaptive_order(double tol)
+{
+    return order_for(tol)->p;
+}
 
 static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double w0[2])
 {
     sus_tol_work *wk = malloc(sizeof *wk);
-    if (!wk)
-        return NULL;
+    if (!wk) return NULL;
     *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
     return wk;
 }
 
-static void adaptive_free(sus_tol_work *wk) { free(wk); }
+static void adaptive_free(sus_tol_work *wk)
+{
+    free(wk);
+}
 
 /* The step to try first: the longest the proved radius allows within [t, t_end]. */
 static double first_try(const sus_tol_work *wk, const double w[2], double left)
@@ -138,8 +145,7 @@ static double first_try(const sus_tol_work *wk, const double w[2], double left)
 /* Shortened to the proved radius when the cheap bound K |w| h < 1 does not already prove it. */
 static double within_radius(const sus_model *m, const double w[2], double h)
 {
-    if (m->norm_b * m->norm_fA * hypot(w[0], w[1]) * h < 1.0)
-        return h;
+    if (m->norm_b * m->norm_fA * hypot(w[0], w[1]) * h < 1.0) return h;
     return fmin(h, RADIUS_FRACTION * sus_step_taylor_radius(m, w));
 }
 
@@ -165,7 +171,7 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t)), err = NAN;
     *st = (sus_stepper_stats){.scale = wk->tol};
-    for (int tries = 0; tries < MAX_TRIES && *t + h > *t; tries++) {
+    for (int tries = 0; tries<MAX_TRIES && * t + h> * t; tries++) {
         err = wk->order->try_step(wk, h, w);
         if (err <= wk->tol) {
             st->iterations = tries;
@@ -182,8 +188,7 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
 
 /* The state at tau into the last step: the step's own polynomials at theta = tau / h (the
  * coefficients are scaled by h^n), w restored onto E(w_0), the quaternion normalised. */
-static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda,
-                           sus_attitude *att)
+static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
 {
     const double th = wk->h > 0.0 ? tau / wk->h : 0.0;
     v2d W = {0.0, 0.0}, P = {0.0, 0.0}, M = {0.0, 0.0};

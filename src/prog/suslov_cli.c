@@ -121,7 +121,7 @@ static void more_methods(FILE *fp, int man)
     cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        cli_line(fp, man, "%-12s %s", me->type->name, me->about);
+        cli_line(fp, man, "%-15s %s", me->type->name, me->about);
     }
 }
 
@@ -470,7 +470,9 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
     }
     if (a->method)
         fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
-                a->method->family, a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order, SUS_RECON_NAMES[a->recon]);
+                a->method->family,
+                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order,
+                SUS_RECON_NAMES[a->recon]);
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     if (a->tol > 0.0)

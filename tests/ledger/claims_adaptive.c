@@ -60,11 +60,9 @@ static int track(void *vctx, const sus_row *r)
 {
     track_ctx *c = vctx;
     c->steps = r->k;
+    for (int i = 0; i < 3; i++) c->w[i] = r->w[i];
     for (int i = 0; i < 3; i++)
-        c->w[i] = r->w[i];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            c->R[i][j] = r->R[i][j];
+        for (int j = 0; j < 3; j++) c->R[i][j] = r->R[i][j];
     c->w3 = fmax(c->w3, fabs(r->w[2]));
     c->orth = fmax(c->orth, sus_so3_orth_defect(r->R));
     c->energy = fmax(c->energy, fabs(sus_energy(c->m, r->w) - c->e0));
@@ -74,8 +72,7 @@ static int track(void *vctx, const sus_row *r)
 static int run(const sus_model *m, const double w0[2], double tol, double T, track_ctx *c)
 {
     const sus_step_method *me = sus_step_method_by_name("taylor-adaptive");
-    if (!me)
-        ledger_die("the registry's taylor-adaptive");
+    if (!me) ledger_die("the registry's taylor-adaptive");
     *c = (track_ctx){.m = m, .e0 = sus_energy(m, w0)};
     const sus_tol_config cfg = {m, me->type, tol, T, 0.0};
     sus_run_report rep;
@@ -83,26 +80,23 @@ static int run(const sus_model *m, const double w0[2], double tol, double T, tra
 }
 
 typedef struct {
-    double slope, slope_min, ratio_lo, ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
+    double slope, slope_min, ratio_lo,
+        ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
     const char *slope_body, *lo_body, *hi_body;
     int points, fitted;
 } tol_summary;
 
 /* The worst-so-far bookkeeping of one body's measurements of one quantity. */
-static void summary_add(tol_summary *s, const char *name, double slope, const double *ratio, const double *per_step,
-                        int n)
+static void summary_add(tol_summary *s, const char *name, double slope, const double *ratio,
+                        const double *per_step, int n)
 {
-    if (!s->slope_body || !(slope <= s->slope))
-        s->slope = slope, s->slope_body = name;
-    if (!(slope >= s->slope_min) || s->slope_min == 0.0)
-        s->slope_min = slope;
+    if (!s->slope_body || !(slope <= s->slope)) s->slope = slope, s->slope_body = name;
+    if (!(slope >= s->slope_min) || s->slope_min == 0.0) s->slope_min = slope;
     for (int j = 0; j < n; j++) {
-        if (!s->lo_body || ratio[j] < s->ratio_lo)
-            s->ratio_lo = ratio[j], s->lo_body = name;
+        if (!s->lo_body || ratio[j] < s->ratio_lo) s->ratio_lo = ratio[j], s->lo_body = name;
     }
     for (int j = 0; j < NTOL; j++)
-        if (!s->hi_body || !(per_step[j] <= s->ratio_hi))
-            s->ratio_hi = per_step[j], s->hi_body = name;
+        if (!s->hi_body || !(per_step[j] <= s->ratio_hi)) s->ratio_hi = per_step[j], s->hi_body = name;
 }
 
 /* One body's errors over the tolerances, for w (q = 0) and R (q = 1). */
@@ -110,16 +104,14 @@ static void body_errors(const body *b, tol_summary s[2])
 {
     sus_model m;
     char err[256];
-    if (sus_model_init(&m, b->I, err, sizeof err) != 0)
-        ledger_die(err);
+    if (sus_model_init(&m, b->I, err, sizeof err) != 0) ledger_die(err);
     double w_ref[2], R_ref[3][3], tols[2][NTOL], e[2][NTOL], ratio[2][NTOL], per_step[2][NTOL];
     sus_refatt_precise(&m, b->w0, T_ERR, w_ref, R_ref);
     int n[2] = {0, 0};
     for (int j = 0; j < NTOL; j++) {
         const double tol = pow(10.0, -4.0 - j);
         track_ctx c;
-        if (run(&m, b->w0, tol, T_ERR, &c) != SUS_RUN_OK)
-            ledger_die("a taylor-adaptive run to t = 50");
+        if (run(&m, b->w0, tol, T_ERR, &c) != SUS_RUN_OK) ledger_die("a taylor-adaptive run to t = 50");
         const double er[2] = {hypot(c.w[0] - w_ref[0], c.w[1] - w_ref[1]), sus_so3_dist(R_ref, c.R)};
         const double size[2] = {hypot(w_ref[0], w_ref[1]), 1.0};
         for (int q = 0; q < 2; q++) {
@@ -133,8 +125,7 @@ static void body_errors(const body *b, tol_summary s[2])
     }
     for (int q = 0; q < 2; q++) {
         sus_exp_order_fit fit = {.slope = NAN};
-        if (sus_exp_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0)
-            fit.slope = NAN;
+        if (sus_exp_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0) fit.slope = NAN;
         summary_add(&s[q], b->name, fit.slope, ratio[q], per_step[q], n[q]);
         s[q].fitted += n[q];
         s[q].points += NTOL;
@@ -151,23 +142,30 @@ static void tolerance_claims(void)
     }
     char text[400];
     ledger_number("AdaptiveSlopeRMin", s[1].slope_min);
-    snprintf(text, sizeof text, "slope of log dist(R, R_ref)(t = 50) against log TOL, TOL = 1e-4 ... 1e-14 above 100 N u "
-             "(%d of %d points), taylor-adaptive, steepest of %d bodies (%s; the shallowest %.3g): ABOVE the band "
-             "[%.2f, %.2f] fixed before measuring (a band missed)", s[1].fitted, s[1].points, BODIES_COUNT,
-             s[1].slope_body, s[1].slope_min, SLOPE_MID - SLOPE_HALF, SLOPE_MID + SLOPE_HALF);
+    snprintf(
+        text, sizeof text,
+        "slope of log dist(R, R_ref)(t = 50) against log TOL, TOL = 1e-4 ... 1e-14 above 100 N u "
+        "(%d of %d points), taylor-adaptive, steepest of %d bodies (%s; the shallowest %.3g): ABOVE the band "
+        "[%.2f, %.2f] fixed before measuring (a band missed)",
+        s[1].fitted, s[1].points, BODIES_COUNT, s[1].slope_body, s[1].slope_min, SLOPE_MID - SLOPE_HALF,
+        SLOPE_MID + SLOPE_HALF);
     ledger_add_bound("adaptive-tol-slope-R", "(extension)", text, s[1].slope, SLOPE_MID + SLOPE_HALF, 1,
                      LEDGER_EXTENSION);
-    snprintf(text, sizeof text, "smallest dist(R, R_ref)(t = 50) / TOL over TOL = 1e-4 ... 1e-14 above 100 N u, "
-             "taylor-adaptive, %d bodies (%s): >= %g (within two decades below TOL)", BODIES_COUNT, s[1].lo_body,
-             RATIO_LO);
-    ledger_add_bound("adaptive-tol-ratio-lo-R", "(extension)", text, s[1].ratio_lo, RATIO_LO, 1, LEDGER_EXTENSION);
+    snprintf(text, sizeof text,
+             "smallest dist(R, R_ref)(t = 50) / TOL over TOL = 1e-4 ... 1e-14 above 100 N u, "
+             "taylor-adaptive, %d bodies (%s): >= %g (within two decades below TOL)",
+             BODIES_COUNT, s[1].lo_body, RATIO_LO);
+    ledger_add_bound("adaptive-tol-ratio-lo-R", "(extension)", text, s[1].ratio_lo, RATIO_LO, 1,
+                     LEDGER_EXTENSION);
     static const char *const what[2] = {"|w - w_ref|", "dist(R, R_ref)"}, *const key[2] = {"w", "R"};
     for (int q = 0; q < 2; q++) {
         char id[96];
         snprintf(id, sizeof id, "adaptive-tol-ratio-hi-%s", key[q]);
-        snprintf(text, sizeof text, "largest %s(t = 50) / (N TOL) over TOL = 1e-4 ... 1e-14 (N accepted steps), "
-                 "taylor-adaptive, %d bodies (%s): <= %g (N local errors of at most TOL, estimate within %gx)",
-                 what[q], BODIES_COUNT, s[q].hi_body, F_UNDERSHOOT, F_UNDERSHOOT);
+        snprintf(
+            text, sizeof text,
+            "largest %s(t = 50) / (N TOL) over TOL = 1e-4 ... 1e-14 (N accepted steps), "
+            "taylor-adaptive, %d bodies (%s): <= %g (N local errors of at most TOL, estimate within %gx)",
+            what[q], BODIES_COUNT, s[q].hi_body, F_UNDERSHOOT, F_UNDERSHOOT);
         ledger_add_bound(id, "(extension)", text, s[q].ratio_hi, F_UNDERSHOOT, 0, LEDGER_EXTENSION);
     }
 }
@@ -182,8 +180,7 @@ static void structure_claims(void)
         sus_model m;
         char err[256];
         body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
-            ledger_die(err);
+        if (sus_model_init(&m, b.I, err, sizeof err) != 0) ledger_die(err);
         track_ctx c;
         if (run(&m, b.w0, TOL_STRUCT, T_STRUCT, &c) != SUS_RUN_OK)
             ledger_die("a taylor-adaptive run to t = 1e4");
@@ -194,14 +191,19 @@ static void structure_claims(void)
     }
     char text[400];
     ledger_number("AdaptiveStructSteps", (double)steps / BODIES_COUNT);
-    snprintf(text, sizeof text, "max |w3| over every step to T = 1e4, taylor-adaptive at TOL %g, %d bodies: exactly 0",
+    snprintf(text, sizeof text,
+             "max |w3| over every step to T = 1e4, taylor-adaptive at TOL %g, %d bodies: exactly 0",
              TOL_STRUCT, BODIES_COUNT);
     ledger_add("adaptive-w3", "(extension)", text, w3, 0.0, 0.0, LEDGER_EXTENSION);
-    snprintf(text, sizeof text, "max |R^T R - I| over every step to T = 1e4, taylor-adaptive at TOL %g, %d bodies; "
-             "round-off bound %g (R from a unit quaternion at each step)", TOL_STRUCT, BODIES_COUNT, ORTH_BOUND);
+    snprintf(text, sizeof text,
+             "max |R^T R - I| over every step to T = 1e4, taylor-adaptive at TOL %g, %d bodies; "
+             "round-off bound %g (R from a unit quaternion at each step)",
+             TOL_STRUCT, BODIES_COUNT, ORTH_BOUND);
     ledger_add_bound("adaptive-orth", "(extension)", text, orth, ORTH_BOUND, 0, LEDGER_EXTENSION);
-    snprintf(text, sizeof text, "max |E - E0| / (u E0) over every step to T = 1e4, taylor-adaptive at TOL %g, %d "
-             "bodies; bound 8 (each step scales w onto E0 itself: no accumulation)", TOL_STRUCT, BODIES_COUNT);
+    snprintf(text, sizeof text,
+             "max |E - E0| / (u E0) over every step to T = 1e4, taylor-adaptive at TOL %g, %d "
+             "bodies; bound 8 (each step scales w onto E0 itself: no accumulation)",
+             TOL_STRUCT, BODIES_COUNT);
     ledger_add_bound("adaptive-energy", "(extension)", text, en, 8.0, 0, LEDGER_EXTENSION);
 }
 

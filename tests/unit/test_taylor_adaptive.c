@@ -26,8 +26,7 @@
 static const sus_stepper_type *adaptive(void)
 {
     for (int i = sus_step_method_count(); i < sus_step_method_count_all(); i++)
-        if (sus_step_method_get(i)->type->tol)
-            return sus_step_method_get(i)->type;
+        if (sus_step_method_get(i)->type->tol) return sus_step_method_get(i)->type;
     return NULL;
 }
 
@@ -90,7 +89,8 @@ static void rejection(const sus_model *m, const double w0[2], const char *name)
     const int rrc = run(m, w0, 1e-300, 50.0, 0.0, &c, &rep);
     CHECK(rrc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_REJECTED && rep.step == 1 && rep.t == 0.0 &&
               c.rows == 1,
-          "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name, rep.step, rep.t);
+          "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name, rep.step,
+          rep.t);
 }
 
 /* w = 0 and a steady rotation: vanishing rows. */
@@ -100,8 +100,8 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     sus_run_report rep;
     const double zero[2] = {0.0, 0.0};
     int rc = run(m, zero, 1e-10, 50.0, 5.0, &c, &rep);
-    CHECK(rc == SUS_RUN_OK && c.rows == 11 && c.last.w[0] == 0.0 && c.last.w[1] == 0.0 && c.last.R[0][0] == 1.0 &&
-              c.last.R[1][1] == 1.0 && c.last.R[2][2] == 1.0 && c.last.t == 50.0,
+    CHECK(rc == SUS_RUN_OK && c.rows == 11 && c.last.w[0] == 0.0 && c.last.w[1] == 0.0 &&
+              c.last.R[0][0] == 1.0 && c.last.R[1][1] == 1.0 && c.last.R[2][2] == 1.0 && c.last.t == 50.0,
           "%s: w0 = 0 (E0 = 0): %d rows to t = %g, w = 0 and R = I exactly", name, c.rows, c.last.t);
     /* the steady rotation w* (c(w*) = 0) the closed form tends to from w0: the attracting one of
      * +-w*, so the rounding of c(w*) ~ u is not amplified */
@@ -114,8 +114,8 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     double R[3][3], Wt[3] = {50.0 * ws[0], 50.0 * ws[1], 0.0};
     sus_so3_exp(Wt, R);
     const double d = sus_so3_dist(R, c.last.R);
-    CHECK(rc == SUS_RUN_OK && fabs(c.last.w[0] - ws[0]) <= 4e-16 * s && fabs(c.last.w[1] - ws[1]) <= 4e-16 * s &&
-              d <= 10.0 * (double)c.last.k * 1e-10,
+    CHECK(rc == SUS_RUN_OK && fabs(c.last.w[0] - ws[0]) <= 4e-16 * s &&
+              fabs(c.last.w[1] - ws[1]) <= 4e-16 * s && d <= 10.0 * (double)c.last.k * 1e-10,
           "%s: steady rotation: w stays w* (to %.2g), R = exp(50 w*^) to %.3g <= 10 N TOL (N = %ld)", name,
           fmax(fabs(c.last.w[0] - ws[0]), fabs(c.last.w[1] - ws[1])), d, c.last.k);
 }
