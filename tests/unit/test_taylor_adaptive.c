@@ -17,9 +17,11 @@
 #include "check.h"
 #include "driver.h"
 #include "exact.h"
+#include "refattitude.h"
 #include "registry.h"
 #include "so3.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -138,12 +140,67 @@ static void rows_and_structure(const sus_model *m, const double w0[2], const cha
           "%s: the dense-output run ends in the same state as the step-by-step run", name);
 }
 
+/* Dense rows against the reference between steps: every row within 10 N TOL of the long-double
+ * reference attitude and of the closed-form w (the bound of the ledger's claims_adaptive.c: N
+ * local errors of at most TOL, the estimate within 10x). */
+typedef struct {
+    sus_exact ex;
+    sus_refatt ref;
+    double worst_R, worst_w;
+} dense_ctx;
+
+static int against_reference(void *vctx, const sus_row *r)
+{
+    dense_ctx *c = vctx;
+    double R[3][3], w[2];
+    sus_refatt_advance(&c->ref, r->t, R);
+    sus_exact_omega(&c->ex, r->t, w);
+    c->worst_R = fmax(c->worst_R, sus_so3_dist(R, r->R));
+    c->worst_w = fmax(c->worst_w, hypot(r->w[0] - w[0], r->w[1] - w[1]));
+    return 0;
+}
+
+static void dense_accuracy(const sus_model *m, const double w0[2], const char *name)
+{
+    static const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    dense_ctx c = {.worst_R = 0.0};
+    sus_exact_init(&c.ex, m, w0);
+    sus_refatt_init(&c.ref, &c.ex, 0.0, I3);
+    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1};
+    sus_run_report rep;
+    rows_ctx steps;
+    const int rc = sus_run_tol(&cfg, w0, against_reference, &c, &rep);
+    run(m, w0, 1e-8, 30.0, 0.0, &steps, &rep);
+    const double bound = 10.0 * (double)steps.last.k * 1e-8;
+    CHECK(
+        rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
+        "%s: 301 dense rows to t = 30 at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N TOL "
+        "= %.3g",
+        name, c.worst_R, c.worst_w, bound);
+}
+
+/* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 1
+ * in [6, 20]. */
+static void order_rule(void)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    int ok = 1;
+    for (double tol = 0.5; tol > 1e-16; tol *= 0.3) {
+        int p = 6;
+        while (p < 20 && p < -0.5 * log(tol) + 1.0) p += 2;
+        ok &= ops->order(tol) == p;
+    }
+    CHECK(ok && ops->order(1e-10) == 14 && ops->order(1e-4) == 6 && ops->order(DBL_EPSILON) == 20,
+          "the order is the smallest even p >= -ln(TOL)/2 + 1 in [6, 20] (1e-10: %d)", ops->order(1e-10));
+}
+
 int main(void)
 {
     if (!adaptive()) {
         CHECK(0, "a tolerance-driven method is registered");
         return check_summary("test_taylor_adaptive");
     }
+    order_rule();
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
@@ -156,6 +213,7 @@ int main(void)
         rejection(&m, b.w0, b.name);
         vanishing_rows(&m, b.w0, b.name);
         rows_and_structure(&m, b.w0, b.name);
+        dense_accuracy(&m, b.w0, b.name);
     }
     return check_summary("test_taylor_adaptive");
 }
