@@ -138,9 +138,8 @@ static inline __attribute__((always_inline)) int taylor_apply_full(const int p, 
     if (diverged(m, eps, w, st))
         return SUS_STEPPER_DIVERGED;
     series(m, p, eps, w, 1, &t);
-    const v2d P = tail_sum(t.P, p), M = tail_sum(t.M, p);
-    const double dq[4] = {1.0 + P[0], M[0], M[1], P[1]};
-    double q[4], q1[4];
+    double dq[4], q[4], q1[4];
+    dq_from(&t, p, dq);
     sus_quat_of_attitude(att, q);
     sus_quat_mul(q1, q, dq); /* R_{k+1} = R_k R(dq) */
     sus_quat_to_attitude(q1, att);

@@ -89,9 +89,8 @@ typedef struct adaptive_order {
     }                                                                                                        \
     static void sums##N(const sus_tol_work *wk, double w_next[3], double dq[4])                              \
     {                                                                                                        \
-        const v2d Ps = tail_sum(wk->t.P, N), Ms = tail_sum(wk->t.M, N);                                      \
+        dq_from(&wk->t, N, dq);                                                                              \
         w_next_from(wk->m, N, &wk->t, wk->e0, w_next);                                                       \
-        dq[0] = 1.0 + Ps[0], dq[1] = Ms[0], dq[2] = Ms[1], dq[3] = Ps[1];                                    \
     }
 ADAPTIVE_ORDER(6)
 ADAPTIVE_ORDER(8)

@@ -130,4 +130,14 @@ static inline __attribute__((always_inline)) void w_next_from(const sus_model *m
     taylor_energy_onto(m, e0, w_next);
 }
 
+/* The attitude increment over the whole step, dq = (q0, q1, q2, q3) = sum_{n<=p} Q_n. */
+static inline __attribute__((always_inline)) void dq_from(const taylor_series *t, const int p, double dq[4])
+{
+    const v2d P = tail_sum(t->P, p), M = tail_sum(t->M, p);
+    dq[0] = 1.0 + P[0];
+    dq[1] = M[0];
+    dq[2] = M[1];
+    dq[3] = P[1];
+}
+
 #endif

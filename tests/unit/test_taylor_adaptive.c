@@ -179,6 +179,41 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
         name, c.worst_R, c.worst_w, bound);
 }
 
+/* The estimate against the true local error of a first accepted step (closed-form w, long-double
+ * reference R over the step): a last-two-terms estimate of a geometric tail is within F = 10 of
+ * it either way (the undershoot factor claims_adaptive.c allows: ratio up to 0.9), over TOL
+ * 1e-6 ... 1e-12 where the truncation, not round-off, is the local error. */
+static void estimate_vs_truth(const sus_model *m, const double w0[2], const char *name)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    double lo = INFINITY, hi = 0.0;
+    for (double tol = 1e-6; tol >= 1e-12; tol *= 1e-2) {
+        sus_tol_work *wk = ops->alloc(m, tol, w0);
+        double w[3] = {w0[0], w0[1], 0.0}, lam, t = 0.0, wx[2], Rx[3][3], wr[2], R[3][3];
+        sus_attitude att;
+        sus_stepper_stats st;
+        sus_attitude_identity(&att);
+        const int rc = wk ? ops->step(wk, 50.0, &t, w, &lam, &att, &st) : -1;
+        ops->free(wk);
+        if (rc != SUS_STEPPER_OK) {
+            lo = 0.0;
+            break;
+        }
+        sus_refatt_precise(m, w0, t, wr, Rx);
+        sus_exact omega;
+        sus_exact_init(&omega, m, w0);
+        sus_exact_omega(&omega, t, wx);
+        sus_attitude_get(&att, R);
+        const double truth = fmax(hypot(w[0] - wx[0], w[1] - wx[1]), sus_so3_dist(Rx, R));
+        lo = fmin(lo, st.residual / truth);
+        hi = fmax(hi, st.residual / truth);
+    }
+    CHECK(lo >= 0.1 && hi <= 10.0,
+          "%s: the first step's estimate over its true local error in [%.3g, %.3g] (TOL "
+          "1e-6, 1e-8, 1e-10, 1e-12): within [0.1, 10]",
+          name, lo, hi);
+}
+
 /* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 1
  * in [6, 20]. */
 static void order_rule(void)
@@ -214,6 +249,7 @@ int main(void)
         vanishing_rows(&m, b.w0, b.name);
         rows_and_structure(&m, b.w0, b.name);
         dense_accuracy(&m, b.w0, b.name);
+        estimate_vs_truth(&m, b.w0, b.name);
     }
     return check_summary("test_taylor_adaptive");
 }
