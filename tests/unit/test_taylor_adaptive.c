@@ -75,6 +75,20 @@ static void rejection(const sus_model *m, const double w0[2], const char *name)
           "%s: first step rejected %d times, then accepted with estimate %.3g <= 1e-12 (t = %.3g)", name,
           st.iterations, st.residual, t);
     ops->free(wk);
+    /* the contract on a fine grid of TOL (ten a decade, 1e-4 ... 1e-13): an accepted step's own
+     * estimate is at most TOL, whatever the first try gave */
+    int over = 0, tries = 0;
+    for (int j = 0; j <= 90; j++) {
+        const double tol = pow(10.0, -4.0 - 0.1 * j);
+        double wj[3] = {w0[0], w0[1], 0.0}, tj = 0.0;
+        sus_tol_work *wj_work = ops->alloc(m, tol, w0);
+        sus_attitude_identity(&att);
+        over += ops->step(wj_work, 50.0, &tj, wj, &lam, &att, &st) != SUS_STEPPER_OK || !(st.residual <= tol);
+        tries += st.iterations;
+        ops->free(wj_work);
+    }
+    CHECK(over == 0, "%s: 91 first steps (TOL 1e-4 ... 1e-13): %d accepted above TOL (%d rejections)", name,
+          over, tries);
 
     wk = ops->alloc(m, 1e-300, w0);
     double w1[3] = {w0[0], w0[1], 0.0}, t1 = 0.0;
