@@ -143,6 +143,12 @@ static void rows_and_structure(const sus_model *m, const double w0[2], const cha
     sus_run_report rep;
     const int ra = run(m, w0, 1e-9, 20.0, 0.25, &a, &rep);
     const int rb = run(m, w0, 1e-9, 20.0, 0.0, &b, &rep);
+    /* the next step is sized by the estimate's own law, err ~ h^{p+1}, aiming at SAFETY^{p+1} TOL:
+     * a step is rejected only where the estimate's constant grows by more than SAFETY^{-(p+1)}
+     * (>= 2) from one step to the next, which a smooth flow does on few steps: fewer than half */
+    CHECK(rb == SUS_RUN_OK && 2 * rep.sus_newton_iterations < b.last.k,
+          "%s: %ld rejected tries over %ld accepted steps to t = 20 (fewer than half)", name,
+          rep.sus_newton_iterations, b.last.k);
     CHECK(ra == SUS_RUN_OK && a.rows == 81 && a.monotone && a.last.t == 20.0,
           "%s: --every-time 0.25 to 20: %d rows (81), increasing t, the last at %g", name, a.rows, a.last.t);
     CHECK(a.w3 == 0.0 && a.worst_orth <= 1e-14 && a.worst_e <= 8.0 * SUS_U * a.e0,
