@@ -127,12 +127,18 @@ static void dsp_fn(void *vctx)
     sink += r->last.w[0];
 }
 
+/* w and R of a run's last row; 1 when the run succeeded. */
+static int last_row_result(const sus_row *last, int ok, double w[2], double R[3][3])
+{
+    memcpy(w, last->w, 2 * sizeof(double));
+    memcpy(R, last->R, 9 * sizeof(double));
+    return ok;
+}
+
 static int dsp_result(void *vctx, double w[2], double R[3][3])
 {
     const dsp_run *r = vctx;
-    memcpy(w, r->last.w, 2 * sizeof(double));
-    memcpy(R, r->last.R, 9 * sizeof(double));
-    return r->rep.status == SUS_STEPPER_OK;
+    return last_row_result(&r->last, r->rep.status == SUS_STEPPER_OK, w, R);
 }
 
 /* ---- w alone (no attitude): the driver's w-steps without the reconstruction, for a user who
@@ -193,9 +199,7 @@ static void tol_fn(void *vctx)
 static int tol_result(void *vctx, double w[2], double R[3][3])
 {
     const tol_run *r = vctx;
-    memcpy(w, r->last.w, 2 * sizeof(double));
-    memcpy(R, r->last.R, 9 * sizeof(double));
-    return r->rc == SUS_RUN_OK;
+    return last_row_result(&r->last, r->rc == SUS_RUN_OK, w, R);
 }
 
 /* ---- GSL odeiv2 peers (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2 ---- */
