@@ -48,7 +48,7 @@ typedef enum { SUS_ATTITUDE_NONE = 0, SUS_ATTITUDE_MATRIX, SUS_ATTITUDE_QUAT } s
 /* A tolerance-driven method (tol set in its type) chooses its own steps, so it cannot be one
  * map (w^k) -> (w^{k+1}) of a given eps: it keeps state between steps (the last step's length and
  * series), held in a workspace the driver allocates once per run (never per step). The driver
- * knows only these four functions; the fixed-step sweeps over eps do not list such methods
+ * knows only these functions; the fixed-step sweeps over eps do not list such methods
  * (registry.h), and apply and apply_full are NULL. */
 typedef struct sus_tol_work sus_tol_work;
 typedef struct {
