@@ -34,6 +34,10 @@ static int state_finite(const double w[3], double lambda, const sus_attitude *a)
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                sus_run_report *report)
 {
+    if (cfg->stepper->tol) { /* it chooses its own steps: sus_run_tol */
+        *report = (sus_run_report){.status = SUS_STEPPER_REJECTED, .step = 1};
+        return SUS_RUN_STEP_FAILED;
+    }
     sus_row row = {.k = 0, .t = 0.0, .w = {w0[0], w0[1], 0.0}};
     sus_attitude att;
     row.lambda = sus_lagmult(cfg->model, row.w);

@@ -17,6 +17,16 @@ typedef struct {
     long every;   /* K: rows for k = 0, K, 2K, ... and always k = N */
 } sus_run_config;
 
+/* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
+ * rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the method's
+ * dense output), or at the end of every accepted step (every_time = 0). A row's k counts the
+ * steps accepted up to its t. */
+typedef struct {
+    const sus_model *model;
+    const sus_stepper_type *stepper;
+    double tol, t_end, every_time;
+} sus_tol_config;
+
 typedef struct {
     long k;
     double t;
@@ -57,5 +67,10 @@ int sus_row_finite(const sus_row *r);
  * _STOPPED. A row that is not finite is never emitted: the run stops with _BLOWUP. */
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                sus_run_report *report);
+/* The same for a tolerance-driven stepper (sus_run refuses one: SUS_RUN_STEP_FAILED with
+ * SUS_STEPPER_REJECTED at step 1, as it has no tolerance): report->step is the step that failed,
+ * report->t the time it started from. */
+int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
+                sus_run_report *report);
 
 #endif

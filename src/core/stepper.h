@@ -10,11 +10,17 @@
 
 /* SUS_STEPPER_DIVERGED: an explicit series step beyond the radius its series is proved to
  * converge in (the step over that radius in stats.residual, |w^k|_2 in stats.scale). */
+/* SUS_STEPPER_REJECTED: a tolerance-driven step whose own error estimate stayed above the
+ * tolerance through every retry, or whose step no longer advances t (the estimate in
+ * stats.residual, the tolerance in stats.scale, the last step tried in stats.det, the tries in
+ * stats.iterations). SUS_STEPPER_NO_MEMORY: its workspace could not be allocated. */
 enum {
     SUS_STEPPER_OK = 0,
     SUS_STEPPER_NO_CONVERGENCE = 1,
     SUS_STEPPER_SINGULAR = 2,
-    SUS_STEPPER_DIVERGED = 3
+    SUS_STEPPER_DIVERGED = 3,
+    SUS_STEPPER_REJECTED = 4,
+    SUS_STEPPER_NO_MEMORY = 5
 };
 
 typedef struct {
@@ -38,6 +44,28 @@ typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2
  * as a rotation matrix with the requested reconstruction; QUAT: apply_full carries R as a unit
  * quaternion and writes back R(q/|q|). */
 typedef enum { SUS_ATTITUDE_NONE = 0, SUS_ATTITUDE_MATRIX, SUS_ATTITUDE_QUAT } sus_attitude_form;
+
+/* A tolerance-driven method (tol set in its type) chooses its own steps, so it cannot be one
+ * map (w^k) -> (w^{k+1}) of a given eps: it keeps state between steps (the last step's length and
+ * series), held in a workspace the driver allocates once per run (never per step). The driver
+ * knows only these functions; the fixed-step sweeps over eps do not list such methods
+ * (registry.h), and apply and apply_full are NULL. */
+typedef struct sus_tol_work sus_tol_work;
+typedef struct {
+    /* A workspace for a run from w0 at tolerance tol, or NULL when out of memory. */
+    sus_tol_work *(*alloc)(const sus_model *m, double tol, const double w0[2]);
+    /* One accepted step of the state (*t, w, att) that ends at t_end at the latest (exactly at
+     * t_end when it reaches it): a step whose own error estimate exceeds tol is retried with a
+     * smaller one. Returns SUS_STEPPER_OK (stats.iterations: the rejected tries) or
+     * SUS_STEPPER_REJECTED (see above), leaving the state as it was. */
+    int (*step)(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda, sus_attitude *att,
+                sus_stepper_stats *st);
+    /* Dense output: the state at tau after the start of the last accepted step, 0 <= tau <= its
+     * length, from that step's own series and with the same structure as the steps keep. */
+    void (*dense)(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att);
+    void (*free)(sus_tol_work *wk);
+    int (*order)(double tol); /* the order it uses at tol */
+} sus_tol_ops;
 
 typedef struct {
     const char *name;
@@ -74,6 +102,7 @@ typedef struct {
     int (*apply_order)(int p, const sus_model *m, double eps, sus_attitude *att,
                        const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st);
     const char *source;              /* the file that defines the step (__FILE__) */
+    const sus_tol_ops *tol;          /* NULL for a fixed-step method; see sus_tol_ops */
 } sus_stepper_type;
 
 /* One step of (w, R): apply_full when the type has it, else apply and then (algo)'s

@@ -23,16 +23,26 @@
     M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16)) \
     M(gauss4, "collocation", NULL, EXP_MID, "2-stage Gauss-Legendre collocation, order 4, conserves E")
 
+/* Tolerance-driven methods (stepper.h, sus_tol_ops): after the fixed-step ones, outside
+ * sus_step_method_count(), so that the sweeps over eps do not meet them. */
+#define SUS_STEP_TOL_METHODS(M) \
+    M(taylor_adaptive, "taylor", NULL, EXP_MID, \
+      "Taylor series, order and steps from --tol, rows by dense output (--every-time)")
+
 #define TAYLOR_ABOUT(P) \
     "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
 
 #define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const sus_stepper_type sus_step_##ID##_type;
 SUS_STEP_METHODS(DECLARE)
+SUS_STEP_TOL_METHODS(DECLARE)
 #define ENTRY(ID, FAMILY, REF, RECON, ABOUT) {&sus_step_##ID##_type, FAMILY, REF, SUS_RECON_##RECON, ABOUT},
-static const sus_step_method METHODS[] = {SUS_STEP_METHODS(ENTRY)};
+#define ONE(ID, FAMILY, REF, RECON, ABOUT) +1
+static const sus_step_method METHODS[] = {SUS_STEP_METHODS(ENTRY) SUS_STEP_TOL_METHODS(ENTRY)};
+enum { NFIXED = 0 SUS_STEP_METHODS(ONE) };
 #define NMETHODS ((int)(sizeof METHODS / sizeof METHODS[0]))
 
-int sus_step_method_count(void) { return NMETHODS; }
+int sus_step_method_count(void) { return NFIXED; }
+int sus_step_method_count_all(void) { return NMETHODS; }
 
 const sus_step_method *sus_step_method_get(int i)
 {

@@ -22,8 +22,12 @@ typedef struct {
     const char *about;              /* one line for --help */
 } sus_step_method;
 
+/* The fixed-step methods are 0 .. sus_step_method_count() - 1 (what every sweep over eps
+ * iterates); the tolerance-driven ones (type->tol set) follow, up to sus_step_method_count_all().
+ * Lookups by name or type, the names, --help and methods.tsv cover all. */
 int sus_step_method_count(void);
-const sus_step_method *sus_step_method_get(int i);          /* NULL past the end */
+int sus_step_method_count_all(void);
+const sus_step_method *sus_step_method_get(int i);          /* NULL past the end of all */
 const sus_step_method *sus_step_method_by_name(const char *name);
 /* The index of a method in the registry, or -1: by name (for user input) and by type. */
 int sus_step_method_index(const char *name);

@@ -26,6 +26,11 @@ double sus_step_taylor_stability(int p, double z);
 double sus_step_stab_taylor8(double z), sus_step_stab_taylor10(double z), sus_step_stab_taylor12(double z),
     sus_step_stab_taylor16(double z);
 
+/* The tolerance-driven Taylor method (step_taylor_adaptive.c; stepper.h, sus_tol_ops) and the
+ * order it uses at a tolerance. */
+extern const sus_stepper_type sus_step_taylor_adaptive_type;
+int sus_step_taylor_adaptive_order(double tol);
+
 extern const sus_stepper_type sus_step_taylor8_type, sus_step_taylor10_type, sus_step_taylor12_type,
     sus_step_taylor16_type;
 

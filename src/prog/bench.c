@@ -127,12 +127,18 @@ static void dsp_fn(void *vctx)
     sink += r->last.w[0];
 }
 
+/* w and R of a run's last row; 1 when the run succeeded. */
+static int last_row_result(const sus_row *last, int ok, double w[2], double R[3][3])
+{
+    memcpy(w, last->w, 2 * sizeof(double));
+    memcpy(R, last->R, 9 * sizeof(double));
+    return ok;
+}
+
 static int dsp_result(void *vctx, double w[2], double R[3][3])
 {
     const dsp_run *r = vctx;
-    memcpy(w, r->last.w, 2 * sizeof(double));
-    memcpy(R, r->last.R, 9 * sizeof(double));
-    return r->rep.status == SUS_STEPPER_OK;
+    return last_row_result(&r->last, r->rep.status == SUS_STEPPER_OK, w, R);
 }
 
 /* ---- w alone (no attitude): the driver's w-steps without the reconstruction, for a user who
@@ -170,6 +176,30 @@ static int w_result(void *vctx, double w[2], double R[3][3])
     (void)R;
     memcpy(w, r->w, 2 * sizeof(double));
     return r->status == SUS_STEPPER_OK;
+}
+
+/* ---- a tolerance-driven method through sus_run_tol, as `suslov --tol` runs it ---- */
+
+typedef struct {
+    const sus_stepper_type *st;
+    double tol, T;
+    sus_row last;
+    sus_run_report rep;
+    int rc;
+} tol_run;
+
+static void tol_fn(void *vctx)
+{
+    tol_run *r = vctx;
+    const sus_tol_config cfg = {&model, r->st, r->tol, r->T, 0.0};
+    r->rc = sus_run_tol(&cfg, ex.w0, sus_keep_last, &r->last, &r->rep);
+    sink += r->last.w[0];
+}
+
+static int tol_result(void *vctx, double w[2], double R[3][3])
+{
+    const tol_run *r = vctx;
+    return last_row_result(&r->last, r->rc == SUS_RUN_OK, w, R);
 }
 
 /* ---- GSL odeiv2 peers (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2 ---- */
@@ -240,6 +270,7 @@ typedef struct {
     int ours; /* 1: a registered method; 0: a peer */
     int preserves; /* keeps E, w3 = 0 and R in SO(3) by construction */
     int w_only; /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
+    int tol_driven; /* ours, tolerance-driven: param is TOL, steps the accepted steps */
     const char *method;
     sus_recon recon;
     const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
@@ -253,6 +284,9 @@ typedef struct {
 
 static wp_series **S; /* grown one series at a time: as many as the registry and peers give */
 static int nseries;
+
+/* What a series' parameter is: a tolerance (peers, tolerance-driven methods) or a step. */
+static const char *param_name(const wp_series *s) { return s->ours && !s->tol_driven ? "eps" : "tol"; }
 
 static wp_series *new_series(void)
 {
@@ -411,6 +445,29 @@ static const char *dim_name(size_t dim) { return dim == 11 ? "(w,R)" : dim == 6 
 /* The peers' tolerances: four a decade, 10^(-3 - j/4), down to 1e-15. */
 #define PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / TOLS_PER_DECADE)
 #define PEER_TOL_MIN 0.99e-15
+
+/* A tolerance-driven method of ours on the peers' TOL grid (each run to T_END through the driver). */
+static void sweep_ours_tol(const sus_step_method *me)
+{
+    wp_series *s = new_series();
+    snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
+    s->ours = 1;
+    s->tol_driven = 1;
+    s->method = me->type->name;
+    s->recon = me->recon;
+    s->preserves = keeps_structure(me);
+    for (int j = 0; s->n < MAXPTS && PEER_TOL(j) >= PEER_TOL_MIN; j++) {
+        tol_run *r = xcalloc(1, sizeof *r);
+        *r = (tol_run){.st = me->type, .tol = PEER_TOL(j), .T = T_END};
+        if (!record(s, PEER_TOL(j), tol_fn, tol_result, r)) {
+            free(r);
+            continue;
+        }
+        s->steps[s->n - 1] = r->last.k;
+        if (sweep_done(s))
+            break;
+    }
+}
 
 static void sweep_gsl(const gsl_odeiv2_step_type *type, size_t dim, sus_exp_peer_api api, double hstart)
 {
@@ -771,6 +828,12 @@ static int lr_emit(void *vctx, const sus_row *row)
 static void long_run_ours(const wp_series *s, int j, lr_acc *a)
 {
     const sus_step_method *me = sus_step_method_by_name(s->method);
+    if (s->tol_driven) {
+        const sus_tol_config tc = {&model, me->type, s->param[j], T_LONG, T_LONG / 1000.0};
+        sus_run_report rep;
+        sus_run_tol(&tc, ex.w0, lr_emit, a, &rep);
+        return;
+    }
     const double eps = s->param[j];
     const long N = lround(T_LONG / eps);
     const sus_run_config cfg = {&model, me->type, s->recon, eps, N, N / 1000 > 0 ? N / 1000 : 1};
@@ -891,13 +954,22 @@ static void print_equal_error_long(void)
                 j = k;
         if (j < 0)
             continue;
-        dsp_run r = {me->type, s->recon, lround(T_LONG / s->param[j]), T_LONG, {0}, {0}};
-        const double sec = min_seconds(dsp_fn, &r), err = sus_so3_dist(R_ref, r.last.R);
+        double sec, err;
+        if (s->tol_driven) {
+            tol_run r = {.st = me->type, .tol = s->param[j], .T = T_LONG};
+            sec = min_seconds(tol_fn, &r);
+            err = sus_so3_dist(R_ref, r.last.R);
+        } else {
+            dsp_run r = {me->type, s->recon, lround(T_LONG / s->param[j]), T_LONG, {0}, {0}};
+            sec = min_seconds(dsp_fn, &r);
+            err = sus_so3_dist(R_ref, r.last.R);
+        }
         const long_point p = rk8pd_matching(err, R_ref);
         const double ratio = p.sec / sec;
-        printf("  %s T = 1e4 at equal error: %s (eps %.4g) %.3g s, error %.2g, vs GSL rk8pd (w,q) tol %.2g "
+        printf("  %s T = 1e4 at equal error: %s (%s %.4g) %.3g s, error %.2g, vs GSL rk8pd (w,q) tol %.2g "
                "%.3g s, error %.2g: %.2fx (target 3x)\n",
-               ratio >= 3.0 ? "PASS" : "MISS", s->name, s->param[j], sec, err, p.tol, p.sec, p.err, ratio);
+               ratio >= 3.0 ? "PASS" : "MISS", s->name, param_name(s), s->param[j], sec, err, p.tol, p.sec,
+               p.err, ratio);
     }
 }
 
@@ -905,6 +977,10 @@ static void print_equal_error_long(void)
 
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
+    if (s->tol_driven) {
+        snprintf(buf, len, "--method %s --tol %.17g --time %.17g", s->method, s->param[j], T_END);
+        return;
+    }
     snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
              SUS_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
 }
@@ -915,7 +991,9 @@ static int reproduce(const char *suslov, const wp_series *s, int j, double *dw, 
 {
     char args[256], cmd[4096], line[4096], last[4096] = "";
     args_of(s, j, args, sizeof args);
-    snprintf(cmd, sizeof cmd, "%.3000s %.255s --every %ld", suslov, args, s->steps[j]);
+    snprintf(cmd, sizeof cmd, "%.3000s %.255s", suslov, args);
+    if (!s->tol_driven) /* one row: the last (a --tol run writes a row a step; the last is read) */
+        snprintf(cmd + strlen(cmd), sizeof cmd - strlen(cmd), " --every %ld", s->steps[j]);
     FILE *p = popen(cmd, "r");
     if (!p)
         return -1;
@@ -1201,6 +1279,8 @@ static void sweep_all(void)
         else if (me->type->order >= 2 && me->recon != SUS_RECON_CAYLEY_MID)
             sweep_ours(me, SUS_RECON_CAYLEY_MID);
     }
+    for (int m = sus_step_method_count(); m < sus_step_method_count_all(); m++)
+        sweep_ours_tol(sus_step_method_get(m));
     /* the two the issue found fastest, in every configuration a user might pick */
     const gsl_odeiv2_step_type *tuned[2] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck};
     const double hstarts[4] = {1e-3, 1e-2, 0.1, 1.0};
@@ -1268,7 +1348,7 @@ static int print_step_targets(double *speedup)
  * below the measured floor of any Taylor design there (fewest steps x cost per step). */
 static const double LEVEL_TARGET[NLEVELS] = {1.3, 2.2, 2.2, 3.0, 3.7, 4.5};
 
-/* The floor at a level: the fewest steps any of our explicit structure-preserving methods needs
+/* The floor at a level: the fewest steps any of our explicit fixed-step structure-preserving methods needs
  * to reach it, times that method's measured cost per step (implicit steps are left out: their
  * Newton iterations, hence their cost, depend on the step). INFINITY when none reaches it. */
 static double floor_seconds(double level, int which)
@@ -1277,7 +1357,8 @@ static double floor_seconds(double level, int which)
     for (int i = 0; i < nseries; i++) {
         const wp_series *s = S[i];
         const sus_step_method *me = s->ours && s->preserves ? sus_step_method_by_name(s->method) : NULL;
-        if (!me || me->type->implicit || (which && s->w_only))
+        /* a tolerance-driven method's steps have no fixed cost to multiply: it may beat the floor */
+        if (!me || me->type->implicit || s->tol_driven || (which && s->w_only))
             continue;
         const int m = sus_step_method_index(s->method);
         for (int j = 0; j < s->n; j++)
@@ -1307,9 +1388,9 @@ static void print_level(int which, int l, int *pass, double *ratio)
         "step): %.2fx\n",
         o.sec <= 1.15 * fl ? "PASS" : "MISS", what, LEVELS[l], o.sec, fl, o.sec / fl);
     if (p.series < 0) {
-        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g); no peer configuration reaches "
+        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g); no peer configuration reaches "
                "it\n",
-               what, LEVELS[l], o.sec, os->name, os->param[o.point]);
+               what, LEVELS[l], o.sec, os->name, param_name(os), os->param[o.point]);
         *pass = 1;
         *ratio = INFINITY;
         return;
@@ -1317,9 +1398,9 @@ static void print_level(int which, int l, int *pass, double *ratio)
     *ratio = p.sec / o.sec;
     *pass = *ratio >= LEVEL_TARGET[l];
     printf(
-        "  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, eps %.4g) vs best peer %.3g s (%s, tol %.2g, its "
+        "  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) vs best peer %.3g s (%s, tol %.2g, its "
         "timed runs' error %.2g): %.2fx (target %gx)\n",
-        *pass ? "PASS" : "MISS", what, LEVELS[l], o.sec, os->name, os->param[o.point], p.sec,
+        *pass ? "PASS" : "MISS", what, LEVELS[l], o.sec, os->name, param_name(os), os->param[o.point], p.sec,
         S[p.series]->name, S[p.series]->param[p.point],
         which ? S[p.series]->err_R[p.point] : S[p.series]->err_w[p.point], *ratio, LEVEL_TARGET[l]);
 }
@@ -1356,11 +1437,13 @@ static void check_reproduce(const char *argv0)
         const wp_series *s = S[o.series];
         double dw, dR;
         tried++;
-        if (reproduce(suslov, s, o.point, &dw, &dR) == 0 && dw <= 1e-15 * fmax(1.0, s->err_w[o.point] * 1e6)
-            && dR <= 1e-15 * fmax(1.0, s->err_R[o.point] * 1e6))
+        if (reproduce(suslov, s, o.point, &dw, &dR) == 0 &&
+            dw <= 1e-15 * fmax(1.0, s->err_w[o.point] * 1e6) &&
+            dR <= 1e-15 * fmax(1.0, s->err_R[o.point] * 1e6))
             ok++;
         else
-            printf("  row not reproduced by suslov: %s eps %.17g\n", s->name, s->param[o.point]);
+            printf("  row not reproduced by suslov: %s %s %.17g\n", s->name, param_name(s),
+                   s->param[o.point]);
     }
     printf(
         "  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",

@@ -31,6 +31,7 @@ typedef struct {
     int blowup;           /* the energy overflowed at row blow_k (w finite but |w| > ~1e154) */
     long blow_k;
     double blow_t;
+    int all;              /* write every row handed over (a tolerance-driven run's rows) */
     int have_pending;     /* `pending` is the last good row and was not written */
     sus_row pending;
 } csv_ctx;
@@ -59,6 +60,8 @@ static int take_row(void *vctx, const sus_row *r)
         ctx->blow_t = r->t;
         return 1;
     }
+    if (ctx->all)
+        return print_row(ctx, r);
     if (r->k == ctx->next) {
         /* k + K would overflow for N, K near LONG_MAX: compare with what is left. */
         ctx->next = ctx->steps - r->k > ctx->every ? r->k + ctx->every : ctx->steps;
@@ -82,6 +85,14 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
         snprintf(msg, len,
                  "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
                  rep->step, rep->t);
+    else if (rep->status == SUS_STEPPER_REJECTED)
+        snprintf(msg, len,
+                 "step %ld (t = %.17g) failed: its error estimate %.3g stayed above --tol %.3g after %d "
+                 "tries (last step tried %.3g)",
+                 rep->step, rep->t, st->residual, st->scale, st->iterations, st->det);
+    else if (rep->status == SUS_STEPPER_NO_MEMORY)
+        snprintf(msg, len, "step %ld (t = %.17g) failed: out of memory for the method's workspace", rep->step,
+                 rep->t);
     else if (rep->status == SUS_STEPPER_DIVERGED)
         snprintf(msg, len,
                  "step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
@@ -103,9 +114,25 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
 
 /* ---- the run ---- */
 
+/* A tolerance-driven run: the driver hands over exactly the rows to write. */
+static int run_tol(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
+{
+    const sus_tol_config cfg = {&a->model, a->method->type, a->tol, a->t_end, a->every_time};
+    *ctx = (csv_ctx){.fp = fp, .m = &a->model, .all = 1, .tick_mask = ~0u};
+    const int rc = sus_run_tol(&cfg, a->w0, take_row, ctx, report);
+    if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
+        report->step = ctx->blow_k;
+        report->t = ctx->blow_t;
+        return SUS_RUN_BLOWUP;
+    }
+    return rc;
+}
+
 static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
 {
     const int exact = a->method == NULL;
+    if (a->tol > 0.0)
+        return run_tol(a, fp, report, ctx);
     /* The exact run computes only the rows it writes (each may cost a stretch of the reference
      * integration), so it gets its K; the integrators step every k anyway and hand every row
      * to take_row. */

@@ -27,10 +27,10 @@
 /* The options as given, before the checks that need several of them. */
 typedef struct {
     const char *method, *recon, *output;
-    double eps, T;
+    double eps, T, tol, every_time;
     long steps, every;
     double w0[2], inertia[9];
-    int quiet, header, header_given, list;
+    int quiet, header, header_given, list, every_given;
     long sweeps;
 } given;
 
@@ -69,6 +69,15 @@ static void set_recon(void *g, const cli_option *o, const char *v)
 static void set_every(void *g, const cli_option *o, const char *v)
 {
     ((given *)g)->every = cli_count(o->name, v);
+    ((given *)g)->every_given = 1;
+}
+static void set_tol(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->tol = cli_number(o->name, v);
+}
+static void set_every_time(void *g, const cli_option *o, const char *v)
+{
+    ((given *)g)->every_time = cli_number(o->name, v);
 }
 static void set_sweeps(void *g, const cli_option *o, const char *v)
 {
@@ -118,9 +127,9 @@ static void show_version(void *g, const cli_option *o, const char *v)
 static void more_methods(FILE *fp, int man)
 {
     cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
-    for (int i = 0; i < sus_step_method_count(); i++) {
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        cli_line(fp, man, "%-12s %s", me->type->name, me->about);
+        cli_line(fp, man, "%-15s %s", me->type->name, me->about);
     }
 }
 
@@ -133,7 +142,7 @@ static void more_recons(FILE *fp, int man)
         char names[512];
         size_t n = 0;
         names[0] = '\0';
-        for (int i = 0; i < sus_step_method_count(); i++)
+        for (int i = 0; i < sus_step_method_count_all(); i++)
             if (sus_step_method_get(i)->recon == (sus_recon)r && n < sizeof names)
                 n += (size_t)snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "  ",
                                       sus_step_method_get(i)->type->name);
@@ -163,6 +172,12 @@ static const cli_option OPTIONS[] = {
                       "sweeps instead of Newton, 1 <= N <= 8 (Figure 2's readings: 1 is explicit\n"
                       "Euler, 2 the explicit midpoint rule)", set_sweeps, NULL},
     {"--every", "K", "write step 0, every K-th step and the last step; default 1", set_every, NULL},
+    {"--tol", "TOL", "error tolerance of a step, 2^-52 <= TOL < 1, for a tolerance-driven\n"
+                     "method (taylor-adaptive), which then chooses its order and steps; with\n"
+                     "--time T, never with --eps, --steps or --every", set_tol, NULL},
+    {"--every-time", "DT", "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
+                           "method's dense output (default: the end of every accepted step)",
+     set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
     {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
                        "command line, method, eps, steps, body, w0 and units", set_header, NULL},
@@ -208,12 +223,13 @@ static const cli_section SECTIONS[] = {
     {"EXAMPLES",
      "suslov --method variational --eps 1 --time 200 --every 10\n"
      "suslov --method exact --eps 1e-3 --time 60 --every 100 --output data/exact.csv\n"
+     "suslov --method taylor-adaptive --tol 1e-10 --time 50 --every-time 0.5\n"
      "suslov --method list"},
 };
 
 static const cli_spec SPEC = {
     "suslov", "integrate the Suslov problem with the methods of Jimenez & Scheurle",
-    "suslov --method M --eps H (--steps N | --time T) [OPTION]...",
+    "suslov --method M (--eps H (--steps N | --time T) | --tol TOL --time T) [OPTION]...",
     "Integrates the Suslov problem (Jimenez & Scheurle, Section 5) and writes CSV.",
     OPTIONS, (int)(sizeof OPTIONS / sizeof OPTIONS[0]), SECTIONS, (int)(sizeof SECTIONS / sizeof SECTIONS[0]),
 };
@@ -233,10 +249,10 @@ static void method_list(void)
     const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
     printf(fmt, "name", "family", "order", "reconstruct", "about");
     printf(fmt, "exact", "closed form", "-", "-", "closed-form w(t), lambda(w(t)), reference R(t)");
-    for (int i = 0; i < sus_step_method_count(); i++) {
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
         char order[16];
-        snprintf(order, sizeof order, "%d", me->type->order);
+        snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->order);
         printf(fmt, me->type->name, me->family, order,
                uses_reconstruction(me, &paper) ? SUS_RECON_NAMES[me->recon] : "own", me->about);
     }
@@ -283,6 +299,8 @@ static long steps_for_time(double T, double eps)
 static int uses_reconstruction(const sus_step_method *me, const sus_model *m)
 {
     double R[2][3][3];
+    if (me->type->tol) /* a tolerance-driven method has no single step to probe; its attitude is its own */
+        return me->type->follows_recon;
     for (int r = 0; r < 2; r++) {
         sus_attitude att;
         double w[3] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
@@ -334,13 +352,32 @@ static void check_sweeps(suslov_args *a, const given *g)
     a->stepper = sus_exp_midpoint_sweeps_type(a->sweeps);
 }
 
-static void check_run(suslov_args *a, const given *g)
+/* A tolerance-driven method: --tol and --time, no fixed step. The smallest TOL is one rounding
+ * unit of 1: a step's estimate cannot be resolved below the rounding of the state it corrects. */
+static void check_tol_run(suslov_args *a, const given *g)
 {
-    char err[1024];
-    if (!g->method)
-        cli_die("--method is required");
-    if (strcmp(g->method, "list") == 0)
-        method_list();
+    if (isnan(g->tol))
+        cli_die("--method %s chooses its steps from --tol, which is required", g->method);
+    if (!(g->tol >= DBL_EPSILON && g->tol < 1.0))
+        cli_die("--tol must be in [2^-52, 1), got %.17g", g->tol);
+    if (!isnan(g->eps) || g->steps > 0)
+        cli_die("--tol chooses the steps: give --time, not --eps or --steps");
+    if (g->every_given)
+        cli_die("--every counts fixed steps; with --tol rows come at each step or by --every-time");
+    if (isnan(g->T) || !(g->T > 0.0))
+        cli_die("--tol needs a final time --time T > 0");
+    if (!isnan(g->every_time) && !(g->every_time > 0.0))
+        cli_die("--every-time must be positive, got %.17g", g->every_time);
+    a->tol = g->tol;
+    a->t_end = g->T;
+    a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;
+}
+
+static void check_fixed_steps(suslov_args *a, const given *g)
+{
+    if (!isnan(g->tol) || !isnan(g->every_time))
+        cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
+                isnan(g->tol) ? "--every-time" : "--tol");
     if (isnan(g->eps))
         cli_die("--eps is required");
     if (!(g->eps > 0.0))
@@ -352,6 +389,21 @@ static void check_run(suslov_args *a, const given *g)
     /* Every t_k = k eps <= N eps must be a finite number. */
     if (!isfinite((double)a->steps * a->eps))
         cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
+    a->t_end = (double)a->steps * a->eps;
+}
+
+static void check_run(suslov_args *a, const given *g)
+{
+    char err[1024];
+    if (!g->method)
+        cli_die("--method is required");
+    if (strcmp(g->method, "list") == 0)
+        method_list();
+    const sus_step_method *me = sus_step_method_by_name(g->method);
+    if (me && me->type->tol)
+        check_tol_run(a, g);
+    else
+        check_fixed_steps(a, g);
     char bad[512];
     if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
         cli_die("%s", bad);
@@ -362,8 +414,7 @@ static void check_run(suslov_args *a, const given *g)
         cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
-    const double T = (double)a->steps * a->eps;
-    const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, T);
+    const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
         cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
                 "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
@@ -375,7 +426,7 @@ static void check_run(suslov_args *a, const given *g)
 
 void suslov_cli_parse(suslov_args *a, int argc, char **argv)
 {
-    given g = {.eps = NAN, .T = NAN, .every = 1, .header = 1,
+    given g = {.eps = NAN, .T = NAN, .tol = NAN, .every_time = NAN, .every = 1, .header = 1,
                .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
     cli_parse(&SPEC, argc, argv, &g);
@@ -422,14 +473,20 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
     }
     if (a->method)
         fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
-                a->method->family, a->method->type->order, SUS_RECON_NAMES[a->recon]);
+                a->method->family,
+                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order,
+                SUS_RECON_NAMES[a->recon]);
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     if (a->sweeps)
         fprintf(fp, "# sweeps: the implicit equation solved by %d fixed-point sweeps, not Newton\n",
                 a->sweeps);
-    fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
-            (double)a->steps * a->eps);
+    if (a->tol > 0.0)
+        fprintf(fp, "# tol: %.17g, every time: %.17g (0: every accepted step), final time: %.17g\n", a->tol,
+                a->every_time, a->t_end);
+    else
+        fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
+                a->t_end);
     fputs("# inertia (rows of I):", fp);
     for (int i = 0; i < 9; i++)
         fprintf(fp, "%s%.17g", i ? "," : " ", a->inertia[i]);

@@ -16,6 +16,7 @@ typedef struct {
     const char *output;          /* NULL or "-" for stdout */
     double eps;
     long steps, every;
+    double tol, t_end, every_time; /* tol > 0: a tolerance-driven run (t_end: the final time of any run) */
     double w0[2], inertia[9];
     int quiet, header;
     sus_model model;

@@ -73,6 +73,23 @@ bad "non-symmetric I_m" --method rk4 --eps 0.1 --steps 3 --inertia 1,0.1,0.2,0.3
 bad "indefinite I_m" --method rk4 --eps 0.1 --steps 3 --inertia 1,2,0,2,1,0,0,0,1
 bad "non-finite inertia" --method rk4 --eps 0.1 --steps 3 --inertia 1,0.1,0.2,0.1,1,0.2,nan,0.1,1
 bad "short --omega0" --method rk4 --eps 0.1 --steps 3 --omega0 0.4
+# a tolerance-driven method: --tol in [2^-52, 1) with --time, never with a fixed step
+A="--method taylor-adaptive"
+bad "--tol 0" $A --tol 0 --time 1
+bad "--tol 1" $A --tol 1 --time 1
+bad "--tol NaN" $A --tol nan --time 1
+bad "--tol below 2^-52" $A --tol 1e-17 --time 1
+bad "--tol with --eps" $A --tol 1e-8 --eps 0.1 --time 1
+bad "--tol with --steps" $A --tol 1e-8 --steps 3
+bad "--tol without --time" $A --tol 1e-8
+bad "--tol with --every" $A --tol 1e-8 --time 1 --every 2
+bad "--every-time <= 0" $A --tol 1e-8 --time 1 --every-time 0
+bad "taylor-adaptive without --tol" $A --time 1
+bad "--tol to a fixed-step method" --method rk4 --eps 0.1 --steps 3 --tol 1e-8
+bad "--every-time without --tol" --method rk4 --eps 0.1 --steps 3 --every-time 0.5
+"$S" $A --tol 1e-10 --time 10 --every-time 2.5 --no-header >"$T/tol.csv"; rc=$?
+check "--tol 1e-10 --every-time 2.5 to 10: exit $rc, rows at t = $(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" \
+    test "$rc" = 0 -a "$(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" = "0 2.5 5 7.5 10 "
 bad "unknown reconstruction" --method rk4 --eps 0.1 --steps 3 --reconstruct exp
 bad "empty list field" --method rk4 --eps 0.1 --steps 3 --omega0 1,,2
 bad "leading and trailing comma" --method rk4 --eps 0.1 --steps 3 --omega0 ,1,2,

@@ -20,6 +20,7 @@
 #include "claims_propocons1.h"
 #include "claims_section6.h"
 #include "claims_highorder.h"
+#include "claims_adaptive.h"
 #include "claims_coverage.h"
 #include "claims_fig2readings.h"
 #include "claims_methods.h"
@@ -505,6 +506,7 @@ int main(int argc, char **argv)
     fig2more_claims(&m, &ex);
     propocons1_claims(&m, &ex);
     highorder_claims(&m, &ex);
+    adaptive_claims();
     coverage_claims(&m);
     fig2readings_claims(&m);
 

@@ -157,9 +157,14 @@ int main(void)
         }
         fclose(fp);
     }
-    CHECK(ok && rows == sus_step_method_count(), "methods.tsv: a header and %d rows for %d methods", rows,
-          sus_step_method_count());
-    for (int i = 0; i < sus_step_method_count(); i++)
+    CHECK(ok && rows == sus_step_method_count_all(), "methods.tsv: a header and %d rows for %d methods", rows,
+          sus_step_method_count_all());
+    /* The fixed-step methods first, each with a step of given eps; the tolerance-driven ones after. */
+    for (int i = 0; i < sus_step_method_count_all(); i++)
+        CHECK((i < sus_step_method_count()) == (sus_step_method_get(i)->type->tol == NULL),
+              "%s: listed with the %s methods", sus_step_method_get(i)->type->name,
+              sus_step_method_get(i)->type->tol ? "tolerance-driven" : "fixed-step");
+    for (int i = 0; i < sus_step_method_count_all(); i++)
         CHECK(sus_step_method_index_of(sus_step_method_get(i)->type) == i, "%s found by its type",
               sus_step_method_get(i)->type->name);
     return check_summary("test_registry");

@@ -1,0 +1,218 @@
+/* A tolerance-driven Taylor method: the series of step_taylor.c (taylor_series.h: the same
+ * recursion, the same structure: w3 = 0 exactly, a unit quaternion, E restored onto E(w_0)),
+ * with the order chosen from the tolerance and each step from the series' last two terms.
+ *
+ * Order (Jorba & Zou 2005, Sect. 3; heyoka's rule): a series with terms ~ r^n meets tol at
+ * least cost per unit time near p = -ln(tol)/2 + 1, rounded up here to an even order of
+ * ADAPTIVE_ORDERS, so p = 6 (tol >= 1e-4) ... 20 (tol near round-off).
+ *
+ * Error estimate, per group (the w rows, the quaternion rows), from the scaled coefficients
+ * (W_n = w_n h^n, so h is folded into the recursion): if the terms decay geometrically, the
+ * first term left out is about T_{p+1} = T_p^2 / T_{p-1}, T_n = |coefficient n|_inf of the
+ * group. A group whose last two rows vanish (w3 = 0 is never a row; an equilibrium makes every
+ * w row vanish) estimates 0: no division by zero and rho = inf for it; with T_{p-1} = 0 < T_p
+ * no ratio exists and T_p itself is the estimate. The quaternion group holds (q0, q3) and
+ * (q1, q2) together: for a steady rotation one pair has only even and the other only odd
+ * powers, so either alone would estimate 0 at every other order.
+ *
+ * Step control: since T_{p+1} ~ h^{p+1}, the step that would give tol is h (tol/err)^{1/(p+1)};
+ * the next step is that times SAFETY, at most GROW times the last (from the previous step's
+ * coefficients: no extra series). A step whose estimate exceeds tol (or is not a number) is
+ * rejected and retried as short as its estimate asks (at most SHRINK_MIN times shorter); after
+ * MAX_TRIES the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed
+ * tol. Every step stays inside the radius the series is proved to converge in (step_taylor.c). */
+#include "taylor.h"
+#include "taylor_series.h"
+
+#include "quaternion.h"
+#include "reconstruct.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* Hairer, Norsett & Wanner, Solving ODEs I, II.4: the usual safety factor and growth limit. */
+#define SAFETY 0.9
+#define GROW 5.0
+#define SHRINK_MIN 0.1
+/* Each retry is sized by the estimate of the try before, which meets tol at once when the
+ * estimate scales as h^{p+1}; a few more allow for steps near the radius, where it does not. */
+#define MAX_TRIES 12
+/* A step stays this fraction inside the proved radius (any fraction below 1 proves convergence;
+ * the estimate, not this, decides the accuracy). */
+#define RADIUS_FRACTION 0.99
+
+struct sus_tol_work {
+    const sus_model *m;
+    double tol, e0; /* the tolerance and E(w_0), the energy every step restores */
+    const struct adaptive_order *order;
+    double h_next; /* the next step to try (0: none yet) */
+    double h; /* the last accepted step */
+    double q0[4]; /* the attitude quaternion at its start */
+    taylor_series t; /* its series, for dense output */
+};
+
+/* max(|a|_inf, |b|_inf) of two pairs; NaN if any entry is NaN. */
+static double pair_norm(v2d a, v2d b)
+{
+    const double x = fabs(a[0]), y = fabs(a[1]), u = fabs(b[0]), v = fabs(b[1]);
+    const double m1 = (x >= y || isnan(x)) ? x : y, m2 = (u >= v || isnan(u)) ? u : v;
+    return (m1 >= m2 || isnan(m1)) ? m1 : m2;
+}
+
+/* T_{p+1} ~ T_p^2 / T_{p-1}, or T_p when T_{p-1} = 0 (see the top of the file). */
+static double group_estimate(double last2, double last)
+{
+    return last2 > 0.0 ? last * (last / last2) : last;
+}
+
+/* The step's error estimate: the larger of the two groups' (NaN if either is NaN). */
+static double estimate(const taylor_series *t, int p)
+{
+    const v2d z = {0.0, 0.0};
+    const double ew = group_estimate(pair_norm(t->W[p - 1], z), pair_norm(t->W[p], z));
+    const double eq = group_estimate(pair_norm(t->P[p - 1], t->M[p - 1]), pair_norm(t->P[p], t->M[p]));
+    return (ew >= eq || isnan(ew)) ? ew : eq;
+}
+
+/* One order's series, estimate and sums, with p a constant (the recursion unrolled). */
+typedef struct adaptive_order {
+    int p;
+    double (*try_step)(sus_tol_work *wk, double h, const double w[2]);
+    void (*sums)(const sus_tol_work *wk, double w_next[3], double dq[4]);
+} adaptive_order;
+
+#define ADAPTIVE_ORDER(N)                                                                                    \
+    static double try##N(sus_tol_work *wk, double h, const double w[2])                                      \
+    {                                                                                                        \
+        series(wk->m, N, h, w, 1, &wk->t);                                                                   \
+        return estimate(&wk->t, N);                                                                          \
+    }                                                                                                        \
+    static void sums##N(const sus_tol_work *wk, double w_next[3], double dq[4])                              \
+    {                                                                                                        \
+        dq_from(&wk->t, N, dq);                                                                              \
+        w_next_from(wk->m, N, &wk->t, wk->e0, w_next);                                                       \
+    }
+ADAPTIVE_ORDER(6)
+ADAPTIVE_ORDER(8)
+ADAPTIVE_ORDER(10)
+ADAPTIVE_ORDER(12)
+ADAPTIVE_ORDER(14)
+ADAPTIVE_ORDER(16)
+ADAPTIVE_ORDER(18)
+ADAPTIVE_ORDER(20)
+#define ENTRY(N)                                                                                             \
+    {                                                                                                        \
+        N, try##N, sums##N                                                                                   \
+    }
+static const adaptive_order ADAPTIVE_ORDERS[] = {ENTRY(6),  ENTRY(8),  ENTRY(10), ENTRY(12),
+                                                 ENTRY(14), ENTRY(16), ENTRY(18), ENTRY(20)};
+#define NORDERS ((int)(sizeof ADAPTIVE_ORDERS / sizeof ADAPTIVE_ORDERS[0]))
+
+static const adaptive_order *order_for(double tol)
+{
+    const double want = -0.5 * log(tol) + 1.0;
+    for (int i = 0; i < NORDERS; i++)
+        if (ADAPTIVE_ORDERS[i].p >= want) return &ADAPTIVE_ORDERS[i];
+    return &ADAPTIVE_ORDERS[NORDERS - 1];
+}
+
+int sus_step_taylor_adaptive_order(double tol)
+{
+    return order_for(tol)->p;
+}
+
+static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double w0[2])
+{
+    sus_tol_work *wk = malloc(sizeof *wk);
+    if (!wk) return NULL;
+    *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
+    return wk;
+}
+
+static void adaptive_free(sus_tol_work *wk)
+{
+    free(wk);
+}
+
+/* The step to try first: the longest the proved radius allows within [t, t_end]. */
+static double first_try(const sus_tol_work *wk, const double w[2], double left)
+{
+    const double h = wk->h_next > 0.0 ? wk->h_next : RADIUS_FRACTION * sus_step_taylor_radius(wk->m, w);
+    return fmin(h, left);
+}
+
+/* Shortened to the proved radius when the cheap bound K |w| h < 1 does not already prove it. */
+static double within_radius(const sus_model *m, const double w[2], double h)
+{
+    if (m->norm_b * m->norm_fA * hypot(w[0], w[1]) * h < 1.0) return h;
+    return fmin(h, RADIUS_FRACTION * sus_step_taylor_radius(m, w));
+}
+
+/* The accepted step: w, the quaternion and t advance, and the next step is proposed. */
+static void accept(sus_tol_work *wk, double h, double err, double t_end, double *t, double w[3],
+                   double *lambda, sus_attitude *att)
+{
+    const int p = wk->order->p;
+    double dq[4], q1[4];
+    sus_quat_of_attitude(att, wk->q0);
+    wk->order->sums(wk, w, dq);
+    sus_quat_mul(q1, wk->q0, dq);
+    sus_quat_to_attitude(q1, att);
+    *lambda = sus_lagmult(wk->m, w);
+    *t = h < t_end - *t ? *t + h : t_end;
+    wk->h = h;
+    wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
+}
+
+static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
+                         sus_attitude *att, sus_stepper_stats *st)
+{
+    const int p = wk->order->p;
+    double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t)), err = NAN;
+    *st = (sus_stepper_stats){.scale = wk->tol};
+    for (int tries = 0; tries<MAX_TRIES && * t + h> * t; tries++) {
+        err = wk->order->try_step(wk, h, w);
+        if (err <= wk->tol) {
+            st->iterations = tries;
+            st->residual = err;
+            st->det = h;
+            accept(wk, h, err, t_end, t, w, lambda, att);
+            return SUS_STEPPER_OK;
+        }
+        h *= fmax(SHRINK_MIN, fmin(SAFETY, SAFETY * pow(wk->tol / err, 1.0 / (p + 1))));
+    }
+    *st = (sus_stepper_stats){.iterations = MAX_TRIES, .residual = err, .scale = wk->tol, .det = h};
+    return SUS_STEPPER_REJECTED;
+}
+
+/* The state at tau into the last step: the step's own polynomials at theta = tau / h (the
+ * coefficients are scaled by h^n), w restored onto E(w_0), the quaternion normalised. */
+static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
+{
+    const double th = wk->h > 0.0 ? tau / wk->h : 0.0;
+    v2d W = {0.0, 0.0}, P = {0.0, 0.0}, M = {0.0, 0.0};
+    for (int n = wk->order->p; n >= 0; n--) {
+        W = W * th + wk->t.W[n];
+        P = P * th + wk->t.P[n];
+        M = M * th + wk->t.M[n];
+    }
+    const double dq[4] = {P[0], M[0], M[1], P[1]};
+    double q[4];
+    w[0] = W[0], w[1] = W[1], w[2] = 0.0;
+    taylor_energy_onto(wk->m, wk->e0, w);
+    *lambda = sus_lagmult(wk->m, w);
+    sus_quat_mul(q, wk->q0, dq);
+    sus_quat_to_attitude(q, att);
+}
+
+static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc, adaptive_step, adaptive_dense, adaptive_free,
+                                         sus_step_taylor_adaptive_order};
+
+const sus_stepper_type sus_step_taylor_adaptive_type = {.name = "taylor-adaptive",
+                                                        .order = 0,
+                                                        .lambda_order = 0,
+                                                        .conserves_energy = 1,
+                                                        .attitude = SUS_ATTITUDE_QUAT,
+                                                        .substeps = 1,
+                                                        .source = __FILE__,
+                                                        .tol = &ADAPTIVE_OPS};

@@ -1,0 +1,275 @@
+/* The tolerance-driven Taylor method's edge cases, through its stepper type (stepper.h,
+ * sus_tol_ops) and the driver (sus_run_tol), on the paper's body and general bodies:
+ *   - a step whose estimate exceeds TOL is rejected and retried, and an accepted step's own
+ *     estimate is at most TOL;
+ *   - a TOL no step can meet (1e-300, far below the rounding of any state) ends in
+ *     SUS_STEPPER_REJECTED after the bounded retries, the state untouched, and the driver reports
+ *     the step, its start time and the estimate (exit 3 in suslov);
+ *   - w = 0 (E0 = 0): every coefficient row vanishes, rho = inf: no division by zero, no 0/0 in
+ *     the energy scaling; the run stays at w = 0, R = I, finite;
+ *   - a steady rotation (c(w) = 0): the w rows vanish (rho = inf for them) and the quaternion rows
+ *     set the step; w stays exactly w*, R is the rotation exp(t w*^) (so3.h) to within N TOL;
+ *   - dense output at the step's ends equals the step's states, and rows come at the requested
+ *     times, t_end included, with w3 = 0, |R^T R - I| at round-off and E = E0.
+ * Expected values come from the model (the steady rotation, the closed-form exponential), never
+ * from the code under test. */
+#include "bodies.h"
+#include "check.h"
+#include "driver.h"
+#include "exact.h"
+#include "refattitude.h"
+#include "registry.h"
+#include "so3.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+static const sus_stepper_type *adaptive(void)
+{
+    for (int i = sus_step_method_count(); i < sus_step_method_count_all(); i++)
+        if (sus_step_method_get(i)->type->tol) return sus_step_method_get(i)->type;
+    return NULL;
+}
+
+typedef struct {
+    const sus_model *m;
+    double e0, worst_e, worst_orth, w3, t_prev;
+    int rows, monotone;
+    sus_row last;
+} rows_ctx;
+
+static int take(void *vctx, const sus_row *r)
+{
+    rows_ctx *c = vctx;
+    c->monotone &= c->rows == 0 || r->t > c->t_prev;
+    c->t_prev = r->t;
+    c->rows++;
+    c->worst_e = fmax(c->worst_e, fabs(sus_energy(c->m, r->w) - c->e0));
+    c->worst_orth = fmax(c->worst_orth, sus_so3_orth_defect(r->R));
+    c->w3 = fmax(c->w3, fabs(r->w[2]));
+    c->last = *r;
+    return 0;
+}
+
+static int run(const sus_model *m, const double w0[2], double tol, double T, double dt, rows_ctx *c,
+               sus_run_report *rep)
+{
+    *c = (rows_ctx){.m = m, .e0 = sus_energy(m, w0), .monotone = 1};
+    const sus_tol_config cfg = {m, adaptive(), tol, T, dt};
+    return sus_run_tol(&cfg, w0, take, c, rep);
+}
+
+/* Rejection and the accepted step's estimate, then the impossible tolerance. */
+static void rejection(const sus_model *m, const double w0[2], const char *name)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    sus_tol_work *wk = ops->alloc(m, 1e-12, w0);
+    double w[3] = {w0[0], w0[1], 0.0}, lam = 0.0, t = 0.0;
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    /* the first try is the whole proved radius, far more than 1e-12 allows */
+    const int rc = ops->step(wk, 50.0, &t, w, &lam, &att, &st);
+    CHECK(rc == SUS_STEPPER_OK && st.iterations >= 1 && st.residual <= 1e-12 && t > 0.0,
+          "%s: first step rejected %d times, then accepted with estimate %.3g <= 1e-12 (t = %.3g)", name,
+          st.iterations, st.residual, t);
+    ops->free(wk);
+    /* the contract on a fine grid of TOL (ten a decade, 1e-4 ... 1e-13): an accepted step's own
+     * estimate is at most TOL, whatever the first try gave */
+    int over = 0, tries = 0;
+    for (int j = 0; j <= 90; j++) {
+        const double tol = pow(10.0, -4.0 - 0.1 * j);
+        double wj[3] = {w0[0], w0[1], 0.0}, tj = 0.0;
+        sus_tol_work *wj_work = ops->alloc(m, tol, w0);
+        sus_attitude_identity(&att);
+        over += ops->step(wj_work, 50.0, &tj, wj, &lam, &att, &st) != SUS_STEPPER_OK || !(st.residual <= tol);
+        tries += st.iterations;
+        ops->free(wj_work);
+    }
+    CHECK(over == 0, "%s: 91 first steps (TOL 1e-4 ... 1e-13): %d accepted above TOL (%d rejections)", name,
+          over, tries);
+
+    wk = ops->alloc(m, 1e-300, w0);
+    double w1[3] = {w0[0], w0[1], 0.0}, t1 = 0.0;
+    sus_attitude_identity(&att);
+    const int bad = ops->step(wk, 50.0, &t1, w1, &lam, &att, &st);
+    CHECK(bad == SUS_STEPPER_REJECTED && st.iterations > 1 && st.residual > 1e-300 && st.scale == 1e-300 &&
+              t1 == 0.0 && w1[0] == w0[0] && w1[1] == w0[1],
+          "%s: TOL 1e-300 rejected after %d tries (estimate %.3g), state untouched", name, st.iterations,
+          st.residual);
+    ops->free(wk);
+
+    rows_ctx c;
+    sus_run_report rep;
+    const int rrc = run(m, w0, 1e-300, 50.0, 0.0, &c, &rep);
+    CHECK(rrc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_REJECTED && rep.step == 1 && rep.t == 0.0 &&
+              c.rows == 1,
+          "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name, rep.step,
+          rep.t);
+}
+
+/* w = 0 and a steady rotation: vanishing rows. */
+static void vanishing_rows(const sus_model *m, const double w0[2], const char *name)
+{
+    rows_ctx c;
+    sus_run_report rep;
+    const double zero[2] = {0.0, 0.0};
+    int rc = run(m, zero, 1e-10, 50.0, 5.0, &c, &rep);
+    CHECK(rc == SUS_RUN_OK && c.rows == 11 && c.last.w[0] == 0.0 && c.last.w[1] == 0.0 &&
+              c.last.R[0][0] == 1.0 && c.last.R[1][1] == 1.0 && c.last.R[2][2] == 1.0 && c.last.t == 50.0,
+          "%s: w0 = 0 (E0 = 0): %d rows to t = %g, w = 0 and R = I exactly", name, c.rows, c.last.t);
+    /* the steady rotation w* (c(w*) = 0) the closed form tends to from w0: the attracting one of
+     * +-w*, so the rounding of c(w*) ~ u is not amplified */
+    sus_exact ex;
+    double ws[2];
+    sus_exact_init(&ex, m, w0);
+    sus_exact_limit(&ex, ws);
+    const double s = hypot(ws[0], ws[1]);
+    rc = run(m, ws, 1e-10, 50.0, 0.0, &c, &rep);
+    double R[3][3], Wt[3] = {50.0 * ws[0], 50.0 * ws[1], 0.0};
+    sus_so3_exp(Wt, R);
+    const double d = sus_so3_dist(R, c.last.R);
+    CHECK(rc == SUS_RUN_OK && fabs(c.last.w[0] - ws[0]) <= 4e-16 * s &&
+              fabs(c.last.w[1] - ws[1]) <= 4e-16 * s && d <= 10.0 * (double)c.last.k * 1e-10,
+          "%s: steady rotation: w stays w* (to %.2g), R = exp(50 w*^) to %.3g <= 10 N TOL (N = %ld)", name,
+          fmax(fabs(c.last.w[0] - ws[0]), fabs(c.last.w[1] - ws[1])), d, c.last.k);
+}
+
+/* Rows at requested times, structure, and dense output agreeing with the steps it lies between. */
+static void rows_and_structure(const sus_model *m, const double w0[2], const char *name)
+{
+    rows_ctx a, b;
+    sus_run_report rep;
+    const int ra = run(m, w0, 1e-9, 20.0, 0.25, &a, &rep);
+    const int rb = run(m, w0, 1e-9, 20.0, 0.0, &b, &rep);
+    /* the next step is sized by the estimate's own law, err ~ h^{p+1}, aiming at SAFETY^{p+1} TOL:
+     * a step is rejected only where the estimate's constant grows by more than SAFETY^{-(p+1)}
+     * (>= 2) from one step to the next, which a smooth flow does on few steps: fewer than half */
+    CHECK(rb == SUS_RUN_OK && 2 * rep.sus_newton_iterations < b.last.k,
+          "%s: %ld rejected tries over %ld accepted steps to t = 20 (fewer than half)", name,
+          rep.sus_newton_iterations, b.last.k);
+    CHECK(ra == SUS_RUN_OK && a.rows == 81 && a.monotone && a.last.t == 20.0,
+          "%s: --every-time 0.25 to 20: %d rows (81), increasing t, the last at %g", name, a.rows, a.last.t);
+    CHECK(a.w3 == 0.0 && a.worst_orth <= 1e-14 && a.worst_e <= 8.0 * SUS_U * a.e0,
+          "%s: dense rows keep w3 = 0, |R^T R - I| = %.2g <= 1e-14, |E - E0| = %.2g <= 8 u E0", name,
+          a.worst_orth, a.worst_e);
+    /* the row at t_end is the step's own end in both runs: the same state */
+    CHECK(rb == SUS_RUN_OK && memcmp(a.last.w, b.last.w, sizeof a.last.w) == 0 &&
+              memcmp(a.last.R, b.last.R, sizeof a.last.R) == 0,
+          "%s: the dense-output run ends in the same state as the step-by-step run", name);
+}
+
+/* Dense rows against the reference between steps: every row within 10 N TOL of the long-double
+ * reference attitude and of the closed-form w (the bound of the ledger's claims_adaptive.c: N
+ * local errors of at most TOL, the estimate within 10x). */
+typedef struct {
+    sus_exact ex;
+    sus_refatt ref;
+    double worst_R, worst_w;
+} dense_ctx;
+
+static int against_reference(void *vctx, const sus_row *r)
+{
+    dense_ctx *c = vctx;
+    double R[3][3], w[2];
+    sus_refatt_advance(&c->ref, r->t, R);
+    sus_exact_omega(&c->ex, r->t, w);
+    c->worst_R = fmax(c->worst_R, sus_so3_dist(R, r->R));
+    c->worst_w = fmax(c->worst_w, hypot(r->w[0] - w[0], r->w[1] - w[1]));
+    return 0;
+}
+
+static void dense_accuracy(const sus_model *m, const double w0[2], const char *name)
+{
+    static const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    dense_ctx c = {.worst_R = 0.0};
+    sus_exact_init(&c.ex, m, w0);
+    sus_refatt_init(&c.ref, &c.ex, 0.0, I3);
+    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1};
+    sus_run_report rep;
+    rows_ctx steps;
+    const int rc = sus_run_tol(&cfg, w0, against_reference, &c, &rep);
+    run(m, w0, 1e-8, 30.0, 0.0, &steps, &rep);
+    const double bound = 10.0 * (double)steps.last.k * 1e-8;
+    CHECK(
+        rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
+        "%s: 301 dense rows to t = 30 at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N TOL "
+        "= %.3g",
+        name, c.worst_R, c.worst_w, bound);
+}
+
+/* The estimate against the true local error of a first accepted step (closed-form w, long-double
+ * reference R over the step): a last-two-terms estimate of a geometric tail is within F = 10 of
+ * it either way (the undershoot factor claims_adaptive.c allows: ratio up to 0.9), over TOL
+ * 1e-6 ... 1e-12 where the truncation, not round-off, is the local error. */
+static void estimate_vs_truth(const sus_model *m, const double w0[2], const char *name)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    double lo = INFINITY, hi = 0.0;
+    for (double tol = 1e-6; tol >= 1e-12; tol *= 1e-2) {
+        sus_tol_work *wk = ops->alloc(m, tol, w0);
+        double w[3] = {w0[0], w0[1], 0.0}, lam, t = 0.0, wx[2], Rx[3][3], wr[2], R[3][3];
+        sus_attitude att;
+        sus_stepper_stats st;
+        sus_attitude_identity(&att);
+        const int rc = wk ? ops->step(wk, 50.0, &t, w, &lam, &att, &st) : -1;
+        ops->free(wk);
+        if (rc != SUS_STEPPER_OK) {
+            lo = 0.0;
+            break;
+        }
+        sus_refatt_precise(m, w0, t, wr, Rx);
+        sus_exact omega;
+        sus_exact_init(&omega, m, w0);
+        sus_exact_omega(&omega, t, wx);
+        sus_attitude_get(&att, R);
+        const double truth = fmax(hypot(w[0] - wx[0], w[1] - wx[1]), sus_so3_dist(Rx, R));
+        lo = fmin(lo, st.residual / truth);
+        hi = fmax(hi, st.residual / truth);
+    }
+    CHECK(lo >= 0.1 && hi <= 10.0,
+          "%s: the first step's estimate over its true local error in [%.3g, %.3g] (TOL "
+          "1e-6, 1e-8, 1e-10, 1e-12): within [0.1, 10]",
+          name, lo, hi);
+}
+
+/* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 1
+ * in [6, 20]. */
+static void order_rule(void)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    int ok = 1;
+    for (double tol = 0.5; tol > 1e-16; tol *= 0.3) {
+        int p = 6;
+        while (p < 20 && p < -0.5 * log(tol) + 1.0) p += 2;
+        ok &= ops->order(tol) == p;
+    }
+    CHECK(ok && ops->order(1e-10) == 14 && ops->order(1e-4) == 6 && ops->order(DBL_EPSILON) == 20,
+          "the order is the smallest even p >= -ln(TOL)/2 + 1 in [6, 20] (1e-10: %d)", ops->order(1e-10));
+}
+
+int main(void)
+{
+    if (!adaptive()) {
+        CHECK(0, "a tolerance-driven method is registered");
+        return check_summary("test_taylor_adaptive");
+    }
+    order_rule();
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        char err[256];
+        body_get(k, &b);
+        if (sus_model_init(&m, b.I, err, sizeof err) != 0) {
+            CHECK(0, "%s: %s", b.name, err);
+            continue;
+        }
+        rejection(&m, b.w0, b.name);
+        vanishing_rows(&m, b.w0, b.name);
+        rows_and_structure(&m, b.w0, b.name);
+        dense_accuracy(&m, b.w0, b.name);
+        estimate_vs_truth(&m, b.w0, b.name);
+    }
+    return check_summary("test_taylor_adaptive");
+}
