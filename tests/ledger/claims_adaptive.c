@@ -61,10 +61,11 @@ static int track(void *vctx, const sus_row *r)
     track_ctx *c = vctx;
     c->steps = r->k;
     for (int i = 0; i < 3; i++) c->w[i] = r->w[i];
+    double R[3][3]; /* a local copy: GCC's -fsanitize build misjudges the size of r->R */
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) c->R[i][j] = r->R[i][j];
+        for (int j = 0; j < 3; j++) c->R[i][j] = R[i][j] = r->R[i][j];
     c->w3 = fmax(c->w3, fabs(r->w[2]));
-    c->orth = fmax(c->orth, sus_so3_orth_defect(r->R));
+    c->orth = fmax(c->orth, sus_so3_orth_defect(R));
     c->energy = fmax(c->energy, fabs(sus_energy(c->m, r->w) - c->e0));
     return 0;
 }
