@@ -280,11 +280,12 @@ class Scratch:
             self.tests.append((name, cmd, [self.link_cmd(p) for p in needs], 30 + 5 * secs, base, secs))
             print("mutants-ops: baseline %s %.1f s%s" % (name, secs, "" if base is None else " (FAILS)"),
                   flush=True)
-        # test_mutant_kills first (it checks the formulas directly, in milliseconds), then the other
+        # test_mutant_kills and test_guards first (formulas and bounds checked directly, in
+        # milliseconds), then the other
         # unit tests quickest first, then the CLI value tests, the ledger, the CLI interface tests
-        rank = {n: i for i, n in enumerate(["test_mutant_kills"])}
+        rank = {n: i for i, n in enumerate(["test_mutant_kills", "test_guards"])}
         self.tests.sort(key=lambda t: (not t[0].startswith("test_") or t[0] == "test_cli",
-                                       rank.get(t[0], 1), t[5] if t[0].startswith("test_") else 0))
+                                       rank.get(t[0], 2), t[5] if t[0].startswith("test_") else 0))
 
     def run_tests(self, path, relink=True):
         """The first test that fails beyond the baseline, or None; "" when a program does not link.
