@@ -1,6 +1,7 @@
 /* The library's guards and bounds, checked against their definitions on the seeded general bodies:
  * the model's rounded-up norms |b|_2 and ||fA||_2 (model.h: bounds, so |c(v) fA u| <= K |v| |u|)
- * and the driver's finiteness check of a row (driver.h: every field of t, w, lambda, R looked at).
+ * and the driver's finiteness checks (driver.h: every field of a row, and every step's state
+ * w, lambda and the attitude as stored, looked at).
  * These are what the Taylor radius and the blow-up report stand on, and no value a program prints
  * moves when they are slightly off, so they are checked here directly. */
 #include "bodies.h"
@@ -54,6 +55,60 @@ static void row_finite_checks(void)
           missed);
 }
 
+/* A stepper that keeps w and the attitude, except that at step POISON_STEP it makes one field of
+ * the state non-finite: w_next[0..2], lambda, hi[i][j] (a matrix attitude) or q[i] (a stale one). */
+#define POISON_STEP 3
+static int poison_field, poison_calls;
+
+static int poison_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att, const double w[3],
+                       double w_next[3], double *lambda_next, sus_stepper_stats *st)
+{
+    (void)m, (void)eps, (void)recon;
+    *st = (sus_stepper_stats){0};
+    for (int i = 0; i < 3; i++)
+        w_next[i] = w[i];
+    *lambda_next = 0.25;
+    att->r_stale = poison_field >= 13;
+    att->has_q = att->r_stale;
+    if (++poison_calls != POISON_STEP)
+        return SUS_STEPPER_OK;
+    const int f = poison_field;
+    double *target = f < 3 ? &w_next[f] : f == 3 ? lambda_next : f < 13 ? &att->hi[(f - 4) / 3][(f - 4) % 3]
+                                                                   : &att->q[f - 13];
+    *target = NAN;
+    return SUS_STEPPER_OK;
+}
+
+static int poison_apply(const sus_model *m, double eps, const double w[3], double w_next[3], double *lambda_next,
+                        sus_stepper_stats *st)
+{
+    sus_attitude a;
+    sus_attitude_identity(&a);
+    return poison_full(m, eps, SUS_RECON_CAYLEY, &a, w, w_next, lambda_next, st);
+}
+
+static const sus_stepper_type poison_stepper = {
+    .name = "poison", .order = 1, .lambda_order = 1, .apply = poison_apply, .apply_full = poison_full,
+    .attitude = SUS_ATTITUDE_MATRIX, .substeps = 1, .source = __FILE__};
+
+/* A non-finite field of the state at a step whose row is not written stops the run there. */
+static void blowup_checks(const sus_model *m)
+{
+    const double w0[2] = {0.4, 0.5};
+    int missed = 0;
+    for (poison_field = 0; poison_field < 17; poison_field++) {
+        const sus_run_config cfg = {.model = m, .stepper = &poison_stepper, .recon = SUS_RECON_CAYLEY,
+                                    .eps = 0.125, .steps = 10, .every = 1000};
+        sus_row last;
+        sus_run_report rep;
+        poison_calls = 0;
+        const int rc = sus_run(&cfg, w0, sus_keep_last, &last, &rep);
+        missed += !(rc == SUS_RUN_BLOWUP && rep.step == POISON_STEP && rep.t == POISON_STEP * 0.125);
+    }
+    CHECK(missed == 0, "a non-finite w_i, lambda, R entry or q_i (each of 17 in turn) at step %d, whose row is "
+          "not written, stops the run there: %d missed", POISON_STEP, missed);
+}
+
 int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
@@ -66,6 +121,8 @@ int main(void)
             continue;
         }
         norm_checks(&bd, &m);
+        if (k == 0)
+            blowup_checks(&m);
     }
     row_finite_checks();
     return check_summary("test_guards");
