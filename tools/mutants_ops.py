@@ -25,7 +25,8 @@ a proof) counts there as equivalent.
 
 Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume]]
        [--only TEXT] [--summarize] [--list]
-Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
+Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X,
+round-off survivors R" (S counts only the survivors neither list explains).
 Exit status 1 when a mutant survives unexplained.
 """
 import argparse
@@ -365,6 +366,7 @@ def main():
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/build/mutants_equivalent")
+    ap.add_argument("--roundoff", default="tests/build/mutants_roundoff")
     a = ap.parse_args()
     types = typedef_names(sorted(glob.glob("src/*/*.h") + glob.glob("src/*/*.c")))
     texts = {p: open(p).read() for p in a.files}
@@ -436,9 +438,10 @@ def campaign(a, sc, todo, texts, labels, muts):
 def write_result(a, labels, texts, muts):
     """The result file from the log: the counts over every file, then per file, then one line a
     mutant. A logged survivor whose mutant tests/build/mutants_equivalent lists (with its proof)
-    counts as equivalent; a mutant not yet run is counted as not run."""
-    done, eq = read_log(a.log), load_equivalents(a.equivalent)
-    kinds = ("killed", "equivalent", "survived", "did-not-build", "not-run")
+    counts as equivalent, one listed in tests/build/mutants_roundoff (why no test can see it) as a
+    round-off survivor; a mutant not yet run is counted as not run."""
+    done, eq, ro = read_log(a.log), load_equivalents(a.equivalent), load_equivalents(a.roundoff)
+    kinds = ("killed", "equivalent", "round-off", "survived", "did-not-build", "not-run")
     total, per_file, lines = dict.fromkeys(kinds, 0), {}, []
     for m, label in zip(muts, labels):
         verdict, why = done.get(label, ("not-run", ""))
@@ -446,6 +449,8 @@ def write_result(a, labels, texts, muts):
             _, orig, new = label_of(m, texts[m[0]])
             if (m[0], orig, new) in eq:
                 verdict, why = "equivalent", eq[(m[0], orig, new)]
+            elif (m[0], orig, new) in ro:
+                verdict, why = "round-off", ro[(m[0], orig, new)]
         total[verdict] += 1
         per_file.setdefault(m[0], dict.fromkeys(kinds, 0))[verdict] += 1
         lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
@@ -466,10 +471,12 @@ def write_result(a, labels, texts, muts):
 
 
 def counts_text(c, n):
-    live = c["killed"] + c["survived"]
+    """The score is K / (N - E - B): a round-off survivor is a live mutant that no test kills."""
+    live = c["killed"] + c["survived"] + c["round-off"]
     score = "%.4f" % (c["killed"] / live) if live else "n/a"
-    return ("generated %d, killed %d, equivalent %d, survived %d, did-not-build %d, score %s%s"
-            % (n, c["killed"], c["equivalent"], c["survived"], c["did-not-build"], score,
+    return ("generated %d, killed %d, equivalent %d, survived %d, did-not-build %d, score %s, "
+            "round-off survivors %d%s"
+            % (n, c["killed"], c["equivalent"], c["survived"], c["did-not-build"], score, c["round-off"],
                ", not run %d" % c["not-run"] if c["not-run"] else ""))
 
 
