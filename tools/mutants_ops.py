@@ -18,7 +18,8 @@ layer's archive and the tests run, each program relinked just before it runs, in
 the tests that have killed most of this file's mutants so far first, then test_mutant_kills, the
 other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
 each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
-the unmutated tree's own failures kills the mutant. A header's mutants are built by make.
+the unmutated tree's own failures kills the mutant. A header's mutant first meets the unit tests
+that call its inline functions, compiled with it; if they do not kill it, make rebuilds the tree.
 Each verdict is appended to --log as it comes, so a campaign cut short resumes (--resume); the
 result file is written from the log, and a survivor listed in tests/build/mutants_equivalent (with
 a proof) counts there as equivalent.
@@ -296,17 +297,46 @@ class Scratch:
             name, cmd, links, secs, base, _ = self.tests[i]
             if relink and any(self.sh(l).returncode for l in links):
                 return ""
-            try:
-                r = self.sh(cmd, timeout=secs)
-            except subprocess.TimeoutExpired:
-                return self.killed(path, name, name + " (timeout)")
-            if r.returncode == 0:
-                continue
-            sig = signature(r.stdout + r.stderr)
-            new = sig - base if base is not None else sig
-            if base is None or new or not sig:
-                first = sorted(new)[0][:60] if new else "exit status %d" % r.returncode
-                return self.killed(path, name, "%s (%s)" % (name, first))
+            killer = self.verdict(path, name, cmd, secs, base)
+            if killer:
+                return killer
+        return None
+
+    def header_quick(self, path):
+        """A header's mutant against the unit tests that call its inline functions themselves:
+        each is compiled with the mutated header into a program of its own (the library keeps
+        its unmutated copies), so that most of a header's mutants cost no rebuild. The killer,
+        None, or "" when the header does not compile."""
+        for name in ("test_mutant_kills", "test_model"):
+            test = next(t for t in self.tests if t[0] == name)
+            prog, obj = "%s/quick/%s" % (self.b, name), "%s/quick/%s.o" % (self.b, name)
+            os.makedirs(os.path.join(self.dir, self.b, "quick"), exist_ok=True)
+            cmd = ["cc", "-std=c17", "-O2", "-g0"] + ["-Isrc/" + d for d in LAYERS] + \
+                ["-Itests/unit", "-Itests/ledger"] + self.pkg_cflags + ["-c", "tests/unit/%s.c" % name, "-o", obj]
+            if self.sh(cmd).returncode:
+                return ""
+            link = self.link_cmd("%s/%s" % (self.b, name))
+            link[1], link[link.index("-o") + 1] = obj, prog
+            if self.sh(link).returncode:
+                return ""
+            killer = self.verdict(path, name, [prog], test[3], test[4])
+            if killer:
+                return killer + ", the test's own copy of the header"
+        return None
+
+    def verdict(self, path, name, cmd, secs, base):
+        """The killer's description when the test fails beyond its baseline, else None."""
+        try:
+            r = self.sh(cmd, timeout=secs)
+        except subprocess.TimeoutExpired:
+            return self.killed(path, name, name + " (timeout)")
+        if r.returncode == 0:
+            return None
+        sig = signature(r.stdout + r.stderr)
+        new = sig - base if base is not None else sig
+        if base is None or new or not sig:
+            first = sorted(new)[0][:60] if new else "exit status %d" % r.returncode
+            return self.killed(path, name, "%s (%s)" % (name, first))
         return None
 
     def killed(self, path, name, why):
@@ -332,8 +362,13 @@ def run_one(sc, mut, texts, ref_objs):
     target = os.path.join(sc.dir, path)
     with open(target, "w") as f:
         f.write(text[:off] + rep + text[off + length:])
-    header = not path.endswith(".c")
+    header = rebuilt = not path.endswith(".c")
     try:
+        if header:
+            quick = sc.header_quick(path)
+            rebuilt = quick is None
+            if quick is not None:
+                return ("killed", quick) if quick else ("did-not-build", "does not compile")
         obj = sc.object(path)
         if obj is None:
             return "did-not-build", "does not compile"
@@ -348,9 +383,9 @@ def run_one(sc, mut, texts, ref_objs):
     finally:
         with open(target, "w") as f:  # a new mtime: a header's includers are rebuilt
             f.write(text)
-        if header:
+        if rebuilt:
             sc.build()
-        elif ref_objs[path]:
+        elif not header and ref_objs[path]:
             sc.archive(path, ref_objs[path])
 
 
