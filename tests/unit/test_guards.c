@@ -28,8 +28,8 @@ static void norm_checks(const body *bd, const sus_model *m)
     const double *I = bd->I, det = I[0] * I[4] - I[1] * I[3];
     /* (ContDyn) as f = c(w) fA w: fA = [[-I12, -I22], [I11, I21]] / |I_m| */
     const double s = norm2_ref(-I[1] / det, -I[4] / det, I[0] / det, I[3] / det);
-    CHECK(m->norm_fA >= s && m->norm_fA <= s * (1.0 + UP), "%s: ||fA||_2 %.17g, a bound tight to %.0e of %.17g",
-          bd->name, m->norm_fA, UP, s);
+    CHECK(m->norm_fA >= s && m->norm_fA <= s * (1.0 + UP),
+          "%s: ||fA||_2 %.17g, a bound tight to %.0e of %.17g", bd->name, m->norm_fA, UP, s);
     const double nb = sqrt(I[6] * I[6] + I[7] * I[7]);
     CHECK(m->norm_b >= nb && m->norm_b <= nb * (1.0 + UP), "%s: |b|_2 %.17g, a bound tight to %.0e of %.17g",
           bd->name, m->norm_b, UP, nb);
@@ -79,8 +79,8 @@ static int poison_full(const sus_model *m, double eps, sus_recon recon, sus_atti
     return SUS_STEPPER_OK;
 }
 
-static int poison_apply(const sus_model *m, double eps, const double w[3], double w_next[3], double *lambda_next,
-                        sus_stepper_stats *st)
+static int poison_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                        double *lambda_next, sus_stepper_stats *st)
 {
     sus_attitude a;
     sus_attitude_identity(&a);
@@ -105,8 +105,8 @@ static void blowup_checks(const sus_model *m)
         const int rc = sus_run(&cfg, w0, sus_keep_last, &last, &rep);
         missed += !(rc == SUS_RUN_BLOWUP && rep.step == POISON_STEP && rep.t == POISON_STEP * 0.125);
     }
-    CHECK(missed == 0, "a non-finite w_i, lambda, R entry or q_i (each of 17 in turn) at step %d, whose row is "
-          "not written, stops the run there: %d missed", POISON_STEP, missed);
+    CHECK(missed == 0, "a non-finite w_i, lambda, R entry or q_i (each of 17 in turn) at step %d, "
+          "whose row is not written, stops the run there: %d missed", POISON_STEP, missed);
 }
 
 int main(void)
