@@ -10,6 +10,7 @@
 #include "model.h"
 
 #include <math.h>
+#include <string.h>
 
 /* A rounded-up bound is at least the exact value and at most a few roundings above it: 1e-13
  * relative is 450 u, far above the few ulps of a closed form of four terms. */
@@ -53,6 +54,22 @@ static void row_finite_checks(void)
     }
     CHECK(missed == 0, "a row with one non-finite field (each of the 14 in turn) is not finite: %d missed",
           missed);
+}
+
+/* An I_m that is not positive definite is refused, and the message gives I11, I22 and I12 with
+ * their values (distinct, so that one printed in another's place shows). */
+static void posdef_message_checks(void)
+{
+    const double I[2][9] = {{-1.25, 0.375, 0.2, 0.375, 0.75, 0.1, 0.3, -0.2, 1.0},
+                            {1.25, 2.5, 0.2, 2.5, 0.75, 0.1, 0.3, -0.2, 1.0}}; /* I11 < 0; |I_m| < 0 */
+    for (int k = 0; k < 2; k++) {
+        sus_model m;
+        char err[160] = "", want[128];
+        snprintf(want, sizeof want, "(I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[k][0], I[k][4], I[k][1]);
+        const int rc = sus_model_init(&m, I[k], err, sizeof err);
+        CHECK(rc == -1 && strstr(err, "not positive definite") && strstr(err, want),
+              "I_m not positive definite (case %d) refused with its entries: \"%s\"", k, err);
+    }
 }
 
 /* A stepper that keeps w and the attitude, except that at step POISON_STEP it makes one field of
@@ -125,5 +142,6 @@ int main(void)
             blowup_checks(&m);
     }
     row_finite_checks();
+    posdef_message_checks();
     return check_summary("test_guards");
 }
