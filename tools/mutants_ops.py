@@ -399,6 +399,7 @@ def main():
     ap.add_argument("--resume", action="store_true", help="skip the mutants the log holds, but survivors")
     ap.add_argument("--only", default="", help="run only the mutants whose label holds this text")
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
+    ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/build/mutants_equivalent")
     ap.add_argument("--roundoff", default="tests/build/mutants_roundoff")
@@ -495,7 +496,10 @@ def write_result(a, labels, texts, muts):
         head = ["# make mutants-ops (tools/mutants_ops.py): the generated operator-mutation campaign",
                 "# commit %s, written %s UTC%s" % (commit or "unknown", time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
                                                    "" if not total["not-run"] else " (INCOMPLETE)"),
-                "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed)),
+                "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed))] + \
+            (["# " + a.note] if a.note else []) + [
+                "# log: %s; resume: python3 tools/mutants_ops.py --resume --log %s --out %s [--files ...]"
+                % (a.log, a.log, a.out),
                 summary, "# per file:"] + \
             ["#   %s: %s" % (p, counts_text(c, sum(c.values()))) for p, c in per_file.items()] + [""]
         tmp = a.out + ".tmp"
