@@ -11,7 +11,8 @@ constants and preprocessor lines are skipped):
 A token-level heuristic cannot always tell a binary operator from a unary one or a pointer
 declarator; a mutant that does not compile is counted as did-not-build, never as killed.
 
-Each mutant is applied to a scratch copy of the tree, built once with CFLAGS=-O2 -g0. The mutated
+Each mutant is applied to a scratch copy of the tree, built once with CFLAGS=-O2 -g0 and array
+bounds checked (-fsanitize=bounds, as in SAN=1). The mutated
 file alone is compiled (with the Makefile's flags) to its object: identical machine code is a proof
 of equivalence (reason "same object code"). Otherwise the object replaces the original in its
 layer's archive and the tests run, each program relinked just before it runs, in fast-fail order:
@@ -42,6 +43,9 @@ import sys
 import tempfile
 import time
 
+# Every object is built with array bounds checked: an index one past an array (a mutated size or
+# index) then stops the test that reaches it, instead of landing silently in a neighbour.
+BOUNDS = "-fsanitize=bounds -fno-sanitize-recover=bounds"
 LAYERS = ("util", "core", "methods", "exp", "render", "prog")  # src/ folders, lowest first
 # The library files in priority order (the campaign may be cut short: the first ones matter most).
 FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/quaternion.c",
@@ -227,7 +231,8 @@ class Scratch:
 
     def build(self, targets=None):
         targets = self.targets() if targets is None else targets
-        return self.sh(["make", "-s", "BUILD=" + self.b, "CFLAGS=-O2 -g0", "-j2"] + targets).returncode == 0
+        return self.sh(["make", "-s", "BUILD=" + self.b, "CFLAGS=-O2 -g0 " + BOUNDS, "LDFLAGS=" + BOUNDS,
+                        "-j2"] + targets).returncode == 0
 
     def obj_path(self, src):
         return "%s/obj/%s.o" % (self.b, src[len("src/"):-2])
@@ -240,7 +245,7 @@ class Scratch:
             return b""
         layer = src.split("/")[1]
         inc = ["-Isrc/" + d for d in LAYERS[:LAYERS.index(layer) + 1]]
-        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + \
+        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + BOUNDS.split() + \
             inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
         if self.sh(cmd).returncode != 0:
             return None
@@ -265,7 +270,7 @@ class Scratch:
                           for f in os.listdir(os.path.join(self.dir, "tests", "ledger")) if f.endswith(".c"))
         else:
             objs = ["%s/obj/prog/%s.o" % (b, os.path.basename(prog))]
-        return ["cc"] + objs + libs + self.pkg_libs + ["-lm", "-o", prog]
+        return ["cc", BOUNDS.split()[0]] + objs + libs + self.pkg_libs + ["-lm", "-o", prog]
 
     def setup_tests(self):
         """The test commands, quick unit tests first; each with a timeout from its own run time."""
@@ -311,12 +316,13 @@ class Scratch:
             test = next(t for t in self.tests if t[0] == name)
             prog, obj = "%s/quick/%s" % (self.b, name), "%s/quick/%s.o" % (self.b, name)
             os.makedirs(os.path.join(self.dir, self.b, "quick"), exist_ok=True)
-            cmd = ["cc", "-std=c17", "-O2", "-g0"] + ["-Isrc/" + d for d in LAYERS] + \
+            cmd = ["cc", "-std=c17", "-O2", "-g0"] + BOUNDS.split() + ["-Isrc/" + d for d in LAYERS] + \
                 ["-Itests/unit", "-Itests/ledger"] + self.pkg_cflags + ["-c", "tests/unit/%s.c" % name, "-o", obj]
             if self.sh(cmd).returncode:
                 return ""
             link = self.link_cmd("%s/%s" % (self.b, name))
-            link[1], link[link.index("-o") + 1] = obj, prog
+            link[link.index("%s/tobj/unit/%s.o" % (self.b, name))] = obj
+            link[link.index("-o") + 1] = prog
             if self.sh(link).returncode:
                 return ""
             killer = self.verdict(path, name, [prog], test[3], test[4])

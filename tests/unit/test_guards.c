@@ -1,13 +1,16 @@
 /* The library's guards and bounds, checked against their definitions on the seeded general bodies:
  * the model's rounded-up norms |b|_2 and ||fA||_2 (model.h: bounds, so |c(v) fA u| <= K |v| |u|)
- * and the driver's finiteness checks (driver.h: every field of a row, and every step's state
- * w, lambda and the attitude as stored, looked at).
+ * the driver's finiteness checks (driver.h: every field of a row, and every step's state w, lambda
+ * and the attitude as stored, looked at) and its Newton counts; the Taylor step at the top order
+ * its arrays hold.
  * These are what the Taylor radius and the blow-up report stand on, and no value a program prints
  * moves when they are slightly off, so they are checked here directly. */
 #include "bodies.h"
 #include "check.h"
 #include "driver.h"
 #include "model.h"
+#include "quaternion.h"
+#include "taylor.h"
 
 #include <math.h>
 #include <string.h>
@@ -126,6 +129,56 @@ static void blowup_checks(const sus_model *m)
           "whose row is not written, stops the run there: %d missed", POISON_STEP, missed);
 }
 
+/* The driver's Newton accounting: the total and the largest count per step over the run. */
+static int count_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                       double *lambda_next, sus_stepper_stats *st)
+{
+    (void)m, (void)eps;
+    for (int i = 0; i < 3; i++)
+        w_next[i] = w[i];
+    *lambda_next = 0.25;
+    *st = (sus_stepper_stats){.iterations = 1 + poison_calls++ % 3}; /* 1, 2, 3, 1, 2, ... */
+    return SUS_STEPPER_OK;
+}
+
+static void newton_count_checks(const sus_model *m)
+{
+    const sus_stepper_type counting = {.name = "count", .order = 1, .lambda_order = 1, .apply = count_apply,
+                                       .substeps = 1, .source = __FILE__};
+    const sus_run_config cfg = {.model = m, .stepper = &counting, .recon = SUS_RECON_CAYLEY, .eps = 0.125,
+                                .steps = 7, .every = 1};
+    const double w0[2] = {0.4, 0.5};
+    sus_row last;
+    sus_run_report rep;
+    poison_calls = 0;
+    const int rc = sus_run(&cfg, w0, sus_keep_last, &last, &rep);
+    const long total = 1 + 2 + 3 + 1 + 2 + 3 + 1;
+    CHECK(rc == SUS_RUN_OK && rep.sus_newton_iterations == total && rep.max_iterations == 3,
+          "the run's Newton iterations: total %ld (13), largest %d (3)", rep.sus_newton_iterations,
+          rep.max_iterations);
+}
+
+/* The Taylor step at the largest order its arrays hold agrees with a lower order where both are
+ * exact to round-off: h at 1/20 of the proved radius, so the order-16 tail is below 20^-17. The
+ * registered orders never index that far, so only this reaches the arrays' last entries (an
+ * array one entry short shows under -fsanitize=bounds, as SAN=1 and make mutants-ops build). */
+static void taylor_top_order_checks(const body *bd, const sus_model *m)
+{
+    const double w[3] = {bd->w0[0], bd->w0[1], 0.0}, h = sus_step_taylor_radius(m, w) / 20.0;
+    double wn[2][3], lam[2], q[2][4], d = 0.0;
+    for (int k = 0; k < 2; k++) {
+        sus_attitude a;
+        sus_stepper_stats st;
+        sus_attitude_identity(&a);
+        sus_step_taylor_apply_full(k ? SUS_STEP_TAYLOR_MAX_ORDER : 16, m, h, &a, w, wn[k], &lam[k], &st);
+        sus_quat_of_attitude(&a, q[k]);
+    }
+    for (int i = 0; i < 4; i++)
+        d = fmax(d, fmax(fabs(q[1][i] - q[0][i]), i < 2 ? fabs(wn[1][i] - wn[0][i]) : 0.0));
+    CHECK(d <= 1e-13, "%s: Taylor order %d against order 16, w and q: %.2g", bd->name,
+          SUS_STEP_TAYLOR_MAX_ORDER, d);
+}
+
 int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
@@ -138,8 +191,11 @@ int main(void)
             continue;
         }
         norm_checks(&bd, &m);
-        if (k == 0)
+        taylor_top_order_checks(&bd, &m);
+        if (k == 0) {
             blowup_checks(&m);
+            newton_count_checks(&m);
+        }
     }
     row_finite_checks();
     posdef_message_checks();
