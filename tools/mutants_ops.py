@@ -403,6 +403,7 @@ def main():
     ap.add_argument("--out", default="", help="the result file, rewritten from the log as the run goes")
     ap.add_argument("--log", default="", help="one line per mutant run, appended as it finishes")
     ap.add_argument("--resume", action="store_true", help="skip the mutants the log holds, but survivors")
+    ap.add_argument("--survivors", action="store_true", help="run only the survivors the log holds")
     ap.add_argument("--only", default="", help="run only the mutants whose label holds this text")
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
     ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
@@ -424,12 +425,13 @@ def main():
     if a.summarize:
         print(write_result(a, labels, texts, muts))
         return 0
-    if a.log and not a.resume and not a.only:
+    if a.log and not a.resume and not a.only and not a.survivors:
         open(a.log, "w").close()
     done = read_log(a.log) if a.log else {}
     # a survivor runs again on resume: a test may have been added for it since
     todo = [m for m, l in zip(muts, labels)
-            if (a.only in l if a.only else done.get(l, ("survived",))[0] == "survived")]
+            if (a.only in l if a.only else done.get(l, ("survived",))[0] == "survived")
+            and (not a.survivors or done.get(l, ("",))[0] == "survived")]
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # so that the scratch copy goes too
     sc = Scratch(os.getcwd())
     try:
