@@ -1,12 +1,14 @@
 /* The library's guards and bounds, checked against their definitions on the seeded general bodies:
  * the model's rounded-up norms |b|_2 and ||fA||_2 (model.h: bounds, so |c(v) fA u| <= K |v| |u|)
  * the driver's finiteness checks (driver.h: every field of a row, and every step's state w, lambda
- * and the attitude as stored, looked at) and its Newton counts; the Taylor step at the top order
- * its arrays hold.
+ * and the attitude as stored, looked at) and its Newton counts, a composition's Newton count; the
+ * Taylor step at the top order its arrays hold.
  * These are what the Taylor radius and the blow-up report stand on, and no value a program prints
  * moves when they are slightly off, so they are checked here directly. */
 #include "bodies.h"
 #include "check.h"
+#include "composition.h"
+#include "dsp.h"
 #include "driver.h"
 #include "model.h"
 #include "quaternion.h"
@@ -158,6 +160,26 @@ static void newton_count_checks(const sus_model *m)
           rep.max_iterations);
 }
 
+/* A composition step's Newton count is the sum of its substeps' (each a midpoint DSP step with
+ * step g_i eps from the previous substep's w), and its w the last substep's. */
+static void composition_count_checks(const body *bd, const sus_model *m)
+{
+    const sus_step_composition *c = &sus_step_comp_suzuki4;
+    double u[3] = {bd->w0[0], bd->w0[1], 0.0}, x[3], lam, wn[3];
+    sus_stepper_stats st;
+    long sum = 0;
+    for (int i = 0; i < sus_step_composition_stages(c); i++) {
+        sus_step_midpoint->apply(m, sus_step_composition_weight(c, i) * 0.25, u, x, &lam, &st);
+        sum += st.iterations;
+        u[0] = x[0], u[1] = x[1], u[2] = x[2];
+    }
+    const double w[3] = {bd->w0[0], bd->w0[1], 0.0};
+    sus_step_composition_apply(c, m, 0.25, w, wn, &lam, &st);
+    CHECK(st.iterations == sum && wn[0] == u[0] && wn[1] == u[1],
+          "%s: %s, Newton iterations %d (the substeps' sum %ld), w the last substep's", bd->name, c->name,
+          st.iterations, sum);
+}
+
 /* The Taylor step at the largest order its arrays hold agrees with a lower order where both are
  * exact to round-off: h at 1/20 of the proved radius, so the order-16 tail is below 20^-17. The
  * registered orders never index that far, so only this reaches the arrays' last entries (an
@@ -192,6 +214,7 @@ int main(void)
         }
         norm_checks(&bd, &m);
         taylor_top_order_checks(&bd, &m);
+        composition_count_checks(&bd, &m);
         if (k == 0) {
             blowup_checks(&m);
             newton_count_checks(&m);
