@@ -161,16 +161,19 @@ static void newton_count_checks(const sus_model *m)
 }
 
 /* A composition step's Newton count is the sum of its substeps' (each a midpoint DSP step with
- * step g_i eps from the previous substep's w), and its w the last substep's. */
+ * step g_i eps from the previous substep's w), its residual the worst one's, its w the last one's. */
 static void composition_count_checks(const body *bd, const sus_model *m)
 {
     const sus_step_composition *c = &sus_step_comp_suzuki4;
     double u[3] = {bd->w0[0], bd->w0[1], 0.0}, x[3], lam, wn[3];
     sus_stepper_stats st;
     long sum = 0;
+    double worst = -1.0, worst_scale = 0.0;
     for (int i = 0; i < sus_step_composition_stages(c); i++) {
         sus_step_midpoint->apply(m, sus_step_composition_weight(c, i) * 0.25, u, x, &lam, &st);
         sum += st.iterations;
+        if (st.residual > worst)
+            worst = st.residual, worst_scale = st.scale;
         u[0] = x[0], u[1] = x[1], u[2] = x[2];
     }
     const double w[3] = {bd->w0[0], bd->w0[1], 0.0};
@@ -178,6 +181,9 @@ static void composition_count_checks(const body *bd, const sus_model *m)
     CHECK(st.iterations == sum && wn[0] == u[0] && wn[1] == u[1],
           "%s: %s, Newton iterations %d (the substeps' sum %ld), w the last substep's", bd->name, c->name,
           st.iterations, sum);
+    CHECK(worst > 0.0 && st.residual == worst && st.scale == worst_scale,
+          "%s: %s keeps the worst substep's residual %.3g and its scale (%.3g)", bd->name, c->name,
+          st.residual, worst);
 }
 
 /* The Taylor step at the largest order its arrays hold agrees with a lower order where both are
