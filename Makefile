@@ -328,9 +328,10 @@ mutants: | $(DEPS_CHECK)
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
 MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
-# Each mutant's verdict is appended to the log as it finishes; MUTANTS_OPS_RESUME=1 skips the mutants
-# the log already holds (a campaign cut short goes on where it stopped).
-MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops/campaign.log,$(BUILD)/mutants_ops_sample.log)
+# Each mutant's verdict is appended to the log as it finishes (the full campaign's log is committed);
+# MUTANTS_OPS_RESUME=1 skips the mutants the log already holds (a campaign cut short goes on where
+# it stopped) but runs its survivors again.
+MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
 .PHONY: mutants-ops deps-mutants
 deps-mutants:
 	@sh tools/deps.sh mutants

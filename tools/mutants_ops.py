@@ -497,7 +497,8 @@ def write_result(a, labels, texts, muts):
                 verdict, why = "round-off", ro[(m[0], orig, new)]
         total[verdict] += 1
         per_file.setdefault(m[0], dict.fromkeys(kinds, 0))[verdict] += 1
-        lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
+        if verdict != "not-run":
+            lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
     summary = "mutants-ops: " + counts_text(total, len(muts))
     if a.out:
         commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
