@@ -16,7 +16,8 @@ bounds checked (-fsanitize=bounds, as in SAN=1). The mutated
 file alone is compiled (with the Makefile's flags) to its object: identical machine code is a proof
 of equivalence (reason "same object code"). Otherwise the object replaces the original in its
 layer's archive and the tests run, each program relinked just before it runs, in fast-fail order:
-the tests that have killed most of this file's mutants so far first, then test_mutant_kills, the
+the tests that have killed most of this file's mutants so far first, then test_mutant_kills and
+test_guards, the
 other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
 each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
 the unmutated tree's own failures kills the mutant. A header's mutant first meets the unit tests
@@ -26,7 +27,7 @@ result file is written from the log, and a survivor listed in tests/build/mutant
 a proof) counts there as equivalent.
 
 Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume]]
-       [--only TEXT] [--summarize] [--list]
+       [--survivors | --only TEXT] [--summarize [--note TEXT]] [--list]
 Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X,
 round-off survivors R" (S counts only the survivors neither list explains).
 Exit status 1 when a mutant survives unexplained.
@@ -193,11 +194,11 @@ def load_equivalents(path):
 
 
 class Scratch:
-    """A scratch copy of the tree, built once (CFLAGS=-O2 -g0, so that the object a mutant
-    compiles to is also the one compared with the original). A mutated .c file is then compiled
-    alone, replaced in its layer's archive, and each test program relinked just before it runs:
-    no make per mutant (make's own start costs about a second). A header's mutants go through
-    make, since their includers are many."""
+    """A scratch copy of the tree, built once (CFLAGS=-O2 -g0 and BOUNDS, so that the object a
+    mutant compiles to is also the one compared with the original). A mutated .c file is then
+    compiled alone, replaced in its layer's archive, and each test program relinked just before it
+    runs: no make per mutant (make's own start costs about a second). A header's mutants meet the
+    unit tests compiled with them first, then make (their includers are many)."""
 
     def __init__(self, root):
         self.dir = tempfile.mkdtemp(prefix="mutops.")
@@ -245,8 +246,8 @@ class Scratch:
             return b""
         layer = src.split("/")[1]
         inc = ["-Isrc/" + d for d in LAYERS[:LAYERS.index(layer) + 1]]
-        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + BOUNDS.split() + \
-            inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
+        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + \
+            BOUNDS.split() + inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
         if self.sh(cmd).returncode != 0:
             return None
         with open(os.path.join(self.dir, self.obj_path(src)), "rb") as f:
@@ -288,8 +289,8 @@ class Scratch:
             print("mutants-ops: baseline %s %.1f s%s" % (name, secs, "" if base is None else " (FAILS)"),
                   flush=True)
         # test_mutant_kills and test_guards first (formulas and bounds checked directly, in
-        # milliseconds), then the other
-        # unit tests quickest first, then the CLI value tests, the ledger, the CLI interface tests
+        # milliseconds), then the other unit tests quickest first, then the CLI value tests, the
+        # ledger, the CLI interface tests
         rank = {n: i for i, n in enumerate(["test_mutant_kills", "test_guards"])}
         self.tests.sort(key=lambda t: (not t[0].startswith("test_") or t[0] == "test_cli",
                                        rank.get(t[0], 2), t[5] if t[0].startswith("test_") else 0))
@@ -317,7 +318,8 @@ class Scratch:
             prog, obj = "%s/quick/%s" % (self.b, name), "%s/quick/%s.o" % (self.b, name)
             os.makedirs(os.path.join(self.dir, self.b, "quick"), exist_ok=True)
             cmd = ["cc", "-std=c17", "-O2", "-g0"] + BOUNDS.split() + ["-Isrc/" + d for d in LAYERS] + \
-                ["-Itests/unit", "-Itests/ledger"] + self.pkg_cflags + ["-c", "tests/unit/%s.c" % name, "-o", obj]
+                ["-Itests/unit", "-Itests/ledger"] + self.pkg_cflags + \
+                ["-c", "tests/unit/%s.c" % name, "-o", obj]
             if self.sh(cmd).returncode:
                 return ""
             link = self.link_cmd("%s/%s" % (self.b, name))
