@@ -2,7 +2,7 @@
  * the model's rounded-up norms |b|_2 and ||fA||_2 (model.h: bounds, so |c(v) fA u| <= K |v| |u|)
  * the driver's finiteness checks (driver.h: every field of a row, and every step's state w, lambda
  * and the attitude as stored, looked at) and its Newton counts, a composition's Newton count; the
- * Taylor step at the top order its arrays hold.
+ * Taylor step at the top order its arrays hold; exp(w^) - I where |w|^2 underflows.
  * These are what the Taylor radius and the blow-up report stand on, and no value a program prints
  * moves when they are slightly off, so they are checked here directly. */
 #include "bodies.h"
@@ -12,6 +12,7 @@
 #include "driver.h"
 #include "model.h"
 #include "quaternion.h"
+#include "so3.h"
 #include "taylor.h"
 
 #include <math.h>
@@ -186,6 +187,19 @@ static void composition_count_checks(const body *bd, const sus_model *m)
           st.residual, worst);
 }
 
+/* exp(w^) - I = w^ + w^ w^ / 2 + O(|w|^3): where |w|^2 underflows to 0 (|w| = 1e-200), so that the
+ * angle computed is 0, the result is still w^ to round-off, not a multiple of it. */
+static void tiny_angle_checks(void)
+{
+    const double w[3] = {1e-200, -3e-200, 2e-200};
+    double D[3][3], W[3][3], d = 0.0;
+    sus_so3_exp_minus_identity(w, D);
+    sus_so3_hat(w, W);
+    for (int i = 0; i < 9; i++)
+        d = fmax(d, fabs(D[i / 3][i % 3] - W[i / 3][i % 3]) / 3e-200);
+    CHECK(d <= 1e-15, "exp(w^) - I at |w| = 3.7e-200 (|w|^2 underflows) is w^: %.2g of |w|", d);
+}
+
 /* The Taylor step at the largest order its arrays hold agrees with a lower order where both are
  * exact to round-off: h at 1/20 of the proved radius, so the order-16 tail is below 20^-17. The
  * registered orders never index that far, so only this reaches the arrays' last entries (an
@@ -228,5 +242,6 @@ int main(void)
     }
     row_finite_checks();
     posdef_message_checks();
+    tiny_angle_checks();
     return check_summary("test_guards");
 }
