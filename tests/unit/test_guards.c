@@ -2,7 +2,8 @@
  * the model's rounded-up norms |b|_2 and ||fA||_2 (model.h: bounds, so |c(v) fA u| <= K |v| |u|)
  * the driver's finiteness checks (driver.h: every field of a row, and every step's state w, lambda
  * and the attitude as stored, looked at) and its Newton counts, a composition's Newton count; the
- * Taylor step at the top order its arrays hold; exp(w^) - I where |w|^2 underflows.
+ * Taylor step at the top order its arrays hold; exp(w^) - I where |w|^2 underflows; Shepperd's
+ * choice of branch in recovering q from R.
  * These are what the Taylor radius and the blow-up report stand on, and no value a program prints
  * moves when they are slightly off, so they are checked here directly. */
 #include "bodies.h"
@@ -200,6 +201,31 @@ static void tiny_angle_checks(void)
     CHECK(d <= 1e-15, "exp(w^) - I at |w| = 3.7e-200 (|w|^2 underflows) is w^: %.2g of |w|", d);
 }
 
+/* Shepperd's choice in sus_quat_from_rotation: the branch of the largest of tr, R11, R22, R33 divides
+ * by r = 2 |q_k| >= 1; another branch can divide by a tiny |q_k| and lose all accuracy. These unit
+ * q, each with one component of 1e-8 (a branch that divides by it), are recovered to round-off. */
+static void shepperd_checks(void)
+{
+    const double qs[5][4] = {{-0.4809013035408614, 0.8001595003259363, -0.3584392700177361, -3.3e-8},
+                             {0.6, -3.3e-8, 0.48, -0.64}, {-2.1e-8, 0.36, 0.48, 0.8},
+                             {0.28, 0.96, 1.7e-8, 0.0},
+                             {0.5861363299782679, -0.5299857305050835, 0.6128289550442271, 2.6e-8}};
+    double worst = 0.0;
+    for (int k = 0; k < 5; k++) {
+        double q[4], R[3][3], back[4], n = 0.0;
+        for (int i = 0; i < 4; i++)
+            n += qs[k][i] * qs[k][i];
+        const double sgn = qs[k][0] < 0.0 ? -1.0 : 1.0;
+        for (int i = 0; i < 4; i++)
+            q[i] = sgn * qs[k][i] / sqrt(n);
+        sus_quat_rotation(q, R);
+        sus_quat_from_rotation(R, back);
+        for (int i = 0; i < 4; i++)
+            worst = fmax(worst, fabs(back[i] - q[i]));
+    }
+    CHECK(worst <= 1e-13, "q(R(q)) = q with one tiny component: %.2g", worst);
+}
+
 /* The Taylor step at the largest order its arrays hold agrees with a lower order where both are
  * exact to round-off: h at 1/20 of the proved radius, so the order-16 tail is below 20^-17. The
  * registered orders never index that far, so only this reaches the arrays' last entries (an
@@ -243,5 +269,6 @@ int main(void)
     row_finite_checks();
     posdef_message_checks();
     tiny_angle_checks();
+    shepperd_checks();
     return check_summary("test_guards");
 }
