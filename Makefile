@@ -335,13 +335,18 @@ mutants: | $(DEPS_CHECK)
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
 MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
+# Each mutant's verdict is appended to the log as it finishes (the full campaign's log is committed);
+# MUTANTS_OPS_RESUME=1 skips the mutants the log already holds (a campaign cut short goes on where
+# it stopped) but runs its survivors again.
+MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
 .PHONY: mutants-ops deps-mutants
 deps-mutants:
 	@sh tools/deps.sh mutants
 mutants-ops: | deps-mutants
-	@mkdir -p $(BUILD)
+	@mkdir -p $(BUILD)/mutants_ops
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
-	    --out $(MUTANTS_OPS_OUT) $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
+	    --out $(MUTANTS_OPS_OUT) --log $(MUTANTS_OPS_LOG) $(if $(filter 1,$(MUTANTS_OPS_RESUME)),--resume) \
+	    $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
 # The manual page, written by suslov itself from the option table that --help prints.
 $(BUILD)/man/suslov.1: $(BUILD)/suslov

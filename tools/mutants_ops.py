@@ -11,16 +11,25 @@ constants and preprocessor lines are skipped):
 A token-level heuristic cannot always tell a binary operator from a unary one or a pointer
 declarator; a mutant that does not compile is counted as did-not-build, never as killed.
 
-Each mutant is applied to a scratch copy of the tree (as tools/mutants.sh does). First the mutated
-file is compiled alone with -g0 and its object compared with the unmutated one: identical machine
-code is a proof of equivalence (reason "same object code"). Otherwise the copy is rebuilt
-incrementally and the tests run in fast-fail order (unit tests, the CLI value tests, the claims
-ledger, then the slow CLI interface tests, which see the numbers least); the
-first test that fails beyond the unmutated tree's own failures kills the mutant. Mutants listed in
-tests/build/mutants_equivalent (with a proof) count as equivalent when they survive.
+Each mutant is applied to a scratch copy of the tree, built once with CFLAGS=-O2 -g0 and array
+bounds checked (-fsanitize=bounds, as in SAN=1). The mutated
+file alone is compiled (with the Makefile's flags) to its object: identical machine code is a proof
+of equivalence (reason "same object code"). Otherwise the object replaces the original in its
+layer's archive and the tests run, each program relinked just before it runs, in fast-fail order:
+the tests that have killed most of this file's mutants so far first, then test_mutant_kills and
+test_guards, the
+other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
+each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
+the unmutated tree's own failures kills the mutant. A header's mutant first meets the unit tests
+that call its inline functions, compiled with it; if they do not kill it, make rebuilds the tree.
+Each verdict is appended to --log as it comes, so a campaign cut short resumes (--resume); the
+result file is written from the log, and a survivor listed in tests/build/mutants_equivalent (with
+a proof) counts there as equivalent.
 
-Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--list]
-Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
+Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume]]
+       [--survivors | --only TEXT] [--summarize [--note TEXT]] [--list]
+Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X,
+round-off survivors R" (S counts only the survivors neither list explains).
 Exit status 1 when a mutant survives unexplained.
 """
 import argparse
@@ -35,6 +44,9 @@ import sys
 import tempfile
 import time
 
+# Every object is built with array bounds checked: an index one past an array (a mutated size or
+# index) then stops the test that reaches it, instead of landing silently in a neighbour.
+BOUNDS = "-fsanitize=bounds -fno-sanitize-recover=bounds"
 LAYERS = ("util", "core", "methods", "exp", "render", "prog")  # src/ folders, lowest first
 # The library files in priority order (the campaign may be cut short: the first ones matter most).
 FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/quaternion.c",
@@ -42,7 +54,7 @@ FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/qua
          "src/methods/step_euler.c", "src/methods/step_midpoint.c", "src/methods/step_variational.c",
          "src/methods/step_rk4.c", "src/methods/step_composition.c", "src/methods/composition.c",
          "src/methods/composition_coeffs.c", "src/methods/step_taylor.c", "src/methods/taylor.h",
-         "src/core/driver.c"]
+         "src/core/driver.c", "src/methods/step_gauss4.c"]
 
 TOKEN = re.compile(r"""
     (?P<ws>\s+)
@@ -182,7 +194,11 @@ def load_equivalents(path):
 
 
 class Scratch:
-    """A scratch copy of the tree, built once; then one incremental rebuild per mutant."""
+    """A scratch copy of the tree, built once (CFLAGS=-O2 -g0 and BOUNDS, so that the object a
+    mutant compiles to is also the one compared with the original). A mutated .c file is then
+    compiled alone, replaced in its layer's archive, and each test program relinked just before it
+    runs: no make per mutant (make's own start costs about a second). A header's mutants meet the
+    unit tests compiled with them first, then make (their includers are many)."""
 
     def __init__(self, root):
         self.dir = tempfile.mkdtemp(prefix="mutops.")
@@ -195,12 +211,14 @@ class Scratch:
         if os.path.exists(cfg):
             shutil.copy(cfg, os.path.join(self.dir, "data"))
         self.env = {k: v for k, v in os.environ.items()
-                    if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "SAN", "BUILD")}
+                    if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "SAN", "BUILD", "CFLAGS")}
         self.b = "build/mut"
         pkg = ["pkg-config", "--cflags", "gsl", "cairo", "osmesa"]
-        self.cflags = ["-std=c17", "-O2", "-g0"] + ["-Isrc/" + d for d in LAYERS] + \
-            subprocess.run(pkg, capture_output=True, text=True).stdout.split()
+        self.pkg_cflags = subprocess.run(pkg, capture_output=True, text=True).stdout.split()
+        pkg[1] = "--libs"
+        self.pkg_libs = subprocess.run(pkg, capture_output=True, text=True).stdout.split()
         self.tests = []
+        self.kills = {}  # (file, test name) -> kills so far: a file's best killers run first
 
     def sh(self, args, timeout=None):
         return subprocess.run(args, cwd=self.dir, env=self.env, capture_output=True, text=True,
@@ -214,25 +232,51 @@ class Scratch:
 
     def build(self, targets=None):
         targets = self.targets() if targets is None else targets
-        return self.sh(["make", "-s", "BUILD=" + self.b, "-j2"] + targets).returncode == 0
+        return self.sh(["make", "-s", "BUILD=" + self.b, "CFLAGS=-O2 -g0 " + BOUNDS, "LDFLAGS=" + BOUNDS,
+                        "-j2"] + targets).returncode == 0
+
+    def obj_path(self, src):
+        return "%s/obj/%s.o" % (self.b, src[len("src/"):-2])
 
     def object(self, src):
-        """The -g0 object code of a source file, b"" for a header (its includers are many: a
-        header's mutants go straight to the build), None when it does not compile."""
+        """The object code of a library source file as the Makefile compiles it (flags as
+        CFLAGS_OF, with -g0), written in place in the scratch build; b"" for a header; None
+        when it does not compile."""
         if not src.endswith(".c"):
             return b""
-        obj = os.path.join(self.dir, "g0.o")
-        if self.sh(["cc"] + self.cflags + ["-c", src, "-o", obj]).returncode != 0:
+        layer = src.split("/")[1]
+        inc = ["-Isrc/" + d for d in LAYERS[:LAYERS.index(layer) + 1]]
+        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + \
+            BOUNDS.split() + inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
+        if self.sh(cmd).returncode != 0:
             return None
-        with open(obj, "rb") as f:
+        with open(os.path.join(self.dir, self.obj_path(src)), "rb") as f:
             return f.read()
+
+    def archive(self, src, obj):
+        """Put obj (the bytes of src's object) in place and into its layer's archive."""
+        with open(os.path.join(self.dir, self.obj_path(src)), "wb") as f:
+            f.write(obj)
+        lib = "%s/libsus_%s.a" % (self.b, src.split("/")[1])
+        return self.sh(["ar", "rcs", lib, self.obj_path(src)]).returncode == 0
+
+    def link_cmd(self, prog):
+        """The link line of one test program, as the Makefile's."""
+        b = self.b
+        libs = ["%s/libsus_%s.a" % (b, l) for l in reversed(LAYERS)]
+        if prog.startswith(b + "/test_"):
+            objs = ["%s/tobj/unit/%s.o" % (b, os.path.basename(prog))]
+        elif prog == b + "/claims":
+            objs = sorted("%s/tobj/ledger/%s.o" % (b, f[:-2])
+                          for f in os.listdir(os.path.join(self.dir, "tests", "ledger")) if f.endswith(".c"))
+        else:
+            objs = ["%s/obj/prog/%s.o" % (b, os.path.basename(prog))]
+        return ["cc", BOUNDS.split()[0]] + objs + libs + self.pkg_libs + ["-lm", "-o", prog]
 
     def setup_tests(self):
         """The test commands, quick unit tests first; each with a timeout from its own run time."""
-        # test_mutant_kills first: it checks the formulas directly, in milliseconds
-        units = sorted(([os.path.basename(t), [t], [t]] for t in self.targets() if "/test_" in t),
-                       key=lambda u: (u[0] != "test_mutant_kills", u[0]))
         b = self.b
+        units = [(os.path.basename(t), [t], [t]) for t in self.targets() if "/test_" in t]
         cmds = units + [("test_cli_values", ["sh", "tests/cli/test_cli_values.sh", b], [b + "/suslov"]),
                         ("claims", [b + "/claims", b + "/claims.tsv"], [b + "/claims"]),
                         ("test_cli", ["sh", "tests/cli/test_cli.sh", b], [b + "/suslov", b + "/animation"])]
@@ -241,29 +285,71 @@ class Scratch:
             r = self.sh(cmd, timeout=1800)
             secs = time.time() - t0
             base = signature(r.stdout + r.stderr) if r.returncode else None
-            self.tests.append((name, cmd, needs, 30 + 5 * secs, base))
+            self.tests.append((name, cmd, [self.link_cmd(p) for p in needs], 30 + 5 * secs, base, secs))
             print("mutants-ops: baseline %s %.1f s%s" % (name, secs, "" if base is None else " (FAILS)"),
                   flush=True)
+        # test_mutant_kills and test_guards first (formulas and bounds checked directly, in
+        # milliseconds), then the other unit tests quickest first, then the CLI value tests, the
+        # ledger, the CLI interface tests
+        rank = {n: i for i, n in enumerate(["test_mutant_kills", "test_guards"])}
+        self.tests.sort(key=lambda t: (not t[0].startswith("test_") or t[0] == "test_cli",
+                                       rank.get(t[0], 2), t[5] if t[0].startswith("test_") else 0))
 
-    def run_tests(self):
+    def run_tests(self, path, relink=True):
         """The first test that fails beyond the baseline, or None; "" when a program does not link.
-        Each test's programs are relinked just before it runs, so that a mutant a unit test kills
-        costs one link, not all of them."""
-        for name, cmd, needs, secs, base in self.tests:
-            if not self.build(needs):
+        The tests that have killed most of this file's mutants so far run first."""
+        order = sorted(range(len(self.tests)), key=lambda i: -self.kills.get((path, self.tests[i][0]), 0))
+        for i in order:
+            name, cmd, links, secs, base, _ = self.tests[i]
+            if relink and any(self.sh(l).returncode for l in links):
                 return ""
-            try:
-                r = self.sh(cmd, timeout=secs)
-            except subprocess.TimeoutExpired:
-                return name + " (timeout)"
-            if r.returncode == 0:
-                continue
-            sig = signature(r.stdout + r.stderr)
-            new = sig - base if base is not None else sig
-            if base is None or new or not sig:
-                first = sorted(new)[0][:60] if new else "exit status %d" % r.returncode
-                return "%s (%s)" % (name, first)
+            killer = self.verdict(path, name, cmd, secs, base)
+            if killer:
+                return killer
         return None
+
+    def header_quick(self, path):
+        """A header's mutant against the unit tests that call its inline functions themselves:
+        each is compiled with the mutated header into a program of its own (the library keeps
+        its unmutated copies), so that most of a header's mutants cost no rebuild. The killer,
+        None, or "" when the header does not compile."""
+        for name in ("test_mutant_kills", "test_model"):
+            test = next(t for t in self.tests if t[0] == name)
+            prog, obj = "%s/quick/%s" % (self.b, name), "%s/quick/%s.o" % (self.b, name)
+            os.makedirs(os.path.join(self.dir, self.b, "quick"), exist_ok=True)
+            cmd = ["cc", "-std=c17", "-O2", "-g0"] + BOUNDS.split() + ["-Isrc/" + d for d in LAYERS] + \
+                ["-Itests/unit", "-Itests/ledger"] + self.pkg_cflags + \
+                ["-c", "tests/unit/%s.c" % name, "-o", obj]
+            if self.sh(cmd).returncode:
+                return ""
+            link = self.link_cmd("%s/%s" % (self.b, name))
+            link[link.index("%s/tobj/unit/%s.o" % (self.b, name))] = obj
+            link[link.index("-o") + 1] = prog
+            if self.sh(link).returncode:
+                return ""
+            killer = self.verdict(path, name, [prog], test[3], test[4])
+            if killer:
+                return killer + ", the test's own copy of the header"
+        return None
+
+    def verdict(self, path, name, cmd, secs, base):
+        """The killer's description when the test fails beyond its baseline, else None."""
+        try:
+            r = self.sh(cmd, timeout=secs)
+        except subprocess.TimeoutExpired:
+            return self.killed(path, name, name + " (timeout)")
+        if r.returncode == 0:
+            return None
+        sig = signature(r.stdout + r.stderr)
+        new = sig - base if base is not None else sig
+        if base is None or new or not sig:
+            first = sorted(new)[0][:60] if new else "exit status %d" % r.returncode
+            return self.killed(path, name, "%s (%s)" % (name, first))
+        return None
+
+    def killed(self, path, name, why):
+        self.kills[(path, name)] = self.kills.get((path, name), 0) + 1
+        return why
 
 
 def signature(log):
@@ -271,30 +357,44 @@ def signature(log):
     return {re.sub(r"[0-9]", "", l[4:].strip()) for l in log.splitlines() if l.startswith("FAIL")}
 
 
-def run_one(sc, mut, texts, ref_objs, eq):
+def label_of(mut, text):
+    path, off, length, rep, kind = mut
+    line, orig, new = describe(mut, text)
+    return "%s:%d %s: %s  ->  %s" % (path, line, kind, orig, new), orig, new
+
+
+def run_one(sc, mut, texts, ref_objs):
+    """verdict ("killed", "survived", "equivalent", "did-not-build") and why, for one mutant."""
     path, off, length, rep, kind = mut
     text = texts[path]
-    line, orig, new = describe(mut, text)
-    label = "%s:%d %s: %s  ->  %s" % (path, line, kind, orig, new)
     target = os.path.join(sc.dir, path)
     with open(target, "w") as f:
         f.write(text[:off] + rep + text[off + length:])
+    header = rebuilt = not path.endswith(".c")
     try:
+        if header:
+            quick = sc.header_quick(path)
+            rebuilt = quick is None
+            if quick is not None:
+                return ("killed", quick) if quick else ("did-not-build", "does not compile")
         obj = sc.object(path)
         if obj is None:
-            return "did-not-build", label, "does not compile"
+            return "did-not-build", "does not compile"
         if obj and obj == ref_objs[path]:
-            return "equivalent", label, "same object code (cc -O2 -g0)"
-        killer = sc.run_tests()
+            return "equivalent", "same object code (cc -O2 -g0)"
+        if (header and not sc.build()) or (not header and not sc.archive(path, obj)):
+            return "did-not-build", "does not link"
+        killer = sc.run_tests(path, relink=not header)
         if killer == "":
-            return "did-not-build", label, "does not link"
-        if killer:
-            return "killed", label, killer
-        proof = eq.get((path, orig, new))
-        return ("equivalent", label, proof) if proof else ("survived", label, "")
+            return "did-not-build", "does not link"
+        return ("killed", killer) if killer else ("survived", "")
     finally:
-        with open(target, "w") as f:  # a new mtime: the next build recompiles what changed
+        with open(target, "w") as f:  # a new mtime: a header's includers are rebuilt
             f.write(text)
+        if rebuilt:
+            sc.build()
+        elif not header and ref_objs[path]:
+            sc.archive(path, ref_objs[path])
 
 
 def main():
@@ -302,10 +402,16 @@ def main():
     ap.add_argument("--files", nargs="*", default=FILES)
     ap.add_argument("--sample", type=int, default=0)
     ap.add_argument("--seed", type=int, default=20261123)
-    ap.add_argument("--out", default="")
-    ap.add_argument("--first", type=int, default=1, help="start at this mutant (1-based): resume a run")
+    ap.add_argument("--out", default="", help="the result file, rewritten from the log as the run goes")
+    ap.add_argument("--log", default="", help="one line per mutant run, appended as it finishes")
+    ap.add_argument("--resume", action="store_true", help="skip the mutants the log holds, but survivors")
+    ap.add_argument("--survivors", action="store_true", help="run only the survivors the log holds")
+    ap.add_argument("--only", default="", help="run only the mutants whose label holds this text")
+    ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
+    ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/build/mutants_equivalent")
+    ap.add_argument("--roundoff", default="tests/build/mutants_roundoff")
     a = ap.parse_args()
     types = typedef_names(sorted(glob.glob("src/*/*.h") + glob.glob("src/*/*.c")))
     texts = {p: open(p).read() for p in a.files}
@@ -313,63 +419,115 @@ def main():
     if a.sample and a.sample < len(muts):
         pick = sorted(random.Random(a.seed).sample(range(len(muts)), a.sample))
         muts = [muts[i] for i in pick]
-    muts = muts[a.first - 1:]
+    labels = [label_of(m, texts[m[0]])[0] for m in muts]
     if a.list:
-        for m in muts:
-            line, orig, new = describe(m, texts[m[0]])
-            print("%s:%d %s: %s  ->  %s" % (m[0], line, m[4], orig, new))
+        print("\n".join(labels))
         print("mutants-ops: %d mutants" % len(muts))
         return 0
-    eq = load_equivalents(a.equivalent)
+    if a.summarize:
+        print(write_result(a, labels, texts, muts))
+        return 0
+    if a.log and not a.resume and not a.only and not a.survivors:
+        open(a.log, "w").close()
+    done = read_log(a.log) if a.log else {}
+    # a survivor runs again on resume: a test may have been added for it since
+    todo = [m for m, l in zip(muts, labels)
+            if (a.only in l if a.only else done.get(l, ("survived",))[0] == "survived")
+            and (not a.survivors or done.get(l, ("",))[0] == "survived")]
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # so that the scratch copy goes too
     sc = Scratch(os.getcwd())
     try:
-        return campaign(a, sc, muts, texts, eq)
+        return campaign(a, sc, todo, texts, labels, muts)
     finally:
         shutil.rmtree(sc.dir, ignore_errors=True)
 
 
-def campaign(a, sc, muts, texts, eq):
-    print("mutants-ops: %d mutants over %s; building the scratch copy in %s"
-          % (len(muts), " ".join(a.files), sc.dir), flush=True)
+def read_log(path):
+    """label -> (verdict, why) from a campaign log; a mutant run again keeps its last verdict."""
+    out = {}
+    if path and os.path.exists(path):
+        for raw in open(path):
+            f = raw.rstrip("\n").split("\t")
+            if len(f) == 3:
+                out[f[1]] = (f[0], f[2])
+    return out
+
+
+def campaign(a, sc, todo, texts, labels, muts):
+    print("mutants-ops: %d mutants to run over %s; building the scratch copy in %s"
+          % (len(todo), " ".join(a.files), sc.dir), flush=True)
     if not sc.build():
         print("mutants-ops: the unmutated tree does not build")
         return 2
     sc.setup_tests()
     ref = {p: sc.object(p) for p in a.files}
-    counts = {"killed": 0, "equivalent": 0, "survived": 0, "did-not-build": 0}
-    lines, t0 = [], time.time()
-    for n, m in enumerate(muts, 1):
-        verdict, label, why = run_one(sc, m, texts, ref, eq)
-        counts[verdict] += 1
-        lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
-        print("%d/%d %s" % (n, len(muts), lines[-1]), flush=True)
-        if a.out and n % 5 == 0:
-            write_result(a, counts, lines, time.time() - t0, n, len(muts))
-    summary = write_result(a, counts, lines, time.time() - t0, len(muts), len(muts))
+    for p, obj in ref.items():
+        if obj:
+            sc.archive(p, obj)
+    log = open(a.log or os.devnull, "a")
+    for n, m in enumerate(todo, 1):
+        t0 = time.time()
+        label = label_of(m, texts[m[0]])[0]
+        verdict, why = run_one(sc, m, texts, ref)
+        log.write("%s\t%s\t%s\n" % (verdict, label, why))
+        log.flush()
+        print("%d/%d %-13s %s  [%s] %.1f s" % (n, len(todo), verdict.upper(), label, why, time.time() - t0),
+              flush=True)
+        if a.out and a.log and n % 20 == 0:
+            write_result(a, labels, texts, muts)
+    log.close()
+    summary = write_result(a, labels, texts, muts) if a.log else "mutants-ops: no log"
     print(summary)
-    return 1 if counts["survived"] else 0
+    return 1 if " survived 0," not in summary else 0
 
 
-def write_result(a, c, lines, secs, done, total):
-    live = len(lines) - c["equivalent"] - c["did-not-build"]
-    score = "%.4f" % (c["killed"] / live) if live else "n/a"
-    summary = ("mutants-ops: generated %d, killed %d, equivalent %d, survived %d, did-not-build %d, score %s"
-               % (len(lines), c["killed"], c["equivalent"], c["survived"], c["did-not-build"], score))
+def write_result(a, labels, texts, muts):
+    """The result file from the log: the counts over every file, then per file, then one line a
+    mutant. A logged survivor whose mutant tests/build/mutants_equivalent lists (with its proof)
+    counts as equivalent, one listed in tests/build/mutants_roundoff (why no test can see it) as a
+    round-off survivor; a mutant not yet run is counted as not run."""
+    done, eq, ro = read_log(a.log), load_equivalents(a.equivalent), load_equivalents(a.roundoff)
+    kinds = ("killed", "equivalent", "round-off", "survived", "did-not-build", "not-run")
+    total, per_file, lines = dict.fromkeys(kinds, 0), {}, []
+    for m, label in zip(muts, labels):
+        verdict, why = done.get(label, ("not-run", ""))
+        if verdict == "survived":
+            _, orig, new = label_of(m, texts[m[0]])
+            if (m[0], orig, new) in eq:
+                verdict, why = "equivalent", eq[(m[0], orig, new)]
+            elif (m[0], orig, new) in ro:
+                verdict, why = "round-off", ro[(m[0], orig, new)]
+        total[verdict] += 1
+        per_file.setdefault(m[0], dict.fromkeys(kinds, 0))[verdict] += 1
+        if verdict != "not-run":
+            lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
+    summary = "mutants-ops: " + counts_text(total, len(muts))
     if a.out:
         commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
         head = ["# make mutants-ops (tools/mutants_ops.py): the generated operator-mutation campaign",
-                "# commit %s, %s UTC, %.0f s for %d of %d mutants%s" % (
-                    commit or "unknown", time.strftime("%Y-%m-%d %H:%M", time.gmtime()), secs, done, total,
-                    "" if done == total else " (INCOMPLETE: cut short)"),
-                "# files: " + " ".join(a.files),
-                "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed)),
-                summary, ""]
+                "# commit %s, written %s UTC%s" % (commit or "unknown", time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
+                                                   "" if not total["not-run"] else " (INCOMPLETE)"),
+                "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed))] + \
+            (["# " + a.note] if a.note else []) + [
+                "# log: %s; resume: python3 tools/mutants_ops.py --resume --log %s --out %s [--files ...]"
+                % (a.log, a.log, a.out),
+                summary, "# per file:"] + \
+            ["#   %s: %s" % (p, counts_text(c, sum(c.values()))) for p, c in per_file.items()] + [""]
         tmp = a.out + ".tmp"
         with open(tmp, "w") as f:
             f.write("\n".join(head + lines) + "\n")
         os.replace(tmp, a.out)
     return summary
+
+
+def counts_text(c, n):
+    """The score is K / (N - E - B): a round-off survivor is a live mutant that no test kills."""
+    live = c["killed"] + c["survived"] + c["round-off"]
+    score = "%.4f" % (c["killed"] / live) if live else "n/a"
+    return ("generated %d, killed %d, equivalent %d, survived %d, did-not-build %d, score %s, "
+            "round-off survivors %d%s"
+            % (n, c["killed"], c["equivalent"], c["survived"], c["did-not-build"], score, c["round-off"],
+               ", not run %d" % c["not-run"] if c["not-run"] else ""))
 
 
 if __name__ == "__main__":
