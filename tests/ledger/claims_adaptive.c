@@ -83,7 +83,7 @@ static int run(const sus_model *m, const double w0[2], double tol, double T, tra
 typedef struct {
     double slope, slope_min, ratio_lo,
         ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
-    const char *slope_body, *lo_body, *hi_body;
+    char slope_body[16], lo_body[16], hi_body[16]; /* copies: each body is gone after its turn */
     int points, fitted;
 } tol_summary;
 
@@ -91,13 +91,16 @@ typedef struct {
 static void summary_add(tol_summary *s, const char *name, double slope, const double *ratio,
                         const double *per_step, int n)
 {
-    if (!s->slope_body || !(slope <= s->slope)) s->slope = slope, s->slope_body = name;
+    if (!s->slope_body[0] || !(slope <= s->slope))
+        s->slope = slope, snprintf(s->slope_body, sizeof s->slope_body, "%s", name);
     if (!(slope >= s->slope_min) || s->slope_min == 0.0) s->slope_min = slope;
     for (int j = 0; j < n; j++) {
-        if (!s->lo_body || ratio[j] < s->ratio_lo) s->ratio_lo = ratio[j], s->lo_body = name;
+        if (!s->lo_body[0] || ratio[j] < s->ratio_lo)
+            s->ratio_lo = ratio[j], snprintf(s->lo_body, sizeof s->lo_body, "%s", name);
     }
     for (int j = 0; j < NTOL; j++)
-        if (!s->hi_body || !(per_step[j] <= s->ratio_hi)) s->ratio_hi = per_step[j], s->hi_body = name;
+        if (!s->hi_body[0] || !(per_step[j] <= s->ratio_hi))
+            s->ratio_hi = per_step[j], snprintf(s->hi_body, sizeof s->hi_body, "%s", name);
 }
 
 /* One body's errors over the tolerances, for w (q = 0) and R (q = 1). */
