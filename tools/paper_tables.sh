@@ -18,14 +18,30 @@ head_row() { # file caption label colspec header
 head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A of the software note lists every line).' tab:findings \
     '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
     '& finding & verdict & what we measure (ledger lines)'
-awk -F'\t' 'NR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
+# An erratum finding names the row of the errata table that corrects it (erratum (E1)).
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $6 != "") eid[$6] = $1; next }
+    FNR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
+    if ($3 == "erratum") v = v " (" eid[$1] ")"
     ids = $4; n = split(ids, a, " "); gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
-    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s})}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids }' paper/findings.tsv >>"$O/findings.tex"
+    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s})}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids }' paper/errata.tsv paper/findings.tsv >>"$O/findings.tex"
 printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
     printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"] }' \
     paper/findings.tsv >"$O/findings_counts.tex"
+# One count of the errata: each erratum finding is corrected by exactly one row of the errata
+# table (its finding column), each row that names a finding names an erratum finding, and the
+# other rows are read off the source; a mismatch fails the build.
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $3 == "erratum") need[$1] = 1; if (FNR > 1) known[$1] = $3; next }
+    FNR == 1 { next }
+    { n++ } $6 == "" { read++; next }
+    { if (known[$6] != "erratum") { print "paper_tables: erratum " $1 " names " $6 ", not an erratum finding" > "/dev/stderr"; bad = 1 }
+      if (seen[$6]++) { print "paper_tables: finding " $6 " has two errata rows" > "/dev/stderr"; bad = 1 }
+      delete need[$6] }
+    END { for (f in need) { print "paper_tables: erratum finding " f " has no row in paper/errata.tsv" > "/dev/stderr"; bad = 1 }
+          if (bad) exit 1
+          printf "\\newcommand{\\ErrataCount}{%d}\n\\newcommand{\\ErrataRead}{%d}\n", n, read }' \
+    paper/findings.tsv paper/errata.tsv >>"$O/findings_counts.tex"
 
 head_row "$O/errata.tex" 'Errata for the authors: typos and internal inconsistencies, with the evidence.' tab:errata \
     '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright\arraybackslash}p{0.26\linewidth}' \
@@ -41,7 +57,8 @@ awk -F'\t' 'function brk(s,   out, i, c, tt) {
             if (tt && c == "-") out = out "\\allowbreak{}"
         }
         return out }
-    NR > 1 { printf "%s & %s & %s & %s & %s\\\\\n", $1, $2, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
+    NR > 1 { w = $2; if ($6 != "") w = w "; finding " $6
+             printf "%s & %s & %s & %s & %s\\\\\n", $1, w, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
 printf '%s\n' '\end{longtable}' >>"$O/errata.tex"
 
 head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' tab:nottested \
@@ -75,7 +92,7 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
       link = ""
       for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
       if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; gsub(/_/, "\\\\_", shown)
-          $0 = substr($0, 1, RLENGTH) " {\\tiny\\href{../" file "}{\\texttt{" shown "}}}" substr($0, RLENGTH + 1) } }
+          $0 = substr($0, 1, RLENGTH) " {\\scriptsize\\href{../" file "}{\\texttt{" shown "}}}" substr($0, RLENGTH + 1) } }
   while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
       if (l in pos) { key = pos[l]; break }

@@ -19,6 +19,7 @@
 /* The width of the text block at the page's figure scale; the caption carries the title. */
 #define FIG_W 540.0
 #define FIG_H 480.0
+#define LEGEND_COLS 2 /* panel (c)'s legend, above its lines */
 #define EPS_A 4.0     /* explicit Euler at h = eps k = 0.58: its steps visibly leave the exact curve */
 #define NSTEP_A 10
 #define NSUB 40       /* samples per period */
@@ -89,14 +90,19 @@ static void draw(cairo_t *cr, void *vctx)
         double lo = INFINITY, hi = -INFINITY;
         for (int m = 0; m < f->nm; m++)
             sus_plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
-        hi *= 100.0; /* room for the legend above the lines */
         sus_plot_axes ax;
         sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
+        /* a strip above the lines for the legend, in LEGEND_COLS columns */
+        const double strip = sus_plot_legend_height((f->nm + LEGEND_COLS - 1) / LEGEND_COLS) + 6.0;
+        const double decades = log10(ax.y1 / ax.y0);
+        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo,
+                           ax.y1 * pow(10.0, decades * strip / (ax.h - strip)), 1, 1);
         sus_plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
         sus_plot_style leg[f->nm];
+        char under[f->nm][48];
         static const int mk[] = {SUS_PLOT_SQUARE,  SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE,
                                  SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
-        int nl = 0;
+        int nl = 0, shown[f->nm];
         for (int m = 0; m < f->nm; m++) {
             int drawn = 0;
             for (int j = 0; j < NE; j++)
@@ -107,9 +113,17 @@ static void draw(cairo_t *cr, void *vctx)
             leg[nl] = sus_plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
             sus_plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
             sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
-            nl++;
+            shown[nl++] = m;
         }
-        sus_plot_legend(&ax, leg, nl, 0);
+        /* a curve that a later one covers to within a marker says so in the legend */
+        for (int a = 0; a < nl; a++)
+            for (int b = nl - 1; b > a; b--)
+                if (sus_plot_hidden_under(&ax, f->eps, f->g[shown[a]], f->g[shown[b]], NE, 1.5)) {
+                    snprintf(under[a], sizeof under[a], "%s (under %s)", f->names[shown[a]], f->names[shown[b]]);
+                    leg[a].label = under[a];
+                    break;
+                }
+        sus_plot_legend_packed(cr, ax.x + 4.0, ax.y + 4.0, leg, nl, LEGEND_COLS);
         sus_plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
         sus_plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
     }

@@ -22,7 +22,11 @@ const double SUS_PLOT_RED[3] = {0.85, 0.15, 0.10}, SUS_PLOT_BLUE[3] = {0.12, 0.3
              SUS_PLOT_BLACK[3] = {0.0, 0.0, 0.0};
 
 #define TICK_FONT 8.0
-#define LABEL_FONT 9.5
+#define LABEL_FONT 10.0
+#define LEGEND_ROW 11.0 /* a legend line, and the padding of its box */
+#define LEGEND_PAD 4.0
+#define LEGEND_SAMPLE 18.0
+#define LEGEND_FONT 8.0
 
 sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
                          const char *label)
@@ -107,27 +111,83 @@ static double map_y(const sus_plot_axes *ax, double v)
            (tx(v, ax->ylog) - tx(ax->y0, ax->ylog)) / (tx(ax->y1, ax->ylog) - tx(ax->y0, ax->ylog)) * ax->h;
 }
 
+/* A Unicode subscript or superscript of the labels (UTF-8 at s): the ASCII character it stands for
+ * and its shift (-1 below, +1 above the baseline); returns its length in bytes, 0 if s is none.
+ * The fonts draw these glyphs at about 0.6 of the size, too small at print size, so the plots set
+ * them as ordinary characters at SCRIPT_SCALE of the size, moved off the baseline. */
+#define SCRIPT_SCALE 0.8
+static int script_of(const char *s, char *ascii, int *shift)
+{
+    static const struct { const char *utf8; char ascii; int shift; } other[] = {
+        {"\xe2\x82\x96", 'k', -1}, {"\xe2\x82\x98", 'm', -1}, {"\xe2\x82\x99", 'n', -1},
+        {"\xe1\xb5\x80", 'T', 1},  {"\xe1\xb5\x96", 'p', 1}};
+    const unsigned char *u = (const unsigned char *)s;
+    if (u[0] == 0xe2 && u[1] == 0x82 && u[2] >= 0x80 && u[2] <= 0x89) { /* subscript digits */
+        *ascii = (char)('0' + (u[2] - 0x80));
+        *shift = -1;
+        return 3;
+    }
+    for (size_t i = 0; i < sizeof other / sizeof other[0]; i++)
+        if (strncmp(s, other[i].utf8, 3) == 0) {
+            *ascii = other[i].ascii;
+            *shift = other[i].shift;
+            return 3;
+        }
+    return 0;
+}
+
+/* Sets one piece of text at (x, y) (baseline) when draw is set; returns its advance. */
+static double piece(cairo_t *cr, double x, double y, const char *text, double size, int draw)
+{
+    cairo_text_extents_t te;
+    cairo_set_font_size(cr, size);
+    cairo_text_extents(cr, text, &te);
+    if (draw) {
+        cairo_move_to(cr, x, y);
+        cairo_show_text(cr, text);
+    }
+    return te.x_advance;
+}
+
+/* The advance of a label, its scripts set as script_of says; drawn from (x, y) when draw is set. */
+static double label_runs(cairo_t *cr, double x, double y, const char *text, double size, int draw)
+{
+    char run[256], one[2] = {0, 0};
+    size_t n = 0;
+    double adv = 0.0;
+    for (const char *s = text;;) {
+        int shift = 0, len = *s ? script_of(s, one, &shift) : 0;
+        if (!*s || len || n + 1 == sizeof run) {
+            run[n] = '\0';
+            adv += n ? piece(cr, x + adv, y, run, size, draw) : 0.0;
+            n = 0;
+        }
+        if (!*s)
+            return adv;
+        if (len) {
+            const double dy = shift < 0 ? 0.22 * size : -0.38 * size;
+            adv += piece(cr, x + adv, y + dy, one, SCRIPT_SCALE * size, draw);
+            s += len;
+        } else
+            run[n++] = *s++;
+    }
+}
+
 void sus_plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
                double valign, int bold)
 {
-    cairo_text_extents_t te;
     cairo_select_font_face(cr, SUS_PLOT_FONT, CAIRO_FONT_SLANT_NORMAL,
                            bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
-    cairo_text_extents(cr, text, &te);
+    const double w = label_runs(cr, 0.0, 0.0, text, size, 0);
     /* valign: 0 = top, 0.5 = middle, 1 = baseline-ish bottom of the cap height */
-    cairo_move_to(cr, x - halign * te.x_advance, y + (1.0 - valign) * size * 0.72);
-    cairo_show_text(cr, text);
+    label_runs(cr, x - halign * w, y + (1.0 - valign) * size * 0.72, text, size, 1);
 }
 
 /* Width of a text at a size, for layout. */
 static double text_width(cairo_t *cr, const char *text, double size)
 {
-    cairo_text_extents_t te;
     cairo_select_font_face(cr, SUS_PLOT_FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
-    cairo_text_extents(cr, text, &te);
-    return te.x_advance;
+    return label_runs(cr, 0.0, 0.0, text, size, 0);
 }
 
 /* "10" with a raised exponent, aligned like sus_plot_text. The exponent keeps the tick size: the
@@ -374,20 +434,26 @@ void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, dou
     cairo_restore(cr);
 }
 
+/* The width of a legend box: its sample, its longest label and the padding. */
+static double legend_width(cairo_t *cr, const sus_plot_style *st, int n)
+{
+    double wmax = 0.0;
+    for (int i = 0; i < n; i++)
+        if (st[i].label)
+            wmax = fmax(wmax, text_width(cr, st[i].label, LEGEND_FONT));
+    return LEGEND_SAMPLE + 3 * LEGEND_PAD + wmax;
+}
+
 void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, int corner)
 {
     cairo_t *cr = ax->cr;
-    const double row = 11.0, sample = 18.0, pad = 4.0, fs = 8.0;
-    double wmax = 0.0;
+    const double row = LEGEND_ROW, sample = LEGEND_SAMPLE, pad = LEGEND_PAD, fs = LEGEND_FONT;
     int rows = 0;
     for (int i = 0; i < n; i++)
-        if (st[i].label) {
-            wmax = fmax(wmax, text_width(cr, st[i].label, fs));
-            rows++;
-        }
+        rows += st[i].label != NULL;
     if (rows == 0)
         return;
-    const double bw = sample + 3 * pad + wmax, bh = rows * row + pad;
+    const double bw = legend_width(cr, st, n), bh = rows * row + pad;
     const double bx = corner % 2 ? ax->x + ax->w - bw - 4.0 : ax->x + 4.0;
     const double by = corner < 2   ? ax->y + 4.0
                       : corner < 4 ? ax->y + ax->h - bh - 4.0
@@ -429,6 +495,34 @@ void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const su
     sus_plot_legend(&la, st, half, 0);
     sus_plot_axes_init(&la, cr, x + w / 2, y, w / 2 - 16, 1, 0, 1, 0, 1, 0, 0);
     sus_plot_legend(&la, st + half, n - half, 0);
+}
+
+void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_style *st, int n, int ncol)
+{
+    const int per = (n + ncol - 1) / ncol;
+    for (int c = 0; c * per < n; c++) {
+        const int k = n - c * per < per ? n - c * per : per;
+        sus_plot_axes la; /* a box sized by its labels, starting at la.x (corner 0) */
+        sus_plot_axes_init(&la, cr, x, y, 1, 1, 0, 1, 0, 1, 0, 0);
+        sus_plot_legend(&la, st + c * per, k, 0);
+        x += legend_width(cr, st + c * per, k) + 6.0;
+    }
+}
+
+double sus_plot_legend_height(int rows) { return rows * LEGEND_ROW + LEGEND_PAD; }
+
+int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb, size_t n,
+                          double tol)
+{
+    int common = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!visible(ax, x[i], ya[i]))
+            continue;
+        if (!visible(ax, x[i], yb[i]) || fabs(map_y(ax, ya[i]) - map_y(ax, yb[i])) > tol)
+            return 0;
+        common++;
+    }
+    return common > 0;
 }
 
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope, const char *label)

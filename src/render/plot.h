@@ -79,6 +79,14 @@ void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, i
 /* The legend of a figure in two columns below its panels, each half of width w from x, top at y:
  * a portrait page has room for one long legend only side by side. */
 void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const sus_plot_style *st, int n);
+/* A legend in ncol boxes side by side from (x, y), filled column by column, each as wide as its
+ * labels; and the height of a legend of `rows` lines. */
+void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_style *st, int n, int ncol);
+double sus_plot_legend_height(int rows);
+/* Whether the curve (x, ya), drawn first, hides under (x, yb): every point of it that the axes show
+ * lies within tol points of yb's on the page. */
+int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb, size_t n,
+                          double tol);
 /* A dashed grey segment of slope `slope` in log-log axes from xa to (xb, yb), labelled at xa. */
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope,
                     const char *label);

@@ -287,7 +287,7 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
         snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
         snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
                  SUS_RECON_NAMES[r]);
-        order_line(id, what, me, &sum[2 + r], eo->so3[r], "TeoL: min(r, p)");
+        order_line(id, what, me, &sum[2 + r], eo->so3[r], "TeoL");
     }
 }
 

@@ -21,7 +21,8 @@ def tex_text(s):
         part = esc(part)
         part = re.sub(r"\\texttt\{([^{}]*)\}", r"<code>\1</code>", part)
         part = re.sub(r"\\emph\{([^{}]*)\}", r"<em>\1</em>", part)
-        part = re.sub(r"\\(?:cite|ref|eqref)\{([^{}]*)\}", r"[\1]", part)
+        part = re.sub(r"~?\\cite\{[^{}]*\}", "", part)  # the text names the authors; no bibliography here
+        part = re.sub(r"\\(?:ref|eqref)\{([^{}]*)\}", r"[\1]", part)
         out.append(part.replace("---", "&mdash;").replace("--", "&ndash;").replace("~", "&nbsp;")
                    .replace("\\%", "%").replace("\\&amp;", "&amp;").replace("\\_", "_"))
     return "".join(out)
@@ -76,9 +77,11 @@ class ArgumentPages:
                           ledger_links(st.finding_claims(fd))))
         out.append("</table>")
         if st.errata:
-            out.append("<p>%d errata in the paper: <a href='errata.html'>the errata table</a>. %d statements "
-                       "are <a href='not-tested.html'>not tested</a>, with the reason.</p>"
-                       % (len(st.errata), len(st.not_tested)))
+            measured = sum(1 for e in st.errata if e.get("finding"))
+            out.append("<p>%d errata in the paper (<a href='errata.html'>the errata table</a>): %d are the erratum "
+                       "findings above, the other %d are read off the source. %d statements are "
+                       "<a href='not-tested.html'>not tested</a>, with the reason.</p>"
+                       % (len(st.errata), measured, len(st.errata) - measured, len(st.not_tested)))
         return "\n".join(out)
 
     def statements_index(self):
@@ -134,7 +137,9 @@ class ArgumentPages:
 
     def errata_page(self):
         def row(e):
-            where = tex_text(e["location"]) + "".join("<br>" + self.stmt_link(lab)
+            where = tex_text(e["location"]) + (
+                "; finding <a href='index.html#finding-%s'>%s</a>" % (esc(e["finding"]), esc(e["finding"]))
+                if e.get("finding") else "") + "".join("<br>" + self.stmt_link(lab)
                                                  for lab in self.st.of_erratum[e["id"]])
             return ("<tr id='erratum-%s'><td>%s</td><td>%s</td><td data-h='printed'>%s</td>"
                     "<td data-h='corrected'>%s</td><td data-h='evidence'>%s</td></tr>"

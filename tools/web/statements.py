@@ -91,7 +91,7 @@ class Statements:
         return list(dict.fromkeys(labs))
 
     def finding_claims(self, fd):
-        return [i.strip() for i in fd["ledger_ids"].split(",") if i.strip() in self.claim_by_id]
+        return [i for i in re.split(r"[\s,]+", fd["ledger_ids"]) if i in self.claim_by_id]  # space-separated
 
     def name(self, lab):
         kind, number = self.labels[lab]
