@@ -54,6 +54,52 @@ static const double *colour(int i)
     return c[i % 7];
 }
 
+/* Panel c, the size of the perturbation against eps for every method; the legend in a strip above
+ * the lines, where a curve that a later one covers says so. */
+static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int m = 0; m < f->nm; m++)
+        sus_plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
+    sus_plot_axes ax;
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
+    /* a strip above the lines for the legend, in LEGEND_COLS columns */
+    const double strip = sus_plot_legend_height((f->nm + LEGEND_COLS - 1) / LEGEND_COLS) + 6.0;
+    const double decades = log10(ax.y1 / ax.y0);
+    sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo,
+                       ax.y1 * pow(10.0, decades * strip / (ax.h - strip)), 1, 1);
+    sus_plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
+    sus_plot_style leg[f->nm];
+    char under[f->nm][48];
+    static const int mk[] = {SUS_PLOT_SQUARE,  SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE,
+                             SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
+    int nl = 0, shown[f->nm];
+    for (int m = 0; m < f->nm; m++) {
+        int drawn = 0;
+        for (int j = 0; j < NE; j++)
+            drawn += isfinite(f->g[m][j]);
+        if (drawn < 2) /* at round-off for every eps: said in the caption */
+            continue;
+        /* dashed where the colours come round again */
+        leg[nl] = sus_plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
+        sus_plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
+        sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
+        shown[nl++] = m;
+    }
+    /* a curve that a later one covers to within half a marker (1.5 of 3.5 pt) says so in the legend */
+    for (int a = 0; a < nl; a++)
+        for (int b = nl - 1; b > a; b--)
+            if (sus_plot_hidden_under(&ax, f->eps, f->g[shown[a]], f->g[shown[b]], NE, 1.5)) {
+                snprintf(under[a], sizeof under[a], "%s (under %s)", f->names[shown[a]],
+                         f->names[shown[b]]);
+                leg[a].label = under[a];
+                break;
+            }
+    sus_plot_legend_packed(cr, ax.x + 4.0, ax.y + 4.0, leg, nl, LEGEND_COLS);
+    sus_plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
+    sus_plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
+}
+
 static void draw(cairo_t *cr, void *vctx)
 {
     const pert_fig *f = vctx;
@@ -85,48 +131,7 @@ static void draw(cairo_t *cr, void *vctx)
             sus_plot_legend(&ax, leg, 3, 1);
         }
     }
-    /* (c) sizes against eps, every method */
-    {
-        double lo = INFINITY, hi = -INFINITY;
-        for (int m = 0; m < f->nm; m++)
-            sus_plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
-        sus_plot_axes ax;
-        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
-        /* a strip above the lines for the legend, in LEGEND_COLS columns */
-        const double strip = sus_plot_legend_height((f->nm + LEGEND_COLS - 1) / LEGEND_COLS) + 6.0;
-        const double decades = log10(ax.y1 / ax.y0);
-        sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo,
-                           ax.y1 * pow(10.0, decades * strip / (ax.h - strip)), 1, 1);
-        sus_plot_frame(&ax, "\xce\xb5", "sup |\xce\xb5\xe1\xb5\x96 d|", "(c)");
-        sus_plot_style leg[f->nm];
-        char under[f->nm][48];
-        static const int mk[] = {SUS_PLOT_SQUARE,  SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE,
-                                 SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
-        int nl = 0, shown[f->nm];
-        for (int m = 0; m < f->nm; m++) {
-            int drawn = 0;
-            for (int j = 0; j < NE; j++)
-                drawn += isfinite(f->g[m][j]);
-            if (drawn < 2) /* at round-off for every eps: said in the caption */
-                continue;
-            /* dashed where the colours come round again */
-            leg[nl] = sus_plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
-            sus_plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
-            sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
-            shown[nl++] = m;
-        }
-        /* a curve that a later one covers to within a marker says so in the legend */
-        for (int a = 0; a < nl; a++)
-            for (int b = nl - 1; b > a; b--)
-                if (sus_plot_hidden_under(&ax, f->eps, f->g[shown[a]], f->g[shown[b]], NE, 1.5)) {
-                    snprintf(under[a], sizeof under[a], "%s (under %s)", f->names[shown[a]], f->names[shown[b]]);
-                    leg[a].label = under[a];
-                    break;
-                }
-        sus_plot_legend_packed(cr, ax.x + 4.0, ax.y + 4.0, leg, nl, LEGEND_COLS);
-        sus_plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
-        sus_plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
-    }
+    panel_sizes(cr, f, W, H);
     /* (d) the attitude perturbation, midpoint DSP */
     {
         double lo = INFINITY, hi = -INFINITY;

@@ -119,7 +119,8 @@ static double map_y(const sus_plot_axes *ax, double v)
 static int script_of(const char *s, char *ascii, int *shift)
 {
     static const struct { const char *utf8; char ascii; int shift; } other[] = {
-        {"\xe2\x82\x96", 'k', -1}, {"\xe2\x82\x98", 'm', -1}, {"\xe2\x82\x99", 'n', -1},
+        {"\xe2\x82\x8a", '+', -1}, {"\xe2\x82\x8b", '-', -1}, {"\xe2\x82\x96", 'k', -1},
+        {"\xe2\x82\x98", 'm', -1}, {"\xe2\x82\x99", 'n', -1},
         {"\xe1\xb5\x80", 'T', 1},  {"\xe1\xb5\x96", 'p', 1}};
     const unsigned char *u = (const unsigned char *)s;
     if (u[0] == 0xe2 && u[1] == 0x82 && u[2] >= 0x80 && u[2] <= 0x89) { /* subscript digits */
@@ -511,8 +512,8 @@ void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_styl
 
 double sus_plot_legend_height(int rows) { return rows * LEGEND_ROW + LEGEND_PAD; }
 
-int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb, size_t n,
-                          double tol)
+int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb,
+                          size_t n, double tol)
 {
     int common = 0;
     for (size_t i = 0; i < n; i++) {

@@ -85,8 +85,8 @@ void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_styl
 double sus_plot_legend_height(int rows);
 /* Whether the curve (x, ya), drawn first, hides under (x, yb): every point of it that the axes show
  * lies within tol points of yb's on the page. */
-int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb, size_t n,
-                          double tol);
+int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb,
+                          size_t n, double tol);
 /* A dashed grey segment of slope `slope` in log-log axes from xa to (xb, yb), labelled at xa. */
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope,
                     const char *label);

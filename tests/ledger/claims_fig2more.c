@@ -150,9 +150,9 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
     const run_result m200 = run(m, ex, mid, 1.0, 200), v200 = run(m, ex, var, 1.0, 200);
     const run_result m1e4 = run(m, ex, mid, 1.0, 10000), v1e4 = run(m, ex, var, 1.0, 10000);
     snprintf(q, sizeof q,
-             "|w_var(200) - w(200)| / |w_mid(200) - w(200)|, eps = 1 (%.2g vs %.2g): to the exact w(200), not "
-             "to w_inf as in fig2-longterm, so another ratio of two tiny numbers; 'much more accurate' needs "
-             "<= 1/10",
+             "|w_var(200) - w(200)| / |w_mid(200) - w(200)|, eps = 1 (%.2g vs %.2g): to the exact w(200), "
+             "not to w_inf as in fig2-longterm, so another ratio of two tiny numbers; 'much more accurate' "
+             "needs <= 1/10",
              v200.err, m200.err);
     ledger_add_bound("fig2-longterm-200", "Fig. 2 caption, Conclusions", q, v200.err / m200.err, 1.0 / MUCH,
                      0, LEDGER_NOT_REPRODUCED);
