@@ -70,16 +70,17 @@ class ArgumentPages:
                    "<th>summary</th></tr>")
         for fd in st.findings:
             out.append("<tr id='finding-%s'><td><b>%s</b> %s</td><td>%s</td><td>%s</td><td>%s "
-                       "<details><summary>%d ledger lines</summary>%s</details></td></tr>"
+                       "<details><summary>%d ledger line%s</summary>%s</details></td></tr>"
                        % (esc(fd["id"]), esc(fd["id"]), tex_text(fd["title"]),
                           ", ".join(self.stmt_link(lab) for lab in st.of_finding[fd["id"]]) or "&ndash;",
                           verdict_span(fd["verdict"]), tex_text(fd["summary"]), len(st.finding_claims(fd)),
+                          "s" if len(st.finding_claims(fd)) != 1 else "",
                           ledger_links(st.finding_claims(fd))))
         out.append("</table>")
         if st.errata:
             measured = sum(1 for e in st.errata if e.get("finding"))
-            out.append("<p>%d errata in the paper (<a href='errata.html'>the errata table</a>): %d are the erratum "
-                       "findings above, the other %d are read off the source. %d statements are "
+            out.append("<p>%d errata in the paper (<a href='errata.html'>the errata table</a>): %d are the "
+                       "erratum findings above, the other %d are read off the source. %d statements are "
                        "<a href='not-tested.html'>not tested</a>, with the reason.</p>"
                        % (len(st.errata), measured, len(st.errata) - measured, len(st.not_tested)))
         return "\n".join(out)
