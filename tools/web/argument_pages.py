@@ -24,6 +24,7 @@ def tex_text(s):
         part = re.sub(r"~?\\cite\{[^{}]*\}", "", part)  # the text names the authors; no bibliography here
         part = re.sub(r"\\(?:ref|eqref)\{([^{}]*)\}", r"[\1]", part)
         out.append(part.replace("---", "&mdash;").replace("--", "&ndash;").replace("~", "&nbsp;")
+                   .replace("``", "&ldquo;").replace("&#x27;&#x27;", "&rdquo;")
                    .replace("\\%", "%").replace("\\&amp;", "&amp;").replace("\\_", "_"))
     return "".join(out)
 
