@@ -191,7 +191,7 @@ typedef struct {
 static void tol_fn(void *vctx)
 {
     tol_run *r = vctx;
-    const sus_tol_config cfg = {&model, r->st, r->tol, r->T, 0.0};
+    const sus_tol_config cfg = {&model, r->st, r->tol, r->T, r->T, 0}; /* one row: the end */
     r->rc = sus_run_tol(&cfg, ex.w0, sus_keep_last, &r->last, &r->rep);
     sink += r->last.w[0];
 }
@@ -829,7 +829,7 @@ static void long_run_ours(const wp_series *s, int j, lr_acc *a)
 {
     const sus_step_method *me = sus_step_method_by_name(s->method);
     if (s->tol_driven) {
-        const sus_tol_config tc = {&model, me->type, s->param[j], T_LONG, T_LONG / 1000.0};
+        const sus_tol_config tc = {&model, me->type, s->param[j], T_LONG, T_LONG / 1000.0, 0};
         sus_run_report rep;
         sus_run_tol(&tc, ex.w0, lr_emit, a, &rep);
         return;

@@ -75,7 +75,7 @@ static int run(const sus_model *m, const double w0[2], double tol, double T, tra
     const sus_step_method *me = sus_step_method_by_name("taylor-adaptive");
     if (!me) ledger_die("the registry's taylor-adaptive");
     *c = (track_ctx){.m = m, .e0 = sus_energy(m, w0)};
-    const sus_tol_config cfg = {m, me->type, tol, T, 0.0};
+    const sus_tol_config cfg = {m, me->type, tol, T, 0.0, 0};
     sus_run_report rep;
     return sus_run_tol(&cfg, w0, track, c, &rep);
 }

@@ -56,7 +56,7 @@ static int run(const sus_model *m, const double w0[2], double tol, double T, dou
                sus_run_report *rep)
 {
     *c = (rows_ctx){.m = m, .e0 = sus_energy(m, w0), .monotone = 1};
-    const sus_tol_config cfg = {m, adaptive(), tol, T, dt};
+    const sus_tol_config cfg = {m, adaptive(), tol, T, dt, 0};
     return sus_run_tol(&cfg, w0, take, c, rep);
 }
 
@@ -186,7 +186,7 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
     dense_ctx c = {.worst_R = 0.0};
     sus_exact_init(&c.ex, m, w0);
     sus_refatt_init(&c.ref, &c.ex, 0.0, I3);
-    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1};
+    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1, 0};
     sus_run_report rep;
     rows_ctx steps;
     const int rc = sus_run_tol(&cfg, w0, against_reference, &c, &rep);
