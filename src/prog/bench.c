@@ -978,7 +978,8 @@ static void print_equal_error_long(void)
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
     if (s->tol_driven) {
-        snprintf(buf, len, "--method %s --tol %.17g --time %.17g", s->method, s->param[j], T_END);
+        snprintf(buf, len, "--method %s --tol %.17g --time %.17g --every-time %.17g", s->method, s->param[j],
+                 T_END, T_END);
         return;
     }
     snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
@@ -992,7 +993,7 @@ static int reproduce(const char *suslov, const wp_series *s, int j, double *dw, 
     char args[256], cmd[4096], line[4096], last[4096] = "";
     args_of(s, j, args, sizeof args);
     snprintf(cmd, sizeof cmd, "%.3000s %.255s", suslov, args);
-    if (!s->tol_driven) /* one row: the last (a --tol run writes a row a step; the last is read) */
+    if (!s->tol_driven) /* one row: the last (a --tol run's comes from --every-time T) */
         snprintf(cmd + strlen(cmd), sizeof cmd - strlen(cmd), " --every %ld", s->steps[j]);
     FILE *p = popen(cmd, "r");
     if (!p)
