@@ -199,6 +199,28 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
         name, c.worst_R, c.worst_w, bound);
 }
 
+/* The step budget: with max_steps = 3 a run that needs more stops before step 4, at the time its
+ * third step ended, with the rows of the steps it took (row 0 and one a step) and the last step's
+ * length; a budget the run does not need changes nothing. */
+static void step_budget(const sus_model *m, const double w0[2], const char *name)
+{
+    rows_ctx all, cut;
+    sus_run_report rep_all, rep;
+    run(m, w0, 1e-10, 50.0, 0.0, &all, &rep_all);
+    cut = (rows_ctx){.m = m, .e0 = sus_energy(m, w0), .monotone = 1};
+    sus_tol_config cfg = {m, adaptive(), 1e-10, 50.0, 0.0, 3};
+    const int rc = sus_run_tol(&cfg, w0, take, &cut, &rep);
+    CHECK(all.last.k > 3 && rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT &&
+              rep.step == 4 && cut.rows == 4 && rep.t == cut.last.t && cut.last.t < 50.0 &&
+              rep.stats.det > 0.0,
+          "%s: a budget of 3 steps stops before step %ld at t = %.3g with %d rows (the run needs %ld)", name,
+          rep.step, rep.t, cut.rows, all.last.k);
+    cfg.max_steps = all.last.k;
+    const int rc_enough = sus_run_tol(&cfg, w0, take, &cut, &rep);
+    CHECK(rc_enough == SUS_RUN_OK && rep.status == SUS_STEPPER_OK,
+          "%s: a budget of exactly the %ld steps the run needs ends it normally", name, all.last.k);
+}
+
 /* The estimate against the true local error of a first accepted step (closed-form w, long-double
  * reference R over the step): a last-two-terms estimate of a geometric tail is within F = 10 of
  * it either way (the undershoot factor claims_adaptive.c allows: ratio up to 0.9), over TOL
@@ -270,6 +292,7 @@ int main(void)
         rows_and_structure(&m, b.w0, b.name);
         dense_accuracy(&m, b.w0, b.name);
         estimate_vs_truth(&m, b.w0, b.name);
+        step_budget(&m, b.w0, b.name);
     }
     return check_summary("test_taylor_adaptive");
 }
