@@ -371,10 +371,11 @@ static double worst_err(const wp_series *s, int i)
     return fmax(s->err_w[i], s->w_only ? 0.0 : s->err_R[i]);
 }
 
-/* One of our runs that takes longer than this is far slower than every peer's run at the finest
- * level, so it can be the fastest at no level: our sweep stops there (the slow implicit methods'
- * finest steps were a fifth of the bench's time). A peer's sweep is never cut this way: a burst of
- * load in that one run could cut away a peer's fastest point. */
+/* One of our runs that takes longer than this is far slower than our fastest and the best peer's
+ * runs at every level, so it can be the fastest at no level: our sweep stops there (the slow
+ * implicit methods' finest steps cost more bench time than everything else they do). A peer's
+ * sweep is never cut this way: a burst of load in that one run could cut away a peer's fastest
+ * point. */
 #define OURS_SLOW_RUN 1e-2
 
 static int sweep_done(const wp_series *s)
@@ -1014,8 +1015,8 @@ static void print_equal_error_long(void)
     sus_refatt_precise(&model, ex.w0, T_LONG, w_ref, R_ref);
     for (int i = 0; i < nseries; i++) {
         const wp_series *s = S[i];
-        /* explicit methods only: the target is the series methods', and an implicit one at the step
-         * that reaches 1e-10 runs for seconds here (gauss4: 2e6 steps) */
+        /* explicit methods only: the target is the series methods', and an implicit one needs so
+         * many steps to reach 1e-10 that its T = 1e4 runs would take most of this phase */
         const sus_step_method *me = s->ours && !s->w_only ? sus_step_method_by_name(s->method) : NULL;
         if (me && me->type->implicit)
             continue;
