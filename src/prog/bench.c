@@ -1156,7 +1156,7 @@ static void draw_wp_notes(cairo_t *cr, double y)
         "on (w1, w2) alone, like our \"(w only)\" rows.",
         "Thick black: the peers' lower envelope. Every point's time and error come from the same runs.",
         "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a",
-        "long-double reference R(t) (error ~1e-17).",
+        "long-double reference R(t) (error ~1e-17). Our sweeps stop after a run longer than 10 ms.",
     };
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (size_t i = 0; i < sizeof notes / sizeof notes[0]; i++)
