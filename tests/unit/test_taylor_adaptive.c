@@ -56,7 +56,7 @@ static int run(const sus_model *m, const double w0[2], double tol, double T, dou
                sus_run_report *rep)
 {
     *c = (rows_ctx){.m = m, .e0 = sus_energy(m, w0), .monotone = 1};
-    const sus_tol_config cfg = {m, adaptive(), tol, T, dt};
+    const sus_tol_config cfg = {m, adaptive(), tol, T, dt, 0};
     return sus_run_tol(&cfg, w0, take, c, rep);
 }
 
@@ -186,7 +186,7 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
     dense_ctx c = {.worst_R = 0.0};
     sus_exact_init(&c.ex, m, w0);
     sus_refatt_init(&c.ref, &c.ex, 0.0, I3);
-    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1};
+    const sus_tol_config cfg = {m, adaptive(), 1e-8, 30.0, 0.1, 0};
     sus_run_report rep;
     rows_ctx steps;
     const int rc = sus_run_tol(&cfg, w0, against_reference, &c, &rep);
@@ -197,6 +197,28 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
         "%s: 301 dense rows to t = 30 at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N TOL "
         "= %.3g",
         name, c.worst_R, c.worst_w, bound);
+}
+
+/* The step budget: with max_steps = 3 a run that needs more stops before step 4, at the time its
+ * third step ended, with the rows of the steps it took (row 0 and one a step) and the last step's
+ * length; a budget the run does not need changes nothing. */
+static void step_budget(const sus_model *m, const double w0[2], const char *name)
+{
+    rows_ctx all, cut;
+    sus_run_report rep_all, rep;
+    run(m, w0, 1e-10, 50.0, 0.0, &all, &rep_all);
+    cut = (rows_ctx){.m = m, .e0 = sus_energy(m, w0), .monotone = 1};
+    sus_tol_config cfg = {m, adaptive(), 1e-10, 50.0, 0.0, 3};
+    const int rc = sus_run_tol(&cfg, w0, take, &cut, &rep);
+    CHECK(all.last.k > 3 && rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT &&
+              rep.step == 4 && cut.rows == 4 && rep.t == cut.last.t && cut.last.t < 50.0 &&
+              rep.stats.det > 0.0,
+          "%s: a budget of 3 steps stops before step %ld at t = %.3g with %d rows (the run needs %ld)", name,
+          rep.step, rep.t, cut.rows, all.last.k);
+    cfg.max_steps = all.last.k;
+    const int rc_enough = sus_run_tol(&cfg, w0, take, &cut, &rep);
+    CHECK(rc_enough == SUS_RUN_OK && rep.status == SUS_STEPPER_OK,
+          "%s: a budget of exactly the %ld steps the run needs ends it normally", name, all.last.k);
 }
 
 /* The estimate against the true local error of a first accepted step (closed-form w, long-double
@@ -234,19 +256,19 @@ static void estimate_vs_truth(const sus_model *m, const double w0[2], const char
           name, lo, hi);
 }
 
-/* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 1
- * in [6, 20]. */
+/* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 3
+ * in [6, 20] (Jorba and Zou's -ln(TOL)/2 + 1, shifted by the step's fixed cost). */
 static void order_rule(void)
 {
     const sus_tol_ops *ops = adaptive()->tol;
     int ok = 1;
     for (double tol = 0.5; tol > 1e-16; tol *= 0.3) {
         int p = 6;
-        while (p < 20 && p < -0.5 * log(tol) + 1.0) p += 2;
+        while (p < 20 && p < -0.5 * log(tol) + 3.0) p += 2;
         ok &= ops->order(tol) == p;
     }
-    CHECK(ok && ops->order(1e-10) == 14 && ops->order(1e-4) == 6 && ops->order(DBL_EPSILON) == 20,
-          "the order is the smallest even p >= -ln(TOL)/2 + 1 in [6, 20] (1e-10: %d)", ops->order(1e-10));
+    CHECK(ok && ops->order(1e-10) == 16 && ops->order(1e-4) == 8 && ops->order(DBL_EPSILON) == 20,
+          "the order is the smallest even p >= -ln(TOL)/2 + 3 in [6, 20] (1e-10: %d)", ops->order(1e-10));
 }
 
 int main(void)
@@ -270,6 +292,7 @@ int main(void)
         rows_and_structure(&m, b.w0, b.name);
         dense_accuracy(&m, b.w0, b.name);
         estimate_vs_truth(&m, b.w0, b.name);
+        step_budget(&m, b.w0, b.name);
     }
     return check_summary("test_taylor_adaptive");
 }
