@@ -12,6 +12,7 @@ typedef struct {
     sus_row row; /* the state at the end of the last accepted step */
     sus_attitude att;
     long next_out; /* the next output time is next_out * every_time */
+    double h_last; /* the last accepted step */
 } tol_run;
 
 static int fail(tol_run *r, sus_run_report *report, int rc, long step, double t, const sus_stepper_stats *st)
@@ -65,7 +66,11 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
     int rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);
     while (rc == SUS_RUN_OK && r.row.t < cfg->t_end) {
         const double t0 = r.row.t;
-        sus_stepper_stats st;
+        sus_stepper_stats st = {.det = r.h_last};
+        if (cfg->max_steps > 0 && r.row.k >= cfg->max_steps) { /* the budget is spent short of t_end */
+            report->status = SUS_STEPPER_STEP_LIMIT;
+            return fail(&r, report, SUS_RUN_STEP_FAILED, r.row.k + 1, t0, &st);
+        }
         const int status = r.ops->step(r.wk, cfg->t_end, &r.row.t, r.row.w, &r.row.lambda, &r.att, &st);
         report->sus_newton_iterations += st.iterations; /* here: the rejected tries */
         if (st.iterations > report->max_iterations) report->max_iterations = st.iterations;
@@ -74,6 +79,7 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
             return fail(&r, report, SUS_RUN_STEP_FAILED, r.row.k + 1, t0, &st);
         }
         r.row.k++;
+        r.h_last = r.row.t - t0;
         if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK) return rc;
         if (cfg->every_time <= 0.0 || r.row.t >= cfg->t_end)
             rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);

@@ -13,14 +13,17 @@
 /* SUS_STEPPER_REJECTED: a tolerance-driven step whose own error estimate stayed above the
  * tolerance through every retry, or whose step no longer advances t (the estimate in
  * stats.residual, the tolerance in stats.scale, the last step tried in stats.det, the tries in
- * stats.iterations). SUS_STEPPER_NO_MEMORY: its workspace could not be allocated. */
+ * stats.iterations). SUS_STEPPER_NO_MEMORY: its workspace could not be allocated.
+ * SUS_STEPPER_STEP_LIMIT: a tolerance-driven run took the most steps it was allowed
+ * (sus_tol_config.max_steps) short of its final time (the last step in stats.det). */
 enum {
     SUS_STEPPER_OK = 0,
     SUS_STEPPER_NO_CONVERGENCE = 1,
     SUS_STEPPER_SINGULAR = 2,
     SUS_STEPPER_DIVERGED = 3,
     SUS_STEPPER_REJECTED = 4,
-    SUS_STEPPER_NO_MEMORY = 5
+    SUS_STEPPER_NO_MEMORY = 5,
+    SUS_STEPPER_STEP_LIMIT = 6
 };
 
 typedef struct {

@@ -191,7 +191,7 @@ typedef struct {
 static void tol_fn(void *vctx)
 {
     tol_run *r = vctx;
-    const sus_tol_config cfg = {&model, r->st, r->tol, r->T, 0.0};
+    const sus_tol_config cfg = {&model, r->st, r->tol, r->T, r->T, 0}; /* one row: the end */
     r->rc = sus_run_tol(&cfg, ex.w0, sus_keep_last, &r->last, &r->rep);
     sink += r->last.w[0];
 }
@@ -829,7 +829,7 @@ static void long_run_ours(const wp_series *s, int j, lr_acc *a)
 {
     const sus_step_method *me = sus_step_method_by_name(s->method);
     if (s->tol_driven) {
-        const sus_tol_config tc = {&model, me->type, s->param[j], T_LONG, T_LONG / 1000.0};
+        const sus_tol_config tc = {&model, me->type, s->param[j], T_LONG, T_LONG / 1000.0, 0};
         sus_run_report rep;
         sus_run_tol(&tc, ex.w0, lr_emit, a, &rep);
         return;
@@ -978,7 +978,8 @@ static void print_equal_error_long(void)
 static void args_of(const wp_series *s, int j, char *buf, size_t len)
 {
     if (s->tol_driven) {
-        snprintf(buf, len, "--method %s --tol %.17g --time %.17g", s->method, s->param[j], T_END);
+        snprintf(buf, len, "--method %s --tol %.17g --time %.17g --every-time %.17g", s->method, s->param[j],
+                 T_END, T_END);
         return;
     }
     snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
@@ -992,7 +993,7 @@ static int reproduce(const char *suslov, const wp_series *s, int j, double *dw, 
     char args[256], cmd[4096], line[4096], last[4096] = "";
     args_of(s, j, args, sizeof args);
     snprintf(cmd, sizeof cmd, "%.3000s %.255s", suslov, args);
-    if (!s->tol_driven) /* one row: the last (a --tol run writes a row a step; the last is read) */
+    if (!s->tol_driven) /* one row: the last (a --tol run's comes from --every-time T) */
         snprintf(cmd + strlen(cmd), sizeof cmd - strlen(cmd), " --every %ld", s->steps[j]);
     FILE *p = popen(cmd, "r");
     if (!p)

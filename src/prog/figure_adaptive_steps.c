@@ -126,13 +126,13 @@ static int measure(const sus_model *m, const sus_stepper_type *type, int i, adap
     sus_run_report rep;
     f->s[i] = (steps_ctx){.m = m};
     f->order[i] = type->tol->order(TOLS[i]);
-    const sus_tol_config every_step = {m, type, TOLS[i], T_END, 0.0};
+    const sus_tol_config every_step = {m, type, TOLS[i], T_END, 0.0, 0};
     if (sus_run_tol(&every_step, SUS_PAPER_OMEGA0, take_step, &f->s[i], &rep) != SUS_RUN_OK) return -1;
     rows_ctx *r = &f->r[i];
     r->n = 0;
     sus_exact_init(&r->ex, m, SUS_PAPER_OMEGA0);
     sus_refatt_init(&r->ref, &r->ex, 0.0, I3);
-    const sus_tol_config rows = {m, type, TOLS[i], T_END, DT_ROWS};
+    const sus_tol_config rows = {m, type, TOLS[i], T_END, DT_ROWS, 0};
     return sus_run_tol(&rows, SUS_PAPER_OMEGA0, take_row, r, &rep) == SUS_RUN_OK && r->n == NROWS ? 0 : -1;
 }
 

@@ -85,11 +85,21 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
         snprintf(msg, len,
                  "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
                  rep->step, rep->t);
+    else if (rep->status == SUS_STEPPER_REJECTED && !isfinite(st->residual))
+        snprintf(msg, len,
+                 "step %ld (t = %.17g) failed: its error estimate was not a finite number (the series "
+                 "overflowed) after %d tries (last step tried %.3g)",
+                 rep->step, rep->t, st->iterations, st->det);
     else if (rep->status == SUS_STEPPER_REJECTED)
         snprintf(msg, len,
                  "step %ld (t = %.17g) failed: its error estimate %.3g stayed above --tol %.3g after %d "
                  "tries (last step tried %.3g)",
                  rep->step, rep->t, st->residual, st->scale, st->iterations, st->det);
+    else if (rep->status == SUS_STEPPER_STEP_LIMIT)
+        snprintf(msg, len,
+                 "stopped before step %ld at t = %.17g: a --tol run takes at most %ld steps (the last "
+                 "was %.3g long; a shorter --time or smaller --omega0 needs fewer)",
+                 rep->step, rep->t, SUSLOV_TOL_MAX_STEPS, st->det);
     else if (rep->status == SUS_STEPPER_NO_MEMORY)
         snprintf(msg, len, "step %ld (t = %.17g) failed: out of memory for the method's workspace", rep->step,
                  rep->t);
@@ -117,7 +127,8 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
 /* A tolerance-driven run: the driver hands over exactly the rows to write. */
 static int run_tol(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
 {
-    const sus_tol_config cfg = {&a->model, a->method->type, a->tol, a->t_end, a->every_time};
+    const sus_tol_config cfg = {&a->model, a->method->type, a->tol, a->t_end, a->every_time,
+                                SUSLOV_TOL_MAX_STEPS};
     *ctx = (csv_ctx){.fp = fp, .m = &a->model, .all = 1, .tick_mask = ~0u};
     const int rc = sus_run_tol(&cfg, a->w0, take_row, ctx, report);
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */

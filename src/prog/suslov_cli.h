@@ -22,6 +22,10 @@ typedef struct {
     sus_model model;
 } suslov_args;
 
+/* The step budget of a --tol run (sus_tol_config.max_steps): its step count is known only as it
+ * runs and grows with |w0| T, so input such as |w0| = 1e150 would otherwise run for ages. */
+#define SUSLOV_TOL_MAX_STEPS 1000000L
+
 /* Parses and checks everything that can be checked before the run (bad input: one line, exit
  * 2); --help, --version, --man and --method list print and exit 0 (1 if stdout fails). */
 void suslov_cli_parse(suslov_args *a, int argc, char **argv);
