@@ -57,7 +57,8 @@ FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/qua
          "src/methods/step_euler.c", "src/methods/step_midpoint.c", "src/methods/step_variational.c",
          "src/methods/step_rk4.c", "src/methods/step_composition.c", "src/methods/composition.c",
          "src/methods/composition_coeffs.c", "src/methods/step_taylor.c", "src/methods/taylor.h",
-         "src/core/driver.c", "src/methods/step_gauss4.c"]
+         "src/core/driver.c", "src/methods/step_gauss4.c", "src/methods/taylor_series.h",
+         "src/core/so3_trig.c", "src/methods/step_taylor_adaptive.c", "src/core/driver_tol.c"]
 
 TOKEN = re.compile(r"""
     (?P<ws>\s+)

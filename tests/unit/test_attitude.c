@@ -6,6 +6,7 @@
 #include "quaternion.h"
 #include "reconstruct.h"
 
+#include <math.h>
 #include <string.h>
 
 static void identity_checks(void)
@@ -26,8 +27,31 @@ static void identity_checks(void)
           q[1], q[2], q[3], a.has_q);
 }
 
+/* R = hi + lo (reconstruct.h): lo holds the compensated sum's low parts. Here each is a few
+ * ulps of its hi entry, so that hi + lo and hi - lo are exact and differ: sus_attitude_get must
+ * return hi + lo bit for bit. */
+static void sum_checks(void)
+{
+    sus_attitude a;
+    sus_attitude_identity(&a);
+    a.has_q = 0;
+    int off = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            a.hi[i][j] = (i == j) ? 0.75 : 0.5 - 0.25 * j;
+            a.lo[i][j] = ldexp(1.0 + i + 3 * j, -52);  /* nine different small parts */
+        }
+    double R[3][3];
+    sus_attitude_get(&a, R);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            off += R[i][j] != a.hi[i][j] + a.lo[i][j];
+    CHECK(off == 0, "R = hi + lo, entry by entry (%d entries off)", off);
+}
+
 int main(void)
 {
     identity_checks();
+    sum_checks();
     return check_summary("test_attitude");
 }
