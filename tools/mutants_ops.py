@@ -147,6 +147,14 @@ def index_mutants(toks, i, types):
     if stmt and (stmt[0][1] in TYPES or stmt[0][1] in types) and not any(t[1] == "=" for t in stmt):
         if toks[k][1] != "(" or any(t[1] in TYPES or t[1] in types for t in stmt):
             return None
+    if toks[k][1] == ",":  # a later declarator of a declaration (double xi[3], D[3][3];) is none either
+        depth = 0
+        while k >= 0 and not (depth == 0 and toks[k][1] in (";", "{", "}", "(", "[")):
+            depth += toks[k][1] in (")", "]")
+            depth -= toks[k][1] in ("(", "[")
+            k -= 1
+        if (k < 0 or toks[k][1] in (";", "{", "}")) and (toks[k + 1][1] in TYPES or toks[k + 1][1] in types):
+            return None
     return toks[j][2]
 
 
