@@ -23,8 +23,10 @@ the tests that have killed most of this file's mutants so far first, then test_m
 test_guards, the
 other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
 each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
-the unmutated tree's own failures kills the mutant. A header's mutant first meets the unit tests
-that call its inline functions, compiled with it; if they do not kill it, make rebuilds the tree.
+the unmutated tree's own failures kills the mutant. A header that no test includes is compiled
+into its library includers, swapped in as a .c file's object; any other header's mutant first meets
+the unit tests that call its inline functions, compiled with it; if they do not kill it, make
+rebuilds the tree.
 Each verdict is appended to --log as it comes, so a campaign cut short resumes (--resume); the
 result file is written from the log, and a survivor listed in tests/build/mutants_equivalent (with
 a proof) counts there as equivalent.
@@ -330,6 +332,23 @@ class Scratch:
                 return killer
         return None
 
+    def includers(self, header):
+        """The library's .c files (below src/prog) that include header, directly or through other
+        headers; None when a test or a program includes it too (then make rebuilds them all)."""
+        files = glob.glob("src/*/*.[ch]", root_dir=self.dir) + glob.glob("tests/*/*.[ch]", root_dir=self.dir)
+        texts = {f: open(os.path.join(self.dir, f)).read() for f in files}
+        names = {os.path.basename(header)}
+
+        def includes(t):
+            return any('#include "%s"' % n in t for n in names)
+        while True:
+            new = {os.path.basename(f) for f, t in texts.items() if f.endswith(".h") and includes(t)} - names
+            if not new:
+                break
+            names |= new
+        users = sorted(f for f, t in texts.items() if f.endswith(".c") and includes(t))
+        return None if any(not u.startswith("src/") or u.startswith("src/prog/") for u in users) else users
+
     def header_quick(self, path):
         """A header's mutant against the unit tests that call its inline functions themselves:
         each is compiled with the mutated header into a program of its own (the library keeps
@@ -385,9 +404,44 @@ def label_of(mut, text):
     return "%s:%d %s: %s  ->  %s" % (path, line, kind, orig, new), orig, new
 
 
+def run_header_fast(sc, mut, texts, ref_objs, users):
+    """A header's mutant when no test program includes it: its includers in the library are
+    compiled with it and swapped into their archives, as a .c file's mutant (no make)."""
+    path, off, length, rep, kind = mut
+    text = texts[path]
+    target = os.path.join(sc.dir, path)
+    with open(target, "w") as f:
+        f.write(text[:off] + rep + text[off + length:])
+    try:
+        objs, warning = {}, ""
+        for c in users:
+            objs[c] = sc.object(c)
+            if objs[c] is None:
+                return "did-not-build", "does not compile (%s)" % c
+            warning = warning or sc.warning
+        if all(objs[c] == ref_objs[c] for c in users):
+            return "equivalent", "same object code of every includer (cc -O2 -g0)"
+        if warning:
+            return "killed", "cc -Werror (WERROR=1, as CI builds): " + warning[:80]
+        if not all(sc.archive(c, objs[c]) for c in users):
+            return "did-not-build", "does not link"
+        killer = sc.run_tests(path)
+        if killer == "":
+            return "did-not-build", "does not link"
+        return ("killed", killer) if killer else ("survived", "")
+    finally:
+        with open(target, "w") as f:
+            f.write(text)
+        for c in users:
+            sc.archive(c, ref_objs[c])
+
+
 def run_one(sc, mut, texts, ref_objs):
     """verdict ("killed", "survived", "equivalent", "did-not-build") and why, for one mutant."""
     path, off, length, rep, kind = mut
+    users = None if path.endswith(".c") else sc.includers(path)
+    if users:
+        return run_header_fast(sc, mut, texts, ref_objs, users)
     text = texts[path]
     target = os.path.join(sc.dir, path)
     with open(target, "w") as f:
@@ -488,6 +542,8 @@ def campaign(a, sc, todo, texts, labels, muts):
         return 2
     sc.setup_tests()
     ref = {p: sc.object(p) for p in a.files}
+    for h in [p for p in a.files if not p.endswith(".c")]:
+        ref.update({c: sc.object(c) for c in sc.includers(h) or [] if c not in ref})
     for p, obj in ref.items():
         if obj:
             sc.archive(p, obj)
