@@ -19,8 +19,8 @@ the build that CI runs (WERROR=1): -fsanitize=bounds checks only arrays whose bo
 so an index -1 into an array parameter (a pointer) reaches no check, but cc's -Warray-bounds sees
 it. Otherwise the object replaces the original in its
 layer's archive and the tests run, each program relinked just before it runs, in fast-fail order:
-the tests that have killed most of this file's mutants so far first, then test_mutant_kills and
-test_guards, the
+the tests that have killed most of this file's mutants per second of their run time first, then
+test_mutant_kills and test_guards, the
 other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
 each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
 the unmutated tree's own failures kills the mutant. A header that no test includes is compiled
@@ -321,8 +321,11 @@ class Scratch:
 
     def run_tests(self, path, relink=True):
         """The first test that fails beyond the baseline, or None; "" when a program does not link.
-        The tests that have killed most of this file's mutants so far run first."""
-        order = sorted(range(len(self.tests)), key=lambda i: -self.kills.get((path, self.tests[i][0]), 0))
+        The tests that have killed most of this file's mutants per second of run time run first."""
+        # by kills per second of run time (a kill counted one more: a quick test that has killed
+        # nothing yet still runs before the ledger, which one kill would otherwise put first)
+        order = sorted(range(len(self.tests)),
+                       key=lambda i: -(1 + self.kills.get((path, self.tests[i][0]), 0)) / max(self.tests[i][5], 0.05))
         for i in order:
             name, cmd, links, secs, base, _ = self.tests[i]
             if relink and any(self.sh(l).returncode for l in links):
