@@ -239,8 +239,8 @@ class Scratch:
         self.warning = ""  # the first warning the last object() drew
         # a test program is relinked for every mutant it meets: gold links it 4-5 times faster than
         # the default ld.bfd (measured), so use it where cc has it
-        self.fast_ld = ["-fuse-ld=gold"] if subprocess.run(
-            ["cc", "-fuse-ld=gold", "-Wl,--version", "-o", os.devnull], capture_output=True).returncode == 0 else []
+        gold = subprocess.run(["cc", "-fuse-ld=gold", "-Wl,--version", "-o", os.devnull], capture_output=True)
+        self.fast_ld = ["-fuse-ld=gold"] if gold.returncode == 0 else []
 
     def sh(self, args, timeout=None):
         return subprocess.run(args, cwd=self.dir, env=self.env, capture_output=True, text=True,
@@ -273,7 +273,8 @@ class Scratch:
         r = self.sh(cmd)
         if r.returncode != 0:
             return None
-        self.warning = next((l.split("warning: ", 1)[1] for l in r.stderr.splitlines() if "warning: " in l), "")
+        warnings = [l.split("warning: ", 1)[1] for l in r.stderr.splitlines() if "warning: " in l]
+        self.warning = warnings[0] if warnings else ""
         with open(os.path.join(self.dir, self.obj_path(src)), "rb") as f:
             return f.read()
 
@@ -324,8 +325,9 @@ class Scratch:
         The tests that have killed most of this file's mutants per second of run time run first."""
         # by kills per second of run time (a kill counted one more: a quick test that has killed
         # nothing yet still runs before the ledger, which one kill would otherwise put first)
-        order = sorted(range(len(self.tests)),
-                       key=lambda i: -(1 + self.kills.get((path, self.tests[i][0]), 0)) / max(self.tests[i][5], 0.05))
+        def rate(i):
+            return (1 + self.kills.get((path, self.tests[i][0]), 0)) / max(self.tests[i][5], 0.05)
+        order = sorted(range(len(self.tests)), key=lambda i: -rate(i))
         for i in order:
             name, cmd, links, secs, base, _ = self.tests[i]
             if relink and any(self.sh(l).returncode for l in links):
