@@ -49,8 +49,62 @@ static void sum_checks(void)
     CHECK(off == 0, "R = hi + lo, entry by entry (%d entries off)", off);
 }
 
+/* |q|^2 R(q/|q|) in the homogeneous form: a q off unit length gives a matrix off the rotation. */
+static void rot_of(const double q[4], double R[3][3])
+{
+    const double s = q[0], x = q[1], y = q[2], z = q[3];
+    const double M[3][3] = {{s * s + x * x - y * y - z * z, 2 * (x * y - s * z), 2 * (x * z + s * y)},
+                            {2 * (x * y + s * z), s * s - x * x + y * y - z * z, 2 * (y * z - s * x)},
+                            {2 * (x * z - s * y), 2 * (y * z + s * x), s * s - x * x - y * y + z * z}};
+    memcpy(R, M, sizeof M);
+}
+
+/* tau(xi) by its closed form: (cay) I + 4/(4 + |xi|^2) (X + X^2/2), or Rodrigues for exp, X = xi^. */
+static void tau_of(sus_recon kind, const double xi[3], double T[3][3])
+{
+    const double X[3][3] = {{0, -xi[2], xi[1]}, {xi[2], 0, -xi[0]}, {-xi[1], xi[0], 0}};
+    const double n2 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2], th = sqrt(n2);
+    const double a = kind == SUS_RECON_EXP_MID ? sin(th) / th : 4.0 / (4.0 + n2);
+    const double b = kind == SUS_RECON_EXP_MID ? (1.0 - cos(th)) / n2 : 2.0 / (4.0 + n2);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const double X2 = X[i][0] * X[0][j] + X[i][1] * X[1][j] + X[i][2] * X[2][j];
+            T[i][j] = (i == j) + a * X[i][j] + b * X2;
+        }
+}
+
+/* (algo), step 3, on a quaternion: R(q_{k+1}) = R(q_k) tau(xi), xi = eps w_k (cayley) or
+ * eps (w_k + w_{k+1})/2, for general w (w3 != 0 too) and a general unit q_k. The bound, 1e-13
+ * (450 u), is far above the rounding of a few dozen operations on entries of size 1. */
+static void quat_step_checks(void)
+{
+    const double w[3] = {0.3, -0.7, 0.45}, wn[3] = {-0.2, 0.55, 0.1}, eps[2] = {0.1, 1.3};
+    for (int k = 0; k < SUS_RECON_COUNT; k++)
+        for (int e = 0; e < 2; e++) {
+            double q[4] = {0.6, -0.3, 0.5, 0.2}, xi[3], R0[3][3], R1[3][3], T[3][3];
+            const double nq = sqrt(0.74);
+            for (int i = 0; i < 4; i++)
+                q[i] /= nq;
+            rot_of(q, R0);
+            sus_reconstruct_quat((sus_recon)k, eps[e], q, w, wn);
+            rot_of(q, R1);
+            for (int i = 0; i < 3; i++)
+                xi[i] = k == SUS_RECON_CAYLEY ? eps[e] * w[i] : 0.5 * eps[e] * (w[i] + wn[i]);
+            tau_of((sus_recon)k, xi, T);
+            double err = 0.0;
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) {
+                    const double RT = R0[i][0] * T[0][j] + R0[i][1] * T[1][j] + R0[i][2] * T[2][j];
+                    err = fmax(err, fabs(R1[i][j] - RT));
+                }
+            CHECK(err <= 1e-13, "%s, eps %g: R(q_{k+1}) = R(q_k) tau(xi) to %.1e (bound 1e-13)",
+                  SUS_RECON_NAMES[k], eps[e], err);
+        }
+}
+
 int main(void)
 {
+    quat_step_checks();
     identity_checks();
     sum_checks();
     return check_summary("test_attitude");
