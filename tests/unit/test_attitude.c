@@ -102,8 +102,23 @@ static void quat_step_checks(void)
         }
 }
 
+/* --reconstruct NAME: each listed name finds its own kind, and a name not listed none. */
+static void name_checks(void)
+{
+    int found = 0;
+    for (int k = 0; k < SUS_RECON_COUNT; k++) {
+        sus_recon kind = SUS_RECON_COUNT;
+        found += sus_recon_by_name(SUS_RECON_NAMES[k], &kind) == 0 && kind == (sus_recon)k;
+    }
+    sus_recon kind;
+    CHECK(found == SUS_RECON_COUNT && sus_recon_by_name("cayley-end", &kind) == -1,
+          "each of the %d reconstruction names finds its kind (%d do), an unlisted name none", SUS_RECON_COUNT,
+          found);
+}
+
 int main(void)
 {
+    name_checks();
     quat_step_checks();
     identity_checks();
     sum_checks();
