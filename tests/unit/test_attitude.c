@@ -112,8 +112,8 @@ static void name_checks(void)
     }
     sus_recon kind;
     CHECK(found == SUS_RECON_COUNT && sus_recon_by_name("cayley-end", &kind) == -1,
-          "each of the %d reconstruction names finds its kind (%d do), an unlisted name none", SUS_RECON_COUNT,
-          found);
+          "each of the %d reconstruction names finds its kind (%d do), an unlisted name none",
+          SUS_RECON_COUNT, found);
 }
 
 int main(void)
