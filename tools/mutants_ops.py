@@ -14,19 +14,24 @@ declarator; a mutant that does not compile is counted as did-not-build, never as
 Each mutant is applied to a scratch copy of the tree, built once with CFLAGS=-O2 -g0 and array
 bounds checked (-fsanitize=bounds, as in SAN=1). The mutated
 file alone is compiled (with the Makefile's flags) to its object: identical machine code is a proof
-of equivalence (reason "same object code"). Otherwise the object replaces the original in its
+of equivalence (reason "same object code"). A mutant that draws a compiler warning is killed by
+the build that CI runs (WERROR=1): -fsanitize=bounds checks only arrays whose bound the type holds,
+so an index -1 into an array parameter (a pointer) reaches no check, but cc's -Warray-bounds sees
+it. Otherwise the object replaces the original in its
 layer's archive and the tests run, each program relinked just before it runs, in fast-fail order:
-the tests that have killed most of this file's mutants so far first, then test_mutant_kills and
-test_guards, the
+the tests that have killed most of this file's mutants per second of their run time first, then
+test_mutant_kills and test_guards, the
 other unit tests quickest first, the CLI value tests, the claims ledger, the CLI interface tests;
 each test has a timeout (a mutant that hangs is killed by it). The first test that fails beyond
-the unmutated tree's own failures kills the mutant. A header's mutant first meets the unit tests
-that call its inline functions, compiled with it; if they do not kill it, make rebuilds the tree.
+the unmutated tree's own failures kills the mutant. A header that no test includes is compiled
+into its library includers, swapped in as a .c file's object; any other header's mutant first meets
+the unit tests that call its inline functions, compiled with it; if they do not kill it, make
+rebuilds the tree.
 Each verdict is appended to --log as it comes, so a campaign cut short resumes (--resume); the
 result file is written from the log, and a survivor listed in tests/build/mutants_equivalent (with
 a proof) counts there as equivalent.
 
-Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume]]
+Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume [--new-only]]]
        [--survivors | --only TEXT] [--summarize [--note TEXT]] [--list]
 Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X,
 round-off survivors R" (S counts only the survivors neither list explains).
@@ -54,7 +59,8 @@ FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/qua
          "src/methods/step_euler.c", "src/methods/step_midpoint.c", "src/methods/step_variational.c",
          "src/methods/step_rk4.c", "src/methods/step_composition.c", "src/methods/composition.c",
          "src/methods/composition_coeffs.c", "src/methods/step_taylor.c", "src/methods/taylor.h",
-         "src/core/driver.c", "src/methods/step_gauss4.c"]
+         "src/core/driver.c", "src/methods/step_gauss4.c", "src/methods/taylor_series.h",
+         "src/core/so3_trig.c", "src/methods/step_taylor_adaptive.c", "src/core/driver_tol.c"]
 
 TOKEN = re.compile(r"""
     (?P<ws>\s+)
@@ -143,6 +149,14 @@ def index_mutants(toks, i, types):
     if stmt and (stmt[0][1] in TYPES or stmt[0][1] in types) and not any(t[1] == "=" for t in stmt):
         if toks[k][1] != "(" or any(t[1] in TYPES or t[1] in types for t in stmt):
             return None
+    if toks[k][1] == ",":  # a later declarator of a declaration (double xi[3], D[3][3];) is none either
+        depth = 0
+        while k >= 0 and not (depth == 0 and toks[k][1] in (";", "{", "}", "(", "[")):
+            depth += toks[k][1] in (")", "]")
+            depth -= toks[k][1] in ("(", "[")
+            k -= 1
+        if (k < 0 or toks[k][1] in (";", "{", "}")) and (toks[k + 1][1] in TYPES or toks[k + 1][1] in types):
+            return None
     return toks[j][2]
 
 
@@ -212,6 +226,9 @@ class Scratch:
             shutil.copy(cfg, os.path.join(self.dir, "data"))
         self.env = {k: v for k, v in os.environ.items()
                     if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "SAN", "BUILD", "CFLAGS")}
+        # the build is sanitized (BOUNDS): test_cli.sh then leaves out its address-space limit check,
+        # which a sanitizer's shadow reservations exceed, as under SAN=1
+        self.env["SUSLOV_SAN"] = "1"
         self.b = "build/mut"
         pkg = ["pkg-config", "--cflags", "gsl", "cairo", "osmesa"]
         self.pkg_cflags = subprocess.run(pkg, capture_output=True, text=True).stdout.split()
@@ -219,6 +236,11 @@ class Scratch:
         self.pkg_libs = subprocess.run(pkg, capture_output=True, text=True).stdout.split()
         self.tests = []
         self.kills = {}  # (file, test name) -> kills so far: a file's best killers run first
+        self.warning = ""  # the first warning the last object() drew
+        # a test program is relinked for every mutant it meets: gold links it 4-5 times faster than
+        # the default ld.bfd (measured), so use it where cc has it
+        gold = subprocess.run(["cc", "-fuse-ld=gold", "-Wl,--version", "-o", os.devnull], capture_output=True)
+        self.fast_ld = ["-fuse-ld=gold"] if gold.returncode == 0 else []
 
     def sh(self, args, timeout=None):
         return subprocess.run(args, cwd=self.dir, env=self.env, capture_output=True, text=True,
@@ -246,10 +268,13 @@ class Scratch:
             return b""
         layer = src.split("/")[1]
         inc = ["-Isrc/" + d for d in LAYERS[:LAYERS.index(layer) + 1]]
-        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-O2", "-g0"] + \
-            BOUNDS.split() + inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
-        if self.sh(cmd).returncode != 0:
+        cmd = ["cc", "-std=c17", "-Wall", "-Wextra", "-Wshadow", "-Wstrict-prototypes", "-ffp-contract=off",
+               "-O2", "-g0"] + BOUNDS.split() + inc + self.pkg_cflags + ["-c", src, "-o", self.obj_path(src)]
+        r = self.sh(cmd)
+        if r.returncode != 0:
             return None
+        warnings = [l.split("warning: ", 1)[1] for l in r.stderr.splitlines() if "warning: " in l]
+        self.warning = warnings[0] if warnings else ""
         with open(os.path.join(self.dir, self.obj_path(src)), "rb") as f:
             return f.read()
 
@@ -271,7 +296,7 @@ class Scratch:
                           for f in os.listdir(os.path.join(self.dir, "tests", "ledger")) if f.endswith(".c"))
         else:
             objs = ["%s/obj/prog/%s.o" % (b, os.path.basename(prog))]
-        return ["cc", BOUNDS.split()[0]] + objs + libs + self.pkg_libs + ["-lm", "-o", prog]
+        return ["cc"] + self.fast_ld + [BOUNDS.split()[0]] + objs + libs + self.pkg_libs + ["-lm", "-o", prog]
 
     def setup_tests(self):
         """The test commands, quick unit tests first; each with a timeout from its own run time."""
@@ -297,8 +322,12 @@ class Scratch:
 
     def run_tests(self, path, relink=True):
         """The first test that fails beyond the baseline, or None; "" when a program does not link.
-        The tests that have killed most of this file's mutants so far run first."""
-        order = sorted(range(len(self.tests)), key=lambda i: -self.kills.get((path, self.tests[i][0]), 0))
+        The tests that have killed most of this file's mutants per second of run time run first."""
+        # by kills per second of run time (a kill counted one more: a quick test that has killed
+        # nothing yet still runs before the ledger, which one kill would otherwise put first)
+        def rate(i):
+            return (1 + self.kills.get((path, self.tests[i][0]), 0)) / max(self.tests[i][5], 0.05)
+        order = sorted(range(len(self.tests)), key=lambda i: -rate(i))
         for i in order:
             name, cmd, links, secs, base, _ = self.tests[i]
             if relink and any(self.sh(l).returncode for l in links):
@@ -307,6 +336,23 @@ class Scratch:
             if killer:
                 return killer
         return None
+
+    def includers(self, header):
+        """The library's .c files (below src/prog) that include header, directly or through other
+        headers; None when a test or a program includes it too (then make rebuilds them all)."""
+        files = glob.glob("src/*/*.[ch]", root_dir=self.dir) + glob.glob("tests/*/*.[ch]", root_dir=self.dir)
+        texts = {f: open(os.path.join(self.dir, f)).read() for f in files}
+        names = {os.path.basename(header)}
+
+        def includes(t):
+            return any('#include "%s"' % n in t for n in names)
+        while True:
+            new = {os.path.basename(f) for f, t in texts.items() if f.endswith(".h") and includes(t)} - names
+            if not new:
+                break
+            names |= new
+        users = sorted(f for f, t in texts.items() if f.endswith(".c") and includes(t))
+        return None if any(not u.startswith("src/") or u.startswith("src/prog/") for u in users) else users
 
     def header_quick(self, path):
         """A header's mutant against the unit tests that call its inline functions themselves:
@@ -363,9 +409,44 @@ def label_of(mut, text):
     return "%s:%d %s: %s  ->  %s" % (path, line, kind, orig, new), orig, new
 
 
+def run_header_fast(sc, mut, texts, ref_objs, users):
+    """A header's mutant when no test program includes it: its includers in the library are
+    compiled with it and swapped into their archives, as a .c file's mutant (no make)."""
+    path, off, length, rep, kind = mut
+    text = texts[path]
+    target = os.path.join(sc.dir, path)
+    with open(target, "w") as f:
+        f.write(text[:off] + rep + text[off + length:])
+    try:
+        objs, warning = {}, ""
+        for c in users:
+            objs[c] = sc.object(c)
+            if objs[c] is None:
+                return "did-not-build", "does not compile (%s)" % c
+            warning = warning or sc.warning
+        if all(objs[c] == ref_objs[c] for c in users):
+            return "equivalent", "same object code of every includer (cc -O2 -g0)"
+        if warning:
+            return "killed", "cc -Werror (WERROR=1, as CI builds): " + warning[:80]
+        if not all(sc.archive(c, objs[c]) for c in users):
+            return "did-not-build", "does not link"
+        killer = sc.run_tests(path)
+        if killer == "":
+            return "did-not-build", "does not link"
+        return ("killed", killer) if killer else ("survived", "")
+    finally:
+        with open(target, "w") as f:
+            f.write(text)
+        for c in users:
+            sc.archive(c, ref_objs[c])
+
+
 def run_one(sc, mut, texts, ref_objs):
     """verdict ("killed", "survived", "equivalent", "did-not-build") and why, for one mutant."""
     path, off, length, rep, kind = mut
+    users = None if path.endswith(".c") else sc.includers(path)
+    if users:
+        return run_header_fast(sc, mut, texts, ref_objs, users)
     text = texts[path]
     target = os.path.join(sc.dir, path)
     with open(target, "w") as f:
@@ -382,6 +463,8 @@ def run_one(sc, mut, texts, ref_objs):
             return "did-not-build", "does not compile"
         if obj and obj == ref_objs[path]:
             return "equivalent", "same object code (cc -O2 -g0)"
+        if obj and sc.warning:  # e.g. an index -1 into an array parameter, which BOUNDS cannot check
+            return "killed", "cc -Werror (WERROR=1, as CI builds): " + sc.warning[:80]
         if (header and not sc.build()) or (not header and not sc.archive(path, obj)):
             return "did-not-build", "does not link"
         killer = sc.run_tests(path, relink=not header)
@@ -406,6 +489,8 @@ def main():
     ap.add_argument("--log", default="", help="one line per mutant run, appended as it finishes")
     ap.add_argument("--resume", action="store_true", help="skip the mutants the log holds, but survivors")
     ap.add_argument("--survivors", action="store_true", help="run only the survivors the log holds")
+    ap.add_argument("--new-only", action="store_true", help="with --resume: run only mutants the log lacks "
+                    "(its survivors wait for a --survivors run, once their tests are written)")
     ap.add_argument("--only", default="", help="run only the mutants whose label holds this text")
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
     ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
@@ -433,6 +518,7 @@ def main():
     # a survivor runs again on resume: a test may have been added for it since
     todo = [m for m, l in zip(muts, labels)
             if (a.only in l if a.only else done.get(l, ("survived",))[0] == "survived")
+            and not (a.new_only and l in done)
             and (not a.survivors or done.get(l, ("",))[0] == "survived")]
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # so that the scratch copy goes too
     sc = Scratch(os.getcwd())
@@ -461,6 +547,8 @@ def campaign(a, sc, todo, texts, labels, muts):
         return 2
     sc.setup_tests()
     ref = {p: sc.object(p) for p in a.files}
+    for h in [p for p in a.files if not p.endswith(".c")]:
+        ref.update({c: sc.object(c) for c in sc.includers(h) or [] if c not in ref})
     for p, obj in ref.items():
         if obj:
             sc.archive(p, obj)
