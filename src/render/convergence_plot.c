@@ -19,6 +19,8 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 /* Three rows of panels at the page's figure scale; the caption says what is local and global. */
 #define CONV_W 560.0
 #define CONV_H 620.0
+/* The reference slopes span this many halvings of eps, so that their labels keep apart. */
+#define FAN_STEPS 3
 
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
@@ -71,7 +73,7 @@ static double frac_log(double v, double a, double b) { return (log10(v) - log10(
 /* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
  * above every curve in their eps range and the legend (lower right, at most LEGEND_SPAN of the
  * width) sits under every curve it covers: neither may hide a curve. */
-#define LEGEND_SPAN 0.65
+#define LEGEND_SPAN 0.66
 static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int what, int idx,
                       const double *eps, int nj, double lo, double hi, double top, const int *slopes,
                       int nslopes, int legend_rows)
@@ -79,15 +81,15 @@ static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f
     int smax = 0;
     for (int s = 0; s < nslopes; s++)
         smax = slopes[s] > smax ? slopes[s] : smax;
-    const double xa = f->c.eps[f->spec->slope_j + 2], xb = f->c.eps[f->spec->slope_j];
+    const double xa = f->c.eps[f->spec->slope_j + FAN_STEPS], xb = f->c.eps[f->spec->slope_j];
     const double fan_data = extreme_in(f, what, eps, nj, xa, xb, 1);
-    for (int it = 0; it < 12; it++) {
+    for (int it = 0; it < 40; it++) {
         sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[f->j0], lo, hi, 1,
                            1);
         const double fan_low = ax->y1 * top * f->spec->slope_drop * pow(xa / xb, smax);
-        const int fan_ok = nslopes == 0 || fan_data <= 0.5 * fan_low;
-        /* the legend's top edge as a fraction of the height, with a point's marker of room */
-        const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 6.0) / ax->h;
+        const int fan_ok = nslopes == 0 || fan_data <= 0.03 * fan_low; /* room for the labels */
+        /* the legend's top edge as a fraction of the height, with a marker of room */
+        const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
         const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - LEGEND_SPAN) * (log10(ax->x1) - log10(ax->x0)));
         const double under = extreme_in(f, what, eps, nj, x_leg, INFINITY, 0);
         const int leg_ok = !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
@@ -170,7 +172,7 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     for (int s = 0; s < nslopes; s++) {
         char lab[8];
         snprintf(lab, sizeof lab, "%d", slopes[s]);
-        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j],
+        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + FAN_STEPS], f->c.eps[f->spec->slope_j],
                    ax.y1 * top * f->spec->slope_drop, slopes[s], lab);
     }
     sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
