@@ -71,7 +71,7 @@ static double extreme_in(const sus_plot_conv_fig *f, int what, const double *eps
 static double frac_log(double v, double a, double b) { return (log10(v) - log10(a)) / (log10(b) - log10(a)); }
 
 /* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
- * above every curve in their eps range and the legend (lower right, at most LEGEND_SPAN of the
+ * above every curve in their eps range and a lower-right legend (at most LEGEND_SPAN of the
  * width) sits under every curve it covers: neither may hide a curve. */
 #define LEGEND_SPAN 0.66
 static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int what, int idx,
@@ -92,7 +92,8 @@ static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f
         const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
         const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - LEGEND_SPAN) * (log10(ax->x1) - log10(ax->x0)));
         const double under = extreme_in(f, what, eps, nj, x_leg, INFINITY, 0);
-        const int leg_ok = !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
+        const int leg_ok =
+            f->spec->legend_corner != 3 || !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
         if (fan_ok && leg_ok)
             return;
         if (!fan_ok)
