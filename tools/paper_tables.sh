@@ -2,7 +2,9 @@
 # The companion's three tables from the team's TSV files (fields are LaTeX text, math in $...$):
 # paper/findings.tsv (one row per independent finding, with the ledger lines it rests on),
 # paper/errata.tsv (for the authors) and paper/not_tested.tsv, plus the counts of findings by
-# verdict as macros (\FindingsCount, \FindingsReproduced, \FindingsErratum, \FindingsNotReproduced).
+# verdict as macros (\FindingsCount, \FindingsReproduced, \FindingsErratum, \FindingsNotReproduced,
+# \FindingsExtension: a statement the paper promises but does not make, supplied by us;
+# \FindingsByDefinition: a statement that holds by a definition, measured as an implementation check).
 # It also writes conclusions.tex (each claim of the Conclusions, paper/conclusions.tsv, with the
 # verdicts of its ledger lines) and summary_ordered.tex: the ledger's summary (Table 1) with its
 # rows in the paper's order, the order of the first paper label each row cites in labels.tsv.
@@ -27,8 +29,16 @@ awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $6 != "") eid[$6] = $1; next }
 printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
-    printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"] }' \
+    printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"]
+    printf "\\newcommand{\\FindingsExtension}{%d}\n", c["extension"]
+    printf "\\newcommand{\\FindingsByDefinition}{%d}\n", c["by definition"] }' \
     paper/findings.tsv >"$O/findings_counts.tex"
+# Every ledger line that tests the paper (verdict other than extension) rests under a finding,
+# and every line a finding names exists: a line left out of Table 1 fails the build.
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1) { n = split($4, a, " "); for (i = 1; i <= n; i++) f[a[i]] = 1 }; next }
+    FNR > 1 { seen[$1] = 1; if ($7 != "extension" && !($1 in f)) { print "paper_tables: ledger line " $1 " is in no finding of paper/findings.tsv" > "/dev/stderr"; bad = 1 } }
+    END { for (i in f) if (!(i in seen)) { print "paper_tables: finding names " i ", not a ledger line" > "/dev/stderr"; bad = 1 }
+          exit bad }' paper/findings.tsv "$C"
 # One count of the errata: each erratum finding is corrected by exactly one row of the errata
 # table (its finding column), each row that names a finding names an erratum finding, and the
 # other rows are read off the source; a mismatch fails the build.

@@ -43,7 +43,7 @@ int main(int argc, char **argv)
         .solid = SUS_RECON_CAYLEY, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 1.0,
         .slopes_local = S_LOC, .slopes_global = S_GLOB, .nslopes = 3,
         .slopes_so3_local = S_SO3_LOC, .slopes_so3_global = S_SO3_GLOB, .nslopes_so3 = 2,
-        /* slopes in the empty upper left, eps = 2^-8 .. 2^-6; legend lower right */
+        /* slopes in the upper left, eps = 2^-9 .. 2^-6; legend lower right */
         .slope_j = SUS_EXP_CONV_J0 + 6, .slope_drop = 1.0, .legend_corner = 3, .legend_slopes = 1,
         .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);

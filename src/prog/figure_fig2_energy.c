@@ -91,7 +91,7 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_style_of(SUS_PLOT_BLUE, 1.2, 1, SUS_PLOT_NONE, 0, "variational (decay)");
     sus_plot_series(&ax, hx, hy, 2, 1, &varl);
     const sus_plot_style legc[3] = {decay, grow, varl};
-    sus_plot_legend(&ax, legc, 3, 1);
+    sus_plot_legend(&ax, legc, 3, 2); /* lower left: the variational line runs along the top */
 
     /* the key of (a) and (b) in the fourth cell: the measured numbers are in the caption and the text */
     double x, y, w, h;

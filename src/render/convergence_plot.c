@@ -19,6 +19,8 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 /* Three rows of panels at the page's figure scale; the caption says what is local and global. */
 #define CONV_W 560.0
 #define CONV_H 620.0
+/* The reference slopes span this many halvings of eps, so that their labels keep apart. */
+#define FAN_STEPS 3
 
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
@@ -47,6 +49,60 @@ static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
     }
 }
 
+/* The largest (want_max) or smallest error of the curves `what` shown, over eps in [xa, xb]. */
+static double extreme_in(const sus_plot_conv_fig *f, int what, const double *eps, int nj, double xa,
+                         double xb, int want_max)
+{
+    const int so3 = what == LOC_SO3 || what == GLOB_SO3;
+    double v = want_max ? 0.0 : INFINITY;
+    for (int m = 0; m < f->c.nmethod; m++) {
+        if (!f->spec->select(sus_step_method_get(m)))
+            continue;
+        for (int r = 0; r < 1 + so3; r++) {
+            const double *e = curve(f, m, what, r ? f->spec->dashed : f->spec->solid) + f->j0;
+            for (int j = 0; j < nj; j++)
+                if (eps[j] >= xa && eps[j] <= xb && e[j] > 0.0 && isfinite(e[j]))
+                    v = want_max ? fmax(v, e[j]) : fmin(v, e[j]);
+        }
+    }
+    return v;
+}
+
+static double frac_log(double v, double a, double b) { return (log10(v) - log10(a)) / (log10(b) - log10(a)); }
+
+/* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
+ * above every curve in their eps range and a lower-right legend (at most LEGEND_SPAN of the
+ * width) sits under every curve it covers: neither may hide a curve. */
+#define LEGEND_SPAN 0.66
+static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int what, int idx,
+                      const double *eps, int nj, double lo, double hi, double top, const int *slopes,
+                      int nslopes, int legend_rows)
+{
+    int smax = 0;
+    for (int s = 0; s < nslopes; s++)
+        smax = slopes[s] > smax ? slopes[s] : smax;
+    const double xa = f->c.eps[f->spec->slope_j + FAN_STEPS], xb = f->c.eps[f->spec->slope_j];
+    const double fan_data = extreme_in(f, what, eps, nj, xa, xb, 1);
+    for (int it = 0; it < 40; it++) {
+        sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[f->j0], lo, hi, 1,
+                           1);
+        const double fan_low = ax->y1 * top * f->spec->slope_drop * pow(xa / xb, smax);
+        const int fan_ok = nslopes == 0 || fan_data <= 0.03 * fan_low; /* room for the labels */
+        /* the legend's top edge as a fraction of the height, with a marker of room */
+        const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
+        const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - LEGEND_SPAN) * (log10(ax->x1) - log10(ax->x0)));
+        const double under = extreme_in(f, what, eps, nj, x_leg, INFINITY, 0);
+        const int leg_ok =
+            f->spec->legend_corner != 3 || !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
+        if (fan_ok && leg_ok)
+            return;
+        if (!fan_ok)
+            hi = ax->y1 * 10.0;
+        if (!leg_ok)
+            lo = ax->y0 / 10.0;
+    }
+}
+
 /* One log-log panel of curve `what` (and, for SO(3), the cayley-mid curves dashed) with reference
  * slopes anchored under the data at eps = 2^-2. */
 static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, const char *ylabel,
@@ -62,7 +118,6 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
         free(leg);
         return;
     }
-    const double W = CONV_W, H = CONV_H;
     double lo = INFINITY, hi = -INFINITY;
     for (int m = 0; m < nm; m++) {
         if (!f->spec->select(sus_step_method_get(m)))
@@ -72,8 +127,11 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
             sus_plot_extend(&lo, &hi, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, 1);
     }
     lo = fmax(lo, 1e-17);
+    int nsel = 0;
+    for (int m = 0; m < nm; m++)
+        nsel += f->spec->select(sus_step_method_get(m)) != 0;
     sus_plot_axes ax;
-    sus_plot_axes_cell(&ax, cr, W, H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[j0], lo, hi, 1, 1);
+    room_axes(&ax, cr, f, what, idx, eps, nj, lo, hi, top, slopes, nslopes, nsel + 2 * so3 + (nslopes > 0));
     sus_plot_frame(&ax, "\xce\xb5", ylabel, letter);
     int nleg = 0;
     for (int m = 0; m < nm; m++) {
@@ -115,7 +173,7 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     for (int s = 0; s < nslopes; s++) {
         char lab[8];
         snprintf(lab, sizeof lab, "%d", slopes[s]);
-        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + 2], f->c.eps[f->spec->slope_j],
+        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + FAN_STEPS], f->c.eps[f->spec->slope_j],
                    ax.y1 * top * f->spec->slope_drop, slopes[s], lab);
     }
     sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);

@@ -25,7 +25,7 @@ struct sus_plot_conv_figure_spec {
     int nslopes;
     const int *slopes_so3_local, *slopes_so3_global;
     int nslopes_so3;
-    int slope_j;          /* the reference slopes run from eps[slope_j + 2] to eps[slope_j] ... */
+    int slope_j;          /* the reference slopes run from eps[slope_j + 3] to eps[slope_j] ... */
     double slope_drop;    /* ... ending this factor under the panel's top */
     int legend_corner;    /* sus_plot_legend's corner */
     int legend_slopes;    /* 1: each legend entry gives the slope fitted over the paper's window */
