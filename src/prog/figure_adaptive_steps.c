@@ -81,9 +81,6 @@ static void draw(cairo_t *cr, void *vctx)
     const double W = 560, H = 300;
     char lab[NTOL][64];
     sus_plot_style st[NTOL + 1];
-    sus_plot_text(cr, W / 2, 14,
-                  "taylor-adaptive on the paper's body: the steps it takes, the error it makes", 11, 0.5, 0.5,
-                  1);
     sus_plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     for (int i = 0; i < NTOL; i++) {
