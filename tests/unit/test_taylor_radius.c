@@ -155,7 +155,8 @@ static void tail_bound_against_ode(void)
         for (int j = 0; j < 3; j++) {
             const int p = 8 + 4 * j;
             const double h = rho * (0.1 + 0.25 * j);
-            const double got = sus_step_taylor_tail_bound(p, &m, h, b.w0), want = tail_bound_by_ode(p, &m, h, b.w0);
+            const double got = sus_step_taylor_tail_bound(p, &m, h, b.w0);
+            const double want = tail_bound_by_ode(p, &m, h, b.w0);
             const double d = fabs(got - want) / want;
             worst = d > worst || isnan(d) ? d : worst;
             n++;
