@@ -17,7 +17,7 @@ head_row() { # file caption label colspec header
     printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
         "$4" "$2" "$3" "$5" "$5" >"$1"
 }
-head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A of the software note lists every line).' tab:findings \
+head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A below lists the lines that test the paper; the software note lists all lines).' tab:findings \
     '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
     '& finding & verdict & what we measure (ledger lines)'
 # An erratum finding names the row of the errata table that corrects it (erratum (E1)).

@@ -1563,6 +1563,7 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
                 ratio[1][l], lvl[l], ratio[0][l]);
         fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l],
                 pass[1][l] ? "PASS" : "MISS", lvl[l], pass[0][l] ? "PASS" : "MISS");
+        fprintf(af.fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", lvl[l], LEVEL_TARGET[l]);
     }
     if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);

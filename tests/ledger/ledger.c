@@ -896,8 +896,8 @@ static void test_text(const ledger_row *r, char *out, size_t len)
         snprintf(out, len, "<= %.6g", r->expected);
     else if (r->expected == 0.0)
         snprintf(out, len, "|x| <= %.3g", r->tol);
-    else
-        snprintf(out, len, "|x - %.6g| <= %.3g", r->expected, r->tol);
+    else /* |x + 1|, not |x - -1| */
+        snprintf(out, len, "|x %c %.6g| <= %.3g", r->expected < 0.0 ? '+' : '-', fabs(r->expected), r->tol);
 }
 
 int ledger_finish(const char *tsv_path)
