@@ -17,15 +17,20 @@ head_row() { # file caption label colspec header
     printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
         "$4" "$2" "$3" "$5" "$5" >"$1"
 }
-head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on (Appendix~A below lists the lines that test the paper; the software note lists all lines).' tab:findings \
+head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on and the tests that measure them (Appendix~A below lists the lines that test the paper; the software note lists all lines). Program: the claims ledger, \repolink{claims.c} (\cmd{make ledger}); data: \href{../build/claims.tsv}{\texttt{build/claims.tsv}}.' tab:findings \
     '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
     '& finding & verdict & what we measure (ledger lines)'
 # An erratum finding names the row of the errata table that corrects it (erratum (E1)).
+# Each row links the test files its lines come from (the source column of the ledger, file:line).
 awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $6 != "") eid[$6] = $1; next }
+    FILENAME == ARGV[2] { f = $9; sub(/:[0-9]+$/, "", f); sub(/.*\//, "", f); src[$1] = f; next }
     FNR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
     if ($3 == "erratum") v = v " (" eid[$1] ")"
     ids = $4; n = split(ids, a, " "); gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
-    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s})}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids }' paper/errata.tsv paper/findings.tsv >>"$O/findings.tex"
+    t = ""; delete had
+    for (i = 1; i <= n; i++) if (!(src[a[i]] in had)) { had[src[a[i]]] = 1; t = t (t == "" ? "" : ", ") "\\repolink{" src[a[i]] "}" }
+    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s}; tests: %s)}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids, t }' \
+    paper/errata.tsv "$C" paper/findings.tsv >>"$O/findings.tex"
 printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
