@@ -63,12 +63,21 @@ static double majorant_integrand(double z, void *p)
     return 1.0 / ((k[0] * z + k[1]) * z + k[2]);
 }
 
-static double radius_by_quadrature(const sus_model *m, const double w[2])
+/* The majorant's coefficients K, 2 K z0 = L, F at w (step_taylor.c), from the model's norms. */
+static void majorant_coeffs(const sus_model *m, const double w[2], double k[3])
 {
     const double c = fabs(sus_c(m, w));
     const double nAw =
         hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1], m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
-    double k[3] = {m->norm_b * m->norm_fA, c * m->norm_fA + m->norm_b * nAw, c * nAw};
+    k[0] = m->norm_b * m->norm_fA;
+    k[1] = c * m->norm_fA + m->norm_b * nAw;
+    k[2] = c * nAw;
+}
+
+static double radius_by_quadrature(const sus_model *m, const double w[2])
+{
+    double k[3];
+    majorant_coeffs(m, w, k);
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
     gsl_function f = {majorant_integrand, k};
     double T = NAN, abserr;
@@ -120,18 +129,18 @@ static int majorant_rhs(double t, const double y[], double dy[], void *p)
 
 static double tail_bound_by_ode(int p, const sus_model *m, double h, const double w[2])
 {
-    const double c = fabs(sus_c(m, w));
-    const double nAw =
-        hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1], m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
-    double k[3] = {m->norm_b * m->norm_fA, c * m->norm_fA + m->norm_b * nAw, c * nAw};
+    double k[3];
+    majorant_coeffs(m, w, k);
     const double rho = radius_by_quadrature(m, w);
     gsl_odeiv2_system sys = {majorant_rhs, NULL, 1, k};
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-13, 1e-13);
     double t = 0.0, y[1] = {0.0}, best = INFINITY;
     for (int i = 1; d && i < 400; i++) {
         const double R = h + (rho - h) * (double)i / 400.0, q = h / R;
-        if (gsl_odeiv2_driver_apply(d, &t, R, y) != GSL_SUCCESS)
-            best = NAN;
+        if (gsl_odeiv2_driver_apply(d, &t, R, y) != GSL_SUCCESS) {
+            best = NAN; /* fmin would drop a NaN: no bound from a failed integration */
+            break;
+        }
         best = fmin(best, y[0] * pow(q, p + 1) / (1.0 - q));
     }
     gsl_odeiv2_driver_free(d);
