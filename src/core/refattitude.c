@@ -62,21 +62,15 @@ static void rotation_of(const long double q[4], double R[3][3])
             R[i][j] = (double)(Rl[i][j] / nq);
 }
 
-/* From t to t1 in equal steps of at most 1/SUSLOV_REFATT_PRECISE_STEPS. The step count is
- * converted to an integer only below 2^62 (the conversion of a larger double is undefined);
- * a longer stretch is run in pieces, which callers avoid by checking the cost first
- * (sus_exact_reference_steps), and an infinite one gives a non-finite attitude. */
+/* From t to t1 in equal steps of at most 1/SUSLOV_REFATT_PRECISE_STEPS. A stretch of 2^62 steps or
+ * more (or an infinite one) cannot be run in any useful time, and its step count would not convert
+ * to an integer (undefined behaviour): it gives no answer, a non-finite attitude. Callers check
+ * the cost first (sus_exact_reference_steps). */
 static void integrate(const sus_model *m, long double w[2], long double q[4], double t, double t1)
 {
     const double steps = ceil((t1 - t) * SUS_REFATT_PRECISE_STEPS);
-    if (!isfinite(steps)) { /* no finite answer: make the rows say so (a non-finite R) */
-        q[0] = q[1] = q[2] = q[3] = NAN;
-        return;
-    }
     if (!(steps < 0x1p62)) {
-        const double mid = t + 0.5 * (t1 - t);
-        integrate(m, w, q, t, mid);
-        integrate(m, w, q, mid, t1);
+        q[0] = q[1] = q[2] = q[3] = NAN;
         return;
     }
     const long n = (long)steps;

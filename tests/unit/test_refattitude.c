@@ -1,0 +1,83 @@
+/* The reference attitude's contract (src/core/refattitude.h) at its edges: R(q) of a quaternion that
+ * is not of unit length, as the long-double integration leaves it after a long run, and a stretch
+ * too long to integrate, which gives no answer rather than a wrong one. Its accuracy is tested in
+ * test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
+#include "bodies.h"
+#include "check.h"
+#include "mat3.h"
+#include "refattitude.h"
+#include "so3.h"
+
+#include <float.h>
+#include <math.h>
+
+static int all_finite(const double R[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (!isfinite(R[i][j]))
+                return 0;
+    return 1;
+}
+
+static int none_finite(const double R[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (isfinite(R[i][j]))
+                return 0;
+    return 1;
+}
+
+/* q = c (cos(a/2), sin(a/2) n) for scales c far from 1: R(q) is exp(a n^) whatever c is. Both sides
+ * round each entry of an exact rotation once, and exp adds a few u: the bound is 8 u (u = 2^-53). */
+static void nonunit_quaternion(const sus_exact *ex)
+{
+    const double a = 2.0, n[3] = {2.0 / 7.0, -3.0 / 7.0, 6.0 / 7.0};
+    const double xi[3] = {a * n[0], a * n[1], a * n[2]}, c[] = {0.5, 2.0, 1e-3, 1e3};
+    double E[3][3], I3[3][3];
+    sus_so3_exp(xi, E);
+    sus_mat3_identity(I3);
+    for (int k = 0; k < 4; k++) {
+        sus_refatt ra;
+        sus_refatt_init(&ra, ex, 0.0, I3);
+        ra.q[0] = c[k] * cosl(a / 2.0L);
+        for (int i = 0; i < 3; i++)
+            ra.q[i + 1] = c[k] * sinl(a / 2.0L) * n[i];
+        double R[3][3];
+        sus_refatt_advance(&ra, ra.t, R);
+        const double d = sus_mat3_dist(R, E), bound = 8.0 * DBL_EPSILON / 2.0;
+        CHECK(d <= bound, "R(q) for |q| = %g: %.2e from exp(a n^) (bound 8u = %.2e): q is divided by |q|^2",
+              c[k], d, bound);
+    }
+}
+
+/* 2^62 steps or more (T >= 2^60 at 4 steps a unit) cannot run: R is non-finite, at once. Just below
+ * that a run would take 10^11 years, so the edge is tested from above only; a short run stays finite. */
+static void too_long_stretch(const sus_model *m, const double w0[2])
+{
+    const double steps_per_unit = SUS_REFATT_PRECISE_STEPS;
+    const double T[] = {0x1p62 / steps_per_unit, 1e30, INFINITY, NAN};
+    for (int k = 0; k < 4; k++) {
+        double w[2], R[3][3];
+        sus_refatt_precise(m, w0, T[k], w, R);
+        CHECK(none_finite(R), "reference to T = %g (>= 2^62 steps, or not finite): R not finite", T[k]);
+    }
+    double w[2], R[3][3];
+    sus_refatt_precise(m, w0, 1.0, w, R);
+    CHECK(all_finite(R) && isfinite(w[0]) && isfinite(w[1]), "reference to T = 1: w and R finite");
+}
+
+int main(void)
+{
+    body b; /* a general body: neither edge depends on the body, but nothing here is the paper's */
+    body_get(1, &b);
+    sus_model m;
+    char err[256];
+    sus_model_init(&m, b.I, err, sizeof err);
+    sus_exact ex;
+    sus_exact_init(&ex, &m, b.w0);
+    nonunit_quaternion(&ex);
+    too_long_stretch(&m, b.w0);
+    return check_summary("test_refattitude");
+}
