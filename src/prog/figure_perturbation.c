@@ -30,8 +30,8 @@
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
 #define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
 #define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
-/* panel (c)'s reference slopes, a decade of eps long, in the empty lower left: below the
- * low-order curves (at least 1e-9 there) and left of the high-order ones (from eps = 1/16) */
+/* panel (c)'s reference slopes, a decade of eps long, in the lower left, which no curve reaches:
+ * below the low-order curves and left of the high-order ones (the axis is extended down to them) */
 #define SLOPE_XA 2e-3
 #define SLOPE_XB 2e-2
 #define SLOPE_Y1 1e-10
