@@ -8,6 +8,7 @@
 # It also writes conclusions.tex (each claim of the Conclusions, paper/conclusions.tsv, with the
 # verdicts of its ledger lines) and summary_ordered.tex: the ledger's summary (Table 1) with its
 # rows in the paper's order, the order of the first paper label each row cites in labels.tsv.
+# Last, cited_lines.tex: the extension lines the text quotes (see its block below).
 # Usage: paper_tables.sh OUT_DIR CLAIMS_TSV SUMMARY_TEX
 set -eu
 O=$1
@@ -113,3 +114,39 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
       if (l in pos) { key = pos[l]; break }
       s = substr(s, RSTART + RLENGTH) }
   print key "\t" FNR "\t" $0 }' paper/labels.tsv "$C" "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
+# cited_lines.tex: the ledger lines the companion's text quotes (by \texttt{id}, id-* or one of the
+# id's macros, \FigTwoAccuracy for fig2-accuracy) that Table 1 leaves out, being extensions, so
+# that every line the text cites is in Appendix A. A \texttt{...-...} that names no ledger line
+# (a stale citation) fails the build.
+head_row "$O/cited_lines.tex" 'The lines of our own that the text quotes: extensions, controls and readings, which test no statement of the paper and so are not in Table~\ref{tab:summary}. $m$: measured.' \
+    tab:cited '>{\raggedright}p{0.52\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.2\linewidth} >{\raggedright\arraybackslash}p{0.08\linewidth}' \
+    'line (test file) & measured $m$ & test & verdict'
+perl -e '
+sub macro { my @w = qw(Zero One Two Three Four Five Six Seven Eight Nine); my ($o, $up) = ("", 1);
+    for my $c (split //, shift) { if ($c =~ /\d/) { $o .= $w[$c]; $up = 1 }
+        elsif ($c =~ /[A-Za-z]/) { $o .= $up ? uc $c : $c; $up = 0 } else { $up = 1 } } $o }
+sub num { my $v = sprintf "%.4g", shift; $v =~ s/e([-+]?)0*(\d+)$/"\\times10^{" . ($1 eq "-" ? "-" : "") . "$2}"/e;
+    $v =~ s/^1\\times//; $v }
+sub test { my $t = shift; $t =~ s/^(<=|>=)/x $1/; $t =~ s/([0-9.]+(?:e[-+]?\d+)?)/num($1)/ge;
+    $t =~ s/\bx\b/m/g; $t =~ s/ - /-/g; $t =~ s/ ?<= ?/\\le /g; $t =~ s/ ?>= ?/\\ge /g; "\$$t\$" }
+my ($claims, $summary, $tex) = @ARGV;
+open my $f, "<", $claims or die; my @h = split /\t/, scalar <$f>; chomp @h;
+my %col; @col{@h} = 0 .. $#h; my (@ids, %row);
+while (<$f>) { chomp; my @c = split /\t/; push @ids, $c[0]; $row{$c[0]} = \@c }
+local $/; open my $s, "<", $summary or die; (my $sum = <$s>) =~ s/\\allowbreak\{\}//g;
+my @in_table = $sum =~ /\\texttt\{([^{}]*)\}/g;
+open my $t, "<", $tex or die; (my $txt = <$t>) =~ s/\\allowbreak\{\}//g; $txt =~ s/(?<!\\)%[^\n]*//g;
+my (%cited, $bad);
+for my $id (@ids) { my $m = macro($id); $cited{$id} = 1 if $txt =~ /\\\Q$m\E(?:Verdict|Tol|Test|Expected)?(?![A-Za-z])/ }
+for my $tok ($txt =~ /\\texttt\{([a-z0-9][a-z0-9*-]*-[a-z0-9*-]*)\}/g) {
+    (my $p = $tok) =~ s/\*$//; my @m = grep { $tok =~ /\*$/ ? index($_, $p) == 0 : $_ eq $tok } @ids;
+    if (!@m) { print STDERR "paper_tables: the text cites $tok, which is no ledger line\n"; $bad = 1 }
+    $cited{$_} = 1 for @m }
+for my $id (grep { $cited{$_} } @ids) {
+    next if grep { (my $p = $_) =~ s/\*$//; /\*$/ ? index($id, $p) == 0 : $_ eq $id } @in_table;
+    my $c = $row{$id}; (my $shown = $id) =~ s/-/-\\allowbreak{}/g;
+    my $src = $c->[$col{source}] // ""; (my $file = $src) =~ s/:\d+$//; (my $srct = $src) =~ s/_/\\_/g;
+    printf "\\texttt{%s} {\\scriptsize\\href{../%s}{\\texttt{%s}}} & \$%s\$ & %s & %s\\\\\n", $shown, $file, $srct,
+        num($c->[$col{measured}]), test($c->[$col{test}]), $c->[$col{verdict}] }
+exit($bad ? 1 : 0)' "$C" "$S" paper/companion.tex >>"$O/cited_lines.tex"
+printf '%s\n' '\end{longtable}' >>"$O/cited_lines.tex"

@@ -397,10 +397,11 @@ static int draw_frame(frames *fr, sus_refatt *ra, int f, const char *figdir, FIL
     return 0;
 }
 
-/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times. */
-static int write_filmstrip(const frames *fr, double eps, const char *figdir)
+/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times. No title: the caption that
+ * prints it (attitude.txt, the software note) says what it shows. */
+static int write_filmstrip(const frames *fr, const char *figdir)
 {
-    const int W = fr->W, H = fr->H, SW = 2 * W, SH = 3 * H + H / 8;
+    const int W = fr->W, H = fr->H, SW = 2 * W, SH = 3 * H;
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
     cairo_t *cr = cairo_create(s);
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -408,30 +409,21 @@ static int write_filmstrip(const frames *fr, double eps, const char *figdir)
     for (int i = 0; i < 6; i++) {
         cairo_surface_t *f = cairo_image_surface_create_for_data(
             (unsigned char *)(fr->strip + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-        cairo_set_source_surface(cr, f, (i % 2) * W, H / 8 + (i / 2) * H);
+        cairo_set_source_surface(cr, f, (i % 2) * W, (i / 2) * H);
         cairo_paint(cr);
         cairo_surface_destroy(f);
     }
     cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
     cairo_set_line_width(cr, 2.0);
-    cairo_move_to(cr, W, H / 8);
+    cairo_move_to(cr, W, 0);
     cairo_line_to(cr, W, SH);
     for (int r = 1; r < 3; r++) {
-        cairo_move_to(cr, 0, H / 8 + r * H);
-        cairo_line_to(cr, SW, H / 8 + r * H);
+        cairo_move_to(cr, 0, r * H);
+        cairo_line_to(cr, SW, r * H);
     }
     cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    cairo_set_font_size(cr, H / 16.0);
-    cairo_move_to(cr, 0.3 * H / 8, 0.75 * H / 8);
-    char title[160], path[4096];
-    snprintf(title, sizeof title,
-             "Attitude, R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81 = R\xe2\x82\x96 "
-             "cay(\xce\xb5\xcf\x89\xcc\x82\xe2\x82\x96), \xce\xb5 = %g: red e\xe2\x82\x83, orange \xcf\x89",
-             eps);
-    cairo_show_text(cr, title);
     cairo_destroy(cr);
+    char path[4096];
     snprintf(path, sizeof path, "%s/attitude_filmstrip.png", figdir);
     const int bad = write_surface_png(s, path);
     cairo_surface_destroy(s);
@@ -493,7 +485,7 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir)
         if (draw_frame(fr, &ra, f, figdir, &video) != 0)
             return -1;
     close_video(video, mp4);
-    if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, cfg->eps, figdir) != 0)
+    if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, figdir) != 0)
         return -1;
     free(fr->strip);
     owned.strip = fr->strip = NULL;

@@ -30,6 +30,12 @@
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
 #define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
 #define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
+/* panel (c)'s reference slopes, a decade of eps long, in the lower left, which no curve reaches:
+ * below the low-order curves and left of the high-order ones (the axis is extended down to them) */
+#define SLOPE_XA 2e-3
+#define SLOPE_XB 2e-2
+#define SLOPE_Y1 1e-10
+#define SLOPE_Y2 1e-11
 
 typedef struct {
     double t[NPA], w[NPA][2], ex[NPA][2];
@@ -62,6 +68,7 @@ static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
     for (int m = 0; m < f->nm; m++)
         sus_plot_extend(&lo, &hi, f->g[m], NE, 1, 1);
     sus_plot_axes ax;
+    lo = fmin(lo, SLOPE_Y2 * pow(SLOPE_XA / SLOPE_XB, 2.0) / 10.0); /* room for the slopes */
     sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, f->eps[NE - 1], f->eps[0], lo, hi, 1, 1);
     /* a strip above the lines for the legend, in LEGEND_COLS columns */
     const double strip = sus_plot_legend_height((f->nm + LEGEND_COLS - 1) / LEGEND_COLS) + 6.0;
@@ -86,18 +93,19 @@ static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
         sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
         shown[nl++] = m;
     }
-    /* a curve that a later one covers to within half a marker (1.5 of 3.5 pt) says so in the legend */
+    /* a curve that a later one covers to within half a marker (1.5 of 3.5 pt) has its markers drawn
+     * again on top, inside the other's open ones, and says so in the legend */
     for (int a = 0; a < nl; a++)
         for (int b = nl - 1; b > a; b--)
             if (sus_plot_hidden_under(&ax, f->eps, f->g[shown[a]], f->g[shown[b]], NE, 1.5)) {
-                snprintf(under[a], sizeof under[a], "%s (under %s)", f->names[shown[a]],
-                         f->names[shown[b]]);
+                snprintf(under[a], sizeof under[a], "%s (on %s)", f->names[shown[a]], f->names[shown[b]]);
                 leg[a].label = under[a];
+                sus_plot_markers(&ax, f->eps, f->g[shown[a]], NE, 1, &leg[a]);
                 break;
             }
     sus_plot_legend_packed(cr, ax.x + 4.0, ax.y + 4.0, leg, nl, LEGEND_COLS);
-    sus_plot_slope(&ax, 2e-3, 2e-2, 1e-8, 1.0, "1");
-    sus_plot_slope(&ax, 2e-3, 2e-2, 1e-9, 2.0, "2");
+    sus_plot_slope(&ax, SLOPE_XA, SLOPE_XB, SLOPE_Y1, 1.0, "1");
+    sus_plot_slope(&ax, SLOPE_XA, SLOPE_XB, SLOPE_Y2, 2.0, "2");
 }
 
 static void draw(cairo_t *cr, void *vctx)
@@ -139,7 +147,8 @@ static void draw(cairo_t *cr, void *vctx)
             sus_plot_extend(&lo, &hi, f->att[r], NE_SO3, 1, 1);
         sus_plot_axes ax;
         sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 3, f->eps[NE_SO3 - 1], f->eps[0], lo, hi, 1, 1);
-        sus_plot_frame(&ax, "\xce\xb5", "sup |vee(R\xe1\xb5\x80R') \xe2\x88\x92 \xcf\x89|", "(d)");
+        sus_plot_frame(&ax, "\xce\xb5", "sup |(R\xe1\xb5\x80R\xe2\x80\xb2)\xcb\x87 \xe2\x88\x92 \xcf\x89|",
+                       "(d)");
         sus_plot_style leg[SUS_RECON_COUNT];
         for (int r = 0; r < SUS_RECON_COUNT; r++) {
             leg[r] =
@@ -316,9 +325,10 @@ int main(int argc, char **argv)
              "methods with fewer\n"
              "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
              "attitude\n"
-             "part of the perturbation on SO(3) (geodesic blend, Per11), midpoint DSP: order 1 with cayley, "
-             "2 with the\n"
-             "symmetric reconstructions. Data: data/perturbation.csv, data/perturbation_sizes.csv.\n",
+             "part of the perturbation on SO(3) (geodesic blend, Per11): sup |vee(R^T R') - w|, the body "
+             "angular\nvelocity of the blended attitude R(t) against the curve's w, midpoint DSP: order 1 "
+             "with cayley, 2 with\nthe symmetric reconstructions. Data: data/perturbation.csv, "
+             "data/perturbation_sizes.csv.\n",
              NSTEP_A, EPS_A, gap, FLOOR_G);
     return sus_plot_fig_write_figure(argv[1], "perturbation", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

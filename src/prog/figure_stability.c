@@ -21,7 +21,7 @@ typedef struct {
     double *limit;
 } stab_fig;
 
-/* Panels two to a row, 240 points high, under a title and over the legend. */
+/* Panels two to a row, 240 points high, over the legend; the caption carries the title. */
 #define PANEL_H 240.0
 static double fig_height(int nm) { return 40.0 + PANEL_H * ((nm + 1) / 2); }
 
@@ -32,9 +32,6 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const stab_fig *f = vctx;
     const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
-    sus_plot_text(cr, W / 2, 14,
-                  "Where each method stops working: step h = \xce\xb5k against the initial angle", 11, 0.5,
-                  0.5, 1);
     for (int m = 0; m < f->nm; m++) {
         sus_plot_axes ax;
         char letter[8];

@@ -19,8 +19,11 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 /* Three rows of panels at the page's figure scale; the caption says what is local and global. */
 #define CONV_W 560.0
 #define CONV_H 620.0
-/* The reference slopes span this many halvings of eps, so that their labels keep apart. */
+/* The reference slopes span this many halvings of eps; each next (steeper) one ends FAN_LABEL_PT
+ * lower than the one before, so that their labels, at the left ends, keep apart (a label is one
+ * tick font high) however many decades the panel spans. */
 #define FAN_STEPS 3
+#define FAN_LABEL_PT 9.0
 
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
@@ -70,6 +73,9 @@ static double extreme_in(const sus_plot_conv_fig *f, int what, const double *eps
 
 static double frac_log(double v, double a, double b) { return (log10(v) - log10(a)) / (log10(b) - log10(a)); }
 
+/* The factor in y that FAN_LABEL_PT spans in log axes ax: how far each next slope ends lower. */
+static double fan_gap(const sus_plot_axes *ax) { return pow(ax->y1 / ax->y0, FAN_LABEL_PT / ax->h); }
+
 /* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
  * above every curve in their eps range and a lower-right legend (at most LEGEND_SPAN of the
  * width) sits under every curve it covers: neither may hide a curve. */
@@ -86,7 +92,8 @@ static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f
     for (int it = 0; it < 40; it++) {
         sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[f->j0], lo, hi, 1,
                            1);
-        const double fan_low = ax->y1 * top * f->spec->slope_drop * pow(xa / xb, smax);
+        const double fan_low =
+            ax->y1 * top * f->spec->slope_drop * pow(xa / xb, smax) / pow(fan_gap(ax), nslopes - 1);
         const int fan_ok = nslopes == 0 || fan_data <= 0.03 * fan_low; /* room for the labels */
         /* the legend's top edge as a fraction of the height, with a marker of room */
         const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
@@ -169,12 +176,13 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     }
     if (nslopes)
         leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, "reference slopes");
-    /* reference slopes where the figure has room for them, `top` under the panel's top */
+    /* reference slopes where the figure has room for them, `top` under the panel's top, each
+     * next one a label lower */
     for (int s = 0; s < nslopes; s++) {
         char lab[8];
         snprintf(lab, sizeof lab, "%d", slopes[s]);
         sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + FAN_STEPS], f->c.eps[f->spec->slope_j],
-                   ax.y1 * top * f->spec->slope_drop, slopes[s], lab);
+                       ax.y1 * top * f->spec->slope_drop / pow(fan_gap(&ax), s), slopes[s], lab);
     }
     sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
     free(labels);

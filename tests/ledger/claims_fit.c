@@ -1,17 +1,37 @@
 #include "claims_fit.h"
 
+#include "exact.h"
+#include "model.h"
 #include "orderfit.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-/* An order is an integer: a tenth of the gap tells p from p +- 1 (as in claims.c). Over the
- * widened window (steps up to h = eps k = 0.29) the next term of the expansion bends the line by
- * up to ~k eps; a quarter of the gap still tells p from p +- 1. */
+/* An order is an integer: a tenth of the gap tells p from p +- 1 (as in claims.c). */
 #define ORDER_TOL 0.1
-#define ORDER_TOL_WIDE 0.25
 #define MAXN 32
+
+/* The tolerance of a window widened up to eps_hi, out of the asymptotic range. There the error is
+ * C eps^p (1 + a eps + ...), whose local slope is p + a eps / (1 + a eps): every local slope, and
+ * so the least-squares one, lies within a eps_hi / (1 - a eps_hi) of p. a is the ratio of
+ * consecutive Taylor coefficients of the solution, 1 / rho for rho its radius of analyticity in t:
+ * the exact w and lambda are tanh and sech of k t + s0 (exact.c), analytic for |Im t| < pi / (2k),
+ * so a = 2k / pi, taking the method's consecutive error constants as alike. Every caller runs the
+ * paper's body. Never below the fixed window's tenth; a bend reaching half the gap could not tell
+ * p from p +- 1, and the caller's line then fails (tolerance 0). */
+static double wide_tolerance(double eps_hi)
+{
+    sus_model m;
+    sus_exact ex;
+    char err[128];
+    if (sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) != 0)
+        return 0.0;
+    sus_exact_init(&ex, &m, SUS_PAPER_OMEGA0);
+    const double ae = 2.0 * ex.k / acos(-1.0) * eps_hi; /* a eps_hi, a = 2k / pi */
+    const double bend = ae / (1.0 - ae);
+    return ae < 1.0 && bend < 0.5 ? fmax(ORDER_TOL, bend) : 0.0;
+}
 
 int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
                           const double *err, const double *need, int n, double floor_c, int floor_pow,
@@ -35,7 +55,7 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
         const int wide = emax > SUS_EXP_FIT_EPS_MAX;
         snprintf(q, sizeof q, "%s; fit eps in [%.3g, %.3g], %d pts%s", what, f.eps_lo, f.eps_hi, f.used,
                  wide ? " (window widened: round-off below)" : "");
-        ledger_add(id, ref, q, f.slope - shift, expected, wide ? ORDER_TOL_WIDE : ORDER_TOL, truth);
+        ledger_add(id, ref, q, f.slope - shift, expected, wide ? wide_tolerance(f.eps_hi) : ORDER_TOL, truth);
         return 1;
     }
     /* No slope: the sizes are at round-off over the fit window. Where theory puts a lower

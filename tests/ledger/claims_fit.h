@@ -8,7 +8,8 @@
 /* Fits log err against log eps over eps <= 2^-2 (orderfit.h's window) for the points above the
  * round-off floor floor_c / eps^floor_pow, and records slope - shift against expected (tolerance
  * 0.1). A method so accurate that fewer than three points qualify is fitted over all eps given
- * instead (tolerance 0.25, said in the line). When even that leaves fewer than three, the order
+ * instead (tolerance from the next term of the expansion over that window, claims_fit.c; said in
+ * the line). When even that leaves fewer than three, the order
  * is not measurable, and what is tested is what theory predicts above round-off: need[j] is a
  * lower estimate of the size (for Section 6 the step's local error over eps); where it is above
  * 10 floors the size must be at least need / 10 (a one-sided line that a zeroed measurement
