@@ -220,6 +220,34 @@ static void paper_closed_form(const sus_model *m)
           "the repelling steady rotation is left only at round-off times e^{kt}: %.2e at t = 50", dep);
 }
 
+/* A body whose third row has I31 = I32 = 0: c(w) = 0 for every w, so (ContDyn) keeps w(t) = w(0). The
+ * closed form must return w(0) itself (exactly: nothing is computed) at every t and as the limit. */
+static void uncoupled(const body *b)
+{
+    double I[9];
+    for (int i = 0; i < 9; i++)
+        I[i] = b->I[i];
+    I[6] = I[7] = 0.0;
+    sus_model m;
+    char err[256];
+    if (sus_model_init(&m, I, err, sizeof err) != 0) {
+        CHECK(0, "%s with I31 = I32 = 0 accepted: %s", b->name, err);
+        return;
+    }
+    sus_exact ex;
+    sus_exact_init(&ex, &m, b->w0);
+    double w[2], wl[2];
+    int same = 1;
+    for (double t = 0.0; t <= 100.0; t += 12.5) {
+        sus_exact_omega(&ex, t, w);
+        same = same && w[0] == b->w0[0] && w[1] == b->w0[1];
+    }
+    sus_exact_limit(&ex, wl);
+    CHECK(same && wl[0] == b->w0[0] && wl[1] == b->w0[1],
+          "%s with I31 = I32 = 0: w(t) = w(0) = (%g, %g) on [0, 100] and as the limit, exactly", b->name,
+          b->w0[0], b->w0[1]);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -234,6 +262,7 @@ int main(void)
         CHECK(sus_model_init(&m, b.I, err, sizeof err) == 0, "accepted: %s", about);
         model_vs_printed(&m, &b);
         closed_form(&m, &b);
+        uncoupled(&b);
         if (k == 0) {
             paper_values(&m);
             paper_closed_form(&m);
