@@ -155,6 +155,13 @@ def index_mutants(toks, i, types):
             depth += toks[k][1] in (")", "]")
             depth -= toks[k][1] in ("(", "[")
             k -= 1
+            if depth == 0 and toks[k][1] == "}":  # an initializer's braces (x[2] = {..}, q[4]) are skipped
+                b, nest = k - 1, 1
+                while b >= 0 and nest:
+                    nest += (toks[b][1] == "}") - (toks[b][1] == "{")
+                    b -= 1
+                if b >= 0 and toks[b][1] == "=":
+                    k = b
         if (k < 0 or toks[k][1] in (";", "{", "}")) and (toks[k + 1][1] in TYPES or toks[k + 1][1] in types):
             return None
     return toks[j][2]
