@@ -72,13 +72,17 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
             continue;
         v2d xp = {0.0, 0.0}, yp = {0.0, 0.0}, xm = {0.0, 0.0}, ym = {0.0, 0.0};
 #pragma GCC unroll 32
-        for (int j = n; j >= 0; j--) { /* j = n (newest Q) ... j = 0 (newest W) */
+        for (int j = n; j >= 1; j--) { /* j = n (newest Q) ... j = 1; P_1 = 0 and M_0 = 0 are left out */
             const v2d Wk = t->W[n - j];
-            xp += Wk[0] * t->P[j];
-            yp += Wk[1] * t->P[j];
+            if (j >= 2) {
+                xp += Wk[0] * t->P[j];
+                yp += Wk[1] * t->P[j];
+            }
             xm += Wk[0] * t->M[j];
             ym += Wk[1] * t->M[j];
         }
+        xp += (v2d){Wn[0], 0.0}; /* j = 0 (newest W): P_0 = (1, 0) */
+        yp += (v2d){Wn[1], 0.0};
         const double g = 0.5 * f;
         t->M[n + 1] = g * (xp + rot90(yp));
         t->P[n + 1] = g * (rot90(ym) - xm);
