@@ -24,7 +24,8 @@
  * coefficients: no extra series). A step whose estimate exceeds tol (or is not a number) is
  * rejected and retried as short as its estimate asks (at most SHRINK_MIN times shorter; the
  * retry rescales the rejected series, recomputing it only when it overflowed); after MAX_TRIES
- * the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed tol. Every step stays inside the radius the series is proved to converge in (step_taylor.c). */
+ * the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed tol. Every
+ * step stays inside the radius the series is proved to converge in (step_taylor.c). */
 #include "taylor.h"
 #include "taylor_series.h"
 
