@@ -22,9 +22,10 @@
  * Step control: since T_{p+1} ~ h^{p+1}, the step that would give tol is h (tol/err)^{1/(p+1)};
  * the next step is that times SAFETY, at most GROW times the last (from the previous step's
  * coefficients: no extra series). A step whose estimate exceeds tol (or is not a number) is
- * rejected and retried as short as its estimate asks (at most SHRINK_MIN times shorter); after
- * MAX_TRIES the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed
- * tol. Every step stays inside the radius the series is proved to converge in (step_taylor.c). */
+ * rejected and retried as short as its estimate asks (at most SHRINK_MIN times shorter; the
+ * retry rescales the rejected series, recomputing it only when it overflowed); after MAX_TRIES
+ * the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed tol. Every
+ * step stays inside the radius the series is proved to converge in (step_taylor.c). */
 #include "taylor.h"
 #include "taylor_series.h"
 
@@ -170,25 +171,41 @@ static void accept(sus_tol_work *wk, double h, double err, double t_end, double 
     wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
 }
 
+/* The series of a try rescaled to a step s times as long: with h folded into the coefficients
+ * (X_n = x_n h^n) the series of the step s h is X_n s^n, exactly the same polynomial, so a rejected
+ * try needs no new recursion; its estimate is recomputed from the rescaled rows. */
+static double rescaled_try(sus_tol_work *wk, int p, double s)
+{
+    double sn = 1.0;
+    for (int n = 1; n <= p; n++) {
+        sn *= s;
+        wk->t.W[n] *= sn;
+        wk->t.P[n] *= sn;
+        wk->t.M[n] *= sn;
+    }
+    return estimate(&wk->t, p);
+}
+
 static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                          sus_attitude *att, sus_stepper_stats *st)
 {
     const int p = wk->order->p;
-    double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t)), err = NAN;
-    *st = (sus_stepper_stats){.scale = wk->tol};
-    for (int tries = 0; tries<MAX_TRIES && * t + h> * t; tries++) {
-        err = wk->order->try_step(wk, h, w);
-        if (err <= wk->tol) {
-            st->iterations = tries;
-            st->residual = err;
-            st->det = h;
-            accept(wk, h, err, t_end, t, w, lambda, att);
-            return SUS_STEPPER_OK;
+    double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));
+    double err = wk->order->try_step(wk, h, w);
+    int tries = 0;
+    while (!(err <= wk->tol)) { /* NaN is rejected too */
+        if (++tries == MAX_TRIES || !(*t + h > *t)) {
+            *st = (sus_stepper_stats){.iterations = tries, .residual = err, .scale = wk->tol, .det = h};
+            return SUS_STEPPER_REJECTED;
         }
-        h *= fmax(SHRINK_MIN, fmin(SAFETY, SAFETY * pow(wk->tol / err, 1.0 / (p + 1))));
+        const double s = fmax(SHRINK_MIN, fmin(SAFETY, SAFETY * pow(wk->tol / err, 1.0 / (p + 1))));
+        /* a finite estimate rescales this try; an overflowed series (inf or NaN) is recomputed */
+        err = isfinite(err) ? rescaled_try(wk, p, s) : wk->order->try_step(wk, h * s, w);
+        h *= s;
     }
-    *st = (sus_stepper_stats){.iterations = MAX_TRIES, .residual = err, .scale = wk->tol, .det = h};
-    return SUS_STEPPER_REJECTED;
+    *st = (sus_stepper_stats){.iterations = tries, .residual = err, .scale = wk->tol, .det = h};
+    accept(wk, h, err, t_end, t, w, lambda, att);
+    return SUS_STEPPER_OK;
 }
 
 /* The state at tau into the last step: the step's own polynomials at theta = tau / h (the

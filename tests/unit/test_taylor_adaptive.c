@@ -1,7 +1,8 @@
 /* The tolerance-driven Taylor method's edge cases, through its stepper type (stepper.h,
  * sus_tol_ops) and the driver (sus_run_tol), on the paper's body and general bodies:
  *   - a step whose estimate exceeds TOL is rejected and retried, and an accepted step's own
- *     estimate is at most TOL;
+ *     estimate is at most TOL; the retry rescales the rejected series (its coefficients carry
+ *     h^n) and lands on the fixed-step Taylor step of the same order and length;
  *   - a TOL no step can meet (1e-300, far below the rounding of any state) ends in
  *     SUS_STEPPER_REJECTED after the bounded retries, the state untouched, and the driver reports
  *     the step, its start time and the estimate (exit 3 in suslov);
@@ -20,6 +21,7 @@
 #include "refattitude.h"
 #include "registry.h"
 #include "so3.h"
+#include "taylor.h"
 
 #include <float.h>
 #include <math.h>
@@ -107,6 +109,38 @@ static void rejection(const sus_model *m, const double w0[2], const char *name)
               c.rows == 1,
           "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name, rep.step,
           rep.t);
+}
+
+/* A rejected try is rescaled, not recomputed: the first step (its first try, the proved radius,
+ * is rejected at TOL 1e-12) must equal the fixed-step Taylor step of the same order and length
+ * from a fresh series (sus_step_taylor_apply_full; both restore E onto E(w_0)). The two differ
+ * only by roundings: s^n formed in n <= 20 products and p <= 20 sums of terms at most |w|, so
+ * 64 u |w| for w and 64 u for R; a wrong power of s moves w by about |W_2| (1 - s), far above. */
+static void rescaled_retry(const sus_model *m, const double w0[2], const char *name)
+{
+    const sus_tol_ops *ops = adaptive()->tol;
+    const double tol = 1e-12, w00[3] = {w0[0], w0[1], 0.0};
+    sus_tol_work *wk = ops->alloc(m, tol, w0);
+    double w[3] = {w0[0], w0[1], 0.0}, wf[3], lam = 0.0, lamf = 0.0, t = 0.0, Ra[3][3], Rf[3][3];
+    sus_attitude att, attf;
+    sus_stepper_stats st, stf;
+    sus_attitude_identity(&att);
+    sus_attitude_identity(&attf);
+    const int rc = ops->step(wk, 50.0, &t, w, &lam, &att, &st);
+    ops->free(wk);
+    const int rf = sus_step_taylor_apply_full(ops->order(tol), m, t, &attf, w00, wf, &lamf, &stf);
+    sus_attitude_get(&att, Ra);
+    sus_attitude_get(&attf, Rf);
+    double dw = fmax(fabs(w[0] - wf[0]), fabs(w[1] - wf[1])), dR = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            dR = fmax(dR, fabs(Ra[i][j] - Rf[i][j]));
+    const double scale = fmax(1.0, hypot(w0[0], w0[1]));
+    CHECK(rc == SUS_STEPPER_OK && st.iterations >= 1 && rf == SUS_STEPPER_OK && dw <= 64.0 * SUS_U * scale &&
+              dR <= 64.0 * SUS_U,
+          "%s: first step (%d rejected tries, h = %.4g) equals a fresh order-%d series: |dw| = %.2g, "
+          "|dR| = %.2g",
+          name, st.iterations, t, ops->order(tol), dw, dR);
 }
 
 /* w = 0 and a steady rotation: vanishing rows. */
@@ -288,6 +322,7 @@ int main(void)
             continue;
         }
         rejection(&m, b.w0, b.name);
+        rescaled_retry(&m, b.w0, b.name);
         vanishing_rows(&m, b.w0, b.name);
         rows_and_structure(&m, b.w0, b.name);
         dense_accuracy(&m, b.w0, b.name);
