@@ -235,9 +235,9 @@ $(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_od
 # (data/bench.tex), figures from the figure programs, listings and equation map from src/.
 # The same program as make bench (with the Boost.Odeint peers), so that the companion quotes
 # the same comparison whichever of the two wrote data/bench.tex last.
-data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &: $(BUILD)/bench_boost
+data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &: $(BUILD)/bench_boost | $(BUILD)/suslov
 	@mkdir -p figures data
-	$< figures data >/dev/null
+	$< figures data > $(BUILD)/bench_paper.txt || { grep "CHECK FAILED\|not reproduced" $(BUILD)/bench_paper.txt; exit 1; }
 
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \

@@ -1507,7 +1507,7 @@ static void print_long_runs(void)
 
 /* Every "ours" row reproduces with the suslov command: re-run the fastest preserving row at each
  * attitude and each w level and compare its errors (the w error only for a w-only row). */
-static void check_reproduce(const char *argv0)
+static int check_reproduce(const char *argv0)
 {
     char suslov[4096];
     const char *slash = strrchr(argv0, '/');
@@ -1531,6 +1531,7 @@ static void check_reproduce(const char *argv0)
     printf(
         "  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in data/bench.csv)\n",
         ok == tried ? "CHECK ok:" : "CHECK FAILED:", ok, tried, suslov);
+    return ok != tried;
 }
 
 /* The numbers the companion text quotes. */
@@ -1679,12 +1680,16 @@ int main(int argc, char **argv)
             print_level(which, l, &pass[which][l], &ratio[which][l]);
     print_long_runs();
     print_equal_error_long();
-    check_reproduce(argv[0]);
+    const int unreproduced = check_reproduce(argv[0]);
     t_phase[5] = sus_sys_now();
     printf("\nbench ran for %.1f s (sweeps %.1f, work-precision timing %.1f, step costs %.1f, long runs "
            "%.1f, equal-error runs and reproducing %.1f)\n",
            t_phase[5] - t_phase[0], t_phase[1] - t_phase[0], t_phase[2] - t_phase[1], t_phase[3] - t_phase[2],
            t_phase[4] - t_phase[3], t_phase[5] - t_phase[4]);
+    if (differ || unreproduced) { /* data the companion would quote as checked: none rather than wrong */
+        fprintf(stderr, "bench: a CHECK FAILED (see its line in the output above); nothing written\n");
+        return 1;
+    }
     char path[4096];
     if (write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "bench", "csv")) != 0 ||
         write_tex(sus_plot_fig_path(path, sizeof path, argv[2], "bench", "tex"), speedup, implicit_pass, pass,
