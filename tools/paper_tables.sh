@@ -85,17 +85,24 @@ printf '%s\n' '\end{longtable}' >>"$O/not_tested.tex"
 head_row "$O/conclusions.tex" 'The claims of the Conclusions and the ledger lines that test them.' tab:conclusions \
     '>{\raggedright}p{0.5\linewidth} >{\raggedright}p{0.13\linewidth} >{\raggedright\arraybackslash}p{0.33\linewidth}' \
     'claim & verdict & ledger lines'
+# A reproduced line that rests under a "by definition" finding (Table 1) reads "by definition"
+# here too: one verdict for one measurement.
 awk -F'\t' 'FNR == 1 { file++; next }
-file == 1 { verdict[$1] = $7; next }
+file == 1 { if ($3 == "by definition") { n = split($4, a, " "); for (i = 1; i <= n; i++) bydef[a[i]] = 1 }; next }
+file == 2 { verdict[$1] = ($7 == "reproduced" && ($1 in bydef)) ? "by definition" : $7; next }
 { n = split($2, ids, " "); v = ""
   for (i = 1; i <= n; i++) if (v == "" || verdict[ids[i]] == "erratum" || verdict[ids[i]] == "not reproduced") v = verdict[ids[i]]
   list = $2; gsub(/-/, "-\\allowbreak{}", list); gsub(/ /, ", ", list)
-  printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
+  printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' paper/findings.tsv "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
 printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
 
 # Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
 # position in labels.tsv of the first label they cite; the header and footer stay in place.
-awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1) pos[$1] = FNR; next }
+# A (sub)section's own text (a row citing "Sec. 5.6 text") sorts after the section's numbered
+# statements and before its figures, where the source discusses its experiments.
+awk -F'\t' 'FILENAME == ARGV[1] { if (FNR == 1) next
+                      if ($2 ~ /section$/) sec = $1; else if ($2 != "figure" && sec != "") pos[sec] = FNR
+                      if (!($1 in pos)) pos[$1] = FNR; next }
 FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "source") sc = i; next }
                       if (sc) src[$1] = $sc; next }
 /\\endlastfoot/ { print "0\t" FNR "\t" $0; body = 1; next }
@@ -105,10 +112,12 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
   # the ledger line behind the row, linked to its test (when claims.tsv has a source column)
   if (match($0, /^\\texttt\{[^}]*(\{\}[^}]*)*\}/)) {
       id = substr($0, RSTART + 8, RLENGTH - 9); gsub(/\\allowbreak\{\}/, "", id); sub(/-\*$/, "-", id)
+      # the link goes after the count of a grouped row (id-*~$\times n$), which stays beside the id
+      len = RLENGTH; if (match(substr($0, len + 1), /^~\$\\times[0-9]+\$/)) len += RLENGTH
       link = ""
       for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
       if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; gsub(/_/, "\\\\_", shown)
-          $0 = substr($0, 1, RLENGTH) " {\\scriptsize\\href{../" file "}{\\texttt{" shown "}}}" substr($0, RLENGTH + 1) } }
+          $0 = substr($0, 1, len) " {\\scriptsize\\href{../" file "}{\\texttt{" shown "}}}" substr($0, len + 1) } }
   while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
       if (l in pos) { key = pos[l]; break }

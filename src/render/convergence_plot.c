@@ -73,6 +73,16 @@ static double extreme_in(const sus_plot_conv_fig *f, int what, const double *eps
 
 static double frac_log(double v, double a, double b) { return (log10(v) - log10(a)) / (log10(b) - log10(a)); }
 
+/* The least-squares slope of one curve over the ledger's window, as the legend prints it. */
+static void slope_text(const double *eps, const double *err, int nj, double size, char *out, size_t len)
+{
+    sus_exp_order_fit fit;
+    if (sus_exp_fit_order(eps, err, nj, SUS_EXP_FIT_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * size, &fit) != 0)
+        snprintf(out, len, "none");
+    else
+        snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
+}
+
 /* The factor in y that FAN_LABEL_PT spans in log axes ax: how far each next slope ends lower. */
 static double fan_gap(const sus_plot_axes *ax) { return pow(ax->y1 / ax->y0, FAN_LABEL_PT / ax->h); }
 
@@ -118,7 +128,7 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0, nj = NJ - f->j0;
     const int global = what == GLOB_W || what == GLOB_SO3 || what == GLOB_LAMBDA;
     const double *eps = (global ? f->c.glob_eps : f->c.eps) + j0;
-    char (*labels)[48] = calloc((size_t)nm, sizeof *labels);
+    char (*labels)[96] = calloc((size_t)nm, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (!labels || !leg) {
         free(labels);
@@ -145,18 +155,20 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
         if (!f->spec->select(sus_step_method_get(m)))
             continue;
         const double *err = curve(f, m, what, f->spec->solid) + j0;
-        /* the legend carries the least-squares slope over the ledger's window */
-        sus_exp_order_fit fit;
-        const int ok =
-            sus_exp_fit_order(eps, err, nj, SUS_EXP_FIT_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * size, &fit) == 0;
+        /* the legend carries the least-squares slope over the ledger's window: of the solid
+         * curve, and on SO(3) of the dashed one after it */
+        char sl[32], sd[48] = "";
+        slope_text(eps, err, nj, size, sl, sizeof sl);
+        if (so3) {
+            char t[32];
+            slope_text(eps, curve(f, m, what, f->spec->dashed) + j0, nj, size, t, sizeof t);
+            snprintf(sd, sizeof sd, ", dashed %s", t);
+        }
         const char *name = sus_step_method_get(m)->type->name;
         if (!f->spec->legend_slopes)
             snprintf(labels[m], sizeof labels[m], "%s", name);
-        else if (ok)
-            snprintf(labels[m], sizeof labels[m], "%s, slope %.2f", name,
-                     fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
         else
-            snprintf(labels[m], sizeof labels[m], "%s, no slope", name);
+            snprintf(labels[m], sizeof labels[m], "%s, slope %s%s", name, sl, sd);
         leg[nleg] = method_style(m, 0, 1);
         leg[nleg].label = labels[m];
         sus_plot_series(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);

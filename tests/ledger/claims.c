@@ -165,7 +165,7 @@ static void local_claims(void)
      * An erratum: the sentence contradicts the paper's own Proposition (TeoL), not a result. */
     ledger_add("conclusion-unreduced-order-zero", "Conclusions",
                "smallest unreduced order over the paper's methods with R_{k+1} = R_k cay(eps w_k); the "
-               "text says 0, TeoL says 1",
+               "text says 0, Proposition 5.1 says 1",
                unreduced_min, 0.0, 0.5, LEDGER_ERRATUM);
 }
 

@@ -107,7 +107,7 @@ static void swap_claims(const run_result v10, const run_result m10, const run_re
     /* the paper needs all 4; a count is an integer, 0.5 tells 3 from 4. Asserted for the largest
      * count over tau in [1 %, 20 %], so no tau in that range changes the verdict. */
     ledger_add("fig2-swap-printed", "Fig. 2 caption, Sec. 5.6 text",
-               "largest over tau = 1..20 % of how many of Figure 2's 4 statements (energy, faster "
+               "largest over tau = 1..20 % of how many of the 4 statements of Figure 2 (energy, faster "
                "convergence, long-term accuracy, within tau of |w0| at eps = 1) hold with the labels as "
                "printed",
                hi[0], 4.0, 0.5, LEDGER_NOT_REPRODUCED);

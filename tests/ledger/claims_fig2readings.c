@@ -86,8 +86,8 @@ static void reading(const char *name, const char *id, const double I[9])
     ledger_number(key, b.own100);
     snprintf(
         q, sizeof q,
-        "of Figure 2's statements energy, faster, limit, own (see the file), how many hold with the labels "
-        "as printed and I read by %s; the caption claims all 4",
+        "of the statements of Figure 2 (energy, faster, limit, own: see the file), how many hold with the "
+        "labels as printed and I read by %s; the caption claims all 4",
         id);
     char lid[64];
     snprintf(lid, sizeof lid, "fig2-inertia-%s", id);

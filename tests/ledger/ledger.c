@@ -630,8 +630,10 @@ static void tex_test(FILE *fp, const ledger_row *r)
         fprintf(fp, "$m\\le %s$", e);
     else if (r->expected == 0.0)
         fprintf(fp, "$|m|\\le %s$", t);
-    else
-        fprintf(fp, "$|m-%s|\\le %s$", e, t);
+    else { /* |m + 1|, not |m - -1| */
+        tex_number(fabs(r->expected), e, sizeof e);
+        fprintf(fp, "$|m%s%s|\\le %s$", r->expected < 0.0 ? "+" : "-", e, t);
+    }
 }
 
 /* One ledger line as two rows of a longtable: the numbers, then (kept on the same page) what
@@ -723,7 +725,7 @@ static void write_summary(FILE *fp)
             char star[80];
             snprintf(star, sizeof star, "%s-*", key);
             tex_id(fp, star);
-            fprintf(fp, " $\\times%d$", n);
+            fprintf(fp, "~$\\times%d$", n); /* the count stays beside the id */
         } else
             tex_id(fp, r->id);
         fputs(" & ", fp);
