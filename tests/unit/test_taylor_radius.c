@@ -113,6 +113,39 @@ static void radius_against_quadrature(void)
           "states: worst relative difference %.2g (at most 1e-8)", BODIES_COUNT, worst);
 }
 
+/* The radius is the majorant's blow-up time rounded down by the step's stated margin, 1e-12, and by
+ * no more: against the closed form ln((z0 + b)/(z0 - b)) / (2 b K), b = sqrt(z0^2 - F/K), z0 = L/(2K),
+ * evaluated in long double from the same coefficients, it lies in [1 - 1e-12 - 1e-13, 1] times it
+ * (1e-13: a hundred times the rounding of the step's double formula, a few u). */
+static void radius_rounded_down(void)
+{
+    int bad = 0, n = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        char err[256];
+        body_get(k, &b);
+        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
+            continue;
+        for (int j = 0; j < 4; j++, n++) {
+            const double s = 0.25 + j;
+            const double w[2] = {s * (b.w0[0] - 0.3 * j * b.w0[1]), s * (b.w0[1] + 0.3 * j * b.w0[0])};
+            double c[3];
+            majorant_coeffs(&m, w, c);
+            const long double K = c[0], z0 = c[1] / (2.0L * K), be = sqrtl(z0 * z0 - c[2] / K);
+            const long double rho = logl((z0 + be) / (z0 - be)) / (2.0L * be * K);
+            const double q = (double)(sus_step_taylor_radius(&m, w) / rho - 1.0L);
+            lo = fmin(lo, q);
+            hi = fmax(hi, q);
+            bad += !(q <= 0.0 && q >= -1e-12 - 1e-13);
+        }
+    }
+    CHECK(bad == 0 && n > 0, "the proved radius over the closed form in long double, minus 1, on %d states: "
+          "in [%.3g, %.3g] (must lie in [-1e-12 - 1e-13, 0]: rounded down by the stated margin only)",
+          n, lo, hi);
+}
+
 /* The tail bound (step_taylor.c) is, by its definition, the least of y(R) q^{p+1} / (1 - q),
  * q = h / R, over the grid R = h + (rho - h) i / 400, i = 1 .. 399, where y is the majorant
  * y' = K y^2 + L y + F, y(0) = 0. Here y comes from GSL's rk8pd at 1e-13 instead of the closed
@@ -179,6 +212,7 @@ int main(void)
 {
     gsl_set_error_handler_off();
     radius_against_quadrature();
+    radius_rounded_down();
     tail_bound_against_ode();
     /* the paper's body from its w(0) and from 1e-6 off its steady rotation c(w) = 0 (where the
      * proved radius grows like log(1/|f(w)|)), and two general bodies */
