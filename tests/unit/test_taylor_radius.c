@@ -264,12 +264,39 @@ static void double_root_case(void)
           "(at most 1e-8), tail bound against rk8pd %.2g (at most 1e-7)", found, BODIES_COUNT, wr, wt);
 }
 
+/* At |w| = 3 (a state where the cheap test K |w| |h| < 1 and the radius differ most), a step just
+ * inside the proved radius runs and one just beyond it is refused (DIVERGED), on every body. */
+static void refused_beyond_radius(void)
+{
+    int ok = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        char err[256];
+        body_get(k, &b);
+        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
+            continue;
+        const double n = hypot(b.w0[0], b.w0[1]), w[3] = {3.0 * b.w0[0] / n, 3.0 * b.w0[1] / n, 0.0};
+        const double rho = sus_step_taylor_radius(&m, w);
+        double wn[3], lam;
+        sus_stepper_stats st;
+        sus_attitude a;
+        sus_attitude_identity(&a);
+        const int in = sus_step_taylor_apply_full(16, &m, 0.99 * rho, &a, w, wn, &lam, &st);
+        const int out = sus_step_taylor_apply_full(16, &m, 1.01 * rho, &a, w, wn, &lam, &st);
+        ok += in == SUS_STEPPER_OK && out == SUS_STEPPER_DIVERGED;
+    }
+    CHECK(ok == BODIES_COUNT, "|w| = 3: a Taylor step of 0.99 times the proved radius runs and one of 1.01 "
+          "times it is refused (DIVERGED) on %d of %d bodies", ok, BODIES_COUNT);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
     radius_against_quadrature();
     radius_rounded_down();
     double_root_case();
+    refused_beyond_radius();
     tail_bound_against_ode();
     /* the paper's body from its w(0) and from 1e-6 off its steady rotation c(w) = 0 (where the
      * proved radius grows like log(1/|f(w)|)), and two general bodies */
