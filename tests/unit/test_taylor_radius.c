@@ -87,6 +87,26 @@ static double radius_by_quadrature(const sus_model *m, const double w[2])
     return T;
 }
 
+/* Body k of the family and its model; a body the model refuses is a failed check. */
+static int family_model(int k, body *b, sus_model *m)
+{
+    char err[256];
+    body_get(k, b);
+    if (sus_model_init(m, b->I, err, sizeof err) == 0)
+        return 0;
+    CHECK(0, "%s: %s", b->name, err);
+    return -1;
+}
+
+/* State j = 0 .. 3 of a body: its w0 turned by atan(0.3 j) and scaled to 0.25 + j of its size and
+ * more (the radius moves with both). */
+static void turned_state(const body *b, int j, double w[2])
+{
+    const double s = 0.25 + j;
+    w[0] = s * (b->w0[0] - 0.3 * j * b->w0[1]);
+    w[1] = s * (b->w0[1] + 0.3 * j * b->w0[0]);
+}
+
 /* On every body of the family, at its w0 and at w0 turned and scaled: the step's radius equals
  * the quadrature's to 1e-8 (the quadrature's tolerance is 1e-11; the step rounds down by 1e-12). */
 static void radius_against_quadrature(void)
@@ -95,15 +115,11 @@ static void radius_against_quadrature(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0) {
-            CHECK(0, "%s: %s", b.name, err);
+        if (family_model(k, &b, &m) != 0)
             continue;
-        }
         for (int j = 0; j < 4; j++) {
-            const double s = 0.25 + j;
-            const double w[2] = {s * (b.w0[0] - 0.3 * j * b.w0[1]), s * (b.w0[1] + 0.3 * j * b.w0[0])};
+            double w[2];
+            turned_state(&b, j, w);
             const double r = sus_step_taylor_radius(&m, w), T = radius_by_quadrature(&m, w);
             const double d = fabs(r - T) / T;
             worst = d > worst || isnan(d) ? d : worst;
@@ -124,13 +140,11 @@ static void radius_rounded_down(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
+        if (family_model(k, &b, &m) != 0)
             continue;
         for (int j = 0; j < 4; j++, n++) {
-            const double s = 0.25 + j;
-            const double w[2] = {s * (b.w0[0] - 0.3 * j * b.w0[1]), s * (b.w0[1] + 0.3 * j * b.w0[0])};
+            double w[2];
+            turned_state(&b, j, w);
             double c[3];
             majorant_coeffs(&m, w, c);
             const long double K = c[0], z0 = c[1] / (2.0L * K), be = sqrtl(z0 * z0 - c[2] / K);
@@ -187,12 +201,8 @@ static void tail_bound_against_ode(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0) {
-            CHECK(0, "%s: %s", b.name, err);
+        if (family_model(k, &b, &m) != 0)
             continue;
-        }
         const double rho = sus_step_taylor_radius(&m, b.w0);
         for (int j = 0; j < 5; j++) { /* j = 3, 4: the top orders, whose best R is the grid's last */
             const int p = j < 3 ? 8 + 4 * j : (j == 3 ? 28 : SUS_STEP_TAYLOR_MAX_ORDER);
@@ -246,16 +256,14 @@ static void double_root_case(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        char err[256];
         double w[2];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0 || !double_root_state(&m, w))
+        if (family_model(k, &b, &m) != 0 || !double_root_state(&m, w))
             continue;
         found++;
         const double rho = sus_step_taylor_radius(&m, w), T = radius_by_quadrature(&m, w);
         const double dr = fabs(rho - T) / T, h = 0.35 * rho;
-        const double dt = fabs(sus_step_taylor_tail_bound(12, &m, h, w) - tail_bound_by_ode(12, &m, h, w)) /
-                          tail_bound_by_ode(12, &m, h, w);
+        const double want = tail_bound_by_ode(12, &m, h, w);
+        const double dt = fabs(sus_step_taylor_tail_bound(12, &m, h, w) - want) / want;
         wr = dr > wr || isnan(dr) ? dr : wr;
         wt = dt > wt || isnan(dt) ? dt : wt;
     }
@@ -273,9 +281,7 @@ static void refused_beyond_radius(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
+        if (family_model(k, &b, &m) != 0)
             continue;
         const double n = hypot(b.w0[0], b.w0[1]), w[3] = {3.0 * b.w0[0] / n, 3.0 * b.w0[1] / n, 0.0};
         const double rho = sus_step_taylor_radius(&m, w);
