@@ -499,6 +499,8 @@ def main():
     ap.add_argument("--new-only", action="store_true", help="with --resume: run only mutants the log lacks "
                     "(its survivors wait for a --survivors run, once their tests are written)")
     ap.add_argument("--only", default="", help="run only the mutants whose label holds this text")
+    ap.add_argument("--shard", default="", help="K/N: run only every N-th mutant to run, from the K-th "
+                    "(0-based), so that N workers can share one file and one log")
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
     ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
     ap.add_argument("--list", action="store_true")
@@ -527,6 +529,9 @@ def main():
             if (a.only in l if a.only else done.get(l, ("survived",))[0] == "survived")
             and not (a.new_only and l in done)
             and (not a.survivors or done.get(l, ("",))[0] == "survived")]
+    if a.shard:
+        k, n = (int(x) for x in a.shard.split("/"))
+        todo = todo[k::n]
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # so that the scratch copy goes too
     sc = Scratch(os.getcwd())
     try:
