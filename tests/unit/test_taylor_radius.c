@@ -87,15 +87,20 @@ static double radius_by_quadrature(const sus_model *m, const double w[2])
     return T;
 }
 
-/* Body k of the family and its model; a body the model refuses is a failed check. */
-static int family_model(int k, body *b, sus_model *m)
+/* A body's model, and body k of the family and its model; a body the model refuses is a failed check. */
+static int family_model_of(const body *b, sus_model *m)
 {
     char err[256];
-    body_get(k, b);
     if (sus_model_init(m, b->I, err, sizeof err) == 0)
         return 0;
     CHECK(0, "%s: %s", b->name, err);
     return -1;
+}
+
+static int family_model(int k, body *b, sus_model *m)
+{
+    body_get(k, b);
+    return family_model_of(b, m);
 }
 
 /* State j = 0 .. 3 of a body: its w0 turned by atan(0.3 j) and scaled to 0.25 + j of its size and
@@ -297,6 +302,58 @@ static void refused_beyond_radius(void)
           "1 + 1e-9 times it is refused (DIVERGED) on %d of %d bodies", ok, BODIES_COUNT);
 }
 
+/* The top right singular vector of (ContDyn)'s matrix A = [-I12 -I22; I11 I21] / |I_m| (the
+ * eigenvector of the largest eigenvalue of A^T A, in closed form) and ||A||, from the printed entries. */
+static double top_singular(const double I[9], double v[2])
+{
+    const double d = I[0] * I[4] - I[1] * I[3];
+    const double A[2][2] = {{-I[1] / d, -I[4] / d}, {I[0] / d, I[3] / d}};
+    const double p = A[0][0] * A[0][0] + A[1][0] * A[1][0], r = A[0][1] * A[0][1] + A[1][1] * A[1][1];
+    const double q = A[0][0] * A[0][1] + A[1][0] * A[1][1];
+    const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
+    /* (lam - r, q) and (q, lam - p) both solve it; the longer one is the better conditioned */
+    const int first = fabs(lam - r) >= fabs(lam - p);
+    const double x = first ? lam - r : q, y = first ? q : lam - p;
+    v[0] = x / hypot(x, y);
+    v[1] = y / hypot(x, y);
+    return sqrt(lam);
+}
+
+/* The cheap test K |w| |h| < 1 accepts a step without the radius because rho >= 1/(K |w|) (F <= K |w|^2,
+ * L <= 2 K |w|), with equality when b = (I31, I32) and w both lie along A's top right singular vector:
+ * there F = K |w|^2, beta = 0 and rho = 1/(K |w|). On each body turned so (b set to |b| v), at w = 3 v, the
+ * radius is 1/(K |w|) within [1 - 1e-12 - 1e-13, 1 + 1e-13] (its rounding-down margin and a few u); a step
+ * of 0.99 rho runs and one of 1 + 1e-9 times rho is refused, so the cheap test has no slack to give. */
+static void cheap_test_tight(void)
+{
+    int ok = 0;
+    double worst = 0.0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        double v[2];
+        body_get(k, &b);
+        const double nA = top_singular(b.I, v), nb = hypot(b.I[6], b.I[7]);
+        b.I[6] = nb * v[0];
+        b.I[7] = nb * v[1];
+        if (family_model_of(&b, &m) != 0)
+            continue;
+        const double w[3] = {3.0 * v[0], 3.0 * v[1], 0.0}, cheap = 1.0 / (nb * nA * 3.0);
+        const double rho = sus_step_taylor_radius(&m, w), d = rho / cheap - 1.0;
+        worst = fabs(d) > fabs(worst) || isnan(d) ? d : worst;
+        double wn[3], lam;
+        sus_stepper_stats st;
+        sus_attitude a;
+        sus_attitude_identity(&a);
+        const int in = sus_step_taylor_apply_full(16, &m, 0.99 * rho, &a, w, wn, &lam, &st);
+        const int out = sus_step_taylor_apply_full(16, &m, (1.0 + 1e-9) * rho, &a, w, wn, &lam, &st);
+        ok += in == SUS_STEPPER_OK && out == SUS_STEPPER_DIVERGED && d >= -1.1e-12 && d <= 1e-13;
+    }
+    CHECK(ok == BODIES_COUNT, "b and w along A's top singular vector (rho = 1/(K |w|)), on %d of %d bodies: "
+          "radius against 1/(K |w|) %.3g (in [-1.1e-12, 1e-13]); 0.99 rho runs, (1 + 1e-9) rho is refused",
+          ok, BODIES_COUNT, worst);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -304,6 +361,7 @@ int main(void)
     radius_rounded_down();
     double_root_case();
     refused_beyond_radius();
+    cheap_test_tight();
     tail_bound_against_ode();
     /* the paper's body from its w(0) and from 1e-6 off its steady rotation c(w) = 0 (where the
      * proved radius grows like log(1/|f(w)|)), and two general bodies */
