@@ -1,8 +1,7 @@
 /* The exact run (src/core/exact_run.c): its closed-form tail R(t) = R(t_s) exp((t - t_s) w*^)
  * against the reference integration carried all the way, on the paper's body and the seeded general
  * bodies (tests/unit/bodies.h), its rows and its error convention. */
-#include "bodies.h"
-#include "check.h"
+#include "check_body.h"
 #include "exact_run.h"
 #include "mat3.h"
 #include "refattitude.h"
@@ -37,8 +36,8 @@ static int stop_at_first(void *vctx, const sus_row *r)
 static void tail_vs_reference(const body *b)
 {
     sus_model m;
-    char err[256];
-    sus_model_init(&m, b->I, err, sizeof err);
+    if (check_body_model(b, &m) != 0)
+        return;
     sus_exact ex;
     sus_exact_init(&ex, &m, b->w0);
     double wstar[2];

@@ -2,8 +2,7 @@
  * reconstruction (matrix and quaternion forms), quaternion <-> rotation, one Taylor step, one
  * composition step's energy, and the long-double reference attitude against an independent
  * computation; the steps on the paper's body and on the seeded general bodies (tests/unit/bodies.h). */
-#include "bodies.h"
-#include "check.h"
+#include "check_body.h"
 #include "composition.h"
 #include "exact.h"
 #include "magnus4.h"
@@ -120,8 +119,8 @@ static double radius(const sus_exact *ex)
 static void steps(const body *b)
 {
     sus_model m;
-    char err[128];
-    sus_model_init(&m, b->I, err, sizeof err);
+    if (check_body_model(b, &m) != 0)
+        return;
     sus_exact ex;
     sus_exact_init(&ex, &m, b->w0);
     const double w0[3] = {ex.w0[0], ex.w0[1], 0.0}, rho = radius(&ex), wn = hypot(w0[0], w0[1]);

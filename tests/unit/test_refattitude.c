@@ -2,8 +2,7 @@
  * is not of unit length, as the long-double integration leaves it after a long run, and a stretch
  * too long to integrate, which gives no answer rather than a wrong one. Its accuracy is tested in
  * test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
-#include "bodies.h"
-#include "check.h"
+#include "check_body.h"
 #include "mat3.h"
 #include "refattitude.h"
 #include "so3.h"
@@ -90,8 +89,8 @@ int main(void)
         body b;
         body_get(k, &b);
         sus_model m;
-        char err[256];
-        sus_model_init(&m, b.I, err, sizeof err);
+        if (check_body_model(&b, &m) != 0)
+            continue;
         sus_exact ex;
         sus_exact_init(&ex, &m, b.w0);
         start_from_w0(&m, &ex, b.name);

@@ -7,8 +7,7 @@
  * (kappa = the condition number of I_m) to first order, so (2 + kappa) tail bounds the error with
  * room for the second order; 1e-14 |w| covers the rounding of a sum of at most 17 terms of size
  * at most |w| (17 u |w|) and of the scaling. */
-#include "bodies.h"
-#include "check.h"
+#include "check_body.h"
 #include "exact.h"
 #include "taylor.h"
 
@@ -87,20 +86,11 @@ static double radius_by_quadrature(const sus_model *m, const double w[2])
     return T;
 }
 
-/* A body's model, and body k of the family and its model; a body the model refuses is a failed check. */
-static int family_model_of(const body *b, sus_model *m)
-{
-    char err[256];
-    if (sus_model_init(m, b->I, err, sizeof err) == 0)
-        return 0;
-    CHECK(0, "%s: %s", b->name, err);
-    return -1;
-}
-
+/* Body k of the family and its model (a refused body is a failed check). */
 static int family_model(int k, body *b, sus_model *m)
 {
     body_get(k, b);
-    return family_model_of(b, m);
+    return check_body_model(b, m);
 }
 
 /* State j = 0 .. 3 of a body: its w0 turned by atan(0.3 j) and scaled to 0.25 + j of its size and
@@ -336,7 +326,7 @@ static void cheap_test_tight(void)
         const double nA = top_singular(b.I, v), nb = hypot(b.I[6], b.I[7]);
         b.I[6] = nb * v[0];
         b.I[7] = nb * v[1];
-        if (family_model_of(&b, &m) != 0)
+        if (check_body_model(&b, &m) != 0)
             continue;
         const double w[3] = {3.0 * v[0], 3.0 * v[1], 0.0}, cheap = 1.0 / (nb * nA * 3.0);
         const double rho = sus_step_taylor_radius(&m, w), d = rho / cheap - 1.0;
