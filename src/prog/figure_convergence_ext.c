@@ -38,12 +38,13 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 
 int main(int argc, char **argv)
 {
-    /* No reference slopes (the curves fill the panels' lower right and the legend their upper
-     * left) and no legend slopes (over the paper's window these methods are at round-off, and a
-     * slope fitted to round-off means nothing). */
+    /* No reference slopes (the curves fill the panels' lower right, and their upper left at small
+     * eps, where any legend would hide them: it goes above the panels) and no legend slopes (over
+     * the paper's window these methods are at round-off, and a slope fitted to round-off means
+     * nothing). */
     const sus_plot_conv_figure_spec spec = {
         .name = "convergence_ext", .select = extension_or_baseline,
         .solid = SUS_RECON_EXP_MID, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
-        .slope_drop = 1.0, .legend_corner = 0, .legend_slopes = 0, .caption = caption};
+        .slope_drop = 1.0, .legend_corner = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0, .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);
 }
