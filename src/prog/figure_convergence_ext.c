@@ -26,7 +26,7 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "SO(3): solid, exp-mid (the Taylor methods advance their own quaternion whatever is asked); "
         "dashed,\n"
         "cayley-mid.\n"
-        "The legends give no slopes: over the paper's window eps <= 2^-2 these methods are at "
+        "The legend (above the panels) gives no slopes: over the paper's window eps <= 2^-2 these methods are at "
         "round-off. Their\n"
         "orders are fitted in the claims ledger (tests/ledger/claims_highorder.c, at t = 50 over each "
         "method's "
