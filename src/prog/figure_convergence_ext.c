@@ -26,8 +26,8 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "SO(3): solid, exp-mid (the Taylor methods advance their own quaternion whatever is asked); "
         "dashed,\n"
         "cayley-mid.\n"
-        "The legend (above the panels) gives no slopes: over the paper's window eps <= 2^-2 these methods are at "
-        "round-off. Their\n"
+        "The legend (above the panels) gives no slopes: over the paper's window eps <= 2^-2 these "
+        "methods are at round-off. Their\n"
         "orders are fitted in the claims ledger (tests/ledger/claims_highorder.c, at t = 50 over each "
         "method's "
         "own step\n"
@@ -45,6 +45,7 @@ int main(int argc, char **argv)
     const sus_plot_conv_figure_spec spec = {
         .name = "convergence_ext", .select = extension_or_baseline,
         .solid = SUS_RECON_EXP_MID, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
-        .slope_drop = 1.0, .legend_corner = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0, .caption = caption};
+        .slope_drop = 1.0, .legend_corner = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0,
+        .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);
 }

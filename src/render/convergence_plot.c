@@ -336,5 +336,6 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, CONV_H + strip_height(f), draw, f, cap) != 0;
+    const double height = CONV_H + strip_height(f);
+    return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, height, draw, f, cap) != 0;
 }
