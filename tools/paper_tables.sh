@@ -126,7 +126,8 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
 # cited_lines.tex: the ledger lines the companion's text quotes (by \texttt{id}, id-* or one of the
 # id's macros, \FigTwoAccuracy for fig2-accuracy) that Table 1 leaves out, being extensions, so
 # that every line the text cites is in Appendix A. A \texttt{...-...} that names no ledger line
-# (a stale citation) fails the build.
+# (a stale citation) fails the build. Each cell is the ledger's own macro (numbers.tex), so that the
+# table and the text print a measured value to one precision.
 head_row "$O/cited_lines.tex" 'The lines of our own that the text quotes: extensions, controls and readings, which test no statement of the paper and so are not in Table~\ref{tab:summary}. $m$: measured.' \
     tab:cited '>{\raggedright}p{0.52\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.2\linewidth} >{\raggedright\arraybackslash}p{0.08\linewidth}' \
     'line (test file) & measured $m$ & test & verdict'
@@ -134,10 +135,6 @@ perl -e '
 sub macro { my @w = qw(Zero One Two Three Four Five Six Seven Eight Nine); my ($o, $up) = ("", 1);
     for my $c (split //, shift) { if ($c =~ /\d/) { $o .= $w[$c]; $up = 1 }
         elsif ($c =~ /[A-Za-z]/) { $o .= $up ? uc $c : $c; $up = 0 } else { $up = 1 } } $o }
-sub num { my $v = sprintf "%.4g", shift; $v =~ s/e([-+]?)0*(\d+)$/"\\times10^{" . ($1 eq "-" ? "-" : "") . "$2}"/e;
-    $v =~ s/^1\\times//; $v }
-sub test { my $t = shift; $t =~ s/^(<=|>=)/x $1/; $t =~ s/([0-9.]+(?:e[-+]?\d+)?)/num($1)/ge;
-    $t =~ s/\bx\b/m/g; $t =~ s/ - /-/g; $t =~ s/ ?<= ?/\\le /g; $t =~ s/ ?>= ?/\\ge /g; "\$$t\$" }
 my ($claims, $summary, $tex) = @ARGV;
 open my $f, "<", $claims or die; my @h = split /\t/, scalar <$f>; chomp @h;
 my %col; @col{@h} = 0 .. $#h; my (@ids, %row);
@@ -155,7 +152,8 @@ for my $id (grep { $cited{$_} } @ids) {
     next if grep { (my $p = $_) =~ s/\*$//; /\*$/ ? index($id, $p) == 0 : $_ eq $id } @in_table;
     my $c = $row{$id}; (my $shown = $id) =~ s/-/-\\allowbreak{}/g;
     my $src = $c->[$col{source}] // ""; (my $file = $src) =~ s/:\d+$//; (my $srct = $src) =~ s/_/\\_/g;
-    printf "\\texttt{%s} {\\scriptsize\\href{../%s}{\\texttt{%s}}} & \$%s\$ & %s & %s\\\\\n", $shown, $file, $srct,
-        num($c->[$col{measured}]), test($c->[$col{test}]), $c->[$col{verdict}] }
+    my $m = macro($id);
+    printf "\\texttt{%s} {\\scriptsize\\href{../%s}{\\texttt{%s}}} & \$\\%s\$ & \\%sTest & \\%sVerdict\\\\\n", $shown, $file,
+        $srct, $m, $m, $m }
 exit($bad ? 1 : 0)' "$C" "$S" paper/companion.tex >>"$O/cited_lines.tex"
 printf '%s\n' '\end{longtable}' >>"$O/cited_lines.tex"

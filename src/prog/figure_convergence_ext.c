@@ -26,8 +26,8 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "SO(3): solid, exp-mid (the Taylor methods advance their own quaternion whatever is asked); "
         "dashed,\n"
         "cayley-mid.\n"
-        "The legends give no slopes: over the paper's window eps <= 2^-2 these methods are at "
-        "round-off. Their\n"
+        "The legend (above the panels) gives no slopes: over the paper's window eps <= 2^-2 these "
+        "methods are at round-off. Their\n"
         "orders are fitted in the claims ledger (tests/ledger/claims_highorder.c, at t = 50 over each "
         "method's "
         "own step\n"
@@ -38,12 +38,14 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 
 int main(int argc, char **argv)
 {
-    /* No reference slopes (the curves fill the panels' lower right and the legend their upper
-     * left) and no legend slopes (over the paper's window these methods are at round-off, and a
-     * slope fitted to round-off means nothing). */
+    /* No reference slopes (the curves fill the panels' lower right, and their upper left at small
+     * eps, where any legend would hide them: it goes above the panels) and no legend slopes (over
+     * the paper's window these methods are at round-off, and a slope fitted to round-off means
+     * nothing). */
     const sus_plot_conv_figure_spec spec = {
         .name = "convergence_ext", .select = extension_or_baseline,
         .solid = SUS_RECON_EXP_MID, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
-        .slope_drop = 1.0, .legend_corner = 0, .legend_slopes = 0, .caption = caption};
+        .slope_drop = 1.0, .legend_corner = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0,
+        .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);
 }

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 
 /* The width of the text block at the page's figure scale; the caption carries the title. */
-#define FIG_W 540.0
+#define FIG_W 560.0 /* panel (c) as wide as its two-column legend */
 #define FIG_H 480.0
 #define LEGEND_COLS 2 /* panel (c)'s legend, above its lines */
 #define EPS_A 4.0     /* explicit Euler at h = eps k = 0.58: its steps visibly leave the exact curve */

@@ -21,8 +21,10 @@ typedef struct {
     double *limit;
 } stab_fig;
 
-/* Panels two to a row, 240 points high, over the legend; the caption carries the title. */
-#define PANEL_H 240.0
+/* Panels two to a row, 170 points high, over the legend; the caption carries the title. The
+ * companion prints the map in two halves of four and three rows, and at this height each half fits
+ * a float page at the print scale that keeps its labels legible (SUS_PLOT_PRINT_SCALE). */
+#define PANEL_H 170.0
 static double fig_height(int nm) { return 40.0 + PANEL_H * ((nm + 1) / 2); }
 
 static const double CLASS_RGB[SUS_EXP_STAB_NCLASS][3] = {
@@ -48,7 +50,7 @@ static void draw(cairo_t *cr, void *vctx)
                           CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
         char title[96];
         snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", sus_step_method_get(m)->type->name);
-        sus_plot_frame(&ax, title, "initial angle \xce\xb8\xe2\x82\x80 (degrees)", letter);
+        sus_plot_frame(&ax, title, "\xce\xb8\xe2\x82\x80 (degrees)", letter);
         if (isfinite(f->limit[m])) {
             const double lx[2] = {f->limit[m], f->limit[m]}, ly[2] = {0.0, 360.0};
             const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 1, SUS_PLOT_NONE, 0, NULL);

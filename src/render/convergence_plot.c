@@ -86,13 +86,22 @@ static void slope_text(const double *eps, const double *err, int nj, double size
 /* The factor in y that FAN_LABEL_PT spans in log axes ax: how far each next slope ends lower. */
 static double fan_gap(const sus_plot_axes *ax) { return pow(ax->y1 / ax->y0, FAN_LABEL_PT / ax->h); }
 
+/* The largest eps of the grid below x (x itself if none): a curve's segment that reaches into
+ * [x, ...] starts there. */
+static double grid_below(const double *eps, int nj, double x)
+{
+    double b = 0.0;
+    for (int j = 0; j < nj; j++)
+        b = eps[j] < x ? fmax(b, eps[j]) : b;
+    return b > 0.0 ? b : x;
+}
+
 /* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
- * above every curve in their eps range and a lower-right legend (at most LEGEND_SPAN of the
- * width) sits under every curve it covers: neither may hide a curve. */
-#define LEGEND_SPAN 0.66
+ * above every curve in their eps range and a lower-right legend of legend_rows lines, legend_w
+ * points wide, sits under every curve it covers, segments included: neither may hide a curve. */
 static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int what, int idx,
                       const double *eps, int nj, double lo, double hi, double top, const int *slopes,
-                      int nslopes, int legend_rows)
+                      int nslopes, int legend_rows, double legend_w)
 {
     int smax = 0;
     for (int s = 0; s < nslopes; s++)
@@ -107,8 +116,9 @@ static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f
         const int fan_ok = nslopes == 0 || fan_data <= 0.03 * fan_low; /* room for the labels */
         /* the legend's top edge as a fraction of the height, with a marker of room */
         const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
-        const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - LEGEND_SPAN) * (log10(ax->x1) - log10(ax->x0)));
-        const double under = extreme_in(f, what, eps, nj, x_leg, INFINITY, 0);
+        const double span = fmin(1.0, (legend_w + 4.0) / ax->w);
+        const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - span) * (log10(ax->x1) - log10(ax->x0)));
+        const double under = extreme_in(f, what, eps, nj, grid_below(eps, nj, x_leg), INFINITY, 0);
         const int leg_ok =
             f->spec->legend_corner != 3 || !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
         if (fan_ok && leg_ok)
@@ -120,6 +130,45 @@ static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f
     }
 }
 
+/* The legend of panel `what`: one entry per curve (with its fitted slopes when the figure says so),
+ * then on SO(3) the two reconstructions' line styles, then the reference slopes if any. labels holds
+ * the texts (nmethod + 2 of them). Returns the number of entries. */
+static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps, int nj, double size,
+                        int nslopes, char (*labels)[96], sus_plot_style *leg)
+{
+    const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0;
+    int nleg = 0;
+    for (int m = 0; m < nm; m++) {
+        if (!f->spec->select(sus_step_method_get(m)))
+            continue;
+        /* the legend carries the least-squares slope over the ledger's window: of the solid
+         * curve, and on SO(3) of the dashed one after it */
+        char sl[32], sd[48] = "";
+        slope_text(eps, curve(f, m, what, f->spec->solid) + j0, nj, size, sl, sizeof sl);
+        if (so3) {
+            char t[32];
+            slope_text(eps, curve(f, m, what, f->spec->dashed) + j0, nj, size, t, sizeof t);
+            snprintf(sd, sizeof sd, ", dashed %s", t);
+        }
+        const char *name = sus_step_method_get(m)->type->name;
+        if (!f->spec->legend_slopes)
+            snprintf(labels[m], sizeof labels[m], "%s", name);
+        else
+            snprintf(labels[m], sizeof labels[m], "%s, slope %s%s", name, sl, sd);
+        leg[nleg] = method_style(m, 0, 1);
+        leg[nleg++].label = labels[m];
+    }
+    if (so3) {
+        snprintf(labels[nm], sizeof labels[nm], "solid: %s", SUS_RECON_NAMES[f->spec->solid]);
+        snprintf(labels[nm + 1], sizeof labels[nm + 1], "dashed: %s", SUS_RECON_NAMES[f->spec->dashed]);
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 0, SUS_PLOT_NONE, 0, labels[nm]);
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, labels[nm + 1]);
+    }
+    if (nslopes)
+        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, "reference slopes");
+    return nleg;
+}
+
 /* One log-log panel of curve `what` (and, for SO(3), the cayley-mid curves dashed) with reference
  * slopes anchored under the data at eps = 2^-2. */
 static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, const char *ylabel,
@@ -128,7 +177,7 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0, nj = NJ - f->j0;
     const int global = what == GLOB_W || what == GLOB_SO3 || what == GLOB_LAMBDA;
     const double *eps = (global ? f->c.glob_eps : f->c.eps) + j0;
-    char (*labels)[96] = calloc((size_t)nm, sizeof *labels);
+    char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (!labels || !leg) {
         free(labels);
@@ -144,50 +193,23 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
             sus_plot_extend(&lo, &hi, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, 1);
     }
     lo = fmax(lo, 1e-17);
-    int nsel = 0;
-    for (int m = 0; m < nm; m++)
-        nsel += f->spec->select(sus_step_method_get(m)) != 0;
+    const int nleg = panel_legend(f, what, eps, nj, size, nslopes, labels, leg);
+    const int inside = f->spec->legend_corner != SUS_PLOT_CONV_LEGEND_ABOVE;
     sus_plot_axes ax;
-    room_axes(&ax, cr, f, what, idx, eps, nj, lo, hi, top, slopes, nslopes, nsel + 2 * so3 + (nslopes > 0));
+    room_axes(&ax, cr, f, what, idx, eps, nj, lo, hi, top, slopes, nslopes, inside ? nleg : 0,
+              inside ? sus_plot_legend_width(cr, leg, nleg) : 0.0);
     sus_plot_frame(&ax, "\xce\xb5", ylabel, letter);
-    int nleg = 0;
-    for (int m = 0; m < nm; m++) {
+    for (int m = 0, k = 0; m < nm; m++) {
         if (!f->spec->select(sus_step_method_get(m)))
             continue;
         const double *err = curve(f, m, what, f->spec->solid) + j0;
-        /* the legend carries the least-squares slope over the ledger's window: of the solid
-         * curve, and on SO(3) of the dashed one after it */
-        char sl[32], sd[48] = "";
-        slope_text(eps, err, nj, size, sl, sizeof sl);
-        if (so3) {
-            char t[32];
-            slope_text(eps, curve(f, m, what, f->spec->dashed) + j0, nj, size, t, sizeof t);
-            snprintf(sd, sizeof sd, ", dashed %s", t);
-        }
-        const char *name = sus_step_method_get(m)->type->name;
-        if (!f->spec->legend_slopes)
-            snprintf(labels[m], sizeof labels[m], "%s", name);
-        else
-            snprintf(labels[m], sizeof labels[m], "%s, slope %s%s", name, sl, sd);
-        leg[nleg] = method_style(m, 0, 1);
-        leg[nleg].label = labels[m];
-        sus_plot_series(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
-        sus_plot_markers(&ax, eps, err, (size_t)nj, 1, &leg[nleg]);
-        nleg++;
+        sus_plot_series(&ax, eps, err, (size_t)nj, 1, &leg[k]);
+        sus_plot_markers(&ax, eps, err, (size_t)nj, 1, &leg[k++]);
         if (so3) {
             const sus_plot_style d = method_style(m, 1, 0);
             sus_plot_series(&ax, eps, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, &d);
         }
     }
-    char dashed[48], solid[48];
-    snprintf(dashed, sizeof dashed, "dashed: %s", SUS_RECON_NAMES[f->spec->dashed]);
-    snprintf(solid, sizeof solid, "solid: %s", SUS_RECON_NAMES[f->spec->solid]);
-    if (so3) {
-        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 0, SUS_PLOT_NONE, 0, solid);
-        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, dashed);
-    }
-    if (nslopes)
-        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, "reference slopes");
     /* reference slopes where the figure has room for them, `top` under the panel's top, each
      * next one a label lower */
     for (int s = 0; s < nslopes; s++) {
@@ -196,7 +218,34 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
         sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + FAN_STEPS], f->c.eps[f->spec->slope_j],
                        ax.y1 * top * f->spec->slope_drop / pow(fan_gap(&ax), s), slopes[s], lab);
     }
-    sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
+    if (inside)
+        sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
+    free(labels);
+    free(leg);
+}
+
+/* A figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS columns in a strip above the
+ * panels: the curves' names and the reconstructions' line styles. The strip's height, 0 without. */
+#define STRIP_COLS 6
+static double strip_height(const sus_plot_conv_fig *f)
+{
+    if (f->spec->legend_corner != SUS_PLOT_CONV_LEGEND_ABOVE)
+        return 0.0;
+    int n = 2;
+    for (int m = 0; m < f->c.nmethod; m++)
+        n += f->spec->select(sus_step_method_get(m)) != 0;
+    return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
+}
+
+static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
+{
+    const int nm = f->c.nmethod;
+    char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
+    sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
+    if (labels && leg) {
+        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_EXP_SIZE_R, 0, labels, leg);
+        sus_plot_legend_packed(cr, 64.0, 6.0, leg, n, STRIP_COLS);
+    }
     free(labels);
     free(leg);
 }
@@ -204,6 +253,10 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
 static void draw(cairo_t *cr, void *vctx)
 {
     const sus_plot_conv_fig *f = vctx;
+    if (strip_height(f) > 0.0) {
+        draw_strip(cr, f);
+        cairo_translate(cr, 0.0, strip_height(f));
+    }
     const int *s_loc = f->spec->slopes_local, *s_glob = f->spec->slopes_global, ns = f->spec->nslopes;
     const int *s_so3loc = f->spec->slopes_so3_local, *s_so3glob = f->spec->slopes_so3_global,
               nso3 = f->spec->nslopes_so3;
@@ -283,5 +336,6 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, CONV_H, draw, f, cap) != 0;
+    const double height = CONV_H + strip_height(f);
+    return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, height, draw, f, cap) != 0;
 }

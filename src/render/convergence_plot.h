@@ -16,6 +16,7 @@ typedef struct {
     double o0max;   /* max |O_0| over the t_k: the variational multiplier's plateau */
 } sus_plot_conv_fig;
 
+#define SUS_PLOT_CONV_LEGEND_ABOVE (-1)
 struct sus_plot_conv_figure_spec {
     const char *name;                          /* figures/NAME.*, data/NAME.csv */
     int (*select)(const sus_step_method *me);    /* the registered methods it draws */
@@ -27,7 +28,8 @@ struct sus_plot_conv_figure_spec {
     int nslopes_so3;
     int slope_j;          /* the reference slopes run from eps[slope_j + 3] to eps[slope_j] ... */
     double slope_drop;    /* ... ending this factor under the panel's top */
-    int legend_corner;    /* sus_plot_legend's corner */
+    int legend_corner;    /* sus_plot_legend's corner; SUS_PLOT_CONV_LEGEND_ABOVE: one legend for the
+                           * whole figure, in a strip above its panels, where it hides no curve */
     int legend_slopes;    /* 1: each legend entry gives the slope fitted over the paper's window */
     void (*caption)(char *buf, size_t len, const sus_plot_conv_fig *f);
 };

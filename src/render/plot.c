@@ -21,12 +21,12 @@ const double SUS_PLOT_RED[3] = {0.85, 0.15, 0.10}, SUS_PLOT_BLUE[3] = {0.12, 0.3
              SUS_PLOT_PURPLE[3] = {0.55, 0.25, 0.70}, SUS_PLOT_GREY[3] = {0.45, 0.45, 0.45},
              SUS_PLOT_BLACK[3] = {0.0, 0.0, 0.0};
 
-#define TICK_FONT 8.0
+#define TICK_FONT SUS_PLOT_MIN_FONT
 #define LABEL_FONT 10.0
 #define LEGEND_ROW 11.0 /* a legend line, and the padding of its box */
 #define LEGEND_PAD 4.0
 #define LEGEND_SAMPLE 18.0
-#define LEGEND_FONT 8.0
+#define LEGEND_FONT SUS_PLOT_MIN_FONT
 
 sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
                          const char *label)
@@ -137,11 +137,12 @@ static int script_of(const char *s, char *ascii, int *shift)
     return 0;
 }
 
-/* Sets one piece of text at (x, y) (baseline) when draw is set; returns its advance. */
+/* Sets one piece of text at (x, y) (baseline) when draw is set; returns its advance. No piece is
+ * set below the smallest size that stays legible in print. */
 static double piece(cairo_t *cr, double x, double y, const char *text, double size, int draw)
 {
     cairo_text_extents_t te;
-    cairo_set_font_size(cr, size);
+    cairo_set_font_size(cr, fmax(size, SUS_PLOT_MIN_FONT));
     cairo_text_extents(cr, text, &te);
     if (draw) {
         cairo_move_to(cr, x, y);
@@ -191,9 +192,8 @@ static double text_width(cairo_t *cr, const char *text, double size)
     return label_runs(cr, 0.0, 0.0, text, size, 0);
 }
 
-/* "10" with a raised exponent, aligned like sus_plot_text. The exponent keeps the tick size: the
- * figures print at 7/8 of their size in the companion, and 8 pt is the smallest that stays at
- * 7 pt there. */
+/* "10" with a raised exponent, aligned like sus_plot_text. The exponent keeps the tick size, the
+ * smallest that stays legible in print (SUS_PLOT_MIN_FONT). */
 static void power_label(cairo_t *cr, double x, double y, int e, double halign, double valign)
 {
     char ex[16];
@@ -435,8 +435,8 @@ void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, dou
     cairo_restore(cr);
 }
 
-/* The width of a legend box: its sample, its longest label and the padding. */
-static double legend_width(cairo_t *cr, const sus_plot_style *st, int n)
+/* Its sample, its longest label and the padding. */
+double sus_plot_legend_width(cairo_t *cr, const sus_plot_style *st, int n)
 {
     double wmax = 0.0;
     for (int i = 0; i < n; i++)
@@ -454,7 +454,7 @@ void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, i
         rows += st[i].label != NULL;
     if (rows == 0)
         return;
-    const double bw = legend_width(cr, st, n), bh = rows * row + pad;
+    const double bw = sus_plot_legend_width(cr, st, n), bh = rows * row + pad;
     const double bx = corner % 2 ? ax->x + ax->w - bw - 4.0 : ax->x + 4.0;
     const double by = corner < 2   ? ax->y + 4.0
                       : corner < 4 ? ax->y + ax->h - bh - 4.0
@@ -506,7 +506,7 @@ void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_styl
         sus_plot_axes la; /* a box sized by its labels, starting at la.x (corner 0) */
         sus_plot_axes_init(&la, cr, x, y, 1, 1, 0, 1, 0, 1, 0, 0);
         sus_plot_legend(&la, st + c * per, k, 0);
-        x += legend_width(cr, st + c * per, k) + 6.0;
+        x += sus_plot_legend_width(cr, st + c * per, k) + 6.0;
     }
 }
 

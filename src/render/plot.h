@@ -10,6 +10,11 @@
 
 #define SUS_PLOT_FONT "DejaVu Sans"
 #define SUS_PLOT_PNG_DPI 150.0
+/* The companion prints a figure at SUS_PLOT_PRINT_SCALE of its size (\FigScale in
+ * paper/preamble.tex), and no text may print below 7 pt: so no text is drawn below
+ * SUS_PLOT_MIN_FONT, scripts included. tools/paper_fontsize.sh checks the printed PDFs. */
+#define SUS_PLOT_PRINT_SCALE 0.875
+#define SUS_PLOT_MIN_FONT (7.0 / SUS_PLOT_PRINT_SCALE)
 
 typedef struct {
     cairo_t *cr;
@@ -83,6 +88,8 @@ void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const su
  * labels; and the height of a legend of `rows` lines. */
 void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_style *st, int n, int ncol);
 double sus_plot_legend_height(int rows);
+/* The width of a legend box of these entries, as sus_plot_legend draws it. */
+double sus_plot_legend_width(cairo_t *cr, const sus_plot_style *st, int n);
 /* Whether the curve (x, ya), drawn first, hides under (x, yb): every point of it that the axes show
  * lies within tol points of yb's on the page. */
 int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb,

@@ -376,7 +376,8 @@ static void method_structure(const sus_step_method *me)
              "max |E - E0| over %ld steps of eps %g, %s (%d substeps), worst of %d bodies %s; "
              "bound 8 u N s E0",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
-    ledger_add_bound(id, ref, q, en.value, en.bound, 0, truth);
+    /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
+    ledger_add_bound(id, me->paper_ref ? "Fig. 1(f), (DSP)" : ref, q, en.value, en.bound, 0, truth);
 }
 
 void methods_claims(void)

@@ -2,7 +2,8 @@
  * every point it draws lies within the tolerance of the other's on the page. On log axes of 10
  * points per decade, a factor 1 + 1e-3 moves a point by 10 log10(1.001) = 0.004 pt (hidden at
  * 1.5 pt) and a factor 1.5 by 1.8 pt (not hidden); a point the other curve does not draw, or a curve
- * that draws nothing, is never hidden. */
+ * that draws nothing, is never hidden. No text, scripts included, is set below the size that prints
+ * at 7 pt. */
 #include "check.h"
 #include "plot.h"
 
@@ -35,6 +36,13 @@ int main(void)
     CHECK(sus_plot_hidden_under(&ax, x, gap, bgap, N, 1.5) == 0,
           "a point the other curve does not draw shows");
     CHECK(sus_plot_hidden_under(&ax, x, none, b, N, 1.5) == 0, "a curve that draws nothing is not hidden");
+    /* a script is set at the smallest printable size, not smaller: at the legend's size (that
+     * size) "x" with a subscript 1 is exactly as wide as "x1" */
+    const sus_plot_style sub = sus_plot_style_of(SUS_PLOT_BLACK, 1, 0, 0, 0, "x\xe2\x82\x81"),
+                         flat = sus_plot_style_of(SUS_PLOT_BLACK, 1, 0, 0, 0, "x1");
+    CHECK(fabs(sus_plot_legend_width(cr, &sub, 1) - sus_plot_legend_width(cr, &flat, 1)) < 1e-9,
+          "a legend's subscript prints at the smallest legible size (%g against %g pt)",
+          sus_plot_legend_width(cr, &sub, 1), sus_plot_legend_width(cr, &flat, 1));
     const double r1 = sus_plot_legend_height(2) - sus_plot_legend_height(1);
     CHECK(r1 > 0.0 && fabs(sus_plot_legend_height(3) - sus_plot_legend_height(2) - r1) < 1e-12,
           "a legend grows by one line height per row (%g pt)", r1);
