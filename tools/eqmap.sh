@@ -41,7 +41,7 @@ if [ "$mode" = tex ]; then
         for l in $declared; do
             printf '%s\n' "$impl" | awk -F'\t' -v l="$l" '$1 == l { printf "%s\t%s\n", $2, $3 }' | while IFS="$(printf '\t')" read -r f fn; do
                 printf '\\PaperRefOr{%s} & (\\textsf{%s}) & \\texttt{%s} & \\texttt{%s} & \\texttt{%s}\\\\\n' "$l" "$l" "$(echo "$f" | sed 's/_/\\_/g; s#/#/\\allowbreak{}#g')" "$(echo "$fn" | sed 's/_/\\_\\allowbreak{}/g')" \
-                    "$(tests_of "$l" | sed 's/_/\\_/g')"
+                    "$(tests_of "$l" | sed 's/_/\\_\\allowbreak{}/g')"
             done
         done
         printf '%s\n' '\bottomrule\end{longtable}'
