@@ -151,8 +151,8 @@ static void steps_within_radius(void)
         ops->free(wk);
     }
     CHECK(failed == 0 && worst <= 0.99 * (1.0 + 1e-15), "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, "
-          "on %d bodies and a near-singular I_m: %d steps, the longest %.4g of the proved radius (at most 0.99), %d runs failed", BODIES_COUNT,
-          n, worst, failed);
+          "on %d bodies and a near-singular I_m: %d steps, the longest %.4g of the proved radius (at most "
+          "0.99), %d runs failed", BODIES_COUNT, n, worst, failed);
 }
 
 int main(void)
