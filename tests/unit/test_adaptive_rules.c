@@ -1,0 +1,369 @@
+/* The rules taylor-adaptive states for itself (step_taylor_adaptive.c), each checked against its
+ * statement, not against the code:
+ *  - the order is the smallest even p in 6 .. 20 with p >= -ln(tol)/2 + 1 + 2 (Jorba & Zou's
+ *    -ln(tol)/2 + 1, two orders up): at each tol where the bound crosses an even integer, tol 1e-6
+ *    above it gives that order and 1e-6 below it the next (the bound moves by 5e-7 there);
+ *  - a step's error estimate (stats.residual) is max over the two groups, w rows and quaternion
+ *    rows, of T_p^2 / T_{p-1}, T_n = the largest entry of the group's coefficient n scaled by h^n.
+ *    The coefficients are computed here in long double from (ContDyn) and from q' = 1/2 q (x) (0, w),
+ *    dq(0) = 1; on every body of the family, from w0 and from w0 turned, at three tolerances and
+ *    three steps, the step's estimate matches to 1e-10 relative (the double recursion's rounding,
+ *    a few u times p per coefficient, tripled by the ratio, with room: the estimate only sizes
+ *    steps). A group's entry left out or a coefficient index off by one moves it by O(1). */
+#include "check_body.h"
+#include "driver.h"
+#include "reconstruct.h"
+#include "taylor.h"
+
+#include <math.h>
+
+typedef long double ld;
+#define NMAX 24
+
+static void order_rule(void)
+{
+    int bad = 0;
+    for (int p = 6; p <= 20; p += 2) {
+        const double tol = exp(-2.0 * (p - 3)); /* -ln(tol)/2 + 3 = p */
+        const int above = sus_step_taylor_adaptive_order(tol * (1.0 + 1e-6));
+        const int below = sus_step_taylor_adaptive_order(tol * (1.0 - 1e-6));
+        bad += above != p || below != (p < 20 ? p + 2 : 20);
+    }
+    const int loose = sus_step_taylor_adaptive_order(0.5), tight = sus_step_taylor_adaptive_order(1e-300);
+    CHECK(bad == 0 && loose == 6 && tight == 20,
+          "taylor-adaptive's order is the smallest even p in 6 .. 20 "
+          "with p >= -ln(tol)/2 + 3: %d of 8 boundaries off; tol 0.5 -> %d (6), 1e-300 -> %d (20)",
+          bad, loose, tight);
+}
+
+/* The largest entry of coefficient n of each group, scaled by h^n, up to order p. */
+static void group_sizes(const double I[9], const double w0[2], ld h, int p, ld Tw[], ld Tq[])
+{
+    const ld d = (ld)I[0] * I[4] - (ld)I[1] * I[3];
+    ld w[NMAX + 1][2] = {{w0[0], w0[1]}}, q[NMAX + 1][4] = {{1, 0, 0, 0}}, hn = 1;
+    for (int n = 0; n <= p; n++) {
+        if (n < p) {
+            ld f[2] = {0, 0}, g[4] = {0, 0, 0, 0};
+            for (int j = 0; j <= n; j++) {
+                const ld *a = w[n - j], c = (ld)I[6] * w[j][0] + (ld)I[7] * w[j][1]; /* I_3i w_i */
+                f[0] += c * (-(ld)I[1] * a[0] - (ld)I[4] * a[1]) / d;
+                f[1] += c * ((ld)I[0] * a[0] + (ld)I[3] * a[1]) / d;
+                const ld *Q = q[j];
+                g[0] += -Q[1] * a[0] - Q[2] * a[1];
+                g[1] += Q[0] * a[0] - Q[3] * a[1];
+                g[2] += Q[0] * a[1] + Q[3] * a[0];
+                g[3] += Q[1] * a[1] - Q[2] * a[0];
+            }
+            for (int k = 0; k < 2; k++) w[n + 1][k] = f[k] / (n + 1);
+            for (int k = 0; k < 4; k++) q[n + 1][k] = g[k] / (2 * (n + 1));
+        }
+        Tw[n] = fmaxl(fabsl(w[n][0]), fabsl(w[n][1])) * hn;
+        Tq[n] = fmaxl(fmaxl(fabsl(q[n][0]), fabsl(q[n][1])), fmaxl(fabsl(q[n][2]), fabsl(q[n][3]))) * hn;
+        hn *= h;
+    }
+}
+
+static ld group_estimate(ld last2, ld last)
+{
+    return last2 > 0 ? last * last / last2 : last;
+}
+
+/* |estimate - expected| / expected for one step from w; -1 if the step fails. */
+static double estimate_error(const sus_model *m, const double I[9], const double w0[2], double tol, double h)
+{
+    const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
+    sus_tol_work *wk = ops->alloc(m, tol, w0);
+    double w[3] = {w0[0], w0[1], 0.0}, t = 0.0, lam;
+    sus_attitude att;
+    sus_attitude_identity(&att);
+    sus_stepper_stats st;
+    const int rc = wk ? ops->step(wk, h, &t, w, &lam, &att, &st) : -1;
+    ops->free(wk);
+    if (rc != SUS_STEPPER_OK) return -1.0;
+    const int p = ops->order(tol);
+    ld Tw[NMAX + 1], Tq[NMAX + 1];
+    group_sizes(I, w0, st.det, p, Tw, Tq); /* st.det: the step taken */
+    const ld e = fmaxl(group_estimate(Tw[p - 1], Tw[p]), group_estimate(Tq[p - 1], Tq[p]));
+    return (double)(fabsl(st.residual - e) / e);
+}
+
+static void estimates(void)
+{
+    const double tols[3] = {1e-4, 1e-9, 1e-14}, steps[3] = {0.05, 0.4, 1.5};
+    double worst = 0.0;
+    int n = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) != 0) continue;
+        for (int j = 0; j < 2; j++) {
+            /* w0, and w0 turned by a quarter turn (the other component leads) */
+            const double w0[2] = {j ? -b.w0[1] : b.w0[0], j ? b.w0[0] : b.w0[1]};
+            for (int i = 0; i < 9; i++) {
+                const double d = estimate_error(&m, b.I, w0, tols[i / 3], steps[i % 3]);
+                worst = d > worst || d < 0.0 || isnan(d) ? (d < 0.0 ? INFINITY : d) : worst;
+                n++;
+            }
+        }
+    }
+    CHECK(worst <= 1e-10,
+          "taylor-adaptive's estimate is max over the w and quaternion rows of T_p^2/T_{p-1} "
+          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst relative difference %.2g (at most "
+          "1e-10)",
+          n, BODIES_COUNT, worst);
+}
+
+/* One step of taylor-adaptive from (t, w) towards t_end with a fresh workspace, or continuing wk. */
+static int one_step(sus_tol_work *wk, double t_end, double *t, double w[3], sus_stepper_stats *st)
+{
+    double lam;
+    sus_attitude att;
+    sus_attitude_identity(&att);
+    return sus_step_taylor_adaptive_type.tol->step(wk, t_end, t, w, &lam, &att, st);
+}
+
+/* The next step is h min(5, 0.9 (tol/err)^{1/(p+1)}) (Hairer, Norsett & Wanner I, II.4), read off
+ * the second step when it is accepted at once and no radius or interval end shortens it; and a
+ * rejected try is retried at h max(0.1, min(0.9, 0.9 (tol/err)^{1/(p+1)})), with err the estimate
+ * (computed here as in estimates()) of the first try, read off a step rejected once. Both to
+ * 1e-12 relative (pow's rounding and the estimate's, 1e-14, with room). */
+static void step_size_rules(void)
+{
+    const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
+    double wn = 0.0, wr = 0.0;
+    int nn = 0, nr = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) != 0) continue;
+        for (int j = 0; j < 2; j++) {
+            const double tol = j ? 1e-12 : 1e-6;
+            const int p = ops->order(tol);
+            sus_stepper_stats s1, s2;
+            double w[3] = {b.w0[0], b.w0[1], 0.0}, t = 0.0;
+            sus_tol_work *wk = ops->alloc(&m, tol, w);
+            if (!wk || one_step(wk, 1e3, &t, w, &s1) != SUS_STEPPER_OK) {
+                wn = INFINITY;
+                ops->free(wk);
+                continue;
+            }
+            const double want = s1.det * fmin(5.0, 0.9 * pow(tol / s1.residual, 1.0 / (p + 1)));
+            const double rho = sus_step_taylor_radius(&m, w);
+            if (one_step(wk, 1e3, &t, w, &s2) == SUS_STEPPER_OK && s2.iterations == 0 && want < 0.98 * rho) {
+                wn = fmax(wn, fabs(s2.det - want) / want);
+                nn++;
+            }
+            ops->free(wk);
+            /* a first try of 0.9 rho (the interval's end) at a tolerance it misses */
+            const double h0 = 0.9 * sus_step_taylor_radius(&m, b.w0);
+            ld Tw[NMAX + 1], Tq[NMAX + 1];
+            group_sizes(b.I, b.w0, h0, p, Tw, Tq);
+            const double e0 =
+                (double)fmaxl(group_estimate(Tw[p - 1], Tw[p]), group_estimate(Tq[p - 1], Tq[p]));
+            const double sh = fmax(0.1, fmin(0.9, 0.9 * pow(tol / e0, 1.0 / (p + 1))));
+            double w2[3] = {b.w0[0], b.w0[1], 0.0};
+            t = 0.0;
+            wk = ops->alloc(&m, tol, w2);
+            if (wk && e0 > tol && one_step(wk, h0, &t, w2, &s1) == SUS_STEPPER_OK && s1.iterations == 1) {
+                wr = fmax(wr, fabs(s1.det - h0 * sh) / (h0 * sh));
+                nr++;
+            }
+            ops->free(wk);
+        }
+    }
+    CHECK(nn >= BODIES_COUNT && wn <= 1e-12,
+          "taylor-adaptive's next step is h min(5, 0.9 (tol/err)^(1/(p+1))) "
+          "on %d second steps (at least %d): worst relative difference %.2g (at most 1e-12)",
+          nn, BODIES_COUNT, wn);
+    CHECK(
+        nr >= BODIES_COUNT && wr <= 1e-12,
+        "taylor-adaptive's retry is h max(0.1, min(0.9, 0.9 (tol/err)^"
+        "(1/(p+1)))) on %d steps rejected once (at least %d): worst relative difference %.2g (at most 1e-12)",
+        nr, BODIES_COUNT, wr);
+}
+
+/* Every accepted step stays inside 0.99 times the radius the series is proved to converge in at its
+ * start (sus_step_taylor_radius, checked against quadrature in test_taylor_radius), whatever the
+ * estimate allows: at tol 0.1 (order 6) and at tol 1e30, which no estimate exceeds, so that the
+ * radius alone limits the steps as they try to grow five-fold; |w| = 3 times each body's w0, over
+ * [0, 20]; the family and a body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap
+ * radius test K |w| h < 1 is then far from the bound a slip in K would give). */
+static void steps_within_radius(void)
+{
+    const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
+    double worst = 0.0;
+    int n = 0, failed = 0;
+    for (int i = 0; i < 2 * BODIES_COUNT + 2; i++) {
+        const int k = i / 2;
+        body b = {{1.0, 0.9, 0.3, 0.9, 1.0, 0.2, 0.1, 0.4, 1.0}, {0.3, -0.5}, "near-singular"};
+        sus_model m;
+        if (k < BODIES_COUNT) body_get(k, &b);
+        if (check_body_model(&b, &m) != 0) continue;
+        double w[3] = {3.0 * b.w0[0], 3.0 * b.w0[1], 0.0}, t = 0.0, lam;
+        sus_attitude att;
+        sus_attitude_identity(&att);
+        sus_tol_work *wk = ops->alloc(&m, i % 2 ? 1e30 : 0.1, w);
+        while (wk && t < 20.0 && n < 100000) {
+            const double rho = sus_step_taylor_radius(&m, w);
+            sus_stepper_stats st;
+            if (ops->step(wk, 20.0, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) {
+                failed++;
+                break;
+            }
+            worst = fmax(worst, st.det / rho);
+            n++;
+        }
+        failed += !wk;
+        ops->free(wk);
+    }
+    CHECK(failed == 0 && worst <= 0.99 * (1.0 + 1e-15),
+          "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, "
+          "on %d bodies and a near-singular I_m: %d steps, the longest %.4g of the proved radius (at most "
+          "0.99), %d runs failed",
+          BODIES_COUNT, n, worst, failed);
+}
+
+/* The unit top right singular vector of (ContDyn)'s A = [-I12 -I22; I11 I21] / |I_m| (the eigenvector
+ * of the largest eigenvalue of A^T A in closed form), from the printed entries. */
+static void top_singular(const double I[9], double v[2])
+{
+    const double d = I[0] * I[4] - I[1] * I[3];
+    const double a = -I[1] / d, b = -I[4] / d, c = I[0] / d, e = I[3] / d;
+    const double p = a * a + c * c, r = b * b + e * e, q = a * b + c * e;
+    const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
+    const int first = fabs(lam - r) >= fabs(lam - p);
+    const double x = first ? lam - r : q, y = first ? q : lam - p;
+    v[0] = x / hypot(x, y);
+    v[1] = y / hypot(x, y);
+}
+
+/* Where b and w lie along A's top singular vector the proved radius is exactly 1/(K |w|)
+ * (test_taylor_radius), so the cheap test K |w| h < 1 has no slack: a step proposed at 1 + 1e-7 or
+ * 1.2 times 1/(K |w|) must still be cut to 0.99 rho. On each body so turned, tol 1e30 (no estimate
+ * binds, the proposal is five times the first step), |w| = 0.25 and 4 (both components above 1 in
+ * size for some bodies), from a first state sized so that the proposal lands there. */
+static void cheap_test_window(void)
+{
+    const double ratio[2] = {1.0 + 1e-7, 1.2}, size[2] = {0.25, 4.0};
+    double worst = 0.0;
+    int n = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        double v[2];
+        body_get(k, &b);
+        top_singular(b.I, v);
+        const double nb = hypot(b.I[6], b.I[7]);
+        b.I[6] = nb * v[0];
+        b.I[7] = nb * v[1];
+        if (check_body_model(&b, &m) != 0) continue;
+        for (int i = 0; i < 4; i++) {
+            const double a = size[i / 2], s0 = 4.95 * a / ratio[i % 2] * (1.0 - 1e-12);
+            double w[3] = {s0 * v[0], s0 * v[1], 0.0}, t = 0.0;
+            sus_stepper_stats st;
+            sus_tol_work *wk = sus_step_taylor_adaptive_type.tol->alloc(&m, 1e30, w);
+            const int ok1 = wk && one_step(wk, 1e30, &t, w, &st) == SUS_STEPPER_OK;
+            w[0] = a * v[0];
+            w[1] = a * v[1];
+            const double rho = sus_step_taylor_radius(&m, w);
+            const int ok2 = ok1 && one_step(wk, 1e30, &t, w, &st) == SUS_STEPPER_OK;
+            worst = ok2 ? fmax(worst, st.det / rho) : INFINITY;
+            n++;
+            sus_step_taylor_adaptive_type.tol->free(wk);
+        }
+    }
+    CHECK(worst <= 0.99 * (1.0 + 1e-12),
+          "taylor-adaptive with b and w along A's top singular vector, a step "
+          "proposed just past 1/(K |w|) = rho: %d cases, the longest step %.4g of rho (at most 0.99)",
+          n, worst);
+}
+
+/* A step that reaches t_end ends exactly there (stepper.h), also where t + (t_end - t) rounds
+ * away from t_end; and a series that overflows (|w| = 1e160: the products in the recursion exceed
+ * the doubles) fails with SUS_STEPPER_REJECTED after MAX_TRIES = 12 tries, each retry at most 0.9 times
+ * as long as the try before (a NaN estimate asks for 0.9, an infinite one for 0.1). */
+static void interval_end_and_overflow(void)
+{
+    sus_model m;
+    body b;
+    body_get(1, &b);
+    if (check_body_model(&b, &m) != 0) return;
+    int exact = 0, rounding = 0, cases = 0;
+    for (int i = 1; i <= 40; i++) {
+        const double t0 = i / 97.0, te = 1.0 + i / 89.0; /* t_end - t0 rounded: t_end > 2 t0 */
+        volatile double d = te - t0;
+        rounding += t0 + d != te;
+        double w[3] = {b.w0[0], b.w0[1], 0.0}, t = t0;
+        sus_stepper_stats st;
+        sus_tol_work *wk = sus_step_taylor_adaptive_type.tol->alloc(&m, 1e-4, w);
+        exact += wk && one_step(wk, te, &t, w, &st) == SUS_STEPPER_OK && t == te;
+        cases++;
+        sus_step_taylor_adaptive_type.tol->free(wk);
+    }
+    CHECK(exact == cases && rounding > 0,
+          "a taylor-adaptive step that reaches t_end ends at t_end exactly: %d "
+          "of %d, %d of them where t + (t_end - t) rounds off t_end",
+          exact, cases, rounding);
+    double w[3] = {1e160 * b.w0[0], 1e160 * b.w0[1], 0.0}, t = 0.0;
+    const double h0 = 0.99 * sus_step_taylor_radius(&m, w);
+    sus_stepper_stats st;
+    sus_tol_work *wk = sus_step_taylor_adaptive_type.tol->alloc(&m, 1e-8, w);
+    const int rc = wk ? one_step(wk, 1.0, &t, w, &st) : -1;
+    sus_step_taylor_adaptive_type.tol->free(wk);
+    CHECK(rc == SUS_STEPPER_REJECTED && st.det <= pow(0.9, 11) * h0 * (1.0 + 1e-12),
+          "|w| = 1e160: the series "
+          "overflows; the step fails REJECTED (%d) after its tries shrank to %.3g of the first (at most "
+          "0.9^11 = "
+          "0.314: eleven retries, each at most 0.9 times the last)",
+          rc, rc == SUS_STEPPER_REJECTED ? st.det / h0 : NAN);
+}
+
+/* The driver's report counts the rejected tries of the run (stats.iterations of each step): their
+ * total and their largest per step, against the same steps taken by hand, at tolerances where the
+ * first try (0.99 rho) is rejected. */
+static void driver_report(void)
+{
+    const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
+    int bad = 0, most = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) != 0) continue;
+        const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-10, 20.0, 0.0, 0};
+        sus_row last;
+        sus_run_report rep;
+        const int rc = sus_run_tol(&cfg, b.w0, sus_keep_last, &last, &rep);
+        double w[3] = {b.w0[0], b.w0[1], 0.0}, t = 0.0;
+        long total = 0;
+        int max = 0;
+        sus_tol_work *wk = ops->alloc(&m, cfg.tol, b.w0);
+        for (sus_stepper_stats st;
+             wk && t < cfg.t_end && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK;) {
+            total += st.iterations;
+            max = st.iterations > max ? st.iterations : max;
+        }
+        ops->free(wk);
+        bad +=
+            rc != SUS_RUN_OK || rep.sus_newton_iterations != total || rep.max_iterations != max || max == 0;
+        most = max > most ? max : most;
+    }
+    CHECK(bad == 0,
+          "sus_run_tol reports the total and the largest number of rejected tries per step as "
+          "taken by hand, on %d bodies (tol 1e-10, [0, 20], at most %d per step): %d differ",
+          BODIES_COUNT, most, bad);
+}
+
+int main(void)
+{
+    order_rule();
+    estimates();
+    steps_within_radius();
+    step_size_rules();
+    cheap_test_window();
+    interval_end_and_overflow();
+    driver_report();
+    return check_summary("test_adaptive_rules");
+}
