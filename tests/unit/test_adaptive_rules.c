@@ -380,6 +380,33 @@ static void driver_stops(void)
           rc, SUS_RUN_STOPPED, rows);
 }
 
+/* A run given a budget of steps stops short of t_end with SUS_STEPPER_STEP_LIMIT, reporting the step
+ * after the budget, the time reached and the length of the last step taken (stats.det), against the
+ * same steps taken by hand. */
+static void driver_budget(void)
+{
+    const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
+    sus_model m;
+    body b;
+    body_get(3, &b);
+    if (check_body_model(&b, &m) != 0) return;
+    const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-9, 50.0, 0.0, 5};
+    sus_row last;
+    sus_run_report rep;
+    const int rc = sus_run_tol(&cfg, b.w0, sus_keep_last, &last, &rep);
+    double w[3] = {b.w0[0], b.w0[1], 0.0}, t = 0.0, t4 = 0.0;
+    sus_stepper_stats st;
+    sus_tol_work *wk = ops->alloc(&m, cfg.tol, b.w0);
+    for (int i = 0; wk && i < 5 && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK; i++)
+        t4 = i == 3 ? t : t4;
+    ops->free(wk);
+    CHECK(rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT && rep.step == 6 && rep.t == t &&
+              rep.stats.det == t - t4,
+          "a budget of 5 steps: status %d (STEP_LIMIT %d), step %ld (6), t %.17g (%.17g by hand), last step "
+          "%.17g (%.17g)",
+          rep.status, SUS_STEPPER_STEP_LIMIT, rep.step, rep.t, t, rep.stats.det, t - t4);
+}
+
 int main(void)
 {
     order_rule();
@@ -390,5 +417,6 @@ int main(void)
     interval_end_and_overflow();
     driver_report();
     driver_stops();
+    driver_budget();
     return check_summary("test_adaptive_rules");
 }
