@@ -2,8 +2,7 @@
  * method may pick, odd ones included) falls as h^(p+1), for w against the closed form and for R
  * against the reference increment, on the seeded bodies. A series summed one term short, or with its
  * last term's sign flipped, errs by ~h^p instead: the measured exponent tells the two apart. */
-#include "bodies.h"
-#include "check.h"
+#include "check_body.h"
 #include "exact.h"
 #include "mat3.h"
 #include "refattitude.h"
@@ -52,8 +51,8 @@ int main(void)
         body b;
         body_get(k, &b);
         sus_model m;
-        char err[256];
-        sus_model_init(&m, b.I, err, sizeof err);
+        if (check_body_model(&b, &m) != 0)
+            continue;
         sus_exact ex;
         sus_exact_init(&ex, &m, b.w0);
         for (int p = 3; p <= 8; p++)
