@@ -34,6 +34,8 @@ if [ "$profile" = paper ]; then
     done
     # pdftotext, pdfinfo: tools/paper.sh finds where to split the tall stability figure
     have pdftotext || missing="$missing poppler-utils"
+    # gs: tools/paper_layout.sh measures the printed size of figure text (make paper fails < 7 pt)
+    have gs || missing="$missing ghostscript"
 fi
 # make bench: Boost.Odeint (header-only, in libboost1.74-dev) and a C++ compiler for the peers
 if [ "$profile" = bench ]; then

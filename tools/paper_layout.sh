@@ -26,7 +26,8 @@ if command -v gs >/dev/null 2>&1; then
         END { for (p in n) { printf "page %d: %d pieces of figure text below 7 pt (smallest %.2f pt)\n", p, n[p], lo[p]; bad = 1 }
               exit !bad }'; then bad=1; fi
 else
-    echo "paper: gs missing, the printed size of figure text is not checked" >&2
+    echo "paper: gs missing (make deps-paper installs ghostscript): figure text size unchecked" >&2
+    bad=1
 fi
 [ "$bad" -eq 0 ] || echo "paper: layout problems in $pdf (log $log)" >&2
 exit "$bad"
