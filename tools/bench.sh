@@ -9,6 +9,7 @@ echo "         $(cc --version | head -1), CFLAGS: $CFLAGS_USED"
 echo
 # bench_boost is the same program with the Boost.Odeint peers (make bench builds it)
 if [ -x "$B/bench_boost" ]; then "$B/bench_boost" figures data; else "$B/bench" figures data; fi
+sh tools/readme_bench.sh # the README's tables from this run's data/what_to_use.tsv
 secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
 t0=$(date +%s.%N)
 # make check's work, timed whole: the tests, and the ledger run afresh (make reruns it only when
