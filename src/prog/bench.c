@@ -1142,7 +1142,7 @@ static void series_colour(int i, double rgb[3])
 /* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block. */
 #define WP_W 530.0
 #define WP_PANEL_H 230.0
-#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 42.0)
+#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 30.0)
 
 static void draw_wp(cairo_t *cr, void *vctx)
 {
