@@ -56,6 +56,20 @@ static void slope_text(const double *eps, const double *err, int nj, double size
         snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
 }
 
+/* The strip above the panels: a figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS
+ * columns, the curves' names and the reconstructions' line styles; or, when each panel has its own
+ * legend, the line styles alone. The strip's height. */
+#define STRIP_COLS 6
+static double strip_height(const sus_plot_conv_fig *f)
+{
+    if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
+        return sus_plot_legend_height(1) + 8.0;
+    int n = 2;
+    for (int m = 0; m < f->c.nmethod; m++)
+        n += f->spec->select(sus_step_method_get(m)) != 0;
+    return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
+}
+
 /* Each panel's legend (SUS_PLOT_CONV_LEGEND_PANELS) sits above its plot area, beside its letter,
  * in the room the panel's top margin leaves and a strip this much taller: one line per method. */
 static double panel_strip(const sus_plot_conv_fig *f)
@@ -77,8 +91,8 @@ static void panel_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *
     const double x0 = f->c.eps[NJ - 1], x1 = f->c.eps[f->j0], strip = panel_strip(f);
     if (strip <= 0.0) {
         sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, x0, x1, lo, hi, 1, 1);
-    } else { /* each row of two panels under its legends' strip */
-        const double row_h = CONV_H / 3.0;
+    } else { /* each row of two panels under its legends' strip, the figure no taller than CONV_H */
+        const double row_h = (CONV_H - strip_height(f)) / 3.0;
         sus_plot_axes_cell(ax, cr, CONV_W, row_h - strip, 1, 2, idx % 2, x0, x1, lo, hi, 1, 1);
         ax->y += (idx / 2) * row_h + strip;
     }
@@ -171,20 +185,6 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     }
     free(labels);
     free(leg);
-}
-
-/* The strip above the panels: a figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS
- * columns, the curves' names and the reconstructions' line styles; or, when each panel has its own
- * legend, the line styles alone. The strip's height. */
-#define STRIP_COLS 6
-static double strip_height(const sus_plot_conv_fig *f)
-{
-    if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
-        return sus_plot_legend_height(1) + 8.0;
-    int n = 2;
-    for (int m = 0; m < f->c.nmethod; m++)
-        n += f->spec->select(sus_step_method_get(m)) != 0;
-    return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
 }
 
 static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
@@ -282,6 +282,6 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    const double height = CONV_H + strip_height(f);
+    const double height = f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS ? CONV_H : CONV_H + strip_height(f);
     return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, height, draw, f, cap) != 0;
 }
