@@ -1139,34 +1139,10 @@ static void series_colour(int i, double rgb[3])
     rgb[2] = v * b;
 }
 
-/* What each peer was given, below the legend. */
-static void draw_wp_notes(cairo_t *cr, double y)
-{
-    static const char *const notes[] = {
-        "Peers (thin grey, one line per configuration), each at abs = rel tolerance 1e-3 ... 1e-15",
-        "(four a decade): GSL odeiv2 rk8pd and rkck, each through gsl_odeiv2_driver_apply and through",
-        "its own gsl_odeiv2_evolve_apply loop, from initial step 1e-3, 1e-2, 0.1 and 1 (reset before",
-        "every run); rkf45 and msadams (driver, initial step 1e-3)"
-#ifdef SUSLOV_WITH_ODEINT
-        "; Boost.Odeint runge_kutta_fehlberg78",
-        "(make_controlled) and bulirsch_stoer (integrate_adaptive)"
-#endif
-        ".",
-        "Each on (w1, w2, R), 11 unknowns, on (w1, w2, q), 6 unknowns with R = R(q/|q|), and, in (a),",
-        "on (w1, w2) alone, like our \"(w only)\" rows.",
-        "Thick black: the peers' lower envelope. Every point's time and error come from the same runs.",
-        "Dotted: the target accuracies 1e-4 ... 1e-14. Errors against the closed-form w(t) and a",
-        "long-double reference R(t) (error ~1e-17). Our sweeps stop after a run longer than 10 ms.",
-    };
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    for (size_t i = 0; i < sizeof notes / sizeof notes[0]; i++)
-        sus_plot_text(cr, 16, y + 11.0 * (double)i, notes[i], 8, 0, 0.5, 0);
-}
-
 /* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block. */
 #define WP_W 530.0
 #define WP_PANEL_H 230.0
-#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 42.0)
+#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 30.0)
 
 static void draw_wp(cairo_t *cr, void *vctx)
 {
@@ -1215,13 +1191,13 @@ static void draw_wp(cairo_t *cr, void *vctx)
             sus_plot_series(&ax, xx, yy, 2, 1, &ls);
         }
     }
-    /* legend: ours in two columns below the panels, then what the peers were given */
+    /* legend: ours in two columns below the panels; what the peers were given is in the caption
+     * (paper/methods.tex), not a box of text in the figure */
     int nours = 0;
     for (int i = 0; i < nseries; i++)
         if (S[i]->ours)
             ours[nours++] = st[i];
     sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
-    draw_wp_notes(cr, WP_LEGEND_Y + 11.0 * ((nours + 1) / 2) + 22);
     free(st);
     free(ours);
     free(rgb);
@@ -1614,8 +1590,8 @@ static int write_figures(const char *figdir)
     int nours = 0;
     for (int i = 0; i < nseries; i++)
         nours += S[i]->ours;
-    /* tall enough for the legend (two columns of 11 px rows) and ten lines of notes */
-    const double wp_h = WP_LEGEND_Y + 11.0 * ((nours + 1) / 2) + 22.0 + 11.0 * 10 + 6.0;
+    /* tall enough for the legend's two columns and no more */
+    const double wp_h = WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 6.0;
     if (sus_plot_write(path, WP_W, wp_h, draw_wp, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;

@@ -18,8 +18,8 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "exact\n"
         "solution at t_k, largest over t_k in {0, 3, 7, 12, 20}; global errors at t = 10 from t = 0. "
         "Reference:\n"
-        "closed-form w, lambda; R from the reference attitude along the exact w. Dashed grey: reference "
-        "slopes.\n"
+        "closed-form w, lambda; R from the reference attitude along the exact w. Each panel's legend "
+        "is above it.\n"
         "Legend slopes are least-squares fits over eps in [2^-10, 2^-2]: a local error has slope p+1, a "
         "global\n"
         "error slope p, so the legends of (a), (c), (e) read one more than the order.\n"
@@ -34,17 +34,14 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         f->o0max);
 }
 
-static const int S_LOC[] = {2, 3, 5}, S_GLOB[] = {1, 2, 4}, S_SO3_LOC[] = {2, 3}, S_SO3_GLOB[] = {1, 2};
-
 int main(int argc, char **argv)
 {
+    /* Each panel's legend above it, where it hides no curve, with each curve's fitted slope: no
+     * reference slope triangles, which would need room the data do not leave in a panel whose
+     * y-range is the data's. */
     const sus_plot_conv_figure_spec spec = {
         .name = "convergence", .select = paper_method,
         .solid = SUS_RECON_CAYLEY, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 1.0,
-        .slopes_local = S_LOC, .slopes_global = S_GLOB, .nslopes = 3,
-        .slopes_so3_local = S_SO3_LOC, .slopes_so3_global = S_SO3_GLOB, .nslopes_so3 = 2,
-        /* slopes in the upper left, eps = 2^-9 .. 2^-6; legend lower right */
-        .slope_j = SUS_EXP_CONV_J0 + 6, .slope_drop = 1.0, .legend_corner = 3, .legend_slopes = 1,
-        .caption = caption};
+        .legend = SUS_PLOT_CONV_LEGEND_PANELS, .legend_slopes = 1, .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);
 }

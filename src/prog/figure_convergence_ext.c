@@ -45,7 +45,7 @@ int main(int argc, char **argv)
     const sus_plot_conv_figure_spec spec = {
         .name = "convergence_ext", .select = extension_or_baseline,
         .solid = SUS_RECON_EXP_MID, .dashed = SUS_RECON_CAYLEY_MID, .eps_plot_max = 8.0,
-        .slope_drop = 1.0, .legend_corner = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0,
+        .legend = SUS_PLOT_CONV_LEGEND_ABOVE, .legend_slopes = 0,
         .caption = caption};
     return sus_plot_conv_figure_main(argc, argv, &spec);
 }

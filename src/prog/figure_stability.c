@@ -21,11 +21,13 @@ typedef struct {
     double *limit;
 } stab_fig;
 
-/* Panels two to a row, 170 points high, over the legend; the caption carries the title. The
- * companion prints the map in two halves of four and three rows, and at this height each half fits
- * a float page at the print scale that keeps its labels legible (SUS_PLOT_PRINT_SCALE). */
+/* Panels two to a row, 170 points high, under a legend strip; the caption carries the title. The
+ * companion prints the map in two halves cut between panel rows (tools/figsplit.sh), and at this
+ * height each half fits a float page at the print scale that keeps its labels legible
+ * (SUS_PLOT_PRINT_SCALE). The legend goes above the panels so that the first half carries it. */
 #define PANEL_H 170.0
-static double fig_height(int nm) { return 40.0 + PANEL_H * ((nm + 1) / 2); }
+#define STRIP_H 14.0
+static double fig_height(int nm) { return STRIP_H + PANEL_H * ((nm + 1) / 2); }
 
 static const double CLASS_RGB[SUS_EXP_STAB_NCLASS][3] = {
     {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
@@ -34,12 +36,20 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const stab_fig *f = vctx;
     const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
+    sus_plot_style leg[SUS_EXP_STAB_NCLASS];
+    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++) { /* a horizontal legend in the strip */
+        leg[c] = sus_plot_style_of(CLASS_RGB[c], 0, 0, SUS_PLOT_DOT, 7, SUS_EXP_STAB_NAMES[c]);
+        sus_plot_axes la;
+        sus_plot_axes_init(&la, cr, 40 + 112 * c, 0, 110, 20, 0, 1, 0, 1, 0, 0);
+        sus_plot_legend(&la, &leg[c], 1, 0);
+    }
+    cairo_translate(cr, 0.0, STRIP_H);
     for (int m = 0; m < f->nm; m++) {
         sus_plot_axes ax;
         char letter[8];
         snprintf(letter, sizeof letter, "(%c)", 'a' + m % 26);
-        sus_plot_axes_cell(&ax, cr, W, H - 40, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0, 360.0, 1,
-                           0);
+        sus_plot_axes_cell(&ax, cr, W, H - STRIP_H, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0,
+                           360.0, 1, 0);
         ax.x0 = f->hs[0] / step;
         ax.x1 = f->hs[NH - 1] * step;
         ax.y0 = 0.0;
@@ -61,14 +71,6 @@ static void draw(cairo_t *cr, void *vctx)
         } else {
             sus_plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
         }
-    }
-    sus_plot_style leg[SUS_EXP_STAB_NCLASS];
-    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++)
-        leg[c] = sus_plot_style_of(CLASS_RGB[c], 0, 0, SUS_PLOT_DOT, 7, SUS_EXP_STAB_NAMES[c]);
-    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++) { /* a horizontal legend along the bottom */
-        sus_plot_axes la;
-        sus_plot_axes_init(&la, cr, 40 + 112 * c, H - 34, 110, 20, 0, 1, 0, 1, 0, 0);
-        sus_plot_legend(&la, &leg[c], 1, 0);
     }
 }
 

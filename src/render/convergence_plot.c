@@ -19,12 +19,6 @@ static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 /* Three rows of panels at the page's figure scale; the caption says what is local and global. */
 #define CONV_W 560.0
 #define CONV_H 620.0
-/* The reference slopes span this many halvings of eps; each next (steeper) one ends FAN_LABEL_PT
- * lower than the one before, so that their labels, at the left ends, keep apart (a label is one
- * tick font high) however many decades the panel spans. */
-#define FAN_STEPS 3
-#define FAN_LABEL_PT 9.0
-
 
 /* Method m's colour and marker: colours cycle through a colour-blind-safe set, markers through
  * the five shapes, so neighbours in the registry never share both. */
@@ -52,27 +46,6 @@ static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
     }
 }
 
-/* The largest (want_max) or smallest error of the curves `what` shown, over eps in [xa, xb]. */
-static double extreme_in(const sus_plot_conv_fig *f, int what, const double *eps, int nj, double xa,
-                         double xb, int want_max)
-{
-    const int so3 = what == LOC_SO3 || what == GLOB_SO3;
-    double v = want_max ? 0.0 : INFINITY;
-    for (int m = 0; m < f->c.nmethod; m++) {
-        if (!f->spec->select(sus_step_method_get(m)))
-            continue;
-        for (int r = 0; r < 1 + so3; r++) {
-            const double *e = curve(f, m, what, r ? f->spec->dashed : f->spec->solid) + f->j0;
-            for (int j = 0; j < nj; j++)
-                if (eps[j] >= xa && eps[j] <= xb && e[j] > 0.0 && isfinite(e[j]))
-                    v = want_max ? fmax(v, e[j]) : fmin(v, e[j]);
-        }
-    }
-    return v;
-}
-
-static double frac_log(double v, double a, double b) { return (log10(v) - log10(a)) / (log10(b) - log10(a)); }
-
 /* The least-squares slope of one curve over the ledger's window, as the legend prints it. */
 static void slope_text(const double *eps, const double *err, int nj, double size, char *out, size_t len)
 {
@@ -83,58 +56,57 @@ static void slope_text(const double *eps, const double *err, int nj, double size
         snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
 }
 
-/* The factor in y that FAN_LABEL_PT spans in log axes ax: how far each next slope ends lower. */
-static double fan_gap(const sus_plot_axes *ax) { return pow(ax->y1 / ax->y0, FAN_LABEL_PT / ax->h); }
-
-/* The largest eps of the grid below x (x itself if none): a curve's segment that reaches into
- * [x, ...] starts there. */
-static double grid_below(const double *eps, int nj, double x)
+/* The strip above the panels: a figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS
+ * columns, the curves' names and the reconstructions' line styles; or, when each panel has its own
+ * legend, the line styles alone. The strip's height. */
+#define STRIP_COLS 6
+static double strip_height(const sus_plot_conv_fig *f)
 {
-    double b = 0.0;
-    for (int j = 0; j < nj; j++)
-        b = eps[j] < x ? fmax(b, eps[j]) : b;
-    return b > 0.0 ? b : x;
+    if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
+        return sus_plot_legend_height(1) + 8.0;
+    int n = 2;
+    for (int m = 0; m < f->c.nmethod; m++)
+        n += f->spec->select(sus_step_method_get(m)) != 0;
+    return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
 }
 
-/* The axes of a panel, widened a decade at a time until the reference slopes (upper left) pass
- * above every curve in their eps range and a lower-right legend of legend_rows lines, legend_w
- * points wide, sits under every curve it covers, segments included: neither may hide a curve. */
-static void room_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int what, int idx,
-                      const double *eps, int nj, double lo, double hi, double top, const int *slopes,
-                      int nslopes, int legend_rows, double legend_w)
+/* Each panel's legend (SUS_PLOT_CONV_LEGEND_PANELS) sits above its plot area, beside its letter,
+ * in the room the panel's top margin leaves and a strip this much taller: one line per method. */
+static double panel_strip(const sus_plot_conv_fig *f)
 {
-    int smax = 0;
-    for (int s = 0; s < nslopes; s++)
-        smax = slopes[s] > smax ? slopes[s] : smax;
-    const double xa = f->c.eps[f->spec->slope_j + FAN_STEPS], xb = f->c.eps[f->spec->slope_j];
-    const double fan_data = extreme_in(f, what, eps, nj, xa, xb, 1);
-    for (int it = 0; it < 40; it++) {
-        sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, f->c.eps[NJ - 1], f->c.eps[f->j0], lo, hi, 1,
-                           1);
-        const double fan_low =
-            ax->y1 * top * f->spec->slope_drop * pow(xa / xb, smax) / pow(fan_gap(ax), nslopes - 1);
-        const int fan_ok = nslopes == 0 || fan_data <= 0.03 * fan_low; /* room for the labels */
-        /* the legend's top edge as a fraction of the height, with a marker of room */
-        const double leg_top = (sus_plot_legend_height(legend_rows) + 4.0 + 4.0) / ax->h;
-        const double span = fmin(1.0, (legend_w + 4.0) / ax->w);
-        const double x_leg = pow(10.0, log10(ax->x0) + (1.0 - span) * (log10(ax->x1) - log10(ax->x0)));
-        const double under = extreme_in(f, what, eps, nj, grid_below(eps, nj, x_leg), INFINITY, 0);
-        const int leg_ok =
-            f->spec->legend_corner != 3 || !isfinite(under) || frac_log(under, ax->y0, ax->y1) >= leg_top;
-        if (fan_ok && leg_ok)
-            return;
-        if (!fan_ok)
-            hi = ax->y1 * 10.0;
-        if (!leg_ok)
-            lo = ax->y0 / 10.0;
+    if (f->spec->legend != SUS_PLOT_CONV_LEGEND_PANELS)
+        return 0.0;
+    int n = 0;
+    for (int m = 0; m < f->c.nmethod; m++)
+        n += f->spec->select(sus_step_method_get(m)) != 0;
+    return fmax(0.0, sus_plot_legend_height(n) - 30.0);
+}
+
+/* The axes of panel idx. Its y-range is its data's, widened by a factor Y_MARGIN each way so that no
+ * marker is cut by the frame, and no more: no legend is drawn inside a panel, so none needs room. */
+#define Y_MARGIN 2.0
+static void panel_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int idx, double lo,
+                       double hi)
+{
+    const double x0 = f->c.eps[NJ - 1], x1 = f->c.eps[f->j0], strip = panel_strip(f);
+    if (strip <= 0.0) {
+        sus_plot_axes_cell(ax, cr, CONV_W, CONV_H, 3, 2, idx, x0, x1, lo, hi, 1, 1);
+    } else { /* each row of two panels under its legends' strip, the figure no taller than CONV_H */
+        const double row_h = (CONV_H - strip_height(f)) / 3.0;
+        sus_plot_axes_cell(ax, cr, CONV_W, row_h - strip, 1, 2, idx % 2, x0, x1, lo, hi, 1, 1);
+        ax->y += (idx / 2) * row_h + strip;
+    }
+    if (lo > 0.0 && lo <= hi && isfinite(hi)) { /* else the cell's default range */
+        ax->y0 = lo / Y_MARGIN;
+        ax->y1 = hi * Y_MARGIN;
     }
 }
 
 /* The legend of panel `what`: one entry per curve (with its fitted slopes when the figure says so),
- * then on SO(3) the two reconstructions' line styles, then the reference slopes if any. labels holds
- * the texts (nmethod + 2 of them). Returns the number of entries. */
+ * then, with keys, on SO(3) the two reconstructions' line styles. labels holds the texts (nmethod + 2
+ * of them). Returns the number of entries. */
 static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps, int nj, double size,
-                        int nslopes, char (*labels)[96], sus_plot_style *leg)
+                        int keys, char (*labels)[96], sus_plot_style *leg)
 {
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0;
     int nleg = 0;
@@ -158,21 +130,19 @@ static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps,
         leg[nleg] = method_style(m, 0, 1);
         leg[nleg++].label = labels[m];
     }
-    if (so3) {
+    if (so3 && keys) {
         snprintf(labels[nm], sizeof labels[nm], "solid: %s", SUS_RECON_NAMES[f->spec->solid]);
         snprintf(labels[nm + 1], sizeof labels[nm + 1], "dashed: %s", SUS_RECON_NAMES[f->spec->dashed]);
         leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 0, SUS_PLOT_NONE, 0, labels[nm]);
         leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, labels[nm + 1]);
     }
-    if (nslopes)
-        leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 0.8, 1, SUS_PLOT_NONE, 0, "reference slopes");
     return nleg;
 }
 
-/* One log-log panel of curve `what` (and, for SO(3), the cayley-mid curves dashed) with reference
- * slopes anchored under the data at eps = 2^-2. */
+/* One log-log panel of curve `what` (and, for SO(3), the spec's dashed reconstruction), with its
+ * legend above it when the figure has one per panel. */
 static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, const char *ylabel,
-                  const char *letter, const int *slopes, int nslopes, double top, double size)
+                  const char *letter, double size)
 {
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0, nj = NJ - f->j0;
     const int global = what == GLOB_W || what == GLOB_SO3 || what == GLOB_LAMBDA;
@@ -193,11 +163,9 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
             sus_plot_extend(&lo, &hi, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, 1);
     }
     lo = fmax(lo, 1e-17);
-    const int nleg = panel_legend(f, what, eps, nj, size, nslopes, labels, leg);
-    const int inside = f->spec->legend_corner != SUS_PLOT_CONV_LEGEND_ABOVE;
+    const int nleg = panel_legend(f, what, eps, nj, size, 0, labels, leg);
     sus_plot_axes ax;
-    room_axes(&ax, cr, f, what, idx, eps, nj, lo, hi, top, slopes, nslopes, inside ? nleg : 0,
-              inside ? sus_plot_legend_width(cr, leg, nleg) : 0.0);
+    panel_axes(&ax, cr, f, idx, lo, hi);
     sus_plot_frame(&ax, "\xce\xb5", ylabel, letter);
     for (int m = 0, k = 0; m < nm; m++) {
         if (!f->spec->select(sus_step_method_get(m)))
@@ -210,31 +178,13 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
             sus_plot_series(&ax, eps, curve(f, m, what, f->spec->dashed) + j0, (size_t)nj, 1, &d);
         }
     }
-    /* reference slopes where the figure has room for them, `top` under the panel's top, each
-     * next one a label lower */
-    for (int s = 0; s < nslopes; s++) {
-        char lab[8];
-        snprintf(lab, sizeof lab, "%d", slopes[s]);
-        sus_plot_slope(&ax, f->c.eps[f->spec->slope_j + FAN_STEPS], f->c.eps[f->spec->slope_j],
-                       ax.y1 * top * f->spec->slope_drop / pow(fan_gap(&ax), s), slopes[s], lab);
+    if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS) { /* its bottom 4 points over the frame */
+        sus_plot_axes la;
+        sus_plot_axes_init(&la, cr, ax.x, ax.y - sus_plot_legend_height(nleg) - 8.0, 1, 1, 0, 1, 0, 1, 0, 0);
+        sus_plot_legend(&la, leg, nleg, 0);
     }
-    if (inside)
-        sus_plot_legend(&ax, leg, nleg, f->spec->legend_corner);
     free(labels);
     free(leg);
-}
-
-/* A figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS columns in a strip above the
- * panels: the curves' names and the reconstructions' line styles. The strip's height, 0 without. */
-#define STRIP_COLS 6
-static double strip_height(const sus_plot_conv_fig *f)
-{
-    if (f->spec->legend_corner != SUS_PLOT_CONV_LEGEND_ABOVE)
-        return 0.0;
-    int n = 2;
-    for (int m = 0; m < f->c.nmethod; m++)
-        n += f->spec->select(sus_step_method_get(m)) != 0;
-    return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
 }
 
 static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
@@ -243,8 +193,11 @@ static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
     char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (labels && leg) {
-        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_EXP_SIZE_R, 0, labels, leg);
-        sus_plot_legend_packed(cr, 64.0, 6.0, leg, n, STRIP_COLS);
+        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_EXP_SIZE_R, 1, labels, leg);
+        if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
+            sus_plot_legend_packed(cr, 64.0, 0.0, leg + n - 2, 2, 2);
+        else
+            sus_plot_legend_packed(cr, 64.0, 6.0, leg, n, STRIP_COLS);
     }
     free(labels);
     free(leg);
@@ -253,29 +206,22 @@ static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
 static void draw(cairo_t *cr, void *vctx)
 {
     const sus_plot_conv_fig *f = vctx;
-    if (strip_height(f) > 0.0) {
-        draw_strip(cr, f);
-        cairo_translate(cr, 0.0, strip_height(f));
-    }
-    const int *s_loc = f->spec->slopes_local, *s_glob = f->spec->slopes_global, ns = f->spec->nslopes;
-    const int *s_so3loc = f->spec->slopes_so3_local, *s_so3glob = f->spec->slopes_so3_global,
-              nso3 = f->spec->nslopes_so3;
+    draw_strip(cr, f);
+    cairo_translate(cr, 0.0, strip_height(f));
     panel(
         cr, 0, f, LOC_W,
         "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(a)", s_loc, ns, 0.1, SUS_EXP_SIZE_W);
-    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", s_glob, ns, 0.1,
-          SUS_EXP_SIZE_W);
+        "(a)", SUS_EXP_SIZE_W);
+    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", SUS_EXP_SIZE_W);
     panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)",
-          "(c)", s_so3loc, nso3, 0.1, SUS_EXP_SIZE_R);
-    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", s_so3glob, nso3, 0.1,
-          SUS_EXP_SIZE_R);
+          "(c)", SUS_EXP_SIZE_R);
+    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", SUS_EXP_SIZE_R);
     panel(
         cr, 4, f, LOC_LAMBDA,
         "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(e)", s_loc, ns, 0.01, SUS_EXP_SIZE_LAMBDA);
-    panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)", s_glob, ns,
-          0.01, SUS_EXP_SIZE_LAMBDA);
+        "(e)", SUS_EXP_SIZE_LAMBDA);
+    panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)",
+          SUS_EXP_SIZE_LAMBDA);
 }
 
 int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_spec *spec)
@@ -336,6 +282,6 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     free(header);
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    const double height = CONV_H + strip_height(f);
+    const double height = f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS ? CONV_H : CONV_H + strip_height(f);
     return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, height, draw, f, cap) != 0;
 }
