@@ -1054,8 +1054,12 @@ static void args_of(const wp_series *s, int j, char *buf, size_t len)
                  T_END, T_END);
         return;
     }
-    snprintf(buf, len, "--method %s --reconstruct %s --eps %.17g --steps %ld", s->method,
-             SUS_RECON_NAMES[s->recon], s->param[j], s->steps[j]);
+    const int n = snprintf(buf, len, "--method %s", s->method);
+    if (n < 0 || (size_t)n >= len)
+        return;
+    if (!own_attitude(sus_step_method_by_name(s->method))) /* else suslov warns that it ignores it */
+        snprintf(buf + n, len - (size_t)n, " --reconstruct %s", SUS_RECON_NAMES[s->recon]);
+    snprintf(buf + strlen(buf), len - strlen(buf), " --eps %.17g --steps %ld", s->param[j], s->steps[j]);
 }
 
 /* Runs `suslov ARGS --every N` and compares the last row's errors with the bench's: the same
