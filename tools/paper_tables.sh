@@ -74,7 +74,7 @@ awk -F'\t' 'function brk(s,   out, i, c, tt) {
         }
         return out }
     NR > 1 { w = $2; if ($6 != "") w = w "; finding " $6
-             printf "%s & %s & %s & %s & %s\\\\\n", $1, w, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
+             printf "%s & %s & %s & %s & %s\\\\[3pt]\n", $1, w, $3, $4, brk($5) }' paper/errata.tsv >>"$O/errata.tex"
 printf '%s\n' '\end{longtable}' >>"$O/errata.tex"
 
 head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' tab:nottested \

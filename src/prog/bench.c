@@ -1539,8 +1539,8 @@ static int write_tex(const char *path, double speedup, int implicit_pass, int pa
             speedup >= 5 ? "PASS" : "MISS", implicit_pass ? "PASS" : "MISS");
     static const char *lvl[NLEVELS] = {"Four", "Six", "Eight", "Ten", "Twelve", "Fourteen"};
     for (int l = 0; l < NLEVELS; l++) {
-        /* three digits: a ratio of 1.96 must not print as "2" beside a MISS */
-        fprintf(af.fp, "\\newcommand{\\BenchRatioR%s}{%.3g}\n\\newcommand{\\BenchRatioW%s}{%.3g}\n", lvl[l],
+        /* two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict */
+        fprintf(af.fp, "\\newcommand{\\BenchRatioR%s}{%.2f}\n\\newcommand{\\BenchRatioW%s}{%.2f}\n", lvl[l],
                 ratio[1][l], lvl[l], ratio[0][l]);
         fprintf(af.fp, "\\newcommand{\\BenchPassR%s}{%s}\n\\newcommand{\\BenchPassW%s}{%s}\n", lvl[l],
                 pass[1][l] ? "PASS" : "MISS", lvl[l], pass[0][l] ? "PASS" : "MISS");
