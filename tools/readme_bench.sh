@@ -2,7 +2,8 @@
 # The README's two "what to use when" tables, from the bench run that wrote data/what_to_use.tsv
 # (the level, ours, the best peer, ratio, target and verdict) and data/bench.csv (each point's
 # fastest and slowest round). The README quotes the run of the last make bench committed; the
-# companion, built by make paper, quotes its own run (make paper does not rewrite the README).
+# software note (paper/methods.pdf), built by make paper, quotes its own run (make paper does not
+# rewrite the README).
 # Usage: tools/readme_bench.sh (make bench runs it after the bench): rewrites the block between
 # "<!-- bench tables -->" and "<!-- end bench tables -->" of README.md.
 set -eu
