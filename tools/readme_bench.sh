@@ -9,8 +9,7 @@
 set -eu
 tsv=data/what_to_use.tsv csv=data/bench.csv
 tables=$(mktemp)
-out=$(mktemp)
-trap 'rm -f "$tables" "$out"' EXIT
+trap 'rm -f "$tables"' EXIT
 # bench.csv fields may be quoted and hold commas ("GSL rkck (w,q) ..."): split by hand.
 awk -F'\t' -v csv="$csv" '
 function split_csv(line, f,    n, i, c, q, cur) {
@@ -26,7 +25,7 @@ function split_csv(line, f,    n, i, c, q, cur) {
 }
 function range(name, sec,    k) { k = name SUBSEP sprintf("%.4g", sec)
     return (k in lo) ? sprintf("%.3g (%.3g–%.3g)", sec * 1e6, lo[k] * 1e6, hi[k] * 1e6) : sprintf("%.3g", sec * 1e6) }
-function args(a) { # the suslov arguments, numbers to 4 digits, without the run length every row shares
+function args(a,    n, w, s, i) { # the suslov arguments, numbers to 4 digits, without the run length every row shares
     sub(/^--method /, "", a); sub(/ --time [^ ]* --every-time [^ ]*$/, "", a)
     n = split(a, w, " "); s = ""
     for (i = 1; i <= n; i++) s = s (i > 1 ? " " : "") (w[i] ~ /^[0-9.e+-]+$/ && w[i] ~ /\./ ? sprintf("%.4g", w[i]) : w[i])
@@ -39,10 +38,4 @@ $1 != last { printf "%s| %s | ours (`suslov` args) | µs median (min–max) | be
 { printf "| %s | `%s` | %s | %s, tol %s | %s | %.2f× | %g× %s |\n", $2, args($11), range($3, $4), $5, $6,
          range($5, $7), $8, $9, $10 }
 ' "$tsv" >"$tables"
-awk -v tables="$tables" '
-    /^<!-- end bench tables -->$/ { skip = 0 }
-    !skip { print }
-    /^<!-- bench tables -->$/ { while ((getline l < tables) > 0) print l; skip = 1 }
-' README.md >"$out"
-grep -q '^<!-- bench tables -->$' README.md || { echo "readme_bench: README.md has no bench tables block" >&2; exit 1; }
-cat "$out" >README.md
+sh "$(dirname "$0")/readme_block.sh" "bench tables" "$tables"

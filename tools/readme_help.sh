@@ -5,12 +5,6 @@
 set -eu
 S=${1:-build/suslov}
 help=$(mktemp)
-out=$(mktemp)
-trap 'rm -f "$help" "$out"' EXIT
-"$S" --help >"$help"
-awk -v help="$help" '
-    /^<!-- end suslov --help -->$/ { skip = 0 }
-    !skip { print }
-    /^<!-- suslov --help -->$/ { print "```"; while ((getline l < help) > 0) print l; print "```"; skip = 1 }
-' README.md >"$out"
-cat "$out" >README.md
+trap 'rm -f "$help"' EXIT
+{ echo '```'; "$S" --help; echo '```'; } >"$help"
+sh "$(dirname "$0")/readme_block.sh" "suslov --help" "$help"
