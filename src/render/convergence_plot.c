@@ -56,6 +56,15 @@ static void slope_text(const double *eps, const double *err, int nj, double size
         snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
 }
 
+/* How many of the registry's methods the figure draws: one legend line each. */
+static int drawn_methods(const sus_plot_conv_fig *f)
+{
+    int n = 0;
+    for (int m = 0; m < f->c.nmethod; m++)
+        n += f->spec->select(sus_step_method_get(m)) != 0;
+    return n;
+}
+
 /* The strip above the panels: a figure's one legend (SUS_PLOT_CONV_LEGEND_ABOVE), in STRIP_COLS
  * columns, the curves' names and the reconstructions' line styles; or, when each panel has its own
  * legend, the line styles alone. The strip's height. */
@@ -64,9 +73,7 @@ static double strip_height(const sus_plot_conv_fig *f)
 {
     if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
         return sus_plot_legend_height(1) + 8.0;
-    int n = 2;
-    for (int m = 0; m < f->c.nmethod; m++)
-        n += f->spec->select(sus_step_method_get(m)) != 0;
+    const int n = drawn_methods(f) + 2; /* and the two line styles */
     return sus_plot_legend_height((n + STRIP_COLS - 1) / STRIP_COLS) + 10.0;
 }
 
@@ -76,10 +83,7 @@ static double panel_strip(const sus_plot_conv_fig *f)
 {
     if (f->spec->legend != SUS_PLOT_CONV_LEGEND_PANELS)
         return 0.0;
-    int n = 0;
-    for (int m = 0; m < f->c.nmethod; m++)
-        n += f->spec->select(sus_step_method_get(m)) != 0;
-    return fmax(0.0, sus_plot_legend_height(n) - 30.0);
+    return fmax(0.0, sus_plot_legend_height(drawn_methods(f)) - 30.0);
 }
 
 /* The axes of panel idx. Its y-range is its data's, widened by a factor Y_MARGIN each way so that no
