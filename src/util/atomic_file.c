@@ -15,8 +15,8 @@
 
 enum { SLOTS = 8 };
 /* Every catchable signal whose default action ends the process (besides the real-time ones,
- * added in a loop). The synchronous ones (a fault in the program) are handled but never
- * blocked: a fault while blocked would kill without the handler. */
+ * added in a loop). The synchronous ones (a fault in the program) are handled but blocked only
+ * around mkstemp (block_signals): a fault while blocked would kill without the handler. */
 static const int ASYNC_SIGNALS[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2,   SIGPIPE, SIGALRM,
                                     SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO, SIGPWR,
 #ifdef SIGSTKFLT
@@ -75,12 +75,17 @@ static void install_handlers(void)
         handle(s);
 }
 
-static void block_signals(sigset_t *old)
+/* sync: the synchronous ones too, only around mkstemp and the naming of its slot (libc and a copy,
+ * nothing of ours that can fault): the temporary exists before its slot names it, and a kill -FPE
+ * sent in between would otherwise leave it. */
+static void block_signals(sigset_t *old, int sync)
 {
     sigset_t set;
     sigemptyset(&set);
     for (size_t i = 0; i < COUNT(ASYNC_SIGNALS); i++)
         sigaddset(&set, ASYNC_SIGNALS[i]);
+    for (size_t i = 0; sync && i < COUNT(SYNC_SIGNALS); i++)
+        sigaddset(&set, SYNC_SIGNALS[i]);
     for (int s = SIGRTMIN; s <= SIGRTMAX; s++)
         sigaddset(&set, s);
     sigprocmask(SIG_BLOCK, &set, old);
@@ -312,7 +317,7 @@ static int open_named(sus_sys_atomic_file *af, const char *dir)
     }
     install_handlers();
     sigset_t old;
-    block_signals(&old);
+    block_signals(&old, 1);
     const int fd = mkstemp(af->tmp);
     const int saved = errno;
     if (fd >= 0)
@@ -420,7 +425,7 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
     const char *what = "writing";
     /* No signal between naming and renaming: a signal arriving now is handled after the
      * commit, and only a SIGKILL in these few microseconds can leave the linked name. */
-    block_signals(&old);
+    block_signals(&old, 0);
     if ((fflush(af->fp) != 0) | ferror(af->fp)) {
         bad = 1;
         saved = errno;
@@ -453,7 +458,7 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
 void sus_sys_atomic_file_abort(sus_sys_atomic_file *af)
 {
     sigset_t old;
-    block_signals(&old);
+    block_signals(&old, 0);
     if (af->fp && af->fp != stdout)
         fclose(af->fp);
     if (af->tmp[0])
