@@ -301,8 +301,11 @@ void sus_plot_frame(const sus_plot_axes *ax, const char *xlabel, const char *yla
         sus_plot_text(cr, 0.0, 0.0, ylabel, LABEL_FONT, 0.5, 0.5, 0);
         cairo_restore(cr);
     }
-    if (letter)
-        sus_plot_text(cr, ax->x - 44.0, ax->y - 6.0, letter, LABEL_FONT + 1.0, 0.0, 1.0, 1);
+    if (letter) { /* above the frame, and above the y-label's top end when the label outgrows the frame */
+        const double label_top = ylabel ? ax->y + 0.5 * (ax->h - text_width(cr, ylabel, LABEL_FONT)) : ax->y;
+        const double base = fmin(ax->y, label_top - 2.0) - 6.0;
+        sus_plot_text(cr, ax->x - 44.0, base, letter, LABEL_FONT + 1.0, 0.0, 1.0, 1);
+    }
     cairo_restore(cr);
 }
 
