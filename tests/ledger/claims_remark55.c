@@ -151,7 +151,9 @@ static void method_claims(const sus_model *m, const sus_exact *ex, const sus_ste
     /* Two terms (a truncation of ours, not the remark's n): theory gives min(p + 2, 2p + 1), but for
      * rk4 (s = 6, errors ~eps^7) only eps >= 1/4 rise above round-off and the slope there is
      * pre-asymptotic (the eps^8 term is as large as the eps^7 one). What the measurement can
-     * assert for every method: the second term raises s by at least half an order over the first. */
+     * assert for every method: the second term raises s by at least half an order over the first.
+     * Half an order separates the only two outcomes: a right e_{p+2} removes the eps^{p+2} term
+     * (difference 1), a wrong one leaves an eps^{p+2} term of another size (difference 0). */
     const double s1 = fit_s(eps, e1), s2m = fit_s(eps, e2);
     snprintf(id, sizeof id, "remark55-s2-%s", st->name);
     snprintf(q, sizeof q, "s with two terms (e_{p+1}, e_{p+2}) minus s with one, %s: s2 = %.2f (theory "
