@@ -8,30 +8,20 @@
  * against the exact solution at t_k + eps; the largest over 5 starts t_k spread over the
  * transient, t_k k = 0, 0.45, 1, 1.75, 2.9 with k the body's rate), on a grid scaled by the
  * body's time 1/k: eps k = 1.16 * 2^(-j/4), j = 0 .. NE-1, over 13 octaves (for the paper's
- * body eps = 8 down to 2^-10). The fit window is chosen from the curve:
- *   1. a point is a candidate when its error is finite, above the round-off floor 1000 u times
- *      the size of the quantity (orderfit.h: round-off then moves no point by more than 0.1%)
- *      and below the size itself (an error as large as the quantity is no expansion in eps);
- *   2. the window is the longest run of consecutive candidates, at least an octave long, whose
- *      neighbour slopes span less than SLOPE_SPAN (max - min): the asymptotic regime is where the
- *      slope is constant, the pre-asymptotic bend at large eps and round-off at small eps both
- *      make it vary (the reason for the numbers is at their definitions); on a tie the run at
- *      smaller eps wins;
- *   3. the order is the least-squares slope over the window, minus 1 (local error O(eps^{q+1})),
- *      and the line asserts |order - expected| <= ORDER_TOL on every body;
- *   4. where no run has one slope (an order so high that the error reaches round-off before its
- *      asymptotic regime: the slope still rises as eps falls), the fit is over the MIN_POINTS
- *      smallest-eps candidates, the end nearest that regime. That slope is a lower estimate, not
- *      the order, and the line asserts only order >= expected / 2: what breaks a method of
- *      order p built from a second-order map (a weight that misses the order conditions, a
- *      dropped substep) leaves order 2 or less, a series truncated at half its degree order p/2.
- *      It cannot tell p from p - 1, and says so; the plateau lines and the Taylor control of
- *      claims_highorder.c do.
+ * body eps = 8 down to 2^-10). A point is a candidate when its error is finite, above the
+ * round-off floor 1000 u times the size of the quantity (orderfit.h: round-off then moves no
+ * point by more than 0.1%) and below the size itself; the window is chosen from the curve by the
+ * rule of claims_window.h (the longest run of one slope, at least an octave long). The order is
+ * the slope minus 1 (local error O(eps^{q+1})), asserted within WINDOW_ORDER_TOL of the expected
+ * one on every body; where no run has one slope the slope over the smallest-eps octave is a lower
+ * estimate, asserted only >= expected / 2. That cannot tell p from p - 1, and says so; the plateau
+ * lines and the Taylor control of claims_highorder.c do.
  * The SO(3) order is TeoL's min(r, p) of the pair, r measured on the attitude's local error.
  * A curve with fewer than 3 points above round-off has no order: the line fails. */
 #include "claims_methods.h"
 
 #include "bodies.h"
+#include "claims_window.h"
 #include "consistency.h"
 #include "driver.h"
 #include "expected_orders.h"
@@ -49,16 +39,6 @@
 #define NE 53                 /* eps k = 1.16 * 2^(-j/4), j = 0 .. 52 */
 #define EPS_K_MAX 1.16
 #define NTK 5
-/* The first neglected term of the error expansion bends the log-log slope by an amount ~ a eps;
- * across an octave [eps, 2 eps] the slope then changes by a eps, as much as it still differs from
- * the asymptotic value at the octave's small end. A window must span an octave (5 points) with
- * its slopes within SLOPE_SPAN: the fit (centred at 2^(1/2) eps) is then within 1.4 x 0.15 = 0.21
- * of the order, inside ORDER_TOL; and such a run cannot straddle two orders. */
-#define SLOPE_SPAN 0.15
-#define MIN_POINTS 5
-/* An order is an integer: a quarter of the gap tells p from p +- 1 (as claims_fit.c's widened
- * window), and leaves room for the O(eps) bend the window's upper end may still carry. */
-#define ORDER_TOL 0.25
 #define NQ (2 + SUS_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
 
 typedef struct {
@@ -128,74 +108,23 @@ static void local_curves(const sus_step_method *me, const body_data *d, double e
     }
 }
 
-/* Slope of log err between grid points j and j + 1. */
-static double neighbour_slope(const double *eps, const double *err, int j)
-{
-    return log(err[j + 1] / err[j]) / log(eps[j + 1] / eps[j]);
-}
-
-/* Is the run of points lo .. hi (inclusive) one slope: every neighbour slope within SLOPE_SPAN? */
-static int one_slope(const double *eps, const double *err, int lo, int hi)
-{
-    double smin = INFINITY, smax = -INFINITY;
-    for (int j = lo; j < hi; j++) {
-        const double s = neighbour_slope(eps, err, j);
-        smin = fmin(smin, s);
-        smax = fmax(smax, s);
-    }
-    return smax - smin < SLOPE_SPAN;
-}
-
 /* The order measured on one curve (the rule of the header). */
 typedef struct {
     double order;             /* NaN: fewer than 3 points above round-off */
-    int plateau;              /* 1: a window of one slope (rule 2), 0: the fallback of rule 4 */
+    int plateau;              /* 1: a window of one slope, 0: the lower estimate */
     double eps_lo, eps_hi;
 } curve_order;
 
-static int candidate(const double *err, int j, double size)
-{
-    return isfinite(err[j]) && err[j] > SUS_EXP_FIT_FLOOR_REL * size && err[j] < size;
-}
-
-/* Rule 2: the longest run of candidates with one slope; the grid runs from large eps (j = 0) to
- * small, so "smaller eps wins a tie" is the larger j. Returns its length, 0 when none. */
-static int plateau(const double *eps, const double *err, double size, int *lo_out)
-{
-    int best_lo = -1, best_hi = -1;
-    for (int lo = 0; lo < NE; lo++)
-        for (int hi = lo; hi < NE && candidate(err, hi, size); hi++)
-            if (hi - lo + 1 >= MIN_POINTS && hi - lo >= best_hi - best_lo && one_slope(eps, err, lo, hi)) {
-                best_lo = lo;
-                best_hi = hi;
-            }
-    *lo_out = best_lo;
-    return best_lo < 0 ? 0 : best_hi - best_lo + 1;
-}
-
 static curve_order measure_order(const double *eps, const double *err, double size)
 {
-    curve_order c = {NAN, 1, NAN, NAN};
-    int lo, n = plateau(eps, err, size, &lo);
-    if (!n) { /* rule 4: the MIN_POINTS smallest-eps candidates (at least 3) */
-        c.plateau = 0;
-        int hi = NE - 1;
-        while (hi >= 0 && !candidate(err, hi, size))
-            hi--;
-        for (lo = hi; lo > 0 && hi - lo + 1 < MIN_POINTS && candidate(err, lo - 1, size); lo--)
-            ;
-        n = hi - lo + 1;
-    }
-    sus_exp_order_fit f;
-    if (n >= 3 && sus_exp_fit_order(eps + lo, err + lo, n, INFINITY, 0.0, &f) == 0) {
-        c.order = f.slope - 1.0;
-        c.eps_lo = f.eps_lo;
-        c.eps_hi = f.eps_hi;
-    }
-    return c;
+    int cand[NE];
+    for (int j = 0; j < NE; j++)
+        cand[j] = isfinite(err[j]) && err[j] > SUS_EXP_FIT_FLOOR_REL * size && err[j] < size;
+    const window_slope w = window_measure(eps, err, cand, NE);
+    return (curve_order){w.slope - 1.0, w.plateau, w.eps_lo, w.eps_hi};
 }
 
-/* TeoL: the pair (w, R) has order min(r, p). A rule-4 order is a lower estimate (the slope
+/* TeoL: the pair (w, R) has order min(r, p). An order without one slope is a lower estimate (the slope
  * still rises), so the smaller of the two decides the kind of line too. */
 static curve_order pair_order(curve_order r, curve_order p)
 {
@@ -208,7 +137,7 @@ static curve_order pair_order(curve_order r, curve_order p)
 typedef struct {
     double worst, lo, hi;     /* the order farthest from expected, and the range over bodies */
     const char *worst_body;
-    int fallback;             /* bodies measured by rule 4 */
+    int fallback;             /* bodies with only the lower estimate */
     int unmeasured;           /* bodies with fewer than 3 points above round-off */
     const char *unmeasured_body;
     double eps_lo, eps_hi;    /* the worst body's window */
@@ -233,7 +162,7 @@ static void summary_add(order_summary *s, curve_order c, double expected, const 
 }
 
 /* One ledger line for one order of one method over every body: two-sided on the worst body when
- * every body has a window of one slope, else one-sided on the lowest order (rule 4). */
+ * every body has a window of one slope, else one-sided on the lowest order (the lower estimate). */
 static void order_line(const char *id, const char *what, const sus_step_method *me, const order_summary *s,
                        int expected, const char *ref, ledger_assert truth)
 {
@@ -247,8 +176,8 @@ static void order_line(const char *id, const char *what, const sus_step_method *
     if (s->fallback) {
         snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d bodies (seed "
                               "%u); %d reach "
-                 "round-off before one slope, fit on the last %d points above it; range %.2f .. %.2f",
-                 what, me->type->name, BODIES_COUNT, BODIES_SEED, s->fallback, MIN_POINTS, s->lo, s->hi);
+                 "round-off before one slope, fit on the last octave above it; range %.2f .. %.2f",
+                 what, me->type->name, BODIES_COUNT, BODIES_SEED, s->fallback, s->lo, s->hi);
         ledger_add_bound(id, ref, q, s->lo, 0.5 * expected, 1, truth);
         return;
     }
@@ -256,7 +185,7 @@ static void order_line(const char *id, const char *what, const sus_step_method *
                           "%.2f",
              what, me->type->name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
                  s->hi);
-    ledger_add(id, ref, q, s->worst, expected, ORDER_TOL, truth);
+    ledger_add(id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
 }
 
 /* p, s and the SO(3) order with each reconstruction of one method, on every body. */
