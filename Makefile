@@ -18,6 +18,8 @@
 #   SAN=1           build into build/san with -fsanitize=address,undefined,float-cast-overflow
 #                   (added to any CFLAGS; float-cast-overflow is not part of undefined)
 
+# `make` alone is `make all`: the stamp rules below come first and would otherwise be the goal.
+.DEFAULT_GOAL := all
 CC      ?= cc
 BUILD   ?= build
 # An empty BUILD= would write to /obj and /suslov; a BUILD with a space breaks make's own lists.

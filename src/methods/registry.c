@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-/* One line per method: its stepper type (suslov_ID_type, defined in its stepper file), a display
+/* One line per method: its stepper type (sus_step_ID_type, defined in its stepper file), a display
  * family, the \label of the statement it tests (NULL for an extension), its default
  * reconstruction, and one line for --help. Everything else a consumer needs is in the type. */
 #define SUS_STEP_METHODS(M) \

@@ -8,7 +8,7 @@
 #  4. `make distclean` removes generated files and keeps the committed ones;
 #  5. an archive follows its layer's source list (a deleted source leaves no stale member), a
 #     change of CFLAGS recompiles, `make -q all` is truthful, and the test runner is given
-#     exactly the unit tests in tests/unit (not whatever BUILD_DIR holds).
+#     exactly the unit tests in tests/unit (not whatever BUILD_DIR holds); plain `make` is `make all`.
 # Usage: make_deps.sh BUILD_DIR. Last line: "make_deps: N passed, N failed".
 set -u
 B=${1:-build}
@@ -95,6 +95,9 @@ want=$(ls tests/unit/test_*.c | sed 's#tests/unit/##; s#\.c$##' | sort | tr '\n'
 got=$(make -n BUILD="$tmp/b" check 2>/dev/null | sed -n 's#.*tests/run.sh [^ ]* check ##p' | tr ' ' '\n' |
     sed 's#.*/##' | sed '/^$/d' | sort | tr '\n' ' ')
 [ "$got" = "$want" ] && ok || bad "make check runs '$got', expected '$want'"
+
+# plain `make` builds what `make all` builds (not only the first stamp the Makefile defines)
+make -n BUILD="$tmp/b" 2>/dev/null | grep -q -- "-o $tmp/b/suslov\$" && ok || bad "plain make does not build suslov"
 
 echo "make_deps: $pass passed, $fail failed"
 [ "$fail" = 0 ]

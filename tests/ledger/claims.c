@@ -659,7 +659,7 @@ int main(int argc, char **argv)
     section6_claims(&m, &ex);
     remark55_claims(&m, &ex);
     fig2more_claims(&m, &ex);
-    propocons1_claims(&m, &ex);
+    propocons1_claims();
     highorder_claims(&m, &ex);
     adaptive_claims();
     coverage_claims(&m);

@@ -20,8 +20,8 @@
  * A curve with fewer than 3 points above round-off has no order: the line fails. */
 #include "claims_methods.h"
 
-#include "bodies.h"
-#include "claims_window.h"
+#include "claims_bodies.h"
+#include "claims_orders.h"
 #include "consistency.h"
 #include "driver.h"
 #include "expected_orders.h"
@@ -36,59 +36,19 @@
 #include <string.h>
 
 #define U DBL_EPSILON
-#define NE 53                 /* eps k = 1.16 * 2^(-j/4), j = 0 .. 52 */
-#define EPS_K_MAX 1.16
-#define NTK 5
+#define NE CLAIMS_NE
+#define NTK CLAIMS_NTK
 #define NQ (2 + SUS_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
 
-typedef struct {
-    body b;
-    sus_model m;
-    sus_exact ex;
-    sus_exp_local_ref ref[NE][NTK];
-    double eps[NE];
-    double size[NQ];          /* size of w, of lambda, of R along the motion */
-} body_data;
-
-static body_data bodies[BODIES_COUNT];
-
-/* w and lambda at the starts and at the limit bound their sizes along the motion (E is kept, so
- * |w| moves within a factor cond(I_m)^(1/2); lambda changes with c(w) only). */
-static void body_sizes(body_data *d)
+/* The sizes of the NQ quantities on a body: w, lambda, and the entries of a rotation. */
+static double size_of(const claims_body *d, int q)
 {
-    double wl[2];
-    sus_exact_limit(&d->ex, wl);
-    double sw = hypot(wl[0], wl[1]), sl = fabs(sus_lagmult(&d->m, wl));
-    for (int t = 0; t < NTK; t++) {
-        const double *w = d->ref[0][t].w_k;
-        sw = fmax(sw, hypot(w[0], w[1]));
-        sl = fmax(sl, fabs(sus_lagmult(&d->m, w)));
-    }
-    d->size[0] = sw;
-    d->size[1] = sl;
-    for (int r = 0; r < SUS_RECON_COUNT; r++)
-        d->size[2 + r] = 1.0; /* entries of a rotation */
-}
-
-static void body_init(int k, body_data *d)
-{
-    static const double TK_RATE[NTK] = {0.0, 0.45, 1.0, 1.75, 2.9};
-    char err[256];
-    body_get(k, &d->b);
-    if (sus_model_init(&d->m, d->b.I, err, sizeof err) != 0)
-        ledger_die(err);
-    sus_exact_init(&d->ex, &d->m, d->b.w0);
-    for (int j = 0; j < NE; j++) {
-        d->eps[j] = EPS_K_MAX / d->ex.k * exp2(-0.25 * j);
-        for (int t = 0; t < NTK; t++)
-            sus_exp_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
-    }
-    body_sizes(d);
+    return q == 0 ? d->size_w : q == 1 ? d->size_lambda : 1.0;
 }
 
 /* The local error curves of one method on one body: err[q][j], the largest over the starts;
  * NaN where a step failed. */
-static void local_curves(const sus_step_method *me, const body_data *d, double err[NQ][NE])
+static void local_curves(const sus_step_method *me, const claims_body *d, double err[NQ][NE])
 {
     for (int j = 0; j < NE; j++) {
         for (int q = 0; q < NQ; q++)
@@ -108,116 +68,37 @@ static void local_curves(const sus_step_method *me, const body_data *d, double e
     }
 }
 
-/* The order measured on one curve (the rule of the header). */
-typedef struct {
-    double order;             /* NaN: fewer than 3 points above round-off */
-    int plateau;              /* 1: a window of one slope, 0: the lower estimate */
-    double eps_lo, eps_hi;
-} curve_order;
-
-static curve_order measure_order(const double *eps, const double *err, double size)
-{
-    int cand[NE];
-    for (int j = 0; j < NE; j++)
-        cand[j] = isfinite(err[j]) && err[j] > SUS_EXP_FIT_FLOOR_REL * size && err[j] < size;
-    const window_slope w = window_measure(eps, err, cand, NE);
-    return (curve_order){w.slope - 1.0, w.plateau, w.eps_lo, w.eps_hi};
-}
-
-/* TeoL: the pair (w, R) has order min(r, p). An order without one slope is a lower estimate (the slope
- * still rises), so the smaller of the two decides the kind of line too. */
-static curve_order pair_order(curve_order r, curve_order p)
-{
-    curve_order c = r.order <= p.order || isnan(r.order) ? r : p;
-    if (isnan(p.order))
-        c.order = NAN;
-    return c;
-}
-
-typedef struct {
-    double worst, lo, hi;     /* the order farthest from expected, and the range over bodies */
-    const char *worst_body;
-    int fallback;             /* bodies with only the lower estimate */
-    int unmeasured;           /* bodies with fewer than 3 points above round-off */
-    const char *unmeasured_body;
-    double eps_lo, eps_hi;    /* the worst body's window */
-} order_summary;
-
-static void summary_add(order_summary *s, curve_order c, double expected, const char *bname)
-{
-    if (isnan(c.order)) {
-        if (!s->unmeasured++)
-            s->unmeasured_body = bname;
-        return;
-    }
-    s->fallback += !c.plateau;
-    s->lo = fmin(s->lo, c.order);
-    s->hi = fmax(s->hi, c.order);
-    if (!s->worst_body || fabs(c.order - expected) > fabs(s->worst - expected)) {
-        s->worst = c.order;
-        s->worst_body = bname;
-        s->eps_lo = c.eps_lo;
-        s->eps_hi = c.eps_hi;
-    }
-}
-
-/* One ledger line for one order of one method over every body: two-sided on the worst body when
- * every body has a window of one slope, else one-sided on the lowest order (the lower estimate). */
-static void order_line(const char *id, const char *what, const sus_step_method *me, const order_summary *s,
-                       int expected, const char *ref, ledger_assert truth)
-{
-    char q[400];
-    if (s->unmeasured) {
-        snprintf(q, sizeof q, "%s, %s: fewer than 3 errors above 1000 u on %s (%d of %d bodies): no order",
-                 what, me->type->name, s->unmeasured_body, s->unmeasured, BODIES_COUNT);
-        ledger_add_bound(id, ref, q, -INFINITY, expected - 1.0, 1, truth);
-        return;
-    }
-    if (s->fallback) {
-        snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d bodies (seed "
-                              "%u); %d reach "
-                 "round-off before one slope, fit on the last octave above it; range %.2f .. %.2f",
-                 what, me->type->name, BODIES_COUNT, BODIES_SEED, s->fallback, s->lo, s->hi);
-        ledger_add_bound(id, ref, q, s->lo, 0.5 * expected, 1, truth);
-        return;
-    }
-    snprintf(q, sizeof q, "%s, %s; worst of %d bodies (seed %u) %s, window eps %.3g .. %.3g; range %.2f .. "
-                          "%.2f",
-             what, me->type->name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
-                 s->hi);
-    ledger_add(id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
-}
-
 /* p, s and the SO(3) order with each reconstruction of one method, on every body. */
 static void method_orders(const sus_step_method *me, const expected_order *eo)
 {
     static double err[BODIES_COUNT][NQ][NE];
     order_summary sum[NQ];
     for (int q = 0; q < NQ; q++)
-        sum[q] = (order_summary){.lo = INFINITY, .hi = -INFINITY};
+        sum[q] = order_summary_new();
     for (int k = 0; k < BODIES_COUNT; k++) {
-        const body_data *d = &bodies[k];
+        const claims_body *d = claims_body_get(k);
         local_curves(me, d, err[k]);
-        const curve_order p = measure_order(d->eps, err[k][0], d->size[0]);
-        summary_add(&sum[0], p, eo->p, d->b.name);
-        summary_add(&sum[1], measure_order(d->eps, err[k][1], d->size[1]), eo->s, d->b.name);
+        const curve_order p = order_of_curve(d->eps, err[k][0], NE, size_of(d, 0));
+        order_summary_add(&sum[0], p, eo->p, d->b.name);
+        order_summary_add(&sum[1], order_of_curve(d->eps, err[k][1], NE, size_of(d, 1)), eo->s, d->b.name);
         for (int r = 0; r < SUS_RECON_COUNT; r++)
-            summary_add(&sum[2 + r], pair_order(measure_order(d->eps, err[k][2 + r], d->size[2 + r]), p),
-                        eo->so3[r], d->b.name);
+            order_summary_add(&sum[2 + r], order_of_pair(order_of_curve(d->eps, err[k][2 + r], NE,
+                                                                        size_of(d, 2 + r)), p),
+                              eo->so3[r], d->b.name);
     }
     char id[96], what[160];
     snprintf(id, sizeof id, "method-p-%s", me->type->name);
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    order_line(id, "p: local w error slope - 1", me, &sum[0], eo->p, eo->ref, truth);
+    order_line(id, "p: local w error slope - 1", me->type->name, &sum[0], eo->p, eo->ref, truth);
     snprintf(id, sizeof id, "method-s-%s", me->type->name);
-    order_line(id, "s: local lambda error slope - 1", me, &sum[1], eo->s, eo->ref, truth);
+    order_line(id, "s: local lambda error slope - 1", me->type->name, &sum[1], eo->s, eo->ref, truth);
     for (int r = 0; r < SUS_RECON_COUNT; r++) {
         /* TeoL is about the Cayley reconstruction of Algorithm 5.1; the symmetric ones are ours */
         const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
         snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
         snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
                  SUS_RECON_NAMES[r]);
-        order_line(id, what, me, &sum[2 + r], eo->so3[r], paper ? "TeoL" : "TeoL (extension)",
+        order_line(id, what, me->type->name, &sum[2 + r], eo->so3[r], paper ? "TeoL" : "TeoL (extension)",
                    paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
 }
@@ -261,11 +142,11 @@ static void worst_add(structure_worst *s, double value, double bound, const char
  * reconstruction sums R_k D_k with compensation (reconstruct.h): what remains is the rounding of
  * the computed increments, |D| <= |g_i| eps |w| per substep with |g_i| < 2 for every tabulated
  * weight, four roundings per entry: 8 u N s eps |w|, plus 16 u for the last product. */
-static double orth_bound(const sus_stepper_type *t, const body_data *d)
+double method_orth_bound(const sus_stepper_type *t, long steps, double eps, double size_w)
 {
     if (t->attitude == SUS_ATTITUDE_QUAT)
         return 1e-14;
-    return 16.0 * U + 8.0 * U * (double)STRUCT_STEPS * t->substeps * STRUCT_EPS * d->size[0];
+    return 16.0 * U + 8.0 * U * (double)steps * t->substeps * eps * size_w;
 }
 
 /* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body. */
@@ -274,14 +155,15 @@ static void method_structure(const sus_step_method *me)
     const sus_stepper_type *t = me->type;
     structure_worst w3 = {0}, orth = {0}, en = {0};
     for (int k = 0; k < BODIES_COUNT; k++) {
-        const body_data *d = &bodies[k];
+        const claims_body *d = claims_body_get(k);
         structure_ctx c = {&d->m, sus_energy(&d->m, d->b.w0), 0, 0, 0};
         const sus_run_config cfg = {&d->m, me->type, me->recon, STRUCT_EPS, STRUCT_STEPS, 1};
         sus_run_report rep;
         if (sus_run(&cfg, d->b.w0, track, &c, &rep) != 0)
             c.energy = c.w3 = c.orth = INFINITY;
         worst_add(&w3, c.w3, 1.0, d->b.name);
-        worst_add(&orth, c.orth, orth_bound(t, d), d->b.name);
+        worst_add(&orth, c.orth, method_orth_bound(t, STRUCT_STEPS, STRUCT_EPS, size_of(d, 0)),
+                  d->b.name);
         /* each substep rounds E a few times and the errors need not cancel: 8 u E per substep */
         worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.e0, d->b.name);
     }
@@ -311,8 +193,6 @@ static void method_structure(const sus_step_method *me)
 
 void methods_claims(void)
 {
-    for (int k = 0; k < BODIES_COUNT; k++)
-        body_init(k, &bodies[k]);
     for (int i = 0; i < sus_step_method_count(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
         const expected_order *eo = expected_order_of(me->type->name);

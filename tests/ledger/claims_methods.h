@@ -3,6 +3,12 @@
 #ifndef SUSLOV_CLAIMS_METHODS_H
 #define SUSLOV_CLAIMS_METHODS_H
 
+#include "stepper.h"
+
 void methods_claims(void);
+
+/* The round-off bound on |R^T R - I| after `steps` steps of eps with |w| <= size_w, by the method's
+ * attitude form (the reasons are at its definition). */
+double method_orth_bound(const sus_stepper_type *t, long steps, double eps, double size_w);
 
 #endif
