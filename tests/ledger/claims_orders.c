@@ -48,14 +48,14 @@ void order_summary_add(order_summary *s, curve_order c, double expected, const c
     }
 }
 
-void order_line(const char *id, const char *what, const char *name, const order_summary *s, int expected,
-                const char *ref, ledger_assert truth)
+void order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
+                   const order_summary *s, int expected, const char *ref, ledger_assert truth)
 {
     char q[400];
     if (s->unmeasured) {
         snprintf(q, sizeof q, "%s, %s: fewer than 3 errors above 1000 u on %s (%d of %d bodies): no order",
                  what, name, s->unmeasured_body, s->unmeasured, BODIES_COUNT);
-        ledger_add_bound(id, ref, q, -INFINITY, expected - 1.0, 1, truth);
+        ledger_add_bound_at(file, line, id, ref, q, -INFINITY, expected - 1.0, 1, truth);
         return;
     }
     if (s->fallback) {
@@ -63,11 +63,11 @@ void order_line(const char *id, const char *what, const char *name, const order_
                               "%u); %d reach "
                  "round-off before one slope, fit on the last octave above it; range %.2f .. %.2f",
                  what, name, BODIES_COUNT, BODIES_SEED, s->fallback, s->lo, s->hi);
-        ledger_add_bound(id, ref, q, s->lo, 0.5 * expected, 1, truth);
+        ledger_add_bound_at(file, line, id, ref, q, s->lo, 0.5 * expected, 1, truth);
         return;
     }
     snprintf(q, sizeof q, "%s, %s; worst of %d bodies (seed %u) %s, window eps %.3g .. %.3g; range %.2f .. "
                           "%.2f",
              what, name, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo, s->hi);
-    ledger_add(id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
+    ledger_add_at(file, line, id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
 }
