@@ -89,17 +89,17 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
     char id[96], what[160];
     snprintf(id, sizeof id, "method-p-%s", me->type->name);
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    order_line(id, "p: local w error slope - 1", me->type->name, &sum[0], eo->p, eo->ref, truth);
+    ledger_order_line(id, "p: local w error slope - 1", me->type->name, &sum[0], eo->p, eo->ref, truth);
     snprintf(id, sizeof id, "method-s-%s", me->type->name);
-    order_line(id, "s: local lambda error slope - 1", me->type->name, &sum[1], eo->s, eo->ref, truth);
+    ledger_order_line(id, "s: local lambda error slope - 1", me->type->name, &sum[1], eo->s, eo->ref, truth);
     for (int r = 0; r < SUS_RECON_COUNT; r++) {
         /* TeoL is about the Cayley reconstruction of Algorithm 5.1; the symmetric ones are ours */
         const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
         snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
         snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
                  SUS_RECON_NAMES[r]);
-        order_line(id, what, me->type->name, &sum[2 + r], eo->so3[r], paper ? "TeoL" : "TeoL (extension)",
-                   paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
+        ledger_order_line(id, what, me->type->name, &sum[2 + r], eo->so3[r],
+                          paper ? "TeoL" : "TeoL (extension)", paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
 }
 

@@ -48,7 +48,7 @@ void order_summary_add(order_summary *s, curve_order c, double expected, const c
     }
 }
 
-void order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
+void ledger_order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
                    const order_summary *s, int expected, const char *ref, ledger_assert truth)
 {
     char q[400];

@@ -35,8 +35,8 @@ void order_summary_add(order_summary *s, curve_order c, double expected, const c
 
 /* The line: "what, name" measured over every body against expected; its source column names the
  * caller (a macro, as ledger_add). */
-#define order_line(...) order_line_at(__FILE__, __LINE__, __VA_ARGS__)
-void order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
+#define ledger_order_line(...) ledger_order_line_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
                    const order_summary *s, int expected, const char *ref, ledger_assert truth);
 
 #endif

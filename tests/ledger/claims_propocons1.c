@@ -88,15 +88,15 @@ static void claims_lines(const integrator *it, const order_summary sum[3], doubl
 {
     char id[64], what[200];
     snprintf(id, sizeof id, "propocons1-r-%s", it->id);
-    order_line(id, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1 on (LdAeqs)", it->id,
-               &sum[0], it->r, "Def. UnredConsis (extension)", LEDGER_EXTENSION);
+    ledger_order_line(id, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1 on (LdAeqs)",
+                      it->id, &sum[0], it->r, "Def. UnredConsis (extension)", LEDGER_EXTENSION);
     snprintf(id, sizeof id, "propocons1-reduced-%s", it->id);
     snprintf(what, sizeof what, "order of xi_k = vee(R_k^T V_k) (= l, left-trivialized velocity: PropoCons1 "
              "holds by Def. UnredConsis 2), min(r, l) = %d; l = %d", it->r < it->l ? it->r : it->l, it->l);
-    order_line(id, what, it->id, &sum[1], it->l, "PropoCons1", LEDGER_REPRODUCED);
+    ledger_order_line(id, what, it->id, &sum[1], it->l, "PropoCons1", LEDGER_REPRODUCED);
     snprintf(id, sizeof id, "propocons1-lambda-%s", it->id);
     snprintf(what, sizeof what, "s of lambda(xi_{k+1}) (LagMult): it carries over with l = %d", it->l);
-    order_line(id, what, it->id, &sum[2], it->l, "PropoCons1", LEDGER_REPRODUCED);
+    ledger_order_line(id, what, it->id, &sum[2], it->l, "PropoCons1", LEDGER_REPRODUCED);
     if (it->r == it->l)
         return;
     /* the reduced order is l, not min(r, l); PropoCons1 itself holds by definition (the reduced
