@@ -30,7 +30,7 @@ typedef struct {
     double eps, T, tol, every_time;
     long steps, every;
     double w0[2], inertia[9];
-    int quiet, header, header_given, list, every_given;
+    int quiet, header, header_given, list, every_given, omega0_given, inertia_given;
     long sweeps;
 } given;
 
@@ -57,10 +57,12 @@ static void set_time(void *g, const cli_option *o, const char *v)
 static void set_omega0(void *g, const cli_option *o, const char *v)
 {
     cli_list(o->name, v, ((given *)g)->w0, 2);
+    ((given *)g)->omega0_given = 1;
 }
 static void set_inertia(void *g, const cli_option *o, const char *v)
 {
     cli_list(o->name, v, ((given *)g)->inertia, 9);
+    ((given *)g)->inertia_given = 1;
 }
 static void set_recon(void *g, const cli_option *o, const char *v)
 {
@@ -163,7 +165,9 @@ static const cli_option OPTIONS[] = {
                     "rounding units of T), else it is refused with the nearest valid T", set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0, NULL},
     {"--inertia", "I11,...,I33", "inertia tensor by rows, as printed in the paper (only I_m and the\n"
-                                 "third row enter); I_m must be symmetric positive definite;\n"
+                                 "third row enter); I_m must be symmetric positive definite, its\n"
+                                 "determinant resolved and the coefficients of (ContDyn) and\n"
+                                 "(LagMult) finite in double precision (else refused, saying which);\n"
                                  "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1", set_inertia, NULL},
     {"--reconstruct", "R", "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
                            "method that carries its own attitude (it is ignored there):", set_recon,
@@ -393,6 +397,23 @@ static void check_fixed_steps(suslov_args *a, const given *g)
     a->t_end = (double)a->steps * a->eps;
 }
 
+/* E and lambda at w0 must be finite numbers (row 0 prints them). They depend on w0 and the body
+ * alike, so the message names the options that were given: the default of the other is not the
+ * user's doing. */
+static void check_start(const suslov_args *a, const given *g)
+{
+    const double w[3] = {g->w0[0], g->w0[1], 0.0};
+    const char *what = !isfinite(sus_energy(&a->model, w))    ? "energy"
+                       : !isfinite(sus_lagmult(&a->model, w)) ? "multiplier lambda"
+                                                              : NULL;
+    if (!what)
+        return;
+    const char *opts =
+        g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
+    cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, g->w0[0], g->w0[1],
+            g->inertia_given ? "this" : "the paper's (default)");
+}
+
 static void check_run(suslov_args *a, const given *g)
 {
     char err[1024];
@@ -410,9 +431,7 @@ static void check_run(suslov_args *a, const given *g)
         cli_die("%s", bad);
     if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0)
         cli_die("--inertia: %s", err);
-    const double w[3] = {g->w0[0], g->w0[1], 0.0};
-    if (!isfinite(sus_energy(&a->model, w)) || !isfinite(sus_lagmult(&a->model, w)))
-        cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
+    check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);

@@ -59,6 +59,11 @@ bad() { # bad DESCRIPTION ARGS...
     fi
 }
 bad "unknown option" --method rk4 --eps 0.1 --steps 3 --frobnicate 2
+bad_says() { # bad_says DESCRIPTION PATTERN ARGS...: bad input, and its one line matches PATTERN
+    d=$1 pat=$2; shift 2
+    bad "$d" "$@"
+    check "$d: the line says '$pat' ($(cat "$T/err"))" grep -q -- "$pat" "$T/err"
+}
 bad "unknown method" --method leapfrog --eps 0.1 --steps 3
 bad "malformed number" --method rk4 --eps 0.1x --steps 3
 bad "H <= 0" --method rk4 --eps -1 --steps 3
@@ -102,7 +107,29 @@ bad "subnormal --eps" --method rk4 --eps 1e-320 --steps 3
 bad "N H overflows" --method rk4 --eps 1e308 --steps 2
 bad "--steps beyond 2^63-1" --method exact --eps 1 --steps 9223372036854775808
 bad "--time gives more than 2^63-1 steps" --method exact --eps 1e-300 --time 1e300
-bad "the energy at w0 overflows" --method rk4 --eps 0.1 --steps 3 --omega0 1e200,1e200
+bad_says "the energy at w0 overflows: the line names --omega0 only" \
+    '^suslov: error: --omega0: the energy at w0 = (9.9999999999999997e+199, 9.9999999999999997e+199) overflows' \
+    --method rk4 --eps 0.1 --steps 3 --omega0 1e200,1e200
+bad_says "the multiplier at the default w0 overflows with this inertia: the line names --inertia, not --omega0" \
+    '^suslov: error: --inertia: the multiplier lambda at w0 = (0.40000000000000002, 0.5) overflows with this inertia' \
+    --method midpoint --eps 0.1 --steps 5 --inertia 1,0,0,0,1,0,1e300,1e300,1
+# what double precision cannot hold is refused for that reason, not called indefinite or put on w0
+bad_says "I_m positive definite but lost to cancellation" "too ill-conditioned for double precision" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0.99999999999999989,0,0.99999999999999989,1,0,0,0,1
+bad_says "I22/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a (ContDyn) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1e-300,9.9999999999999956e-146,0,9.9999999999999956e-146,1e10,0,0,0,1
+bad_says "|(I31, I32)| overflows" "too extreme for double precision: the size of the (ContDyn) field" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1,0,1.7e308,1.7e308,1
+bad_says "I31 I22 = 1e310 overflows" "too extreme for double precision: a (LagMult) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1e10,0,1e300,1,1 --omega0 1e-200,1e-200
+# I_m = diag(1e-200, 1e200) is positive definite with |I_m| = 1 and every coefficient in range: a
+# body; with I31 = I32 = 0, c(w) = 0 and (ContDyn) keeps w = w0 on every row
+for m in exact midpoint taylor8; do
+    "$S" --no-header --method $m --eps 0.1 --steps 3 --inertia 1e-200,0,0,0,1e200,0,0,0,1 >"$T/wide.csv" 2>"$T/err"
+    rc=$? w=$(tail -n +2 "$T/wide.csv" | cut -d, -f3-5 | sort -u | tr '\n' ' ')
+    check "$m: I_m = diag(1e-200, 1e200) is accepted (exit $rc, $(cat "$T/err")), w = w0 on rows 0-3 ($w)" \
+        test "$rc" = 0 -a "$w" = "0.40000000000000002,0.5,0 " -a "$(wc -l <"$T/wide.csv")" = 5
+done
 bad "a newline in an argument" --method "$(printf 'rk\n4')" --eps 0.1 --steps 3
 bad "control characters in an option name" --method rk4 --eps 0.1 --steps 3 "$(printf -- '--a\tb\rc\033d\ne')" 1
 bad "a newline in a list" --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')"
