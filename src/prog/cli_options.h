@@ -43,6 +43,14 @@ void cli_line(FILE *fp, int man, const char *fmt, ...) __attribute__((format(pri
 /* Exits 0 after a text on stdout, or 1 with one line when it could not be written. */
 void cli_exit_stdout(void) __attribute__((noreturn));
 
+/* A user's argument (its first n bytes) as a message quotes it: 'TEXT', or, beyond
+ * CLI_ECHO_MAX characters, 'FIRST...' (N characters), so that the reason after it always fits
+ * the line. The text lives in one of four buffers used in turn: one message may quote up to
+ * four arguments. */
+#define CLI_ECHO_MAX 40
+const char *cli_quote_n(const char *s, size_t n);
+const char *cli_quote(const char *s);
+
 /* "suslov: error: MESSAGE" on one line, control characters escaped; cli_die adds
  * " (see suslov --help)" and exits 2. */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));

@@ -219,7 +219,8 @@ static const cli_section SECTIONS[] = {
     {"EXIT STATUS",
      "0 success; 1 output error (writing failed: disk full, inodes exhausted, I/O error);\n"
      "2 bad input (one line; nothing written); 3 solver failure or blow-up (one line naming\n"
-     "the step and t); 128+n killed by signal n."},
+     "the step and t, and for a failed solve its residual or error estimate); 128+n killed by\n"
+     "signal n."},
     {"ENVIRONMENT",
      "NO_COLOR (non-empty) and TERM=dumb: the progress line uses no escape sequence.\n"
      "SUSLOV_NO_O_TMPFILE (non-empty, for tests): use a named temporary file instead of an\n"
@@ -326,7 +327,7 @@ static int resolve_method(suslov_args *a, const given *g)
     const int exact = strcmp(g->method, "exact") == 0;
     a->method = exact ? NULL : sus_step_method_by_name(g->method);
     if (!exact && !a->method)
-        cli_die("unknown method '%s' (exact, %s; or list)", g->method,
+        cli_die("unknown method %s (exact, %s; or list)", cli_quote(g->method),
                 sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
@@ -336,7 +337,7 @@ static int resolve_method(suslov_args *a, const given *g)
         for (int r = 0; r < SUS_RECON_COUNT; r++)
             len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
                                     SUS_RECON_NAMES[r]);
-        cli_die("unknown reconstruction '%s' (%s)", g->recon, names);
+        cli_die("unknown reconstruction %s (%s)", cli_quote(g->recon), names);
     }
     if (exact)
         cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");

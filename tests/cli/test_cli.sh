@@ -138,6 +138,21 @@ check "a subnormal --eps is called too small, not 'not finite' ($(cat "$T/err"))
     sh -c "grep -q 'too small' '$T/err' && ! grep -q 'not a finite' '$T/err'"
 "$S" --no-header --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')" 2>"$T/err" >/dev/null
 check "control characters in quoted text are escaped: $(cat "$T/err")" grep -qF "'1\n'" "$T/err"
+# a long argument is echoed as its first 40 characters, "..." and its length, so that the reason
+# after it always fits the line (a 2103-character --eps cut it after the quoted digits)
+"$S" --method rk4 --eps "0.$(printf '%02100d' 0)1" --steps 1 2>"$T/err" >/dev/null; rc=$?
+check "a 2103-character --eps: exit $rc, echoed cut to 40 characters, then the reason: $(cat "$T/err")" \
+    sh -c "test $rc = 2 && grep -q \"^suslov: error: --eps: '0\\.0\\{38\\}\\.\\.\\.' (2103 characters) is too small: .* (see suslov --help)\$\" '$T/err'"
+e50=$(awk 'BEGIN { for (i = 0; i < 50; i++) printf "\303\251" }') # 50 times U+00E9, 2 bytes each
+e40=$(printf '%s' "$e50" | cut -c1-80)
+"$S" --method "$e50" --eps 0.1 --steps 1 2>"$T/err" >/dev/null
+check "a 50-character method name is cut after 40 characters (UTF-8 counted as characters, none split)" \
+    grep -qF "unknown method '$e40...' (50 characters) (exact, " "$T/err"
+deep="$T/missing"
+for i in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15; do deep="$deep/$(printf '%0200d' "$i")"; done
+"$S" --method rk4 --eps 0.1 --steps 1 --output "$deep/x.csv" 2>"$T/err" >/dev/null; rc=$?
+check "a 3000-character --output path in no directory: exit $rc, one line that still ends with its reason" \
+    sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q 'characters) does not exist (see suslov --help)\$' '$T/err'"
 
 # the output path is checked before computing (a run of 10^13 steps would take hours):
 # empty, a directory, a missing directory, a read-only directory -> exit 2, nothing created
