@@ -126,31 +126,45 @@ static void show_version(void *g, const cli_option *o, const char *v)
 
 /* ---- lists under --method and --reconstruct ---- */
 
+/* A method that carries its own attitude says so on its line: the registry's field says which,
+ * so no list of names is kept here. */
 static void more_methods(FILE *fp, int man)
 {
     cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        cli_line(fp, man, "%-15s %s", me->type->name, me->about);
+        cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
+                 me->type->follows_recon ? "" : " (ignores --reconstruct)");
+    }
+}
+
+/* The names of the methods whose attitude follows --reconstruct (follows = 1) with default
+ * reconstruction `which`, or that carry their own attitude of form `which` (follows = 0). */
+static void names_where(char *buf, size_t len, int follows, int which)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
+        const int key = follows ? (int)me->recon : (int)me->type->attitude;
+        if (!me->type->follows_recon == !follows && key == which && n < len)
+            n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "  ", me->type->name);
     }
 }
 
 static void more_recons(FILE *fp, int man)
 {
+    char names[512];
     for (int r = 0; r < SUS_RECON_COUNT; r++)
         cli_line(fp, man, "%-12s %s", SUS_RECON_NAMES[r], SUS_RECON_ABOUT[r]);
     cli_line(fp, man, "default, the method's own:");
-    for (int r = 0; r < SUS_RECON_COUNT; r++) {
-        char names[512];
-        size_t n = 0;
-        names[0] = '\0';
-        for (int i = 0; i < sus_step_method_count_all(); i++)
-            if (sus_step_method_get(i)->recon == (sus_recon)r && n < sizeof names)
-                n += (size_t)snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "  ",
-                                      sus_step_method_get(i)->type->name);
-        if (n)
+    for (int r = 0; r < SUS_RECON_COUNT; r++)
+        if (names_where(names, sizeof names, 1, r), names[0])
             cli_line(fp, man, "%s: %s", names, SUS_RECON_NAMES[r]);
-    }
+    for (int f = SUS_ATTITUDE_NONE; f <= SUS_ATTITUDE_QUAT; f++)
+        if (names_where(names, sizeof names, 0, f), names[0])
+            cli_line(fp, man, "%s: none, their own %s attitude", names,
+                     sus_step_attitude_name((sus_attitude_form)f));
 }
 
 /* ---- the table ---- */
@@ -242,15 +256,9 @@ static const cli_spec SPEC = {
 
 /* ---- --method list ---- */
 
-static int uses_reconstruction(const sus_step_method *me, const sus_model *m);
-
 /* The reconstruction column says "own" for a method that carries its own attitude. */
 static void method_list(void)
 {
-    char err[256];
-    sus_model paper;
-    if (sus_model_init(&paper, SUS_PAPER_INERTIA, err, sizeof err) != 0)
-        cli_die("the paper's inertia is rejected: %s", err);
     const int tty = isatty(STDOUT_FILENO);
     const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
     printf(fmt, "name", "family", "order", "reconstruct", "about");
@@ -260,7 +268,7 @@ static void method_list(void)
         char order[16];
         snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->order);
         printf(fmt, me->type->name, me->family, order,
-               uses_reconstruction(me, &paper) ? SUS_RECON_NAMES[me->recon] : "own", me->about);
+               me->type->follows_recon ? SUS_RECON_NAMES[me->recon] : "own", me->about);
     }
     cli_exit_stdout();
 }
@@ -299,26 +307,6 @@ static long steps_for_time(double T, double eps)
     return (long)n;
 }
 
-/* Whether a method's attitude depends on --reconstruct: one step from the paper's start with
- * two reconstructions. A method that carries its own attitude (a Taylor series) gives the same
- * R both ways; this asks the method itself, so no list of names is kept here. */
-static int uses_reconstruction(const sus_step_method *me, const sus_model *m)
-{
-    double R[2][3][3];
-    if (me->type->tol) /* a tolerance-driven method has no single step to probe; its attitude is its own */
-        return me->type->follows_recon;
-    for (int r = 0; r < 2; r++) {
-        sus_attitude att;
-        double w[3] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
-        sus_stepper_stats st;
-        sus_attitude_identity(&att);
-        sus_stepper_full(me->type, m, 0.25, r ? SUS_RECON_CAYLEY : SUS_RECON_EXP_MID, &att, w, wn, &lam,
-                         &st);
-        sus_attitude_get(&att, R[r]);
-    }
-    return memcmp(R[0], R[1], sizeof R[0]) != 0;
-}
-
 /* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
  * check has passed, so that bad input still gets exactly one line). */
 static int resolve_method(suslov_args *a, const given *g)
@@ -341,7 +329,7 @@ static int resolve_method(suslov_args *a, const given *g)
     }
     if (exact)
         cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
-    return !uses_reconstruction(a->method, &a->model);
+    return !a->method->type->follows_recon;
 }
 
 /* --sweeps replaces the midpoint rule's Newton solve, so it needs that method. */
@@ -493,10 +481,13 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
         put_arg(fp, i ? argv[i] : "suslov");
     }
     if (a->method)
-        fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
-                a->method->family,
-                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order,
-                SUS_RECON_NAMES[a->recon]);
+        fprintf(fp, "\n# method: %s (%s, order %d), ", a->method->type->name, a->method->family,
+                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order);
+    if (a->method && a->method->type->follows_recon)
+        fprintf(fp, "reconstruction %s\n", SUS_RECON_NAMES[a->recon]);
+    else if (a->method) /* what --method list calls "own" */
+        fprintf(fp, "attitude: own (%s; --reconstruct does not apply)\n",
+                sus_step_attitude_name(a->method->type->attitude));
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     if (a->sweeps)
