@@ -195,7 +195,8 @@ static const cli_option OPTIONS[] = {
                      "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
                      "after 10^6 steps short of T", set_tol, NULL},
     {"--every-time", "DT", "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
-                           "method's dense output (default: the end of every accepted step)",
+                           "method's dense output (default: the end of every accepted step);\n"
+                           "T/DT <= 2^63 - 1, and a time within 4 rounding units of T is T",
      set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
     {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
@@ -362,6 +363,10 @@ static void check_tol_run(suslov_args *a, const given *g)
         cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
         cli_die("--every-time must be positive, got %.17g", g->every_time);
+    /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
+    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
+        cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld", g->T, g->every_time,
+                g->T / g->every_time, LONG_MAX);
     a->tol = g->tol;
     a->t_end = g->T;
     a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;

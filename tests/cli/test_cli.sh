@@ -89,12 +89,21 @@ bad "--tol with --steps" $A --tol 1e-8 --steps 3
 bad "--tol without --time" $A --tol 1e-8
 bad "--tol with --every" $A --tol 1e-8 --time 1 --every 2
 bad "--every-time <= 0" $A --tol 1e-8 --time 1 --every-time 0
+# T/DT rows, like --steps, at most 2^63 - 1 (1e-300 asked for 1e301 rows and wrote for ever)
+bad_says "--every-time 1e-300 to --time 10" "asks for 1e+301 rows, more than 9223372036854775807" \
+    $A --tol 1e-8 --time 10 --every-time 1e-300
+bad "--every-time 1e-19 to --time 1 (1e19 > 2^63 - 1 rows)" $A --tol 1e-8 --time 1 --every-time 1e-19
 bad "taylor-adaptive without --tol" $A --time 1
 bad "--tol to a fixed-step method" --method rk4 --eps 0.1 --steps 3 --tol 1e-8
 bad "--every-time without --tol" --method rk4 --eps 0.1 --steps 3 --every-time 0.5
 "$S" $A --tol 1e-10 --time 10 --every-time 2.5 --no-header >"$T/tol.csv"; rc=$?
 check "--tol 1e-10 --every-time 2.5 to 10: exit $rc, rows at t = $(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" \
     test "$rc" = 0 -a "$(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" = "0 2.5 5 7.5 10 "
+# 3 x 0.7 rounds to 2.0999999999999996, within 4u T of T = 2.1: that is T, one final row
+"$S" $A --tol 1e-8 --time 2.1 --every-time 0.7 --no-header >"$T/tol.csv"; rc=$?
+ts=$(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')
+check "--time 2.1 --every-time 0.7: exit $rc, rows at t = 0, 0.7, 1.4 and T = 2.1 only ($ts)" \
+    test "$rc" = 0 -a "$ts" = "0 0.69999999999999996 1.3999999999999999 2.1000000000000001 "
 bad "unknown reconstruction" --method rk4 --eps 0.1 --steps 3 --reconstruct exp
 bad "empty list field" --method rk4 --eps 0.1 --steps 3 --omega0 1,,2
 bad "leading and trailing comma" --method rk4 --eps 0.1 --steps 3 --omega0 ,1,2,
