@@ -193,6 +193,25 @@ void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
     }
 }
 
+int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, const char **val)
+{
+    int count = 0;
+    *val = NULL;
+    for (int i = 1; i < argc; i++, count++) {
+        const char *arg = argv[i], *eq = strchr(arg, '=');
+        if (strcmp(arg, "--") == 0)
+            return count + (i + 1 < argc);
+        const size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        const int k = strncmp(arg, "--", 2) == 0 ? find(spec, arg, len) : -1;
+        if (k < 0 || !spec->opts[k].arg)
+            continue;
+        const char *v = eq ? eq + 1 : i + 1 < argc ? argv[++i] : NULL;
+        if (strcmp(spec->opts[k].name, name) == 0)
+            *val = v;
+    }
+    return count;
+}
+
 /* ---- --help ---- */
 
 static void help_lines(FILE *fp, const char *text, const char *first, const char *indent)

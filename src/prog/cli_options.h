@@ -34,6 +34,10 @@ typedef struct {
  * option, an unknown option, a missing value, a value given to a flag and an option given
  * twice are each bad input (cli_die). Calls each option's handler in order. */
 void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg);
+/* Walks argv as cli_parse does, calling no handler: returns the number of options given (an
+ * operand or an unknown option counts as one), and sets *val to the value of option `name` (NULL
+ * when it is absent or has none), so that a caller can see one option before any handler runs. */
+int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, const char **val);
 void cli_help(const cli_spec *spec, FILE *fp);
 /* The manual page in roff (man(7)); version goes into its header line. */
 void cli_man(const cli_spec *spec, const char *version, FILE *fp);

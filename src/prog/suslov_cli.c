@@ -170,9 +170,9 @@ static void more_recons(FILE *fp, int man)
 /* ---- the table ---- */
 
 static const cli_option OPTIONS[] = {
-    {"--method", "M", "the method (required); `--method list` prints name, family, order,\n"
-                      "default reconstruction and description (a table on a terminal, TSV\n"
-                      "otherwise)", set_method, more_methods},
+    {"--method", "M", "the method (required); `--method list`, given alone (no other option),\n"
+                      "prints name, family, order, default reconstruction and description (a\n"
+                      "table on a terminal, TSV otherwise)", set_method, more_methods},
     {"--eps", "H", "time step, H > 0", set_eps, NULL},
     {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1", set_steps, NULL},
     {"--time", "T", "final time instead of --steps: T/H must be a whole number N (to 4\n"
@@ -443,6 +443,10 @@ void suslov_cli_parse(suslov_args *a, int argc, char **argv)
     given g = {.eps = NAN, .T = NAN, .tol = NAN, .every_time = NAN, .every = 1, .header = 1,
                .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
+    /* before any handler: another option's check or action (--help) would come first */
+    const char *method;
+    if (cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method && strcmp(method, "list") == 0)
+        cli_die("--method list takes no other options");
     cli_parse(&SPEC, argc, argv, &g);
     memset(a, 0, sizeof *a);
     check_run(a, &g);

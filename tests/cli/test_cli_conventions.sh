@@ -36,6 +36,13 @@ if command -v script >/dev/null; then
     check "--method list on a terminal: an aligned table, no tabs" sh -c "grep -q '^exact  *closed form' '$T/tty' && ! grep -q \"\$(printf '\t')\" '$T/tty'"
 fi
 
+# --method list takes no other option, valid or not: exit 2, one line, nothing written
+for extra in "--eps -1" "--eps 0.1" "--output $T/lst.csv" "--help" "--no-header"; do
+    bad "--method list $extra" "^suslov: error: --method list takes no other options" --method list $extra
+done
+bad "--eps -1 --method=list (either order, either spelling)" "takes no other options" --eps -1 --method=list
+check "--method list --output FILE creates no FILE" test ! -e "$T/lst.csv"
+
 # one number grammar: counts accept 1e6 and 0x10 when whole numbers
 a=$("$S" --no-header --method exact --eps 1e-6 --steps 1e6 --every 1e6 | tail -1 | cut -d, -f1)
 b=$("$S" --no-header --method exact --eps 1e-6 --steps 0x10 --every 2e0 | tail -1 | cut -d, -f1)
