@@ -200,7 +200,12 @@ int main(int argc, char **argv)
     suslov_cli_parse(&a, argc, argv);
     gsl_set_error_handler_off();
     sus_sys_atomic_file af;
-    if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) { /* checked before: the system */
+    if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) {
+        /* Nothing is written yet: a path the system will not let us create in (a permission,
+         * a read-only filesystem, which root's access() checks cannot foresee) is bad input, as
+         * the checks before; anything else (no space, no inode, I/O) is an output error. */
+        if (errno == EACCES || errno == EPERM || errno == EROFS)
+            cli_die("--output: %s", err);
         cli_error("--output: %s", err);
         return EXIT_WRITE;
     }

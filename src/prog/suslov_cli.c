@@ -233,7 +233,8 @@ static const cli_section SECTIONS[] = {
      "is checked before it."},
     {"EXIT STATUS",
      "0 success; 1 output error (writing failed: disk full, inodes exhausted, I/O error);\n"
-     "2 bad input (one line; nothing written); 3 solver failure or blow-up (one line naming\n"
+     "2 bad input (one line; nothing written), --output FILE that permissions or a read-only\n"
+     "filesystem keep from being created included; 3 solver failure or blow-up (one line naming\n"
      "the step and t, and for a failed solve its residual or error estimate); 128+n killed by\n"
      "signal n."},
     {"ENVIRONMENT",

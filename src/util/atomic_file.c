@@ -318,9 +318,11 @@ static int open_in_place(sus_sys_atomic_file *af, const char *path, int fd, char
     }
     const int mine = fd >= 0 ? fcntl(fd, F_DUPFD_CLOEXEC, 3) : open(path, O_WRONLY | O_CLOEXEC);
     if (mine < 0 || !(af->fp = fdopen(mine, "w"))) {
-        snprintf(err, errlen, "cannot open %s: %s", shown(path), strerror(errno));
+        const int saved = errno;
+        snprintf(err, errlen, "cannot open %s: %s", shown(path), strerror(saved));
         if (mine >= 0)
             close(mine);
+        errno = saved;
         return -1;
     }
     return 0;
@@ -390,9 +392,11 @@ int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *er
     }
     /* fchmod ignores the umask: an existing file keeps exactly its mode. */
     if (fchmod(fd, mode) != 0 || !(af->fp = fdopen(fd, "w"))) {
-        snprintf(err, errlen, "cannot create %s: %s", shown(path), strerror(errno));
+        const int saved = errno; /* for the caller, past the cleanup */
+        snprintf(err, errlen, "cannot create %s: %s", shown(path), strerror(saved));
         close(fd);
         sus_sys_atomic_file_abort(af);
+        errno = saved;
         return -1;
     }
     return 0;

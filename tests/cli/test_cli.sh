@@ -174,6 +174,17 @@ for o in "" "$T" "$T/missing/x.csv" "$T/ro/x.csv"; do
         sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' -a ! -e '$T/missing' -a -z \"\$(ls -A '$T/ro')\""
 done
 chmod 755 "$T/ro"
+# a directory root's access() calls writable but where no file can be created (/sys/kernel:
+# EACCES at creation) is bad input too: exit 2 and one line before computing, as above (it was
+# exit 1, an output error, without the pointer to --help)
+if [ "$(id -u)" = 0 ] && [ -d /sys/kernel ] && ! (: >/sys/kernel/suslov-probe) 2>/dev/null; then
+    timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 \
+        --output /sys/kernel/x.csv >"$T/out" 2>"$T/err"; rc=$?
+    check "--output /sys/kernel/x.csv as root: exit $rc (2), one line, before computing ($(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q 'Permission denied (see suslov --help)\$' '$T/err'"
+else
+    skip "--output where root cannot create a file: needs root and a /sys/kernel that refuses files"
+fi
 
 # a solver failure: exit 3, message names step, t, residual; the file keeps the rows before it
 "$S" --no-header --method variational --eps 1000 --steps 10 --omega0 4,5 --output "$T/fail.csv" 2>"$T/err"; rc=$?
