@@ -19,11 +19,11 @@ typedef struct {
 
 /* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
  * rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the method's
- * dense output), or at the end of every accepted step (every_time = 0). A row's k counts the
- * steps accepted up to its t. The number of steps is known only as they are taken (it grows with
- * |w0| t_end), so a run may be given a budget: after max_steps accepted steps short of t_end it
- * stops with SUS_RUN_STEP_FAILED and SUS_STEPPER_STEP_LIMIT, the rows up to there written
- * (max_steps = 0: no limit). */
+ * dense output; a time within 4u t_end of t_end is t_end), or at the end of every accepted step
+ * (every_time = 0). A row's k counts the steps accepted up to its t. The number of steps is
+ * known only as they are taken (it grows with |w0| t_end), so a run may be given a budget: after
+ * max_steps accepted steps short of t_end it stops with SUS_RUN_STEP_FAILED and
+ * SUS_STEPPER_STEP_LIMIT, the rows up to there written (max_steps = 0: no limit). */
 typedef struct {
     const sus_model *model;
     const sus_stepper_type *stepper;

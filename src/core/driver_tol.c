@@ -38,11 +38,14 @@ static int emit_row(tol_run *r, sus_row *row, const sus_attitude *att, sus_emit_
 }
 
 /* The rows every_time apart that fall in the step (t0, t] just taken, by dense output; the row at
- * t_end itself is the step's own end, written by the caller. */
+ * t_end itself is the step's own end, written by the caller. A time within 4u t_end of t_end
+ * (u = SUS_U / 2) is t_end: j every_time carries the roundings of every_time and of t_end as
+ * given, of the product, and of j once past 2^53, so 3 x 0.7 = 2.0999999999999996 is the final
+ * time 2.1, not a second row beside it. */
 static int dense_rows(tol_run *r, double t0, sus_emit_fn emit, void *ctx, sus_run_report *report)
 {
-    const double dt = r->cfg->every_time;
-    for (double tj; (tj = (double)r->next_out * dt) <= r->row.t && tj < r->cfg->t_end; r->next_out++) {
+    const double dt = r->cfg->every_time, last = r->cfg->t_end - 2.0 * SUS_U * r->cfg->t_end;
+    for (double tj; (tj = (double)r->next_out * dt) <= r->row.t && tj < last; r->next_out++) {
         sus_row d = {.k = r->row.k, .t = tj};
         sus_attitude a = r->att;
         r->ops->dense(r->wk, tj - t0, d.w, &d.lambda, &a);

@@ -47,9 +47,11 @@ static void omega_from_psi(const sus_exact *ex, double cp, double sp, double w[2
     w[0] = (u1 - ex->l21 * w[1]) / ex->l11;
 }
 
+/* At t = 0 w0 itself: its closed-form evaluation is an ulp or so off, and w(0) is what every
+ * method starts from (its row 0). */
 void sus_exact_omega(const sus_exact *ex, double t, double w[2])
 {
-    if (ex->fixed) {
+    if (ex->fixed || t == 0.0) {
         w[0] = ex->w0[0];
         w[1] = ex->w0[1];
         return;

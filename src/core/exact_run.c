@@ -92,11 +92,11 @@ static void scaled_attitude_at(scaled_attitude *sa, double t, double R[3][3])
 {
     const long double tau = (long double)t * sa->c;
     if (tau <= sa->tau_s) {
-        sus_refatt_advance(&sa->ra, (double)tau, R);
+        sus_refatt_at(&sa->ra, (double)tau, R);
         return;
     }
     if (!sa->steady)
-        sus_refatt_advance(&sa->ra, sa->tau_s, sa->R_s);
+        sus_refatt_at(&sa->ra, sa->tau_s, sa->R_s);
     sa->steady = 1;
     long double angle = (tau - sa->tau_s) * sa->speed;
     /* beyond the double range the phase is already lost to the rounding of t; any angle is

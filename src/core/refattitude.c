@@ -86,11 +86,9 @@ void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const doubl
     double w[2], q[4];
     ra->ex = ex;
     ra->t = t0;
-    sus_exact_omega(ex, t0, w);
-    if (t0 == 0.0) { /* w0 itself, not its closed-form evaluation (an ulp off: 3e-15 in R(50)) */
-        w[0] = ex->w0[0];
-        w[1] = ex->w0[1];
-    }
+    ra->t0 = t0;
+    ra->grid = 0.0;
+    sus_exact_omega(ex, t0, w); /* w0 itself at t0 = 0 (an ulp off would be 3e-15 in R(50)) */
     sus_quat_from_rotation(R0, q);
     for (int i = 0; i < 4; i++)
         ra->q[i] = q[i];
@@ -105,6 +103,25 @@ void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3])
         ra->t = t1;
     }
     rotation_of(ra->q, R);
+}
+
+void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3])
+{
+    const long double h = 1.0L / SUS_REFATT_PRECISE_STEPS, span = (long double)t1 - ra->t0;
+    const double whole = floorl(span * SUS_REFATT_PRECISE_STEPS);
+    if (!(whole < 0x1p62)) { /* as integrate: no useful time, no answer */
+        const long double q[4] = {NAN, NAN, NAN, NAN};
+        rotation_of(q, R);
+        return;
+    }
+    for (; ra->grid < whole; ra->grid++)
+        precise_step(ra->ex->model, h, ra->w, ra->q);
+    ra->t = (double)(ra->t0 + ra->grid * h);
+    long double w[2] = {ra->w[0], ra->w[1]}, q[4] = {ra->q[0], ra->q[1], ra->q[2], ra->q[3]};
+    const long double rest = span - ra->grid * h;
+    if (rest > 0.0L)
+        precise_step(ra->ex->model, rest, w, q);
+    rotation_of(q, R);
 }
 
 void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3])

@@ -21,13 +21,21 @@ typedef struct {
     const sus_exact *ex;
     double t;
     long double w[2], q[4]; /* w(t) and the attitude as a quaternion (not normalised) */
+    double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */
 } sus_refatt;
 
 /* Starts at t0 with R(t0) = R0 (a rotation) and w(t0) from the closed form. The integration
  * cannot fail and allocates nothing, so there is nothing to check and nothing to free. */
 void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const double R0[3][3]);
-/* Advances to t1 >= the current time and copies R(t1). */
+/* Advances to t1 >= the current time and copies R(t1). The steps depend on the times asked
+ * for before (each stretch is cut into equal steps). */
 void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3]);
+/* R(t1) for t1 at or after the times asked for before: the state is carried only along the
+ * grid t0 + j / SUS_REFATT_PRECISE_STEPS, and R(t1) is one more, partial step from the last
+ * grid point, not kept. So R(t1) is the same whichever times were asked for before (a row of
+ * the exact run does not depend on which rows are written). Not to be mixed with
+ * sus_refatt_advance on one sus_refatt. */
+void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3]);
 
 /* w(T) and R(T) from w(0) = w0, R(0) = I. */
 void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3]);

@@ -31,6 +31,9 @@ typedef struct {
     double residual;  /* final |G|_inf of the implicit equation */
     double scale;     /* sum of |terms| of G: the round-off yardstick for residual */
     double det;       /* determinant of the n x n Jacobian of G; for n = 2 the (REGLOC) block */
+    /* The last finite |G|_inf the solve reached (NAN if none): what a failure can name when the
+     * final residual is not a finite number (the iteration overflowed). */
+    double last_residual;
 } sus_stepper_stats;
 
 /* The largest number of unknowns of an implicit step equation: Newton keeps its n x n Jacobian

@@ -17,6 +17,7 @@ static int substep(const sus_model *m, double h, const double w[3], double x[3],
         acc->residual = st.residual;
         acc->scale = st.scale;
         acc->det = st.det;
+        acc->last_residual = st.last_residual;
     }
     return status;
 }

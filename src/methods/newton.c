@@ -2,11 +2,15 @@
 
 #include <math.h>
 
+/* NaN when an entry is NaN (fmax would drop it and call an overflowed residual 0). */
 static double inf_norm(const double *v, int n)
 {
     double r = 0.0;
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
+        if (isnan(v[i]))
+            return NAN;
         r = fmax(r, fabs(v[i]));
+    }
     return r;
 }
 
@@ -164,9 +168,12 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
     keep(&s.best, x, n, INFINITY, 0.0);
     st->iterations = 0;
     st->det = NAN;
+    st->last_residual = NAN;
     for (;;) {
         G(m, eps, w, x, g, J, &st->scale);
         st->residual = inf_norm(g, n);
+        if (isfinite(st->residual))
+            st->last_residual = st->residual;
         const int singular = sus_step_linear_solve(n, J, g, dx, &st->det) != 0;
         const int status = decide(&s, x, n, st);
         if (status >= 0)

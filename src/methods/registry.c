@@ -30,7 +30,7 @@
       "Taylor series, order and steps from --tol, rows by dense output (--every-time)")
 
 #define TAYLOR_ABOUT(P) \
-    "Taylor series of order " #P ", quaternion attitude series (ignores --reconstruct), E restored"
+    "Taylor series of order " #P ", quaternion attitude series, E restored"
 
 #define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const sus_stepper_type sus_step_##ID##_type;
 SUS_STEP_METHODS(DECLARE)
@@ -79,7 +79,11 @@ const char *sus_step_method_names(char *buf, unsigned long len, const char *sep)
     return buf;
 }
 
-static const char *const ATTITUDE_NAMES[] = {"none", "matrix", "quaternion"};
+const char *sus_step_attitude_name(sus_attitude_form form)
+{
+    static const char *const NAMES[] = {"none", "matrix", "quaternion"};
+    return form >= SUS_ATTITUDE_NONE && form <= SUS_ATTITUDE_QUAT ? NAMES[form] : "?";
+}
 
 int sus_step_methods_write_tsv(FILE *fp)
 {
@@ -90,7 +94,7 @@ int sus_step_methods_write_tsv(FILE *fp)
         const sus_stepper_type *t = me->type;
         fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
                 t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
-                ATTITUDE_NAMES[t->attitude], t->follows_recon, t->substeps, t->stability != NULL,
+                sus_step_attitude_name(t->attitude), t->follows_recon, t->substeps, t->stability != NULL,
                 SUS_RECON_NAMES[me->recon],
                 me->paper_ref ? me->paper_ref : "-", t->source, me->about);
     }

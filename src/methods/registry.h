@@ -32,6 +32,8 @@ const sus_step_method *sus_step_method_by_name(const char *name);
 /* The index of a method in the registry, or -1: by name (for user input) and by type. */
 int sus_step_method_index(const char *name);
 int sus_step_method_index_of(const sus_stepper_type *type);
+/* "none", "matrix" or "quaternion": what a method's apply_full carries (stepper.h). */
+const char *sus_step_attitude_name(sus_attitude_form form);
 /* "euler|midpoint|..." into buf: the names for usage lines and error messages. */
 const char *sus_step_method_names(char *buf, unsigned long len, const char *sep);
 /* The registry as a table (build/methods.tsv): a header row, then one row per method with

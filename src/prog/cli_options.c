@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli_options.h"
 
+#include "echo.h"
+
 #include <errno.h>
 #include <float.h>
 #include <ctype.h>
@@ -35,6 +37,19 @@ static void say(const char *kind, const char *fmt, va_list ap, const char *suffi
             fputc(*p, stderr);
     }
     fprintf(stderr, "%s\n", suffix);
+}
+
+const char *cli_quote_n(const char *s, size_t n)
+{
+    static char buf[4][4 * CLI_ECHO_MAX + 48];
+    static unsigned next;
+    char *b = buf[next++ % 4];
+    return sus_sys_echo(b, sizeof buf[0], s, n, CLI_ECHO_MAX, '\'');
+}
+
+const char *cli_quote(const char *s)
+{
+    return cli_quote_n(s, strlen(s));
 }
 
 void cli_error(const char *fmt, ...)
@@ -83,12 +98,12 @@ double cli_number(const char *opt, const char *s)
     errno = 0;
     const double v = strtod(s, &end);
     if (end == s || *end != '\0' || isspace((unsigned char)*s))
-        cli_die("%s: '%s' is not a number", opt, s);
+        cli_die("%s: %s is not a number", opt, cli_quote(s));
     if (!isfinite(v))
-        cli_die("%s: '%s' is not a finite number (largest %.17g)", opt, s, DBL_MAX);
+        cli_die("%s: %s is not a finite number (largest %.17g)", opt, cli_quote(s), DBL_MAX);
     if (errno == ERANGE || fpclassify(v) == FP_SUBNORMAL)
-        cli_die("%s: '%s' is too small: it underflows to a subnormal number or zero "
-                "(smallest normal %.17g)", opt, s, DBL_MIN);
+        cli_die("%s: %s is too small: it underflows to a subnormal number or zero "
+                "(smallest normal %.17g)", opt, cli_quote(s), DBL_MIN);
     return v;
 }
 
@@ -98,18 +113,18 @@ long cli_count(const char *opt, const char *s)
         errno = 0;
         const long v = strtol(s, NULL, 10);
         if (errno == ERANGE)
-            cli_die("%s: '%s' is out of range (at most %ld)", opt, s, LONG_MAX);
+            cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
         if (v <= 0)
             cli_die("%s must be positive, got %ld", opt, v);
         return v;
     }
     const double v = cli_number(opt, s);
     if (v != floor(v))
-        cli_die("%s: '%s' is not a whole number", opt, s);
+        cli_die("%s: %s is not a whole number", opt, cli_quote(s));
     if (!(v >= 1.0))
         cli_die("%s must be positive, got %.17g", opt, v);
     if (!(v < 0x1p63)) /* (long)v is defined only below 2^63 = LONG_MAX + 1 */
-        cli_die("%s: '%s' is out of range (at most %ld)", opt, s, LONG_MAX);
+        cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
     return (long)v;
 }
 
@@ -123,9 +138,9 @@ void cli_list(const char *opt, const char *s, double *out, int n)
         const char *comma = strchr(p, ',');
         const size_t len = comma ? (size_t)(comma - p) : strlen(p);
         if (i == n)
-            cli_die("%s takes %d comma-separated numbers, got more in '%s'", opt, n, s);
+            cli_die("%s takes %d comma-separated numbers, got more in %s", opt, n, cli_quote(s));
         if (len == 0)
-            cli_die("%s: field %d of '%s' is empty", opt, i + 1, s);
+            cli_die("%s: field %d of %s is empty", opt, i + 1, cli_quote(s));
         memcpy(buf, p, len);
         buf[len] = '\0';
         out[i] = cli_number(opt, buf);
@@ -134,7 +149,7 @@ void cli_list(const char *opt, const char *s, double *out, int n)
         p = comma + 1;
     }
     if (i + 1 != n)
-        cli_die("%s takes %d comma-separated numbers, got %d in '%s'", opt, n, i + 1, s);
+        cli_die("%s takes %d comma-separated numbers, got %d in %s", opt, n, i + 1, cli_quote(s));
 }
 
 /* ---- parsing ---- */
@@ -156,15 +171,15 @@ void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
         const char *arg = argv[i], *eq = strchr(arg, '='), *val = NULL;
         if (strcmp(arg, "--") == 0) {
             if (i + 1 < argc)
-                cli_die("unexpected argument '%s' (%s takes no operands)", argv[i + 1], prog);
+                cli_die("unexpected argument %s (%s takes no operands)", cli_quote(argv[i + 1]), prog);
             break;
         }
         if (strncmp(arg, "--", 2) != 0)
-            cli_die("unexpected argument '%s'", arg);
+            cli_die("unexpected argument %s", cli_quote(arg));
         const size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
         const int k = find(spec, arg, len);
         if (k < 0)
-            cli_die("unknown option '%.*s'", (int)len, arg);
+            cli_die("unknown option %s", cli_quote_n(arg, len));
         const cli_option *o = &spec->opts[k];
         if (!o->arg && eq)
             cli_die("%s takes no value", o->name);
@@ -176,6 +191,25 @@ void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
             cli_die("%s is given twice", o->name);
         o->set(cfg, o, val);
     }
+}
+
+int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, const char **val)
+{
+    int count = 0;
+    *val = NULL;
+    for (int i = 1; i < argc; i++, count++) {
+        const char *arg = argv[i], *eq = strchr(arg, '=');
+        if (strcmp(arg, "--") == 0)
+            return count + (i + 1 < argc);
+        const size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        const int k = strncmp(arg, "--", 2) == 0 ? find(spec, arg, len) : -1;
+        if (k < 0 || !spec->opts[k].arg)
+            continue;
+        const char *v = eq ? eq + 1 : i + 1 < argc ? argv[++i] : NULL;
+        if (strcmp(spec->opts[k].name, name) == 0)
+            *val = v;
+    }
+    return count;
 }
 
 /* ---- --help ---- */

@@ -34,6 +34,10 @@ typedef struct {
  * option, an unknown option, a missing value, a value given to a flag and an option given
  * twice are each bad input (cli_die). Calls each option's handler in order. */
 void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg);
+/* Walks argv as cli_parse does, calling no handler: returns the number of options given (an
+ * operand or an unknown option counts as one), and sets *val to the value of option `name` (NULL
+ * when it is absent or has none), so that a caller can see one option before any handler runs. */
+int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, const char **val);
 void cli_help(const cli_spec *spec, FILE *fp);
 /* The manual page in roff (man(7)); version goes into its header line. */
 void cli_man(const cli_spec *spec, const char *version, FILE *fp);
@@ -42,6 +46,14 @@ void cli_line(FILE *fp, int man, const char *fmt, ...) __attribute__((format(pri
 
 /* Exits 0 after a text on stdout, or 1 with one line when it could not be written. */
 void cli_exit_stdout(void) __attribute__((noreturn));
+
+/* A user's argument (its first n bytes) as a message quotes it: 'TEXT', or, beyond
+ * CLI_ECHO_MAX characters, 'FIRST...' (N characters), so that the reason after it always fits
+ * the line. The text lives in one of four buffers used in turn: one message may quote up to
+ * four arguments. */
+#define CLI_ECHO_MAX 40
+const char *cli_quote_n(const char *s, size_t n);
+const char *cli_quote(const char *s);
 
 /* "suslov: error: MESSAGE" on one line, control characters escaped; cli_die adds
  * " (see suslov --help)" and exits 2. */

@@ -74,6 +74,33 @@ static int take_row(void *vctx, const sus_row *r)
 
 /* ---- the failure message ---- */
 
+/* A Newton solve that failed: the step, t and always the residual; one that is not a finite
+ * number (the iteration overflowed) is described, with the last finite one before it. */
+static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
+{
+    const sus_stepper_stats *st = &rep->stats;
+    char res[160], det[64] = "";
+    if (isfinite(st->residual) && isfinite(st->scale))
+        snprintf(res, sizeof res, "residual %.3g (scale %.3g)", st->residual, st->scale);
+    else if (isfinite(st->residual))
+        snprintf(res, sizeof res, "residual %.3g, but its scale (the sum of |terms| of G) is not a finite "
+                 "number", st->residual);
+    else if (isfinite(st->last_residual))
+        snprintf(res, sizeof res, "the residual is not a finite number; the last finite residual was %.3g",
+                 st->last_residual);
+    else
+        snprintf(res, sizeof res, "the residual is not a finite number already at the starting guess");
+    if (isfinite(st->det))
+        snprintf(det, sizeof det, ", Jacobian determinant %.3g", st->det);
+    const int finite = isfinite(st->residual) && isfinite(st->scale);
+    const char *why = rep->status == SUS_STEPPER_SINGULAR
+                          ? "the Jacobian of the step equation is singular ((REGLOC) fails)"
+                      : finite ? "Newton did not converge"
+                               : "Newton's iteration overflowed";
+    snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations", rep->step, rep->t,
+             why, res, det, st->iterations);
+}
+
 /* One line naming the step and t; a NaN or infinity is described, never printed. */
 static void failure_message(char *msg, size_t len, const char *name, int rc, const sus_run_report *rep)
 {
@@ -108,18 +135,8 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
                  "step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
                  "converge: the step is %.3g times the radius proved for it (|w|_2 = %.3g)",
                  rep->step, rep->t, st->residual, st->scale);
-    else if (!isfinite(st->residual) || !isfinite(st->scale) || !isfinite(st->det))
-        snprintf(msg, len, "step %ld (t = %.17g) failed: Newton's iteration reached a value that is not a "
-                 "finite number after %d iterations", rep->step, rep->t, st->iterations);
     else
-        snprintf(msg, len,
-                 "step %ld (t = %.17g) failed: %s; residual %.3g (scale %.3g), Jacobian determinant "
-                 "%.3g, after %d Newton iterations",
-                 rep->step, rep->t,
-                 rep->status == SUS_STEPPER_SINGULAR
-                     ? "the Jacobian of the step equation is singular ((REGLOC) fails)"
-                     : "Newton did not converge",
-                 st->residual, st->scale, st->det, st->iterations);
+        newton_failure(msg, len, rep);
 }
 
 /* ---- the run ---- */
@@ -183,7 +200,12 @@ int main(int argc, char **argv)
     suslov_cli_parse(&a, argc, argv);
     gsl_set_error_handler_off();
     sus_sys_atomic_file af;
-    if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) { /* checked before: the system */
+    if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) {
+        /* Nothing is written yet: a path the system will not let us create in (a permission,
+         * a read-only filesystem, which root's access() checks cannot foresee) is bad input, as
+         * the checks before; anything else (no space, no inode, I/O) is an output error. */
+        if (errno == EACCES || errno == EPERM || errno == EROFS)
+            cli_die("--output: %s", err);
         cli_error("--output: %s", err);
         return EXIT_WRITE;
     }

@@ -30,7 +30,7 @@ typedef struct {
     double eps, T, tol, every_time;
     long steps, every;
     double w0[2], inertia[9];
-    int quiet, header, header_given, list, every_given;
+    int quiet, header, header_given, list, every_given, omega0_given, inertia_given;
     long sweeps;
 } given;
 
@@ -57,10 +57,12 @@ static void set_time(void *g, const cli_option *o, const char *v)
 static void set_omega0(void *g, const cli_option *o, const char *v)
 {
     cli_list(o->name, v, ((given *)g)->w0, 2);
+    ((given *)g)->omega0_given = 1;
 }
 static void set_inertia(void *g, const cli_option *o, const char *v)
 {
     cli_list(o->name, v, ((given *)g)->inertia, 9);
+    ((given *)g)->inertia_given = 1;
 }
 static void set_recon(void *g, const cli_option *o, const char *v)
 {
@@ -124,46 +126,62 @@ static void show_version(void *g, const cli_option *o, const char *v)
 
 /* ---- lists under --method and --reconstruct ---- */
 
+/* A method that carries its own attitude says so on its line: the registry's field says which,
+ * so no list of names is kept here. */
 static void more_methods(FILE *fp, int man)
 {
     cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        cli_line(fp, man, "%-15s %s", me->type->name, me->about);
+        cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
+                 me->type->follows_recon ? "" : " (ignores --reconstruct)");
+    }
+}
+
+/* The names of the methods whose attitude follows --reconstruct (follows = 1) with default
+ * reconstruction `which`, or that carry their own attitude of form `which` (follows = 0). */
+static void names_where(char *buf, size_t len, int follows, int which)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
+        const sus_step_method *me = sus_step_method_get(i);
+        const int key = follows ? (int)me->recon : (int)me->type->attitude;
+        if (!me->type->follows_recon == !follows && key == which && n < len)
+            n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "  ", me->type->name);
     }
 }
 
 static void more_recons(FILE *fp, int man)
 {
+    char names[512];
     for (int r = 0; r < SUS_RECON_COUNT; r++)
         cli_line(fp, man, "%-12s %s", SUS_RECON_NAMES[r], SUS_RECON_ABOUT[r]);
     cli_line(fp, man, "default, the method's own:");
-    for (int r = 0; r < SUS_RECON_COUNT; r++) {
-        char names[512];
-        size_t n = 0;
-        names[0] = '\0';
-        for (int i = 0; i < sus_step_method_count_all(); i++)
-            if (sus_step_method_get(i)->recon == (sus_recon)r && n < sizeof names)
-                n += (size_t)snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "  ",
-                                      sus_step_method_get(i)->type->name);
-        if (n)
+    for (int r = 0; r < SUS_RECON_COUNT; r++)
+        if (names_where(names, sizeof names, 1, r), names[0])
             cli_line(fp, man, "%s: %s", names, SUS_RECON_NAMES[r]);
-    }
+    for (int f = SUS_ATTITUDE_NONE; f <= SUS_ATTITUDE_QUAT; f++)
+        if (names_where(names, sizeof names, 0, f), names[0])
+            cli_line(fp, man, "%s: none, their own %s attitude", names,
+                     sus_step_attitude_name((sus_attitude_form)f));
 }
 
 /* ---- the table ---- */
 
 static const cli_option OPTIONS[] = {
-    {"--method", "M", "the method (required); `--method list` prints name, family, order,\n"
-                      "default reconstruction and description (a table on a terminal, TSV\n"
-                      "otherwise)", set_method, more_methods},
+    {"--method", "M", "the method (required); `--method list`, given alone (no other option),\n"
+                      "prints name, family, order, default reconstruction and description (a\n"
+                      "table on a terminal, TSV otherwise)", set_method, more_methods},
     {"--eps", "H", "time step, H > 0", set_eps, NULL},
     {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1", set_steps, NULL},
     {"--time", "T", "final time instead of --steps: T/H must be a whole number N (to 4\n"
                     "rounding units of T), else it is refused with the nearest valid T", set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0, NULL},
     {"--inertia", "I11,...,I33", "inertia tensor by rows, as printed in the paper (only I_m and the\n"
-                                 "third row enter); I_m must be symmetric positive definite;\n"
+                                 "third row enter); I_m must be symmetric positive definite, its\n"
+                                 "determinant resolved and the coefficients of (ContDyn) and\n"
+                                 "(LagMult) finite in double precision (else refused, saying which);\n"
                                  "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1", set_inertia, NULL},
     {"--reconstruct", "R", "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
                            "method that carries its own attitude (it is ignored there):", set_recon,
@@ -177,7 +195,8 @@ static const cli_option OPTIONS[] = {
                      "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
                      "after 10^6 steps short of T", set_tol, NULL},
     {"--every-time", "DT", "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
-                           "method's dense output (default: the end of every accepted step)",
+                           "method's dense output (default: the end of every accepted step);\n"
+                           "T/DT <= 2^63 - 1, and a time within 4 rounding units of T is T",
      set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
     {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
@@ -214,8 +233,10 @@ static const cli_section SECTIONS[] = {
      "is checked before it."},
     {"EXIT STATUS",
      "0 success; 1 output error (writing failed: disk full, inodes exhausted, I/O error);\n"
-     "2 bad input (one line; nothing written); 3 solver failure or blow-up (one line naming\n"
-     "the step and t); 128+n killed by signal n."},
+     "2 bad input (one line; nothing written), --output FILE that permissions or a read-only\n"
+     "filesystem keep from being created included; 3 solver failure or blow-up (one line naming\n"
+     "the step and t, and for a failed solve its residual or error estimate); 128+n killed by\n"
+     "signal n."},
     {"ENVIRONMENT",
      "NO_COLOR (non-empty) and TERM=dumb: the progress line uses no escape sequence.\n"
      "SUSLOV_NO_O_TMPFILE (non-empty, for tests): use a named temporary file instead of an\n"
@@ -237,15 +258,9 @@ static const cli_spec SPEC = {
 
 /* ---- --method list ---- */
 
-static int uses_reconstruction(const sus_step_method *me, const sus_model *m);
-
 /* The reconstruction column says "own" for a method that carries its own attitude. */
 static void method_list(void)
 {
-    char err[256];
-    sus_model paper;
-    if (sus_model_init(&paper, SUS_PAPER_INERTIA, err, sizeof err) != 0)
-        cli_die("the paper's inertia is rejected: %s", err);
     const int tty = isatty(STDOUT_FILENO);
     const char *fmt = tty ? "%-10s %-12s %-5s %-11s %s\n" : "%s\t%s\t%s\t%s\t%s\n";
     printf(fmt, "name", "family", "order", "reconstruct", "about");
@@ -255,7 +270,7 @@ static void method_list(void)
         char order[16];
         snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->order);
         printf(fmt, me->type->name, me->family, order,
-               uses_reconstruction(me, &paper) ? SUS_RECON_NAMES[me->recon] : "own", me->about);
+               me->type->follows_recon ? SUS_RECON_NAMES[me->recon] : "own", me->about);
     }
     cli_exit_stdout();
 }
@@ -294,26 +309,6 @@ static long steps_for_time(double T, double eps)
     return (long)n;
 }
 
-/* Whether a method's attitude depends on --reconstruct: one step from the paper's start with
- * two reconstructions. A method that carries its own attitude (a Taylor series) gives the same
- * R both ways; this asks the method itself, so no list of names is kept here. */
-static int uses_reconstruction(const sus_step_method *me, const sus_model *m)
-{
-    double R[2][3][3];
-    if (me->type->tol) /* a tolerance-driven method has no single step to probe; its attitude is its own */
-        return me->type->follows_recon;
-    for (int r = 0; r < 2; r++) {
-        sus_attitude att;
-        double w[3] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1], 0.0}, wn[3], lam;
-        sus_stepper_stats st;
-        sus_attitude_identity(&att);
-        sus_stepper_full(me->type, m, 0.25, r ? SUS_RECON_CAYLEY : SUS_RECON_EXP_MID, &att, w, wn, &lam,
-                         &st);
-        sus_attitude_get(&att, R[r]);
-    }
-    return memcmp(R[0], R[1], sizeof R[0]) != 0;
-}
-
 /* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
  * check has passed, so that bad input still gets exactly one line). */
 static int resolve_method(suslov_args *a, const given *g)
@@ -322,7 +317,7 @@ static int resolve_method(suslov_args *a, const given *g)
     const int exact = strcmp(g->method, "exact") == 0;
     a->method = exact ? NULL : sus_step_method_by_name(g->method);
     if (!exact && !a->method)
-        cli_die("unknown method '%s' (exact, %s; or list)", g->method,
+        cli_die("unknown method %s (exact, %s; or list)", cli_quote(g->method),
                 sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
@@ -332,11 +327,11 @@ static int resolve_method(suslov_args *a, const given *g)
         for (int r = 0; r < SUS_RECON_COUNT; r++)
             len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
                                     SUS_RECON_NAMES[r]);
-        cli_die("unknown reconstruction '%s' (%s)", g->recon, names);
+        cli_die("unknown reconstruction %s (%s)", cli_quote(g->recon), names);
     }
     if (exact)
         cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
-    return !uses_reconstruction(a->method, &a->model);
+    return !a->method->type->follows_recon;
 }
 
 /* --sweeps replaces the midpoint rule's Newton solve, so it needs that method. */
@@ -369,6 +364,10 @@ static void check_tol_run(suslov_args *a, const given *g)
         cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
         cli_die("--every-time must be positive, got %.17g", g->every_time);
+    /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
+    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
+        cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld", g->T, g->every_time,
+                g->T / g->every_time, LONG_MAX);
     a->tol = g->tol;
     a->t_end = g->T;
     a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;
@@ -393,6 +392,23 @@ static void check_fixed_steps(suslov_args *a, const given *g)
     a->t_end = (double)a->steps * a->eps;
 }
 
+/* E and lambda at w0 must be finite numbers (row 0 prints them). They depend on w0 and the body
+ * alike, so the message names the options that were given: the default of the other is not the
+ * user's doing. */
+static void check_start(const suslov_args *a, const given *g)
+{
+    const double w[3] = {g->w0[0], g->w0[1], 0.0};
+    const char *what = !isfinite(sus_energy(&a->model, w))    ? "energy"
+                       : !isfinite(sus_lagmult(&a->model, w)) ? "multiplier lambda"
+                                                              : NULL;
+    if (!what)
+        return;
+    const char *opts =
+        g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
+    cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, g->w0[0], g->w0[1],
+            g->inertia_given ? "this" : "the paper's (default)");
+}
+
 static void check_run(suslov_args *a, const given *g)
 {
     char err[1024];
@@ -410,9 +426,7 @@ static void check_run(suslov_args *a, const given *g)
         cli_die("%s", bad);
     if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0)
         cli_die("--inertia: %s", err);
-    const double w[3] = {g->w0[0], g->w0[1], 0.0};
-    if (!isfinite(sus_energy(&a->model, w)) || !isfinite(sus_lagmult(&a->model, w)))
-        cli_die("--omega0 %.17g,%.17g: the energy or the multiplier at w0 overflows", g->w0[0], g->w0[1]);
+    check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
@@ -430,6 +444,10 @@ void suslov_cli_parse(suslov_args *a, int argc, char **argv)
     given g = {.eps = NAN, .T = NAN, .tol = NAN, .every_time = NAN, .every = 1, .header = 1,
                .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
+    /* before any handler: another option's check or action (--help) would come first */
+    const char *method;
+    if (cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method && strcmp(method, "list") == 0)
+        cli_die("--method list takes no other options");
     cli_parse(&SPEC, argc, argv, &g);
     memset(a, 0, sizeof *a);
     check_run(a, &g);
@@ -473,10 +491,13 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
         put_arg(fp, i ? argv[i] : "suslov");
     }
     if (a->method)
-        fprintf(fp, "\n# method: %s (%s, order %d), reconstruction %s\n", a->method->type->name,
-                a->method->family,
-                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order,
-                SUS_RECON_NAMES[a->recon]);
+        fprintf(fp, "\n# method: %s (%s, order %d), ", a->method->type->name, a->method->family,
+                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order);
+    if (a->method && a->method->type->follows_recon)
+        fprintf(fp, "reconstruction %s\n", SUS_RECON_NAMES[a->recon]);
+    else if (a->method) /* what --method list calls "own" */
+        fprintf(fp, "attitude: own (%s; --reconstruct does not apply)\n",
+                sus_step_attitude_name(a->method->type->attitude));
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     if (a->sweeps)

@@ -1,6 +1,8 @@
 #define _GNU_SOURCE /* O_TMPFILE, AT_EMPTY_PATH */
 #include "atomic_file.h"
 
+#include "echo.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -167,6 +169,20 @@ static int fd_of_path(const char *path)
     return -1;
 }
 
+/* A path as a message shows it (echo.h): at most PATH_ECHO_MAX characters, so that the two a
+ * message may name and its reason fit the 1024 bytes callers give it. Two buffers, used in turn;
+ * errno is kept for the strerror beside it. */
+enum { PATH_ECHO_MAX = 100 };
+static const char *shown(const char *path)
+{
+    static char buf[2][4 * PATH_ECHO_MAX + 48];
+    static unsigned next;
+    const int saved = errno;
+    const char *s = sus_sys_echo(buf[next++ % 2], sizeof buf[0], path, strlen(path), PATH_ECHO_MAX, 0);
+    errno = saved;
+    return s;
+}
+
 static int is_stdout(const char *path)
 {
     return path == NULL || strcmp(path, "-") == 0;
@@ -194,7 +210,7 @@ static int resolve_target(const char *path, char *out, size_t len, char *err, si
     char link[4096], dir[4096];
     const ssize_t n = readlink(path, link, sizeof link - 1);
     if (n < 0) {
-        snprintf(err, errlen, "cannot read the link %s: %s", path, strerror(errno));
+        snprintf(err, errlen, "cannot read the link %s: %s", shown(path), strerror(errno));
         return -1;
     }
     link[n] = '\0';
@@ -227,9 +243,11 @@ static int check_names(const char *path, const char *target, const char *dir, ch
     const size_t tmp_len =
         strlen(dir) + 1 + strlen(SUS_SYS_ATOMIC_TMP_PREFIX) + SUS_SYS_ATOMIC_TMP_SUFFIX_MAX;
     if (name_max > 0 && strlen(base) > (size_t)name_max)
-        return fail(err, errlen, "cannot write %s: its name is longer than the directory allows", path);
+        return fail(err, errlen, "cannot write %s: its name is longer than the directory allows",
+                    shown(path));
     if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX || tmp_len >= sizeof((sus_sys_atomic_file *)0)->tmp)
-        return fail(err, errlen, "cannot write %s: the path (or its temporary in %s) is too long", path, dir);
+        return fail(err, errlen, "cannot write %s: the path (or its temporary in %s) is too long",
+                    shown(path), shown(dir));
     return 0;
 }
 
@@ -241,11 +259,11 @@ static int check_replace(const char *path, const char *target, const struct stat
     struct stat dsb;
     if (access(target, W_OK) != 0)
         return fail(err, errlen, "%s is read-only (%s): not replaced; remove it or make it writable first",
-                    path, strerror(errno));
+                    shown(path), strerror(errno));
     const uid_t me = geteuid();
     if (stat(dir, &dsb) == 0 && (dsb.st_mode & S_ISVTX) && me != 0 && me != fsb->st_uid && me != dsb.st_uid)
         return fail(err, errlen, "cannot replace %s: directory %s is sticky and neither it nor the file is "
-                    "yours, so the rename would be refused", path, dir);
+                    "yours, so the rename would be refused", shown(path), shown(dir));
     return 0;
 }
 
@@ -261,25 +279,27 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
     if (fd >= 0) {
         const int fl = fcntl(fd, F_GETFL);
         if (fl < 0 || (fl & O_ACCMODE) == O_RDONLY)
-            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing", path);
+            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing", shown(path));
         return 0;
     }
     if (resolve_target(path, target, sizeof target, err, errlen) != 0)
         return -1;
     const int exists = stat(target, &sb) == 0;
     if (!exists && errno != ENOENT)
-        return fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
     if (exists && S_ISDIR(sb.st_mode))
-        return fail(err, errlen, "cannot write %s: it is a directory", path);
+        return fail(err, errlen, "cannot write %s: it is a directory", shown(path));
     if (exists && !S_ISREG(sb.st_mode)) /* a device or pipe is written in place */
-        return access(target, W_OK) == 0 ? 0
-                                         : fail(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return access(target, W_OK) == 0
+                   ? 0
+                   : fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
     dir_of(target, dir, sizeof dir);
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        return fail(err, errlen, "cannot write %s: directory %s does not exist", path, dir);
+        return fail(err, errlen, "cannot write %s: directory %s does not exist", shown(path), shown(dir));
     /* The file is created and renamed in its directory: that needs write and search. */
     if (access(dir, W_OK | X_OK) != 0) {
-        snprintf(err, errlen, "cannot write %s: directory %s: %s", path, dir, strerror(errno));
+        snprintf(err, errlen, "cannot write %s: directory %s: %s", shown(path), shown(dir),
+                 strerror(errno));
         return -1;
     }
     if (check_names(path, target, dir, err, errlen) != 0)
@@ -298,9 +318,11 @@ static int open_in_place(sus_sys_atomic_file *af, const char *path, int fd, char
     }
     const int mine = fd >= 0 ? fcntl(fd, F_DUPFD_CLOEXEC, 3) : open(path, O_WRONLY | O_CLOEXEC);
     if (mine < 0 || !(af->fp = fdopen(mine, "w"))) {
-        snprintf(err, errlen, "cannot open %s: %s", path, strerror(errno));
+        const int saved = errno;
+        snprintf(err, errlen, "cannot open %s: %s", shown(path), strerror(saved));
         if (mine >= 0)
             close(mine);
+        errno = saved;
         return -1;
     }
     return 0;
@@ -365,14 +387,16 @@ int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *er
         fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
     af->unnamed = fd >= 0;
     if (fd < 0 && (fd = open_named(af, dir)) < 0) {
-        snprintf(err, errlen, "cannot create a temporary file next to %s: %s", path, strerror(errno));
+        snprintf(err, errlen, "cannot create a temporary file next to %s: %s", shown(path), strerror(errno));
         return -1;
     }
     /* fchmod ignores the umask: an existing file keeps exactly its mode. */
     if (fchmod(fd, mode) != 0 || !(af->fp = fdopen(fd, "w"))) {
-        snprintf(err, errlen, "cannot create %s: %s", path, strerror(errno));
+        const int saved = errno; /* for the caller, past the cleanup */
+        snprintf(err, errlen, "cannot create %s: %s", shown(path), strerror(saved));
         close(fd);
         sus_sys_atomic_file_abort(af);
+        errno = saved;
         return -1;
     }
     return 0;
@@ -412,7 +436,7 @@ static int commit_in_place(sus_sys_atomic_file *af, char *err, size_t errlen)
     }
     af->fp = NULL;
     if (bad)
-        snprintf(err, errlen, "writing %s failed: %s", name, strerror(saved));
+        snprintf(err, errlen, "writing %s failed: %s", shown(name), strerror(saved));
     return bad ? -1 : 0;
 }
 
@@ -451,7 +475,7 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
     slot_release(&af->slot);
     sigprocmask(SIG_SETMASK, &old, NULL);
     if (bad)
-        snprintf(err, errlen, "%s %s failed: %s", what, af->path, strerror(saved));
+        snprintf(err, errlen, "%s %s failed: %s", what, shown(af->path), strerror(saved));
     return bad ? -1 : 0;
 }
 

@@ -45,7 +45,7 @@ typedef struct {
  * is permitted (a sticky directory lets only the owner of the file or directory replace it).
  * Returns 0, or -1 with a one-line reason in err. */
 int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen);
-/* Returns 0, or -1 with a one-line reason in err (nothing is left behind). */
+/* Returns 0, or -1 with a one-line reason in err and errno its cause (nothing is left behind). */
 int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *err, size_t errlen);
 /* Flushes, closes and renames into place. Returns 0, or -1 with a reason. */
 int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen);

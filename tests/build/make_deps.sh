@@ -77,15 +77,15 @@ for f in $gone; do [ -e "$tmp/t/$f" ] && bad "distclean left $f" || ok; done
 #    a flags change makes -q answer "not up to date", and nothing is rebuilt twice.
 mkdir -p "$tmp/l/src/util" "$tmp/l/tools"
 cp Makefile "$tmp/l/"; cp tools/deps.sh tools/apt_install.sh "$tmp/l/tools/" 2>/dev/null
-cp src/util/atomic_file.[ch] "$tmp/l/src/util/"
+cp src/util/atomic_file.[ch] src/util/echo.[ch] "$tmp/l/src/util/"
 printf 'int layer_probe(void);\nint layer_probe(void) { return 1; }\n' >"$tmp/l/src/util/probe.c"
 lib=build/libsus_util.a
 (cd "$tmp/l" && make -s $lib >/dev/null 2>&1)
 members() { (cd "$tmp/l" && ar t $lib 2>/dev/null | sort | tr '\n' ' '); }
-[ "$(members)" = "atomic_file.o probe.o " ] && ok || bad "libsus_util.a holds '$(members)'"
+[ "$(members)" = "atomic_file.o echo.o probe.o " ] && ok || bad "libsus_util.a holds '$(members)'"
 rm "$tmp/l/src/util/probe.c"
 (cd "$tmp/l" && make -s $lib >/dev/null 2>&1)
-[ "$(members)" = "atomic_file.o " ] && ok || bad "a deleted source stays in the archive: '$(members)'"
+[ "$(members)" = "atomic_file.o echo.o " ] && ok || bad "a deleted source stays in the archive: '$(members)'"
 (cd "$tmp/l" && make -q $lib) && ok || bad "make -q $lib: not up to date right after building it"
 (cd "$tmp/l" && make -q CFLAGS=-O1 $lib) && bad "make -q CFLAGS=-O1 $lib says up to date" || ok
 (cd "$tmp/l" && make -n CFLAGS=-O1 $lib | grep -q -- '-O1 .*-c src/util/atomic_file.c') && ok ||

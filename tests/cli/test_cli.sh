@@ -59,6 +59,11 @@ bad() { # bad DESCRIPTION ARGS...
     fi
 }
 bad "unknown option" --method rk4 --eps 0.1 --steps 3 --frobnicate 2
+bad_says() { # bad_says DESCRIPTION PATTERN ARGS...: bad input, and its one line matches PATTERN
+    d=$1 pat=$2; shift 2
+    bad "$d" "$@"
+    check "$d: the line says '$pat' ($(cat "$T/err"))" grep -q -- "$pat" "$T/err"
+}
 bad "unknown method" --method leapfrog --eps 0.1 --steps 3
 bad "malformed number" --method rk4 --eps 0.1x --steps 3
 bad "H <= 0" --method rk4 --eps -1 --steps 3
@@ -84,12 +89,21 @@ bad "--tol with --steps" $A --tol 1e-8 --steps 3
 bad "--tol without --time" $A --tol 1e-8
 bad "--tol with --every" $A --tol 1e-8 --time 1 --every 2
 bad "--every-time <= 0" $A --tol 1e-8 --time 1 --every-time 0
+# T/DT rows, like --steps, at most 2^63 - 1 (1e-300 asked for 1e301 rows and wrote for ever)
+bad_says "--every-time 1e-300 to --time 10" "asks for 1e+301 rows, more than 9223372036854775807" \
+    $A --tol 1e-8 --time 10 --every-time 1e-300
+bad "--every-time 1e-19 to --time 1 (1e19 > 2^63 - 1 rows)" $A --tol 1e-8 --time 1 --every-time 1e-19
 bad "taylor-adaptive without --tol" $A --time 1
 bad "--tol to a fixed-step method" --method rk4 --eps 0.1 --steps 3 --tol 1e-8
 bad "--every-time without --tol" --method rk4 --eps 0.1 --steps 3 --every-time 0.5
 "$S" $A --tol 1e-10 --time 10 --every-time 2.5 --no-header >"$T/tol.csv"; rc=$?
 check "--tol 1e-10 --every-time 2.5 to 10: exit $rc, rows at t = $(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" \
     test "$rc" = 0 -a "$(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')" = "0 2.5 5 7.5 10 "
+# 3 x 0.7 rounds to 2.0999999999999996, within 4u T of T = 2.1: that is T, one final row
+"$S" $A --tol 1e-8 --time 2.1 --every-time 0.7 --no-header >"$T/tol.csv"; rc=$?
+ts=$(cut -d, -f2 "$T/tol.csv" | tail -n +2 | tr '\n' ' ')
+check "--time 2.1 --every-time 0.7: exit $rc, rows at t = 0, 0.7, 1.4 and T = 2.1 only ($ts)" \
+    test "$rc" = 0 -a "$ts" = "0 0.69999999999999996 1.3999999999999999 2.1000000000000001 "
 bad "unknown reconstruction" --method rk4 --eps 0.1 --steps 3 --reconstruct exp
 bad "empty list field" --method rk4 --eps 0.1 --steps 3 --omega0 1,,2
 bad "leading and trailing comma" --method rk4 --eps 0.1 --steps 3 --omega0 ,1,2,
@@ -102,7 +116,29 @@ bad "subnormal --eps" --method rk4 --eps 1e-320 --steps 3
 bad "N H overflows" --method rk4 --eps 1e308 --steps 2
 bad "--steps beyond 2^63-1" --method exact --eps 1 --steps 9223372036854775808
 bad "--time gives more than 2^63-1 steps" --method exact --eps 1e-300 --time 1e300
-bad "the energy at w0 overflows" --method rk4 --eps 0.1 --steps 3 --omega0 1e200,1e200
+bad_says "the energy at w0 overflows: the line names --omega0 only" \
+    '^suslov: error: --omega0: the energy at w0 = (9.9999999999999997e+199, 9.9999999999999997e+199) overflows' \
+    --method rk4 --eps 0.1 --steps 3 --omega0 1e200,1e200
+bad_says "the multiplier at the default w0 overflows with this inertia: the line names --inertia, not --omega0" \
+    '^suslov: error: --inertia: the multiplier lambda at w0 = (0.40000000000000002, 0.5) overflows with this inertia' \
+    --method midpoint --eps 0.1 --steps 5 --inertia 1,0,0,0,1,0,1e300,1e300,1
+# what double precision cannot hold is refused for that reason, not called indefinite or put on w0
+bad_says "I_m positive definite but lost to cancellation" "too ill-conditioned for double precision" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0.99999999999999989,0,0.99999999999999989,1,0,0,0,1
+bad_says "I22/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a (ContDyn) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1e-300,9.9999999999999956e-146,0,9.9999999999999956e-146,1e10,0,0,0,1
+bad_says "|(I31, I32)| overflows" "too extreme for double precision: the size of the (ContDyn) field" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1,0,1.7e308,1.7e308,1
+bad_says "I31 I22 = 1e310 overflows" "too extreme for double precision: a (LagMult) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1e10,0,1e300,1,1 --omega0 1e-200,1e-200
+# I_m = diag(1e-200, 1e200) is positive definite with |I_m| = 1 and every coefficient in range: a
+# body; with I31 = I32 = 0, c(w) = 0 and (ContDyn) keeps w = w0 on every row
+for m in exact midpoint taylor8; do
+    "$S" --no-header --method $m --eps 0.1 --steps 3 --inertia 1e-200,0,0,0,1e200,0,0,0,1 >"$T/wide.csv" 2>"$T/err"
+    rc=$? w=$(tail -n +2 "$T/wide.csv" | cut -d, -f3-5 | sort -u | tr '\n' ' ')
+    check "$m: I_m = diag(1e-200, 1e200) is accepted (exit $rc, $(cat "$T/err")), w = w0 on rows 0-3 ($w)" \
+        test "$rc" = 0 -a "$w" = "0.40000000000000002,0.5,0 " -a "$(wc -l <"$T/wide.csv")" = 5
+done
 bad "a newline in an argument" --method "$(printf 'rk\n4')" --eps 0.1 --steps 3
 bad "control characters in an option name" --method rk4 --eps 0.1 --steps 3 "$(printf -- '--a\tb\rc\033d\ne')" 1
 bad "a newline in a list" --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')"
@@ -111,6 +147,21 @@ check "a subnormal --eps is called too small, not 'not finite' ($(cat "$T/err"))
     sh -c "grep -q 'too small' '$T/err' && ! grep -q 'not a finite' '$T/err'"
 "$S" --no-header --method rk4 --eps 0.1 --steps 3 --omega0 "$(printf '1\n,2')" 2>"$T/err" >/dev/null
 check "control characters in quoted text are escaped: $(cat "$T/err")" grep -qF "'1\n'" "$T/err"
+# a long argument is echoed as its first 40 characters, "..." and its length, so that the reason
+# after it always fits the line (a 2103-character --eps cut it after the quoted digits)
+"$S" --method rk4 --eps "0.$(printf '%02100d' 0)1" --steps 1 2>"$T/err" >/dev/null; rc=$?
+check "a 2103-character --eps: exit $rc, echoed cut to 40 characters, then the reason: $(cat "$T/err")" \
+    sh -c "test $rc = 2 && grep -q \"^suslov: error: --eps: '0\\.0\\{38\\}\\.\\.\\.' (2103 characters) is too small: .* (see suslov --help)\$\" '$T/err'"
+e50=$(awk 'BEGIN { for (i = 0; i < 50; i++) printf "\303\251" }') # 50 times U+00E9, 2 bytes each
+e40=$(printf '%s' "$e50" | cut -c1-80)
+"$S" --method "$e50" --eps 0.1 --steps 1 2>"$T/err" >/dev/null
+check "a 50-character method name is cut after 40 characters (UTF-8 counted as characters, none split)" \
+    grep -qF "unknown method '$e40...' (50 characters) (exact, " "$T/err"
+deep="$T/missing"
+for i in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15; do deep="$deep/$(printf '%0200d' "$i")"; done
+"$S" --method rk4 --eps 0.1 --steps 1 --output "$deep/x.csv" 2>"$T/err" >/dev/null; rc=$?
+check "a 3000-character --output path in no directory: exit $rc, one line that still ends with its reason" \
+    sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q 'characters) does not exist (see suslov --help)\$' '$T/err'"
 
 # the output path is checked before computing (a run of 10^13 steps would take hours):
 # empty, a directory, a missing directory, a read-only directory -> exit 2, nothing created
@@ -123,6 +174,17 @@ for o in "" "$T" "$T/missing/x.csv" "$T/ro/x.csv"; do
         sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' -a ! -e '$T/missing' -a -z \"\$(ls -A '$T/ro')\""
 done
 chmod 755 "$T/ro"
+# a directory root's access() calls writable but where no file can be created (/sys/kernel:
+# EACCES at creation) is bad input too: exit 2 and one line before computing, as above (it was
+# exit 1, an output error, without the pointer to --help)
+if [ "$(id -u)" = 0 ] && [ -d /sys/kernel ] && ! (: >/sys/kernel/suslov-probe) 2>/dev/null; then
+    timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 \
+        --output /sys/kernel/x.csv >"$T/out" 2>"$T/err"; rc=$?
+    check "--output /sys/kernel/x.csv as root: exit $rc (2), one line, before computing ($(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q 'Permission denied (see suslov --help)\$' '$T/err'"
+else
+    skip "--output where root cannot create a file: needs root and a /sys/kernel that refuses files"
+fi
 
 # a solver failure: exit 3, message names step, t, residual; the file keeps the rows before it
 "$S" --no-header --method variational --eps 1000 --steps 10 --omega0 4,5 --output "$T/fail.csv" 2>"$T/err"; rc=$?

@@ -36,6 +36,13 @@ if command -v script >/dev/null; then
     check "--method list on a terminal: an aligned table, no tabs" sh -c "grep -q '^exact  *closed form' '$T/tty' && ! grep -q \"\$(printf '\t')\" '$T/tty'"
 fi
 
+# --method list takes no other option, valid or not: exit 2, one line, nothing written
+for extra in "--eps -1" "--eps 0.1" "--output $T/lst.csv" "--help" "--no-header"; do
+    bad "--method list $extra" "^suslov: error: --method list takes no other options" --method list $extra
+done
+bad "--eps -1 --method=list (either order, either spelling)" "takes no other options" --eps -1 --method=list
+check "--method list --output FILE creates no FILE" test ! -e "$T/lst.csv"
+
 # one number grammar: counts accept 1e6 and 0x10 when whole numbers
 a=$("$S" --no-header --method exact --eps 1e-6 --steps 1e6 --every 1e6 | tail -1 | cut -d, -f1)
 b=$("$S" --no-header --method exact --eps 1e-6 --steps 0x10 --every 2e0 | tail -1 | cut -d, -f1)
@@ -71,6 +78,27 @@ check "header: version, command line, method, eps, inertia, omega0, units before
            grep -q '^# eps: 0.25, steps: 2, every: 1, final time: 0.5$' '$T/h.csv' && grep -q '^# inertia' '$T/h.csv' &&
            grep -q '^# omega0: 0.29999999999999999,-0.20000000000000001,0$' '$T/h.csv' && grep -q '^# units' '$T/h.csv' &&
            test \"\$(grep -v '^#' '$T/h.csv' | head -1 | cut -d, -f1-3)\" = k,t,omega1"
+# a method that carries its own attitude (--method list: reconstruct "own") says so in its header,
+# never a reconstruction it does not use; --help says "(ignores --reconstruct)" on its line and
+# lists it under no reconstruction (gauss4's attitude is its collocation's, as the Taylor series')
+"$S" --method list >"$T/list"
+"$S" --help >"$T/help"
+wrong=""
+while IFS="$(printf '\t')" read -r m family order recon about; do
+    [ "$m" = name ] || [ "$m" = exact ] && continue
+    args="--eps 0.25 --steps 1"; [ "$order" = tol ] && args="--tol 1e-8 --time 0.25"
+    line=$("$S" --method "$m" $args | grep '^# method: ')
+    hl=$(grep "^ *$m " "$T/help" | head -1)
+    if [ "$recon" = own ]; then
+        echo "$line" | grep -q ', attitude: own (quaternion; --reconstruct does not apply)$' || wrong="$wrong [$line]"
+        echo "$hl" | grep -q '(ignores --reconstruct)$' || wrong="$wrong [help: $hl]"
+        grep -E '^ +[a-z0-9, -]+: (cayley|cayley-mid|exp-mid)$' "$T/help" | grep -qw -- "$m" && wrong="$wrong [$m under a default]"
+    else
+        echo "$line" | grep -q ", reconstruction $recon\$" || wrong="$wrong [$line]"
+    fi
+done <"$T/list"
+check "header and --help: own-attitude methods say 'attitude: own', the others their reconstruction${wrong:+; wrong:$wrong}" \
+    sh -c "test -z '$wrong' && grep -q '^ *gauss4 .*(ignores --reconstruct)\$' '$T/help' && grep -q '^gauss4.*own' '$T/list'"
 "$S" --no-header --method euler --eps 0.1 --steps 1 | head -1 | cut -d, -f1-2 >"$T/nh"
 check "--no-header: the CSV header is the first line" test "$(cat "$T/nh")" = k,t
 "$S" --method euler --eps 0.1 --steps 1 "$(printf 'x\ny')" >/dev/null 2>&1

@@ -162,7 +162,26 @@ check "exact with I31 = I32 = 1e-200 to t = 1e10 is refused (exit $rc: $(cat "$T
 # 9. failure messages describe a NaN, never print one
 "$S" --method midpoint --eps 1e6 --steps 3 --omega0 1e100,1e100 >/dev/null 2>"$T/err"; rc=$?
 check "a Newton iteration reaching NaN: exit 3, one line, no 'nan' in it ($(cat "$T/err"))" \
-    sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && ! grep -qi nan '$T/err' && grep -q 'not a finite number' '$T/err'"
+    sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && ! grep -qiwE 'nan|inf(inity)?' '$T/err' && grep -q 'not a finite number' '$T/err'"
+# ... and every solver failure names the residual (README: "the step, t and the residual"): when
+# it is not a finite number, says so, with the last finite one before it if there was one
+fails() { # fails METHOD ARGS...: one failing run, the line kept in $T/err
+    m=$1; shift
+    "$S" --method "$m" "$@" >/dev/null 2>"$T/err"; rc=$?
+}
+fails variational --eps 1e-150 --steps 5 --omega0 1e150,1e100
+check "variational overflowing at its starting guess: exit 3, one line naming step 1, t and the residual ($(cat "$T/err"))" \
+    sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && grep -q 'variational step 1 (t = 1e-150) failed: .*the residual is not a finite number already at the starting guess' '$T/err' && ! grep -qiwE 'nan|inf(inity)?' '$T/err'"
+fails midpoint --eps 1e30 --steps 3 --omega0 1e10,1e10
+check "midpoint overflowing after an iteration: the last finite residual is named ($(cat "$T/err"))" \
+    sh -c "test $rc = 3 && grep -q 'midpoint step 1 (t = 1e+30) failed: .*the residual is not a finite number; the last finite residual was [0-9]' '$T/err'"
+for run in "midpoint --eps 1e6 --steps 3 --omega0 1e100,1e100" "gauss4 --eps 1 --steps 3 --omega0 1e100,1e99" \
+           "comp4-s5 --eps 1e6 --steps 3 --omega0 1e100,1e100" "comp4-s5 --eps 1000 --steps 10 --omega0 4,5" \
+           "variational --eps 1000 --steps 10 --omega0 4,5"; do
+    fails $run
+    check "$run: exit 3, one line naming the step, t and the residual ($(cat "$T/err"))" \
+        sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && grep -q 'step [0-9]* (t = [^)]*) failed: .*residual' '$T/err' && ! grep -qiwE 'nan|inf(inity)?' '$T/err'"
+done
 
 # 10. --help to a full device fails; running out of inodes is an output error (1), not bad input
 "$S" --help >/dev/full 2>"$T/err"; rc=$?

@@ -37,6 +37,23 @@ for m in exact euler midpoint rk4 variational; do
     result "$(near "$E" 0.225 1e-15)" "$m: row 0 energy = $E, by hand 0.225"
 done
 
+# Row 0 is w0 as given, for every method (exact included: not its closed form evaluated at
+# t = 0, an ulp or so off), so the whole row, E and lambda from that w0, is one row for all.
+for w0 in 0.4,0.5 1,1e-15; do
+    want=$(awk -v w="$w0" 'BEGIN { split(w, x, ","); printf "0,0,%.17g,%.17g,0", x[1], x[2] }')
+    rows=""
+    for mo in exact:- $("$S" --method list | tail -n +3 | cut -f1,3 | tr '\t' :); do
+        m=${mo%:*} args="--eps 0.5 --steps 1"
+        [ "${mo#*:}" = tol ] && args="--tol 1e-10 --time 0.5" # a tolerance-driven method
+        rows="$rows$("$S" --no-header --method "$m" $args --omega0 "$w0" | sed -n 2p)
+"
+    done
+    distinct=$(printf '%s' "$rows" | sort -u | wc -l)
+    first=$(printf '%s' "$rows" | head -1 | cut -d, -f1-5)
+    result "$([ "$distinct" = 1 ] && [ "$first" = "$want" ] && echo 1 || echo 0)" \
+        "w0 = ($w0): row 0 begins $want and is the same row for every method ($distinct distinct)"
+done
+
 # --method exact on [0, 60]: every row's lambda and energy against the formulas above at the
 # printed w (terms <= 0.3; the printed 17 digits and the sums: 2e-15), and the energy conserved.
 "$S" --no-header --method exact --eps 0.5 --time 60 >"$tmp/exact.csv" 2>"$tmp/err"
@@ -76,6 +93,17 @@ for m in rk4 exact; do
     result "$([ "$ks" = "0 3 6 9 10 " ] && echo 1 || echo 0)" "$m --steps 10 --every 3 writes rows k = $ks(expected 0 3 6 9 10)"
     dt=$(awk -F, 'NR > 1 { d = $2 - 0.1 * $1; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m + 0 }' "$tmp/every.csv")
     result "$(near "$dt" 0 1e-15)" "$m --every 3: each row at t = k eps, worst difference $dt"
+done
+
+# Row k does not depend on which rows are written: exact's reference attitude is carried on a
+# grid of its own, not from one written row to the next (before t_s ~ 272 and across it).
+for run in "--eps 0.1 --steps 100" "--eps 1 --steps 400"; do
+    "$S" --no-header --method exact $run >"$tmp/all.csv"
+    "$S" --no-header --method exact $run --every 7 >"$tmp/some.csv"
+    differ=$(awk -F, 'NR == FNR { row[$1] = $0; next } FNR > 1 && row[$1] != $0 { n++ } END { print n + 0 }' \
+        "$tmp/all.csv" "$tmp/some.csv")
+    result "$([ "$differ" = 0 ] && echo 1 || echo 0)" \
+        "exact $run --every 7: every row written equals that row of --every 1 ($differ differ)"
 done
 
 echo "test_cli_values: $pass passed, $fail failed"

@@ -1,0 +1,15 @@
+/* Text from the user (an argument, a path) as a one-line message quotes it: whole when short,
+ * else cut, so that the message's reason, which follows the text, always fits its line. */
+#ifndef SUS_SYS_ECHO_H
+#define SUS_SYS_ECHO_H
+
+#include <stddef.h>
+
+/* The first n bytes of s, whole when they hold at most max characters, else their first max
+ * characters, "..." and their length: '0.000...' (2103 characters). Characters are counted as
+ * UTF-8 (a continuation byte is no character of its own), so a cut never splits one. quote: the
+ * quote character around the text, or 0 for none. Writes at most len bytes into buf (4 max + 48
+ * holds any echo) and returns buf. */
+char *sus_sys_echo(char *buf, size_t len, const char *s, size_t n, size_t max, char quote);
+
+#endif
