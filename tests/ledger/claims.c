@@ -24,7 +24,7 @@
 #include "claims_coverage.h"
 #include "claims_fig2readings.h"
 #include "claims_methods.h"
-#include "bodies.h"
+#include "claims_bodies.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "orderfit.h"
@@ -310,24 +310,17 @@ static void lambda_limit_claims(void)
     double far = INFINITY;
     char worst_name[16] = "", far_name[16] = "", text[512];
     for (int k = 0; k < BODIES_COUNT; k++) {
-        body b;
-        sus_model m;
-        sus_exact bex;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
-            ledger_die(err);
-        sus_exact_init(&bex, &m, b.w0);
-        if (bex.fixed)
+        const claims_body *d = claims_body_get(k);
+        if (d->ex.fixed)
             ledger_die("a body of tests/unit/bodies.h at a steady rotation");
-        const lim_body r = lim_measure(&bex, ex.k, x, quad, wsum);
+        const lim_body r = lim_measure(&d->ex, ex.k, x, quad, wsum);
         if (r.dev / r.bound >= worst.dev / worst.bound) {
             worst = r;
-            snprintf(worst_name, sizeof worst_name, "%s", b.name);
+            snprintf(worst_name, sizeof worst_name, "%s", d->b.name);
         }
         if (r.limit / r.bound < far) {
             far = r.limit / r.bound;
-            snprintf(far_name, sizeof far_name, "%s", b.name);
+            snprintf(far_name, sizeof far_name, "%s", d->b.name);
         }
     }
     snprintf(text, sizeof text,

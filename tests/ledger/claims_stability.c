@@ -3,7 +3,7 @@
  * psi' = k cos psi, and where the implicit steps stop being solvable. */
 #include "claims_stability.h"
 
-#include "bodies.h"
+#include "claims_bodies.h"
 #include "expected_orders.h"
 #include "ledger.h"
 #include "stability.h"
@@ -60,18 +60,11 @@ static double limit_over_bodies(const sus_stepper_type *st, double expect, char 
 {
     double far = NAN;
     for (int k = 0; k < BODIES_COUNT; k++) {
-        body b;
-        sus_model m;
-        sus_exact ex;
-        char err[256];
-        body_get(k, &b);
-        if (sus_model_init(&m, b.I, err, sizeof err) != 0)
-            ledger_die(err);
-        sus_exact_init(&ex, &m, b.w0);
-        const double h = sus_exp_stability_limit(&ex, st, 0.1, H_MAX);
+        const claims_body *d = claims_body_get(k);
+        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX);
         if (k == 0 || miss(h, expect) > miss(far, expect)) {
             far = h;
-            snprintf(worst, len, "%s", b.name);
+            snprintf(worst, len, "%s", d->b.name);
         }
     }
     return far;
