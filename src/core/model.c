@@ -6,37 +6,30 @@
 const double SUS_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
 const double SUS_PAPER_OMEGA0[2] = {0.4, 0.5};
 
-/* ||fA||_2, the largest singular value of the 2x2 matrix in closed form,
- * s^2 = (F + sqrt(F^2 - 4 det^2)) / 2 with F the squared Frobenius norm, on M scaled by a power
- * of two near its largest entry (exact, and bit for bit the unscaled value where that does not
- * overflow: F is 1e400 for an entry of 1e200); rounded up by a few ulps, so that the bound stays
- * a bound after rounding. An entry lost to underflow by the scaling only drops det, which
- * enlarges the bound. */
+/* ||M||_2, the larger singular value of the 2x2 matrix [[a, b], [c, d]] in closed form,
+ * (hypot(a + d, c - b) + hypot(a - d, c + b)) / 2: no entry is squared, so it overflows only where
+ * the norm itself is near the largest double; rounded up by a few ulps (each hypot is within an
+ * ulp, the sums within u (|a| + |d|) <= 2 u ||M||), so that the bound stays a bound after rounding. */
 static double norm2x2(const double M[2][2])
 {
-    int e;
-    frexp(fmax(fmax(fabs(M[0][0]), fabs(M[0][1])), fmax(fabs(M[1][0]), fabs(M[1][1]))), &e);
-    const double a = ldexp(M[0][0], -e), b = ldexp(M[0][1], -e);
-    const double c = ldexp(M[1][0], -e), d = ldexp(M[1][1], -e);
-    const double F = a * a + b * b + c * c + d * d, det = a * d - b * c;
-    return ldexp(sqrt(0.5 * (F + sqrt(fmax(F * F - 4.0 * det * det, 0.0)))) * (1.0 + 1e-14), e);
+    const double a = M[0][0], b = M[0][1], c = M[1][0], d = M[1][1];
+    return 0.5 * (hypot(a + d, c - b) + hypot(a - d, c + b)) * (1.0 + 1e-14);
 }
 
 /* What the model derives from I must be finite: a coefficient that overflows makes every step's
  * arithmetic meaningless (an underflow cannot: past the checks on |I_m|, 1/|I_m| and the
- * inverse's diagonal are at least 1/DBL_MAX, which keeps 50 of its 53 bits). Returns 0 or -1
- * with the reason. */
+ * inverse's diagonal are at least 1/DBL_MAX, which keeps 50 of its 53 bits). ||fA|| is finite
+ * exactly when every entry of fA is (each entry is at most the norm, and hypot of an infinity is
+ * infinite). Returns 0 or -1 with the reason. */
 static int check_coefficients(const sus_model *m, char *err, size_t errlen)
 {
-    const double (*I)[3] = m->I;
-    const double lag[2] = {I[2][1] * I[1][0] - I[2][0] * I[1][1], I[2][1] * I[0][0] - I[2][0] * I[0][1]};
     const char *what = NULL;
-    if (!(isfinite(m->fA[0][0]) && isfinite(m->fA[0][1]) && isfinite(m->fA[1][0]) && isfinite(m->fA[1][1])))
-        what = "a (ContDyn) coefficient I_ij/|I_m| overflows";
-    else if (!isfinite(m->norm_fA) || !isfinite(m->norm_b))
-        what = "the size of the (ContDyn) field, |(I31, I32)| or ||I_m^-1||, overflows";
-    else if (!isfinite(lag[0]) || !isfinite(lag[1]))
-        what = "a (LagMult) coefficient I32 I2j - I31 I1j overflows";
+    if (!isfinite(m->norm_fA))
+        what = "a (ContDyn) coefficient I_ij/|I_m|, or their norm ||I_m^-1||, overflows";
+    else if (!isfinite(m->norm_b))
+        what = "the size of the (ContDyn) field, |(I31, I32)|, overflows";
+    else if (!(isfinite(m->o0c[0]) && isfinite(m->o0c[1])))
+        what = "a (LagMult) coefficient I32 Ij1 - I31 Ij2 overflows";
     if (!what)
         return 0;
     snprintf(err, errlen, "too extreme for double precision: %s (|I_m| = %.17g)", what, m->det_m);
@@ -72,6 +65,8 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
     m->fA[1][0] = I[0] / m->det_m;  /*  I11 */
     m->fA[1][1] = I[3] / m->det_m;  /*  I21 */
     m->norm_fA = norm2x2(m->fA);
+    m->o0c[0] = I[7] * I[0] - I[6] * I[1]; /* I32 I11 - I31 I12 */
+    m->o0c[1] = I[7] * I[3] - I[6] * I[4]; /* I32 I21 - I31 I22 */
     m->norm_b = hypot(m->b[0], m->b[1]) * (1.0 + 1e-15);
     return check_coefficients(m, err, errlen);
 }

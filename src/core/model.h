@@ -19,6 +19,9 @@ typedef struct {
     /* |b|_2 and ||fA||_2, rounded up, so |c(v) fA u| <= K |v| |u| with K = norm_b norm_fA: the
      * majorant that bounds the Taylor steps (step_taylor.c) */
     double norm_b, norm_fA;
+    /* O_0's coefficients: sus_lagmult_o0 = c(w) / |I_m| (o0c[0] w1 + o0c[1] w2), with
+     * o0c[0] = I32 I11 - I31 I12 and o0c[1] = I32 I21 - I31 I22 */
+    double o0c[2];
 } sus_model;
 
 /* The paper's body: I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] and w(0) = (0.4, 0.5). */
@@ -50,10 +53,7 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
  * O_0 of the proof of PropoFinal. */
 static inline double sus_lagmult_o0(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
-    return sus_c(m, w) * m->inv_det_m
-         * ((I[2][1] * I[1][0] - I[2][0] * I[1][1]) * w[1]
-            + (I[2][1] * I[0][0] - I[2][0] * I[0][1]) * w[0]);
+    return sus_c(m, w) * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
 }
 
 /* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */

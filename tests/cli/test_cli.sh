@@ -129,8 +129,13 @@ bad_says "I22/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: 
     --method rk4 --eps 0.1 --steps 3 --inertia 1e-300,9.9999999999999956e-146,0,9.9999999999999956e-146,1e10,0,0,0,1
 bad_says "|(I31, I32)| overflows" "too extreme for double precision: the size of the (ContDyn) field" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1,0,1.7e308,1.7e308,1
+bad_says "I11/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a (ContDyn) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1e10,9.9999999999999956e-146,0,9.9999999999999956e-146,1e-300,0,0,0,1
 bad_says "I31 I22 = 1e310 overflows" "too extreme for double precision: a (LagMult) coefficient" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1e10,0,1e300,1,1 --omega0 1e-200,1e-200
+bad_says "I32 I11 = 1e310 overflows (the other coefficient of O_0)" \
+    "too extreme for double precision: a (LagMult) coefficient" \
+    --method rk4 --eps 0.1 --steps 3 --inertia 1e10,0,0,0,1,0,1,1e300,1 --omega0 1e-200,1e-200
 # I_m = diag(1e-200, 1e200) is positive definite with |I_m| = 1 and every coefficient in range: a
 # body; with I31 = I32 = 0, c(w) = 0 and (ContDyn) keeps w = w0 on every row
 for m in exact midpoint taylor8; do
