@@ -116,7 +116,6 @@ void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3])
     }
     for (; ra->grid < whole; ra->grid++)
         precise_step(ra->ex->model, h, ra->w, ra->q);
-    ra->t = (double)(ra->t0 + ra->grid * h);
     long double w[2] = {ra->w[0], ra->w[1]}, q[4] = {ra->q[0], ra->q[1], ra->q[2], ra->q[3]};
     const long double rest = span - ra->grid * h;
     if (rest > 0.0L)
