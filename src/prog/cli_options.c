@@ -41,10 +41,7 @@ static void say(const char *kind, const char *fmt, va_list ap, const char *suffi
 
 const char *cli_quote_n(const char *s, size_t n)
 {
-    static char buf[4][4 * CLI_ECHO_MAX + 48];
-    static unsigned next;
-    char *b = buf[next++ % 4];
-    return sus_sys_echo(b, sizeof buf[0], s, n, CLI_ECHO_MAX, '\'');
+    return sus_sys_echo_ring(s, n, CLI_ECHO_MAX, '\'');
 }
 
 const char *cli_quote(const char *s)

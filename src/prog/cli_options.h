@@ -49,8 +49,8 @@ void cli_exit_stdout(void) __attribute__((noreturn));
 
 /* A user's argument (its first n bytes) as a message quotes it: 'TEXT', or, beyond
  * CLI_ECHO_MAX characters, 'FIRST...' (N characters), so that the reason after it always fits
- * the line. The text lives in one of four buffers used in turn: one message may quote up to
- * four arguments. */
+ * the line. The text lives in echo.h's ring of buffers used in turn: one message may quote up
+ * to SUS_SYS_ECHO_RING arguments. */
 #define CLI_ECHO_MAX 40
 const char *cli_quote_n(const char *s, size_t n);
 const char *cli_quote(const char *s);

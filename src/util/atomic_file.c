@@ -170,17 +170,11 @@ static int fd_of_path(const char *path)
 }
 
 /* A path as a message shows it (echo.h): at most PATH_ECHO_MAX characters, so that the two a
- * message may name and its reason fit the 1024 bytes callers give it. Two buffers, used in turn;
- * errno is kept for the strerror beside it. */
+ * message may name and its reason fit the 1024 bytes callers give it. */
 enum { PATH_ECHO_MAX = 100 };
 static const char *shown(const char *path)
 {
-    static char buf[2][4 * PATH_ECHO_MAX + 48];
-    static unsigned next;
-    const int saved = errno;
-    const char *s = sus_sys_echo(buf[next++ % 2], sizeof buf[0], path, strlen(path), PATH_ECHO_MAX, 0);
-    errno = saved;
-    return s;
+    return sus_sys_echo_ring(path, strlen(path), PATH_ECHO_MAX, 0);
 }
 
 static int is_stdout(const char *path)

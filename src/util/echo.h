@@ -12,4 +12,10 @@
  * holds any echo) and returns buf. */
 char *sus_sys_echo(char *buf, size_t len, const char *s, size_t n, size_t max, char quote);
 
+/* The same into one of SUS_SYS_ECHO_RING static buffers, used in turn (one message may quote that
+ * many texts), for max <= SUS_SYS_ECHO_RING_MAX; errno is kept, for a strerror beside the text. */
+#define SUS_SYS_ECHO_RING 4
+#define SUS_SYS_ECHO_RING_MAX 100
+const char *sus_sys_echo_ring(const char *s, size_t n, size_t max, char quote);
+
 #endif
