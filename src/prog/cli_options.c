@@ -78,7 +78,8 @@ void cli_die(const char *fmt, ...)
 
 void cli_exit_stdout(void)
 {
-    if ((fflush(stdout) != 0) | ferror(stdout)) {
+    const int failed = (fflush(stdout) != 0) | ferror(stdout); /* both, whichever fails */
+    if (failed) {
         cli_error("writing stdout failed: %s", strerror(errno));
         exit(1);
     }
