@@ -189,16 +189,16 @@ static void regularity_lines(void)
      * a thousand roundings of det I_m is far from that and from a sign change. */
     const double bound = 1000.0 * SUS_U;
     snprintf(q, sizeof q,
-             "min over every step of %d bodies x %d starts x eps = 2^-3 .. 1 of det(block of "
-             "(REGLOC)) / det "
-             "I_m, midpoint DSP: the step is defined (regular) where the paper uses it; >= 1000 u",
+             "min over every step of the runs (%d bodies, %d starts each, eps = 2^-3 .. 1) of det J "
+             "/ det I_m, J the block of (REGLOC), midpoint DSP: the step is defined (regular) "
+             "where the paper steps; >= 1000 u",
              BODIES_COUNT, SUS_EXP_SENS_NSTATE);
     ledger_add_bound("regloc-regular-midpoint", "REGLOC", q, regularity(0), bound, 1,
                      LEDGER_REPRODUCED);
     snprintf(
         q, sizeof q,
-        "the same for (taudyn), the upper-left block of (RegCond) with tau = cay (the bordered "
-        "matrix is regular exactly when it is), variational; >= 1000 u");
+        "the same for (taudyn), the upper-left block of (RegCond) with the Cayley map (the "
+        "bordered matrix is regular exactly when it is), variational; >= 1000 u");
     ledger_add_bound("regcond-regular-variational", "RegCond, REGLOC", q, regularity(1), bound, 1,
                      LEDGER_REPRODUCED);
 }
@@ -288,7 +288,7 @@ void sensitivity_claims(const char *tsv)
     char q[300];
     snprintf(
         q, sizeof q,
-        "cases (of %d: %d bodies x %d starts x eps = 2^-3 .. 2^3, both runs defined) where the "
+        "cases (of %d: %d bodies, %d starts each, eps = 2^-3 .. 2^3, both runs defined) where the "
         "variational |E_N - E_0| is below the midpoint rule's: theory gives none",
         n, BODIES_COUNT, SUS_EXP_SENS_NSTATE);
     ledger_add("fig2-sensitivity-energy", "Fig. 2 (extension)", q, energy, 0.0, 0.5,

@@ -637,19 +637,20 @@ static void tex_test(FILE *fp, const ledger_row *r)
     }
 }
 
-/* One ledger line as two rows of a longtable: the numbers, then (kept on the same page) what
- * was measured. Used for the appendix; the summary uses the first row only. */
 /* The measured value for math mode: the number, or what an unbounded limit's search found. */
 static void tex_measured(const ledger_row *r, char *out, size_t len)
 {
     char b[32];
     if (r->none_found) {
         tex_number(r->expected, b, sizeof b);
-        snprintf(out, len, "\\text{none found for }h\\le %.31s", b);
+        /* breakable: the ledger's measured column is narrow */
+        snprintf(out, len, "\\text{none found}\\allowbreak\\ \\text{for }h\\le %.31s", b);
     } else
         tex_number(r->measured, out, len);
 }
 
+/* One ledger line as two rows of a longtable: the numbers, then (kept on the same page) what
+ * was measured. Used for the appendix; the summary uses the first row only. */
 static void tex_line(FILE *fp, const ledger_row *r)
 {
     char num[96];
@@ -704,7 +705,7 @@ static int same_group(const ledger_row *a, const ledger_row *b, const char *key)
  * the worst deviation |m - e| among them and the tolerances. */
 static void write_summary(FILE *fp)
 {
-    char key[64], num[64], lo[64], hi[64];
+    char key[64], num[128], lo[64], hi[64];
     int done[LEDGER_MAX] = {0};
     fputs("\\begin{longtable}{@{}>{\\raggedright}p{0.29\\linewidth} >{\\raggedright}p{0.2\\linewidth} "
           ">{\\raggedright}p{0.2\\linewidth} >{\\raggedright}p{0.17\\linewidth} "
