@@ -130,9 +130,11 @@ FILENAME == ARGV[3] { if (FNR > 1) { n = split($4, a, " "); for (i = 1; i <= n; 
       # the link goes after the count of a grouped row (id-*~$\times n$), which stays beside the id
       len = RLENGTH; if (match(substr($0, len + 1), /^~\$\\times[0-9]+\$/)) len += RLENGTH
       link = ""; fd = ""
+      # a grouped row (id-*) takes the finding most of its members rest under
+      delete votes; best = 0
       for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) {
           if (link == "") link = src[k]
-          if (finding[k] != "") { link = src[k]; fd = finding[k]; break } }
+          if (finding[k] != "" && ++votes[finding[k]] > best) { best = votes[finding[k]]; fd = finding[k]; link = src[k] } }
       if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; sub(/.*\//, "", shown); gsub(/_/, "\\\\_", shown)
           $0 = substr($0, 1, len) " {\\scriptsize\\href{\\RepoBase " file "}{\\texttt{" shown "}}}" substr($0, len + 1) }
       if (fd != "" && substr($0, length($0) - 1) == "\\\\") $0 = substr($0, 1, length($0) - 2) " " fd "\\\\" }
