@@ -212,11 +212,13 @@ ledger: $(BUILD)/claims.out
 check: all $(BUILD)/claims.out
 	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
-# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
-# summary.tex, and prints its table (claims.out). A run that does not reach its summary line
+# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
+# summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
+# starts), and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
-LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
+LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
+              $(BUILD)/sensitivity.tex
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
 	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
@@ -264,17 +266,21 @@ data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &
 
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
-            $(BUILD)/summary.tex data/bench.tex \
+            $(BUILD)/summary.tex $(BUILD)/sensitivity.tex data/bench.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
-            tools/paper_tolerances.sh
+            tools/paper_tolerances.sh CITATION.cff .zenodo.json
 paper: paper/companion.pdf paper/methods.pdf
 
 # The companion (main text) and the software note (methods, benchmark, whole ledger, source).
-paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) | deps-paper
-	@sh tools/paper.sh $(BUILD)
+# PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one address
+# (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
+PAPER_BASE ?=
+$(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
+paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
+	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, one side-by-side page per source file, the
 # equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
