@@ -1,8 +1,9 @@
 # Sourced by the CLI test scripts (after B=${1:-build}): B made absolute, so that a script works
-# the same from a relative or an absolute build directory; a scratch directory $T removed at exit
+# the same from a relative or an absolute build directory (B_GIVEN keeps it as given); a scratch directory $T removed at exit
 # and on an interrupt; and the PASS/FAIL counting behind their last line "NAME: N passed,
 # N failed" (done NAME prints it and sets the status).
-B=$(cd "${B:-build}" 2>/dev/null && pwd -P || echo "${B:-build}")
+B_GIVEN=${B:-build} # as given, for make: its stamps hold the paths BUILD spells
+B=$(cd "$B_GIVEN" 2>/dev/null && pwd -P || echo "$B_GIVEN")
 T=$(mktemp -d)
 # at_exit COMMAND: run COMMAND too when the script ends (normally or by a signal), before $T goes
 cleanup_extra=""
