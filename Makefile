@@ -177,14 +177,19 @@ $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
-# only when the program (or anything it is linked from) changes.
+# only when the program (or anything it is linked from) changes. The figures' tools (ffmpeg) are
+# checked through a stamp, as the check profile's are, so that `make -q figures` answers 0 when
+# every figure is up to date (an always-run prerequisite would make it answer 1 for ever).
 figures: $(FIGS:%=figures/%.pdf) animation
+DEPS_FIGURES := $(BUILD)/deps-figures.stamp
+$(DEPS_FIGURES): tools/deps.sh
+	@sh tools/deps.sh figures && mkdir -p $(@D) && touch $@
 
 # The attitude animation: frames, video (when ffmpeg is installed), filmstrip, caption and the
 # R_k it draws.
 animation: figures/attitude_filmstrip.png
 
-figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | deps-figures
+figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
@@ -192,7 +197,7 @@ figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD
 # interrupted make must never delete one: a half-made file cannot exist.
 .PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
            figures/attitude.txt data/attitude.csv
-figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-figures
+figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
 
