@@ -139,9 +139,9 @@ static double stop_of(const sus_tol_work *wk, double t_end)
 static double rate_of(const sus_tol_work *wk, double t, double t_end)
 {
     const double budget = t_end > wk->t_tail ? (1.0 - TAIL_SHARE) * wk->tolq : wk->tolq;
-    /* a caller that moves t_end past the tail after spending more than its share keeps a sixteenth
+    /* a caller that moves t_end past the tail after spending more than its share gets a sixteenth
      * of the share to go on with (sus_run_tol never does: its t_end is fixed) */
-    const double left = fmax(budget - wk->spent, budget / 16.0);
+    const double left = budget - wk->spent > 0.0 ? budget - wk->spent : budget / 16.0;
     return left / (stop_of(wk, t_end) - t);
 }
 

@@ -49,6 +49,30 @@ static const sus_tol_ops *ops(void)
     return sus_step_exact_attitude_type.tol;
 }
 
+/* The family's bodies, then two of the paper's own altered to stress the step rule: "slow" with a
+ * third row a tenth of the paper's (k ten times smaller: steps so long that the rotation over a step,
+ * not w's singularity, bounds the series' terms) and "fast" with w0 eight times the paper's (k and
+ * the rotation eight times larger). */
+#define TEST_BODIES (BODIES_COUNT + 2)
+
+static void test_body(int j, body *b)
+{
+    if (j < BODIES_COUNT) {
+        body_get(j, b);
+        return;
+    }
+    body_get(0, b);
+    if (j == BODIES_COUNT) {
+        b->I[6] *= 0.1;
+        b->I[7] *= 0.1;
+        snprintf(b->name, sizeof b->name, "slow");
+    } else {
+        b->w0[0] *= 8.0;
+        b->w0[1] *= 8.0;
+        snprintf(b->name, sizeof b->name, "fast");
+    }
+}
+
 /* |L^{-1}|_F r: the scale of w and of its roundings (exact.h's Cholesky factor). */
 static double w_scale(const sus_exact *ex)
 {
@@ -200,10 +224,10 @@ static void run_checked(const sus_model *m, const double w0[2], double tol, doub
 static void steps_within_estimates(void)
 {
     step_check c = {0};
-    for (int k = 0; k < BODIES_COUNT; k++) {
+    for (int k = 0; k < TEST_BODIES; k++) {
         body b;
         sus_model m;
-        body_get(k, &b);
+        test_body(k, &b);
         if (check_body_model(&b, &m))
             continue;
         for (int e = 4; e <= 13; e += 3)
@@ -211,14 +235,62 @@ static void steps_within_estimates(void)
     }
     CHECK(c.local <= 1.0, "every step's local error (against the reference's increment) is at most its "
           "estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate %.3g over %ld steps, %d "
-          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13", ROUND_STEP, COND, c.local, c.steps, BODIES_COUNT);
+          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13", ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
     CHECK(c.global <= 1.0, "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio "
           "%.3g", c.global);
 }
 
+/* ---- the method's own rules: the budget ---- */
+
+typedef struct {
+    double sum;  /* worst (sum of the estimates) / TOL over runs */
+    double step; /* worst estimate / share over the integration steps */
+} budget_check;
+
+static void run_budget(const sus_model *m, const double w0[2], double tol, double T, budget_check *c)
+{
+    sus_tol_work *wk = ops()->alloc(m, tol, w0);
+    double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam, sum = 0.0;
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    while (wk && t < T && ops()->step(wk, T, &t, w, &lam, &att, &st) == SUS_STEPPER_OK) {
+        sum += st.residual;
+        if (st.scale > 0.0) /* an integration step (the tail's has no share: its bound is fixed) */
+            c->step = fmax(c->step, st.residual / st.scale);
+    }
+    if (wk)
+        ops()->free(wk);
+    c->sum = fmax(c->sum, t < T ? INFINITY : sum / tol);
+}
+
+/* The top of step_exact_attitude.c: every integration step's estimate is at most its share rate h,
+ * and the estimates with the tail's bound sum to at most TOL; runs to T = 400 reach the tail. */
+static void budget_kept(void)
+{
+    budget_check c = {0.0, 0.0};
+    for (int k = 0; k < TEST_BODIES; k++) {
+        body b;
+        sus_model m;
+        test_body(k, &b);
+        if (check_body_model(&b, &m))
+            continue;
+        for (int e = 4; e <= 12; e += 4) {
+            run_budget(&m, b.w0, pow(10.0, -e), 50.0, &c);
+            run_budget(&m, b.w0, pow(10.0, -e), 400.0, &c);
+        }
+    }
+    CHECK(c.step <= 1.0 + 1e-12, "every step's estimate is at most its share of the budget, rate h: worst "
+          "ratio %.15g (%d bodies, TOL 1e-4, 1e-8, 1e-12, T = 50 and 400)", c.step, TEST_BODIES);
+    CHECK(c.sum <= 1.0 + 1e-12, "the steps' estimates and the tail's bound sum to at most TOL: worst sum / "
+          "TOL %.15g", c.sum);
+}
+
 /* ---- the tail ---- */
 
-static long steps_to(const sus_model *m, const double w0[2], double tol, double T, double R[3][3])
+/* Steps to T; R(T) and w(T) (w may be NULL). */
+static long steps_to_w(const sus_model *m, const double w0[2], double tol, double T, double R[3][3],
+                       double wT[3])
 {
     sus_tol_work *wk = ops()->alloc(m, tol, w0);
     double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam;
@@ -231,7 +303,14 @@ static long steps_to(const sus_model *m, const double w0[2], double tol, double 
     if (wk)
         ops()->free(wk);
     sus_attitude_get(&att, R);
+    if (wT)
+        memcpy(wT, w, sizeof w);
     return t < T ? -1 : n;
+}
+
+static long steps_to(const sus_model *m, const double w0[2], double tol, double T, double R[3][3])
+{
+    return steps_to_w(m, w0, tol, T, R, NULL);
 }
 
 /* x^T I_m x in long double. */
@@ -340,12 +419,13 @@ static void constant_w_is_one_rotation(void)
         return;
     }
     const double w0[2] = {0.4, 0.5}, T = 123.25, v[3] = {T * w0[0], T * w0[1], 0.0};
-    double R[3][3], Rx[3][3];
-    const long n = steps_to(&m, w0, 1e-12, T, R);
+    double R[3][3], Rx[3][3], w[3];
+    const long n = steps_to_w(&m, w0, 1e-12, T, R, w);
     sus_so3_exp(v, Rx);
     const double err = sus_so3_dist(R, Rx), bound = 1e-12 + COND * U * T * hypot(w0[0], w0[1]);
-    CHECK(n == 1 && err <= bound, "I31 = I32 = 0: one step (%ld), R(T) = exp(T w0^) within %.3g (bound %.3g)",
-          n, err, bound);
+    CHECK(n == 1 && err <= bound && w[0] == w0[0] && w[1] == w0[1] && w[2] == 0.0,
+          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, R(T) = exp(T w0^) within %.3g (bound %.3g)", n,
+          err, bound);
 }
 
 static void degree_rule(void)
@@ -367,6 +447,7 @@ int main(void)
     fast_omega_agrees();
     tail_bound_holds();
     steps_within_estimates();
+    budget_kept();
     tail_is_one_step();
     dense_ends_at_the_step();
     constant_w_is_one_rotation();
