@@ -84,7 +84,7 @@ struct sus_tol_work {
     const degree *deg;
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
-    taylor_series ts; /* its series, scaled to its length */
+    taylor_series ts; /* its series (q's rows scaled to its length) */
 };
 
 /* ---- the degree by TOL ---- */
@@ -174,7 +174,7 @@ static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int
 }
 
 /* A step of at most left from (t, w, q) whose estimate is at most rate h (top of the file): the
- * series over H, the step s H, the rows rescaled to it (dense output reads them), q advanced.
+ * series over H, the step s H, q's rows rescaled to it (dense output reads them), q advanced.
  * Returns 0, or -1 for a series that overflowed (nothing advanced). */
 static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2], double q[4],
                        double *h, double *est)
@@ -191,9 +191,8 @@ static int taylor_step(sus_tol_work *wk, double t, double left, double rate, con
     if (2.0 * B * pow(s, d) > rate * H) /* s^(d+1) B / (1 - s a) <= rate s H, 1 - s a >= 1/2 */
         s = pow(rate * H / (2.0 * B), 1.0 / d);
     double sn = 1.0;
-    for (int j = 1; j <= d; j++) {
+    for (int j = 1; j <= d; j++) { /* q's rows: w's are read no more */
         sn *= s;
-        wk->ts.W[j] *= sn;
         wk->ts.P[j] *= sn;
         wk->ts.M[j] *= sn;
     }
