@@ -1,12 +1,14 @@
 #include "exact_run.h"
 
-#include "mat3.h"
+#include "api_args.h"
 #include "refattitude.h"
 
 #include <math.h>
 
 double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T)
 {
+    if (!sus_args_model_ready(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
+        return -1.0;
     sus_exact ex;
     sus_refatt ra;
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -18,6 +20,9 @@ double sus_exact_reference_steps(const sus_model *m, const double w0[2], double 
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
                      void *ctx, sus_run_report *report)
 {
+    const char *bad = sus_args_run(cfg, w0, emit, report, 0);
+    if (bad)
+        return sus_args_refuse(report, bad);
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     sus_exact ex;
     sus_refatt ra;

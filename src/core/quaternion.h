@@ -5,6 +5,10 @@
 
 #include "so3.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* p = q (x) (0, w): (-v.w, s w + v x w). */
 static inline void sus_quat_mul_pure(double p[4], const double q[4], const double w[3])
 {
@@ -38,5 +42,9 @@ void sus_quat_of_attitude(const sus_attitude *a, double q[4]);
 void sus_quat_to_attitude(const double q[4], sus_attitude *a);
 /* R(q) for a unit quaternion q (no normalisation). */
 void sus_quat_unit_rotation(const double q[4], double R[3][3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

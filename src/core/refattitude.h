@@ -24,6 +24,10 @@
 
 #include "exact.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_REFATT_ORDER 28
 
 /* The Cholesky coordinates of exact.h in long double: L = [[l11, 0], [l21, l22]], v = L^{-1} b,
@@ -67,5 +71,9 @@ void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double
 
 /* R(t0)^{-1} R(t1): the exact increment over one step, from the identity. */
 void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -16,6 +16,10 @@
 #include "exact.h"
 #include "registry.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     SUS_EXP_STAB_GOOD,
     SUS_EXP_STAB_WRONG_LIMIT,
@@ -65,5 +69,9 @@ void sus_exp_stability_map(const sus_exact *paper, const sus_stepper_type *st, c
  * 2.7853); INFINITY when |R(-h)| <= 1 up to h_max (the midpoint rule is A-stable); NAN when the
  * method has no stability function in the registry. */
 double sus_exp_linear_limit(const sus_step_method *me, double h_max);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,10 @@
 
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Iterates from the initial guess in x[n], n <= SUS_MAX_UNKNOWNS. Returns SUS_STEPPER_OK when
  * |G|_inf falls to SUS_STEP_NEWTON_RTOL * scale and one more (polishing) correction has been applied, or
  * when a correction falls below the spacing of doubles at x, or when the iteration stagnates at a
@@ -33,5 +37,9 @@ int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double 
 #define SUS_STEP_NEWTON_MAXIT 50
 /* The widest residual accepted as round-off when Newton stagnates: 1000 u times the scale. */
 #define SUS_STEP_NEWTON_STAGNATION (1000.0 * SUS_U)
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -51,6 +51,8 @@ const sus_step_method *sus_step_method_get(int i)
 
 int sus_step_method_index(const char *name)
 {
+    if (!name)
+        return -1;
     for (int i = 0; i < NMETHODS; i++)
         if (strcmp(METHODS[i].type->name, name) == 0)
             return i;
@@ -73,6 +75,10 @@ const sus_step_method *sus_step_method_by_name(const char *name)
 const char *sus_step_method_names(char *buf, unsigned long len, const char *sep)
 {
     size_t used = 0;
+    if (!buf || len == 0)
+        return NULL;
+    if (!sep)
+        sep = "";
     buf[0] = '\0';
     for (int i = 0; i < NMETHODS && used < len; i++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? sep : "", METHODS[i].type->name);
@@ -87,6 +93,8 @@ const char *sus_step_attitude_name(sus_attitude_form form)
 
 int sus_step_methods_write_tsv(FILE *fp)
 {
+    if (!fp)
+        return -1;
     fprintf(fp, "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
                 "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
     for (int i = 0; i < NMETHODS; i++) {

@@ -25,6 +25,10 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_SYS_ATOMIC_TMP_PREFIX ".tmp."
 #define SUS_SYS_ATOMIC_TMP_SUFFIX_MAX 24 /* "XXXXXX" or "PID.I": a pid and a counter below 1000 */
 
@@ -54,5 +58,9 @@ void sus_sys_atomic_file_abort(sus_sys_atomic_file *af);
 /* Removes every named temporary now open; async-signal-safe, for a program that handles a
  * signal itself (its handler then takes precedence over this file's). */
 void sus_sys_atomic_file_remove_temporaries(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

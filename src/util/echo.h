@@ -5,6 +5,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The first n bytes of s, whole when they hold at most max characters, else their first max
  * characters, "..." and their length: '0.000...' (2103 characters). Characters are counted as
  * UTF-8 (a continuation byte is no character of its own), so a cut never splits one. quote: the
@@ -17,5 +21,9 @@ char *sus_sys_echo(char *buf, size_t len, const char *s, size_t n, size_t max, c
 #define SUS_SYS_ECHO_RING 4
 #define SUS_SYS_ECHO_RING_MAX 100
 const char *sus_sys_echo_ring(const char *s, size_t n, size_t max, char quote);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
