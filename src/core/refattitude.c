@@ -169,32 +169,63 @@ static double steady_time(const sus_exact *ex)
     return isnan(t_s) ? INFINITY : t_s;
 }
 
-/* w* in long double: psi -> pi/2 in exact.h, u* = r J v / |v| (J v = (-v2, v1)), w* = L^{-T} u*. */
-static void steady_rotation(const sus_refatt *ra, long double wstar[2])
+/* The steady phase in 113-bit arithmetic: its angle (t - t_s) |w*| grows without bound, so the
+ * speed |w*| must be good to far below a long double's rounding for R(t) to stay within 2^-53 at
+ * large t (in long double, 20 roundings of |w*| on a near-singular I_m reach 2^-51 after 300
+ * radians). GCC and clang have __float128 on x86-64; where long double is binary128 already
+ * (WebAssembly, aarch64) it is used. */
+#if defined(__SIZEOF_FLOAT128__) && __LDBL_MANT_DIG__ < 113
+typedef __float128 quad;
+#else
+typedef long double quad;
+#endif
+
+/* sqrt to 113 bits: one Newton step from the long-double root doubles its 64 bits. */
+static quad quad_sqrt(quad x)
 {
-    const sus_exact *ex = ra->ex;
-    if (ex->fixed) {
-        wstar[0] = ex->w0[0];
-        wstar[1] = ex->w0[1];
-        return;
-    }
-    long double u0[2];
-    u_of_w(&ra->chol, ex->w0, u0);
-    const long double r = hypotl(u0[0], u0[1]), vn = hypotl(ra->chol.v[0], ra->chol.v[1]);
-    const long double us[2] = {-r * ra->chol.v[1] / vn, r * ra->chol.v[0] / vn};
-    w_of_u(&ra->chol, us, wstar);
+    const long double y = sqrtl((long double)x);
+    if (!(y > 0.0L) || !isfinite(y))
+        return y;
+    return ((quad)y + x / y) / 2;
 }
 
-/* q (x) (cos(theta/2), sin(theta/2) w / |w|), theta = tau |w|, w = (w0, w1, 0): the steady rotation
- * over tau. Beyond 2^1000 the phase is lost to the rounding of t already; reducing keeps it finite. */
-static void steady_advance(const long double q[4], const long double w[2], long double tau, long double p[4])
+/* w*: psi -> pi/2 in exact.h puts it along +J b, J b = (-b2, b1) (L^{-T} J L^{-1} = J / |L|), on
+ * the energy of w0: |w*| = |b| sqrt(<I_m w0, w0> / <I_m Jb, Jb>). Products of doubles are exact in
+ * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*| needs
+ * no more than long double: an error in it does not grow with t. */
+static void steady_rotation(sus_refatt *ra)
 {
-    const long double n = hypotl(w[0], w[1]);
-    long double half = 0.5L * tau * n;
-    if (half > 0x1p1000L)
-        half = fmodl(half, 6.283185307179586476925286766559L);
-    const long double c = cosl(half), s = n > 0 ? sinl(half) / n : 0;
-    const long double x = s * w[0], y = s * w[1];
+    const sus_exact *ex = ra->ex;
+    const double (*I)[3] = ex->model->I, *b = ex->model->b;
+    const double *d = ex->fixed ? ex->w0 : (const double[2]){-b[1], b[0]};
+    const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
+    quad speed = quad_sqrt(nd);
+    if (!ex->fixed) {
+        const quad w0 = ex->w0[0], w1 = ex->w0[1], e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 +
+                                                          I[1][1] * w1 * w1;
+        const quad ed = I[0][0] * (quad)d[0] * d[0] + 2 * I[1][0] * (quad)d[0] * d[1] +
+                        I[1][1] * (quad)d[1] * d[1];
+        speed = quad_sqrt(e0 * nd / ed);
+    }
+    const long double n = sqrtl((long double)nd);
+    ra->axis[0] = n > 0 ? d[0] / n : 1.0L;
+    ra->axis[1] = n > 0 ? d[1] / n : 0.0L;
+    ra->speed[0] = (long double)speed;
+    ra->speed[1] = (long double)(speed - ra->speed[0]);
+}
+
+/* q (x) (cos(theta/2), sin(theta/2) a), theta = tau |w*|, a the axis (0 on the third): the steady
+ * rotation over tau. Half the angle is formed and reduced modulo 2 pi (to 128 bits, hi + lo) in
+ * 113 bits; beyond 2^100 the phase is lost to the rounding of t already, and any angle will do. */
+static void steady_advance(const sus_refatt *ra, quad tau, long double p[4])
+{
+    const quad two_pi = (quad)0xc90fdaa22168c235p-61L - (quad)0xece675d1fc8f8cbbp-127L;
+    quad half = tau * ((quad)ra->speed[0] + ra->speed[1]) / 2;
+    if (half < 0x1p100)
+        half -= two_pi * (quad)(long double)floorl((long double)(half / two_pi));
+    const long double h = half < 0x1p100 ? (long double)half : 0.0L, c = cosl(h), sn = sinl(h);
+    const long double x = sn * ra->axis[0], y = sn * ra->axis[1];
+    const long double *q = ra->q_s;
     p[0] = q[0] * c - q[1] * x - q[2] * y;
     p[1] = q[1] * c + q[0] * x - q[3] * y;
     p[2] = q[2] * c + q[3] * x + q[0] * y;
@@ -235,14 +266,14 @@ void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const doubl
         ra->q[i] = q[i];
     ra->t_s = fmax(steady_time(ex), t0);
     ra->steady = 0;
-    steady_rotation(ra, ra->wstar);
+    steady_rotation(ra);
 }
 
 /* The tail from q(t_s), ra->q_s. */
 static void tail_at(const sus_refatt *ra, double t1, double R[3][3])
 {
     long double q[4];
-    steady_advance(ra->q_s, ra->wstar, (long double)t1 - ra->t_s, q);
+    steady_advance(ra, (quad)t1 - ra->t_s, q);
     rotation_of(q, R);
 }
 
@@ -310,10 +341,12 @@ void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double
     sus_exact_init(&ex, m, w0);
     sus_refatt_init(&ra, &ex, 0.0, I3);
     sus_refatt_advance(&ra, T, R);
-    if (ra.steady)
-        memcpy(wl, ra.wstar, sizeof wl);
-    else
+    if (ra.steady) {
+        wl[0] = (ra.speed[0] + ra.speed[1]) * ra.axis[0];
+        wl[1] = (ra.speed[0] + ra.speed[1]) * ra.axis[1];
+    } else {
         w_of_u(&ra.chol, ra.u, wl);
+    }
     w[0] = (double)wl[0];
     w[1] = (double)wl[1];
 }

@@ -14,11 +14,13 @@
  * the tail depends on neither (sus_exact_reference_steps).
  *
  * Accuracy, for the inputs as the doubles they are: each step adds its truncation and a few
- * long-double roundings (2^-64 each) to q, and rotations carry an error on unchanged, so before its
- * one rounding to double R(t) is within about 10 * 2^-64 per step taken plus 2^-64 for the tail
- * and 2^-64 of the tail's angle: under u = 2^-53 for up to a thousand steps to the tail. The
- * claims ledger and tests/unit/test_highorder.c check it against an independent long-double
- * Magnus integration along the closed-form w(t) on every test body, stiff ones included. */
+ * long-double roundings (2^-64 each) to q, and rotations carry an error on unchanged; the tail's
+ * speed |w*| and angle are formed in 113-bit arithmetic, so its error does not grow with t. Before
+ * its one rounding to double, R(t) is within about 10 * 2^-64 per step to the tail plus a few
+ * 2^-64: the stated accuracy is 2^-51 in every entry, at every t, for up to a thousand steps to the
+ * tail (sus_exact_reference_steps). tests/unit/test_highorder.c checks it against an independent
+ * long-double Magnus integration along the closed-form w(t) on every test body, stiff ones
+ * included. */
 #ifndef SUS_REFATTITUDE_H
 #define SUS_REFATTITUDE_H
 
@@ -44,7 +46,8 @@ typedef struct {
     long double u[2], q[4]; /* u = L^T w(t) and the attitude as a quaternion (not normalised) */
     double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */
     double t_s;             /* the steady tail from here on (refattitude.c) */
-    long double wstar[2];   /* the steady rotation */
+    long double axis[2];    /* the steady rotation w*: its axis (third entry 0) */
+    long double speed[2];   /* and |w*| to 128 bits, hi + lo */
     long double q_s[4];     /* q(t_s), once steady */
     int steady;
 } sus_refatt;
