@@ -94,10 +94,8 @@ static void sweep_steps(sus_exp_bench *b, sus_exp_bench_series *s, double N0, in
 static void sweep_ours(sus_exp_bench *b, const sus_step_method *me, sus_recon recon)
 {
     sus_exp_bench_series *s = sus_exp_bench_new_series(b);
-    snprintf(s->name, sizeof s->name, "%s + %s", me->type->name, SUS_RECON_NAMES[recon]);
+    sus_step_method_label(me->type, recon, s->name, sizeof s->name);
     const int fine = sus_exp_bench_own_attitude(me), high = me->type->order > 4;
-    if (fine) /* the attitude is its own: no reconstruction */
-        snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
     s->ours = 1;
     s->me = me;
     s->recon = recon;
@@ -128,7 +126,7 @@ static void sweep_ours_w(sus_exp_bench *b, const sus_step_method *me)
 static void sweep_ours_tol(sus_exp_bench *b, const sus_step_method *me)
 {
     sus_exp_bench_series *s = sus_exp_bench_new_series(b);
-    snprintf(s->name, sizeof s->name, "%s (quaternion)", me->type->name);
+    sus_step_method_label(me->type, me->recon, s->name, sizeof s->name);
     s->ours = 1;
     s->tol_driven = 1;
     s->me = me;

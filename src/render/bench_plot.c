@@ -175,7 +175,8 @@ static void draw_cost(cairo_t *cr, void *vctx)
                                                      SUS_PLOT_NONE, 0, "w-step only"),
                                    sus_plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0,
                                                      SUS_PLOT_NONE, 0,
-                                                     "whole step (w, R), default reconstruction")};
+                                                     "whole step (w, R): default reconstruction, "
+                                                     "or own attitude")};
     sus_plot_legend(&ax, leg, 2, 0);
     free(v1);
     free(v2);

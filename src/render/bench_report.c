@@ -31,10 +31,14 @@ static void print_costs(const sus_exp_bench *b)
     const int irk4 = sus_step_method_index_of(sus_step_rk4);
     printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
            "x our rk4");
-    for (int m = 0; m < c->n; m++)
-        printf("  %-12s %10.1f %10.1f %-7s %12.2f %12.2f\n", sus_step_method_get(m)->type->name,
-               c->ns_raw[m], c->ns_full[m], SUS_RECON_NAMES[sus_step_method_get(m)->recon],
-               c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
+    for (int m = 0; m < c->n; m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        /* the default reconstruction, or the attitude the method carries itself */
+        const char *att = me->type->follows_recon ? SUS_RECON_NAMES[me->recon]
+                                                  : sus_step_attitude_name(me->type->attitude);
+        printf("  %-12s %10.1f %10.1f %-10s %9.2f %12.2f\n", me->type->name, c->ns_raw[m],
+               c->ns_full[m], att, c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
+    }
     printf("  %-12s %10.1f\n", "GSL rk4", c->ns_gsl_rk4);
     printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", c->ns_exact);
 }

@@ -33,14 +33,25 @@ static void csv_work_rows(FILE *fp, const sus_exp_bench *b)
     }
 }
 
+/* The whole step's name: NAME+RECON with its default reconstruction, or the method's label when
+ * it carries its own attitude. */
+static const char *whole_step_name(const sus_step_method *me, char *buf, size_t len)
+{
+    if (!me->type->follows_recon)
+        return sus_step_method_label(me->type, me->recon, buf, len);
+    snprintf(buf, len, "%s+%s", me->type->name, SUS_RECON_NAMES[me->recon]);
+    return buf;
+}
+
 static void csv_step_rows(FILE *fp, const sus_exp_bench_costs *c)
 {
+    char whole[96];
     for (int m = 0; m < c->n; m++) {
         const sus_step_method *me = sus_step_method_get(m);
         fprintf(fp, "step,%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name, c->ns_raw[m],
                 c->newton[m]);
-        fprintf(fp, "step,%s+%s,ours,,,,,,,,,%.4g,%.3g,\n", me->type->name,
-                SUS_RECON_NAMES[me->recon], c->ns_full[m], c->newton[m]);
+        fprintf(fp, "step,%s,ours,,,,,,,,,%.4g,%.3g,\n", whole_step_name(me, whole, sizeof whole),
+                c->ns_full[m], c->newton[m]);
     }
     fprintf(fp, "step,gsl-rk4-driver,peer,,,,,,,,,%.4g,,\n", c->ns_gsl_rk4);
     fprintf(fp, "step,exact-omega,,,,,,,,,,%.4g,,\n", c->ns_exact);

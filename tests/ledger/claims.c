@@ -520,10 +520,11 @@ static void negative_controls(void);
 
 static void preservation_claims(void)
 {
-    char id[64], what[200];
+    char id[64], what[200], label[64];
     for (int s = 0; s < sus_step_method_count(); s++) {
         const sus_step_method *me = sus_step_method_get(s);
         const sus_stepper_type *st = me->type;
+        sus_step_method_label(st, me->recon, label, sizeof label);
         const sus_run_config cfg = {model, st, me->recon, PRESERVE_EPS, PRESERVE_STEPS, 1};
         preserve_ctx c = {0, 0, 0};
         sus_run_report rep;
@@ -534,8 +535,8 @@ static void preservation_claims(void)
          * few u |w| (~1e-16) times |R^T R - I|-sized factors: 1e-14 is a hundred times that. */
         snprintf(id, sizeof id, "constraint-preserved-%s", st->name);
         snprintf(what, sizeof what,
-                 "max over 1e6 steps (eps = 0.01) of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), %s + %s",
-                 st->name, SUS_RECON_NAMES[me->recon]);
+                 "max over 1e6 steps (eps = 0.01) of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), %s",
+                 label);
         ledger_add(id, me->paper_ref ? "Algorithm (algo), Remark" : "(extension)", what, fmax(c.w3, c.mu),
                    0.0, 1e-14, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
         /* A plain sum R + R D rounds each of the N = 1e6 additions at u |R|: a random walk of
@@ -544,8 +545,7 @@ static void preservation_claims(void)
          * the computed increments R D, |D| ~ eps |w| = 6e-3 (measured 2.6e-15 .. 2.4e-14). 5e-14,
          * half the plain walk, tells the two apart: the bound fails if the compensation is dropped. */
         snprintf(id, sizeof id, "so3-preserved-%s", st->name);
-        snprintf(what, sizeof what, "max over 1e6 steps (eps = 0.01) of |R_k^T R_k - I|, %s + %s", st->name,
-                 SUS_RECON_NAMES[me->recon]);
+        snprintf(what, sizeof what, "max over 1e6 steps (eps = 0.01) of |R_k^T R_k - I|, %s", label);
         ledger_add(id, me->paper_ref ? "Algorithm (algo)" : "(extension)", what, c.defect, 0.0,
                    SO3_PRESERVE_TOL, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
