@@ -365,14 +365,17 @@ mutants: | $(DEPS_CHECK)
 # + <-> -, * <-> /, array index +-1, comparison negated, over the library files in priority order;
 # last line "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
 # MUTANTS_OPS_SAMPLE=N runs a seeded sample of N (seed MUTANTS_OPS_SEED; CI), MUTANTS_OPS_FILES
-# a subset of the files; the full campaign writes tests/build/mutants_ops_result.txt with its commit.
+# a subset of the files. The result (one line a mutant, with its commit) and the log are generated
+# files under $(BUILD); the last complete campaign is recorded in data/mutants_ops_log.tsv.gz and
+# tests/build/mutants_ops_summary.txt (tools/mutants_ops.py --record writes them, by hand).
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
-MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
-# Each mutant's verdict is appended to the log as it finishes (the full campaign's log is committed);
-# MUTANTS_OPS_RESUME=1 skips the mutants the log already holds (a campaign cut short goes on where
-# it stopped) but runs its survivors again.
-MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
+# Each mutant's verdict is appended to the log as it finishes; MUTANTS_OPS_RESUME=1 skips the
+# mutants the log already holds (a campaign cut short goes on where it stopped) but runs its
+# survivors again, and a full campaign with no log yet starts from the recorded one.
+MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_RECORD := data/mutants_ops_log.tsv.gz
 .PHONY: mutants-ops deps-mutants
 deps-mutants:
 	@sh tools/deps.sh mutants
@@ -380,6 +383,7 @@ mutants-ops: | deps-mutants
 	@mkdir -p $(BUILD)/mutants_ops
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
 	    --out $(MUTANTS_OPS_OUT) --log $(MUTANTS_OPS_LOG) $(if $(filter 1,$(MUTANTS_OPS_RESUME)),--resume) \
+	    $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),--from-log $(MUTANTS_OPS_RECORD)) \
 	    $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
 # The manual page, written by suslov itself from the option table that --help prints.
