@@ -16,6 +16,10 @@
 #include <math.h>
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_EXP_BENCH_T_END 50.0
 #define SUS_EXP_BENCH_T_LONG 1e4
 /* The accuracies the targets ask for, and the speed-up each level asks for over the best honest
@@ -151,5 +155,9 @@ void sus_exp_bench_errors(const sus_exp_bench *b, const sus_exp_bench_series *s,
  * otherwise the caller frees ctx. */
 int sus_exp_bench_record(sus_exp_bench *b, sus_exp_bench_series *s, double param,
                          const sus_exp_bench_run_ops *ops, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

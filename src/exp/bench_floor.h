@@ -6,6 +6,10 @@
 
 #include "bench.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     double sec;
     int series, point; /* -1 when none */
@@ -43,5 +47,9 @@ double sus_exp_bench_implicit_ratio(const sus_exp_bench *b, int m);
 int sus_exp_bench_implicit_target(const sus_step_method *me);
 /* 1 when every implicit step held to its target costs <= 3x our rk4 step. */
 int sus_exp_bench_implicit_pass(const sus_exp_bench *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

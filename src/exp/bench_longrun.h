@@ -6,6 +6,10 @@
 
 #include "bench.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* b->LR: our preserving methods at the step that reached attitude 1e-10 at t = 50 (matched
  * accuracy), the peer (rk8pd through the driver from hstart 1e-3, on both attitude formulations)
  * at the tolerance that did, sampled 1000 times over [0, T_LONG]. */
@@ -22,5 +26,9 @@ typedef struct {
 /* Each explicit own-attitude method of ours at the step (or TOL) that reached attitude 1e-10 at
  * t = 50, run to T_LONG, into out (b->nseries at most); returns how many. */
 int sus_exp_bench_equal_error_runs(const sus_exp_bench *b, sus_exp_bench_equal_error *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

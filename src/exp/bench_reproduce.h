@@ -7,6 +7,10 @@
 #include "bench.h"
 #include "bench_floor.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The suslov arguments of point j of series s of ours, into buf. */
 void sus_exp_bench_suslov_args(const sus_exp_bench_series *s, int j, char *buf, size_t len);
 
@@ -20,5 +24,9 @@ typedef struct {
  * must agree to the digits the CSV carries (%.17g: exactly). */
 void sus_exp_bench_check_reproduce(const sus_exp_bench *b, const char *suslov,
                                    sus_exp_bench_reproduced *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 #include "bench.h"
 #include "driver.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* N steps of eps = T / N with a reconstruction, through sus_run. */
 typedef struct {
     const sus_exp_bench_problem *pb;
@@ -58,5 +62,9 @@ void sus_exp_bench_peer_fn(void *ctx);
 /* Each with its result and release (free, and the peer's sus_exp_peer_close). */
 extern const sus_exp_bench_run_ops SUS_EXP_BENCH_DSP_OPS, SUS_EXP_BENCH_W_OPS,
     SUS_EXP_BENCH_TOL_OPS, SUS_EXP_BENCH_PEER_OPS;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 
 #include "bench.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Peers defined outside the library (make bench's Boost.Odeint ones), swept on formulation dim
  * after the GSL ones of that formulation. */
 typedef void (*sus_exp_bench_more_peers)(sus_exp_bench *b, size_t dim, void *ctx);
@@ -24,5 +28,9 @@ void sus_exp_bench_sweep_all(sus_exp_bench *b, sus_exp_bench_more_peers more, vo
 
 /* "(w,R)", "(w,q)" or "(w)": the formulation of dim 11, 6 or 2, for a peer's name. */
 const char *sus_exp_bench_dim_name(size_t dim);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -5,6 +5,10 @@
 
 #include "bench.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Times every point (median, min and max over the rounds into its series) and frees the points'
  * runs. The errors the timed runs ended with are compared with the ones recorded: the same runs,
  * so equal bit for bit. A point whose timed error differs is counted (and said on stderr) and
@@ -19,5 +23,9 @@ void sus_exp_bench_measure_step_costs(sus_exp_bench *b);
  * point into the series (step_ns, the floor), the sums of the fastest rounds through the driver
  * and in a bare loop into b->cost (the driver's overhead). */
 void sus_exp_bench_measure_tol_costs(sus_exp_bench *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
