@@ -177,14 +177,19 @@ $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
-# only when the program (or anything it is linked from) changes.
+# only when the program (or anything it is linked from) changes. The figures' tools (ffmpeg) are
+# checked through a stamp, as the check profile's are, so that `make -q figures` answers 0 when
+# every figure is up to date (an always-run prerequisite would make it answer 1 for ever).
 figures: $(FIGS:%=figures/%.pdf) animation
+DEPS_FIGURES := $(BUILD)/deps-figures.stamp
+$(DEPS_FIGURES): tools/deps.sh
+	@sh tools/deps.sh figures && mkdir -p $(@D) && touch $@
 
 # The attitude animation: frames, video (when ffmpeg is installed), filmstrip, caption and the
 # R_k it draws.
 animation: figures/attitude_filmstrip.png
 
-figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | deps-figures
+figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
@@ -192,7 +197,7 @@ figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD
 # interrupted make must never delete one: a half-made file cannot exist.
 .PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
            figures/attitude.txt data/attitude.csv
-figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-figures
+figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
 
@@ -212,11 +217,13 @@ ledger: $(BUILD)/claims.out
 check: all $(BUILD)/claims.out
 	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
-# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
-# summary.tex, and prints its table (claims.out). A run that does not reach its summary line
+# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
+# summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
+# starts), and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
-LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
+LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
+              $(BUILD)/sensitivity.tex
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
 	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
@@ -264,17 +271,21 @@ data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &
 
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
-            $(BUILD)/summary.tex data/bench.tex \
+            $(BUILD)/summary.tex $(BUILD)/sensitivity.tex data/bench.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
-            tools/paper_tolerances.sh
+            tools/paper_tolerances.sh CITATION.cff .zenodo.json
 paper: paper/companion.pdf paper/methods.pdf
 
 # The companion (main text) and the software note (methods, benchmark, whole ledger, source).
-paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) | deps-paper
-	@sh tools/paper.sh $(BUILD)
+# PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one address
+# (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
+PAPER_BASE ?=
+$(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
+paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
+	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, one side-by-side page per source file, the
 # equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
@@ -354,14 +365,17 @@ mutants: | $(DEPS_CHECK)
 # + <-> -, * <-> /, array index +-1, comparison negated, over the library files in priority order;
 # last line "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
 # MUTANTS_OPS_SAMPLE=N runs a seeded sample of N (seed MUTANTS_OPS_SEED; CI), MUTANTS_OPS_FILES
-# a subset of the files; the full campaign writes tests/build/mutants_ops_result.txt with its commit.
+# a subset of the files. The result (one line a mutant, with its commit) and the log are generated
+# files under $(BUILD); the last complete campaign is recorded in data/mutants_ops_log.tsv.gz and
+# tests/build/mutants_ops_summary.txt (tools/mutants_ops.py --record writes them, by hand).
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
-MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
-# Each mutant's verdict is appended to the log as it finishes (the full campaign's log is committed);
-# MUTANTS_OPS_RESUME=1 skips the mutants the log already holds (a campaign cut short goes on where
-# it stopped) but runs its survivors again.
-MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
+# Each mutant's verdict is appended to the log as it finishes; MUTANTS_OPS_RESUME=1 skips the
+# mutants the log already holds (a campaign cut short goes on where it stopped) but runs its
+# survivors again, and a full campaign with no log yet starts from the recorded one.
+MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_RECORD := data/mutants_ops_log.tsv.gz
 .PHONY: mutants-ops deps-mutants
 deps-mutants:
 	@sh tools/deps.sh mutants
@@ -369,6 +383,7 @@ mutants-ops: | deps-mutants
 	@mkdir -p $(BUILD)/mutants_ops
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
 	    --out $(MUTANTS_OPS_OUT) --log $(MUTANTS_OPS_LOG) $(if $(filter 1,$(MUTANTS_OPS_RESUME)),--resume) \
+	    $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),--from-log $(MUTANTS_OPS_RECORD)) \
 	    $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
 # The manual page, written by suslov itself from the option table that --help prints.

@@ -24,10 +24,13 @@ typedef struct {
 /* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
  * rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the method's
  * dense output; a time within 4u t_end of t_end is t_end), or at the end of every accepted step
- * (every_time = 0). A row's k counts the steps accepted up to its t. The number of steps is
- * known only as they are taken (it grows with |w0| t_end), so a run may be given a budget: after
- * max_steps accepted steps short of t_end it stops with SUS_RUN_STEP_FAILED and
- * SUS_STEPPER_STEP_LIMIT, the rows up to there written (max_steps = 0: no limit). */
+ * (every_time = 0). A row's k is the index of the accepted step that reaches its t: the row at
+ * t_{k-1} < t <= t_k, t_k the end of the k-th accepted step, has k (row 0 has 0), so rows
+ * every_time apart that fall in one step share its k, and before t_k only k - 1 steps are
+ * accepted. The number of steps is known only as they are taken (it grows with |w0| t_end), so
+ * a run may be given a budget: after max_steps accepted steps short of t_end it stops with
+ * SUS_RUN_STEP_FAILED and SUS_STEPPER_STEP_LIMIT, the rows up to there written (max_steps = 0:
+ * no limit). */
 typedef struct {
     const sus_model *model;
     const sus_stepper_type *stepper;
