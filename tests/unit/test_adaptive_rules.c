@@ -11,6 +11,7 @@
  *    a few u times p per coefficient, tripled by the ratio, with room: the estimate only sizes
  *    steps). A group's entry left out or a coefficient index off by one moves it by O(1). */
 #include "check_body.h"
+#include "check_exact.h"
 #include "driver.h"
 #include "reconstruct.h"
 #include "taylor.h"
@@ -229,7 +230,7 @@ static void steps_within_radius(void)
  * of the largest eigenvalue of A^T A in closed form), from the printed entries. */
 static void top_singular(const double I[9], double v[2])
 {
-    const double d = I[0] * I[4] - I[1] * I[3];
+    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double a = -I[1] / d, b = -I[4] / d, c = I[0] / d, e = I[3] / d;
     const double p = a * a + c * c, r = b * b + e * e, q = a * b + c * e;
     const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
