@@ -202,8 +202,9 @@ static void step_size_rules(void)
  * start (sus_step_taylor_radius, checked against quadrature in test_taylor_radius), whatever the
  * estimate allows: at tol 0.1 (order 6) and at tol 1e30, which no estimate exceeds, so that the
  * radius alone limits the steps as they try to grow five-fold; |w| = 3 times each body's w0, over
- * [0, 20 s] in the body's own time s (check_body_time, at most 10^4 steps a run); the family and a body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap
- * radius test K |w| h < 1 is then far from the bound a slip in K would give). */
+ * [0, 20 s] in the body's own time s (check_body_time, at most 10^4 steps a run); the family and a
+ * body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap radius test K |w| h < 1 is then
+ * far from the bound a slip in K would give). */
 static void steps_within_radius(void)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
@@ -344,7 +345,8 @@ static void interval_end_and_overflow(void)
 static int report_against_hand(const body *b, const sus_model *m, double tol, int *max)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
-    const sus_tol_config cfg = {m, &sus_step_taylor_adaptive_type, tol, 20.0 * check_body_time(m, b->w0), 0.0, 0};
+    const double t_end = 20.0 * check_body_time(m, b->w0);
+    const sus_tol_config cfg = {m, &sus_step_taylor_adaptive_type, tol, t_end, 0.0, 0};
     sus_row last;
     sus_run_report rep;
     const int rc = sus_run_tol(&cfg, b->w0, sus_keep_last, &last, &rep);
@@ -352,7 +354,7 @@ static int report_against_hand(const body *b, const sus_model *m, double tol, in
     long total = 0;
     *max = 0;
     sus_tol_work *wk = ops->alloc(m, cfg.tol, b->w0);
-    for (sus_stepper_stats st; wk && t < cfg.t_end && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK;) {
+    for (sus_stepper_stats st; wk && t < t_end && one_step(wk, t_end, &t, w, &st) == SUS_STEPPER_OK;) {
         total += st.iterations;
         *max = st.iterations > *max ? st.iterations : *max;
     }

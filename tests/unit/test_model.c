@@ -189,7 +189,8 @@ static void against_printed(const sus_model *m, const double *I, const double w[
     const double y0 = fabs(I[0]) * t.F[0] + fabs(I[1]) * t.F[1] + fabs(w[1]) * t.ca;
     const double y1 = fabs(I[3]) * t.F[0] + fabs(I[4]) * t.F[1] + fabs(w[0]) * t.ca;
     const double y2 = fabs(I[6]) * t.F[0] + fabs(I[7]) * t.F[1] + t.L;
-    r->rgb = fmax(r->rgb, fmax(fabs(r0) / (8 * u * y0), fmax(fabs(r1) / (8 * u * y1), fabs(r2) / (8 * u * y2))));
+    const double rgb = fmax(fabs(r0) / y0, fmax(fabs(r1) / y1, fabs(r2) / y2)) / (8 * u);
+    r->rgb = fmax(r->rgb, rgb);
     /* E = 1/2 <I_m w, w> is a first integral of (ContDyn): <grad E, f> = 0 */
     r->e = fmax(r->e, fabs(Iw[0] * f[0] + Iw[1] * f[1]) / (8 * u * (t.Ia[0] * t.F[0] + t.Ia[1] * t.F[1])));
 }
@@ -248,7 +249,8 @@ static void model_vs_printed(const sus_model *m, const body *b)
 /* 1/2 (|I11| w1^2 + |I12 + I21| |w1 w2| + |I22| w2^2): the terms of E(w). */
 static double energy_terms(const double *I, const double w[2])
 {
-    return 0.5 * (fabs(I[0]) * w[0] * w[0] + fabs(I[1] + I[3]) * fabs(w[0] * w[1]) + fabs(I[4]) * w[1] * w[1]);
+    const double cross = fabs(I[1] + I[3]) * fabs(w[0] * w[1]);
+    return 0.5 * (fabs(I[0]) * w[0] * w[0] + cross + fabs(I[4]) * w[1] * w[1]);
 }
 
 /* The steady rotation w* = L^{-T} r (-sin beta, cos beta) of exact.h, where c = <v, u> = 0 and E = E0.
@@ -299,8 +301,8 @@ static void compensated_checks(const sus_model *m, const body *b, const sus_exac
     const double db = (double)(fabsl(sbx - cbx) / (fabsl(sbx) + fabsl(cbx)));
     CHECK(dd <= u && d1 <= u && d2 <= u, "%s: |I_m| and O_0's coefficients against the exact differences: "
           "%.2g, %.2g, %.2g u (at most u)", b->name, dd / u, d1 / u, d2 / u);
-    CHECK(dl <= 2 * u && db <= 6 * u, "%s: the closed form's l11 l22 against sqrt|I_m| exact: %.2g u (at most "
-          "2 u); its direction beta: %.2g u (at most 6 u)", b->name, dl / u, db / u);
+    CHECK(dl <= 2 * u && db <= 6 * u, "%s: the closed form's l11 l22 against sqrt|I_m| exact: %.2g u "
+          "(at most 2 u); its direction beta: %.2g u (at most 6 u)", b->name, dl / u, db / u);
 }
 
 /* The closed form against rk8pd at tolerance 1e-13 over [0, 100 s] (an adaptive method at that

@@ -215,9 +215,11 @@ static void variational_is_vso3(const sus_model *m, const char *bname, const dou
         const double ta = taualg_terms(m, x, w);
         worst_alg = fmax(worst_alg, fabs(-raw / (eps * eps) - lam) / (size / (eps * eps) + ta));
         const double raw_full = vso3(m, eps, w, x, 0, g, &size_full);
-        const double ca = fabs(m->b[0] * x[0]) + fabs(m->b[1] * x[1]) + fabs(m->b[0] * w[0]) + fabs(m->b[1] * w[1]);
-        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - (lam + (sus_c(m, x) - sus_c(m, w)) / eps))
-                                          / (size_full / (eps * eps) + ta + ca / eps));
+        const double ca = fabs(m->b[0] * x[0]) + fabs(m->b[1] * x[1]) + fabs(m->b[0] * w[0])
+                        + fabs(m->b[1] * w[1]);
+        const double full = lam + (sus_c(m, x) - sus_c(m, w)) / eps;
+        const double yard = size_full / (eps * eps) + ta + ca / eps;
+        worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - full) / yard);
     }
     CHECK(ran > 0 && worst_dyn < 32 * DBL_EPSILON, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
           "(cayinver) as printed, %d of 20 steps; worst relative to the terms' size %.2e (<= 32 u)",
@@ -260,8 +262,8 @@ static void midpoint_energy(const sus_model *m, const char *bname, const double 
         w[0] = x[0];
         w[1] = x[1];
     }
-    CHECK(ok && worst <= 1.0, "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = 0.7 s = "
-          "%.3g: %.2g of the residual's and E's roundings", bname, dE, eps, worst);
+    CHECK(ok && worst <= 1.0, "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = "
+          "0.7 s = %.3g: %.2g of the residual's and E's roundings", bname, dE, eps, worst);
 }
 
 /* The unreduced integrator: its inverse inertia by cofactors over det I. With X^ = the cofactors'

@@ -122,7 +122,8 @@ static void rejection(const sus_model *m, const double w0[2], const char *name, 
         double wj[3] = {w0[0], w0[1], 0.0}, tj = 0.0;
         sus_tol_work *wj_work = ops->alloc(m, tj_tol, w0);
         sus_attitude_identity(&att);
-        over += ops->step(wj_work, 50.0, &tj, wj, &lam, &att, &st) != SUS_STEPPER_OK || !(st.residual <= tj_tol);
+        const int rc = ops->step(wj_work, 50.0, &tj, wj, &lam, &att, &st);
+        over += rc != SUS_STEPPER_OK || !(st.residual <= tj_tol);
         tries += st.iterations;
         ops->free(wj_work);
     }
@@ -173,8 +174,8 @@ static void rescaled_retry(const sus_model *m, const double w0[2], const char *n
     const double scale = fmax(1.0, hypot(w0[0], w0[1]));
     CHECK(rc == SUS_STEPPER_OK && (st.iterations >= 1 || tol == 0.0) && rf == SUS_STEPPER_OK &&
               dw <= 64.0 * SUS_U * scale && dR <= 64.0 * SUS_U,
-          "%s: first step at TOL %.0e (%d rejected tries, h = %.4g) equals a fresh order-%d series: |dw| = %.2g, "
-          "|dR| = %.2g", name, t_tol, st.iterations, t, ops->order(t_tol), dw, dR);
+          "%s: first step at TOL %.0e (%d rejected tries, h = %.4g) equals a fresh order-%d series: "
+          "|dw| = %.2g, |dR| = %.2g", name, t_tol, st.iterations, t, ops->order(t_tol), dw, dR);
 }
 
 /* w = 0 and a steady rotation: vanishing rows. */
@@ -214,9 +215,9 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     d = sus_so3_dist(R, c.last.R);
     const double dw = fmax(fabs(c.last.w[0] - wl[0]), fabs(c.last.w[1] - wl[1]));
     const double bound = 10.0 * (double)c.last.k * 1e-10;
-    CHECK(rc == SUS_RUN_OK && dw <= bound && d <= bound, "%s: the closed form's steady rotation over T = 50 s "
-          "= %.3g: w stays within %.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N = %ld)", name, T, dw,
-          d, c.last.k);
+    CHECK(rc == SUS_RUN_OK && dw <= bound && d <= bound, "%s: the closed form's steady rotation over "
+          "T = 50 s = %.3g: w stays within %.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N = %ld)",
+          name, T, dw, d, c.last.k);
 }
 
 /* Rows at requested times, structure, and dense output agreeing with the steps it lies between. */
@@ -279,8 +280,8 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
     const double bound = 10.0 * (double)steps.last.k * 1e-8;
     CHECK(
         rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
-        "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N TOL "
-        "= %.3g",
+        "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N "
+        "TOL = %.3g",
         name, c.worst_R, c.worst_w, bound);
 }
 
