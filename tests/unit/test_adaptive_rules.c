@@ -7,10 +7,11 @@
  *    rows, of T_p^2 / T_{p-1}, T_n = the largest entry of the group's coefficient n scaled by h^n.
  *    The coefficients are computed here in long double from (ContDyn) and from q' = 1/2 q (x) (0, w),
  *    dq(0) = 1; on every body of the family, from w0 and from w0 turned, at three tolerances and
- *    three steps, the step's estimate matches to 1e-10 relative (the double recursion's rounding,
- *    a few u times p per coefficient, tripled by the ratio, with room: the estimate only sizes
- *    steps). A group's entry left out or a coefficient index off by one moves it by O(1). */
+ *    three steps, the step's estimate matches to the double recursion's rounding, 12 p u cond(I_m)
+ *    relative (estimate_error). A group's entry left out or a coefficient index off by one moves it
+ *    by O(1). */
 #include "check_body.h"
+#include "check_exact.h"
 #include "driver.h"
 #include "reconstruct.h"
 #include "taylor.h"
@@ -36,10 +37,11 @@ static void order_rule(void)
           bad, loose, tight);
 }
 
-/* The largest entry of coefficient n of each group, scaled by h^n, up to order p. */
+/* The largest entry of coefficient n of each group, scaled by h^n, up to order p, in long double from
+ * (ContDyn) with |I_m| exact (check_exact.h) and from q' = 1/2 q (x) (0, w), q(0) = 1. */
 static void group_sizes(const double I[9], const double w0[2], ld h, int p, ld Tw[], ld Tq[])
 {
-    const ld d = (ld)I[0] * I[4] - (ld)I[1] * I[3];
+    const ld d = check_cross_diff_exact(I[0], I[4], I[1], I[3]);
     ld w[NMAX + 1][2] = {{w0[0], w0[1]}}, q[NMAX + 1][4] = {{1, 0, 0, 0}}, hn = 1;
     for (int n = 0; n <= p; n++) {
         if (n < p) {
@@ -68,7 +70,17 @@ static ld group_estimate(ld last2, ld last)
     return last2 > 0 ? last * last / last2 : last;
 }
 
-/* |estimate - expected| / expected for one step from w; -1 if the step fails. */
+/* cond(I_m), the ratio of its eigenvalues. */
+static double condition(const double I[9])
+{
+    const double mid = 0.5 * (I[0] + I[4]), rad = hypot(0.5 * (I[0] - I[4]), I[1]);
+    return (mid + rad) * (mid + rad) / (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]);
+}
+
+/* |estimate - expected| over its rounding for one step from w; -1 if the step fails. The double
+ * recursion rounds each coefficient by a few u (4 u) per order it builds on, so p of them; where fA w_n
+ * cancels (fA = J I_m / |I_m|: |fA w| can be |fA| |w| / cond(I_m)) that is relative to |fA| |w_n|, up
+ * to cond(I_m) times the coefficient; T_p^2 / T_{p-1} triples it: 12 p u cond(I_m) relative. */
 static double estimate_error(const sus_model *m, const double I[9], const double w0[2], double tol, double h)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
@@ -84,9 +96,11 @@ static double estimate_error(const sus_model *m, const double I[9], const double
     ld Tw[NMAX + 1], Tq[NMAX + 1];
     group_sizes(I, w0, st.det, p, Tw, Tq); /* st.det: the step taken */
     const ld e = fmaxl(group_estimate(Tw[p - 1], Tw[p]), group_estimate(Tq[p - 1], Tq[p]));
-    return (double)(fabsl(st.residual - e) / e);
+    return (double)(fabsl(st.residual - e) / (e * 12 * p * SUS_U * condition(I)));
 }
 
+/* On every body, from w0 and w0 turned, at three tolerances and three steps 0.05, 0.4 and 1.5 times
+ * the body's own time (check_body_time; the proved radius may shorten them). */
 static void estimates(void)
 {
     const double tols[3] = {1e-4, 1e-9, 1e-14}, steps[3] = {0.05, 0.4, 1.5};
@@ -97,21 +111,21 @@ static void estimates(void)
         sus_model m;
         body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
+        const double s = check_body_time(&m, b.w0);
         for (int j = 0; j < 2; j++) {
             /* w0, and w0 turned by a quarter turn (the other component leads) */
             const double w0[2] = {j ? -b.w0[1] : b.w0[0], j ? b.w0[0] : b.w0[1]};
             for (int i = 0; i < 9; i++) {
-                const double d = estimate_error(&m, b.I, w0, tols[i / 3], steps[i % 3]);
+                const double d = estimate_error(&m, b.I, w0, tols[i / 3], steps[i % 3] * s);
                 worst = d > worst || d < 0.0 || isnan(d) ? (d < 0.0 ? INFINITY : d) : worst;
                 n++;
             }
         }
     }
-    CHECK(worst <= 1e-10,
+    CHECK(worst <= 1.0,
           "taylor-adaptive's estimate is max over the w and quaternion rows of T_p^2/T_{p-1} "
-          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst relative difference %.2g (at most "
-          "1e-10)",
-          n, BODIES_COUNT, worst);
+          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst difference %.2g of its rounding, "
+          "12 p u cond(I_m) (at most 1)", n, BODIES_COUNT, worst);
 }
 
 /* One step of taylor-adaptive from (t, w) towards t_end with a fresh workspace, or continuing wk. */
@@ -188,8 +202,9 @@ static void step_size_rules(void)
  * start (sus_step_taylor_radius, checked against quadrature in test_taylor_radius), whatever the
  * estimate allows: at tol 0.1 (order 6) and at tol 1e30, which no estimate exceeds, so that the
  * radius alone limits the steps as they try to grow five-fold; |w| = 3 times each body's w0, over
- * [0, 20]; the family and a body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap
- * radius test K |w| h < 1 is then far from the bound a slip in K would give). */
+ * [0, 20 s] in the body's own time s (check_body_time, at most 10^4 steps a run); the family and a
+ * body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap radius test K |w| h < 1 is then
+ * far from the bound a slip in K would give). */
 static void steps_within_radius(void)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
@@ -202,13 +217,14 @@ static void steps_within_radius(void)
         if (k < BODIES_COUNT) body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
         double w[3] = {3.0 * b.w0[0], 3.0 * b.w0[1], 0.0}, t = 0.0, lam;
+        const double t_end = 20.0 * check_body_time(&m, w);
         sus_attitude att;
         sus_attitude_identity(&att);
         sus_tol_work *wk = ops->alloc(&m, i % 2 ? 1e30 : 0.1, w);
-        while (wk && t < 20.0 && n < 100000) {
+        for (int steps = 0; wk && t < t_end && steps < 10000; steps++) {
             const double rho = sus_step_taylor_radius(&m, w);
             sus_stepper_stats st;
-            if (ops->step(wk, 20.0, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) {
+            if (ops->step(wk, t_end, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) {
                 failed++;
                 break;
             }
@@ -229,7 +245,7 @@ static void steps_within_radius(void)
  * of the largest eigenvalue of A^T A in closed form), from the printed entries. */
 static void top_singular(const double I[9], double v[2])
 {
-    const double d = I[0] * I[4] - I[1] * I[3];
+    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double a = -I[1] / d, b = -I[4] / d, c = I[0] / d, e = I[3] / d;
     const double p = a * a + c * c, r = b * b + e * e, q = a * b + c * e;
     const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
@@ -321,39 +337,55 @@ static void interval_end_and_overflow(void)
 }
 
 /* The driver's report counts the rejected tries of the run (stats.iterations of each step): their
- * total and their largest per step, against the same steps taken by hand, at tolerances where the
- * first try (0.99 rho) is rejected. */
-static void driver_report(void)
+ * total and their largest per step, against the same steps taken by hand, over [0, 20 s] in the body's
+ * own time (check_body_time), at tol 1e-10 and 1e-14, where the first try (0.99 rho) is rejected on the
+ * paper's body. A body whose proved radius holds every step far inside what the tolerance allows has
+ * no rejected try to count (the near-singular I_m: the estimate at the radius is below 1e-16): a NOTE
+ * says so, and its totals are compared at 0. Returns the number of differences; *max the largest. */
+static int report_against_hand(const body *b, const sus_model *m, double tol, int *max)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
-    int bad = 0, most = 0;
+    const double t_end = 20.0 * check_body_time(m, b->w0);
+    const sus_tol_config cfg = {m, &sus_step_taylor_adaptive_type, tol, t_end, 0.0, 0};
+    sus_row last;
+    sus_run_report rep;
+    const int rc = sus_run_tol(&cfg, b->w0, sus_keep_last, &last, &rep);
+    double w[3] = {b->w0[0], b->w0[1], 0.0}, t = 0.0;
+    long total = 0;
+    *max = 0;
+    sus_tol_work *wk = ops->alloc(m, cfg.tol, b->w0);
+    for (sus_stepper_stats st; wk && t < t_end && one_step(wk, t_end, &t, w, &st) == SUS_STEPPER_OK;) {
+        total += st.iterations;
+        *max = st.iterations > *max ? st.iterations : *max;
+    }
+    ops->free(wk);
+    return rc != SUS_RUN_OK || rep.sus_newton_iterations != total || rep.max_iterations != *max;
+}
+
+static void driver_report(void)
+{
+    int bad = 0, most = 0, paper = 0;
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
         body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
-        const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-10, 20.0, 0.0, 0};
-        sus_row last;
-        sus_run_report rep;
-        const int rc = sus_run_tol(&cfg, b.w0, sus_keep_last, &last, &rep);
-        double w[3] = {b.w0[0], b.w0[1], 0.0}, t = 0.0;
-        long total = 0;
-        int max = 0;
-        sus_tol_work *wk = ops->alloc(&m, cfg.tol, b.w0);
-        for (sus_stepper_stats st;
-             wk && t < cfg.t_end && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK;) {
-            total += st.iterations;
-            max = st.iterations > max ? st.iterations : max;
+        int seen = 0;
+        for (int j = 0; j < 2; j++) {
+            int max;
+            bad += report_against_hand(&b, &m, j ? 1e-14 : 1e-10, &max);
+            seen = max > seen ? max : seen;
         }
-        ops->free(wk);
-        bad +=
-            rc != SUS_RUN_OK || rep.sus_newton_iterations != total || rep.max_iterations != max || max == 0;
-        most = max > most ? max : most;
+        paper = k == 0 ? seen : paper;
+        most = seen > most ? seen : most;
+        if (seen == 0)
+            printf("NOTE %s: no try rejected at tol 1e-10 or 1e-14 (every step held by the proved radius): "
+                   "rejections compared at 0\n", b.name);
     }
-    CHECK(bad == 0,
-          "sus_run_tol reports the total and the largest number of rejected tries per step as "
-          "taken by hand, on %d bodies (tol 1e-10, [0, 20], at most %d per step): %d differ",
-          BODIES_COUNT, most, bad);
+    CHECK(bad == 0 && paper > 0,
+          "sus_run_tol reports the total and the largest number of rejected tries per step as taken by "
+          "hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 s], at most %d per step, %d on the paper's body): "
+          "%d differ", BODIES_COUNT, most, paper, bad);
 }
 
 static int stop_after_three(void *ctx, const sus_row *row)

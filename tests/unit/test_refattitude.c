@@ -3,6 +3,7 @@
  * too long to integrate, which gives no answer rather than a wrong one. Its accuracy is tested in
  * test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
 #include "check_body.h"
+#include "check_exact.h"
 #include "mat3.h"
 #include "refattitude.h"
 #include "so3.h"
@@ -110,6 +111,28 @@ static void restart_at(const sus_exact *ex, const char *name)
     CHECK(d <= 1e-14, "%s: R(5) restarted at t0 = 3 is %.1e from the run from 0 (bound 1e-14)", name, d);
 }
 
+/* The reference's Cholesky coordinates (refattitude.c) in long double, with |I_m| and v2's numerator
+ * I11 I32 - I21 I31 formed as a b - c d in two roundings of 2^-64 = uL/2 (uL = LDBL_EPSILON) whatever
+ * their cancellation, against the exact differences (check_exact.h): l11 l22 = sqrt|I_m| within 3 uL
+ * (|I_m| uL and its square root uL, the division by l11 uL/2, here the product and sqrtl uL/2 more),
+ * and v2 l11 l11 l22 = I11 I32 - I21 I31 within 4 uL (the numerator uL, l11 sd and the division uL,
+ * here l11 l22 and two products 2 uL). Formed plainly they would err by uL/2 of I21^2 or |I21 I31|,
+ * cond(I_m) times more on a near-singular I_m: the stiff bodies "cond" and "all" show it. */
+static void cholesky_coordinates(const sus_exact *ex, const char *name)
+{
+    const double (*I)[3] = ex->model->I, I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const long double uL = LDBL_EPSILON;
+    sus_refatt ra;
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    const sus_refatt_chol *c = &ra.chol;
+    const long double sd = sqrtl(check_cross_diff_exact(I[0][0], I[1][1], I[1][0], I[1][0]));
+    const long double x = check_cross_diff_exact(I[0][0], I[2][1], I[1][0], I[2][0]), l = c->l11 * c->l22;
+    const double dl = (double)(fabsl(l - sd) / (sd * uL)), dv = (double)(fabsl(c->v[1] * c->l11 * l - x) /
+                                                                         (fabsl(x) * uL));
+    CHECK(dl <= 3.0 && dv <= 4.0, "%s: the reference's l11 l22 against sqrt|I_m| exact: %.2g uL (at most 3 "
+          "uL); v2 l11^2 l22 against I11 I32 - I21 I31 exact: %.2g uL (at most 4 uL)", name, dl, dv);
+}
+
 int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
@@ -122,6 +145,7 @@ int main(void)
         sus_exact_init(&ex, &m, b.w0);
         start_from_w0(&m, &ex, b.name);
         restart_at(&ex, b.name);
+        cholesky_coordinates(&ex, b.name);
         if (k == 1) { /* neither edge depends on the body: once, on a general one */
             nonunit_quaternion(&ex);
             too_long_stretch(&m, b.w0);
