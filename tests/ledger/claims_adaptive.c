@@ -190,8 +190,8 @@ static void tolerance_claims(void)
         body_errors(claims_body_get(k), s);
     char text[700], slow[256];
     snprintf(slow, sizeof slow, "without: %s (|w| / k < %g: the attitude turns slower than w settles, "
-                                "its error is not what TOL controls)", s[1].slow[0] ? s[1].slow : "none",
-             RATE_RATIO_MIN);
+                                "its error is not what TOL controls; a scope set after measuring)",
+             s[1].slow[0] ? s[1].slow : "none", RATE_RATIO_MIN);
     ledger_number("AdaptiveSlopeRMin", s[1].slope_min);
     ledger_number("AdaptiveSlopeRMax", s[1].slope);
     /* the band's two edges, each a line: the steepest body against the upper, the shallowest
