@@ -24,7 +24,8 @@
  * and at most 2.11 on claims_highorder.c's grid of whole step counts N = round(4 * 2^(j/4)),
  * whose ratios run from 1.10 to 1.25 at small N. Round-off moves a candidate by at most 1%
  * (above claims_highorder.c's floor of 100 N s u, the worst-case sum of one rounding per
- * substep; 0.1% above claims_methods.c's 1000 u), which tilts a fit over an octave by at most
+ * substep, and claims_bodies.c's 100 s u times the size of the terms a step rounds; 0.1% above
+ * 1000 u times the quantity's size), which tilts a fit over an octave by at most
  * 3.6 x 0.01 = 0.036. A span below 0.10 thus keeps the fit within
  * 2.11 x 0.10 + 0.036 = 0.247 of the order, and such a run cannot straddle two orders. This
  * assumes one term dominates the bend; where two of opposite sign compete, the slope can pause
