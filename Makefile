@@ -11,7 +11,8 @@
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
 #   make deps       install missing Debian packages (make check installs only what it needs)
 #   make install    PREFIX=DIR (default /usr/local): suslov, its manual page, libsuslov.a, the
-#                   headers and suslov.pc for pkg-config
+#                   public headers (include/suslov/suslov.h) and suslov.pc for pkg-config;
+#                   make uninstall PREFIX=DIR removes them
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
 #   WERROR=1        treat warnings as errors (CI)
@@ -34,6 +35,11 @@ WARN    := -std=c17 -Wall -Wextra -Wshadow -Wstrict-prototypes
 # The same bits in every build (the CLI and the browser's WebAssembly module): no product and
 # sum fused into one fma, which a compiler may otherwise do where the target has one.
 WARN    += -ffp-contract=off
+# clang reports an unroll hint (#pragma GCC unroll) that its optimizer could not follow as a
+# warning: a note about speed, not about the code, so it does not fail a WERROR=1 build.
+ifneq ($(findstring clang,$(shell $(CC) --version 2>/dev/null | head -1)),)
+WARN    += -Wno-pass-failed
+endif
 ifeq ($(WERROR),1)
 WARN    += -Werror
 endif
@@ -44,10 +50,15 @@ ifeq ($(SAN),1)
 BUILD   := build/san
 SANFLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
-# Deferred (=) so that pkg-config runs after `deps` has installed the packages.
+# Deferred (=) so that pkg-config runs after `deps` has installed the packages. A program links
+# only what it uses: suslov, the claims ledger and most unit tests GSL and libm (LIBS_RUN); the
+# programs that draw (figures, animation, bench, and the unit tests that include a header of
+# src/render) also Cairo and OSMesa (LIBS_DRAW). A linker that keeps every library it is given
+# (clang's default) would otherwise map Cairo, OSMesa and LLVM into suslov.
 PKGS       = gsl cairo osmesa
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
-PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
+LIBS_RUN   = $(shell pkg-config --libs gsl) -lm
+LIBS_DRAW  = $(shell pkg-config --libs $(PKGS)) -lm
 ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
 
 # The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is
@@ -80,6 +91,9 @@ FIG_SRC  := $(wildcard src/prog/figure_*.c)
 FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
 TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
+RENDER_H := $(notdir $(wildcard src/render/*.h))
+TESTS_DRAW := $(patsubst tests/unit/%.c,$(BUILD)/%,$(shell grep -lF $(RENDER_H:%=-e '"%"') \
+                  tests/unit/test_*.c 2>/dev/null))
 CLAIMS   := $(BUILD)/claims
 
 # Stamps that change only when their text does: the compile flags (a change of CFLAGS, WERROR or
@@ -106,8 +120,11 @@ deps: deps-paper deps-bench
 deps-figures deps-paper:
 	@sh tools/deps.sh $(@:deps-%=%)
 DEPS_CHECK := $(BUILD)/deps-check.stamp
-$(DEPS_CHECK): tools/deps.sh
-	@sh tools/deps.sh check && mkdir -p $(@D) && touch $@
+# A make value as one single-quoted shell word.
+sq = '$(subst ','\'',$(1))'
+# It runs again when the compiler changes (flags.stamp holds $(CC)): make CC=clang installs clang.
+$(DEPS_CHECK): tools/deps.sh $(BUILD)/flags.stamp
+	@CC=$(call sq,$(CC)) CXX=$(call sq,$(CXX)) sh tools/deps.sh check && mkdir -p $(@D) && touch $@
 
 $(BUILD)/obj/%.o: src/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
@@ -126,13 +143,17 @@ $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
 # --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball),
 # through a stamp that changes only when the commit does, so only suslov_cli.o is rebuilt then.
-SUSLOV_VERSION := $(shell git -C "$(CURDIR)" describe --always --dirty 2>/dev/null || echo unknown)
+# Only when this directory is the top of its own work tree: a source export unpacked inside
+# another repository's work tree must not carry that repository's commit.
+SUSLOV_VERSION := $(shell top=$$(git -C "$(CURDIR)" rev-parse --show-toplevel 2>/dev/null) && \
+    [ "$$top" = "$$(cd "$(CURDIR)" && pwd -P)" ] && git -C "$(CURDIR)" describe --always --dirty 2>/dev/null \
+    || echo unknown)
 $(eval $(call STAMP_RULE,$(BUILD)/version.stamp,$(SUSLOV_VERSION)))
 $(BUILD)/obj/prog/suslov_cli.o: $(BUILD)/version.stamp
 $(BUILD)/obj/prog/suslov_cli.o: VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A program that draws files depends on the objects it links, not on the whole archives: the
 # linker's --trace given twice names the archive members it pulled, and $@.link.d makes the
@@ -143,27 +164,32 @@ $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 # stops the build (make then finds its recipe, if any, in the pattern rule).
 DRAW_PROGS := $(BUILD)/animation $(BUILD)/bench $(FIG_BIN)
 $(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/prog/%.o | $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(PKG_LIBS) -lm -o $@ -Wl,--trace,--trace >$@.trace
+	$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(LIBS_DRAW) -o $@ -Wl,--trace,--trace >$@.trace
 	@objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
 	    -e 's|^.*libsus_\([a-z]*\)\.a(\(.*\.o\))$$|$(BUILD)/obj/\1/\2|p' $@.trace | sort -u | tr '\n' ' '); \
 	    { echo "$@: $${objs:-$(LIBS_LINK)}"; for o in $$objs; do echo "$$o:"; done; } >$@.link.d; rm -f $@.trace
 
 $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+	$(CC) $(ALL_LDFLAGS) $^ $(if $(filter $@,$(TESTS_DRAW)),$(LIBS_DRAW),$(LIBS_RUN)) -o $@
 
 CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
 $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
-# only when the program (or anything it is linked from) changes.
+# only when the program (or anything it is linked from) changes. The figures' tools (ffmpeg) are
+# checked through a stamp, as the check profile's are, so that `make -q figures` answers 0 when
+# every figure is up to date (an always-run prerequisite would make it answer 1 for ever).
 figures: $(FIGS:%=figures/%.pdf) animation
+DEPS_FIGURES := $(BUILD)/deps-figures.stamp
+$(DEPS_FIGURES): tools/deps.sh
+	@sh tools/deps.sh figures && mkdir -p $(@D) && touch $@
 
 # The attitude animation: frames, video (when ffmpeg is installed), filmstrip, caption and the
 # R_k it draws.
 animation: figures/attitude_filmstrip.png
 
-figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | deps-figures
+figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
@@ -171,7 +197,7 @@ figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD
 # interrupted make must never delete one: a half-made file cannot exist.
 .PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
            figures/attitude.txt data/attitude.csv
-figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | deps-figures
+figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS_FIGURES)
 	@mkdir -p figures data
 	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
 
@@ -191,11 +217,13 @@ ledger: $(BUILD)/claims.out
 check: all $(BUILD)/claims.out
 	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
-# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex and
-# summary.tex, and prints its table (claims.out). A run that does not reach its summary line
+# The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
+# summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
+# starts), and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
-LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex
+LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
+              $(BUILD)/sensitivity.tex
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
 	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
@@ -231,7 +259,7 @@ $(BUILD)/obj/prog/bench_boost.o: src/prog/bench.c $(BUILD)/flags.stamp | $(DEPS_
 	@mkdir -p $(@D)
 	$(CC) $(call CFLAGS_OF,prog) -DSUSLOV_WITH_ODEINT -c $< -o $@
 $(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_odeint.o $(LIBS_LINK)
-	$(CXX) $(ALL_LDFLAGS) $^ $(PKG_LIBS) -lm -o $@
+	$(CXX) $(ALL_LDFLAGS) $^ $(LIBS_DRAW) -o $@
 
 # The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
 # (data/bench.tex), figures from the figure programs, listings and equation map from src/.
@@ -243,17 +271,21 @@ data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &
 
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
-            $(BUILD)/summary.tex data/bench.tex \
+            $(BUILD)/summary.tex $(BUILD)/sensitivity.tex data/bench.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
-            tools/paper_tolerances.sh
+            tools/paper_tolerances.sh CITATION.cff .zenodo.json
 paper: paper/companion.pdf paper/methods.pdf
 
 # The companion (main text) and the software note (methods, benchmark, whole ledger, source).
-paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) | deps-paper
-	@sh tools/paper.sh $(BUILD)
+# PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one address
+# (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
+PAPER_BASE ?=
+$(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
+paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
+	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, one side-by-side page per source file, the
 # equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
@@ -333,14 +365,17 @@ mutants: | $(DEPS_CHECK)
 # + <-> -, * <-> /, array index +-1, comparison negated, over the library files in priority order;
 # last line "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X".
 # MUTANTS_OPS_SAMPLE=N runs a seeded sample of N (seed MUTANTS_OPS_SEED; CI), MUTANTS_OPS_FILES
-# a subset of the files; the full campaign writes tests/build/mutants_ops_result.txt with its commit.
+# a subset of the files. The result (one line a mutant, with its commit) and the log are generated
+# files under $(BUILD); the last complete campaign is recorded in data/mutants_ops_log.tsv.gz and
+# tests/build/mutants_ops_summary.txt (tools/mutants_ops.py --record writes them, by hand).
 MUTANTS_OPS_SAMPLE ?= 0
 MUTANTS_OPS_SEED   ?= 20261123
-MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
-# Each mutant's verdict is appended to the log as it finishes (the full campaign's log is committed);
-# MUTANTS_OPS_RESUME=1 skips the mutants the log already holds (a campaign cut short goes on where
-# it stopped) but runs its survivors again.
-MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),tests/build/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_OUT    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_result.txt,$(BUILD)/mutants_ops_sample.txt)
+# Each mutant's verdict is appended to the log as it finishes; MUTANTS_OPS_RESUME=1 skips the
+# mutants the log already holds (a campaign cut short goes on where it stopped) but runs its
+# survivors again, and a full campaign with no log yet starts from the recorded one.
+MUTANTS_OPS_LOG    ?= $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),$(BUILD)/mutants_ops_log.tsv,$(BUILD)/mutants_ops_sample.log)
+MUTANTS_OPS_RECORD := data/mutants_ops_log.tsv.gz
 .PHONY: mutants-ops deps-mutants
 deps-mutants:
 	@sh tools/deps.sh mutants
@@ -348,6 +383,7 @@ mutants-ops: | deps-mutants
 	@mkdir -p $(BUILD)/mutants_ops
 	@python3 tools/mutants_ops.py --sample $(MUTANTS_OPS_SAMPLE) --seed $(MUTANTS_OPS_SEED) \
 	    --out $(MUTANTS_OPS_OUT) --log $(MUTANTS_OPS_LOG) $(if $(filter 1,$(MUTANTS_OPS_RESUME)),--resume) \
+	    $(if $(filter 0,$(MUTANTS_OPS_SAMPLE)),--from-log $(MUTANTS_OPS_RECORD)) \
 	    $(if $(MUTANTS_OPS_FILES),--files $(MUTANTS_OPS_FILES))
 
 # The manual page, written by suslov itself from the option table that --help prints.
@@ -356,31 +392,49 @@ $(BUILD)/man/suslov.1: $(BUILD)/suslov
 	$< --man >$@.tmp && mv $@.tmp $@
 
 # make install PREFIX=DIR (and DESTDIR= for staging): the command, its manual page, and the
-# library for C programs: the archives and headers of the layers that need only GSL (util, core,
-# methods, exp) in lib/ and include/suslov, and suslov.pc, so that
-# `cc prog.c $$(pkg-config --cflags --libs suslov)` builds against it.
+# library for C and C++ programs: libsuslov.a (the core and methods layers, which need only libm)
+# in lib/, the public header suslov.h and the headers it includes (no other) in include/suslov/,
+# and suslov.pc, so that a program includes <suslov/suslov.h> and builds with
+# `cc prog.c $$(pkg-config --cflags --libs suslov)` (eval it in a shell: a space in PREFIX is
+# escaped). make uninstall removes exactly these files (and include/suslov). PREFIX must be
+# absolute, of letters, digits, space and /._-+,:@=~% (what pkg-config's output can carry).
 PREFIX ?= /usr/local
-INSTALL_LAYERS := util core methods exp
-INSTALL_H := $(foreach l,$(INSTALL_LAYERS),$(wildcard src/$(l)/*.h))
+INSTALL_LAYERS := core methods
+PUBLIC_H = $(sort $(filter %.h,$(shell $(CC) -MM $(inc_methods) src/methods/suslov.h)))
 INSTALL_OBJ := $(foreach l,$(INSTALL_LAYERS),$(call obj_of,$(l)))
 # One archive for the user, libsuslov.a: the members of those layers' archives.
 $(BUILD)/libsuslov.a: $(INSTALL_OBJ) $(foreach l,$(INSTALL_LAYERS),$(BUILD)/libsus_$(l).list)
 	@rm -f $@
 	$(AR) rcs $@ $(INSTALL_OBJ)
-.PHONY: install
+ifneq ($(filter install uninstall,$(MAKECMDGOALS)),)
+ifneq ($(shell case $(call sq,$(PREFIX)) in (/*) echo absolute;; esac),absolute)
+$(error PREFIX='$(PREFIX)' is not an absolute directory)
+endif
+ifneq ($(shell printf '%s' $(call sq,$(PREFIX)) | tr -d 'A-Za-z0-9/._+,:@=~% -'),)
+$(error PREFIX='$(PREFIX)' holds a character pkg-config cannot carry: use letters, digits, space, /._-+,:@=~%)
+endif
+endif
+.PHONY: install uninstall
 install: $(BUILD)/suslov $(BUILD)/libsuslov.a $(BUILD)/man/suslov.1
-	@d="$(DESTDIR)$(PREFIX)"; set -e; \
-	    install -d "$$d/bin" "$$d/lib/pkgconfig" "$$d/include/suslov" "$$d/share/man/man1"; \
+	@d=$(call sq,$(DESTDIR)$(PREFIX)); set -e; \
+	    install -d "$$d/bin" "$$d/lib/pkgconfig" "$$d/share/man/man1"; \
+	    rm -rf "$$d/include/suslov"; install -d "$$d/include/suslov"; \
 	    install -m 755 $(BUILD)/suslov "$$d/bin/suslov"; \
 	    install -m 644 $(BUILD)/libsuslov.a "$$d/lib/libsuslov.a"; \
-	    install -m 644 $(INSTALL_H) "$$d/include/suslov/"; \
+	    install -m 644 $(PUBLIC_H) "$$d/include/suslov/"; \
 	    install -m 644 $(BUILD)/man/suslov.1 "$$d/share/man/man1/suslov.1"; \
-	    { echo 'prefix=$(PREFIX)'; echo 'libdir=$${prefix}/lib'; echo 'includedir=$${prefix}/include/suslov'; \
+	    p=$$(printf '%s' $(call sq,$(PREFIX)) | sed 's/ /\\ /g'); \
+	    { echo "prefix=$$p"; echo 'libdir=$${prefix}/lib'; echo 'includedir=$${prefix}/include'; \
 	      echo; echo 'Name: suslov'; \
 	      echo 'Description: integrators of the Suslov problem (Jimenez & Scheurle 2018)'; \
-	      echo 'Version: $(SUSLOV_VERSION)'; echo 'Requires: gsl'; \
-	      echo 'Cflags: -I$${includedir}'; echo 'Libs: -L$${libdir} -lsuslov -lm'; } >"$$d/lib/pkgconfig/suslov.pc"; \
+	      echo 'Version: $(SUSLOV_VERSION)'; echo 'Cflags: -I$${includedir}'; \
+	      echo 'Libs: -L$${libdir} -lsuslov -lm'; } >"$$d/lib/pkgconfig/suslov.pc"; \
 	    echo "installed into $$d"
+
+uninstall:
+	@d=$(call sq,$(DESTDIR)$(PREFIX)); \
+	    rm -f "$$d/bin/suslov" "$$d/lib/libsuslov.a" "$$d/lib/pkgconfig/suslov.pc" \
+	        "$$d/share/man/man1/suslov.1" && rm -rf "$$d/include/suslov" && echo "uninstalled from $$d"
 
 clean:
 	rm -rf $(BUILD)

@@ -10,6 +10,12 @@ mode=${2:-check}
 shift 2 2>/dev/null || shift $#
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
+# dash runs no EXIT trap when a signal ends it: remove the log, then die of the same signal, so
+# that make (or the terminal) sees the interrupt
+for sig in INT TERM HUP; do
+    # shellcheck disable=SC2064 # $sig now, the rest at the signal
+    trap "trap - EXIT $sig; rm -f \"\$log\"; kill -$sig \$\$" $sig
+done
 status=0
 sum="$B/$mode-summary.txt"
 : >"$sum"

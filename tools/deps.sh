@@ -2,7 +2,9 @@
 # make deps: check what the build needs and install the missing Debian packages with apt-get
 # (through sudo when not root), saying what it does. Quiet when nothing is missing.
 # Usage: deps.sh [PROFILE], PROFILE one of
-#   check    compiler, make, pkg-config, GSL, Cairo, OSMesa, a font (make check)
+#   check    the C compiler $CC (gcc, or clang for CC=clang), a C++ compiler (the install test
+#            builds a C++ program against the library), make, pkg-config, GSL, Cairo, OSMesa,
+#            a font (make check)
 #   figures  check + ffmpeg (make figures: the animation's video)
 #   paper    figures + TeX Live (make paper; the default). make paper also runs the bench,
 #            so the Makefile adds the bench profile there
@@ -16,7 +18,21 @@ case $profile in
 esac
 have() { command -v "$1" >/dev/null 2>&1; }
 missing=""
-have cc || missing="$missing gcc"
+# The C compiler make uses ($CC, its first word; cc by default), by its Debian package: clang-14
+# is Debian 12's clang.
+cc=$(echo "${CC:-cc}" | awk '{ print $1 }')
+if ! have "$cc"; then
+    case $(basename "$cc") in
+        clang | clang-[0-9]*) missing="$missing $(basename "$cc")" ;;
+        cc | gcc | gcc-[0-9]*) missing="$missing gcc" ;;
+        *) echo "deps: CC=$cc is not installed, and not a compiler this script knows the package of" >&2
+           exit 2 ;;
+    esac
+fi
+cxx=$(echo "${CXX:-c++}" | awk '{ print $1 }')
+if ! have "$cxx"; then
+    case $(basename "$cxx") in clang++*) missing="$missing clang" ;; *) missing="$missing g++" ;; esac
+fi
 have make || missing="$missing make"
 have pkg-config || missing="$missing pkg-config"
 # pkg-config module:Debian package

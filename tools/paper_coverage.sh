@@ -4,7 +4,9 @@
 # gives it, in the paper_ref column of claims.tsv) or listed, with the reason, in
 # paper/not_tested.tsv; every claim of the Conclusions (paper/conclusions.tsv) and every finding
 # (paper/findings.tsv) must name ledger lines that exist; and every ledger line whose verdict is
-# "not reproduced" or "erratum" must belong to a finding. Prints each gap and, last,
+# "not reproduced" or "erratum" must belong to a finding; and every unit test that
+# paper/unit_tested.tsv names (FILE:FUNCTION, a statement checked by the unit tests rather than
+# by a ledger line) must exist. Prints each gap and, last,
 # "paper_coverage: N passed, N failed" (one check per statement, claim, finding line and
 # contradicted line); exit 1 on any gap. Run by make check (tests/run.sh) and make paper.
 # Usage: paper_coverage.sh CLAIMS_TSV
@@ -40,6 +42,15 @@ END {
         if (verdict[id] == "not reproduced" || verdict[id] == "erratum") {
             checks++
             if (!(id in infinding)) { print "findings: ledger line " id " (" verdict[id] ") belongs to no finding"; bad++ } }
+    # the unit tests named for statements that no ledger line measures
+    while ((getline row < "paper/unit_tested.tsv") > 0) {
+        if (++urow == 1) continue
+        split(row, u, "\t"); n = split(u[4], fl, ":"); checks++
+        found = 0
+        if (n == 2) while ((getline line < fl[1]) > 0) if (line ~ ("^static void " fl[2] "\\(")) found = 1
+        close(fl[1])
+        if (!found) { print "unit_tested: no function " fl[2] " in " fl[1]; bad++ }
+    }
     printf "paper_coverage: %d passed, %d failed\n", checks - bad, bad
     exit bad > 0
 }' "$C" paper/not_tested.tsv paper/conclusions.tsv paper/findings.tsv paper/labels.tsv

@@ -13,10 +13,10 @@ lines of the source); figures globally. Numbered items without a \\label get the
 "nolabel:KIND-NUMBER" so that they can be cited too (e.g. the proposition on general DSPs).
 Labels are stored without surrounding blanks (the source writes \label{ DSP}); the section
 column is "Appendix" after the unnumbered appendix heading.
-The numbers are counted from the arXiv source; the PUBLISHED sample below (every number the
-companion's findings cite, read off the published article) is asserted at the end
-(check_published), so a miscount fails loudly. The companion and the web edition should say
-exactly this: numbers counted from the arXiv source, spot-checked against the published version.
+The numbers are counted from the arXiv source; the PUBLISHED sample below (the numbers the
+companion's findings cite, as a list supplied for the published article gave them; the article
+itself was not consulted) is asserted at the end (check_published), so a miscount fails loudly.
+make paper re-runs this script on the source when the file is at hand (tools/paper.sh).
 """
 import re
 import sys
@@ -24,7 +24,7 @@ import sys
 THEOREMS = {"proposition": "proposition", "definition": "definition", "remark": "definition",
             "theorem": "definition", "algorithm": "definition", "corollary": "definition"}
 
-# Numbers of the published version (J. Geom. Mech. 10(1), 2018), as cited in issue 14.
+# Numbers of the published version (J. Geom. Mech. 10(1), 2018), as a list supplied for it gave them.
 PUBLISHED = {"PropoCons1": "4.1", "TeoL": "5.1", "nolabel:proposition-5.2": "5.2",
              "PropoFinal": "5.3", "RemarkLambda": "5.5", "MetMat": "22", "ContDyn": "27",
              "LagMult": "28", "VSO3": "35", "cayinver": "36", "taudyn": "37", "taualg": "38",

@@ -18,31 +18,34 @@ head_row() { # file caption label colspec header
     printf '\\begin{longtable}{@{}%s@{}}\n\\caption{%s}\\label{%s}\\\\\n\\toprule %s\\\\\n\\midrule\\endfirsthead\n\\toprule %s\\\\\n\\midrule\\endhead\n\\bottomrule\\endlastfoot\n' \
         "$4" "$2" "$3" "$5" "$5" >"$1"
 }
-head_row "$O/findings.tex" 'The findings, one row per independent finding, with the ledger lines it rests on and the tests that measure them (Appendix~A below lists the lines that test the paper; the software note lists all lines). Program: the claims ledger, \repolink{claims.c} (\cmd{make ledger}); data: \href{../build/claims.tsv}{\texttt{build/claims.tsv}}.' tab:findings \
-    '>{\raggedright}p{0.05\linewidth} >{\raggedright}p{0.25\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.54\linewidth}' \
-    '& finding & verdict & what we measure (ledger lines)'
+# Table 1 is one float page: a tabular, not a longtable, so that it is never cut across pages.
+{ printf '%s\n' '\begin{table}[p]' '\centering\footnotesize\setlength{\tabcolsep}{3pt}' \
+    '\caption{The findings, one row per independent finding, with the number of ledger lines it rests on and the tests that measure them; Table~\ref{tab:summary} (Appendix~\ref{sec:appendix}) gives each line with its finding, and the software note every line. Program: the claims ledger, \repolink{claims.c} (\cmd{make ledger}); data: \href{../build/claims.tsv}{\texttt{build/claims.tsv}}.}\label{tab:findings}' \
+    '\begin{tabular}{@{}>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.22\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.6\linewidth}@{}}' \
+    '\toprule & finding & verdict & what we measure\\' '\midrule'; } >"$O/findings.tex"
 # An erratum finding names the row of the errata table that corrects it (erratum (E1)).
 # Each row links the test files its lines come from (the source column of the ledger, file:line).
 awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $6 != "") eid[$6] = $1; next }
     FILENAME == ARGV[2] { f = $9; sub(/:[0-9]+$/, "", f); sub(/.*\//, "", f); src[$1] = f; next }
     FNR > 1 { v = ($3 == "not reproduced") ? "\\textbf{not reproduced}" : $3
     if ($3 == "erratum") v = v " (" eid[$1] ")"
-    ids = $4; n = split(ids, a, " "); gsub(/-/, "-\\allowbreak{}", ids); gsub(/ /, ", ", ids)
+    n = split($4, a, " ")
     t = ""; delete had
     for (i = 1; i <= n; i++) if (!(src[a[i]] in had)) { had[src[a[i]]] = 1; t = t (t == "" ? "" : ", ") "\\repolink{" src[a[i]] "}" }
-    printf "%s & %s & %s & %s {\\scriptsize(%d line%s: \\texttt{%s}; tests: %s)}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), ids, t }' \
+    printf "%s & %s & %s & %s {\\scriptsize(%d line%s; %s)}\\\\\n", $1, $2, v, $5, n, (n > 1 ? "s" : ""), t }' \
     paper/errata.tsv "$C" paper/findings.tsv >>"$O/findings.tex"
-printf '%s\n' '\end{longtable}' >>"$O/findings.tex"
+printf '%s\n' '\bottomrule' '\end{tabular}' '\end{table}' >>"$O/findings.tex"
 awk -F'\t' 'NR > 1 { n++; c[$3]++ } END {
     printf "\\newcommand{\\FindingsCount}{%d}\n\\newcommand{\\FindingsReproduced}{%d}\n", n, c["reproduced"]
     printf "\\newcommand{\\FindingsErratum}{%d}\n\\newcommand{\\FindingsNotReproduced}{%d}\n", c["erratum"], c["not reproduced"]
     printf "\\newcommand{\\FindingsExtension}{%d}\n", c["extension"]
     printf "\\newcommand{\\FindingsByDefinition}{%d}\n", c["by definition"] }' \
     paper/findings.tsv >"$O/findings_counts.tex"
-# Every ledger line that tests the paper (verdict other than extension) rests under a finding,
+# Every ledger line that tests the paper (verdict other than extension and by construction) rests
+# under a finding,
 # and every line a finding names exists: a line left out of Table 1 fails the build.
 awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1) { n = split($4, a, " "); for (i = 1; i <= n; i++) f[a[i]] = 1 }; next }
-    FNR > 1 { seen[$1] = 1; if ($7 != "extension" && !($1 in f)) { print "paper_tables: ledger line " $1 " is in no finding of paper/findings.tsv" > "/dev/stderr"; bad = 1 } }
+    FNR > 1 { seen[$1] = 1; if ($7 != "extension" && $7 != "by construction" && !($1 in f)) { print "paper_tables: ledger line " $1 " is in no finding of paper/findings.tsv" > "/dev/stderr"; bad = 1 } }
     END { for (i in f) if (!(i in seen)) { print "paper_tables: finding names " i ", not a ledger line" > "/dev/stderr"; bad = 1 }
           exit bad }' paper/findings.tsv "$C"
 # One count of the errata: each erratum finding is corrected by exactly one row of the errata
@@ -60,7 +63,7 @@ awk -F'\t' 'FILENAME == ARGV[1] { if (FNR > 1 && $3 == "erratum") need[$1] = 1; 
     paper/findings.tsv paper/errata.tsv >>"$O/findings_counts.tex"
 
 head_row "$O/errata.tex" 'Errata for the authors: typos and internal inconsistencies, with the evidence.' tab:errata \
-    '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright}p{0.24\linewidth} >{\raggedright\arraybackslash}p{0.26\linewidth}' \
+    '>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.12\linewidth} >{\raggedright}p{0.2\linewidth} >{\raggedright}p{0.2\linewidth} >{\raggedright\arraybackslash}p{0.38\linewidth}' \
     '& where & printed & corrected & evidence'
 # a ledger id in \texttt{..} may break after each hyphen
 awk -F'\t' 'function brk(s,   out, i, c, tt) {
@@ -82,6 +85,13 @@ head_row "$O/not_tested.tex" 'Statements of the paper we do not test, and why.' 
 awk -F'\t' 'NR > 1 { printf "%s & %s\\\\\n", $2, $3 }' paper/not_tested.tsv >>"$O/not_tested.tex"
 printf '%s\n' '\end{longtable}' >>"$O/not_tested.tex"
 
+head_row "$O/unit_tested.tex" 'Statements of the paper checked by the unit tests (\cmd{make test}), not by ledger lines: the test function and what it checks.' tab:unittested \
+    '>{\raggedright}p{0.22\linewidth} >{\raggedright}p{0.26\linewidth} >{\raggedright\arraybackslash}p{0.48\linewidth}' \
+    'statement & unit test & what it checks'
+awk -F'\t' 'NR > 1 { split($4, t, ":"); f = t[1]; sub(/.*\//, "", f); fn = t[2]; gsub(/_/, "\\_", fn)
+    printf "%s & \\repolink{%s}: \\texttt{%s} & %s\\\\\n", $3, f, fn, $5 }' paper/unit_tested.tsv >>"$O/unit_tested.tex"
+printf '%s\n' '\end{longtable}' >>"$O/unit_tested.tex"
+
 head_row "$O/conclusions.tex" 'The claims of the Conclusions and the ledger lines that test them.' tab:conclusions \
     '>{\raggedright}p{0.5\linewidth} >{\raggedright}p{0.13\linewidth} >{\raggedright\arraybackslash}p{0.33\linewidth}' \
     'claim & verdict & ledger lines'
@@ -96,15 +106,20 @@ file == 2 { verdict[$1] = ($7 == "reproduced" && ($1 in bydef)) ? "by definition
   printf "%s & %s & {\\scriptsize\\texttt{%s}}\\\\\n", $1, v, list }' paper/findings.tsv "$C" paper/conclusions.tsv >>"$O/conclusions.tex"
 printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
 
-# Table 1 in the paper's order: a stable sort of its rows (one per line, ending in \\) by the
-# position in labels.tsv of the first label they cite; the header and footer stay in place.
-# A (sub)section's own text (a row citing "Sec. 5.6 text") sorts after the section's numbered
-# statements and before its figures, where the source discusses its experiments.
+# The appendix's table of every line that tests the paper, in the paper's order: a stable sort of
+# its rows (one per line, ending in \\) by the position in labels.tsv of the first label they
+# cite, or of the figure they cite if any (a row about a figure sits with the figure, not with
+# the section's text that introduces it); the header and footer stay in place. A (sub)section's
+# own text (a row citing "Sec. 5.6 text") sorts after the section's numbered statements and
+# before its figures, where the source discusses its experiments. Each row gets the finding of
+# Table 1 it rests under (paper/findings.tsv).
 awk -F'\t' 'FILENAME == ARGV[1] { if (FNR == 1) next
                       if ($2 ~ /section$/) sec = $1; else if ($2 != "figure" && sec != "") pos[sec] = FNR
+                      if ($2 == "figure") isfig[$1] = 1
                       if (!($1 in pos)) pos[$1] = FNR; next }
 FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "source") sc = i; next }
                       if (sc) src[$1] = $sc; next }
+FILENAME == ARGV[3] { if (FNR > 1) { n = split($4, a, " "); for (i = 1; i <= n; i++) finding[a[i]] = $1 }; next }
 /\\endlastfoot/ { print "0\t" FNR "\t" $0; body = 1; next }
 /\\end\{longtable\}/ { print "99999\t" FNR "\t" $0; next }
 !body { print "0\t" FNR "\t" $0; next }
@@ -114,21 +129,28 @@ FILENAME == ARGV[2] { if (FNR == 1) { for (i = 1; i <= NF; i++) if ($i == "sourc
       id = substr($0, RSTART + 8, RLENGTH - 9); gsub(/\\allowbreak\{\}/, "", id); sub(/-\*$/, "-", id)
       # the link goes after the count of a grouped row (id-*~$\times n$), which stays beside the id
       len = RLENGTH; if (match(substr($0, len + 1), /^~\$\\times[0-9]+\$/)) len += RLENGTH
-      link = ""
-      for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) { link = src[k]; break }
-      if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; gsub(/_/, "\\\\_", shown)
-          $0 = substr($0, 1, len) " {\\scriptsize\\href{../" file "}{\\texttt{" shown "}}}" substr($0, len + 1) } }
+      link = ""; fd = ""
+      # a grouped row (id-*) takes the finding most of its members rest under
+      delete votes; best = 0
+      for (k in src) if (k == id || (id ~ /-$/ && index(k, id) == 1)) {
+          if (link == "") link = src[k]
+          if (finding[k] != "" && ++votes[finding[k]] > best) { best = votes[finding[k]]; fd = finding[k]; link = src[k] } }
+      if (link != "") { file = link; sub(/:[0-9]+$/, "", file); shown = link; sub(/.*\//, "", shown); gsub(/_/, "\\\\_", shown)
+          $0 = substr($0, 1, len) " {\\scriptsize\\href{\\RepoBase " file "}{\\texttt{" shown "}}}" substr($0, len + 1) }
+      if (fd != "" && substr($0, length($0) - 1) == "\\\\") $0 = substr($0, 1, length($0) - 2) " " fd "\\\\" }
+  got = 0
   while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
-      if (l in pos) { key = pos[l]; break }
+      if ((l in pos) && !got) { key = pos[l]; got = 1 }
+      if ((l in pos) && (l in isfig)) { key = pos[l]; break }
       s = substr(s, RSTART + RLENGTH) }
-  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$C" "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
+  print key "\t" FNR "\t" $0 }' paper/labels.tsv "$C" paper/findings.tsv "$S" | sort -t '	' -k1,1n -k2,2n | cut -f3- >"$O/summary_ordered.tex"
 # cited_lines.tex: the ledger lines the companion's text quotes (by \texttt{id}, id-* or one of the
 # id's macros, \FigTwoAccuracy for fig2-accuracy) that Table 1 leaves out, being extensions, so
 # that every line the text cites is in Appendix A. A \texttt{...-...} that names no ledger line
 # (a stale citation) fails the build. Each cell is the ledger's own macro (numbers.tex), so that the
 # table and the text print a measured value to one precision.
-head_row "$O/cited_lines.tex" 'The lines of our own that the text quotes: extensions, controls and readings, which test no statement of the paper and so are not in Table~\ref{tab:summary}. $m$: measured.' \
+head_row "$O/cited_lines.tex" 'The lines of our own that the companion quotes: extensions, controls and readings, which test no statement of the paper and so are not in its table of the lines that do. $m$: measured.' \
     tab:cited '>{\raggedright}p{0.52\linewidth} >{\raggedright}p{0.14\linewidth} >{\raggedright}p{0.2\linewidth} >{\raggedright\arraybackslash}p{0.08\linewidth}' \
     'line (test file) & measured $m$ & test & verdict'
 perl -e '
@@ -149,11 +171,12 @@ for my $tok ($txt =~ /\\texttt\{([a-z0-9][a-z0-9*-]*-[a-z0-9*-]*)\}/g) {
     if (!@m) { print STDERR "paper_tables: the text cites $tok, which is no ledger line\n"; $bad = 1 }
     $cited{$_} = 1 for @m }
 for my $id (grep { $cited{$_} } @ids) {
+    next if $row{$id}->[$col{verdict}] eq "by construction"; # the text names them, by pattern, as such
     next if grep { (my $p = $_) =~ s/\*$//; /\*$/ ? index($id, $p) == 0 : $_ eq $id } @in_table;
     my $c = $row{$id}; (my $shown = $id) =~ s/-/-\\allowbreak{}/g;
     my $src = $c->[$col{source}] // ""; (my $file = $src) =~ s/:\d+$//; (my $srct = $src) =~ s/_/\\_/g;
     my $m = macro($id);
-    printf "\\texttt{%s} {\\scriptsize\\href{../%s}{\\texttt{%s}}} & \$\\%s\$ & \\%sTest & \\%sVerdict\\\\\n", $shown, $file,
+    printf "\\texttt{%s} {\\scriptsize\\href{\\RepoBase %s}{\\texttt{%s}}} & \$\\%s\$ & \\%sTest & \\%sVerdict\\\\\n", $shown, $file,
         $srct, $m, $m, $m }
 exit($bad ? 1 : 0)' "$C" "$S" paper/companion.tex >>"$O/cited_lines.tex"
 printf '%s\n' '\end{longtable}' >>"$O/cited_lines.tex"

@@ -1,9 +1,13 @@
 #include "driver.h"
 
+#include "api_args.h"
+
 #include <math.h>
 
 int sus_row_finite(const sus_row *r)
 {
+    if (!r)
+        return 0;
     int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2])
           && isfinite(r->lambda);
     for (int i = 0; i < 3; i++)
@@ -14,6 +18,8 @@ int sus_row_finite(const sus_row *r)
 
 int sus_keep_last(void *ctx, const sus_row *row)
 {
+    if (!ctx || !row)
+        return -1;
     *(sus_row *)ctx = *row;
     return 0;
 }
@@ -34,10 +40,9 @@ static int state_finite(const double w[3], double lambda, const sus_attitude *a)
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                sus_run_report *report)
 {
-    if (cfg->stepper->tol) { /* it chooses its own steps: sus_run_tol */
-        *report = (sus_run_report){.status = SUS_STEPPER_REJECTED, .step = 1};
-        return SUS_RUN_STEP_FAILED;
-    }
+    const char *bad = sus_args_run(cfg, w0, emit, report, 1);
+    if (bad)
+        return sus_args_refuse(report, bad);
     sus_row row = {.k = 0, .t = 0.0, .w = {w0[0], w0[1], 0.0}};
     sus_attitude att;
     row.lambda = sus_lagmult(cfg->model, row.w);

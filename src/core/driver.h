@@ -8,6 +8,10 @@
 #include "reconstruct.h"
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     const sus_model *model;
     const sus_stepper_type *stepper;
@@ -20,10 +24,13 @@ typedef struct {
 /* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
  * rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the method's
  * dense output; a time within 4u t_end of t_end is t_end), or at the end of every accepted step
- * (every_time = 0). A row's k counts the steps accepted up to its t. The number of steps is
- * known only as they are taken (it grows with |w0| t_end), so a run may be given a budget: after
- * max_steps accepted steps short of t_end it stops with SUS_RUN_STEP_FAILED and
- * SUS_STEPPER_STEP_LIMIT, the rows up to there written (max_steps = 0: no limit). */
+ * (every_time = 0). A row's k is the index of the accepted step that reaches its t: the row at
+ * t_{k-1} < t <= t_k, t_k the end of the k-th accepted step, has k (row 0 has 0), so rows
+ * every_time apart that fall in one step share its k, and before t_k only k - 1 steps are
+ * accepted. The number of steps is known only as they are taken (it grows with |w0| t_end), so
+ * a run may be given a budget: after max_steps accepted steps short of t_end it stops with
+ * SUS_RUN_STEP_FAILED and SUS_STEPPER_STEP_LIMIT, the rows up to there written (max_steps = 0:
+ * no limit). */
 typedef struct {
     const sus_model *model;
     const sus_stepper_type *stepper;
@@ -42,13 +49,14 @@ typedef struct {
 /* Returns 0 to go on, non-zero to stop the run (e.g. a write error). */
 typedef int (*sus_emit_fn)(void *ctx, const sus_row *row);
 
-/* What every run function (sus_run, sus_run_exact, sus_exp_series_run) returns: one
- * convention, with "emit asked to stop" distinct from every failure. */
+/* What every run function (sus_run, sus_run_tol, sus_run_exact, sus_exp_series_run) returns:
+ * one convention, with "emit asked to stop" distinct from every failure. */
 typedef enum {
     SUS_RUN_STOPPED = -1,          /* emit returned non-zero (e.g. a write error) */
     SUS_RUN_OK = 0,
     SUS_RUN_STEP_FAILED = 1,       /* a step's solver failed: report->status, ->stats */
-    SUS_RUN_BLOWUP = 2             /* w, lambda or R became non-finite at report->step */
+    SUS_RUN_BLOWUP = 2,            /* w, lambda or R became non-finite at report->step */
+    SUS_RUN_BAD_ARGUMENT = 3       /* refused before row 0: report->message says which argument */
 } sus_run_status;
 
 typedef struct {
@@ -58,23 +66,43 @@ typedef struct {
     sus_stepper_stats stats; /* of the failed step */
     long sus_newton_iterations;  /* total over the run */
     int max_iterations;      /* per step */
+    /* SUS_RUN_BAD_ARGUMENT: which argument is wrong and why, one line (a static string); NULL
+     * for every other outcome. */
+    const char *message;
 } sus_run_report;
 
-/* A sus_emit_fn that copies each row over the sus_row ctx points to: the run's last row. */
+/* A sus_emit_fn that copies each row over the sus_row ctx points to: the run's last row.
+ * Returns 0, or -1 (stop the run) when ctx or row is NULL. */
 int sus_keep_last(void *ctx, const sus_row *row);
-/* No silent non-finite output: 1 when t, w, lambda and R of a row are all finite numbers. */
+/* No silent non-finite output: 1 when t, w, lambda and R of a row are all finite numbers
+ * (0 for a NULL row). */
 int sus_row_finite(const sus_row *r);
+
+/* The arguments every run function checks before row 0, refusing with SUS_RUN_BAD_ARGUMENT and
+ * report->message (nothing emitted; with a NULL report it writes nothing): cfg, w0, emit and
+ * report are not NULL; cfg->model is a model sus_model_init filled and nothing changed since
+ * (a NULL, uninitialised or altered one is refused); w0 is finite. sus_run and sus_run_exact
+ * also want eps finite and > 0, steps >= 0, every >= 1 and steps * eps finite; sus_run a
+ * fixed-step stepper (stepper->tol NULL) with apply or apply_full, and a recon among
+ * sus_recon's values. sus_run_exact ignores cfg->stepper and cfg->recon. */
 
 /* R_0 = I, w_0 = (w0, 0), lambda_0 = lambda(w_0) from (LagMult): (taualg) needs w^{-1}, so
  * row 0 carries the continuous multiplier for every method.
- * Returns a sus_run_status: SUS_RUN_OK, _STEP_FAILED or _BLOWUP (see report), or
- * _STOPPED. A row that is not finite is never emitted: the run stops with _BLOWUP. */
+ * Returns a sus_run_status: SUS_RUN_OK, _STEP_FAILED or _BLOWUP (see report), _STOPPED, or
+ * _BAD_ARGUMENT (above). A row that is not finite is never emitted: the run stops with _BLOWUP. */
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                sus_run_report *report);
-/* The same for a tolerance-driven stepper (sus_run refuses one: SUS_RUN_STEP_FAILED with
- * SUS_STEPPER_REJECTED at step 1, as it has no tolerance): report->step is the step that failed,
- * report->t the time it started from. */
+/* The same for a tolerance-driven stepper (sus_run refuses one with SUS_RUN_BAD_ARGUMENT, as it
+ * has no tolerance): report->step is the step that failed, report->t the time it started from.
+ * It refuses with SUS_RUN_BAD_ARGUMENT (above) a stepper without tol (a fixed-step method) or
+ * without its alloc, step and free (and dense, for every_time > 0); a tol that is not finite
+ * and > 0; a t_end or every_time that is not finite and >= 0; more rows every_time apart than
+ * it can count (t_end / every_time >= 2^62); and max_steps < 0. */
 int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                 sus_run_report *report);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

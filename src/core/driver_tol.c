@@ -3,6 +3,8 @@
  * the requested times from the method's dense output, so the rows do not shorten the steps. */
 #include "driver.h"
 
+#include "api_args.h"
+
 #include <math.h>
 
 typedef struct {
@@ -58,6 +60,9 @@ static int dense_rows(tol_run *r, double t0, sus_emit_fn emit, void *ctx, sus_ru
 int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                 sus_run_report *report)
 {
+    const char *bad = sus_args_tol(cfg, w0, emit, report);
+    if (bad)
+        return sus_args_refuse(report, bad);
     tol_run r = {.cfg = cfg, .ops = cfg->stepper->tol, .row = {.w = {w0[0], w0[1], 0.0}}, .next_out = 1};
     *report = (sus_run_report){.status = SUS_STEPPER_OK};
     r.row.lambda = sus_lagmult(cfg->model, r.row.w);

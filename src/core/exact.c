@@ -1,9 +1,17 @@
 #include "exact.h"
 
+#include "api_args.h"
+
 #include <math.h>
 
-void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
+int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
 {
+    if (!ex)
+        return -1;
+    if (!sus_args_model_ready(m) || !sus_args_finite2(w0)) {
+        *ex = (sus_exact){.model = NULL, .r = NAN, .k = NAN, .w0 = {NAN, NAN}};
+        return -1;
+    }
     const double (*I)[3] = m->I;
     ex->model = m;
     ex->w0[0] = w0[0];
@@ -23,7 +31,7 @@ void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     ex->s0 = 0.0;
     if (ex->r == 0.0 || vn == 0.0) {
         ex->fixed = 1;
-        return;
+        return 0;
     }
     ex->cb = v1 / vn;
     ex->sb = v2 / vn;
@@ -31,11 +39,12 @@ void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     const double S = (ex->cb * u2 - ex->sb * u1) / ex->r;
     if (C == 0.0) {  /* an equilibrium: c(w0) = 0 */
         ex->fixed = 1;
-        return;
+        return 0;
     }
     ex->k = ex->r * vn / (ex->l11 * ex->l22);
     ex->sigma = C > 0.0 ? 1.0 : -1.0;
     ex->s0 = asinh(S / C);
+    return 0;
 }
 
 /* w = L^{-T} u with u = r R(beta) (cos psi, sin psi). */
@@ -49,8 +58,19 @@ static void omega_from_psi(const sus_exact *ex, double cp, double sp, double w[2
 
 /* At t = 0 w0 itself: its closed-form evaluation is an ulp or so off, and w(0) is what every
  * method starts from (its row 0). */
+/* A refused (or NULL) ex: NaN, not a motion. */
+static int refused(const sus_exact *ex, double w[2])
+{
+    if (ex && ex->model)
+        return 0;
+    w[0] = w[1] = NAN;
+    return 1;
+}
+
 void sus_exact_omega(const sus_exact *ex, double t, double w[2])
 {
+    if (!w || refused(ex, w))
+        return;
     if (ex->fixed || t == 0.0) {
         w[0] = ex->w0[0];
         w[1] = ex->w0[1];
@@ -65,6 +85,8 @@ void sus_exact_omega(const sus_exact *ex, double t, double w[2])
 /* The steady rotation w(t -> infinity): psi = pi/2. */
 void sus_exact_limit(const sus_exact *ex, double w[2])
 {
+    if (!w || refused(ex, w))
+        return;
     if (ex->fixed) {
         w[0] = ex->w0[0];
         w[1] = ex->w0[1];

@@ -20,6 +20,10 @@
 
 #include "model.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     const sus_model *model;
     double l11, l21, l22;  /* Cholesky factor of I_m */
@@ -31,8 +35,15 @@ typedef struct {
     double w0[2];
 } sus_exact;
 
-void sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2]);
+/* Returns 0, or -1 when ex is NULL, m is not a model sus_model_init filled (or was changed
+ * since) or w0 is NULL or not finite; ex is then refused (model NULL) and gives w = NaN. The
+ * two below write NaN for a NULL or refused ex, and nothing for a NULL w. */
+int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2]);
 void sus_exact_omega(const sus_exact *ex, double t, double w[2]);
 void sus_exact_limit(const sus_exact *ex, double w[2]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,5 +1,7 @@
 #include "exact_run.h"
 
+#include "api_args.h"
+
 #include "mat3.h"
 #include "refattitude.h"
 
@@ -110,6 +112,8 @@ static void scaled_attitude_at(scaled_attitude *sa, double t, double R[3][3])
 
 double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T)
 {
+    if (!sus_args_model_ready(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
+        return -1.0;
     scaled_attitude sa;
     scaled_init(&sa, m, w0);
     return fmin((double)((long double)T * sa.c), sa.tau_s) * SUS_REFATT_PRECISE_STEPS;
@@ -118,6 +122,9 @@ double sus_exact_reference_steps(const sus_model *m, const double w0[2], double 
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
                      void *ctx, sus_run_report *report)
 {
+    const char *bad = sus_args_run(cfg, w0, emit, report, 0);
+    if (bad)
+        return sus_args_refuse(report, bad);
     sus_exact ex;
     scaled_attitude sa;
     sus_exact_init(&ex, cfg->model, w0);

@@ -6,6 +6,10 @@
 #include "driver.h"
 #include "exact.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Rows at t_k = k eps for k = 0, K, 2K, ..., N. R(t) comes from the reference integration
  * (refattitude.h) up to the time t_s after which w(t) is the steady rotation w* to within a
  * total rotation angle of u = 2^-53, and from the closed form R(t_s) exp((t - t_s) w*^) beyond
@@ -20,5 +24,9 @@ double sus_exact_reference_steps(const sus_model *m, const double w0[2], double 
 
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
                      void *ctx, sus_run_report *report);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -7,8 +7,16 @@
 #include "exact.h"
 #include "model.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* R <- R Phi(t0, t1) from n and 2n equal steps with Richardson extrapolation (the closed form
  * and the scheme in long double; the result rounded once to double). */
 void sus_magnus4(const sus_exact *ex, double t0, double t1, long n, double R[3][3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

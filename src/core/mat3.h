@@ -6,6 +6,10 @@
 #include <math.h>
 #include <string.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 static inline void sus_mat3_identity(double A[3][3])
 {
     memset(A, 0, 9 * sizeof(double));
@@ -99,5 +103,9 @@ static inline double sus_vec3_norm(const double a[3])
 {
     return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

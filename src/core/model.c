@@ -38,6 +38,12 @@ static int check_coefficients(const sus_model *m, char *err, size_t errlen)
 
 int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
 {
+    if (!err)
+        errlen = 0;
+    if (!m || !I) {
+        snprintf(err, errlen, "%s is NULL", m ? "the inertia" : "the model");
+        return -1;
+    }
     for (int i = 0; i < 9; i++) {
         if (!isfinite(I[i])) {
             snprintf(err, errlen, "inertia entry %d is not finite", i + 1);
@@ -74,6 +80,12 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
 /* Df of (ContDyn), for the Newton iterations and linear stability. */
 void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
 {
+    if (!J)
+        return;
+    if (!m || !w) {
+        J[0][0] = J[0][1] = J[1][0] = J[1][1] = NAN;
+        return;
+    }
     const double (*I)[3] = m->I;
     const double d = m->det_m, c = sus_c(m, w);
     const double p = I[1][1] * w[1] + I[0][1] * w[0];
@@ -87,6 +99,8 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
 /* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). */
 double sus_energy(const sus_model *m, const double w[2])
 {
+    if (!m || !w)
+        return NAN;
     const double (*I)[3] = m->I;
     return 0.5 * (w[0] * (I[0][0] * w[0] + I[0][1] * w[1])
                   + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]));

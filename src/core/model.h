@@ -5,7 +5,12 @@
 #define SUS_MODEL_H
 
 #include <float.h>
+#include <math.h>
 #include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* u: the spacing of doubles at 1 (2^-52), the unit every round-off yardstick is counted in. */
 #define SUS_U DBL_EPSILON
@@ -29,12 +34,16 @@ extern const double SUS_PAPER_INERTIA[9];
 extern const double SUS_PAPER_OMEGA0[2];
 
 /* Returns 0, or -1 with a one-line reason in err when an entry is not finite or I_m is not
- * symmetric positive definite. */
+ * symmetric positive definite, or m or I is NULL (err may be NULL, errlen 0). */
 int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen);
+
+/* The inline kernels below, sus_contdyn_jacobian and sus_energy give NaN for a NULL pointer. */
 
 /* c(w) = I_3i w_i, i in {1,2}: the factor shared by (ContDyn) and (LagMult). */
 static inline double sus_c(const sus_model *m, const double w[2])
 {
+    if (!m || !w)
+        return NAN;
     return m->b[0] * w[0] + m->b[1] * w[1];
 }
 
@@ -42,6 +51,12 @@ static inline double sus_c(const sus_model *m, const double w[2])
  * Inline, with the division done once in sus_model_init: every stepper evaluates it. */
 static inline void sus_contdyn(const sus_model *m, const double w[2], double f[2])
 {
+    if (!f)
+        return;
+    if (!m || !w) {
+        f[0] = f[1] = NAN;
+        return;
+    }
     const double c = sus_c(m, w);
     f[0] = c * (m->fA[0][0] * w[0] + m->fA[0][1] * w[1]);
     f[1] = c * (m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
@@ -53,17 +68,25 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
  * O_0 of the proof of PropoFinal. */
 static inline double sus_lagmult_o0(const sus_model *m, const double w[2])
 {
+    if (!m || !w)
+        return NAN;
     return sus_c(m, w) * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
 }
 
 /* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
 static inline double sus_lagmult(const sus_model *m, const double w[2])
 {
+    if (!m || !w)
+        return NAN;
     const double (*I)[3] = m->I;
     return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
          - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
          + sus_lagmult_o0(m, w);
 }
 double sus_energy(const sus_model *m, const double w[2]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

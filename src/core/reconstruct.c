@@ -7,8 +7,24 @@
 #include <math.h>
 #include <string.h>
 
+/* Where an argument is NULL or kind is not a sus_recon, what can be written is NaN
+ * (reconstruct.h). */
+static void nan_fill(double M[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            M[i][j] = NAN;
+}
+
+static int bad_kind(sus_recon kind)
+{
+    return (int)kind < 0 || (int)kind >= SUS_RECON_COUNT;
+}
+
 void sus_attitude_identity(sus_attitude *a)
 {
+    if (!a)
+        return;
     sus_mat3_identity(a->hi);
     memset(a->lo, 0, sizeof a->lo);
     a->q[0] = 1.0;
@@ -19,6 +35,12 @@ void sus_attitude_identity(sus_attitude *a)
 
 void sus_attitude_get(const sus_attitude *a, double R[3][3])
 {
+    if (!R)
+        return;
+    if (!a) {
+        nan_fill(R);
+        return;
+    }
     if (a->r_stale) {
         sus_quat_unit_rotation(a->q, R);
         return;
@@ -28,11 +50,38 @@ void sus_attitude_get(const sus_attitude *a, double R[3][3])
             R[i][j] = a->hi[i][j] + a->lo[i][j];
 }
 
+void sus_quat_of_attitude(const sus_attitude *a, double q[4])
+{
+    if (a->has_q) {
+        memcpy(q, a->q, sizeof a->q);
+        return;
+    }
+    double R[3][3];
+    sus_attitude_get(a, R);
+    sus_quat_from_rotation(R, q);
+}
+
+/* The matrix is built only when asked for (sus_attitude_get): a method that carries q builds
+ * no matrix on the steps whose rows nobody reads. */
+void sus_quat_to_attitude(const double q[4], sus_attitude *a)
+{
+    sus_quat_unit(q, a->q);
+    a->has_q = 1;
+    a->r_stale = 1;
+}
+
 /* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
 void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
                         const double w_next[3])
 {
     double xi[3], D[3][3];
+    if (!a)
+        return;
+    if (!w || !w_next || bad_kind(kind)) {
+        nan_fill(D);
+        sus_attitude_increment(a, D);
+        return;
+    }
     for (int i = 0; i < 3; i++)
         xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
     if (kind == SUS_RECON_EXP_MID)
@@ -47,6 +96,12 @@ void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double 
                              const double w_next[3])
 {
     double xi[3], dq[4], p[4];
+    if (!q)
+        return;
+    if (!w || !w_next || bad_kind(kind)) {
+        q[0] = q[1] = q[2] = q[3] = NAN;
+        return;
+    }
     for (int i = 0; i < 3; i++)
         xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
     if (kind == SUS_RECON_EXP_MID) {
@@ -72,6 +127,11 @@ void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double 
 void sus_attitude_increment(sus_attitude *a, const double D[3][3])
 {
     double R[3][3], dR[3][3];
+    static const double NAN_D[3][3] = {{NAN, NAN, NAN}, {NAN, NAN, NAN}, {NAN, NAN, NAN}};
+    if (!a)
+        return;
+    if (!D)
+        D = NAN_D;
     sus_attitude_get(a, R);
     if (a->r_stale) { /* the matrix from here on */
         memcpy(a->hi, R, sizeof R);
@@ -99,6 +159,8 @@ const char *const SUS_RECON_ABOUT[SUS_RECON_COUNT] = {
 
 int sus_recon_by_name(const char *name, sus_recon *kind)
 {
+    if (!name || !kind)
+        return -1;
     for (int k = 0; k < SUS_RECON_COUNT; k++)
         if (strcmp(name, SUS_RECON_NAMES[k]) == 0) {
             *kind = (sus_recon)k;

@@ -12,6 +12,10 @@
 #ifndef SUS_RECONSTRUCT_H
 #define SUS_RECONSTRUCT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     SUS_RECON_CAYLEY = 0,
     SUS_RECON_CAYLEY_MID = 1,
@@ -35,6 +39,15 @@ typedef struct {
     int r_stale;
 } sus_attitude;
 
+/* A method that carries its attitude as a quaternion (the Taylor methods, the compositions):
+ * q of R_k, and R_{k+1} = R(q/|q|) written back (lo = 0). The orthogonality defect is then one
+ * rounding of R(q), whatever the number of steps: nothing accumulates. For the methods' steps,
+ * which pass their own attitude: no argument checks. */
+void sus_quat_of_attitude(const sus_attitude *a, double q[4]);
+void sus_quat_to_attitude(const double q[4], sus_attitude *a);
+
+/* Every function below writes nothing where its output is NULL, and NaN where an input is NULL or
+ * kind is not a sus_recon (an attitude so advanced is NaN, which the runs report as a blow-up). */
 void sus_attitude_identity(sus_attitude *a);
 void sus_attitude_get(const sus_attitude *a, double R[3][3]);
 
@@ -48,6 +61,11 @@ void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double 
                              const double w_next[3]);
 /* R <- R (I + D), accumulated with the compensated sum above: D = tau(xi) - I, small. */
 void sus_attitude_increment(sus_attitude *a, const double D[3][3]);
+/* 0 with *kind set, or -1 for an unknown name or a NULL argument. */
 int sus_recon_by_name(const char *name, sus_recon *kind);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 
 #include "exact.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_REFATT_PRECISE_ORDER 28
 #define SUS_REFATT_PRECISE_STEPS 4
 
@@ -42,5 +46,9 @@ void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double
 
 /* R(t0)^{-1} R(t1): the exact increment over one step, from the identity. */
 void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -4,6 +4,10 @@
 #ifndef SUS_SO3_H
 #define SUS_SO3_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 void sus_so3_hat(const double w[3], double W[3][3]);
 void sus_so3_vee(const double W[3][3], double w[3]);
 void sus_so3_cay(const double w[3], double R[3][3]);
@@ -20,5 +24,9 @@ double sus_so3_orth_defect(const double R[3][3]);
  * same bits in every build (CLI and WebAssembly), within about 2 u of the true values. */
 void sus_so3_sincos(double t, double *s, double *c);
 double sus_so3_sinc(double t);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 #include "model.h"
 #include "reconstruct.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* SUS_STEPPER_DIVERGED: an explicit series step beyond the radius its series is proved to
  * converge in (the step over that radius in stats.residual, |w^k|_2 in stats.scale). */
 /* SUS_STEPPER_REJECTED: a tolerance-driven step whose own error estimate stayed above the
@@ -23,7 +27,8 @@ enum {
     SUS_STEPPER_DIVERGED = 3,
     SUS_STEPPER_REJECTED = 4,
     SUS_STEPPER_NO_MEMORY = 5,
-    SUS_STEPPER_STEP_LIMIT = 6
+    SUS_STEPPER_STEP_LIMIT = 6,
+    SUS_STEPPER_BAD_ARGUMENT = 7 /* sus_stepper_full: a NULL pointer, a bad recon or eps */
 };
 
 typedef struct {
@@ -112,15 +117,23 @@ typedef struct {
 } sus_stepper_type;
 
 /* One step of (w, R): apply_full when the type has it, else apply and then (algo)'s
- * reconstruction of the given kind. */
+ * reconstruction of the given kind. Returns SUS_STEPPER_*; SUS_STEPPER_BAD_ARGUMENT, with nothing
+ * written but *stats zeroed, for a NULL pointer, a tolerance-driven or apply-less stepper, a
+ * recon not among sus_recon's values, an eps that is not finite, or a w whose w[0], w[1] are not
+ * finite (the model is not checked here, at every step: the run drivers check it). */
 int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps, sus_recon recon,
                      sus_attitude *att, const double w[3], double w_next[3], double *lambda_next,
                      sus_stepper_stats *stats);
 
-/* Explicit midpoint (second order) prediction, the starting point of the Newton solves. */
+/* Explicit midpoint (second order) prediction, the starting point of the Newton solves. These
+ * two write NaN where an input is NULL, and nothing where the output is. */
 void sus_predict(const sus_model *m, double eps, const double w[2], double x[2]);
 /* The result hook of a step whose unknowns are x = w^{k+1} itself. */
 void sus_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,
                         double w_next[2]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -12,6 +12,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     const sus_model *m;
     double Iinv[3][3];
@@ -44,5 +48,9 @@ void sus_unreduced_rk_recayley(const sus_unreduced *u, const sus_butcher *tab, d
                                   double R[3][3], double V[3][3]);
 /* The left-trivialized velocity xi = vee(R^T V) (the reduced variable of PropoCons1). */
 void sus_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 #include "reconstruct.h"
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     double tk, eps;
     double w_k[3];        /* exact w(t_k) */
@@ -41,5 +45,9 @@ typedef struct {
 int sus_exp_global_errors(const sus_exact *ex, const sus_stepper_type *stepper,
                          sus_recon recon, double T, long N, const double R_ref[3][3],
                          sus_exp_global_err *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,10 @@
 #include "exact.h"
 #include "reconstruct.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* eps_j = 2^(SUS_EXP_CONV_J0 - j), j = 0 .. SUS_EXP_CONV_NJ - 1: from 8 down to 2^-10. The paper's
  * methods are fitted over eps <= 2^-2 (orderfit.h); the steps above let a method of high order
  * show its slope before it reaches round-off. */
@@ -41,5 +45,9 @@ typedef struct {
 int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const double *tk, int ntk,
                            double T);
 void sus_exp_convergence_free(sus_exp_convergence *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -7,6 +7,10 @@
 
 #include <math.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Figure 1: eps = 1e-3. The paper gives no interval: t in [0, 60] = 8.7/k covers the transient
  * to the steady rotation (e^{-8.7} ~ 2e-4, k = 0.145); rows kept every 10th step. */
 #define SUS_EXP_FIG1_EPS 1e-3
@@ -38,5 +42,9 @@ static inline void sus_exp_inertia_column_swap(const double I[9], double Icol[9]
     Icol[6] = I[2];
     Icol[7] = I[5];
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -15,6 +15,10 @@
 #include "model.h"
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_EXP_SERIES_N 12  /* coefficients of eps^0 .. eps^11 */
 
 typedef struct {
@@ -35,5 +39,9 @@ void sus_exp_lagmult_grad(const sus_model *m, const double w[2], double g[2]);
  * the gradient at x = w^{k+1}. Returns 0, or -1 for a method without a series. */
 int sus_exp_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms, double eps,
                         const double w[2], const double x[2], double *l_lambda);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

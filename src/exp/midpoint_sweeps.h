@@ -9,6 +9,10 @@
 #include "model.h"
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The most sweeps a stepper type is made for (Figure 2's readings run 1 to 8). */
 #define SUS_EXP_MAX_SWEEPS 8
 
@@ -22,5 +26,9 @@ void sus_exp_midpoint_sweeps_run(const sus_model *m, double eps, int n, const do
  * w^{k+1} from n sweeps, lambda_{k+1} = lambda(w^{k+1}) from (LagMult) as the midpoint DSP
  * has it, R by the requested reconstruction. NULL unless 1 <= n <= SUS_EXP_MAX_SWEEPS. */
 const sus_stepper_type *sus_exp_midpoint_sweeps_type(int n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

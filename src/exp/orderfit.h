@@ -6,6 +6,10 @@
 
 #include "model.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The fit window used by the claims ledger and the convergence figure alike.
  * eps <= 2^-2 keeps k eps <= 0.036 (k = 0.145 is the rate of the paper's motion), so the next
  * term of the error expansion bends the log-log line by a few percent at most. Points below a
@@ -28,5 +32,9 @@ typedef struct {
  * three points qualify or a point inside the window is not finite (no honest slope then). */
 int sus_exp_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
                      sus_exp_order_fit *fit);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

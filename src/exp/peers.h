@@ -9,6 +9,10 @@
 #include <gsl/gsl_odeiv2.h>
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* GSL odeiv2 right-hand sides; params is the sus_model. */
 int sus_exp_peer_rhs_wR(double t, const double y[], double f[], void *params);
 int sus_exp_peer_rhs_wq(double t, const double y[], double f[], void *params);
@@ -48,5 +52,9 @@ int sus_exp_peer_open(sus_exp_peer *p, const sus_model *m, const gsl_odeiv2_step
  * and rejected) in *steps. Returns the GSL status. */
 int sus_exp_peer_run(sus_exp_peer *p, const double w0[2], double T, double *y, long *steps);
 void sus_exp_peer_close(sus_exp_peer *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -24,6 +24,10 @@
 
 #include <float.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* chi is flat (0 or 1) on the first and last tenth of the period. */
 #define SUS_EXP_PERTURB_FLAT 0.1
 
@@ -87,5 +91,9 @@ int sus_exp_perturb_perfin2(sus_exp_perturb *P, const double x0[2], double tol, 
 int sus_exp_perturb_sup_reduced(sus_exp_perturb *P, const double x0[2], int n, double *sup_g);
 int sus_exp_perturb_sup_so3(sus_exp_perturb *P, sus_recon recon, const double x0[2], int n, double tol,
                            double *sup_att, double *sup_g);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

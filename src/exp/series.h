@@ -9,6 +9,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     size_t n, cap;
     double *t, *w1, *w2, *w3, *lambda, *energy;
@@ -28,5 +32,9 @@ void sus_exp_series_exact(sus_exp_series *s, const sus_exact *ex, double dt, siz
 double sus_exp_series_maxdiff(const sus_exp_series *a, const sus_exp_series *b, size_t field);
 /* max_k |v_k - v_0| of one field. */
 double sus_exp_series_maxdrift(const sus_exp_series *s, size_t field);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,6 +20,10 @@
 #include "exact.h"
 #include "registry.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     SUS_EXP_STAB_GOOD,
     SUS_EXP_STAB_WRONG_LIMIT,
@@ -81,5 +85,9 @@ int sus_exp_fold(const sus_model *m, const sus_stepper_type *st, const double w[
  * 2.7853); INFINITY when |R(-h)| <= 1 up to h_max (the midpoint rule is A-stable); NAN when the
  * method has no stability function in the registry. */
 double sus_exp_linear_limit(const sus_step_method *me, double h_max);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

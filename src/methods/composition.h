@@ -10,6 +10,10 @@
 
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     const char *name;    /* e.g. "Kahan-Li s=9" */
     const char *source;  /* where the weights were taken from */
@@ -43,5 +47,9 @@ extern const sus_stepper_type sus_step_comp4_s5_type, sus_step_comp6_kl_type, su
 /* The tables (src/methods/composition_coeffs.c). */
 extern const sus_step_composition sus_step_comp_suzuki4, sus_step_comp_kahan_li6, sus_step_comp_kahan_li8,
     sus_step_comp_sofroniou10;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,10 @@
 
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Iterates from the initial guess in x[n], n <= SUS_MAX_UNKNOWNS. Returns SUS_STEPPER_OK when
  * |G|_inf falls to SUS_STEP_NEWTON_RTOL * scale and one more (polishing) correction has been applied, or
  * when a correction falls below the spacing of doubles at x, or when the iteration stagnates at a
@@ -80,5 +84,9 @@ int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double 
 #define BRANCH_MIN_STAGE 0x1p-40
 #define BRANCH_MAX_STAGES 400
 #define BRANCH_FOLD 1e-2
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

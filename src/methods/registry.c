@@ -51,6 +51,8 @@ const sus_step_method *sus_step_method_get(int i)
 
 int sus_step_method_index(const char *name)
 {
+    if (!name)
+        return -1;
     for (int i = 0; i < NMETHODS; i++)
         if (strcmp(METHODS[i].type->name, name) == 0)
             return i;
@@ -73,6 +75,10 @@ const sus_step_method *sus_step_method_by_name(const char *name)
 const char *sus_step_method_names(char *buf, unsigned long len, const char *sep)
 {
     size_t used = 0;
+    if (!buf || len == 0)
+        return NULL;
+    if (!sep)
+        sep = "";
     buf[0] = '\0';
     for (int i = 0; i < NMETHODS && used < len; i++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? sep : "", METHODS[i].type->name);
@@ -85,8 +91,27 @@ const char *sus_step_attitude_name(sus_attitude_form form)
     return form >= SUS_ATTITUDE_NONE && form <= SUS_ATTITUDE_QUAT ? NAMES[form] : "?";
 }
 
+const char *sus_step_method_label(const sus_stepper_type *t, sus_recon recon, char *buf, size_t len)
+{
+    if (!buf || len == 0)
+        return NULL;
+    if (!t || !t->name || (t->follows_recon && ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT))) {
+        buf[0] = '\0';
+        return NULL;
+    }
+    if (t->follows_recon)
+        snprintf(buf, len, "%s + %s", t->name, SUS_RECON_NAMES[recon]);
+    else if (t->attitude != SUS_ATTITUDE_NONE)
+        snprintf(buf, len, "%s (%s)", t->name, sus_step_attitude_name(t->attitude));
+    else
+        snprintf(buf, len, "%s", t->name);
+    return buf;
+}
+
 int sus_step_methods_write_tsv(FILE *fp)
 {
+    if (!fp)
+        return -1;
     fprintf(fp, "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
                 "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
     for (int i = 0; i < NMETHODS; i++) {

@@ -11,6 +11,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A registered method: its stepper type (which says what the method is and does: orders, implicit
  * equation, stability function, energy, attitude, substeps, source file) and what the registry
  * adds. family is a display label only: no consumer decides anything from it. */
@@ -27,18 +31,32 @@ typedef struct {
  * Lookups by name or type, the names, --help and methods.tsv cover all. */
 int sus_step_method_count(void);
 int sus_step_method_count_all(void);
-const sus_step_method *sus_step_method_get(int i);          /* NULL past the end of all */
-const sus_step_method *sus_step_method_by_name(const char *name);
-/* The index of a method in the registry, or -1: by name (for user input) and by type. */
+const sus_step_method *sus_step_method_get(int i);          /* NULL outside 0 .. count_all - 1 */
+const sus_step_method *sus_step_method_by_name(const char *name); /* NULL: no such name, or NULL */
+/* The index of a method in the registry, or -1 (also for NULL): by name (for user input) and by
+ * type. */
 int sus_step_method_index(const char *name);
 int sus_step_method_index_of(const sus_stepper_type *type);
-/* "none", "matrix" or "quaternion": what a method's apply_full carries (stepper.h). */
+/* "none", "matrix" or "quaternion": what a method's apply_full carries (stepper.h); "?" for a
+ * value that is none of them. */
 const char *sus_step_attitude_name(sus_attitude_form form);
-/* "euler|midpoint|..." into buf: the names for usage lines and error messages. */
+/* How results of the method of type t run with reconstruction recon are labelled, from what the
+ * type says of itself: "NAME + RECON" when it follows the reconstruction it is given
+ * (follows_recon), else "NAME (FORM)" with the attitude form it carries (sus_step_attitude_name),
+ * "NAME" when it carries none. Into buf, cut to len - 1 characters; returns buf. NULL (nothing
+ * written) for a NULL buf or len 0; NULL and an empty buf for a NULL t or an unknown recon that
+ * the label would name. */
+const char *sus_step_method_label(const sus_stepper_type *t, sus_recon recon, char *buf, size_t len);
+/* "euler|midpoint|..." into buf: the names for usage lines and error messages, cut to len - 1
+ * characters. Returns buf, or NULL (nothing written) for a NULL buf or len 0; a NULL sep is "". */
 const char *sus_step_method_names(char *buf, unsigned long len, const char *sep);
 /* The registry as a table (build/methods.tsv): a header row, then one row per method with
  * name family order lambda_order implicit unknowns conserves_energy attitude follows_recon substeps
- * stability recon paper_ref source about. Returns 0, or -1 on a write error. */
+ * stability recon paper_ref source about. Returns 0, or -1 on a write error or a NULL fp. */
 int sus_step_methods_write_tsv(FILE *fp);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

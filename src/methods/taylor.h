@@ -5,6 +5,10 @@
 
 #include "stepper.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SUS_STEP_TAYLOR_MAX_ORDER 32
 
 /* The step of (w, R) of order p <= SUS_STEP_TAYLOR_MAX_ORDER: the w-step with E restored onto
@@ -33,5 +37,9 @@ int sus_step_taylor_adaptive_order(double tol);
 
 extern const sus_stepper_type sus_step_taylor8_type, sus_step_taylor10_type, sus_step_taylor12_type,
     sus_step_taylor16_type;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

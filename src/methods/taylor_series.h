@@ -11,6 +11,10 @@
 
 #include <math.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Pairs of doubles (GCC/Clang vector extension): both Cauchy products below are sums of a scalar
  * times a pair, so one vector multiply-add does the work of two. */
 typedef double v2d __attribute__((vector_size(16)));
@@ -144,5 +148,9 @@ static inline __attribute__((always_inline)) void dq_from(const taylor_series *t
     dq[2] = M[1];
     dq[3] = P[1];
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -17,24 +17,28 @@ static const char *prog = "suslov";
 
 /* ---- messages ---- */
 
-/* The message (which quotes user text: arguments, paths) on exactly one line: every control
- * character is escaped as \n, \t, \r or \xNN. */
+/* The message (which quotes user text: arguments, paths) on exactly one line of UTF-8: every
+ * control character is escaped as \n, \t, \r or \xNN, and so is every byte that is not part of a
+ * well-formed UTF-8 character. */
 static void say(const char *kind, const char *fmt, va_list ap, const char *suffix)
 {
     char msg[2048];
     vsnprintf(msg, sizeof msg, fmt, ap);
     fprintf(stderr, "%s: %s: ", prog, kind);
-    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
-        if (*p == '\n')
+    const size_t n = strlen(msg);
+    for (size_t i = 0, len; i < n; i += len ? len : 1) {
+        const unsigned char c = (unsigned char)msg[i];
+        len = sus_sys_utf8_len(msg + i, n - i);
+        if (c == '\n')
             fputs("\\n", stderr);
-        else if (*p == '\t')
+        else if (c == '\t')
             fputs("\\t", stderr);
-        else if (*p == '\r')
+        else if (c == '\r')
             fputs("\\r", stderr);
-        else if (*p < 0x20 || *p == 0x7f)
-            fprintf(stderr, "\\x%02x", *p);
+        else if (!len || c < 0x20 || c == 0x7f)
+            fprintf(stderr, "\\x%02x", c);
         else
-            fputc(*p, stderr);
+            fwrite(msg + i, 1, len, stderr);
     }
     fprintf(stderr, "%s\n", suffix);
 }
@@ -103,27 +107,6 @@ double cli_number(const char *opt, const char *s)
         cli_die("%s: %s is too small: it underflows to a subnormal number or zero "
                 "(smallest normal %.17g)", opt, cli_quote(s), DBL_MIN);
     return v;
-}
-
-long cli_count(const char *opt, const char *s)
-{
-    if (s[0] != '\0' && strspn(s, "0123456789") == strlen(s)) {
-        errno = 0;
-        const long v = strtol(s, NULL, 10);
-        if (errno == ERANGE)
-            cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
-        if (v <= 0)
-            cli_die("%s must be positive, got %ld", opt, v);
-        return v;
-    }
-    const double v = cli_number(opt, s);
-    if (v != floor(v))
-        cli_die("%s: %s is not a whole number", opt, cli_quote(s));
-    if (!(v >= 1.0))
-        cli_die("%s must be positive, got %.17g", opt, v);
-    if (!(v < 0x1p63)) /* (long)v is defined only below 2^63 = LONG_MAX + 1 */
-        cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
-    return (long)v;
 }
 
 void cli_list(const char *opt, const char *s, double *out, int n)
@@ -212,13 +195,14 @@ int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, cons
 
 /* ---- --help ---- */
 
+/* Lines of text, the first after `first`, the others after `indent`; an empty line stays empty. */
 static void help_lines(FILE *fp, const char *text, const char *first, const char *indent)
 {
     const char *p = text;
     for (int n = 0; *p || n == 0; n++) {
         const char *nl = strchr(p, '\n');
         const int len = nl ? (int)(nl - p) : (int)strlen(p);
-        fprintf(fp, "%s%.*s\n", n ? indent : first, len, p);
+        fprintf(fp, "%s%.*s\n", len == 0 ? "" : n ? indent : first, len, p);
         p = nl ? nl + 1 : p + len;
     }
 }
@@ -277,20 +261,47 @@ static void roff_text(FILE *fp, const char *s, int len)
     }
 }
 
-/* Lines joined by roff's filling; an empty line starts a paragraph. */
+/* The indentation of a line of section text: 4 (a description), 2 (kept as it is) or 0. */
+static int indent_of(const char *line)
+{
+    return strncmp(line, "    ", 4) == 0 ? 4 : strncmp(line, "  ", 2) == 0 ? 2 : 0;
+}
+
+/* Section text in roff (cli_section): prose filled, an empty line a new paragraph (.PP), lines
+ * indented by two kept as they are (.nf, indented), and a line followed by lines indented by four
+ * a tag (.TP) and its description, filled under it. */
 static void roff_body(FILE *fp, const char *text)
 {
+    enum { PROSE, KEPT, LIST } mode = PROSE;
     for (const char *p = text; *p;) {
         const char *nl = strchr(p, '\n');
-        const int len = nl ? (int)(nl - p) : (int)strlen(p);
-        if (len == 0)
+        const int len = nl ? (int)(nl - p) : (int)strlen(p), ind = len ? indent_of(p) : 0;
+        const char *next = nl ? nl + 1 : p + len;
+        if (mode == KEPT && (ind != 2 || len == 0)) {
+            fputs(".fi\n.RE\n", fp);
+            mode = PROSE;
+        }
+        if (len == 0) {
             fputs(".PP\n", fp);
-        else {
-            roff_text(fp, p, len);
+            mode = PROSE;
+        } else if (ind == 2) {
+            fputs(mode == KEPT ? "" : mode == LIST ? ".PP\n.RS 4\n.nf\n" : ".RS 4\n.nf\n", fp);
+            mode = KEPT;
+        } else if (ind == 0 && *next && indent_of(next) == 4) {
+            fputs(".TP\n.B ", fp);
+            mode = LIST;
+        } else if (ind == 0 && mode == LIST) {
+            fputs(".PP\n", fp);
+            mode = PROSE;
+        }
+        if (len) {
+            roff_text(fp, p + ind, len - ind);
             fputc('\n', fp);
         }
-        p = nl ? nl + 1 : p + len;
+        p = next;
     }
+    if (mode == KEPT)
+        fputs(".fi\n.RE\n", fp);
 }
 
 void cli_man(const cli_spec *spec, const char *version, FILE *fp)
@@ -305,10 +316,10 @@ void cli_man(const cli_spec *spec, const char *version, FILE *fp)
     fputs(".SH OPTIONS\n", fp);
     for (int i = 0; i < spec->nopts; i++) {
         const cli_option *o = &spec->opts[i];
-        fputs(".TP\n.B ", fp);
+        fputs(o->arg ? ".TP\n.BI \"" : ".TP\n.B ", fp); /* the name bold, its argument italic */
         roff_text(fp, o->name, (int)strlen(o->name));
         if (o->arg) {
-            fputs(" \" \"", fp);
+            fputs(" \" ", fp);
             roff_text(fp, o->arg, (int)strlen(o->arg));
         }
         fputc('\n', fp);

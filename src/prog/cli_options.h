@@ -17,9 +17,13 @@ struct cli_option {
     void (*more)(FILE *fp, int man);
 };
 
+/* A section's body: lines separated by '\n', printed as they are by --help. The manual page
+ * fills prose lines; an empty line starts a new paragraph; a line indented by two spaces is kept
+ * as it is (a command, a CSV header); a line followed by lines indented by four is a tag (a
+ * column, a status, a variable) and those lines its description. */
 typedef struct {
     const char *title; /* "EXIT STATUS" */
-    const char *body;  /* lines separated by '\n'; an empty line starts a new paragraph */
+    const char *body;
 } cli_section;
 
 typedef struct {

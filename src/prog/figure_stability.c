@@ -101,46 +101,15 @@ static int write_csv(const stab_fig *f, const char *dir)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* The caption, with every method's linear stability limit. */
+static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t caplen)
 {
-    sus_model model;
-    sus_exact paper;
-    const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);
-    if (setup != 0)
-        return setup;
-    stab_fig *f = malloc(sizeof *f);
-    if (!f)
-        return 1;
-    f->nm = sus_step_method_count();
-    f->res = calloc((size_t)f->nm, sizeof *f->res);
-    f->limit = calloc((size_t)f->nm, sizeof *f->limit);
-    if (!f->res || !f->limit)
-        return 1;
-    for (int i = 0; i < NH; i++)
-        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
-    int unclassified = 0;
-    for (int m = 0; m < f->nm; m++) {
-        sus_exp_stability_map(&paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
-        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
-        for (int j = 0; j < NH * NANGLE; j++) {
-            const sus_exp_stab_result *r = &f->res[m][j];
-            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
-        }
-    }
-    if (unclassified) {
-        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
-                unclassified);
-        return 1;
-    }
-    if (write_csv(f, argv[2]) != 0)
-        return 1;
     char limits[1024] = "";
     for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
         len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
                         sus_step_method_get(m)->type->name, f->limit[m]);
-    char cap[4096];
     snprintf(
-        cap, sizeof cap,
+        cap, caplen,
         "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
         "src/exp/stability.h).\n"
         "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
@@ -170,6 +139,51 @@ int main(int argc, char **argv)
         "equation meets a fold of its branch on one start (regularity lost): two roots meet and vanish\n"
         "(claims ledger, stability-fold-gauss4).\n"
         "Data: data/stability.csv.\n",
-        paper.k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+        paper->k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+}
+
+/* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h.
+ * Returns the number of runs that ended with a non-finite error but no failure class. */
+static int run_maps(stab_fig *f, const sus_exact *paper)
+{
+    for (int i = 0; i < NH; i++)
+        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
+    int unclassified = 0;
+    for (int m = 0; m < f->nm; m++) {
+        sus_exp_stability_map(paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
+        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
+        for (int j = 0; j < NH * NANGLE; j++) {
+            const sus_exp_stab_result *r = &f->res[m][j];
+            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+        }
+    }
+    return unclassified;
+}
+
+int main(int argc, char **argv)
+{
+    sus_model model;
+    sus_exact paper;
+    const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);
+    if (setup != 0)
+        return setup;
+    stab_fig *f = malloc(sizeof *f);
+    if (!f)
+        return 1;
+    f->nm = sus_step_method_count();
+    f->res = calloc((size_t)f->nm, sizeof *f->res);
+    f->limit = calloc((size_t)f->nm, sizeof *f->limit);
+    if (!f->res || !f->limit)
+        return 1;
+    const int unclassified = run_maps(f, &paper);
+    if (unclassified) {
+        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
+                unclassified);
+        return 1;
+    }
+    if (write_csv(f, argv[2]) != 0)
+        return 1;
+    char cap[4096];
+    caption(f, &paper, cap, sizeof cap);
     return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
 }

@@ -32,6 +32,8 @@ typedef struct {
     long blow_k;
     double blow_t;
     int all;              /* write every row handed over (a tolerance-driven run's rows) */
+    int renumber;         /* k := the row's index (--every-time: t = k DT), not the driver's step */
+    long row;             /* rows written so far, when renumbering */
     int have_pending;     /* `pending` is the last good row and was not written */
     sus_row pending;
 } csv_ctx;
@@ -59,6 +61,11 @@ static int take_row(void *vctx, const sus_row *r)
         ctx->blow_k = r->k;
         ctx->blow_t = r->t;
         return 1;
+    }
+    if (ctx->renumber) { /* the driver's k repeats (rows between two accepted steps share it) */
+        sus_row own = *r;
+        own.k = ctx->row++;
+        return print_row(ctx, &own);
     }
     if (ctx->all)
         return print_row(ctx, r);
@@ -148,7 +155,8 @@ static int run_tol(const suslov_args *a, FILE *fp, sus_run_report *report, csv_c
 {
     const sus_tol_config cfg = {&a->model, a->method->type, a->tol, a->t_end, a->every_time,
                                 SUSLOV_TOL_MAX_STEPS};
-    *ctx = (csv_ctx){.fp = fp, .m = &a->model, .all = 1, .tick_mask = ~0u};
+    *ctx = (csv_ctx){.fp = fp, .m = &a->model, .all = 1, .renumber = a->every_time > 0.0,
+                     .tick_mask = ~0u};
     const int rc = sus_run_tol(&cfg, a->w0, take_row, ctx, report);
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
         report->step = ctx->blow_k;
@@ -195,10 +203,35 @@ static int write_failed(sus_sys_atomic_file *af, const char *output)
     return EXIT_WRITE;
 }
 
+/* Exit 3. A file that would be renamed into place is not: the temporary is discarded and the
+ * target left as it was (all or nothing), which the line says. Stdout, a device or a pipe has
+ * its rows already, the last good step included: a last comment line marks them incomplete. */
+static int solver_failed(sus_sys_atomic_file *af, const suslov_args *a, int rc,
+                         const sus_run_report *rep)
+{
+    char msg[1024], err[1024];
+    failure_message(msg, sizeof msg, a->stepper ? a->stepper->name : "exact", rc, rep);
+    if (!af->in_place) {
+        sus_sys_atomic_file_abort(af);
+        cli_error("%s; --output %s %s", msg, cli_quote(a->output),
+                  af->existed ? "is left as it was" : "was not created");
+        return EXIT_SOLVER;
+    }
+    if (a->header && fprintf(af->fp, "# incomplete: the run stopped with exit status 3: %s\n",
+                             msg) < 0)
+        return write_failed(af, a->output);
+    if (sus_sys_atomic_file_commit(af, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return EXIT_WRITE;
+    }
+    cli_error("%s", msg);
+    return EXIT_SOLVER;
+}
+
 int main(int argc, char **argv)
 {
     suslov_args a;
-    char err[1024], msg[1024];
+    char err[1024];
     suslov_cli_parse(&a, argc, argv);
     gsl_set_error_handler_off();
     sus_sys_atomic_file af;
@@ -221,17 +254,11 @@ int main(int argc, char **argv)
     const int rc = run(&a, af.fp, &report, &ctx);
     if (rc == SUS_RUN_STOPPED)
         return write_failed(&af, a.output);
-    if (rc != SUS_RUN_OK) {
-        failure_message(msg, sizeof msg, a.stepper ? a.stepper->name : "exact", rc, &report);
-        if (a.header && fprintf(af.fp, "# incomplete: the run stopped with exit status 3: %s\n", msg) < 0)
-            return write_failed(&af, a.output);
-    }
+    if (rc != SUS_RUN_OK)
+        return solver_failed(&af, &a, rc, &report);
     if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         cli_error("%s", err);
         return EXIT_WRITE;
     }
-    if (rc == SUS_RUN_OK)
-        return 0;
-    cli_error("%s", msg);
-    return EXIT_SOLVER;
+    return 0;
 }

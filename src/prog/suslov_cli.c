@@ -4,6 +4,7 @@
 #include "atomic_file.h"
 #include "cli_options.h"
 #include "dsp.h"
+#include "echo.h"
 #include "exact_run.h"
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
@@ -174,7 +175,9 @@ static const cli_option OPTIONS[] = {
                       "prints name, family, order, default reconstruction and description (a\n"
                       "table on a terminal, TSV otherwise)", set_method, more_methods},
     {"--eps", "H", "time step, H > 0", set_eps, NULL},
-    {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1", set_steps, NULL},
+    {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1, read exactly as written: 1e6 and\n"
+                     "0x10 are whole numbers, 2.0000000000000001 is refused (as for --every,\n"
+                     "--sweeps)", set_steps, NULL},
     {"--time", "T", "final time instead of --steps: T/H must be a whole number N (to 4\n"
                     "rounding units of T), else it is refused with the nearest valid T", set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0, NULL},
@@ -195,8 +198,9 @@ static const cli_option OPTIONS[] = {
                      "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
                      "after 10^6 steps short of T", set_tol, NULL},
     {"--every-time", "DT", "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
-                           "method's dense output (default: the end of every accepted step);\n"
-                           "T/DT <= 2^63 - 1, and a time within 4 rounding units of T is T",
+                           "method's dense output, k numbering them (default: the end of every\n"
+                           "accepted step, k counting the steps); T/DT <= 2^63 - 1, and a time\n"
+                           "within 4 rounding units of T is T",
      set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
     {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
@@ -210,43 +214,73 @@ static const cli_option OPTIONS[] = {
     {"--man", NULL, "print this text as a manual page (roff) and exit", show_man, NULL},
 };
 
+/* Section text (cli_options.h): prose is filled; a line indented by two spaces is kept as it is;
+ * a line followed by lines indented by four is a tag and its description. */
 static const cli_section SECTIONS[] = {
     {"OUTPUT",
      "Unless --no-header, #-comment lines first (version, command line, method, eps, steps,\n"
      "inertia, w0, units), then the CSV header\n"
-     "k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n"
-     "and one row for step 0, every K-th step and the last step, numbers in %.17g. Row 0 has\n"
-     "R = I and lambda = lambda(w0) from (LagMult) for every method. Non-finite numbers are\n"
-     "never printed. After a solver failure or blow-up the output keeps every row before it,\n"
-     "the last good step included, and (unless --no-header) a last line\n"
-     "# incomplete: ... naming the failure."},
+     "  k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n"
+     "and one row for step 0, every K-th step and the last step, numbers in %.17g; non-finite\n"
+     "numbers are never printed. The command line is quoted so that a shell runs it again: in\n"
+     "$'...' (bash, ksh, zsh) where an argument holds a control character or a byte that is\n"
+     "not UTF-8, so that the header is always one line of UTF-8. The columns:\n"
+     "k\n"
+     "    the row's index: the step k (t = k H); with --tol the accepted step k, and with\n"
+     "    --every-time DT the output time k (t = k DT, the last row at T): it always increases\n"
+     "t\n"
+     "    the time\n"
+     "omega1,omega2,omega3\n"
+     "    the body angular velocity w (omega3 = 0)\n"
+     "lambda\n"
+     "    the multiplier; row 0 has lambda(w0) from (LagMult) for every method\n"
+     "energy\n"
+     "    E = <I_m w, w>/2\n"
+     "R11,...,R33\n"
+     "    the attitude R by rows; row 0 has R = I\n"
+     "After a solver failure or blow-up (exit 3), --output FILE is not written (see FILES); on\n"
+     "stdout, a device or a pipe the rows before it are written, the last good step included,\n"
+     "and (unless --no-header) a last line # incomplete: ... naming the failure."},
     {"FILES",
      "--output FILE replaces a regular FILE atomically: all or nothing, and no temporary file\n"
-     "outlives the program, even when killed. The new FILE keeps the mode of the old one (a new\n"
-     "one gets 0666 less the umask) but is owned by the user who ran suslov, and other hard\n"
-     "links keep the old contents. A read-only FILE is refused (as cp does without -f), and so\n"
-     "is one that the rename could not replace (a sticky directory owned by neither). A\n"
-     "symbolic link is written through to its target. A device, a pipe, - and a name of an\n"
-     "open descriptor (/dev/stdout, /dev/fd/N) are written in place, never renamed, at the\n"
+     "outlives the program, even when killed. A run that fails (exit 3) leaves an existing FILE\n"
+     "as it was and creates none. The new FILE keeps the mode of the old one (a new one gets\n"
+     "0666 less the umask) but is owned by the user who ran suslov, and other hard links keep\n"
+     "the old contents. A read-only FILE is refused (as cp does without -f), and so is one that\n"
+     "the rename could not replace: in a sticky directory owned by neither, or a mount point\n"
+     "(a bind-mounted file; redirect stdout to write it in place). A symbolic link, or a chain\n"
+     "of them, is written through to the file at its end, which is created if missing (as a\n"
+     "shell redirection does); the links stay links. A device, a pipe, - and a name of an open\n"
+     "descriptor (/dev/stdout, /dev/fd/N) are written in place, never renamed, at the\n"
      "descriptor's offset. Every condition that can be checked before the run (directory\n"
-     "writable, names within the system's limits with the temporary's suffix, permissions)\n"
-     "is checked before it."},
+     "writable, names within the system's limits with the temporary's suffix, permissions,\n"
+     "mount points) is checked before it."},
     {"EXIT STATUS",
-     "0 success; 1 output error (writing failed: disk full, inodes exhausted, I/O error);\n"
-     "2 bad input (one line; nothing written), --output FILE that permissions or a read-only\n"
-     "filesystem keep from being created included; 3 solver failure or blow-up (one line naming\n"
-     "the step and t, and for a failed solve its residual or error estimate); 128+n killed by\n"
-     "signal n."},
+     "0\n"
+     "    success\n"
+     "1\n"
+     "    output error (writing failed: disk full, inodes exhausted, I/O error)\n"
+     "2\n"
+     "    bad input (one line; nothing written), --output FILE that permissions or a read-only\n"
+     "    filesystem keep from being created included\n"
+     "3\n"
+     "    solver failure or blow-up: one line naming the step and t, for a failed solve its\n"
+     "    residual or error estimate, and whether --output FILE was left as it was\n"
+     "128+n\n"
+     "    killed by signal n"},
     {"ENVIRONMENT",
-     "NO_COLOR (non-empty) and TERM=dumb: the progress line uses no escape sequence.\n"
-     "SUSLOV_NO_O_TMPFILE (non-empty, for tests): use a named temporary file instead of an\n"
-     "unnamed one; every catchable fatal signal then removes it.\n"
-     "SUSLOV_PROGRESS_AFTER=S (for tests): show progress after S seconds instead of 1."},
+     "NO_COLOR (non-empty), TERM=dumb\n"
+     "    the progress line uses no escape sequence\n"
+     "SUSLOV_NO_O_TMPFILE (non-empty, for tests)\n"
+     "    use a named temporary file instead of an unnamed one; every catchable fatal signal\n"
+     "    then removes it\n"
+     "SUSLOV_PROGRESS_AFTER=S (for tests)\n"
+     "    show progress after S seconds instead of 1"},
     {"EXAMPLES",
-     "suslov --method variational --eps 1 --time 200 --every 10\n"
-     "suslov --method exact --eps 1e-3 --time 60 --every 100 --output data/exact.csv\n"
-     "suslov --method taylor-adaptive --tol 1e-10 --time 50 --every-time 0.5\n"
-     "suslov --method list"},
+     "  suslov --method variational --eps 1 --time 200 --every 10\n"
+     "  suslov --method exact --eps 1e-3 --time 60 --every 100 --output data/exact.csv\n"
+     "  suslov --method taylor-adaptive --tol 1e-10 --time 50 --every-time 0.5\n"
+     "  suslov --method list"},
 };
 
 static const cli_spec SPEC = {
@@ -294,12 +328,15 @@ static void time_choice(char *buf, size_t len, double n, double eps)
 static long steps_for_time(double T, double eps)
 {
     const double n = round(T / eps); /* T / eps may be inf: caught below */
-    if (!(n >= 1.0))
-        cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1", T, eps, n);
+    char lo[64], hi[64];
+    if (!(n >= 1.0)) {
+        time_choice(hi, sizeof hi, 1.0, eps);
+        cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
+                T, eps, n, hi);
+    }
     if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
         cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n, LONG_MAX);
     if (fabs(n * eps - T) > 2.0 * DBL_EPSILON * T) {
-        char lo[64], hi[64];
         const double f = floor(T / eps);
         time_choice(lo, sizeof lo, f, eps);
         time_choice(hi, sizeof hi, f + 1.0, eps);
@@ -461,25 +498,46 @@ void suslov_cli_parse(suslov_args *a, int argc, char **argv)
 
 /* ---- the header ---- */
 
-/* An argument as a shell would need it, on one line: quoted when it holds anything beyond
- * [A-Za-z0-9_.,:/=+-], control characters escaped as \xNN. */
+/* 1 when s can stand raw inside single quotes on a line of UTF-8: no control character and no
+ * byte that is not part of a well-formed UTF-8 character. */
+static int quotable(const char *s, size_t n)
+{
+    for (size_t i = 0, len; i < n; i += len) {
+        const unsigned char c = (unsigned char)s[i];
+        if (!(len = sus_sys_utf8_len(s + i, n - i)) || c < 0x20 || c == 0x7f)
+            return 0;
+    }
+    return 1;
+}
+
+/* An argument as a shell reads it back, on one line of valid UTF-8 (so that the header can be
+ * parsed as text, and the line pasted into a shell runs the same command): bare when it holds
+ * only [A-Za-z0-9_.,:/=+-]; else in single quotes; else, when it holds a control character or a
+ * byte that is not UTF-8, in $'...' quoting with those bytes as \xNN (bash, ksh, zsh, busybox
+ * sh, and POSIX sh since 2024; not dash 0.5.12). */
 static void put_arg(FILE *fp, const char *s)
 {
-    const int plain =
-        *s &&
-        strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-") == strlen(s);
-    if (plain) {
+    const size_t n = strlen(s);
+    static const char BARE[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-";
+    if (n && strspn(s, BARE) == n) {
         fputs(s, fp);
         return;
     }
-    fputc('\'', fp);
-    for (const unsigned char *p = (const unsigned char *)s; *p; p++)
-        if (*p == '\'')
+    const int single = quotable(s, n);
+    fputs(single ? "'" : "$'", fp);
+    for (size_t i = 0, len; i < n; i += len) {
+        const unsigned char c = (unsigned char)s[i];
+        len = sus_sys_utf8_len(s + i, n - i);
+        if (c == '\'' && single)
             fputs("'\\''", fp);
-        else if (*p < 0x20 || *p == 0x7f)
-            fprintf(fp, "\\x%02x", *p);
+        else if ((c == '\'' || c == '\\') && !single)
+            fprintf(fp, "\\%c", c);
+        else if (!len || c < 0x20 || c == 0x7f)
+            fprintf(fp, "\\x%02x", c);
         else
-            fputc(*p, fp);
+            fwrite(s + i, 1, len, fp);
+        len = len ? len : 1;
+    }
     fputc('\'', fp);
 }
 
@@ -504,8 +562,11 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
         fprintf(fp, "# sweeps: the implicit equation solved by %d fixed-point sweeps, not Newton\n",
                 a->sweeps);
     if (a->tol > 0.0)
-        fprintf(fp, "# tol: %.17g, every time: %.17g (0: every accepted step), final time: %.17g\n", a->tol,
-                a->every_time, a->t_end);
+        fprintf(fp, "# tol: %.17g, every time: %.17g (%s), final time: %.17g\n", a->tol,
+                a->every_time,
+                a->every_time > 0.0 ? "k is the row's index: t = k DT, the last row at T"
+                                    : "0: a row at each accepted step, k counting them",
+                a->t_end);
     else
         fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
                 a->t_end);

@@ -2,6 +2,8 @@
 #include "atomic_file.h"
 
 #include "echo.h"
+#include "fatal_cleanup.h"
+#include "path_resolve.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -13,160 +15,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* ---- named temporaries removed on a fatal signal ---- */
-
-enum { SLOTS = 8 };
-/* Every catchable signal whose default action ends the process (besides the real-time ones,
- * added in a loop). The synchronous ones (a fault in the program) are handled but blocked only
- * around mkstemp (block_signals): a fault while blocked would kill without the handler. */
-static const int ASYNC_SIGNALS[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2,   SIGPIPE, SIGALRM,
-                                    SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO, SIGPWR,
-#ifdef SIGSTKFLT
-                                    SIGSTKFLT,
-#endif
-};
-static const int SYNC_SIGNALS[] = {SIGILL, SIGTRAP, SIGBUS, SIGFPE, SIGSEGV, SIGSYS};
-#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
-static char slot_name[SLOTS][4096];
-static volatile sig_atomic_t slot_used[SLOTS];
-
-/* Async-signal-safe: unlink, sigaction and raise only. The signal is blocked while its
- * handler runs, so raise() leaves it pending; it is delivered with the default action on
- * return and the process ends with the conventional status 128 + signo. */
 void sus_sys_atomic_file_remove_temporaries(void)
 {
-    for (int i = 0; i < SLOTS; i++)
-        if (slot_used[i])
-            unlink(slot_name[i]);
-}
-
-static void cleanup_and_die(int sig)
-{
-    sus_sys_atomic_file_remove_temporaries();
-    struct sigaction dfl;
-    memset(&dfl, 0, sizeof dfl);
-    dfl.sa_handler = SIG_DFL;
-    sigemptyset(&dfl.sa_mask);
-    sigaction(sig, &dfl, NULL);
-    raise(sig);
-}
-
-static void handle(int sig)
-{
-    struct sigaction old, sa;
-    /* Leave a signal that is ignored or already handled alone (nohup, the caller, a sanitizer). */
-    if (sigaction(sig, NULL, &old) != 0 || old.sa_handler != SIG_DFL)
-        return;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = cleanup_and_die;
-    sigfillset(&sa.sa_mask); /* no second signal in the middle of the cleanup */
-    sigaction(sig, &sa, NULL);
-}
-
-static void install_handlers(void)
-{
-    static int installed;
-    if (installed)
-        return;
-    installed = 1;
-    for (size_t i = 0; i < COUNT(ASYNC_SIGNALS); i++)
-        handle(ASYNC_SIGNALS[i]);
-    for (size_t i = 0; i < COUNT(SYNC_SIGNALS); i++)
-        handle(SYNC_SIGNALS[i]);
-    for (int s = SIGRTMIN; s <= SIGRTMAX; s++)
-        handle(s);
-}
-
-/* sync: the synchronous ones too, only around mkstemp and the naming of its slot (libc and a copy,
- * nothing of ours that can fault): the temporary exists before its slot names it, and a kill -FPE
- * sent in between would otherwise leave it. */
-static void block_signals(sigset_t *old, int sync)
-{
-    sigset_t set;
-    sigemptyset(&set);
-    for (size_t i = 0; i < COUNT(ASYNC_SIGNALS); i++)
-        sigaddset(&set, ASYNC_SIGNALS[i]);
-    for (size_t i = 0; sync && i < COUNT(SYNC_SIGNALS); i++)
-        sigaddset(&set, SYNC_SIGNALS[i]);
-    for (int s = SIGRTMIN; s <= SIGRTMAX; s++)
-        sigaddset(&set, s);
-    sigprocmask(SIG_BLOCK, &set, old);
-}
-
-/* With the signals blocked, so that the handler never sees a half-written name. */
-static int slot_take(const char *name)
-{
-    for (int i = 0; i < SLOTS; i++)
-        if (!slot_used[i]) {
-            snprintf(slot_name[i], sizeof slot_name[i], "%s", name);
-            slot_used[i] = 1;
-            return i;
-        }
-    return -1;
-}
-
-static void slot_release(int *slot)
-{
-    if (*slot >= 0)
-        slot_used[*slot] = 0;
-    *slot = -1;
-}
-
-/* ---- paths ---- */
-
-static void dir_of(const char *path, char *dir, size_t len)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        snprintf(dir, len, ".");
-    else if (slash == path)
-        snprintf(dir, len, "/");
-    else
-        snprintf(dir, len, "%.*s", (int)(slash - path), path);
-}
-
-/* N when s is "/dev/fd/N" or "/proc/self/fd/N" (or /dev/stdout, /dev/stderr), else -1. */
-static int fd_named(const char *s)
-{
-    static const char *const PREFIX[] = {"/dev/fd/", "/proc/self/fd/", "/proc/thread-self/fd/"};
-    if (strcmp(s, "/dev/stdout") == 0)
-        return 1;
-    if (strcmp(s, "/dev/stderr") == 0)
-        return 2;
-    for (size_t i = 0; i < COUNT(PREFIX); i++) {
-        const size_t n = strlen(PREFIX[i]);
-        char *end;
-        if (strncmp(s, PREFIX[i], n) != 0 || s[n] < '0' || s[n] > '9')
-            continue;
-        errno = 0;
-        const long fd = strtol(s + n, &end, 10);
-        if (*end == '\0' && errno == 0 && fd <= INT_MAX)
-            return (int)fd;
-    }
-    return -1;
-}
-
-/* The descriptor a path names, following its chain of symbolic links textually (readlink on
- * the descriptor's own magic link would jump to the file, losing the descriptor), or -1. */
-static int fd_of_path(const char *path)
-{
-    char cur[4096], link[4096], dir[4096];
-    snprintf(cur, sizeof cur, "%s", path);
-    for (int hops = 0; hops < 40; hops++) {
-        const int fd = fd_named(cur);
-        if (fd >= 0)
-            return fd;
-        const ssize_t n = readlink(cur, link, sizeof link - 1);
-        if (n < 0)
-            return -1;
-        link[n] = '\0';
-        dir_of(cur, dir, sizeof dir);
-        if (link[0] == '/')
-            snprintf(cur, sizeof cur, "%s", link);
-        else if ((size_t)snprintf(cur, sizeof cur, "%s/%s", dir, link) >= sizeof cur)
-            return -1;
-    }
-    return -1;
+    sus_sys_cleanup_remove_all();
 }
 
 /* A path as a message shows it (echo.h): at most PATH_ECHO_MAX characters, so that the two a
@@ -182,42 +33,6 @@ static int is_stdout(const char *path)
     return path == NULL || strcmp(path, "-") == 0;
 }
 
-/* The file a write to path replaces: path itself, or where its symbolic link points (a
- * dangling link is followed one level, so that writing creates its target, as a shell
- * redirection does). */
-static int resolve_target(const char *path, char *out, size_t len, char *err, size_t errlen)
-{
-    struct stat lsb;
-    if (lstat(path, &lsb) != 0 || !S_ISLNK(lsb.st_mode)) {
-        if ((size_t)snprintf(out, len, "%s", path) >= len)
-            goto too_long;
-        return 0;
-    }
-    char *real = realpath(path, NULL);
-    if (real) {
-        const int n = snprintf(out, len, "%s", real);
-        free(real);
-        if ((size_t)n >= len)
-            goto too_long;
-        return 0;
-    }
-    char link[4096], dir[4096];
-    const ssize_t n = readlink(path, link, sizeof link - 1);
-    if (n < 0) {
-        snprintf(err, errlen, "cannot read the link %s: %s", shown(path), strerror(errno));
-        return -1;
-    }
-    link[n] = '\0';
-    dir_of(path, dir, sizeof dir);
-    if ((size_t)(link[0] == '/' ? snprintf(out, len, "%s", link) : snprintf(out, len, "%s/%s", dir, link)) >=
-        len)
-        goto too_long;
-    return 0;
-too_long:
-    snprintf(err, errlen, "output path too long");
-    return -1;
-}
-
 /* A one-line reason in err; returns -1. */
 static int fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static int fail(char *err, size_t errlen, const char *fmt, ...)
@@ -229,6 +44,17 @@ static int fail(char *err, size_t errlen, const char *fmt, ...)
     return -1;
 }
 
+/* The file a write to path replaces: path itself, or the end of its chain of symbolic links
+ * (path_resolve.h; a dangling chain ends in the name that writing creates, as a shell
+ * redirection does). */
+static int resolve_target(const char *path, char *out, size_t len, char *err, size_t errlen)
+{
+    if (sus_sys_link_target(path, out, len) == 0)
+        return 0;
+    if (errno == ENAMETOOLONG)
+        return fail(err, errlen, "output path too long");
+    return fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
+}
 /* The target's name and the temporary's must fit the directory's limits. */
 static int check_names(const char *path, const char *target, const char *dir, char *err, size_t errlen)
 {
@@ -245,12 +71,18 @@ static int check_names(const char *path, const char *target, const char *dir, ch
     return 0;
 }
 
-/* Replacing an existing regular file: not a read-only one (as cp without -f), and in a sticky
- * directory only as the owner of the file or of the directory (else the rename fails). */
+/* Replacing an existing regular file: not the root of a mount (a bind-mounted file: the rename
+ * would fail with EBUSY after the run; it is refused rather than written in place, which would
+ * break all-or-nothing), not a read-only one (as cp without -f), and in a sticky directory only
+ * as the owner of the file or of the directory (else the rename fails). */
 static int check_replace(const char *path, const char *target, const struct stat *fsb, const char *dir,
                          char *err, size_t errlen)
 {
     struct stat dsb;
+    if (sus_sys_is_mount_root(target, dir))
+        return fail(err, errlen, "cannot replace %s: it is a mount point (a bind-mounted file), "
+                    "which no rename can replace; to write it in place, redirect stdout: "
+                    "--output - > FILE", shown(path));
     if (access(target, W_OK) != 0)
         return fail(err, errlen, "%s is read-only (%s): not replaced; remove it or make it writable first",
                     shown(path), strerror(errno));
@@ -269,7 +101,7 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
         return 0;
     if (path[0] == '\0')
         return fail(err, errlen, "the output path is empty");
-    const int fd = fd_of_path(path);
+    const int fd = sus_sys_fd_of_path(path);
     if (fd >= 0) {
         const int fl = fcntl(fd, F_GETFL);
         if (fl < 0 || (fl & O_ACCMODE) == O_RDONLY)
@@ -287,7 +119,7 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
         return access(target, W_OK) == 0
                    ? 0
                    : fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
-    dir_of(target, dir, sizeof dir);
+    sus_sys_dir_of(target, dir, sizeof dir);
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
         return fail(err, errlen, "cannot write %s: directory %s does not exist", shown(path), shown(dir));
     /* The file is created and renamed in its directory: that needs write and search. */
@@ -331,18 +163,7 @@ static int open_named(sus_sys_atomic_file *af, const char *dir)
         errno = ENAMETOOLONG;
         return -1;
     }
-    install_handlers();
-    sigset_t old;
-    block_signals(&old, 1);
-    const int fd = mkstemp(af->tmp);
-    const int saved = errno;
-    if (fd >= 0)
-        af->slot = slot_take(af->tmp);
-    else
-        af->tmp[0] = '\0';
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    errno = saved;
-    return fd;
+    return sus_sys_cleanup_mkstemp(af->tmp, &af->slot);
 }
 
 static mode_t mode_for(int exists, const struct stat *sb)
@@ -361,17 +182,18 @@ int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *er
     *af = (sus_sys_atomic_file){.path = is_stdout(path) ? NULL : path, .slot = -1};
     if (sus_sys_atomic_file_check(path, err, errlen) != 0)
         return -1;
-    const int dfd = is_stdout(path) ? -1 : fd_of_path(path);
+    const int dfd = is_stdout(path) ? -1 : sus_sys_fd_of_path(path);
     if (is_stdout(path) || dfd >= 0)
         return open_in_place(af, path, dfd, err, errlen);
     if (resolve_target(path, af->target, sizeof af->target, err, errlen) != 0)
         return -1;
     const int exists = stat(af->target, &sb) == 0;
+    af->existed = exists;
     if (exists && !S_ISREG(sb.st_mode))
         return open_in_place(af, path, -1, err, errlen);
     const mode_t mode = mode_for(exists, &sb);
     char dir[4096];
-    dir_of(af->target, dir, sizeof dir);
+    sus_sys_dir_of(af->target, dir, sizeof dir);
     int fd = -1;
     /* O_TMPFILE needs a way to name the file later: /proc/self/fd (or CAP_DAC_READ_SEARCH
      * for AT_EMPTY_PATH); without /proc use a named temporary from the start.
@@ -402,7 +224,7 @@ static int link_unnamed(sus_sys_atomic_file *af)
     char proc[64], dir[4096];
     const int fd = fileno(af->fp);
     snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
-    dir_of(af->target, dir, sizeof dir);
+    sus_sys_dir_of(af->target, dir, sizeof dir);
     for (int i = 0; i < 1000; i++) {
         if ((size_t)snprintf(af->tmp, sizeof af->tmp, "%s/%s%ld.%d", dir, SUS_SYS_ATOMIC_TMP_PREFIX,
                              (long)getpid(), i) >= sizeof af->tmp) {
@@ -443,7 +265,7 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
     const char *what = "writing";
     /* No signal between naming and renaming: a signal arriving now is handled after the
      * commit, and only a SIGKILL in these few microseconds can leave the linked name. */
-    block_signals(&old, 0);
+    sus_sys_cleanup_block(&old, 0);
     if ((fflush(af->fp) != 0) | ferror(af->fp)) {
         bad = 1;
         saved = errno;
@@ -466,7 +288,7 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
     if (bad && af->tmp[0])
         unlink(af->tmp);
     af->tmp[0] = '\0';
-    slot_release(&af->slot);
+    sus_sys_cleanup_forget(&af->slot);
     sigprocmask(SIG_SETMASK, &old, NULL);
     if (bad)
         snprintf(err, errlen, "%s %s failed: %s", what, shown(af->path), strerror(saved));
@@ -476,13 +298,13 @@ int sus_sys_atomic_file_commit(sus_sys_atomic_file *af, char *err, size_t errlen
 void sus_sys_atomic_file_abort(sus_sys_atomic_file *af)
 {
     sigset_t old;
-    block_signals(&old, 0);
+    sus_sys_cleanup_block(&old, 0);
     if (af->fp && af->fp != stdout)
         fclose(af->fp);
     if (af->tmp[0])
         unlink(af->tmp);
     af->tmp[0] = '\0';
-    slot_release(&af->slot);
+    sus_sys_cleanup_forget(&af->slot);
     af->fp = NULL;
     sigprocmask(SIG_SETMASK, &old, NULL);
 }

@@ -36,3 +36,31 @@ const char *sus_sys_echo_ring(const char *s, size_t n, size_t max, char quote)
     errno = saved;
     return e;
 }
+
+size_t sus_sys_utf8_len(const char *s, size_t n)
+{
+    const unsigned char *u = (const unsigned char *)s;
+    /* the sequence's length, and the range of its second byte (RFC 3629's table): the narrow
+     * ranges exclude overlong forms, surrogates and code points past U+10FFFF */
+    size_t len;
+    unsigned char lo = 0x80, hi = 0xBF;
+    if (u[0] < 0x80)
+        return 1;
+    if (u[0] < 0xC2 || u[0] > 0xF4)
+        return 0;
+    len = u[0] < 0xE0 ? 2 : u[0] < 0xF0 ? 3 : 4;
+    if (u[0] == 0xE0)
+        lo = 0xA0;
+    else if (u[0] == 0xED)
+        hi = 0x9F;
+    else if (u[0] == 0xF0)
+        lo = 0x90;
+    else if (u[0] == 0xF4)
+        hi = 0x8F;
+    if (n < len || u[1] < lo || u[1] > hi)
+        return 0;
+    for (size_t i = 2; i < len; i++)
+        if (!continuation(u[i]))
+            return 0;
+    return len;
+}

@@ -5,6 +5,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The first n bytes of s, whole when they hold at most max characters, else their first max
  * characters, "..." and their length: '0.000...' (2103 characters). Characters are counted as
  * UTF-8 (a continuation byte is no character of its own), so a cut never splits one. quote: the
@@ -17,5 +21,14 @@ char *sus_sys_echo(char *buf, size_t len, const char *s, size_t n, size_t max, c
 #define SUS_SYS_ECHO_RING 4
 #define SUS_SYS_ECHO_RING_MAX 100
 const char *sus_sys_echo_ring(const char *s, size_t n, size_t max, char quote);
+
+/* The length (1 to 4) of the well-formed UTF-8 character that the n > 0 bytes at s begin with, or
+ * 0 when they begin none: a stray continuation byte, a bad lead byte (0xC0, 0xC1, 0xF5-0xFF), a
+ * truncated sequence, an overlong form, a surrogate or a code point beyond U+10FFFF. */
+size_t sus_sys_utf8_len(const char *s, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,7 +8,9 @@
  *     changed or removed;
  *   - no temporary file (*.tmp.*) is ever left, whatever the status;
  *   - written rows have 16 fields and no nan/inf (a blow-up is exit 3, never printed), after
- *     the #-comment header lines; a file left by exit 3 ends with "# incomplete: ...".
+ *     the #-comment header lines, which are valid UTF-8 whatever bytes the arguments hold;
+ *   - on 3 an --output file is all or nothing: no file in the work directory is created,
+ *     changed or removed (rows of a failed run reach only stdout, a device or a pipe).
  * Besides argv it varies: both temporary-file modes; every catchable signal (SIGKILL only with
  * O_TMPFILE) sent mid-run; a run as the unprivileged user nobody (when the fuzzer is root)
  * against another user's files, a read-only file and a sticky directory; outputs to
@@ -71,6 +73,7 @@ static const char *const NUMBERS[] = {
     "0.1x", "", "  1", " ", "+1", "1e", "e5", "0x10", "1,5", "3", "17", "100", "-1e308", "1e-300", "4,5",
     "1e300", "1e155", "1e19", "1e150"};
 static const char *const INTEGERS[] = {
+    "2.0000000000000001", "9007199254740993e0", "0x1.8p1", "0x1.8p0", "1.5e1", "1e-400", "1e400", ".5e1",
     "1", "2", "3", "7", "10", "100", "1000", "0", "-1", "2.5", "9223372036854775807", "9223372036854775808",
     "-9223372036854775808", "1e3", "", " 5", "5 ", "0x10", "007", "4611686018427387904", "1e19",
     "9.2233720368547758e18", "9.2233720368547748e18", "1e6", "2e0", "1.5e1", "-0", "inf", "nan", "0x1p63"};
@@ -86,7 +89,7 @@ static const char *const OPTIONS[] = {"--method", "--eps", "--steps", "--time", 
 static const char *const OUTPUTS[] = {"out.csv", "keep.csv", "sub/x.csv", "missing/x.csv", "", "sub",
                                       "/dev/null", "link.csv", "dangling.csv", ".", "sub/", "ro/x.csv",
                                       "-", "/dev/stdout", "/dev/fd/1", "st/other.csv", "st/new.csv",
-                                      "rofile.csv", LONG250, LONG256};
+                                      "rofile.csv", LONG250, LONG256, "\xff\xfe.csv", "a\nb'\\.csv"};
 
 static void random_number(char *buf, size_t len)
 {
@@ -331,6 +334,29 @@ static long count_lines(const char *path, char *first, size_t flen)
     return n + (last != '\n'); /* an unterminated last line counts */
 }
 
+/* Well-formed UTF-8 (RFC 3629: no overlong form, surrogate or code point past U+10FFFF). */
+static int utf8_ok(const char *s)
+{
+    const unsigned char *u = (const unsigned char *)s;
+    while (*u) {
+        const int n = *u < 0x80   ? 1
+                      : *u < 0xC2 ? 0
+                      : *u < 0xE0 ? 2
+                      : *u < 0xF0 ? 3
+                      : *u < 0xF5 ? 4
+                                  : 0;
+        const unsigned lo = *u == 0xE0 ? 0xA0 : *u == 0xF0 ? 0x90 : 0x80;
+        const unsigned hi = *u == 0xED ? 0x9F : *u == 0xF4 ? 0x8F : 0xBF;
+        if (n == 0 || (n > 1 && (u[1] < lo || u[1] > hi)))
+            return 0;
+        for (int i = 2; i < n; i++)
+            if ((u[i] & 0xC0) != 0x80)
+                return 0;
+        u += n;
+    }
+    return 1;
+}
+
 static const char HEADER[] = "k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n";
 
 /* Rows complete (16 fields, newline-terminated) and finite. Reads at most 4 MB. */
@@ -345,8 +371,11 @@ static int rows_ok(const char *path, char *why, size_t len)
     }
     int ok = 1;
     while (ok && n < 10000 && fgets(line, sizeof line, fp)) {
-        if (line[0] == '#') /* the header's comment lines, and the trailer of exit 3 */
+        if (line[0] == '#') { /* the header's comment lines, and the trailer of exit 3 */
+            if (!utf8_ok(line))
+                ok = 0, snprintf(why, len, "a comment line is not valid UTF-8: %.200s", line);
             continue;
+        }
         n++;
         if (n == 1) {
             if (strcmp(line, HEADER) != 0)
@@ -385,7 +414,7 @@ static void print_args(FILE *fp)
     fputc('\n', fp);
 }
 
-static int output_ok(char *why, size_t len);
+static int output_ok(int code, char *why, size_t len);
 
 /* How a case is run: the temporary-file mode, a signal sent kill_after seconds into the run
  * (0: none; a run killed by it must have changed nothing and left no temporary), and as the
@@ -489,7 +518,12 @@ static int judge(int code, const char *before, const char *first, long errlines,
                  strcmp(before, after) ? "changed" : "unchanged");
         return 0;
     }
-    return !((code == 0 || code == 3) && !output_ok(why, len));
+    if (code == 3 && strcmp(before, after) != 0) {
+        snprintf(why, len, "exit 3 but files in the work directory changed (a failed run writes "
+                           "no file)");
+        return 0;
+    }
+    return !((code == 0 || code == 3) && !output_ok(code, why, len));
 }
 
 static int run_case(const run_mode *rm, char *why, size_t len)
@@ -516,7 +550,7 @@ static int run_case(const run_mode *rm, char *why, size_t len)
         snapshot(after, sizeof after);
         /* A signal that arrives during the commit is held until the file is in place (then
          * the file is complete); at any other time nothing may have changed. */
-        if (strcmp(before, after) != 0 && !output_ok(why, len)) {
+        if (strcmp(before, after) != 0 && !output_ok(0, why, len)) {
             snprintf(why, len, "killed by signal %d, but files were changed", rm->kill_sig);
             return 0;
         }
@@ -532,8 +566,9 @@ static int run_case(const run_mode *rm, char *why, size_t len)
 }
 
 /* Rows that were written, to stdout or to the file named after --output, are complete. A text
- * that is not CSV (--help, --man, --version, --method list) is not judged here. */
-static int output_ok(char *why, size_t len)
+ * that is not CSV (--help, --man, --version, --method list) is not judged here, nor the file of a
+ * failed run (code 3), which must not exist (judge compares the directory before and after). */
+static int output_ok(int code, char *why, size_t len)
 {
     const char *o = NULL;
     int text = 0;
@@ -548,7 +583,7 @@ static int output_ok(char *why, size_t len)
     }
     char path[8192];
     const int to_stdout = !o || !strcmp(o, "-") || !strcmp(o, "/dev/stdout") || !strcmp(o, "/dev/fd/1");
-    if (text || (o && !strcmp(o, "/dev/null")))
+    if (text || (o && !strcmp(o, "/dev/null")) || (code == 3 && !to_stdout))
         return 1;
     if (to_stdout)
         snprintf(path, sizeof path, "%s/stdout", capdir);

@@ -6,10 +6,9 @@
 # Usage: test_animation_errors.sh BUILD_DIR. Last line: "test_animation_errors: N passed, N failed".
 set -u
 B=${1:-build}
+. "$(dirname "$0")/cli_testlib.sh"
 A="$B/animation"
-pass=0 fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+tmp=$T
 result() { # result OK MESSAGE
     if [ "$1" = 1 ]; then pass=$((pass + 1)); echo "PASS $2"; else fail=$((fail + 1)); echo "FAIL $2"; fi
 }

@@ -3,8 +3,8 @@
 # solver failures, constant memory. Usage: test_cli.sh BUILD_DIR
 set -u
 B=${1:-build}
-S="$B/suslov"
 . "$(dirname "$0")/cli_testlib.sh"
+S="$B/suslov"
 HEADER='k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33'
 
 # --help documents every option and exits 0
@@ -191,27 +191,43 @@ else
     skip "--output where root cannot create a file: needs root and a /sys/kernel that refuses files"
 fi
 
-# a solver failure: exit 3, message names step, t, residual; the file keeps the rows before it.
-# The 2-stage Gauss step from this w0 meets a fold of its branch (no root beyond it) at h = eps k
-# ~ 3.6 (the stability map, src/exp/stability.h): eps = 1000 is far beyond.
+# a solver failure: exit 3, message names step, t, residual; stdout keeps the rows before it,
+# and --output FILE is all or nothing: a new FILE is not created, an existing one is left as it
+# was (even with --no-header, where nothing could mark it incomplete), in both temporary modes.
+# The 2-stage Gauss step from W0 meets a fold of its branch (no root beyond it) at h = eps k ~ 3.6
+# (the stability map, src/exp/stability.h): eps = 1000 is far beyond.
 W0=0.27619224,-0.63956748
-"$S" --no-header --method gauss4 --eps 1000 --steps 10 --omega0 $W0 --output "$T/fail.csv" 2>"$T/err"; rc=$?
+"$S" --no-header --method gauss4 --eps 1000 --steps 10 --omega0 $W0 >"$T/fail.csv" 2>"$T/err"; rc=$?
 check "solver failure: exit 3 and the message names step 1, t = 1000 and the residual ($(cat "$T/err"))" \
     sh -c "test $rc = 3 && grep -q 'gauss4 step 1 (t = 1000) failed: .*fold' '$T/err' && grep -q 'residual' '$T/err'"
-check "solver failure: the output file holds the header and row 0, complete" \
-    sh -c "test \$(wc -l <'$T/fail.csv') = 2 && tail -1 '$T/fail.csv' | grep -q '^0,0,0.2761922399[0-9]*,-0.6395674799[0-9]*,0,.*,1\$' && ! ls '$T'/fail.csv.tmp.* >/dev/null 2>&1"
+check "solver failure: stdout holds the header and row 0, complete" \
+    sh -c "test \$(wc -l <'$T/fail.csv') = 2 && tail -1 '$T/fail.csv' | grep -q '^0,0,0.2761922399[0-9]*,-0.6395674799[0-9]*,0,.*,1\$'"
+for nt in "" 1; do
+    rm -rf "$T/ff"; mkdir "$T/ff"; echo good >"$T/ff/old.csv"
+    for f in old new; do
+        for h in --header --no-header; do
+            SUSLOV_NO_O_TMPFILE=$nt "$S" $h --method gauss4 --eps 1000 --steps 10 --omega0 $W0 \
+                --output "$T/ff/$f.csv" >"$T/out" 2>"$T/err_$f"; rc=$?
+            [ "$rc" = 3 ] || echo "rc $rc" >>"$T/err_$f"
+        done
+    done
+    check "solver failure${nt:+ (named temporary)}: an existing --output file is left as it was, a new one not created, no temporary, and the line says so ($(cat "$T/err_old"); $(cat "$T/err_new"))" \
+        sh -c "test \"\$(ls -A '$T/ff')\" = old.csv -a \"\$(cat '$T/ff/old.csv')\" = good -a ! -s '$T/out' &&
+               grep -q \"failed: .*residual.*; --output '.*old.csv' is left as it was\$\" '$T/err_old' &&
+               grep -q \"; --output '.*new.csv' was not created\$\" '$T/err_new'"
+done
 
-# a late solver failure, as a property (no step number pinned): from the stability map's start at
-# 290.6 degrees the 2-stage Gauss step's branch meets a fold, later the larger eps (the map,
-# src/exp/stability.h), so runs at eps = 700..1700 fail at some step S. Each failure must exit 3
-# with one line naming "gauss4 step S (t = S eps)", and the file must hold every row before S,
-# complete: k = 0..S-1 with --every 1; with --every 7 the rows 0, 7, 14, ... below S and the
-# last good step S-1.
+# a late solver failure, as a property (no step number pinned), on stdout: from the stability
+# map's start at 290.6 degrees the 2-stage Gauss step's branch meets a fold, the later the larger
+# eps (the map, src/exp/stability.h), so runs at eps = 700..1700 fail at some step S. Each failure
+# must exit 3 with one line naming "gauss4 step S (t = S eps)", and the file must hold every row
+# before S, complete: k = 0..S-1 with --every 1; with --every 7 the rows 0, 7, 14, ... below S
+# and the last good step S-1.
 nfail=0 nlate=0 bad_runs=""
 for e in 700 1000 1300 1700; do
     for w in 0.29884646991209679,-0.63120309801933794; do
         for K in 1 7; do
-            "$S" --no-header --method gauss4 --eps $e --steps 3000 --every $K --omega0=$w --output "$T/pf.csv" 2>"$T/err"; rc=$?
+            "$S" --no-header --method gauss4 --eps $e --steps 3000 --every $K --omega0=$w >"$T/pf.csv" 2>"$T/err"; rc=$?
             [ "$rc" = 0 ] && continue
             step=$(sed -n 's/^suslov: error: gauss4 step \([0-9]*\) (t = \([^)]*\)) failed: .*residual.*/\1/p' "$T/err")
             tt=$(sed -n 's/^suslov: error: gauss4 step [0-9]* (t = \([^)]*\)) failed: .*/\1/p' "$T/err")
@@ -234,11 +250,11 @@ check "solver failures: $nfail runs exit 3 with one line naming step S and t = S
 # blow-up: a non-finite state stops the run with exit 3, one line naming the step, t and
 # "blow-up"; the last good step is written (explicit Euler diverges for h = eps k > 2)
 for m in euler rk4; do
-    "$S" --no-header --method $m --eps 1e308 --steps 1 --output "$T/bu.csv" 2>"$T/err"; rc=$?
+    "$S" --no-header --method $m --eps 1e308 --steps 1 >"$T/bu.csv" 2>"$T/err"; rc=$?
     check "$m at --eps 1e308: exit 3, one line '$m blow-up at step 1 (t = 1e+308)', file has row 0 ($(cat "$T/err"))" \
         sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && grep -q '^suslov: error: $m blow-up at step 1 (t = 1e+308)' '$T/err' && test \"\$(tail -n +2 '$T/bu.csv' | cut -d, -f1)\" = 0"
 done
-"$S" --no-header --method euler --eps 30 --steps 100000 --every 100 --omega0 4,5 --output "$T/bu.csv" 2>"$T/err"; rc=$?
+"$S" --no-header --method euler --eps 30 --steps 100000 --every 100 --omega0 4,5 >"$T/bu.csv" 2>"$T/err"; rc=$?
 bstep=$(sed -n 's/^suslov: error: euler blow-up at step \([0-9]*\) (t = .*/\1/p' "$T/err")
 rows=$(tail -n +2 "$T/bu.csv" | cut -d, -f1 | tr '\n' ' ')
 check "euler at h = 4.3 > 2 blows up: exit 3, one line, --every 100 still writes rows 0 and the last good step S-1 ($rows; $(cat "$T/err"))" \

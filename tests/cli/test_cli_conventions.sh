@@ -5,8 +5,8 @@
 # README.md telling the same. Usage: test_cli_conventions.sh BUILD_DIR
 set -u
 B=${1:-build}
-S="$B/suslov"
 . "$(dirname "$0")/cli_testlib.sh"
+S="$B/suslov"
 bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, one line matching PATTERN, nothing on stdout
     d=$1 pat=$2; shift 2
     "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
@@ -105,11 +105,83 @@ check "--no-header: the CSV header is the first line" test "$(cat "$T/nh")" = k,
 "$S" --method euler --eps 0.1 --steps 1 --output "$T/q'u o.csv" 2>/dev/null
 check "the command line is quoted for the shell, on one line" grep -q "^# command: .* --output '.*q'\\\\''u o.csv'$" "$T/q'u o.csv"
 
-# a file left after exit 3 says so in a last comment line (not with --no-header: bare CSV); the
-# 2-stage Gauss step from this w0 meets a fold of its branch at h ~ 3.6 (src/exp/stability.h)
-"$S" --method gauss4 --eps 1000 --steps 10 --omega0 0.27619224,-0.63956748 --output "$T/fail.csv" 2>/dev/null; rc=$?
-check "after exit 3 the last line is '# incomplete: ...' naming the failure" \
+# the command line can be parsed as UTF-8 text and pasted into a shell: an --output name with a
+# newline, a control character, a byte that is not UTF-8 (0xff), a quote, a backslash and a valid
+# UTF-8 character; run again from the header's line by bash (and by sh when it knows $'...'), it
+# writes the same bytes to the same name
+name=$(printf 'a\nb\001\377 it'"'"'s \303\251\\.csv')
+mkdir -p "$T/q1" "$T/q2"
+(cd "$T/q1" && "$S" --method euler --eps 0.1 --steps 2 --output "$name") 2>"$T/err"; rc=$?
+cp "$T/q1/$name" "$T/q1.csv" # a name the checks below can quote
+line=$(grep -a '^# command: ' "$T/q1.csv")
+check "a hostile --output name: exit $rc, the header is valid UTF-8, one command line ($line)" \
+    sh -c "test $rc = 0 && iconv -f UTF-8 -t UTF-8 '$T/q1.csv' >/dev/null && test \$(grep -c '^# command: ' '$T/q1.csv') = 1"
+cmd=${line#\# command: suslov}
+for sh in bash sh; do
+    if command -v $sh >/dev/null && [ "$($sh -c "printf %s \$'\\x41'" 2>/dev/null)" = A ]; then
+        rm -f "$T/q2/"*
+        (cd "$T/q2" && $sh -c "\"\$0\" $cmd" "$S") 2>"$T/err"; rc=$?
+        check "the header's command line run again by $sh: exit $rc, the same file under the same name" \
+            cmp -s "$T/q1/$name" "$T/q2/$name"
+    else
+        skip "the header's command line in $sh: no $sh, or it has no \$'...' quoting"
+    fi
+done
+"$S" --method euler --eps 0.1 --steps 1 --output "$T/$(printf 'x\377y')" 2>/dev/null
+"$S" --method "$(printf 'x\377y')" --eps 0.1 --steps 1 2>"$T/err"
+check "a byte that is not UTF-8: escaped as \\xff in the header and the error line ($(cat "$T/err"))" \
+    sh -c "grep -q \"^# command: .*--output \\\$'.*x\\\\\\\\xffy'\\\$\" '$T/$(printf 'x\377y')' && grep -qF 'x\\xffy' '$T/err' && iconv -f UTF-8 -t UTF-8 '$T/err' >/dev/null"
+
+# rows left on stdout after exit 3 say so in a last comment line (not with --no-header: bare CSV)
+# (the 2-stage Gauss step from this w0 meets a fold of its branch at h ~ 3.6: src/exp/stability.h)
+"$S" --method gauss4 --eps 1000 --steps 10 --omega0 0.27619224,-0.63956748 >"$T/fail.csv" 2>/dev/null; rc=$?
+check "after exit 3 the last line of stdout is '# incomplete: ...' naming the failure" \
     sh -c "test $rc = 3 && tail -1 '$T/fail.csv' | grep -q '^# incomplete: .*gauss4 step 1 (t = 1000) failed'"
+
+# a count is read exactly as written: a double would round 2.0000000000000001 to 2 and
+# 9007199254740993 (2^53 + 1) to 2^53; whole numbers in any notation are taken exactly
+for opt in --steps --every --sweeps; do
+    for v in 2.0000000000000001 9007199254740993.5 1.00000000000000000000001e1 0x1.00000000000001p0; do
+        case $opt in --sweeps) args="--method midpoint --eps 0.1 --steps 2 --sweeps $v" ;;
+                     --every) args="--method exact --eps 0.1 --steps 3 --every $v" ;;
+                     *) args="--method exact --eps 0.1 --steps $v --every 1e18" ;; esac
+        bad "$opt $v" "not a whole number" $args
+    done
+done
+for v in 9007199254740993e0 9007199254740993 0x20000000000001 900719925474099.3e1 90071992547409930e-1; do
+    last=$("$S" --no-header --method exact --eps 1e-9 --steps "$v" --every "$v" | tail -1 | cut -d, -f1)
+    check "--steps $v --every $v: the last row is k = 9007199254740993 = 2^53 + 1 ($last)" test "$last" = 9007199254740993
+done
+k=$("$S" --no-header --method exact --eps 0.1 --steps 1.5e1 --every 0x5 | tail -n +2 | cut -d, -f1 | tr '\n' ' ')
+check "--steps 1.5e1 --every 0x5: rows 0 5 10 15 ($k)" test "$k" = "0 5 10 15 "
+k=$("$S" --no-header --method exact --eps 0.1 --steps 0x1.8p1 --every 0x.8p1 | tail -n +2 | cut -d, -f1 | tr '\n' ' ')
+check "--steps 0x1.8p1 --every 0x.8p1 (3 and 1): rows 0 1 2 3 ($k)" test "$k" = "0 1 2 3 "
+bad "--steps 922337203685477580.8e1 (2^63)" "out of range" --method exact --eps 1 --steps 922337203685477580.8e1
+bad "--steps 1e400" "out of range" --method exact --eps 1 --steps 1e400
+bad "--every -0x10" "must be positive" --method exact --eps 1 --steps 1 --every -0x10
+
+# --every-time: k is the row's index, strictly increasing, t = k DT (the driver's k, the accepted
+# step, repeats there: several rows fall in one step)
+"$S" --no-header --method taylor-adaptive --tol 1e-6 --time 2 --every-time 0.25 >"$T/et.csv"; rc=$?
+kt=$(tail -n +2 "$T/et.csv" | awk -F, '{ printf "%s:%s ", $1, ($2 == $1 * 0.25) }')
+check "--every-time 0.25 to 2: k = 0..8 with t = k DT on each row ($kt)" \
+    test "$rc" = 0 -a "$kt" = "0:1 1:1 2:1 3:1 4:1 5:1 6:1 7:1 8:1 "
+"$S" --method taylor-adaptive --tol 1e-6 --time 2 --every-time 0.25 | grep '^# tol:' >"$T/tl"
+check "--every-time: the header says what k is ($(cat "$T/tl"))" grep -q "k is the row's index: t = k DT" "$T/tl"
+
+# --time that is no whole number of steps is refused naming times that are accepted
+suggested="" broken=""
+for et in "7 3" "7 5" "3 10" "0.1 0.35" "0.3 1" "1e-3 0.0105" "2.5 1e-3" "0.7 123456789.1"; do
+    set -- $et
+    "$S" --method euler --eps "$1" --time "$2" >/dev/null 2>"$T/err"; rc=$?
+    times=$(grep -o -- '--time [0-9.e+-]*' "$T/err" | sed '1d; s/--time //')
+    [ "$rc" = 2 ] && [ -n "$times" ] || broken="$broken [--eps $1 --time $2: rc $rc, $(cat "$T/err")]"
+    for t in $times; do
+        "$S" --method exact --eps "$1" --time "$t" --every 1e18 >/dev/null 2>&1 || broken="$broken [--eps $1 --time $t]"
+        suggested="$suggested $1:$t"
+    done
+done
+check "a refused --time names valid times (--eps:--time$suggested)${broken:+; broken:$broken}" test -z "$broken"
 
 # progress without escape sequences under TERM=dumb and NO_COLOR
 if command -v script >/dev/null; then
@@ -126,10 +198,26 @@ fi
 "$S" --man >"$T/man"
 missing=""
 for o in $(grep -o '^  --[a-z0-9-]*' "$T/help"); do
-    grep -q "^\\.B $(echo "$o" | sed 's/-/\\\\-/g')" "$T/man" || missing="$missing $o"
+    grep -q "^\\.BI\\{0,1\\} \\{0,1\\}\"\\{0,1\\}$(echo "$o" | sed 's/-/\\\\-/g')\\( \\|\$\\)" "$T/man" || missing="$missing $o"
 done
 check "every option of --help has its entry in the manual page${missing:+ (missing:$missing)}" test -z "$missing"
-cmp -s "$T/man" "$B/man/suslov.1"
+# ... and reads as one: no groff warning; EXAMPLES one command a line, the CSV header a line of
+# its own, each exit status, column and variable a tag starting its line (not run together into
+# filled paragraphs)
+if command -v groff >/dev/null; then
+    groff -man -Tutf8 -ww -z "$T/man" 2>"$T/gw"
+    groff -man -Tutf8 -P-cbu -rLL=120n "$T/man" 2>/dev/null >"$T/man.txt"
+    starts() { grep -c "^ \{7,11\}$1" "$T/man.txt"; }
+    n_ex=$(sed -n '/^EXAMPLES/,$p' "$T/man.txt" | grep -c '^ \{7,11\}suslov --method [^ ]*\( --[a-z-]* [^ ]*\)*$')
+    n_tags=$(for t in '0 ' '1 ' '2 ' '3 ' '128+n ' 'k ' 't ' 'lambda ' 'energy ' NO_COLOR SUSLOV_NO_O_TMPFILE \
+                      SUSLOV_PROGRESS_AFTER 'omega1,omega2,omega3$' 'R11,...,R33$' \
+                      'k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33$'; do
+                 [ "$(starts "$t")" -ge 1 ] && echo "$t"; done | wc -l)
+    check "the manual page in groff: no warning ($(head -c 200 "$T/gw")), 4 examples on lines of their own ($n_ex), 15 tags and the CSV header each starting a line ($n_tags)" \
+        test ! -s "$T/gw" -a "$n_ex" = 4 -a "$n_tags" = 15
+else
+    skip "the manual page's layout: no groff"
+fi
 check "the built manual page $B/man/suslov.1 is the one suslov --man writes" cmp -s "$T/man" "$B/man/suslov.1"
 sed -n '/^<!-- suslov --help -->$/,/^<!-- end suslov --help -->$/p' README.md | sed '1,2d;$d' | sed '$d' >"$T/readme"
 check "README.md quotes suslov --help verbatim (its promises are --help's)" cmp -s "$T/help" "$T/readme"

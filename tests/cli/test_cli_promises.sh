@@ -6,8 +6,8 @@
 # exhausted inodes. Usage: test_cli_promises.sh BUILD_DIR
 set -u
 B=${1:-build}
-S="$B/suslov"
 . "$(dirname "$0")/cli_testlib.sh"
+S="$B/suslov"
 NOASANSIG=handle_segv=0:handle_sigbus=0:handle_sigfpe=0
 LONG="--eps 1e-9 --steps 9000000000000 --every 1000000000000" # hours: only a pre-run check ends it fast
 
@@ -24,7 +24,7 @@ printf 'old\n' >"$T/log2.csv"
 "$S" --no-header --method euler --eps 0.1 --steps 1 --output "$T/to_stdout" >>"$T/log2.csv"
 check "a link to /dev/stdout is written through the descriptor too" \
     sh -c "test \"\$(head -1 '$T/log2.csv')\" = old -a \$(wc -l <'$T/log2.csv') = 4 -a -L '$T/to_stdout'"
-(cd "$T" && "$OLDPWD/$S" --no-header --method euler --eps 0.1 --steps 1 --output - >"$T/dash.out")
+(cd "$T" && "$S" --no-header --method euler --eps 0.1 --steps 1 --output - >"$T/dash.out")
 check "--output - is stdout: no file named '-'" sh -c "test ! -e '$T/-' -a \$(wc -l <'$T/dash.out') = 3"
 "$S" --no-header --method euler --eps 0.1 --steps 1 --output /dev/stdout | cat >"$T/pipe.out"
 check "--output /dev/stdout into a pipe" test "$(wc -l <"$T/pipe.out")" = 3
@@ -44,7 +44,8 @@ check "a 256-byte file name is refused before the run: exit 2 ($(cat "$T/err"))"
 # mode-666 file of another user in a sticky directory (the rename would fail after the run)
 if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null && id nobody >/dev/null 2>&1 &&
    setpriv --reuid=nobody --regid=nogroup --clear-groups test -x "$S"; then
-    P=$(mktemp -d /tmp/suslov-perm.XXXXXX)
+    P=$(mktemp -d /tmp/suslov-perm.XXXXXX) # not in $T, which nobody cannot enter
+    at_exit 'rm -rf "$P"'
     chmod 1777 "$P"
     echo keep >"$P/other.csv"; chmod 666 "$P/other.csv"            # root's file, sticky dir of root
     asnobody() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@"; }
@@ -187,6 +188,7 @@ done
 "$S" --help >/dev/full 2>"$T/err"; rc=$?
 check "--help > /dev/full: exit 1, one line ($(cat "$T/err"))" sh -c "test $rc = 1 -a \$(wc -l <'$T/err') = 1"
 M=$(mktemp -d)
+at_exit 'umount "$M" 2>/dev/null; rmdir "$M" 2>/dev/null'
 if [ "$(id -u)" = 0 ] && mount -t tmpfs -o size=1m,nr_inodes=2 tmpfs "$M" 2>/dev/null; then
     : >"$M/a" 2>/dev/null
     "$S" --method euler --eps 0.1 --steps 2 --output "$M/x.csv" 2>"$T/err"; rc=$?
@@ -196,5 +198,41 @@ else
     skip "inodes: cannot mount a small tmpfs (needs root)"
 fi
 rmdir "$M"
+
+# 11. a bind-mounted output file (mount --bind src.csv mnt.csv; here from the same filesystem,
+# where the devices agree and only the mount-root attribute tells) cannot be renamed over (EBUSY):
+# refused before the run, exit 2, the file and its source untouched, no temporary left
+mkdir -p "$T/bm"
+echo source >"$T/bm/src.csv"; echo mounted-on >"$T/bm/mnt.csv"
+if [ "$(id -u)" = 0 ] && mount --bind "$T/bm/src.csv" "$T/bm/mnt.csv" 2>/dev/null; then
+    at_exit 'umount "$T/bm/mnt.csv" 2>/dev/null'
+    ln -s mnt.csv "$T/bm/to_mnt.csv"
+    for o in mnt.csv to_mnt.csv; do
+        timeout 20 "$S" --method rk4 $LONG --output "$T/bm/$o" >"$T/out" 2>"$T/err"; rc=$?
+        check "--output $o, a bind-mounted file$([ $o = to_mnt.csv ] && echo ' through a link'): refused before the run, exit $rc (2), one line ($(cat "$T/err")), nothing changed" \
+            sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q 'mount point' '$T/err' &&
+                   test \"\$(cat '$T/bm/mnt.csv' '$T/bm/src.csv' | tr '\n' ' ')\" = 'source source ' &&
+                   ! ls -A '$T/bm' | grep -q '^\\.tmp\\.'"
+    done
+    umount "$T/bm/mnt.csv"
+else
+    skip "bind-mounted --output: mount --bind is not permitted here (needs root)"
+fi
+
+# 12. a chain of links is written through to its end, also when it dangles (l1 -> l2 -> e/l3 ->
+# ../missing.csv creates missing.csv, as echo x > l1 does), the links staying links, in both
+# temporary modes; a loop of links is refused before the run
+for nt in "" 1; do
+    rm -rf "$T/ch"; mkdir -p "$T/ch/e"
+    ln -s l2 "$T/ch/l1"; ln -s e/l3 "$T/ch/l2"; ln -s ../missing.csv "$T/ch/e/l3"
+    SUSLOV_NO_O_TMPFILE=$nt "$S" --no-header --method rk4 --eps 0.1 --steps 3 --output "$T/ch/l1" 2>"$T/err"; rc=$?
+    check "--output l1 -> l2 -> e/l3 -> ../missing.csv${nt:+ (named temporary)}: exit $rc, missing.csv created with 5 lines, l1, l2, e/l3 still links ($(cat "$T/err"))" \
+        sh -c "test $rc = 0 -a -L '$T/ch/l1' -a -L '$T/ch/l2' -a -L '$T/ch/e/l3' -a -f '$T/ch/missing.csv' &&
+               test \$(wc -l <'$T/ch/missing.csv') = 5 -a \$(find '$T/ch' | wc -l) = 6"
+done
+ln -s loop_b "$T/ch/loop_a"; ln -s loop_a "$T/ch/loop_b"
+timeout 20 "$S" --method rk4 $LONG --output "$T/ch/loop_a" >"$T/out" 2>"$T/err"; rc=$?
+check "--output into a loop of links: refused before the run, exit $rc (2), one line ($(cat "$T/err"))" \
+    sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q 'symbolic links' '$T/err'"
 
 done_tests test_cli_promises

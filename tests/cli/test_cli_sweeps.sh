@@ -9,8 +9,8 @@
 # Usage: test_cli_sweeps.sh BUILD_DIR. Last line: "test_cli_sweeps: N passed, N failed".
 set -u
 B=${1:-build}
-S="$B/suslov"
 . "$(dirname "$0")/cli_testlib.sh"
+S="$B/suslov"
 # near A B TOL: |A - B| <= TOL, A a printed number (missing fails)
 near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a != "" && d <= t) }'; }
 

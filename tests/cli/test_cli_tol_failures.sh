@@ -7,18 +7,18 @@
 # 2. The step budget (SUSLOV_TOL_MAX_STEPS, 10^6) is spent: |w0| = 1.3e154 needs steps near
 #    1e-165 (the tolerance is absolute), so T = 1 would take about 1e164 steps (the timeout: without
 #    the budget this run would not end).
-# Either way the output keeps the rows before the failure and a last "# incomplete" line (the
-# convention of every exit-3 path, suslov --help, FILES).
+# Either way stdout keeps the rows before the failure and a last "# incomplete" line, and an
+# --output file is left as it was (the convention of every exit-3 path, suslov --help, OUTPUT).
 # Usage: test_cli_tol_failures.sh BUILD_DIR. Last line: "test_cli_tol_failures: N passed, N failed".
 set -u
 B=${1:-build}
-S="$B/suslov"
 . "$(dirname "$0")/cli_testlib.sh"
+S="$B/suslov"
 one_line() { [ "$(wc -l <"$1")" -eq 1 ]; }
 no_nan() { ! grep -qi 'nan\|inf' "$1"; }
 
 "$S" --method taylor-adaptive --tol 1e-10 --time 1 --inertia 1,0,0,0,1,0,1e200,0,1 --omega0 1e100,0 \
-    --output "$T/over.csv" 2>"$T/over.err"
+    >"$T/over.csv" 2>"$T/over.err"
 rc=$?
 check "retries run out: exit 3 (got $rc)" [ $rc -eq 3 ]
 check "retries run out: one line on stderr" one_line "$T/over.err"
@@ -28,14 +28,20 @@ check "retries run out: no NaN printed" no_nan "$T/over.err"
 check "retries run out: the output holds row 0 and the incomplete line" \
     sh -c "grep -c '^0,0,1e+100,0,0,' '$T/over.csv' | grep -qx 1 && tail -1 '$T/over.csv' | grep -q '^# incomplete'"
 
+echo previous >"$T/kept.csv"
 timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1 --omega0 1.3e154,0 --every-time 1 \
-    --output "$T/long.csv" 2>"$T/long.err"
+    --output "$T/kept.csv" 2>"$T/kept.err"
+rc_kept=$?
+timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1 --omega0 1.3e154,0 --every-time 1 \
+    >"$T/long.csv" 2>"$T/long.err"
 rc=$?
 check "step budget: exit 3 (got $rc)" [ $rc -eq 3 ]
 check "step budget: one line on stderr" one_line "$T/long.err"
 check "step budget: it names the step, t and the limit" \
     grep -q 'stopped before step 1000001 at t = [0-9.e+-]*: a --tol run takes at most 1000000 steps' "$T/long.err"
 check "step budget: the output ends with the incomplete line" sh -c "tail -1 '$T/long.csv' | grep -q '^# incomplete'"
+check "step budget with --output: exit $rc_kept, the file left as it was ($(cat "$T/kept.err"))" \
+    sh -c "test $rc_kept = 3 -a \"\$(cat '$T/kept.csv')\" = previous && grep -q 'is left as it was\$' '$T/kept.err'"
 # the paper's body to T = 1e4 (the long run, a few thousand steps) stays far inside the budget
 "$S" --method taylor-adaptive --tol 2.3e-16 --time 1e4 --every-time 1e4 --no-header >"$T/ok.csv"
 rc=$?

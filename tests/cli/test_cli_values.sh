@@ -17,10 +17,9 @@
 # Usage: test_cli_values.sh BUILD_DIR. Last line: "test_cli_values: N passed, N failed".
 set -u
 B=${1:-build}
+. "$(dirname "$0")/cli_testlib.sh"
 S="$B/suslov"
-pass=0 fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+tmp=$T
 result() { # result OK MESSAGE
     if [ "$1" = 1 ]; then pass=$((pass + 1)); echo "PASS $2"; else fail=$((fail + 1)); echo "FAIL $2"; fi
 }

@@ -33,6 +33,24 @@ static double wide_tolerance(double eps_hi)
     return ae < 1.0 && bend < 0.5 ? fmax(ORDER_TOL, bend) : 0.0;
 }
 
+/* The id of a line that holds a ratio of sizes, not an order, says so: "-ratio-" in place of
+ * "-order-" (sec6-size-order-X -> sec6-size-ratio-X), or after the family's first two words when
+ * the id names no order (sec6-per11-cayley-X -> sec6-per11-ratio-cayley-X). */
+static void ratio_id(const char *id, char *out, size_t len)
+{
+    const char *o = strstr(id, "-order-");
+    if (o) {
+        snprintf(out, len, "%.*s-ratio-%s", (int)(o - id), id, o + strlen("-order-"));
+        return;
+    }
+    const char *h = strchr(id, '-');
+    h = h ? strchr(h + 1, '-') : NULL;
+    if (h)
+        snprintf(out, len, "%.*s-ratio%s", (int)(h - id), id, h);
+    else
+        snprintf(out, len, "%s-ratio", id);
+}
+
 int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
                           const double *err, const double *need, int n, double floor_c, int floor_pow,
                           double shift, double expected, ledger_assert truth)
@@ -75,12 +93,13 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
     }
     if (need && !measurable)
         return 0;
-    char eref[128];
+    char eref[128], rid[96];
     snprintf(eref, sizeof eref, "%s%s", ref, strstr(ref, "extension") ? "" : " (extension)");
+    ratio_id(id, rid, sizeof rid);
     /* the numbers first: the quantity column holds 255 characters */
     snprintf(q, sizeof q, "[no slope (order %g at round-off); size / theory's lower estimate >= 0.1 at the "
                           "%d eps "
              "where the estimate is above 10 floors] %s", expected, measurable, what);
-    ledger_add_bound(id, eref, q, need ? carry : -INFINITY, 0.1, 1, LEDGER_EXTENSION);
+    ledger_add_bound(rid, eref, q, need ? carry : -INFINITY, 0.1, 1, LEDGER_EXTENSION);
     return 1;
 }

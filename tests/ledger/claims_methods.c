@@ -173,12 +173,16 @@ static void method_structure(const sus_step_method *me)
     snprintf(id, sizeof id, "method-w3-%s", me->type->name);
     snprintf(q, sizeof q, "max |w3| over %ld steps of eps %g, %s, worst of %d bodies (seed %u) %s: exactly 0",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, BODIES_COUNT, BODIES_SEED, w3.body);
-    ledger_add(id, ref, q, w3.value, 0.0, 0.0, truth);
+    /* every stepper writes w3 = 0.0 (the second equation of (DSP)): a check of the code, which
+     * no value of the paper's can fail, so not evidence */
+    ledger_add(id, ref, q, w3.value, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
-    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s + %s (%s), worst of %d bodies %s; "
-             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUS_RECON_NAMES[me->recon],
-             t->attitude == SUS_ATTITUDE_QUAT ? "unit quaternion" : "compensated product", BODIES_COUNT,
-             orth.body, orth.bound);
+    char label[64];
+    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s, R %s, worst of %d bodies %s; "
+             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS,
+             sus_step_method_label(t, me->recon, label, sizeof label),
+             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion" : "by compensated products",
+             BODIES_COUNT, orth.body, orth.bound);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
     if (!t->conserves_energy)
         return;

@@ -12,13 +12,17 @@ typedef enum {
     LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
     LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol */
     LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
-    LEDGER_ERRATUM         /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
+    LEDGER_ERRATUM,        /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
                             * (it contradicts the paper's own formulas, not its results) */
+    LEDGER_BY_CONSTRUCTION /* a line that holds because the code sets it so (every stepper writes
+                            * w3 = 0.0): it checks the implementation, cannot refute the paper and
+                            * is not counted as evidence; passes when it holds */
 } ledger_assert;
 
 /* Records one line. The verdict column follows from the numbers alone ("reproduced" or "not
  * reproduced" for a claim of the paper, "erratum" in place of "not reproduced" for an erratum,
- * "extension" otherwise); the check passes when it is
+ * "by construction" for a line the code makes hold, "extension" otherwise); the check passes
+ * when it is
  * what `truth` asserts, which the caller states and justifies next to the call. */
 #define ledger_add(...) ledger_add_at(__FILE__, __LINE__, __VA_ARGS__)
 void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref, const char *quantity,
@@ -32,16 +36,17 @@ void ledger_add_bound_at(const char *file, int line, const char *id, const char 
                          const char *quantity, double measured, double bound, int at_least,
                          ledger_assert truth);
 
-/* The same, for a measurement that may be +-infinity meaning "beyond every value tested" (a
- * stability limit that is never reached). Every other line fails on an infinite value. */
+/* The same, for a limit in the dimensionless step h that may be +infinity, meaning "none found
+ * up to the bound, the largest h tested" (a stability limit that is never reached): such a line
+ * prints "none found for h <= BOUND" as its measured value, in claims.tsv and in the companion,
+ * never inf. Every other line fails on an infinite value. */
 #define ledger_add_bound_unbounded(...) ledger_add_bound_unbounded_at(__FILE__, __LINE__, __VA_ARGS__)
 void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, const char *paper_ref,
                                    const char *quantity, double measured, double bound, int at_least,
                                    ledger_assert truth);
 
-/* The smallest h at which something happens, searched for up to `searched`: +INFINITY when none
- * was found, printed "none found for h <= searched" (TSV, table, LaTeX); the claim is measured
- * >= bound, so none found holds. */
+/* The same for the smallest h at which something happens, asserted >= bound, searched for up to
+ * `searched` (> bound): +infinity when none was found, printed "none found for h <= searched". */
 #define ledger_add_none_found(...) ledger_add_none_found_at(__FILE__, __LINE__, __VA_ARGS__)
 void ledger_add_none_found_at(const char *file, int line, const char *id, const char *paper_ref,
                               const char *quantity, double measured, double bound, double searched,
@@ -60,12 +65,15 @@ void ledger_number(const char *name, double value);
  *                comparison, e.g. $|m-1|\le 0.1$ or $m\ge b$), the id in CamelCase with digits
  *                spelled out, numbers for math mode; every ledger_number; and the counts
  *                \LedgerLines, \LedgerPassed, \LedgerFailed, \LedgerReproduced,
- *                \LedgerNotReproduced, \LedgerErratum, \LedgerExtension, \LedgerPaperLines;
+ *                \LedgerNotReproduced, \LedgerErratum, \LedgerExtension, \LedgerByConstruction,
+ *                \LedgerPaperLines (the lines that test the paper: not the extensions, and not
+ *                the lines that hold by construction);
  *   ledger.tex   the whole ledger as a longtable, the ASCII quantity strings typeset as math
  *                and paper references as \PaperRefOr / \PaperRefParen (resolved by the
  *                companion to the paper's published numbers, paper/labels.tsv);
  *   summary.tex  the lines that test the paper, one row per claim (a claim tested on several
- *                methods of the registry is one row).
+ *                methods of the registry is one row; no extension, and no line that holds by
+ *                construction).
  * Returns the number of failed checks, or -1 on a write error. */
 int ledger_finish(const char *tsv_path);
 

@@ -15,7 +15,8 @@ KIND_WORDS = {"proposition": "proposition", "propositions": "proposition", "prop
               "def": "definition", "algorithm": "algorithm", "figure": "figure", "fig": "figure"}
 NAMED_RE = re.compile(r"\b(%s)\.?\s*(\d+(?:\.\d+)?)(?:\s*[-\u2013]\s*(\d+(?:\.\d+)?))?"
                       % "|".join(KIND_WORDS), re.I)
-VERDICT_RANK = ("not reproduced", "erratum", "reproduced", "by definition", "extension", "not tested", "no ledger line")
+VERDICT_RANK = ("not reproduced", "erratum", "reproduced", "by definition", "by construction", "extension",
+                "not tested", "no ledger line")
 
 
 def read_tsv(path):

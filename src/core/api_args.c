@@ -1,0 +1,114 @@
+#include "api_args.h"
+
+#include <math.h>
+#include <string.h>
+
+int sus_args_model_ready(const sus_model *m)
+{
+    if (!m)
+        return 0;
+    double I[9];
+    sus_model ref;
+    for (int i = 0; i < 9; i++)
+        I[i] = m->I[i / 3][i % 3];
+    /* sus_model holds doubles only, so it has no padding that could differ between the two. */
+    return sus_model_init(&ref, I, NULL, 0) == 0 && memcmp(&ref, m, sizeof ref) == 0;
+}
+
+int sus_args_finite2(const double w[2])
+{
+    return w && isfinite(w[0]) && isfinite(w[1]);
+}
+
+/* The pointers and the model every run needs. */
+static const char *common(const void *cfg, const sus_model *model, const double w0[2],
+                          sus_emit_fn emit, const sus_run_report *report)
+{
+    if (!report)
+        return "report is NULL";
+    if (!cfg)
+        return "cfg is NULL";
+    if (!emit)
+        return "emit is NULL";
+    if (!w0)
+        return "w0 is NULL";
+    if (!sus_args_finite2(w0))
+        return "w0 is not finite";
+    if (!sus_args_model_ready(model))
+        return "cfg->model is NULL, or not a model sus_model_init filled, or changed since";
+    return NULL;
+}
+
+static const char *fixed_stepper(const sus_stepper_type *st, sus_recon recon)
+{
+    if (!st)
+        return "cfg->stepper is NULL";
+    if (st->tol)
+        return "cfg->stepper chooses its own steps: run it with sus_run_tol";
+    if (!st->apply && !st->apply_full)
+        return "cfg->stepper has neither apply nor apply_full";
+    if ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT)
+        return "cfg->recon is not one of sus_recon's values";
+    return NULL;
+}
+
+const char *sus_args_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
+                         const sus_run_report *report, int with_stepper)
+{
+    const char *why = common(cfg, cfg ? cfg->model : NULL, w0, emit, report);
+    if (!why && with_stepper)
+        why = fixed_stepper(cfg->stepper, cfg->recon);
+    if (why)
+        return why;
+    if (!(cfg->eps > 0.0) || !isfinite(cfg->eps))
+        return "cfg->eps is not a finite step > 0";
+    if (cfg->steps < 0)
+        return "cfg->steps is negative";
+    if (cfg->every < 1)
+        return "cfg->every is below 1";
+    if (!isfinite((double)cfg->steps * cfg->eps)) /* the last row's time */
+        return "cfg->steps * cfg->eps overflows";
+    return NULL;
+}
+
+static const char *tol_stepper(const sus_stepper_type *st, double every_time)
+{
+    if (!st)
+        return "cfg->stepper is NULL";
+    if (!st->tol)
+        return "cfg->stepper is a fixed-step method: run it with sus_run";
+    if (!st->tol->alloc || !st->tol->step || !st->tol->free)
+        return "cfg->stepper->tol lacks alloc, step or free";
+    if (every_time > 0.0 && !st->tol->dense)
+        return "cfg->stepper->tol has no dense output for every_time > 0";
+    return NULL;
+}
+
+const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
+                         const sus_run_report *report)
+{
+    const char *why = common(cfg, cfg ? cfg->model : NULL, w0, emit, report);
+    if (!why)
+        why = tol_stepper(cfg->stepper, cfg->every_time);
+    if (why)
+        return why;
+    if (!(cfg->tol > 0.0) || !isfinite(cfg->tol))
+        return "cfg->tol is not a finite tolerance > 0";
+    if (!(cfg->t_end >= 0.0) || !isfinite(cfg->t_end))
+        return "cfg->t_end is not a finite time >= 0";
+    if (!(cfg->every_time >= 0.0) || !isfinite(cfg->every_time))
+        return "cfg->every_time is not a finite interval >= 0";
+    /* the driver counts the rows every_time apart in a long */
+    if (cfg->every_time > 0.0 && !(cfg->t_end / cfg->every_time < 0x1p62))
+        return "cfg->t_end / cfg->every_time: more rows than a long counts";
+    if (cfg->max_steps < 0)
+        return "cfg->max_steps is negative";
+    return NULL;
+}
+
+int sus_args_refuse(sus_run_report *report, const char *why)
+{
+    if (report)
+        *report = (sus_run_report){.status = SUS_STEPPER_OK, .message = why};
+    return SUS_RUN_BAD_ARGUMENT;
+}

@@ -1,0 +1,32 @@
+/* The argument checks of the library's public functions (src/methods/suslov.h), in one place so
+ * that the run drivers refuse the same things with the same words. Not installed: the user sees
+ * only their result, a status and report->message. */
+#ifndef SUS_API_ARGS_H
+#define SUS_API_ARGS_H
+
+#include "driver.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* 1 when m is exactly what sus_model_init makes of m->I: not NULL, initialised, and not changed
+ * since (derived coefficients that disagree with I would make every step meaningless). */
+int sus_args_model_ready(const sus_model *m);
+/* 1 when w is not NULL and both its entries are finite. */
+int sus_args_finite2(const double w[2]);
+/* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is
+ * used) are good (driver.h lists what is checked), else the reason in one line. */
+const char *sus_args_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
+                         const sus_run_report *report, int with_stepper);
+/* The same for sus_run_tol. */
+const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
+                         const sus_run_report *report);
+/* A refused run: the report (if any) says why; returns SUS_RUN_BAD_ARGUMENT. */
+int sus_args_refuse(sus_run_report *report, const char *why);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

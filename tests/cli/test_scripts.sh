@@ -1,0 +1,79 @@
+#!/bin/sh
+# The test scripts' own promises: an interrupted test (INT, TERM or HUP, as make test gets from a
+# terminal or a job control) leaves no scratch file behind and dies of the signal, under dash
+# too, which runs no EXIT trap on a signal; and every CLI script works the same from a relative
+# or an absolute build directory. Usage: test_scripts.sh BUILD_DIR
+set -u
+B=${1:-build}
+. "$(dirname "$0")/cli_testlib.sh"
+LIB="$PWD/tests/cli/cli_testlib.sh"
+
+# interrupted SIG DESCRIPTION READY COMMAND...: runs COMMAND with TMPDIR in a fresh directory, in
+# a process group of its own (so that, as from a terminal, the signal reaches the script and its
+# child at once), with SIG at its default action (a background job would ignore SIGINT); once the
+# file READY exists, signals the group. The script must die of SIG (128 + n) and leave TMPDIR
+# empty.
+interrupted() {
+    sig=$1 d=$2 ready=$3; shift 3
+    X=$(mktemp -d "$T/tmp.XXXXXX")
+    rm -f "$ready"
+    TMPDIR=$X setsid env --default-signal=INT,TERM,HUP "$@" >/dev/null 2>&1 &
+    pid=$!
+    i=0
+    while [ ! -e "$ready" ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
+    kill -s "$sig" -- "-$pid"
+    { wait "$pid"; } 2>/dev/null; rc=$?
+    case $sig in HUP) want=129 ;; INT) want=130 ;; TERM) want=143 ;; esac
+    left=$(ls -A "$X" | tr '\n' ' ')
+    check "$d, interrupted by SIG$sig: status $rc ($want), nothing left in TMPDIR (${left:-empty})" \
+        test -e "$ready" -a "$rc" = "$want" -a -z "$left"
+}
+
+if command -v setsid >/dev/null && env --default-signal=INT true 2>/dev/null; then
+    # a script of the library: its scratch directory and an at_exit file outside it
+    cat >"$T/victim.sh" <<EOF
+B="$B"
+. "$LIB"
+extra=\$(mktemp)
+at_exit 'rm -f "\$extra"'
+: >"$T/ready"
+sleep 30
+EOF
+    for sig in INT TERM HUP; do
+        interrupted $sig "a script using cli_testlib.sh" "$T/ready" sh "$T/victim.sh"
+    done
+    # the runner itself, interrupted while it runs a (stand-in) unit test
+    printf '#!/bin/sh\n: >"%s"\nexec sleep 30\n' "$T/ready" >"$T/sleeper"
+    chmod +x "$T/sleeper"
+    mkdir -p "$T/b"
+    interrupted INT "tests/run.sh" "$T/ready" sh tests/run.sh "$T/b" test "$T/sleeper"
+else
+    skip "interrupts: needs setsid and env --default-signal"
+fi
+
+# Every test script that makes a scratch file cleans it up on a signal: through cli_testlib.sh, or
+# with its own INT TERM HUP trap.
+missing=""
+for f in tests/run.sh tests/cli/test_*.sh tests/build/*.sh; do
+    grep -q 'mktemp' "$f" || continue
+    grep -q '^\. .*cli_testlib\.sh"$' "$f" || grep -q 'for sig in INT TERM HUP' "$f" || missing="$missing $f"
+done
+check "every test script with a scratch file cleans it up on INT, TERM and HUP${missing:+ (not:$missing)}" \
+    test -z "$missing"
+
+# The build directory: cli_testlib.sh makes it absolute before a script uses it, so that the two
+# forms behave the same. Every script sources it before its first use of $B ...
+early=""
+for f in tests/cli/test_*.sh; do
+    awk '/^\. .*cli_testlib\.sh"$/ { exit 0 } /\$B|\$\{B/ && !/^B=\$\{1:-build\}$/ { exit 1 }' "$f" ||
+        early="$early $f"
+done
+check "every CLI script sources cli_testlib.sh before it uses \$B${early:+ (not:$early)}" test -z "$early"
+# ... and a script given either form runs the same checks with the same results
+rel=$(realpath --relative-to="$PWD" "$B")
+sh tests/cli/test_cli_sweeps.sh "$rel" >"$T/rel" 2>&1; rc1=$?
+sh tests/cli/test_cli_sweeps.sh "$B" >"$T/abs" 2>&1; rc2=$?
+check "test_cli_sweeps.sh with the build directory as $rel and as $B: both pass, the same lines" \
+    sh -c "test $rc1 = 0 -a $rc2 = 0 && cmp -s '$T/rel' '$T/abs'"
+
+done_tests test_scripts
