@@ -146,7 +146,8 @@ void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2])
     w[0] = (u1 - ref->l21 * w[1]) / ref->l11;
 }
 
-/* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? */
+/* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? 1 when it
+ * does, 0 when it does not, 2 when a step is refused as beyond its series' proved radius. */
 static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
 {
     const double theta = atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
@@ -156,7 +157,10 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     for (int k = 0; k < 4000; k++) {
         double x[3], lam;
         sus_stepper_stats s;
-        if (st->apply(ex->model, eps, w, x, &lam, &s) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        const int status = st->apply(ex->model, eps, w, x, &lam, &s);
+        if (status == SUS_STEPPER_DIVERGED)
+            return 2;
+        if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
             return 0;
         w[0] = x[0];
         w[1] = x[1];
@@ -164,19 +168,24 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     return fabs(sus_c(ex->model, w)) < c0;
 }
 
-double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi)
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
+                               int *radius_bound)
 {
-    if (!returns(ex, st, lo))
+    int at_hi = returns(ex, st, hi);
+    *radius_bound = 0;
+    if (returns(ex, st, lo) != 1)
         return NAN;
-    if (returns(ex, st, hi))
+    if (at_hi == 1)
         return INFINITY;
     while (hi - lo > 1e-4 * lo) {
         const double mid = 0.5 * (lo + hi);
-        if (returns(ex, st, mid))
+        const int r = returns(ex, st, mid);
+        if (r == 1)
             lo = mid;
         else
-            hi = mid;
+            hi = mid, at_hi = r;
     }
+    *radius_bound = at_hi == 2;
     return 0.5 * (lo + hi);
 }
 

@@ -54,8 +54,11 @@ void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2]);
 /* The linear stability limit of an explicit stepper at the attracting steady rotation,
  * measured: the largest h for which a start 1e-6 off the rotation returns to the line of
  * steady rotations (bisection to 1e-4 relative over [lo, hi]). Returns INFINITY when it still
- * returns at hi, NAN when it does not even return at lo. */
-double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi);
+ * returns at hi, NAN when it does not even return at lo. *radius_bound: 1 when what ends the
+ * returns there is a step refused as beyond its series' proved radius (a Taylor step), not an
+ * instability: the linear limit lies beyond the steps the method takes from there. */
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
+                               int *radius_bound);
 
 /* The run length for step h: long enough for the exact motion (k t = 40) and for a method
  * whose contraction per step is only 1 - O(1/h) (the A-stable midpoint rule at large h). */

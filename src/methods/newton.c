@@ -216,6 +216,18 @@ static double regularity(sus_residual_fn G, int n, const sus_model *m, double ep
     return pow(fabs(det), 2.0 / n) / f2;
 }
 
+/* The scale of the unknowns (values of w or its increments) from w: the largest |x| on w's energy
+ * ellipse, sqrt(2 E(w) / lambda_min(I_m)) (the steps keep E, or nearly), and at least |w|_inf. A
+ * near-singular I_m stretches the ellipse by cond(I_m)^(1/2), and the roots with it. */
+static double unknowns_scale(const sus_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    const double tr = 0.5 * (I[0][0] + I[1][1]), dif = 0.5 * (I[0][0] - I[1][1]);
+    const double lmax = tr + hypot(dif, I[0][1]), lmin = m->det_m / lmax; /* I_m symmetric, > 0 */
+    const double reach = sqrt(2.0 * sus_energy(m, w) / lmin);
+    return fmax(fmax(fabs(w[0]), fabs(w[1])), isfinite(reach) ? reach : 0.0);
+}
+
 /* |a - b|_inf over n entries. */
 static double moved_by(const double *a, const double *b, int n)
 {
@@ -227,14 +239,14 @@ static double moved_by(const double *a, const double *b, int n)
 
 /* One stage of the continuation: Newton at e from the prediction xp; the stage holds when Newton
  * converges within BRANCH_STAGE_ITS iterations to a root with det J > 0 (the sign at e = 0, where J
- * is I_m or blocks of it) no farther than BRANCH_JUMP |w| from xp (the unknowns are values of w
- * or its increments): a root reached that way is the one the prediction follows, not one of the
- * others (they lie O(|w|) away). */
+ * is I_m or blocks of it) no farther than BRANCH_JUMP times the unknowns' scale from xp: a root
+ * reached that way is the one the prediction follows, not one of the others (they lie that far
+ * away). */
 static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const double w[2], double *xp,
                  sus_stepper_stats *st, int *its)
 {
     double x[SUS_MAX_UNKNOWNS];
-    const double size = fmax(fabs(w[0]), fabs(w[1]));
+    const double size = unknowns_scale(m, w);
     for (int i = 0; i < n; i++)
         x[i] = xp[i];
     const int rc = newton_solve(G, n, m, e, w, x, st, BRANCH_STAGE_ITS);
@@ -266,7 +278,7 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
         const double en = fabs(eps - e) <= fabs(de) ? eps : e + de;
         if (e == 0.0) { /* the explicit prediction: accurate for a first stage short enough */
             guess(m, en, w, xp);
-            if (!(moved_by(xp, cur, n) <= BRANCH_JUMP * fmax(fabs(w[0]), fabs(w[1])))) {
+            if (!(moved_by(xp, cur, n) <= BRANCH_JUMP * unknowns_scale(m, w))) {
                 de *= BRANCH_SHRINK; /* too long to predict: shorter, without a Newton solve */
                 continue;
             }

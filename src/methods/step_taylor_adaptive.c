@@ -48,9 +48,9 @@
  *   w_inf moves R by at most sqrt 2 int |w - w_inf| dt <= sqrt 2 dev / k' (the Frobenius norm of
  *   w^ is sqrt 2 |w|): the step's local error is within SETTLE tol in both, the promise every
  *   other step keeps. SETTLE = 1/2 lies above the balance above, so a stiff run settles instead
- *   of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf (below the rounding of the state)
- *   settles at any tol: there c(w) is rounding noise, which would otherwise drive the stiff
- *   series. */
+ *   of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf, times the rounding of E that w_inf
+ *   inherits (up to cond(I_m)), settles at any tol: there c(w) is rounding noise, which would
+ *   otherwise drive the stiff series. */
 #include "taylor.h"
 #include "taylor_series.h"
 
@@ -86,6 +86,7 @@ struct sus_tol_work {
     double q0[4]; /* the attitude quaternion at its start */
     taylor_series t; /* its series, for dense output */
     double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
+    double floor; /* w within this of w_inf settles at any tol: the rounding of w_inf itself */
     int settled; /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
 };
 
@@ -166,10 +167,23 @@ static double rate(const sus_model *m, const double w[2])
     return m->b[0] * u0 + m->b[1] * u1;
 }
 
+/* The size of the terms E(w) sums, 1/2 sum |w_i I_ij w_j|, over E(w): the factor by which E's
+ * rounding exceeds u (up to cond(I_m) for a w along I_m's soft direction). */
+static double energy_terms_ratio(const sus_model *m, const double w[2], double e)
+{
+    const double (*I)[3] = m->I;
+    const double t =
+        0.5 * (fabs(I[0][0]) * w[0] * w[0] + (fabs(I[0][1]) + fabs(I[1][0])) * fabs(w[0] * w[1]) +
+               fabs(I[1][1]) * w[1] * w[1]);
+    return t / e;
+}
+
 /* The attracting steady rotation on E(w_0): of the two points of the ellipse on c(w) = 0,
  * +-s (-I32, I31), the one where g < 0. None (k_inf = 0) for w_0 = 0, for I31 = I32 = 0 (every
- * w is steady) and where g vanishes there too (no exponential approach to settle on). */
-static void steady_rotation(sus_tol_work *wk)
+ * w is steady) and where g vanishes there too (no exponential approach to settle on). Its
+ * rounding: s = sqrt(E0 / E(d)) carries half the relative roundings of the two energies, each a
+ * few u times the size of its terms over its value. */
+static void steady_rotation(sus_tol_work *wk, const double w0[2])
 {
     const sus_model *m = wk->m;
     const double d[2] = {-m->b[1], m->b[0]}, ed = sus_energy(m, d);
@@ -179,6 +193,8 @@ static void steady_rotation(sus_tol_work *wk)
     wk->w_inf[1] = s * d[1];
     const double k = -rate(m, wk->w_inf);
     wk->k_inf = k > 0.0 && isfinite(k) ? k : 0.0;
+    const double terms = fmax(energy_terms_ratio(m, w0, wk->e0), energy_terms_ratio(m, d, ed));
+    wk->floor = SETTLE_FLOOR * SUS_U * hypot(wk->w_inf[0], wk->w_inf[1]) * fmax(1.0, terms);
 }
 
 static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double w0[2])
@@ -186,7 +202,7 @@ static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double
     sus_tol_work *wk = malloc(sizeof *wk);
     if (!wk) return NULL;
     *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
-    steady_rotation(wk);
+    steady_rotation(wk, w0);
     return wk;
 }
 
@@ -231,7 +247,7 @@ static int settles(const sus_tol_work *wk, const double w[2])
 {
     if (!(wk->k_inf > 0.0)) return 0;
     const double dev = hypot(w[0] - wk->w_inf[0], w[1] - wk->w_inf[1]);
-    if (dev <= SETTLE_FLOOR * SUS_U * hypot(wk->w_inf[0], wk->w_inf[1])) return 1;
+    if (dev <= wk->floor) return 1;
     const double kw = -rate(wk->m, w);
     if (!(kw > 0.0)) return 0;
     return dev * fmax(1.0, 1.4142135623730951 / fmin(kw, wk->k_inf)) <= SETTLE * wk->tol;

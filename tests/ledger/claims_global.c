@@ -15,7 +15,10 @@
  * whatever a: a body changes a (its rate k and rotation |w| set it), which moves where the run of
  * one slope lies, not how far its fit can be from p. Candidates lie between the round-off of the
  * run (the larger of 1000 u and 100 N s u, times the size of the quantity along the motion) and
- * that size. w at order >= 10 with no run of one slope on a body (it reaches round-off first)
+ * that size. A body whose error is at round-off at all but at most two steps of the grid (and
+ * nowhere as large as the quantity) has no order to measure: it is named in the line, not
+ * measured (a line with no body measured fails). w at order >= 10
+ * with no run of one slope on a body (it reaches round-off first)
  * leaves that body out of the w line of a method that is not a series: the SO(3) line, which
  * integrates w, carries the order.
  *
@@ -127,15 +130,20 @@ typedef struct {
 } curve_fit;
 
 static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, const double *err, int n,
-                           double size, double kT)
+                           double size, double kT, int *at_roundoff)
 {
-    int cand[MAXN];
+    int cand[MAXN], ncand = 0, above = 0;
     for (int j = 0; j < n; j++) {
         const double N = kT / h[j];
         const double floor =
             fmax(SUS_EXP_FIT_FLOOR_REL * size, 100.0 * N * st->substeps * DBL_EPSILON * size);
         cand[j] = err[j] > floor && err[j] < size;
+        ncand += cand[j];
+        above += !(err[j] < size);
     }
+    /* at round-off at all but at most two steps, and never as large as the quantity: no order to
+     * measure (a fit needs three points); a curve that stays large is no such case */
+    *at_roundoff = n > 0 && ncand < 3 && above == 0;
     curve_fit f = {window_measure(h, err, cand, n), NAN};
     if (st->apply_order) /* a series: a lower estimate whatever the window (see the top) */
         f.w.plateau = 0;
@@ -146,7 +154,8 @@ static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, c
 typedef struct {
     curve_fit f;
     char body[16];
-    int bodies;
+    int bodies, skipped; /* measured; left out by the w rule at order >= 10 */
+    char roundoff[64];   /* the bodies at round-off wherever they step, named */
 } worst_fit;
 
 /* The line: the worst body's fit against the bound of its kind. */
@@ -154,7 +163,7 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
                        const worst_fit *wf)
 {
     const int p = q ? eo->so3[recon] : eo->p, paper = me->paper_ref != NULL;
-    char id[96], what[400], label[64];
+    char id[96], what[512], label[64];
     const curve_fit *f = &wf->f;
     if (q)
         snprintf(id, sizeof id, paper ? "global-so3-order-bodies-%s-%s" : "highorder-so3-order-%s-%s",
@@ -170,6 +179,11 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
              q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name, wf->bodies,
              wf->body, isnan(f->w.slope) ? 0.0 : f->w.eps_lo, isnan(f->w.slope) ? 0.0 : f->w.eps_hi,
              f->w.used, f->w.plateau ? ", one slope" : "; no one slope: lower estimate, >= p/2");
+    if (wf->roundoff[0]) { /* named, not measured: their errors are round-off at every step tried */
+        const size_t len = strlen(what);
+        snprintf(what + len, sizeof what - len, "; at round-off at all but <= 2 steps, no order: %s",
+                 wf->roundoff);
+    }
     const double slope = isnan(f->w.slope) ? -INFINITY : f->w.slope;
     const ledger_assert truth = paper && !q ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
     const char *ref = paper && q ? "TeoL (extension)" : eo->ref;
@@ -183,17 +197,26 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
 static void order_rows(const body_target *t, const sus_step_method *me, const expected_order *eo,
                        sus_recon recon, int with_w)
 {
-    worst_fit wf[2] = {{.f.margin = INFINITY}, {.f.margin = INFINITY}};
+    worst_fit wf[2] = {{.f.margin = INFINITY, .f.w.slope = NAN}, {.f.margin = INFINITY, .f.w.slope = NAN}};
     const long n_max = me->paper_ref ? N_PAPER : N_EXTENSION;
     for (int k = 0; k < BODIES_COUNT; k++) {
         double h[MAXN], ew[MAXN], eR[MAXN];
         const int n = error_curves(&t[k], me->type, recon, n_max, h, ew, eR);
         for (int q = with_w ? 0 : 1; q < 2; q++) {
             const int p = q ? eo->so3[recon] : eo->p;
+            int at_roundoff;
             const curve_fit f = fit_curve(me->type, p, h, q ? eR : ew, n, q ? SUS_EXP_SIZE_R : t[k].d->size_w,
-                                          t[k].d->ex.k * t[k].T);
-            if (!q && p >= 10 && !me->type->apply_order && (isnan(f.w.slope) || !f.w.plateau))
+                                          t[k].d->ex.k * t[k].T, &at_roundoff);
+            if (at_roundoff) {
+                const size_t len = strlen(wf[q].roundoff);
+                snprintf(wf[q].roundoff + len, sizeof wf[q].roundoff - len, "%s%s", len ? ", " : "",
+                         t[k].d->b.name);
+                continue;
+            }
+            if (!q && p >= 10 && !me->type->apply_order && (isnan(f.w.slope) || !f.w.plateau)) {
+                wf[q].skipped++;
                 continue; /* w reaches round-off before it has one slope: the SO(3) row */
+            }
             wf[q].bodies++;
             if (!(f.margin >= wf[q].f.margin)) {
                 wf[q].f = f;
@@ -201,8 +224,8 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
             }
         }
     }
-    for (int q = with_w ? 0 : 1; q < 2; q++)
-        if (wf[q].bodies)
+    for (int q = with_w ? 0 : 1; q < 2; q++) /* no line only where the rule above left out every body */
+        if (wf[q].bodies || !wf[q].skipped)
             order_line(me, eo, recon, q, &wf[q]);
 }
 

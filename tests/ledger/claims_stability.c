@@ -55,14 +55,26 @@ static double miss(double h, double expect)
 }
 
 /* The measured limit farthest from expect over the paper's body and the general ones: in h = eps k the
- * linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. */
-static double limit_over_bodies(const sus_stepper_type *st, double expect, char *worst, size_t len)
+ * linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. A body
+ * where the returns end because a step is refused beyond its series' proved radius (a Taylor
+ * step: step_taylor.c) before expect cannot show the linear limit: it is named in *bound (with the
+ * h where its steps stop), not measured. */
+static double limit_over_bodies(const sus_stepper_type *st, double expect, char *worst, size_t len,
+                                char *bound, size_t blen)
 {
     double far = NAN;
+    int measured = 0;
+    bound[0] = '\0';
     for (int k = 0; k < BODIES_COUNT; k++) {
         const claims_body *d = claims_body_get(k);
-        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX);
-        if (k == 0 || miss(h, expect) > miss(far, expect)) {
+        int radius_bound;
+        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX, &radius_bound);
+        if (radius_bound && h < expect) { /* named: its steps stop at the radius before the limit */
+            const size_t n = strlen(bound);
+            snprintf(bound + n, blen - n, "%s%s (h <= %.3g)", n ? ", " : "", d->b.name, h);
+            continue;
+        }
+        if (!measured++ || miss(h, expect) > miss(far, expect)) {
             far = h;
             snprintf(worst, len, "%s", d->b.name);
         }
@@ -74,7 +86,7 @@ static double limit_over_bodies(const sus_stepper_type *st, double expect, char 
  * every body. */
 static void boundary_claims(void)
 {
-    char id[64], q[256];
+    char id[64], q[512];
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
         const sus_stepper_type *st = me->type;
@@ -86,19 +98,22 @@ static void boundary_claims(void)
             continue;
         const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
         const double expect = isfinite(theory) ? theory : predicted; /* theory where it is known */
-        char worst[16];
-        const double measured = limit_over_bodies(st, expect, worst, sizeof worst);
+        char worst[16], bound[160], named[200] = "";
+        const double measured = limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
+        if (bound[0])
+            snprintf(named, sizeof named, "; its steps are refused beyond their proved radius first on %s",
+                     bound);
         snprintf(id, sizeof id, "stability-boundary-%s", st->name);
         if (isfinite(predicted)) {
             /* The bisection stops at 1e-4 relative and 4000 steps resolve |R(-h)| - 1 to ~1e-4; the
              * start 1e-6 off the rotation keeps nonlinear terms at 1e-6: 1e-3 h is ample. */
             snprintf(q, sizeof q,
                      "largest h = eps k at which a start 1e-6 off the steady rotation returns (bisection), "
-                     "against the linear limit |R(-h)| = 1 of %s (%s); the farthest of %d bodies (%s)",
+                     "against the linear limit |R(-h)| = 1 of %s (%s); the farthest of %d bodies (%s)%s",
                      st->name,
                      isfinite(theory) ? "R = sum_{n<=p} z^n/n!, theory"
                                       : "R(z) of src/methods/stability_fn.c",
-                     BODIES_COUNT, worst);
+                     BODIES_COUNT, worst, named);
             ledger_add(id, "(extension)", q, measured, expect, 1e-3 * expect, LEDGER_EXTENSION);
             /* and R(z) in src/ against the truncated exponential of theory (both root-found to
              * 1e-14; 1e-10 leaves room) */
