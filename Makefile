@@ -219,11 +219,12 @@ check: all $(BUILD)/claims.out
 
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
 # summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
-# starts), and prints its table (claims.out). A run that does not reach its summary line
+# starts), and the web edition's claims_tex.tsv (each line's quantity and test in that LaTeX),
+# and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
-              $(BUILD)/sensitivity.tex
+              $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
 	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
