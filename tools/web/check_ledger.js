@@ -30,7 +30,9 @@ function codeLines() {
 // The ids of the lines a reader sees: the card and its group not hidden.
 const visible = (page) => page.evaluate(
     () => Array.from(document.querySelectorAll('#ledger article.claim'))
-              .filter((r) => !r.hidden && !r.closest('details').hidden)
+              .filter(
+                  (r) => !r.hidden && !r.closest('details').hidden &&
+                      !r.closest('details.group').hidden)
               .map((r) => r.id.slice(6)));
 
 // With every group open: cards wider than the page, and cells cut off or out of the card.
@@ -109,7 +111,8 @@ async function checkNavigation(page, url, rows, col, check) {
     await page.goto(url + '#claim-' + id, {waitUntil: 'load'});
     const seen = await page.evaluate((i) => {
         const el = document.getElementById('claim-' + i), r = el.getBoundingClientRect();
-        return el.closest('details').open && r.top >= 0 && r.top < window.innerHeight;
+        return el.closest('details').open && el.closest('details.group').open && r.top >= 0 &&
+            r.top < window.innerHeight;
     }, id);
     check(seen, `ledger.html#claim-${id}: its group opens and the line is in view`);
     const want = rows.filter((r) => r[col('verdict')] === 'not reproduced').map((r) => r[0]);

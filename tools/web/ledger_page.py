@@ -13,6 +13,10 @@ from source_pages import page_of
 from statements import VERDICT_RANK, read_tsv
 
 BEYOND = ("beyond", "Beyond the paper: extensions and controls")
+# the column heads of a group's cards, seen on a wide screen only
+HEAD = ('<div class="claim head" aria-hidden="true"><span>ledger line</span>'
+        '<span>what is measured</span><span>measured <i>m</i></span><span>test</span>'
+        '<span>verdict</span></div>')
 
 
 def published_ref(site, text):
@@ -138,24 +142,41 @@ def tally(counts, link=True):
     return " &middot; ".join(one(v, n) for v, n in counts)
 
 
-def group_html(site, key, name, claims, tex):
+def verdict_counts(claims):
     counts = {}
     for c in claims:
         counts[c["verdict"]] = counts.get(c["verdict"], 0) + 1
-    counts = sorted(counts.items(),
-                    key=lambda kv: VERDICT_RANK.index(kv[0]) if kv[0] in VERDICT_RANK else 9)
+    return sorted(counts.items(),
+                  key=lambda kv: VERDICT_RANK.index(kv[0]) if kv[0] in VERDICT_RANK else 9)
+
+
+def by_stem(site, claims, tex):
+    """The lines beyond the paper, folded again by the first word of their ids (method-...,
+    highorder-...), in the order the ledger first meets each."""
+    stems = {}
+    for c in claims:
+        stems.setdefault(c["id"].split("-")[0], []).append(c)
+    return "".join('<details class="sub"><summary><span class="g-name">%s-&hellip;</span> '
+                   '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span>'
+                   '</summary>%s%s</details>'
+                   % (esc(stem), len(cs), "s" if len(cs) != 1 else "",
+                      tally(verdict_counts(cs), link=False), HEAD,
+                      "".join(card(site, c, tex) for c in cs))
+                   for stem, cs in stems.items())
+
+
+def group_html(site, key, name, claims, tex):
     link = ""
     if key in site.st.order:
         link = ("<p class='g-link'><a href='%s'>%s: the statement as printed, its verdict and its "
                 "evidence</a></p>" % (argument_pages.stmt_page(key), esc(name)))
     return ('<details class="group" id="g-%s"><summary><span class="g-name">%s</span>%s '
             '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span></summary>%s'
-            '<div class="claim head" aria-hidden="true"><span>ledger line</span>'
-            '<span>what is measured</span><span>measured <i>m</i></span><span>test</span>'
-            '<span>verdict</span></div>%s</details>'
+            '%s</details>'
             % (esc(key.replace(":", "-")), esc(name), secondary(key) if key != BEYOND[0] else "",
-               len(claims), "s" if len(claims) != 1 else "", tally(counts, link=False), link,
-               "".join(card(site, c, tex) for c in claims)))
+               len(claims), "s" if len(claims) != 1 else "", tally(verdict_counts(claims), False),
+               link, by_stem(site, claims, tex) if key == BEYOND[0] else
+               HEAD + "".join(card(site, c, tex) for c in claims)))
 
 
 def filters(site):

@@ -1,11 +1,13 @@
 // The ledger as a tool: free-text search (id, paper number such as "Proposition 5.1", words) and
 // filters by verdict, statement, method and test direction. The lines are grouped by statement,
-// each group folded: a search or a filter opens the groups that hold a match and hides the others;
-// a link to one line (#claim-ID) opens its group. The state is kept in the URL's query
+// each group folded (the lines beyond the paper folded again by the first word of their ids): a
+// search or a filter opens the groups that hold a match and hides the others; a link to one line
+// (#claim-ID) opens its groups. The state is kept in the URL's query
 // (?q=...&verdict=...) so that a view can be linked.
 'use strict';
 (function() {
 const groups = Array.from(document.querySelectorAll('#ledger details.group'));
+const subs = Array.from(document.querySelectorAll('#ledger details.sub'));
 const cards = Array.from(document.querySelectorAll('#ledger article.claim'));
 const q = document.getElementById('ledger-q');
 const selects = Array.from(document.querySelectorAll('select[data-filter]'));
@@ -26,13 +28,13 @@ function apply() {
     const words = q.value.toLowerCase().split(/\s+/).filter(Boolean);
     const active = words.length > 0 || selects.some((s) => s.value);
     let shown = 0;
-    for (const g of groups) {
+    for (const g of groups.concat(subs)) {
         let here = 0;
         for (const r of g.querySelectorAll('article.claim')) {
             r.hidden = !matches(r, words);
             here += !r.hidden;
         }
-        shown += here;
+        if (g.classList.contains('group')) shown += here;
         g.hidden = here === 0;
         if (active && here) g.open = true;
         const n = g.querySelector('.g-count');
@@ -51,10 +53,9 @@ function apply() {
 function follow() {
     const el = location.hash && document.getElementById(decodeURIComponent(location.hash.slice(1)));
     if (!el) return;
-    const g = el.closest('details.group');
-    if (g) {
-        g.hidden = false;
-        g.open = true;
+    for (let d = el.closest('details'); d; d = d.parentElement.closest('details')) {
+        d.hidden = false;
+        d.open = true;
     }
     if (el.hidden) {  // filtered out: show it anyway
         el.hidden = false;
@@ -67,8 +68,9 @@ q.value = params.get('q') || '';
 for (const s of selects) s.value = params.get(s.dataset.filter) || '';
 q.oninput = apply;
 for (const s of selects) s.onchange = apply;
-document.getElementById('ledger-open').onclick = () => groups.forEach((g) => g.open = !g.hidden);
-document.getElementById('ledger-close').onclick = () => groups.forEach((g) => g.open = false);
+const all = groups.concat(subs);
+document.getElementById('ledger-open').onclick = () => all.forEach((g) => g.open = !g.hidden);
+document.getElementById('ledger-close').onclick = () => all.forEach((g) => g.open = false);
 window.addEventListener('hashchange', follow);
 apply();
 follow();
