@@ -309,17 +309,16 @@ static void driver(const sus_model *m)
     CHECK(rc == 0 && cc.rows == 12 && cc.last_k == 1003 && cc.R0_defect == 0.0,
           "driver: N = 1003, K = 100 gives %ld rows (0, 100, ..., 1000, 1003), R_0 = I", cc.rows);
 
-    /* A failing step is reported with its index and time, never accepted. */
-    const double w_big[2] = {4.0, 5.0};
-    const sus_run_config bad = {m, sus_step_variational, SUS_RECON_CAYLEY, 1000.0, 10, 1};
+    /* A failing step is reported with its index and time, never accepted: the 2-stage Gauss
+     * step from this w0 meets a fold of its branch at h = eps k ~ 3.6 (src/exp/stability.h). */
+    const double w_fold[2] = {0.27619224, -0.63956748};
+    const sus_run_config bad = {m, sus_step_method_by_name("gauss4")->type, SUS_RECON_CAYLEY, 1000.0, 10, 1};
     count_ctx cb = {0, -1, 1.0};
-    const int rb = sus_run(&bad, w_big, count_rows, &cb, &rep);
-    CHECK(rb == 1 && rep.status == SUS_STEPPER_NO_CONVERGENCE && rep.step == 1 && rep.t == 1000.0
-          && cb.rows == 1 &&
-              rep.stats.residual > SUS_STEP_NEWTON_RTOL * rep.stats.scale,
-          "variational, w0 = (4,5), eps = 1000: step %ld (t = %g) reported as failed, residual %.2e, only "
-          "row 0 emitted",
-          rep.step, rep.t, rep.stats.residual);
+    const int rb = sus_run(&bad, w_fold, count_rows, &cb, &rep);
+    CHECK(rb == 1 && rep.status == SUS_STEPPER_SINGULAR && rep.step == 1 && rep.t == 1000.0 && cb.rows == 1,
+          "gauss4, w0 = (0.276, -0.640), eps = 1000: step %ld (t = %g) reported as failed (status %d, a fold "
+          "%d), only row 0 emitted",
+          rep.step, rep.t, rep.status, SUS_STEPPER_SINGULAR);
 
     /* A singular (REGLOC) block is reported as such, not iterated on. */
     double x[2] = {0.3, 0.3};
