@@ -31,14 +31,21 @@ Each verdict is appended to --log as it comes, so a campaign cut short resumes (
 result file is written from the log, and a survivor listed in tests/build/mutants_equivalent (with
 a proof) counts there as equivalent.
 
+The campaign's log and result are generated files (make mutants-ops writes them under build/). The
+record of the last complete campaign is committed: its log compressed (RECORD_LOG) and the head of
+its result, the counts, as a short summary (RECORD_SUMMARY); --record writes both from --log, by
+hand, once a campaign is complete. A resumed campaign whose log does not exist yet starts from the
+record (--from-log). Any log whose name ends in .gz is read through gzip.
+
 Usage: mutants_ops.py [--sample N --seed S] [--files F ...] [--out FILE] [--log FILE [--resume [--new-only]]]
-       [--survivors | --only TEXT] [--summarize [--note TEXT]] [--list]
+       [--from-log FILE] [--survivors | --only TEXT] [--summarize [--note TEXT]] [--record] [--list]
 Last line: "mutants-ops: generated N, killed K, equivalent E, survived S, did-not-build B, score X,
 round-off survivors R" (S counts only the survivors neither list explains).
 Exit status 1 when a mutant survives unexplained.
 """
 import argparse
 import glob
+import gzip
 import os
 import random
 import re
@@ -61,6 +68,13 @@ FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/qua
          "src/methods/composition_coeffs.c", "src/methods/step_taylor.c", "src/methods/taylor.h",
          "src/core/driver.c", "src/methods/step_gauss4.c", "src/methods/taylor_series.h",
          "src/core/so3_trig.c", "src/methods/step_taylor_adaptive.c", "src/core/driver_tol.c"]
+
+# The committed record of the last complete campaign (see --record).
+RECORD_LOG = "data/mutants_ops_log.tsv.gz"
+RECORD_SUMMARY = "tests/build/mutants_ops_summary.txt"
+RECORD_WHERE = ("log: %s; resume: make mutants-ops MUTANTS_OPS_RESUME=1 (it starts from this log); "
+                "every verdict: python3 tools/mutants_ops.py --summarize --log %s --out "
+                "build/mutants_ops_result.txt (at the commit above)" % (RECORD_LOG, RECORD_LOG))
 
 TOKEN = re.compile(r"""
     (?P<ws>\s+)
@@ -502,6 +516,10 @@ def main():
     ap.add_argument("--shard", default="", help="K/N: run only every N-th mutant to run, from the K-th "
                     "(0-based), so that N workers can share one file and one log")
     ap.add_argument("--summarize", action="store_true", help="write --out from --log, run nothing")
+    ap.add_argument("--from-log", default="", help="with --resume: the log a campaign starts from when "
+                    "--log does not exist yet (the committed record, %s)" % RECORD_LOG)
+    ap.add_argument("--record", action="store_true", help="write the committed record (%s, %s) from "
+                    "--log, run nothing" % (RECORD_LOG, RECORD_SUMMARY))
     ap.add_argument("--note", default="", help="a line for the result file's head (e.g. the commits run at)")
     ap.add_argument("--list", action="store_true")
     ap.add_argument("--equivalent", default="tests/build/mutants_equivalent")
@@ -521,6 +539,14 @@ def main():
     if a.summarize:
         print(write_result(a, labels, texts, muts))
         return 0
+    if a.record:
+        return record(a, labels, texts, muts)
+    if a.log.endswith(".gz"):
+        print("mutants-ops: the log a campaign appends to is plain text (%s)" % a.log)
+        return 2
+    if a.log and a.resume and a.from_log and not os.path.exists(a.log):
+        with open_log(a.from_log) as src, open(a.log, "w") as dst:
+            shutil.copyfileobj(src, dst)
     if a.log and not a.resume and not a.only and not a.survivors:
         open(a.log, "w").close()
     done = read_log(a.log) if a.log else {}
@@ -540,11 +566,16 @@ def main():
         shutil.rmtree(sc.dir, ignore_errors=True)
 
 
+def open_log(path):
+    """A log for reading, through gzip when its name ends in .gz."""
+    return gzip.open(path, "rt") if path.endswith(".gz") else open(path)
+
+
 def read_log(path):
     """label -> (verdict, why) from a campaign log; a mutant run again keeps its last verdict."""
     out = {}
     if path and os.path.exists(path):
-        for raw in open(path):
+        for raw in open_log(path):
             f = raw.rstrip("\n").split("\t")
             if len(f) == 3:
                 out[f[1]] = (f[0], f[2])
@@ -581,11 +612,11 @@ def campaign(a, sc, todo, texts, labels, muts):
     return 1 if " survived 0," not in summary else 0
 
 
-def write_result(a, labels, texts, muts):
-    """The result file from the log: the counts over every file, then per file, then one line a
-    mutant. A logged survivor whose mutant tests/build/mutants_equivalent lists (with its proof)
-    counts as equivalent, one listed in tests/build/mutants_roundoff (why no test can see it) as a
-    round-off survivor; a mutant not yet run is counted as not run."""
+def tally(a, labels, texts, muts):
+    """The verdicts of the log: counts over every file and per file, one line a mutant, and the
+    summary line. A logged survivor whose mutant tests/build/mutants_equivalent lists (with its
+    proof) counts as equivalent, one listed in tests/build/mutants_roundoff (why no test can see it)
+    as a round-off survivor; a mutant not yet run is counted as not run."""
     done, eq, ro = read_log(a.log), load_equivalents(a.equivalent), load_equivalents(a.roundoff)
     kinds = ("killed", "equivalent", "round-off", "survived", "did-not-build", "not-run")
     total, per_file, lines = dict.fromkeys(kinds, 0), {}, []
@@ -601,23 +632,59 @@ def write_result(a, labels, texts, muts):
         per_file.setdefault(m[0], dict.fromkeys(kinds, 0))[verdict] += 1
         if verdict != "not-run":
             lines.append("%-13s %s%s" % (verdict.upper(), label, "  [%s]" % why if why else ""))
-    summary = "mutants-ops: " + counts_text(total, len(muts))
+    return total, per_file, lines, "mutants-ops: " + counts_text(total, len(muts))
+
+
+def write_result(a, labels, texts, muts):
+    """The result file (--out) from the log: its head (result_head), then one line a mutant.
+    Returns the summary line."""
+    total, per_file, lines, summary = tally(a, labels, texts, muts)
     if a.out:
-        commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
-        head = ["# make mutants-ops (tools/mutants_ops.py): the generated operator-mutation campaign",
-                "# commit %s, written %s UTC%s" % (commit or "unknown", time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
-                                                   "" if not total["not-run"] else " (INCOMPLETE)"),
-                "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed))] + \
-            (["# " + a.note] if a.note else []) + [
-                "# log: %s; resume: python3 tools/mutants_ops.py --resume --log %s --out %s [--files ...]"
-                % (a.log, a.log, a.out),
-                summary, "# per file:"] + \
-            ["#   %s: %s" % (p, counts_text(c, sum(c.values()))) for p, c in per_file.items()] + [""]
-        tmp = a.out + ".tmp"
-        with open(tmp, "w") as f:
-            f.write("\n".join(head + lines) + "\n")
-        os.replace(tmp, a.out)
+        where = RECORD_WHERE if a.log.endswith(".gz") else (
+            "log: %s; resume: python3 tools/mutants_ops.py --resume --log %s --out %s [--files ...]"
+            % (a.log, a.log, a.out))
+        head = result_head(a, total, per_file, summary, where)
+        write_atomic(a.out, "\n".join(head + [""] + lines) + "\n")
     return summary
+
+
+def result_head(a, total, per_file, summary, where):
+    """What was run, where its log is (where), the counts over every file and per file."""
+    commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
+    written = time.strftime("%Y-%m-%d %H:%M", time.gmtime())
+    return ["# make mutants-ops (tools/mutants_ops.py): the generated operator-mutation campaign",
+            "# commit %s, written %s UTC%s" % (commit or "unknown", written,
+                                               "" if not total["not-run"] else " (INCOMPLETE)"),
+            "# sample: %s" % ("all" if not a.sample else "%d, seed %d" % (a.sample, a.seed))] + \
+        (["# " + a.note] if a.note else []) + [
+            "# " + where, summary, "# per file:"] + \
+        ["#   %s: %s" % (p, counts_text(c, sum(c.values()))) for p, c in per_file.items()]
+
+
+def write_atomic(path, data, binary=False):
+    tmp = path + ".tmp"
+    with open(tmp, "wb" if binary else "w") as f:
+        f.write(data)
+    os.replace(tmp, path)
+
+
+def record(a, labels, texts, muts):
+    """The committed record of a complete campaign: its log compressed (RECORD_LOG, reproducible:
+    no name, no time in the gzip header) and its result's head (RECORD_SUMMARY). Every verdict is
+    written again by --summarize --log RECORD_LOG at the commit the summary names."""
+    if not a.log or a.log.endswith(".gz") or not os.path.exists(a.log):
+        print("mutants-ops: --record needs the campaign's plain log (--log)")
+        return 2
+    total, per_file, _, summary = tally(a, labels, texts, muts)
+    if total["not-run"] or a.sample:
+        print("mutants-ops: not recorded: the campaign is incomplete (%s)" % summary)
+        return 1
+    head = result_head(a, total, per_file, summary, RECORD_WHERE)
+    with open(a.log, "rb") as f:
+        write_atomic(RECORD_LOG, gzip.compress(f.read(), compresslevel=9, mtime=0), binary=True)
+    write_atomic(RECORD_SUMMARY, "\n".join(head) + "\n")
+    print("mutants-ops: recorded %s and %s; %s" % (RECORD_LOG, RECORD_SUMMARY, summary))
+    return 0
 
 
 def counts_text(c, n):

@@ -20,7 +20,7 @@ function pow2(s) { # 2^-10 -> 2^{-10}
     return s }
 function window(q) {
     if (match(q, /fit (over )?eps in \[[^]]*\]/)) { q = substr(q, RSTART, RLENGTH); sub(/^fit (over )?eps in /, "", q); return "$\\eps\\in" pow2(q) "$" }
-    if (match(q, /window eps [0-9.e+-]+ \.\. [0-9.e+-]+/)) return "per curve"
+    if (match(q, /window eps (k )?[0-9.e+-]+ \.\. [0-9.e+-]+/)) return "per curve"
     return "" }
 FNR == 1 { next }
 FILENAME == ARGV[1] { nr++; rid[nr] = $2; rtest[nr] = $3; lo[nr] = $4; hi[nr] = $5; chk[nr] = $6; why[nr] = $7; next }
@@ -31,8 +31,9 @@ FILENAME == ARGV[1] { nr++; rid[nr] = $2; rtest[nr] = $3; lo[nr] = $4; hi[nr] = 
     n[r]++; covered++
     if (!((r, $6) in seen)) { seen[r, $6] = 1; nv[r]++; if (nv[r] == 1 || $6 + 0 < vmin[r]) vmin[r] = $6 + 0; if (nv[r] == 1 || $6 + 0 > vmax[r]) vmax[r] = $6 + 0; vals[r] = vals[r] (nv[r] > 1 ? ", " : "") "$" tex($6 + 0) "$" }
     w = window($3)
-    if (w == "per curve" && match($3, /window eps [0-9.e+-]+ \.\. [0-9.e+-]+/)) {
-        split(substr($3, RSTART + 11, RLENGTH - 11), ab, " \\.\\. ")
+    if (w == "per curve" && match($3, /window eps (k )?[0-9.e+-]+ \.\. [0-9.e+-]+/)) {
+        ws = substr($3, RSTART, RLENGTH); if (sub(/^window eps k /, "", ws)) wk[r] = " k"; else sub(/^window eps /, "", ws)
+        split(ws, ab, " \\.\\. ")
         if (!(r in wlo) || ab[1] + 0 < wlo[r]) wlo[r] = ab[1] + 0
         if (!(r in whi) || ab[2] + 0 > whi[r]) whi[r] = ab[2] + 0
     } else if (w != "" && index(fixed[r], w) == 0) fixed[r] = fixed[r] (fixed[r] == "" ? "" : "; ") w
@@ -47,7 +48,7 @@ END {
     for (r = 1; r <= nr; r++) {
         if (!n[r]) continue
         v = nv[r] <= 4 ? vals[r] : sprintf("%d values, $%s$ to $%s$", nv[r], tex(vmin[r]), tex(vmax[r]))
-        if (r in wlo) wd = sprintf("per curve, $\\eps$ from $%s$ to $%s$", tex(wlo[r]), tex(whi[r]))
+        if (r in wlo) wd = sprintf("per curve, $\\eps%s$ from $%s$ to $%s$", wk[r], tex(wlo[r]), tex(whi[r]))
         else wd = fixed[r] == "" ? "---" : fixed[r]
         printf "%s & %s & %d & %s & %s\\\\\n", chk[r], v, n[r], wd, why[r]
     }

@@ -16,11 +16,15 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     ex->model = m;
     ex->w0[0] = w0[0];
     ex->w0[1] = w0[1];
+    /* l22 = sqrt(|I_m| / I11) and v2 = (I11 I32 - I21 I31) / (l11 sqrt|I_m|), formed without the
+     * cancellation of I22 - l21^2 and I32 - l21 v1 on a near-singular I_m */
+    const double sd = sqrt(sus_cross_diff(I[0][0], I[1][1], I[1][0], I[1][0]));
     ex->l11 = sqrt(I[0][0]);
     ex->l21 = I[1][0] / ex->l11;
-    ex->l22 = sqrt(I[1][1] - ex->l21 * ex->l21);
+    ex->l22 = sd / ex->l11;
     const double u1 = ex->l11 * w0[0] + ex->l21 * w0[1], u2 = ex->l22 * w0[1];
-    const double v1 = m->b[0] / ex->l11, v2 = (m->b[1] - ex->l21 * v1) / ex->l22;
+    const double v1 = m->b[0] / ex->l11;
+    const double v2 = sus_cross_diff(I[0][0], m->b[1], I[1][0], m->b[0]) / (ex->l11 * sd);
     const double vn = hypot(v1, v2);
     ex->r = hypot(u1, u2);
     ex->fixed = 0;

@@ -57,7 +57,7 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
         snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
         return -1;
     }
-    m->det_m = I[0] * I[4] - I[1] * I[3];
+    m->det_m = sus_cross_diff(I[0], I[4], I[1], I[3]);
     if (!(I[0] > 0.0) || !(m->det_m > 0.0)) {
         snprintf(err, errlen, "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)",
                  I[0], I[4], I[1]);
@@ -71,8 +71,8 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
     m->fA[1][0] = I[0] / m->det_m;  /*  I11 */
     m->fA[1][1] = I[3] / m->det_m;  /*  I21 */
     m->norm_fA = norm2x2(m->fA);
-    m->o0c[0] = I[7] * I[0] - I[6] * I[1]; /* I32 I11 - I31 I12 */
-    m->o0c[1] = I[7] * I[3] - I[6] * I[4]; /* I32 I21 - I31 I22 */
+    m->o0c[0] = sus_cross_diff(I[7], I[0], I[6], I[1]); /* I32 I11 - I31 I12 */
+    m->o0c[1] = sus_cross_diff(I[7], I[3], I[6], I[4]); /* I32 I21 - I31 I22 */
     m->norm_b = hypot(m->b[0], m->b[1]) * (1.0 + 1e-15);
     return check_coefficients(m, err, errlen);
 }

@@ -29,6 +29,15 @@ typedef struct {
     double o0c[2];
 } sus_model;
 
+/* a b - c d to about one rounding however much the two products cancel: c d - fl(c d) is exact
+ * and fma rounds a b - fl(c d) once. |I_m| and O_0's coefficients are formed so, so that a
+ * near-singular I_m loses no digits in the coefficients every method shares. */
+static inline double sus_cross_diff(double a, double b, double c, double d)
+{
+    const double p = c * d, e = __builtin_fma(c, d, -p);
+    return __builtin_fma(a, b, -p) - e;
+}
+
 /* The paper's body: I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]] and w(0) = (0.4, 0.5). */
 extern const double SUS_PAPER_INERTIA[9];
 extern const double SUS_PAPER_OMEGA0[2];

@@ -1,10 +1,8 @@
 #include "quaternion.h"
 
 #include <math.h>
-#include <string.h>
 
-/* q / |q| */
-static void unit(const double q[4], double u[4])
+void sus_quat_unit(const double q[4], double u[4])
 {
     const double n = 1.0 / sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     for (int i = 0; i < 4; i++)
@@ -29,7 +27,7 @@ void sus_quat_unit_rotation(const double u[4], double R[3][3])
 void sus_quat_rotation(const double q[4], double R[3][3])
 {
     double u[4];
-    unit(q, u);
+    sus_quat_unit(q, u);
     sus_quat_unit_rotation(u, R);
 }
 
@@ -60,24 +58,4 @@ void sus_quat_from_rotation(const double R[3][3], double q[4])
             for (int m = 0; m < 4; m++)
                 q[m] = -q[m];
     }
-}
-
-void sus_quat_of_attitude(const sus_attitude *a, double q[4])
-{
-    if (a->has_q) {
-        memcpy(q, a->q, sizeof a->q);
-        return;
-    }
-    double R[3][3];
-    sus_attitude_get(a, R);
-    sus_quat_from_rotation(R, q);
-}
-
-/* The matrix is built only when asked for (sus_attitude_get): a method that carries q builds
- * no matrix on the steps whose rows nobody reads. */
-void sus_quat_to_attitude(const double q[4], sus_attitude *a)
-{
-    unit(q, a->q);
-    a->has_q = 1;
-    a->r_stale = 1;
 }

@@ -34,12 +34,9 @@ void sus_quat_from_rotation(const double R[3][3], double q[4]);
 /* R(q/|q|). */
 void sus_quat_rotation(const double q[4], double R[3][3]);
 
-/* A method that carries its attitude as a quaternion (the Taylor methods, the compositions):
- * q of R_k, and R_{k+1} = R(q/|q|) written back (lo = 0). The orthogonality defect is then one
- * rounding of R(q), whatever the number of steps: nothing accumulates. */
-#include "reconstruct.h"
-void sus_quat_of_attitude(const sus_attitude *a, double q[4]);
-void sus_quat_to_attitude(const double q[4], sus_attitude *a);
+/* q / |q|. */
+void sus_quat_unit(const double q[4], double u[4]);
+
 /* R(q) for a unit quaternion q (no normalisation). */
 void sus_quat_unit_rotation(const double q[4], double R[3][3]);
 

@@ -50,6 +50,26 @@ void sus_attitude_get(const sus_attitude *a, double R[3][3])
             R[i][j] = a->hi[i][j] + a->lo[i][j];
 }
 
+void sus_quat_of_attitude(const sus_attitude *a, double q[4])
+{
+    if (a->has_q) {
+        memcpy(q, a->q, sizeof a->q);
+        return;
+    }
+    double R[3][3];
+    sus_attitude_get(a, R);
+    sus_quat_from_rotation(R, q);
+}
+
+/* The matrix is built only when asked for (sus_attitude_get): a method that carries q builds
+ * no matrix on the steps whose rows nobody reads. */
+void sus_quat_to_attitude(const double q[4], sus_attitude *a)
+{
+    sus_quat_unit(q, a->q);
+    a->has_q = 1;
+    a->r_stale = 1;
+}
+
 /* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
 void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
                         const double w_next[3])

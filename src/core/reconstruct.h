@@ -39,6 +39,13 @@ typedef struct {
     int r_stale;
 } sus_attitude;
 
+/* A method that carries its attitude as a quaternion (the Taylor methods, the compositions):
+ * q of R_k, and R_{k+1} = R(q/|q|) written back (lo = 0). The orthogonality defect is then one
+ * rounding of R(q), whatever the number of steps: nothing accumulates. For the methods' steps,
+ * which pass their own attitude: no argument checks. */
+void sus_quat_of_attitude(const sus_attitude *a, double q[4]);
+void sus_quat_to_attitude(const double q[4], sus_attitude *a);
+
 /* Every function below writes nothing where its output is NULL, and NaN where an input is NULL or
  * kind is not a sus_recon (an attitude so advanced is NaN, which the runs report as a blow-up). */
 void sus_attitude_identity(sus_attitude *a);

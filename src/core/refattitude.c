@@ -1,33 +1,68 @@
 #include "refattitude.h"
 
+#include <math.h>
+#include <string.h>
+
 #include "quaternion.h"
 
-#include <math.h>
-
-/* One Taylor step of order P in long double: the Cauchy-product recursions of (ContDyn)
- * (w' = c(w) fA w) and of q' = 1/2 q (x) (0, w), with scaled coefficients (W_n = w_n h^n). */
-static void precise_step(const sus_model *m, long double h, long double w[2], long double q[4])
+/* a b - c d for doubles, to about one rounding of the result however much the two products
+ * cancel: p = fl(c d) and e = c d - p are exact in long double (a product of doubles has 106
+ * bits, the error of its rounding to 64 at most 42), and fmal rounds a b - p once. */
+static long double cross_diff(double a, double b, double c, double d)
 {
-    enum { P = SUS_REFATT_PRECISE_ORDER };
-    long double W[P + 1][2], Q[P + 1][4], C[P + 1], U[P + 1][2];
-    const long double b0 = m->b[0], b1 = m->b[1];
-    /* fA in long double from the printed inertia (the double values the model holds) */
+    const long double p = (long double)c * d, e = fmal(c, d, -p);
+    return fmal(a, b, -p) - e;
+}
+
+/* The Cholesky coordinates of exact.h in long double, I_m = L L^T taken symmetric (I21 for I12,
+ * as exact.h does): l11 = sqrt(I11), l21 = I21 / l11, l22 = sqrt(|I_m| / I11), v = L^{-1} b. The
+ * determinant and v2's numerator I11 I32 - I21 I31 are formed without cancellation (cross_diff),
+ * so a near-singular I_m costs no digits here. */
+static void chol_init(sus_refatt_chol *c, const sus_model *m)
+{
     const double (*I)[3] = m->I;
-    const long double det = (long double)I[0][0] * I[1][1] - (long double)I[0][1] * I[1][0];
-    const long double A00 = -(long double)I[0][1] / det, A01 = -(long double)I[1][1] / det;
-    const long double A10 = (long double)I[0][0] / det, A11 = (long double)I[1][0] / det;
-    W[0][0] = w[0];
-    W[0][1] = w[1];
+    const long double det = cross_diff(I[0][0], I[1][1], I[1][0], I[1][0]), sd = sqrtl(det);
+    c->l11 = sqrtl(I[0][0]);
+    c->l21 = I[1][0] / c->l11;
+    c->l22 = sd / c->l11;
+    c->v[0] = m->b[0] / c->l11;
+    c->v[1] = cross_diff(I[0][0], m->b[1], I[1][0], m->b[0]) / (c->l11 * sd);
+    c->g = 1.0L / sd;
+}
+
+/* w = L^{-T} u and u = L^T w. */
+static void w_of_u(const sus_refatt_chol *c, const long double u[2], long double w[2])
+{
+    w[1] = u[1] / c->l22;
+    w[0] = (u[0] - c->l21 * w[1]) / c->l11;
+}
+
+static void u_of_w(const sus_refatt_chol *c, const double w[2], long double u[2])
+{
+    u[0] = c->l11 * w[0] + c->l21 * w[1];
+    u[1] = c->l22 * w[1];
+}
+
+/* (ContDyn): One Taylor step of order P in long double, in the Cholesky coordinates u = L^T w of
+ * exact.h, where (ContDyn) reads u' = c J u / |L| with c = <v, u> and J u = (-u2, u1): no
+ * cancellation however near-singular I_m is. With it, the Cauchy-product recursion of the
+ * quaternion kinematics q' = 1/2 q (x) (0, w), w = L^{-T} u. Coefficients are scaled,
+ * U_n = u_n h^n. */
+static void precise_step(const sus_refatt_chol *co, long double h, long double u[2], long double q[4])
+{
+    enum { P = SUS_REFATT_ORDER };
+    long double U[P + 1][2], W[P + 1][2], Q[P + 1][4], C[P + 1];
+    U[0][0] = u[0];
+    U[0][1] = u[1];
     for (int i = 0; i < 4; i++)
         Q[0][i] = q[i];
     for (int n = 0; n < P; n++) {
-        C[n] = b0 * W[n][0] + b1 * W[n][1];
-        U[n][0] = A00 * W[n][0] + A01 * W[n][1];
-        U[n][1] = A10 * W[n][0] + A11 * W[n][1];
+        C[n] = co->v[0] * U[n][0] + co->v[1] * U[n][1];
+        w_of_u(co, U[n], W[n]);
         long double s0 = 0, s1 = 0, t[4] = {0, 0, 0, 0};
         for (int j = 0; j <= n; j++) {
-            s0 += C[j] * U[n - j][0];
-            s1 += C[j] * U[n - j][1];
+            s0 -= C[j] * U[n - j][1];
+            s1 += C[j] * U[n - j][0];
             const long double *qj = Q[j], x = W[n - j][0], y = W[n - j][1];
             /* q (x) (0, x, y, 0) */
             t[0] -= qj[1] * x + qj[2] * y;
@@ -36,14 +71,14 @@ static void precise_step(const sus_model *m, long double h, long double w[2], lo
             t[3] += qj[1] * y - qj[2] * x;
         }
         const long double f = h / (n + 1);
-        W[n + 1][0] = f * s0;
-        W[n + 1][1] = f * s1;
+        U[n + 1][0] = f * co->g * s0;
+        U[n + 1][1] = f * co->g * s1;
         for (int i = 0; i < 4; i++)
             Q[n + 1][i] = 0.5L * f * t[i];
     }
     for (int n = P; n >= 1; n--) {
-        w[0] += W[n][0];
-        w[1] += W[n][1];
+        u[0] += U[n][0];
+        u[1] += U[n][1];
         for (int i = 0; i < 4; i++)
             q[i] += Q[n][i];
     }
@@ -62,72 +97,256 @@ static void rotation_of(const long double q[4], double R[3][3])
             R[i][j] = (double)(Rl[i][j] / nq);
 }
 
-/* From t to t1 in equal steps of at most 1/SUSLOV_REFATT_PRECISE_STEPS. A stretch of 2^62 steps or
- * more (or an infinite one) cannot be run in any useful time, and its step count would not convert
- * to an integer (undefined behaviour): it gives no answer, a non-finite attitude. Callers check
- * the cost first (sus_exact_reference_steps). */
-static void integrate(const sus_model *m, long double w[2], long double q[4], double t, double t1)
+static void no_answer(double R[3][3])
 {
-    const double steps = ceil((t1 - t) * SUS_REFATT_PRECISE_STEPS);
-    if (!(steps < 0x1p62)) {
-        q[0] = q[1] = q[2] = q[3] = NAN;
+    const long double q[4] = {NAN, NAN, NAN, NAN};
+    rotation_of(q, R);
+}
+
+/* The proved step (refattitude.h). On the disc |t - t0| <= rho about any real t0, s = s0 + sigma k t
+ * (exact.h) has |Im s| <= Y = k rho, and for s = a + iy with |y| <= Y < pi/2
+ *     |sech s|^2 = 1 / (sinh^2 a + cos^2 y) <= 1 / cos^2 Y,
+ *     |tanh s|^2 = (sinh^2 a + sin^2 y) / (sinh^2 a + cos^2 y) <= max(1, tan^2 Y),
+ * so u = r Rot(beta) sigma (sech s, tanh s) has |u| <= r g(Y), g(Y)^2 = 1 / cos^2 Y + max(1, tan^2 Y),
+ * and w = L^{-T} u has |w| <= M = |L^{-1}|_F r g(Y). Cauchy's estimate: the n-th Taylor coefficient
+ * of u about t0 is at most r g / rho^n. And q(t0 + z) = q(t0) (x) V(z) with V' = 1/2 V (x) (0, w):
+ * right multiplication by (0, a + ib), a and b real, has norm <= |a| + |b| <= sqrt2 |w| on complex
+ * quaternions, so |V| <= exp(M rho / sqrt2) on the disc and the n-th coefficient of q is at most
+ * |q(t0)| exp(M rho / sqrt2) / rho^n. With x = h / rho <= 1/2, the tails past order P are at most
+ * 2 x^(P+1) times r g and |q(t0)| exp(M rho / sqrt2). The step is x rho with the largest x that
+ * keeps both below REFATT_TAIL relative to |u| = r and |q|. At a steady rotation (ex->fixed) w is
+ * the constant w0: g = 1 and M = |w0|. */
+#define REFATT_TAIL 0x1p-64 /* one rounding of a long double */
+
+static double step_on_disc(double rho, double M, double g)
+{
+    const double worst = fmax(g, exp(M * rho / sqrt(2.0)));
+    const double x = fmin(0.5, pow(REFATT_TAIL / (2.0 * worst), 1.0 / (SUS_REFATT_ORDER + 1)));
+    return x * rho;
+}
+
+/* |L^{-1}|_F, a bound of |L^{-T}|_2. */
+static double inverse_norm(const sus_exact *ex)
+{
+    const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
+    return sqrt(a * a + b * b + c * c);
+}
+
+long double sus_refatt_step(const sus_exact *ex)
+{
+    const double half_pi = 1.5707963267948966, w0 = hypot(ex->w0[0], ex->w0[1]);
+    if (ex->fixed && !(w0 > 0.0))
+        return INFINITY; /* w = 0: q is constant */
+    const double k = ex->fixed ? 0.0 : ex->k, scale = ex->fixed ? w0 : inverse_norm(ex) * ex->r;
+    double best = 0.0;
+    /* candidates: rho = 2^j sqrt2 / scale (the exponential's scale) and Y = k rho on a grid of
+     * (0, pi/2) (the strip's); each is kept only where its Y is inside the strip */
+    for (int i = 0; i < 48 + 63; i++) {
+        const double rho = i < 48 ? ldexp(sqrt(2.0) / scale, i - 24) : half_pi * (i - 47) / 64.0 / k;
+        const double Y = k * rho;
+        if (!(Y < half_pi) || !(rho > 0.0))
+            continue;
+        const double c = cos(Y), t = tan(Y), g = ex->fixed ? 1.0 : sqrt(1.0 / (c * c) + fmax(1.0, t * t));
+        best = fmax(best, step_on_disc(rho, scale * g, g));
+    }
+    return best;
+}
+
+/* The steady tail. With a = sigma s = sigma s0 + k t (exact.h), (cos psi, sin psi) - (0, 1) has norm
+ * at most sech a + (1 - tanh a) <= 2 sech a <= 4 e^{-a} for a >= 0, and w = L^{-T} u, |u| = r, so
+ * |w(t) - w*| <= 4 |L^{-1}|_F r e^{-a}. Two solutions of q' = 1/2 q (x) (0, w) from the same q(t_s)
+ * differ by at most half the integral of |w - w*| (their propagators are unit quaternions), which
+ * is <= 2 |L^{-1}|_F r e^{-a_s} / k. Setting that to REFATT_TAIL gives a_s; past t_s the attitude
+ * is the steady rotation's, q(t) = q(t_s) (x) (cos(theta/2), sin(theta/2) w* / |w*|), theta =
+ * (t - t_s) |w*|, in closed form. A motion that starts at a steady rotation (ex->fixed) is in
+ * its tail from the start. */
+static double steady_time(const sus_exact *ex)
+{
+    if (ex->fixed)
+        return -INFINITY;
+    const double a_s = log(2.0 * inverse_norm(ex) * ex->r / (ex->k * REFATT_TAIL));
+    const double t_s = (fmax(a_s, 0.0) - ex->sigma * ex->s0) / ex->k;
+    return isnan(t_s) ? INFINITY : t_s;
+}
+
+/* The steady phase in 113-bit arithmetic: its angle (t - t_s) |w*| grows without bound, so the
+ * speed |w*| must be good to far below a long double's rounding for R(t) to stay within 2^-53 at
+ * large t (in long double, 20 roundings of |w*| on a near-singular I_m reach 2^-51 after 300
+ * radians). GCC and clang have __float128 on x86-64; where long double is binary128 already
+ * (WebAssembly, aarch64) it is used. */
+#if defined(__SIZEOF_FLOAT128__) && __LDBL_MANT_DIG__ < 113
+typedef __float128 quad;
+#else
+typedef long double quad;
+#endif
+
+/* sqrt to 113 bits: one Newton step from the long-double root doubles its 64 bits. */
+static quad quad_sqrt(quad x)
+{
+    const long double y = sqrtl((long double)x);
+    if (!(y > 0.0L) || !isfinite(y))
+        return y;
+    return ((quad)y + x / y) / 2;
+}
+
+/* w*: psi -> pi/2 in exact.h puts it along +J b, J b = (-b2, b1) (L^{-T} J L^{-1} = J / |L|), on
+ * the energy of w0: |w*| = |b| sqrt(<I_m w0, w0> / <I_m Jb, Jb>). Products of doubles are exact in
+ * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*| needs
+ * no more than long double: an error in it does not grow with t. */
+static void steady_rotation(sus_refatt *ra)
+{
+    const sus_exact *ex = ra->ex;
+    const double (*I)[3] = ex->model->I, *b = ex->model->b;
+    const double *d = ex->fixed ? ex->w0 : (const double[2]){-b[1], b[0]};
+    const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
+    quad speed = quad_sqrt(nd);
+    if (!ex->fixed) {
+        const quad w0 = ex->w0[0], w1 = ex->w0[1], e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 +
+                                                          I[1][1] * w1 * w1;
+        const quad ed = I[0][0] * (quad)d[0] * d[0] + 2 * I[1][0] * (quad)d[0] * d[1] +
+                        I[1][1] * (quad)d[1] * d[1];
+        speed = quad_sqrt(e0 * nd / ed);
+    }
+    const long double n = sqrtl((long double)nd);
+    ra->axis[0] = n > 0 ? d[0] / n : 1.0L;
+    ra->axis[1] = n > 0 ? d[1] / n : 0.0L;
+    ra->speed[0] = (long double)speed;
+    ra->speed[1] = (long double)(speed - ra->speed[0]);
+}
+
+/* q (x) (cos(theta/2), sin(theta/2) a), theta = tau |w*|, a the axis (0 on the third): the steady
+ * rotation over tau. Half the angle is formed and reduced modulo 2 pi (to 128 bits, hi + lo) in
+ * 113 bits; beyond 2^100 the phase is lost to the rounding of t already, and any angle will do. */
+static void steady_advance(const sus_refatt *ra, quad tau, long double p[4])
+{
+    const quad two_pi = (quad)0xc90fdaa22168c235p-61L - (quad)0xece675d1fc8f8cbbp-127L;
+    quad half = tau * ((quad)ra->speed[0] + ra->speed[1]) / 2;
+    if (half < 0x1p100)
+        half -= two_pi * (quad)(long double)floorl((long double)(half / two_pi));
+    const long double h = half < 0x1p100 ? (long double)half : 0.0L, c = cosl(h), sn = sinl(h);
+    const long double x = sn * ra->axis[0], y = sn * ra->axis[1];
+    const long double *q = ra->q_s;
+    p[0] = q[0] * c - q[1] * x - q[2] * y;
+    p[1] = q[1] * c + q[0] * x - q[3] * y;
+    p[2] = q[2] * c + q[3] * x + q[0] * y;
+    p[3] = q[3] * c - q[2] * x + q[1] * y;
+}
+
+/* From t to t1 in equal steps of at most h. A stretch of 2^62 steps or more (or an infinite one)
+ * cannot be run in any useful time, and its step count would not convert to an integer (undefined
+ * behaviour): it gives no answer, a non-finite attitude. Callers check the cost first
+ * (sus_exact_reference_steps). */
+static void integrate(sus_refatt *ra, double t1)
+{
+    const long double steps = ceill(((long double)t1 - ra->t) / ra->h);
+    if (!(steps < 0x1p62L)) {
+        ra->q[0] = ra->q[1] = ra->q[2] = ra->q[3] = NAN;
         return;
     }
     const long n = (long)steps;
-    if (n <= 0)
-        return;
-    const long double h = ((long double)t1 - t) / n;
+    const long double h = n > 0 ? ((long double)t1 - ra->t) / n : 0.0L;
     for (long k = 0; k < n; k++)
-        precise_step(m, h, w, q);
+        precise_step(&ra->chol, h, ra->u, ra->q);
+    ra->t = t1;
 }
 
 void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const double R0[3][3])
 {
     double w[2], q[4];
     ra->ex = ex;
+    chol_init(&ra->chol, ex->model);
+    ra->h = sus_refatt_step(ex);
     ra->t = t0;
     ra->t0 = t0;
     ra->grid = 0.0;
     sus_exact_omega(ex, t0, w); /* w0 itself at t0 = 0 (an ulp off would be 3e-15 in R(50)) */
+    u_of_w(&ra->chol, w, ra->u);
     sus_quat_from_rotation(R0, q);
     for (int i = 0; i < 4; i++)
         ra->q[i] = q[i];
-    ra->w[0] = w[0];
-    ra->w[1] = w[1];
+    ra->t_s = fmax(steady_time(ex), t0);
+    ra->steady = 0;
+    steady_rotation(ra);
+}
+
+/* The tail from q(t_s), ra->q_s. */
+static void tail_at(const sus_refatt *ra, double t1, double R[3][3])
+{
+    long double q[4];
+    steady_advance(ra, (quad)t1 - ra->t_s, q);
+    rotation_of(q, R);
 }
 
 void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3])
 {
-    if (t1 > ra->t) {
-        integrate(ra->ex->model, ra->w, ra->q, ra->t, t1);
-        ra->t = t1;
+    if (isnan(t1)) {
+        no_answer(R);
+        return;
     }
-    rotation_of(ra->q, R);
+    if (!ra->steady && t1 > ra->t) {
+        integrate(ra, fmin(t1, ra->t_s));
+        if (t1 > ra->t_s) {
+            memcpy(ra->q_s, ra->q, sizeof ra->q_s);
+            ra->steady = 1;
+        }
+    }
+    if (!ra->steady) {
+        rotation_of(ra->q, R);
+        return;
+    }
+    ra->t = fmax(t1, ra->t);
+    tail_at(ra, ra->t, R);
+}
+
+/* q(t1) for t0 <= t1 <= t_s, along the grid t0 + j h (sus_refatt_at); -1 for no answer. */
+static int grid_state(sus_refatt *ra, double t1, long double q[4])
+{
+    const long double span = (long double)t1 - ra->t0, whole = floorl(span / ra->h);
+    if (!(whole < 0x1p62L))
+        return -1;
+    for (; ra->grid < whole; ra->grid++)
+        precise_step(&ra->chol, ra->h, ra->u, ra->q);
+    long double u[2] = {ra->u[0], ra->u[1]};
+    memcpy(q, ra->q, sizeof ra->q);
+    const long double rest = span - ra->grid * ra->h;
+    if (rest > 0.0L)
+        precise_step(&ra->chol, rest, u, q);
+    return 0;
 }
 
 void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3])
 {
-    const long double h = 1.0L / SUS_REFATT_PRECISE_STEPS, span = (long double)t1 - ra->t0;
-    const double whole = floorl(span * SUS_REFATT_PRECISE_STEPS);
-    if (!(whole < 0x1p62)) { /* as integrate: no useful time, no answer */
-        const long double q[4] = {NAN, NAN, NAN, NAN};
-        rotation_of(q, R);
+    long double q[4];
+    if (!(t1 > ra->t_s)) {
+        if (grid_state(ra, t1, q) != 0)
+            no_answer(R);
+        else
+            rotation_of(q, R);
         return;
     }
-    for (; ra->grid < whole; ra->grid++)
-        precise_step(ra->ex->model, h, ra->w, ra->q);
-    long double w[2] = {ra->w[0], ra->w[1]}, q[4] = {ra->q[0], ra->q[1], ra->q[2], ra->q[3]};
-    const long double rest = span - ra->grid * h;
-    if (rest > 0.0L)
-        precise_step(ra->ex->model, rest, w, q);
-    rotation_of(q, R);
+    if (!ra->steady && grid_state(ra, ra->t_s, ra->q_s) != 0) {
+        no_answer(R);
+        return;
+    }
+    ra->steady = 1;
+    tail_at(ra, t1, R);
 }
 
 void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3])
 {
-    long double wl[2] = {w0[0], w0[1]}, q[4] = {1, 0, 0, 0};
-    integrate(m, wl, q, 0.0, T);
-    rotation_of(q, R);
+    sus_exact ex;
+    sus_refatt ra;
+    const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    long double wl[2];
+    sus_exact_init(&ex, m, w0);
+    sus_refatt_init(&ra, &ex, 0.0, I3);
+    sus_refatt_advance(&ra, T, R);
+    if (ra.steady) {
+        wl[0] = (ra.speed[0] + ra.speed[1]) * ra.axis[0];
+        wl[1] = (ra.speed[0] + ra.speed[1]) * ra.axis[1];
+    } else {
+        w_of_u(&ra.chol, ra.u, wl);
+    }
     w[0] = (double)wl[0];
     w[1] = (double)wl[1];
 }
@@ -135,7 +354,7 @@ void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double
 void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3])
 {
     sus_refatt ra;
-    double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     sus_refatt_init(&ra, ex, t0, I3);
     sus_refatt_advance(&ra, t1, Phi);
 }

@@ -1,14 +1,26 @@
 /* Reference attitude: R(t) with R' = R w^(t), w(t) the solution of (ContDyn), integrated in long
- * double by a Taylor series of order SUS_REFATT_PRECISE_ORDER (the Cauchy-product
- * recursions of (ContDyn) and of the quaternion kinematics q' = 1/2 q (x) (0, w)), with steps of
- * at most 1/SUSLOV_REFATT_PRECISE_STEPS time units. Truncation per step is ~(h/rho)^29 with
- * rho ~ 10.8 the distance of the field's complex singularity from the real axis (below 1e-40);
- * round-off is a few long-double ulps (5.4e-20) per step, so R(t) is good to ~1e-17 for t <= 50,
- * well below double's 1.1e-16, enough to judge errors of 1e-12 and below. Its w(t) agrees
- * with the closed form of exact.h to round-off. It is checked against an independent
- * computation, a long-double fourth-order Magnus integration along the closed-form w(t) with
- * Richardson extrapolation (magnus4.h), in tests/unit/test_highorder.c and in the claims ledger.
- * (GSL's rk8pd at tolerance 1e-13, the earlier reference, is about 1e-13 off at t = 50.) */
+ * double by a Taylor series of order SUS_REFATT_ORDER: the Cauchy-product recursions of (ContDyn),
+ * in the Cholesky coordinates u = L^T w of exact.h (no cancellation however near-singular I_m
+ * is), and of the quaternion kinematics q' = 1/2 q (x) (0, w). Past the time t_s where w(t) is the
+ * steady rotation w* to within a total angle of 2^-64, R(t) = R(t_s) exp((t - t_s) w*^) in closed
+ * form, so any time costs at most the steps to t_s.
+ *
+ * The step is proved, for every body and start, from the closed form: w(t) is analytic in the
+ * strip |Im t| < pi / (2k) and bounded there by what the closed form gives, so Cauchy's estimate
+ * bounds every Taylor coefficient of u and of q, and the step of sus_refatt_step keeps the
+ * truncated tail of both series below 2^-64 (one long-double rounding) relative to |u| and |q|
+ * at every step (refattitude.c derives it). The step is one number for the whole motion (k, |u|
+ * and L are invariants): both it and t_s scale as 1 / |w0| and 1 / k, so the number of steps to
+ * the tail depends on neither (sus_exact_reference_steps).
+ *
+ * Accuracy, for the inputs as the doubles they are: each step adds its truncation and a few
+ * long-double roundings (2^-64 each) to q, and rotations carry an error on unchanged; the tail's
+ * speed |w*| and angle are formed in 113-bit arithmetic, so its error does not grow with t. Before
+ * its one rounding to double, R(t) is within about 10 * 2^-64 per step to the tail plus a few
+ * 2^-64: the stated accuracy is 2^-51 in every entry, at every t, for up to a thousand steps to the
+ * tail (sus_exact_reference_steps). tests/unit/test_highorder.c checks it against an independent
+ * long-double Magnus integration along the closed-form w(t) on every test body, stiff ones
+ * included. */
 #ifndef SUS_REFATTITUDE_H
 #define SUS_REFATTITUDE_H
 
@@ -18,27 +30,43 @@
 extern "C" {
 #endif
 
-#define SUS_REFATT_PRECISE_ORDER 28
-#define SUS_REFATT_PRECISE_STEPS 4
+#define SUS_REFATT_ORDER 28
+
+/* The Cholesky coordinates of exact.h in long double: L = [[l11, 0], [l21, l22]], v = L^{-1} b,
+ * g = 1 / |L|. */
+typedef struct {
+    long double l11, l21, l22, v[2], g;
+} sus_refatt_chol;
 
 typedef struct {
     const sus_exact *ex;
+    sus_refatt_chol chol;
+    long double h;          /* the proved step, sus_refatt_step */
     double t;
-    long double w[2], q[4]; /* w(t) and the attitude as a quaternion (not normalised) */
+    long double u[2], q[4]; /* u = L^T w(t) and the attitude as a quaternion (not normalised) */
     double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */
+    double t_s;             /* the steady tail from here on (refattitude.c) */
+    long double axis[2];    /* the steady rotation w*: its axis (third entry 0) */
+    long double speed[2];   /* and |w*| to 128 bits, hi + lo */
+    long double q_s[4];     /* q(t_s), once steady */
+    int steady;
 } sus_refatt;
+
+/* The step of the reference for the motion of ex: the largest of a grid of candidates whose
+ * truncation bound (refattitude.c) holds; positive for every motion (infinite for w = 0, which
+ * needs no step). */
+long double sus_refatt_step(const sus_exact *ex);
 
 /* Starts at t0 with R(t0) = R0 (a rotation) and w(t0) from the closed form. The integration
  * cannot fail and allocates nothing, so there is nothing to check and nothing to free. */
 void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const double R0[3][3]);
 /* Advances to t1 >= the current time and copies R(t1). The steps depend on the times asked
- * for before (each stretch is cut into equal steps). */
+ * for before (each stretch is cut into equal steps of at most h). */
 void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3]);
 /* R(t1) for t1 at or after the times asked for before: the state is carried only along the
- * grid t0 + j / SUS_REFATT_PRECISE_STEPS, and R(t1) is one more, partial step from the last
- * grid point, not kept. So R(t1) is the same whichever times were asked for before (a row of
- * the exact run does not depend on which rows are written). Not to be mixed with
- * sus_refatt_advance on one sus_refatt. */
+ * grid t0 + j h, and R(t1) is one more, partial step from the last grid point, not kept. So R(t1)
+ * is the same whichever times were asked for before (a row of the exact run does not depend on
+ * which rows are written). Not to be mixed with sus_refatt_advance on one sus_refatt. */
 void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3]);
 
 /* w(T) and R(T) from w(0) = w0, R(0) = I. */

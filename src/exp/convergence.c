@@ -19,21 +19,10 @@
 /* The larger of a and b, NaN when either is: one failed start fails the point. */
 static double fmax_nan(double a, double b) { return isnan(a) || isnan(b) ? NAN : fmax(a, b); }
 
-int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const double *tk, int ntk,
-                           double T)
+/* The local errors at every step size and start time tk, worst over the starts; and how far the
+ * local reference is from a Magnus check. */
+static void local_errors(sus_exp_convergence *c, const sus_exact *ex, const double *tk, int ntk)
 {
-    memset(c, 0, sizeof *c);
-    c->nmethod = sus_step_method_count();
-    c->m = calloc((size_t)c->nmethod, sizeof *c->m);
-    if (!c->m) {
-        fprintf(stderr, "convergence: out of memory\n");
-        return -1;
-    }
-    for (int j = 0; j < SUS_EXP_CONV_NJ; j++) {
-        c->eps[j] = ldexp(1.0, SUS_EXP_CONV_J0 - j);
-        c->glob_eps[j] = T / (double)llround(fmax(1.0, round(T / c->eps[j])));
-    }
-
     for (int j = 0; j < SUS_EXP_CONV_NJ; j++)
         for (int t = 0; t < ntk; t++) {
             sus_exp_local_ref ref;
@@ -57,7 +46,12 @@ int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const d
                     cm->loc_so3[r][j] = fmax_nan(cm->loc_so3[r][j], e.so3[r]);
             }
         }
+}
 
+/* The reference attitude R(T), checked against a Magnus run; then the global errors at T of every
+ * method, step size and reconstruction. */
+static void global_errors(sus_exp_convergence *c, const sus_exact *ex, double T)
+{
     double I3[3][3], Rm[3][3];
     sus_refatt ra;
     sus_mat3_identity(I3);
@@ -80,6 +74,24 @@ int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const d
                 cm->glob_lambda[j] = g.lambda;
                 cm->glob_so3[r][j] = g.so3;
             }
+}
+
+int sus_exp_convergence_run(sus_exp_convergence *c, const sus_exact *ex, const double *tk, int ntk,
+                           double T)
+{
+    memset(c, 0, sizeof *c);
+    c->nmethod = sus_step_method_count();
+    c->m = calloc((size_t)c->nmethod, sizeof *c->m);
+    if (!c->m) {
+        fprintf(stderr, "convergence: out of memory\n");
+        return -1;
+    }
+    for (int j = 0; j < SUS_EXP_CONV_NJ; j++) {
+        c->eps[j] = ldexp(1.0, SUS_EXP_CONV_J0 - j);
+        c->glob_eps[j] = T / (double)llround(fmax(1.0, round(T / c->eps[j])));
+    }
+    local_errors(c, ex, tk, ntk);
+    global_errors(c, ex, T);
     return 0;
 }
 

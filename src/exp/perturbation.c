@@ -329,6 +329,78 @@ static int attitudes(const sus_model *m, const double R0[3][3], const double x[2
     return st == GSL_SUCCESS ? SUS_EXP_PERTURB_OK : SUS_EXP_PERTURB_ODE_FAILED;
 }
 
+/* The sample times: n + 1 points spread over where chi is not flat, each with the stencil of NFD
+ * points hd apart, into tA; the same times less eps into tB, descending (integrated backward
+ * from 0). */
+static void sample_times(double eps, int n, double hd, double *tA, double *tB)
+{
+    const double a = SUS_EXP_PERTURB_FLAT;
+    const int np = (n + 1) * NFD;
+    for (int i = 0; i <= n; i++)
+        for (int k = 0; k < NFD; k++) {
+            const double t = eps * (a + (1.0 - 2.0 * a) * i / n) + (k - 2) * hd;
+            tA[i * NFD + k] = t;
+            tB[np - 1 - (i * NFD + k)] = t - eps;  /* descending: integrated backward from 0 */
+        }
+}
+
+/* The method's step of (w, R) from (x0, I): R1 and x1 = w^1. */
+static int method_step(const sus_exp_perturb *P, sus_recon recon, const double x0[2],
+                       double R1[3][3], double x1[2])
+{
+    sus_attitude att;
+    double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
+    sus_stepper_stats sst;
+    sus_attitude_identity(&att);
+    if (sus_stepper_full(P->st, P->m, P->eps, recon, &att, w, wn, &lam, &sst) != SUS_STEPPER_OK)
+        return SUS_EXP_PERTURB_STEP_FAILED;
+    sus_attitude_get(&att, R1);
+    x1[0] = wn[0];
+    x1[1] = wn[1];
+    return SUS_EXP_PERTURB_OK;
+}
+
+/* The blend R_A exp(chi log(R_A^T R_B)) at the NFD stencil times of sample i, into Rk. */
+static void blend(double eps, const double *tA, double (*RA)[3][3], double (*RB)[3][3],
+                  int i, int np, double Rk[NFD][3][3])
+{
+    for (int k = 0; k < NFD; k++) {
+        const int ia = i * NFD + k, ib = np - 1 - ia;
+        double Q[3][3], L[3], E[3][3], dchi;
+        const double chi = sus_exp_perturb_chi(tA[ia] / eps, &dchi);
+        sus_mat3_mul_at(Q, RA[ia], RB[ib]);
+        so3_log(Q, L);
+        for (int j = 0; j < 3; j++)
+            L[j] *= chi;
+        sus_so3_exp(L, E);
+        sus_mat3_mul(Rk[k], RA[ia], E);
+    }
+}
+
+/* At the stencil's middle time t: the attitude perturbation vee(R^T R') - w, R' the central
+ * difference with step hd, and the w perturbation |X' - f(X)|, each into its running sup. */
+static void perturbation_at(const sus_exp_perturb *P, double t, const double x0[2],
+                            const double x1[2], double Rk[NFD][3][3], double hd, double *sup_att,
+                            double *sup_g)
+{
+    static const double cfd[NFD] = {1.0 / 12.0, -2.0 / 3.0, 0.0, 2.0 / 3.0, -1.0 / 12.0};
+    double Rd[3][3] = {{0}}, P3[3][3], v[3], X[2], Xd[2], f[2];
+    for (int k = 0; k < NFD; k++)
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                Rd[r][c] += cfd[k] * Rk[k][r][c] / hd;
+    sus_mat3_mul_at(P3, Rk[2], Rd);
+    double body[3];
+    sus_so3_vee(P3, body);
+    sus_exp_perturb_curve(P, t, x0, x1, X, Xd);
+    v[0] = body[0] - X[0];
+    v[1] = body[1] - X[1];
+    v[2] = body[2];
+    *sup_att = fmax(*sup_att, sus_vec3_norm(v));
+    sus_contdyn(P->m, X, f);
+    *sup_g = fmax(*sup_g, hypot(Xd[0] - f[0], Xd[1] - f[1]));
+}
+
 /* (Per11): the geodesic blend R = R_A exp(chi log(R_A^T R_B)) of the exact attitude from
  * (I, x0) and the exact one backward from the method's (R1, x1); its perturbation is
  * vee(R^T R') - w, with R' from a fourth-order central difference. Only the times where chi
@@ -336,7 +408,6 @@ static int attitudes(const sus_model *m, const double R0[3][3], const double x[2
 int sus_exp_perturb_sup_so3(sus_exp_perturb *P, sus_recon recon, const double x0[2], int n, double tol,
                            double *sup_att, double *sup_g)
 {
-    static const double cfd[NFD] = {1.0 / 12.0, -2.0 / 3.0, 0.0, 2.0 / 3.0, -1.0 / 12.0};
     double tA[(SUP_MAXN + 1) * NFD], tB[(SUP_MAXN + 1) * NFD];
     double RA[(SUP_MAXN + 1) * NFD][3][3], RB[(SUP_MAXN + 1) * NFD][3][3];
     if (n > SUP_MAXN)
@@ -345,54 +416,20 @@ int sus_exp_perturb_sup_so3(sus_exp_perturb *P, sus_recon recon, const double x0
      * truncation error hd^4 |R^(5)| / 30 is below 1e-9 of the perturbation at any eps <= 1 */
     const double eps = P->eps, a = SUS_EXP_PERTURB_FLAT, hd = 0.1 * (1.0 - 2.0 * a) * eps / n;
     const int np = (n + 1) * NFD;
-    for (int i = 0; i <= n; i++)
-        for (int k = 0; k < NFD; k++) {
-            const double t = eps * (a + (1.0 - 2.0 * a) * i / n) + (k - 2) * hd;
-            tA[i * NFD + k] = t;
-            tB[np - 1 - (i * NFD + k)] = t - eps;  /* descending: integrated backward from 0 */
-        }
-    /* the method's step of (w, R) from (x0, I) */
-    sus_attitude att;
-    double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam, R1[3][3], I3[3][3];
-    sus_stepper_stats sst;
-    sus_attitude_identity(&att);
-    if (sus_stepper_full(P->st, P->m, eps, recon, &att, w, wn, &lam, &sst) != SUS_STEPPER_OK)
-        return SUS_EXP_PERTURB_STEP_FAILED;
-    sus_attitude_get(&att, R1);
+    sample_times(eps, n, hd, tA, tB);
+    double R1[3][3], I3[3][3], x1[2];
+    int s = method_step(P, recon, x0, R1, x1);
+    if (s != SUS_EXP_PERTURB_OK)
+        return s;
     sus_mat3_identity(I3);
-    const double x1[2] = {wn[0], wn[1]};
-    int s;
     if ((s = attitudes(P->m, I3, x0, 0.0, tA, np, RA, tol)) != SUS_EXP_PERTURB_OK ||
         (s = attitudes(P->m, R1, x1, 0.0, tB, np, RB, tol)) != SUS_EXP_PERTURB_OK)
         return s;
     *sup_att = *sup_g = 0.0;
     for (int i = 0; i <= n; i++) {
-        double Rk[NFD][3][3], Rd[3][3] = {{0}}, P3[3][3], v[3], X[2], Xd[2], f[2];
-        for (int k = 0; k < NFD; k++) {
-            const int ia = i * NFD + k, ib = np - 1 - ia;
-            double Q[3][3], L[3], E[3][3], dchi;
-            const double chi = sus_exp_perturb_chi(tA[ia] / eps, &dchi);
-            sus_mat3_mul_at(Q, RA[ia], RB[ib]);
-            so3_log(Q, L);
-            for (int j = 0; j < 3; j++)
-                L[j] *= chi;
-            sus_so3_exp(L, E);
-            sus_mat3_mul(Rk[k], RA[ia], E);
-        }
-        for (int k = 0; k < NFD; k++)
-            for (int r = 0; r < 3; r++)
-                for (int c = 0; c < 3; c++)
-                    Rd[r][c] += cfd[k] * Rk[k][r][c] / hd;
-        sus_mat3_mul_at(P3, Rk[2], Rd);
-        double body[3];
-        sus_so3_vee(P3, body);
-        sus_exp_perturb_curve(P, tA[i * NFD + 2], x0, x1, X, Xd);
-        v[0] = body[0] - X[0];
-        v[1] = body[1] - X[1];
-        v[2] = body[2];
-        *sup_att = fmax(*sup_att, sus_vec3_norm(v));
-        sus_contdyn(P->m, X, f);
-        *sup_g = fmax(*sup_g, hypot(Xd[0] - f[0], Xd[1] - f[1]));
+        double Rk[NFD][3][3];
+        blend(eps, tA, RA, RB, i, np, Rk);
+        perturbation_at(P, tA[i * NFD + 2], x0, x1, Rk, hd, sup_att, sup_g);
     }
     return SUS_EXP_PERTURB_OK;
 }

@@ -130,11 +130,11 @@ void sus_exp_sens_run_one(const sus_exact *ex, const sus_stepper_type *st, doubl
         r->err_fast = last;
 }
 
-double sus_exp_sens_first_failure(const sus_exact *ex, const sus_stepper_type *st)
+double sus_exp_sens_first_failure(const sus_exact *ex, const sus_stepper_type *st, double scale)
 {
     for (int j = 4 * SUS_EXP_SENS_FAIL_MIN_EXP; j <= 4 * SUS_EXP_SENS_FAIL_MAX_EXP; j++) {
         sus_exp_sens_run r;
-        const double eps = exp2(0.25 * j);
+        const double eps = exp2(0.25 * j) * scale;
         sus_exp_sens_run_one(ex, st, eps, &r);
         if (r.failed) return eps;
     }

@@ -53,9 +53,10 @@ void sus_exp_sens_state(const sus_exact *body, int s, double w0[2]);
 void sus_exp_sens_run_one(const sus_exact *ex, const sus_stepper_type *st, double eps,
                           sus_exp_sens_run *r);
 
-/* The first step eps = 2^(j/4) of the search at which the run fails; INFINITY when none does up
- * to 2^SUS_EXP_SENS_FAIL_MAX_EXP. */
-double sus_exp_sens_first_failure(const sus_exact *ex, const sus_stepper_type *st);
+/* The first step eps = 2^(j/4) scale of the search at which the run fails; INFINITY when none does
+ * up to 2^SUS_EXP_SENS_FAIL_MAX_EXP scale (scale: the body's time against another's, e.g. k_paper
+ * / k, so that the search covers the same eps k on every body). */
+double sus_exp_sens_first_failure(const sus_exact *ex, const sus_stepper_type *st, double scale);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 #include "stability.h"
 
 #include "newton.h"
+#include "orderfit.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -10,33 +11,54 @@
 const char *const SUS_EXP_STAB_NAMES[SUS_EXP_STAB_NCLASS] = {"good", "wrong limit", "blow-up",
                                                              "solver failure", "regularity lost"};
 
-/* Continuation of the implicit step in eps from 0 (where the root is the trivial one) to eps: the
- * physical branch. Returns 0 with w^{k+1} of that root in x, or -1 when a continuation step
- * fails or the Jacobian's determinant changes sign (a fold). */
+/* The physical branch: the root continued in eps from 0 (where it is the trivial one) to eps,
+ * newton.h's continuation. Returns SUS_STEPPER_OK with w^{k+1} of that root in x, or the
+ * continuation's failure: SUS_STEPPER_SINGULAR at a fold. */
 static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
                          double x[2])
 {
-    const int n = st->unknowns;
-    double prev[SUS_MAX_UNKNOWNS], cur[SUS_MAX_UNKNOWNS], guess[SUS_MAX_UNKNOWNS];
-    st->guess(m, 0.0, w, cur); /* the root at eps = 0 */
-    for (int i = 0; i < n; i++)
-        prev[i] = cur[i];
-    for (int j = 1; j <= SUS_EXP_STAB_CONTINUATION_STEPS; j++) {
-        const double e = eps * j / SUS_EXP_STAB_CONTINUATION_STEPS;
-        if (j == 1)
-            st->guess(m, e, w, guess);
-        else
-            for (int i = 0; i < n; i++) /* linear extrapolation */
-                guess[i] = 2.0 * cur[i] - prev[i];
-        sus_stepper_stats s;
-        if (sus_step_newton_solve(st->residual, n, m, e, w, guess, &s) != SUS_STEPPER_OK || !(s.det > 0.0))
-            return -1;
-        for (int i = 0; i < n; i++) {
-            prev[i] = cur[i];
-            cur[i] = guess[i];
-        }
+    double root[SUS_MAX_UNKNOWNS], reg;
+    sus_stepper_stats s;
+    const int rc = sus_step_newton_branch(st->residual, st->guess, st->unknowns, m, eps, w, root, &s, &reg);
+    if (rc == SUS_STEPPER_OK)
+        st->result(m, eps, w, root, x);
+    return rc;
+}
+
+/* The class a step w -> x (status, stats s) ends the run with, or -1 when the run goes on. */
+static int step_class(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
+                      const double x[2], int status, const sus_stepper_stats *s, double r0, int check_branch)
+{
+    if (status == SUS_STEPPER_SINGULAR || (st->unknowns && status == SUS_STEPPER_OK && !(s->det > 0.0)))
+        return SUS_EXP_STAB_REGULARITY;
+    if (status != SUS_STEPPER_OK)
+        return SUS_EXP_STAB_SOLVER;
+    if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > SUS_EXP_STAB_BLOWUP_FACTOR * r0)
+        return SUS_EXP_STAB_BLOWUP;
+    if (check_branch && st->unknowns) {
+        double xc[2];
+        const int rc = continue_root(m, st, eps, w, xc);
+        if (rc != SUS_STEPPER_OK)
+            return rc == SUS_STEPPER_SINGULAR ? SUS_EXP_STAB_REGULARITY : SUS_EXP_STAB_SOLVER;
+        if (hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + r0))
+            return SUS_EXP_STAB_SOLVER;
     }
-    st->result(m, eps, w, cur, x);
+    return -1;
+}
+
+/* A run whose state repeats bit for bit within SUS_EXP_STAB_CYCLE steps (a cycle of the step map,
+ * which is deterministic) repeats for ever: its remaining steps are skipped and w_N is read off
+ * the cycle; nothing they could meet is missed. */
+#define SUS_EXP_STAB_CYCLE 8
+
+/* The period p <= SUS_EXP_STAB_CYCLE with w = ring[(k - p) % CYCLE], or 0. */
+static int period(const double ring[][2], long k, const double w[2])
+{
+    for (int p = 1; p <= SUS_EXP_STAB_CYCLE && p <= k; p++) {
+        const double *v = ring[(k - p) % SUS_EXP_STAB_CYCLE];
+        if (v[0] == w[0] && v[1] == w[1])
+            return p;
+    }
     return 0;
 }
 
@@ -44,44 +66,77 @@ void sus_exp_stability_run(const sus_exact *ex, const sus_stepper_type *st, doub
                           int check_branch, sus_exp_stab_result *res)
 {
     const sus_model *m = ex->model;
-    double w[3] = {ex->w0[0], ex->w0[1], 0.0}, winf[2];
+    double w[3] = {ex->w0[0], ex->w0[1], 0.0}, ring[SUS_EXP_STAB_CYCLE][2], winf[2];
     const double r0 = hypot(w[0], w[1]);
     sus_exact_limit(ex, winf);
-    *res = (sus_exp_stab_result){SUS_EXP_STAB_GOOD, 0, NAN};
-    for (long k = 1; k <= N; k++) {
+    *res = (sus_exp_stab_result){SUS_EXP_STAB_GOOD, 0, NAN, {NAN, NAN}};
+    for (long k = 1; k <= N; k++) { /* ring[j % CYCLE] holds w_j */
         double x[3], lam;
         sus_stepper_stats s;
+        ring[(k - 1) % SUS_EXP_STAB_CYCLE][0] = w[0], ring[(k - 1) % SUS_EXP_STAB_CYCLE][1] = w[1];
         const int status = st->apply(m, eps, w, x, &lam, &s);
         res->step = k;
-        if (status == SUS_STEPPER_SINGULAR || (st->unknowns && status == SUS_STEPPER_OK && !(s.det > 0.0))) {
-            res->cls = SUS_EXP_STAB_REGULARITY;
+        res->w_fail[0] = w[0], res->w_fail[1] = w[1];
+        if ((res->cls = step_class(m, st, eps, w, x, status, &s, r0, check_branch)) >= 0)
             return;
+        w[0] = x[0], w[1] = x[1];
+        const int p = period(ring, k, w); /* w_k = w_{k-p}: w_N = w_{k-p+(N-k) mod p} */
+        if (p) {
+            const double *v = ring[(k - p + (N - k) % p) % SUS_EXP_STAB_CYCLE];
+            w[0] = v[0], w[1] = v[1];
+            break;
         }
-        if (status != SUS_STEPPER_OK) {
-            res->cls = SUS_EXP_STAB_SOLVER;
-            return;
-        }
-        if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > SUS_EXP_STAB_BLOWUP_FACTOR * r0) {
-            res->cls = SUS_EXP_STAB_BLOWUP;
-            return;
-        }
-        if (check_branch && st->unknowns) {
-            double xc[2];
-            if (continue_root(m, st, eps, w, xc) != 0) {
-                res->cls = SUS_EXP_STAB_REGULARITY;
-                return;
-            }
-            if (hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + r0)) {
-                res->cls = SUS_EXP_STAB_SOLVER;
-                return;
-            }
-        }
-        w[0] = x[0];
-        w[1] = x[1];
     }
     res->step = 0;
+    res->w_fail[0] = w[0], res->w_fail[1] = w[1];
     res->final_err = hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
     res->cls = res->final_err <= SUS_EXP_STAB_GOOD_TOL ? SUS_EXP_STAB_GOOD : SUS_EXP_STAB_WRONG_LIMIT;
+}
+
+/* Does the branch from w reach e? */
+static int reaches(const sus_model *m, const sus_stepper_type *st, const double w[2], double e, double *root)
+{
+    double reg;
+    sus_stepper_stats s;
+    return sus_step_newton_branch(st->residual, st->guess, st->unknowns, m, e, w, root, &s, &reg) ==
+           SUS_STEPPER_OK;
+}
+
+/* |det J| of the step equation at its branch root for step e. */
+static double branch_det(const sus_model *m, const sus_stepper_type *st, const double w[2], double e)
+{
+    double root[SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS],
+        dx[SUS_MAX_UNKNOWNS], det = NAN, scale;
+    if (!reaches(m, st, w, e, root))
+        return NAN;
+    st->residual(m, e, w, root, g, J, &scale);
+    sus_step_linear_solve(st->unknowns, J, g, dx, &det);
+    return fabs(det);
+}
+
+int sus_exp_fold(const sus_model *m, const sus_stepper_type *st, const double w[2], double eps,
+                 double *e_star, double *exponent)
+{
+    double root[SUS_MAX_UNKNOWNS], lo = 0.0, hi = eps, s[SUS_EXP_FOLD_POINTS], d[SUS_EXP_FOLD_POINTS];
+    if (!st->unknowns || reaches(m, st, w, eps, root))
+        return -1;
+    while (fabs(hi - lo) > SUS_EXP_FOLD_BISECT * fabs(eps)) {
+        const double mid = 0.5 * (lo + hi);
+        if (reaches(m, st, w, mid, root))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    *e_star = lo;
+    for (int j = 0; j < SUS_EXP_FOLD_POINTS; j++) { /* e* - e = 10^-3 ... 10^-7 e*, largest first */
+        s[j] = pow(10.0, -3.0 - j) * fabs(lo);
+        d[j] = branch_det(m, st, w, lo - copysign(s[j], lo));
+    }
+    sus_exp_order_fit f;
+    if (sus_exp_fit_order(s, d, SUS_EXP_FOLD_POINTS, INFINITY, 0.0, &f) != 0 || f.used != SUS_EXP_FOLD_POINTS)
+        return -1;
+    *exponent = f.slope;
+    return 0;
 }
 
 void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2])
@@ -91,7 +146,8 @@ void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2])
     w[0] = (u1 - ref->l21 * w[1]) / ref->l11;
 }
 
-/* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? */
+/* Does a start 1e-6 off the attracting rotation return to the line c(w) = 0 at step h? 1 when it
+ * does, 0 when it does not, 2 when a step is refused as beyond its series' proved radius. */
 static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
 {
     const double theta = atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
@@ -101,7 +157,10 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     for (int k = 0; k < 4000; k++) {
         double x[3], lam;
         sus_stepper_stats s;
-        if (st->apply(ex->model, eps, w, x, &lam, &s) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        const int status = st->apply(ex->model, eps, w, x, &lam, &s);
+        if (status == SUS_STEPPER_DIVERGED)
+            return 2;
+        if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
             return 0;
         w[0] = x[0];
         w[1] = x[1];
@@ -109,19 +168,24 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     return fabs(sus_c(ex->model, w)) < c0;
 }
 
-double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi)
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
+                               int *radius_bound)
 {
-    if (!returns(ex, st, lo))
+    int at_hi = returns(ex, st, hi);
+    *radius_bound = 0;
+    if (returns(ex, st, lo) != 1)
         return NAN;
-    if (returns(ex, st, hi))
+    if (at_hi == 1)
         return INFINITY;
     while (hi - lo > 1e-4 * lo) {
         const double mid = 0.5 * (lo + hi);
-        if (returns(ex, st, mid))
+        const int r = returns(ex, st, mid);
+        if (r == 1)
             lo = mid;
         else
-            hi = mid;
+            hi = mid, at_hi = r;
     }
+    *radius_bound = at_hi == 2;
     return 0.5 * (lo + hi);
 }
 

@@ -4,12 +4,16 @@
  *   GOOD        it ends within SUS_EXP_STAB_GOOD_TOL |w_inf| of the exact steady rotation w_inf;
  *   WRONG_LIMIT bounded, but ends elsewhere (a wrong steady rotation, a cycle, ...);
  *   BLOWUP      |w| exceeds SUS_EXP_STAB_BLOWUP_FACTOR |w0| or stops being finite;
- *   SOLVER      Newton did not converge, or converged to another root than the branch that
- *               continuation in eps from eps = 0 follows (checked when check_branch is set),
+ *   SOLVER      the step's solve failed other than at a fold, or its root is not the one the
+ *               branch continued in eps from eps = 0 reaches (checked when check_branch is set),
  *               or a Taylor step's series diverges (beyond its radius of convergence);
- *   REGULARITY  the (REGLOC) block is singular at the root or has changed sign from its
- *               eps -> 0 value (det I_m > 0), or the continuation in eps meets a fold: the
- *               discrete flow stops being defined. */
+ *   REGULARITY  the branch meets a fold (det J -> 0 as it turns back: beyond it the step equation
+ *               has no root on the branch), or the (REGLOC) block is singular at the root or has
+ *               changed sign from its eps -> 0 value (det I_m > 0): the discrete flow stops
+ *               being defined.
+ * The implicit steps solve for that branch themselves (newton.h: Newton from their prediction,
+ * else continuation in eps), so SOLVER and REGULARITY measure the step equation, not where
+ * Newton from one starting point happens to fail. */
 #ifndef SUS_EXP_STABILITY_H
 #define SUS_EXP_STABILITY_H
 
@@ -32,12 +36,12 @@ extern const char *const SUS_EXP_STAB_NAMES[SUS_EXP_STAB_NCLASS];
 
 #define SUS_EXP_STAB_GOOD_TOL 0.01
 #define SUS_EXP_STAB_BLOWUP_FACTOR 100.0
-#define SUS_EXP_STAB_CONTINUATION_STEPS 8
 
 typedef struct {
     int cls;
     long step;        /* where a failure happened (0 when none) */
     double final_err; /* |w_N - w_inf| / |w_inf| (NaN after a failure) */
+    double w_fail[2]; /* the state the failed step started from (w_N after none) */
 } sus_exp_stab_result;
 
 void sus_exp_stability_run(const sus_exact *ex, const sus_stepper_type *st, double eps, long N,
@@ -50,8 +54,11 @@ void sus_exp_ellipse_point(const sus_exact *ref, double theta, double w[2]);
 /* The linear stability limit of an explicit stepper at the attracting steady rotation,
  * measured: the largest h for which a start 1e-6 off the rotation returns to the line of
  * steady rotations (bisection to 1e-4 relative over [lo, hi]). Returns INFINITY when it still
- * returns at hi, NAN when it does not even return at lo. */
-double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi);
+ * returns at hi, NAN when it does not even return at lo. *radius_bound: 1 when what ends the
+ * returns there is a step refused as beyond its series' proved radius (a Taylor step), not an
+ * instability: the linear limit lies beyond the steps the method takes from there. */
+double sus_exp_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
+                               int *radius_bound);
 
 /* The run length for step h: long enough for the exact motion (k t = 40) and for a method
  * whose contraction per step is only 1 - O(1/h) (the A-stable midpoint rule at large h). */
@@ -63,6 +70,18 @@ long sus_exp_stability_steps(double h);
 #define SUS_EXP_STAB_BRANCH_H 0.05
 void sus_exp_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs, int nh,
                           int nangle, sus_exp_stab_result *results);
+
+/* Where the step equation's branch from w has a fold, for a step eps the continuation does not
+ * reach: e_star, the largest step it reaches (bisection to SUS_EXP_FOLD_BISECT of eps), and the
+ * exponent of |det J| at the branch root against e_star - e, the least-squares slope over
+ * e_star - e = 10^-3 ... 10^-7 e_star (SUS_EXP_FOLD_POINTS, one a decade). At a quadratic fold
+ * (two roots meet and vanish) det J ~ (e_star - e)^(1/2). Returns 0, or -1 when the branch reaches
+ * eps (or the method has no step equation). Far below 10^-7 the bisection's own resolution
+ * (2^-50 of eps) would enter. */
+#define SUS_EXP_FOLD_BISECT 0x1p-50
+#define SUS_EXP_FOLD_POINTS 5
+int sus_exp_fold(const sus_model *m, const sus_stepper_type *st, const double w[2], double eps,
+                 double *e_star, double *exponent);
 
 /* The linear stability limit at the attracting rotation, where the transverse eigenvalue of Df is
  * -k: the smallest h > 0 with |R(-h)| = 1 for the method's stability function R (Euler: 2; RK4:

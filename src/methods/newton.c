@@ -117,7 +117,7 @@ static void restore(const newton_point *p, double *x, int n, sus_stepper_stats *
 typedef struct {
     newton_point best, ok;
     double prev;
-    int polishing;
+    int polishing, maxit;
 } newton_state;
 
 /* One decision after evaluating G at x: returns a SUS_STEPPER_* status to end the solve, or -1 to
@@ -152,7 +152,7 @@ static int decide(newton_state *s, double *x, int n, sus_stepper_stats *st)
     if (st->residual <= SUS_STEP_NEWTON_RTOL * st->scale) {
         s->polishing = 1;
         keep(&s->ok, x, n, st->residual, st->scale);
-    } else if (st->iterations == SUS_STEP_NEWTON_MAXIT) {
+    } else if (st->iterations == s->maxit) {
         return SUS_STEPPER_NO_CONVERGENCE;
     }
     return -1;
@@ -160,11 +160,12 @@ static int decide(newton_state *s, double *x, int n, sus_stepper_stats *st)
 
 /* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
  * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
-int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-                        double *x, sus_stepper_stats *st)
+/* Newton as described in newton.h, at most maxit corrections. */
+static int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
+                        double *x, sus_stepper_stats *st, int maxit)
 {
     double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS];
-    newton_state s = {.prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY};
+    newton_state s = {.prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY, .maxit = maxit};
     keep(&s.best, x, n, INFINITY, 0.0);
     st->iterations = 0;
     st->det = NAN;
@@ -194,12 +195,132 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
     }
 }
 
+int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
+                        double *x, sus_stepper_stats *st)
+{
+    return newton_solve(G, n, m, eps, w, x, st, SUS_STEP_NEWTON_MAXIT);
+}
+
+/* ---- the branch: continuation in eps from the root at eps = 0 ---- */
+
+/* |det J| / |J|_F^2 (n = 2) or |det J|^(2/n) / |J|_F^2: how far J is from singular, scale-free. */
+static double regularity(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
+                         const double *x)
+{
+    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS], det, sc,
+        f2 = 0.0;
+    G(m, eps, w, x, g, J, &sc);
+    for (int i = 0; i < n * n; i++)
+        f2 += J[i] * J[i];
+    sus_step_linear_solve(n, J, g, dx, &det);
+    return pow(fabs(det), 2.0 / n) / f2;
+}
+
+/* The scale of the unknowns (values of w or its increments) from w: the largest |x| on w's energy
+ * ellipse, sqrt(2 E(w) / lambda_min(I_m)) (the steps keep E, or nearly), and at least |w|_inf. A
+ * near-singular I_m stretches the ellipse by cond(I_m)^(1/2), and the roots with it. */
+static double unknowns_scale(const sus_model *m, const double w[2])
+{
+    const double (*I)[3] = m->I;
+    const double tr = 0.5 * (I[0][0] + I[1][1]), dif = 0.5 * (I[0][0] - I[1][1]);
+    const double lmax = tr + hypot(dif, I[0][1]), lmin = m->det_m / lmax; /* I_m symmetric, > 0 */
+    const double reach = sqrt(2.0 * sus_energy(m, w) / lmin);
+    return fmax(fmax(fabs(w[0]), fabs(w[1])), isfinite(reach) ? reach : 0.0);
+}
+
+/* |a - b|_inf over n entries. */
+static double moved_by(const double *a, const double *b, int n)
+{
+    double d = 0.0;
+    for (int i = 0; i < n; i++)
+        d = fmax(d, fabs(a[i] - b[i]));
+    return d;
+}
+
+/* One stage of the continuation: Newton at e from the prediction xp; the stage holds when Newton
+ * converges within BRANCH_STAGE_ITS iterations to a root with det J > 0 (the sign at e = 0, where J
+ * is I_m or blocks of it) no farther than BRANCH_JUMP times the unknowns' scale from xp: a root
+ * reached that way is the one the prediction follows, not one of the others (they lie that far
+ * away). */
+static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const double w[2], double *xp,
+                 sus_stepper_stats *st, int *its)
+{
+    double x[SUS_MAX_UNKNOWNS];
+    const double size = unknowns_scale(m, w);
+    for (int i = 0; i < n; i++)
+        x[i] = xp[i];
+    const int rc = newton_solve(G, n, m, e, w, x, st, BRANCH_STAGE_ITS);
+    *its += st->iterations;
+    const double moved = moved_by(x, xp, n);
+    if (rc != SUS_STEPPER_OK || !(st->det > 0.0) || !(moved <= BRANCH_JUMP * size))
+        return -1;
+    for (int i = 0; i < n; i++)
+        xp[i] = x[i];
+    return 0;
+}
+
+int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
+                           const double w[2], double *x, sus_stepper_stats *st, double *reg_min)
+{
+    double prev[SUS_MAX_UNKNOWNS], cur[SUS_MAX_UNKNOWNS], xp[SUS_MAX_UNKNOWNS];
+    double e = 0.0, e_prev = 0.0, de = eps / BRANCH_FIRST, reg_last = 1.0;
+    int its = 0;
+    guess(m, 0.0, w, cur); /* the root at eps = 0 */
+    for (int i = 0; i < n; i++)
+        prev[i] = cur[i];
+    const double reg0 = regularity(G, n, m, 0.0, w, cur);
+    *reg_min = 1.0;
+    for (int stages = 0; e != eps; stages++) {
+        if (stages == BRANCH_MAX_STAGES || !(fabs(de) >= BRANCH_MIN_STAGE * fabs(eps))) {
+            st->iterations = its;
+            return reg_last <= BRANCH_FOLD ? SUS_STEPPER_SINGULAR : SUS_STEPPER_NO_CONVERGENCE;
+        }
+        const double en = fabs(eps - e) <= fabs(de) ? eps : e + de;
+        if (e == 0.0) { /* the explicit prediction: accurate for a first stage short enough */
+            guess(m, en, w, xp);
+            if (!(moved_by(xp, cur, n) <= BRANCH_JUMP * unknowns_scale(m, w))) {
+                de *= BRANCH_SHRINK; /* too long to predict: shorter, without a Newton solve */
+                continue;
+            }
+        } else {
+            for (int i = 0; i < n; i++) /* the secant through the last two roots */
+                xp[i] = cur[i] + (en - e) / (e - e_prev) * (cur[i] - prev[i]);
+        }
+        if (stage(G, n, m, en, w, xp, st, &its) != 0) {
+            de *= BRANCH_SHRINK;
+            continue;
+        }
+        for (int i = 0; i < n; i++)
+            prev[i] = cur[i], cur[i] = xp[i];
+        e_prev = e, e = en, de *= st->iterations <= BRANCH_EASY_ITS ? BRANCH_GROW_EASY : BRANCH_GROW;
+        reg_last = regularity(G, n, m, e, w, cur) / reg0;
+        *reg_min = fmin(*reg_min, reg_last);
+    }
+    for (int i = 0; i < n; i++)
+        x[i] = cur[i];
+    st->iterations = its;
+    return SUS_STEPPER_OK;
+}
+
+int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
+                                 const double w[2], double *x, sus_stepper_stats *st)
+{
+    int its = 0;
+    guess(m, eps, w, x);
+    if (stage(G, n, m, eps, w, x, st, &its) == 0)
+        return SUS_STEPPER_OK;
+    double reg;
+    const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, &reg);
+    st->iterations += its;
+    return rc;
+}
+
 int sus_step_implicit_solve(const sus_stepper_type *type, const sus_model *m, double eps,
                           const double w[3], double w_next[3], sus_stepper_stats *st)
 {
     double x[SUS_MAX_UNKNOWNS];
-    type->guess(m, eps, w, x);
-    const int status = sus_step_newton_solve(type->residual, type->unknowns, m, eps, w, x, st);
+    const int status =
+        sus_step_newton_solve_branch(type->residual, type->guess, type->unknowns, m, eps, w, x, st);
     type->result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
     return status;

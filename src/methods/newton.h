@@ -19,8 +19,32 @@ extern "C" {
 int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
                         double *x, sus_stepper_stats *st);
 
-/* The common step of the implicit DSPs: Newton on type->residual from type->guess, w^{k+1} from
- * type->result, and (w^{k+1})_3 = 0, the second equation of (DSP). Returns as sus_step_newton_solve. */
+/* The starting point of Newton at eps (a stepper's guess hook); at eps = 0 it is the root. */
+typedef void (*sus_guess_fn)(const sus_model *m, double eps, const double w[2], double *x);
+
+/* The root the step defines: the branch continued in eps from the root at eps = 0 (guess(0)),
+ * on which det J > 0 as at eps = 0 ((REGLOC): J is I_m there, or blocks of it). Stages of
+ * adaptive length, each a Newton solve from the secant through the last two roots, accepted when
+ * it converges quickly, keeps det J > 0 and stays near its prediction (no jump to another root);
+ * a failed stage is retried shorter. Regularity: r = |det J|^(2/n) / |J|_F^2 (scale-free, at most
+ * 1/n), relative to its value at eps = 0. Returns SUS_STEPPER_OK with the root in x;
+ * SUS_STEPPER_SINGULAR when the stages shrink to nothing where r had fallen to BRANCH_FOLD (a
+ * fold: the branch turns back, and beyond it the step has no root on the branch);
+ * SUS_STEPPER_NO_CONVERGENCE otherwise. *reg_min: the least r over the accepted stages. */
+int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
+                           const double w[2], double *x, sus_stepper_stats *st, double *reg_min);
+
+/* Newton from guess(eps), taken when it holds as a stage of the continuation below would (a quick
+ * convergence near the prediction, det J > 0); else the branch by continuation
+ * (sus_step_newton_branch). So where the prediction is good (small eps) the step is Newton from it,
+ * as it always was, and elsewhere the continued root, not whichever root Newton wandered to.
+ * stats.iterations counts every Newton iteration. */
+int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
+                                 const double w[2], double *x, sus_stepper_stats *st);
+
+/* The common step of the implicit DSPs: the root of type->residual by
+ * sus_step_newton_solve_branch from type->guess, w^{k+1} from type->result, and (w^{k+1})_3 = 0,
+ * the second equation of (DSP). */
 int sus_step_implicit_solve(const sus_stepper_type *type, const sus_model *m, double eps,
                           const double w[3], double w_next[3], sus_stepper_stats *st);
 
@@ -37,6 +61,29 @@ int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double 
 #define SUS_STEP_NEWTON_MAXIT 50
 /* The widest residual accepted as round-off when Newton stagnates: 1000 u times the scale. */
 #define SUS_STEP_NEWTON_STAGNATION (1000.0 * SUS_U)
+
+/* The continuation (sus_step_newton_branch). The first stage is eps / BRANCH_FIRST, shortened
+ * without a solve while the explicit prediction for it moves w by more than BRANCH_JUMP |w|; a
+ * stage that holds lets the next grow BRANCH_GROW-fold (BRANCH_GROW_EASY-fold after one that took
+ * at most BRANCH_EASY_ITS iterations: the path is nearly straight there); one that fails is
+ * retried BRANCH_SHRINK as long. From a secant prediction Newton converges quadratically in a few
+ * iterations on the branch: more than BRANCH_STAGE_ITS, or a root BRANCH_JUMP |w| from the
+ * prediction (the other roots met lie farther than |w| from the branch's), marks a stage that left
+ * it. The stages stop at BRANCH_MIN_STAGE of eps (2^-40: far below any fold's width that double
+ * precision resolves) or after BRANCH_MAX_STAGES. Near a fold Newton converges only linearly, so
+ * the stages stop where it needs more than BRANCH_STAGE_ITS iterations, with det J near a
+ * thousandth of its scale; a regularity below BRANCH_FOLD of its value at eps = 0 where they stop
+ * is a fold (a continuation stopped elsewhere leaves det J of its own size). */
+#define BRANCH_FIRST 8.0
+#define BRANCH_GROW 2.0
+#define BRANCH_GROW_EASY 4.0
+#define BRANCH_EASY_ITS 4
+#define BRANCH_SHRINK 0.25
+#define BRANCH_STAGE_ITS 10
+#define BRANCH_JUMP 0.5
+#define BRANCH_MIN_STAGE 0x1p-40
+#define BRANCH_MAX_STAGES 400
+#define BRANCH_FOLD 1e-2
 
 #ifdef __cplusplus
 }

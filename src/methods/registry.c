@@ -93,6 +93,23 @@ const char *sus_step_attitude_name(sus_attitude_form form)
     return form >= SUS_ATTITUDE_NONE && form <= SUS_ATTITUDE_QUAT ? NAMES[form] : "?";
 }
 
+const char *sus_step_method_label(const sus_stepper_type *t, sus_recon recon, char *buf, size_t len)
+{
+    if (!buf || len == 0)
+        return NULL;
+    if (!t || !t->name || (t->follows_recon && ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT))) {
+        buf[0] = '\0';
+        return NULL;
+    }
+    if (t->follows_recon)
+        snprintf(buf, len, "%s + %s", t->name, SUS_RECON_NAMES[recon]);
+    else if (t->attitude != SUS_ATTITUDE_NONE)
+        snprintf(buf, len, "%s (%s)", t->name, sus_step_attitude_name(t->attitude));
+    else
+        snprintf(buf, len, "%s", t->name);
+    return buf;
+}
+
 int sus_step_methods_write_tsv(FILE *fp)
 {
     if (!fp)

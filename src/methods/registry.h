@@ -40,6 +40,13 @@ int sus_step_method_index_of(const sus_stepper_type *type);
 /* "none", "matrix" or "quaternion": what a method's apply_full carries (stepper.h); "?" for a
  * value that is none of them. */
 const char *sus_step_attitude_name(sus_attitude_form form);
+/* How results of the method of type t run with reconstruction recon are labelled, from what the
+ * type says of itself: "NAME + RECON" when it follows the reconstruction it is given
+ * (follows_recon), else "NAME (FORM)" with the attitude form it carries (sus_step_attitude_name),
+ * "NAME" when it carries none. Into buf, cut to len - 1 characters; returns buf. NULL (nothing
+ * written) for a NULL buf or len 0; NULL and an empty buf for a NULL t or an unknown recon that
+ * the label would name. */
+const char *sus_step_method_label(const sus_stepper_type *t, sus_recon recon, char *buf, size_t len);
 /* "euler|midpoint|..." into buf: the names for usage lines and error messages, cut to len - 1
  * characters. Returns buf, or NULL (nothing written) for a NULL buf or len 0; a NULL sep is "". */
 const char *sus_step_method_names(char *buf, unsigned long len, const char *sep);

@@ -82,12 +82,12 @@ static double gauss4_stability(double z)
     return (1.0 + z / 2.0 + z * z / 12.0) / (1.0 - z / 2.0 + z * z / 12.0);
 }
 
-/* The stages x = (W_1, W_2) by Newton, w^{k+1} and lambda_{k+1} from them. */
+/* The stages x = (W_1, W_2) on the branch continued from eps = 0 (newton.h), w^{k+1} and
+ * lambda_{k+1} from them. */
 static int gauss4_stages(const sus_model *m, double eps, const double w[3], double x[4], double w_next[3],
                          double *lambda_next, sus_stepper_stats *st)
 {
-    gauss4_guess(m, eps, w, x);
-    const int status = sus_step_newton_solve(gauss4_residual, 4, m, eps, w, x, st);
+    const int status = sus_step_newton_solve_branch(gauss4_residual, gauss4_guess, 4, m, eps, w, x, st);
     gauss4_result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
     *lambda_next = sus_lagmult(m, w_next);

@@ -190,7 +190,7 @@ double sus_step_taylor_stability(int p, double z)
         .apply_order = sus_step_taylor_apply_full, .source = __FILE__};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,
- * orders 6 to 20, issue 11 follow-up): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,
+ * orders 6 to 20): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,
  * 12 at 1e-8, 12-16 at 1e-10, 14-20 at 1e-12 (within the timing noise of each other there);
  * orders 6, 14 and 20 were never clearly the fastest, so they are not registered. */
 TAYLOR_STEPPER(8)

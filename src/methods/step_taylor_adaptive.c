@@ -25,7 +25,32 @@
  * rejected and retried as short as its estimate asks (at most SHRINK_MIN times shorter; the
  * retry rescales the rejected series, recomputing it only when it overflowed); after MAX_TRIES
  * the step fails (SUS_STEPPER_REJECTED) instead of returning an answer that missed tol. Every
- * step stays inside the radius the series is proved to converge in (step_taylor.c). */
+ * step stays inside the radius the series is proved to converge in (step_taylor.c).
+ *
+ * Stiffness. With c = c(w) = I_3i w_i and g(w) = c(fA w) (linear in w), (ContDyn) gives
+ * c' = g(w) c exactly: c keeps its sign, and w moves along the energy ellipse from the
+ * steady rotation -w_inf (c = 0, g > 0) to the attracting one w_inf (c = 0, g < 0), at the rate
+ * k = -g(w_inf). On the half of the ellipse where g < 0 (it holds w_inf and the whole way there)
+ * |c| only shrinks. Where k is large (a near-singular I_m: k ~ 1/|I_m|) an explicit series is
+ * stiff near w_inf: its linear stability (step_taylor.c) holds h k below beta_p (5.07 at p = 10),
+ * and the series' radius stays ~ 1/k while c != 0. The controller then settles where the
+ * estimate meets tol at |sum_n (-hk)^n/n!| = 1, a deviation from w_inf of a fraction of tol that
+ * never decays: steps of beta_p / k for ever (10^9 for t = 10 at |I_m| = 2e-10), and a tighter
+ * tol escapes only when w lands exactly on c(w) = 0 in floating point. At that balance the step
+ * h = beta_p / k is the controller's fixed point, err = SAFETY^{p+1} tol, and the deviation's own
+ * series, dev (hk)^n / n!, gives err = dev beta_p^{p+1} / (p! p): dev = 0.29 tol at p = 6 down to
+ * 0.07 tol at p = 20. So the run settles:
+ *   once w is within dev of w_inf on the g < 0 half, with dev max(1, sqrt 2 / k') <= SETTLE tol
+ *   and k' = min(-g(w), k) (g is linear: to first order k' bounds the rate on the way from w to
+ *   w_inf), w is set to w_inf and the rest of the run is one step (the quaternion's series for a
+ *   constant w, exp(h w^/2), summed in closed form). To first order in dev the exact flow from w
+ *   stays within dev of w_inf (|c| shrinks at a rate >= k'), and R' = R w^ driven by w instead of
+ *   w_inf moves R by at most sqrt 2 int |w - w_inf| dt <= sqrt 2 dev / k' (the Frobenius norm of
+ *   w^ is sqrt 2 |w|): the step's local error is within SETTLE tol in both, the promise every
+ *   other step keeps. SETTLE = 1/2 lies above the balance above, so a stiff run settles instead
+ *   of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf, times the rounding of E that w_inf
+ *   inherits (up to cond(I_m)), settles at any tol: there c(w) is rounding noise, which would
+ *   otherwise drive the stiff series. */
 #include "taylor.h"
 #include "taylor_series.h"
 
@@ -46,6 +71,11 @@
  * the estimate, not this, decides the accuracy). */
 #define RADIUS_FRACTION 0.99
 #define ORDER_SHIFT 2.0
+/* Settling (see the top): half of tol, above the stiff balance (at most 0.29 tol) and with room
+ * for the second-order terms the first-order bound leaves out; the floor is a few roundings of a
+ * state of size |w_inf|. */
+#define SETTLE 0.5
+#define SETTLE_FLOOR 8.0
 
 struct sus_tol_work {
     const sus_model *m;
@@ -55,6 +85,9 @@ struct sus_tol_work {
     double h; /* the last accepted step */
     double q0[4]; /* the attitude quaternion at its start */
     taylor_series t; /* its series, for dense output */
+    double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
+    double floor; /* w within this of w_inf settles at any tol: the rounding of w_inf itself */
+    int settled; /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
 };
 
 /* max(|a|_inf, |b|_inf) of two pairs; NaN if any entry is NaN. */
@@ -127,11 +160,49 @@ int sus_step_taylor_adaptive_order(double tol)
     return order_for(tol)->p;
 }
 
+/* g(w) = c(fA w): c' = g(w) c along (ContDyn), and g is linear in w. */
+static double rate(const sus_model *m, const double w[2])
+{
+    const double u0 = m->fA[0][0] * w[0] + m->fA[0][1] * w[1], u1 = m->fA[1][0] * w[0] + m->fA[1][1] * w[1];
+    return m->b[0] * u0 + m->b[1] * u1;
+}
+
+/* The size of the terms E(w) sums, 1/2 sum |w_i I_ij w_j|, over E(w): the factor by which E's
+ * rounding exceeds u (up to cond(I_m) for a w along I_m's soft direction). */
+static double energy_terms_ratio(const sus_model *m, const double w[2], double e)
+{
+    const double (*I)[3] = m->I;
+    const double t =
+        0.5 * (fabs(I[0][0]) * w[0] * w[0] + (fabs(I[0][1]) + fabs(I[1][0])) * fabs(w[0] * w[1]) +
+               fabs(I[1][1]) * w[1] * w[1]);
+    return t / e;
+}
+
+/* The attracting steady rotation on E(w_0): of the two points of the ellipse on c(w) = 0,
+ * +-s (-I32, I31), the one where g < 0. None (k_inf = 0) for w_0 = 0, for I31 = I32 = 0 (every
+ * w is steady) and where g vanishes there too (no exponential approach to settle on). Its
+ * rounding: s = sqrt(E0 / E(d)) carries half the relative roundings of the two energies, each a
+ * few u times the size of its terms over its value. */
+static void steady_rotation(sus_tol_work *wk, const double w0[2])
+{
+    const sus_model *m = wk->m;
+    const double d[2] = {-m->b[1], m->b[0]}, ed = sus_energy(m, d);
+    if (!(ed > 0.0) || !(wk->e0 > 0.0)) return;
+    const double s = rate(m, d) > 0.0 ? -sqrt(wk->e0 / ed) : sqrt(wk->e0 / ed);
+    wk->w_inf[0] = s * d[0];
+    wk->w_inf[1] = s * d[1];
+    const double k = -rate(m, wk->w_inf);
+    wk->k_inf = k > 0.0 && isfinite(k) ? k : 0.0;
+    const double terms = fmax(energy_terms_ratio(m, w0, wk->e0), energy_terms_ratio(m, d, ed));
+    wk->floor = SETTLE_FLOOR * SUS_U * hypot(wk->w_inf[0], wk->w_inf[1]) * fmax(1.0, terms);
+}
+
 static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double w0[2])
 {
     sus_tol_work *wk = malloc(sizeof *wk);
     if (!wk) return NULL;
     *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
+    steady_rotation(wk, w0);
     return wk;
 }
 
@@ -171,6 +242,53 @@ static void accept(sus_tol_work *wk, double h, double err, double t_end, double 
     wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
 }
 
+/* Has w settled on w_inf (see the top of the file)? */
+static int settles(const sus_tol_work *wk, const double w[2])
+{
+    if (!(wk->k_inf > 0.0)) return 0;
+    const double dev = hypot(w[0] - wk->w_inf[0], w[1] - wk->w_inf[1]);
+    if (dev <= wk->floor) return 1;
+    const double kw = -rate(wk->m, w);
+    if (!(kw > 0.0)) return 0;
+    return dev * fmax(1.0, 1.4142135623730951 / fmin(kw, wk->k_inf)) <= SETTLE * wk->tol;
+}
+
+/* exp(h (0, w)/2) for a constant w = (w1, w2, 0): the quaternion series of a steady rotation,
+ * summed. */
+static void steady_increment(const double w[2], double h, double dq[4])
+{
+    const double a = hypot(w[0], w[1]), th = 0.5 * h * a, sn = a > 0.0 ? sin(th) / a : 0.0;
+    dq[0] = cos(th);
+    dq[1] = sn * w[0];
+    dq[2] = sn * w[1];
+    dq[3] = 0.0;
+}
+
+/* The attitude tau after the start of a settled step: q0 (x) exp(tau w_inf^/2). */
+static void settled_attitude(const sus_tol_work *wk, double tau, sus_attitude *att)
+{
+    double dq[4], qs[4];
+    steady_increment(wk->w_inf, tau, dq);
+    sus_quat_mul(qs, wk->q0, dq);
+    sus_quat_to_attitude(qs, att);
+}
+
+/* The rest of the run once w has settled: w = w_inf, the attitude by exp(h w_inf^/2), one step. */
+static int settled_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
+                        sus_attitude *att, sus_stepper_stats *st)
+{
+    const double h = t_end - *t;
+    wk->settled = 1;
+    sus_quat_of_attitude(att, wk->q0);
+    settled_attitude(wk, h, att);
+    w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
+    *lambda = sus_lagmult(wk->m, w);
+    *t = t_end;
+    wk->h = h;
+    *st = (sus_stepper_stats){.iterations = 0, .residual = 0.0, .scale = wk->tol, .det = h};
+    return SUS_STEPPER_OK;
+}
+
 /* The series of a try rescaled to a step s times as long: with h folded into the coefficients
  * (X_n = x_n h^n) the series of the step s h is X_n s^n, exactly the same polynomial, so a rejected
  * try needs no new recursion; its estimate is recomputed from the rescaled rows. */
@@ -189,6 +307,7 @@ static double rescaled_try(sus_tol_work *wk, int p, double s)
 static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                          sus_attitude *att, sus_stepper_stats *st)
 {
+    if (settles(wk, w)) return settled_step(wk, t_end, t, w, lambda, att, st);
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));
     double err = wk->order->try_step(wk, h, w);
@@ -212,6 +331,12 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
  * coefficients are scaled by h^n), w restored onto E(w_0), the quaternion normalised. */
 static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
 {
+    if (wk->settled) {
+        settled_attitude(wk, tau, att);
+        w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
+        *lambda = sus_lagmult(wk->m, w);
+        return;
+    }
     const double th = wk->h > 0.0 ? tau / wk->h : 0.0;
     v2d W = {0.0, 0.0}, P = {0.0, 0.0}, M = {0.0, 0.0};
     for (int n = wk->order->p; n >= 0; n--) {

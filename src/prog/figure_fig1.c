@@ -193,32 +193,11 @@ static int write_csv(const char *dir, const fig1 *f)
                                   18, cols, f->mid.n, 1);
 }
 
-int main(int argc, char **argv)
+static void caption(const fig1 *f, const sus_exact *ex, long N, char *cap, size_t len)
 {
-    sus_model m;
-    sus_exact ex;
-    const int setup = sus_plot_fig_setup_paper(argc, "fig1", &m, &ex);
-    if (setup != 0)
-        return setup;
-    fig1 f;
-    const long N = sus_exp_experiment_steps(T_END, EPS);
-    const int run = sus_plot_fig_run_pair("fig1", &m, EPS, N, EVERY, &f.mid, &f.var);
-    if (run != 0)
-        return run;
-    if (sus_exp_series_init(&f.ex, N, EVERY)) {
-        fprintf(stderr, "figure_fig1: out of memory\n");
-        return 1;
-    }
-    sus_exp_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
-    const size_t n = f.mid.n;
-    const int der = derived(&m, N, &f);
-    if (der != 0)
-        return der;
-    if (write_csv(argv[2], &f) != 0)
-        return 1;
-    char cap[4096];
+    const size_t n = f->mid.n;
     snprintf(
-        cap, sizeof cap,
+        cap, len,
         "Figure 1 (the paper's Figure 1, reproduced). Regenerate: make figures "
         "(src/prog/figure_fig1.c).\n"
         "Run: midpoint DSP ((Discretization) with the midpoint l1, l2, lambda_{k+1} = "
@@ -252,15 +231,41 @@ int main(int argc, char **argv)
         "for (taualg) as printed.\n"
         "max |w_mid - w_var| = %.2g over the run, against max |lambda_mid - lambda_var| = %.3g.\n"
         "Data: data/fig1.csv (every %dth step).\n",
-        T_END, N, T_END, ex.k,
-        sus_exp_series_maxdiff(&f.ex, &f.var, offsetof(sus_exp_series, lambda)),
-        fmax(sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, mu)),
-             sus_exp_series_maxdrift(&f.var, offsetof(sus_exp_series, mu))),
-        sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, energy)),
-        sus_exp_series_maxdrift(&f.var, offsetof(sus_exp_series, energy)), max_of(f.err_corr, n),
-        max_of(f.err_var, n),
-        fmax(sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, w1)),
-             sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, w2))),
-        sus_exp_series_maxdiff(&f.mid, &f.var, offsetof(sus_exp_series, lambda)), EVERY);
+        T_END, N, T_END, ex->k,
+        sus_exp_series_maxdiff(&f->ex, &f->var, offsetof(sus_exp_series, lambda)),
+        fmax(sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, mu)),
+             sus_exp_series_maxdrift(&f->var, offsetof(sus_exp_series, mu))),
+        sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, energy)),
+        sus_exp_series_maxdrift(&f->var, offsetof(sus_exp_series, energy)), max_of(f->err_corr, n),
+        max_of(f->err_var, n),
+        fmax(sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, w1)),
+             sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, w2))),
+        sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, lambda)), EVERY);
+}
+
+int main(int argc, char **argv)
+{
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, "fig1", &m, &ex);
+    if (setup != 0)
+        return setup;
+    fig1 f;
+    const long N = sus_exp_experiment_steps(T_END, EPS);
+    const int run = sus_plot_fig_run_pair("fig1", &m, EPS, N, EVERY, &f.mid, &f.var);
+    if (run != 0)
+        return run;
+    if (sus_exp_series_init(&f.ex, N, EVERY)) {
+        fprintf(stderr, "figure_fig1: out of memory\n");
+        return 1;
+    }
+    sus_exp_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
+    const int der = derived(&m, N, &f);
+    if (der != 0)
+        return der;
+    if (write_csv(argv[2], &f) != 0)
+        return 1;
+    char cap[4096];
+    caption(&f, &ex, N, cap, sizeof cap);
     return sus_plot_fig_write_figure(argv[1], "fig1", 540, HEIGHT, draw, &f, cap) != 0;
 }

@@ -77,6 +77,81 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_legend(&ax, leg, 3, 2);
 }
 
+/* |w - w_inf| along the exact solution and both runs, and |mu| of both runs. Returns 0, or -1
+ * when out of memory. */
+static int distances(fig2 *f)
+{
+    double *buf = malloc((f->ex.n + 4 * f->mid.n) * sizeof(double));
+    if (!buf)
+        return -1;
+    f->dist[0] = buf;
+    f->dist[1] = buf + f->ex.n;
+    f->dist[2] = f->dist[1] + f->mid.n;
+    f->mu[0] = f->dist[2] + f->mid.n;
+    f->mu[1] = f->mu[0] + f->mid.n;
+    for (size_t i = 0; i < f->ex.n; i++)
+        f->dist[0][i] = hypot(f->ex.w1[i] - f->winf[0], f->ex.w2[i] - f->winf[1]);
+    for (size_t i = 0; i < f->mid.n; i++) {
+        f->dist[1][i] = hypot(f->mid.w1[i] - f->winf[0], f->mid.w2[i] - f->winf[1]);
+        f->dist[2][i] = hypot(f->var.w1[i] - f->winf[0], f->var.w2[i] - f->winf[1]);
+        f->mu[0][i] = fabs(f->mid.mu[i]);
+        f->mu[1][i] = fabs(f->var.mu[i]);
+    }
+    return 0;
+}
+
+/* DATADIR/fig2.csv: every step of both runs beside the reference at the step times. */
+static int write_data(const fig2 *f, const sus_exact *ex, long N, const char *datadir)
+{
+    char path[4096];
+    sus_exp_series exs;
+    if (sus_exp_series_init(&exs, N, 1))
+        return 1;
+    sus_exp_series_exact(&exs, ex, EPS, f->mid.n);
+    const double *cols[] = {f->mid.t,      exs.w1,          exs.w2,       exs.lambda,
+                            exs.energy,    f->mid.w1,       f->mid.w2,    f->mid.w3,
+                            f->mid.lambda, f->mid.energy,   f->mid.mu,    f->var.w1,
+                            f->var.w2,     f->var.w3,       f->var.lambda, f->var.energy,
+                            f->var.mu};
+    return sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "fig2", "csv"),
+                                  "t,omega1_exact,omega2_exact,lambda_exact,energy_exact,"
+                                  "omega1_mid,omega2_mid,omega3_mid,lambda_mid,energy_mid,mu_mid,"
+                                  "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
+                                  17, cols, f->mid.n, 1) != 0;
+}
+
+static void caption(const fig2 *f, long N, char *cap, size_t len)
+{
+    const size_t last = f->mid.n - 1;
+    snprintf(
+        cap, len,
+        "Figure 2 (the paper's Figure 2, reproduced; the measurements contradict its caption).\n"
+        "Regenerate: make figures (src/prog/figure_fig2.c).\n"
+        "Run: midpoint DSP (green circles) and variational integrator (blue dots), eps = 1, "
+        "t in [0, %g]\n"
+        "(%ld steps; the paper gives no interval), implicit steps solved by Newton to round-off, "
+        "inertia by\n"
+        "rows as printed, w(0) = (0.4, 0.5). Reference (red line): the closed-form solution (the "
+        "paper used RK4).\n"
+        "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; (e) w3 = 0 exactly for both, plotted "
+        "is the\n"
+        "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; zeros are not drawn); "
+        "(f) |w_k - w_inf|,\n"
+        "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
+        "Measured: the midpoint rule conserves E to %.1e and ends %.1e from w_inf; the "
+        "variational\n"
+        "integrator loses %.3g of E (%.2f%%) and ends %.2e from w_inf, at a wrong steady "
+        "rotation.\n"
+        "The paper's caption (variational better, mainly in energy; midpoint decays fast) is not "
+        "reproduced;\n"
+        "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
+        "Data: data/fig2.csv (every step).\n",
+        T_END, N, f->winf[0], f->winf[1],
+        sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, energy)), f->dist[1][last],
+        f->var.energy[0] - f->var.energy[last],
+        100.0 * (f->var.energy[0] - f->var.energy[last]) / f->var.energy[0], f->dist[2][last]);
+}
+
 int main(int argc, char **argv)
 {
     sus_model m;
@@ -84,7 +159,6 @@ int main(int argc, char **argv)
     const int setup = sus_plot_fig_setup_paper(argc, "fig2", &m, &ex);
     if (setup != 0)
         return setup;
-    char path[4096];
     fig2 f;
     sus_exact_limit(&ex, f.winf);
     const long N = sus_exp_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
@@ -96,58 +170,9 @@ int main(int argc, char **argv)
         return 1;
     }
     sus_exp_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
-    double *buf = malloc((f.ex.n + 4 * f.mid.n) * sizeof(double));
-    if (!buf)
+    if (distances(&f) != 0 || write_data(&f, &ex, N, argv[2]) != 0)
         return 1;
-    f.dist[0] = buf;
-    f.dist[1] = buf + f.ex.n;
-    f.dist[2] = f.dist[1] + f.mid.n;
-    f.mu[0] = f.dist[2] + f.mid.n;
-    f.mu[1] = f.mu[0] + f.mid.n;
-    for (size_t i = 0; i < f.ex.n; i++)
-        f.dist[0][i] = hypot(f.ex.w1[i] - f.winf[0], f.ex.w2[i] - f.winf[1]);
-    for (size_t i = 0; i < f.mid.n; i++) {
-        f.dist[1][i] = hypot(f.mid.w1[i] - f.winf[0], f.mid.w2[i] - f.winf[1]);
-        f.dist[2][i] = hypot(f.var.w1[i] - f.winf[0], f.var.w2[i] - f.winf[1]);
-        f.mu[0][i] = fabs(f.mid.mu[i]);
-        f.mu[1][i] = fabs(f.var.mu[i]);
-    }
-    /* the reference at the step times, for the data file */
-    sus_exp_series exs;
-    if (sus_exp_series_init(&exs, N, 1))
-        return 1;
-    sus_exp_series_exact(&exs, &ex, EPS, f.mid.n);
-    const double *cols[] = {f.mid.t, exs.w1, exs.w2, exs.lambda, exs.energy,
-                            f.mid.w1, f.mid.w2, f.mid.w3, f.mid.lambda, f.mid.energy, f.mid.mu,
-                            f.var.w1, f.var.w2, f.var.w3, f.var.lambda, f.var.energy, f.var.mu};
-    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "fig2", "csv"),
-                      "t,omega1_exact,omega2_exact,lambda_exact,energy_exact,"
-                      "omega1_mid,omega2_mid,omega3_mid,lambda_mid,energy_mid,mu_mid,"
-                      "omega1_var,omega2_var,omega3_var,lambda_var,energy_var,mu_var",
-                      17, cols, f.mid.n, 1) != 0)
-        return 1;
-    const size_t last = f.mid.n - 1;
     char cap[4096];
-    snprintf(
-        cap, sizeof cap,
-        "Figure 2 (the paper's Figure 2, reproduced; the measurements contradict its caption).\n"
-        "Regenerate: make figures (src/prog/figure_fig2.c).\n"
-        "Run: midpoint DSP (green circles) and variational integrator (blue dots), eps = 1, t in [0, %g]\n"
-        "(%ld steps; the paper gives no interval), implicit steps solved by Newton to round-off, inertia by\n"
-        "rows as printed, w(0) = (0.4, 0.5). Reference (red line): the closed-form solution (the paper used "
-        "RK4).\n"
-        "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; (e) w3 = 0 exactly for both, plotted is the\n"
-        "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; zeros are not drawn); (f) |w_k - "
-        "w_inf|,\n"
-        "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
-        "Measured: the midpoint rule conserves E to %.1e and ends %.1e from w_inf; the variational\n"
-        "integrator loses %.3g of E (%.2f%%) and ends %.2e from w_inf, at a wrong steady rotation.\n"
-        "The paper's caption (variational better, mainly in energy; midpoint decays fast) is not "
-        "reproduced;\n"
-        "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
-        "Data: data/fig2.csv (every step).\n",
-        T_END, N, f.winf[0], f.winf[1], sus_exp_series_maxdrift(&f.mid, offsetof(sus_exp_series, energy)),
-        f.dist[1][last], f.var.energy[0] - f.var.energy[last],
-        100.0 * (f.var.energy[0] - f.var.energy[last]) / f.var.energy[0], f.dist[2][last]);
+    caption(&f, N, cap, sizeof cap);
     return sus_plot_fig_write_figure(argv[1], "fig2", 540, 660, draw, &f, cap) != 0;
 }

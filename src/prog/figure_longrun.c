@@ -1,4 +1,4 @@
-/* figures/longrun: the structure over a long run, T = 1e4 (issue 11). Our high-order methods and
+/* figures/longrun: the structure over a long run, T = 1e4. Our high-order methods and
  * GSL's rk8pd, each run at the step or tolerance that reaches attitude error 1e-10 at t = 50
  * (matched accuracy), sampled 500 times: (a) |R^T R - I| (for rk8pd on (w, q), where R = R(q/|q|)
  * is orthogonal by construction, the drift ||q| - 1| instead), (b) |E - E0|. w3 is exactly 0 for
@@ -82,9 +82,9 @@ static void ours(const sus_step_method *me)
         N = (long)ceil(N * 1.189207115002721); /* 2^(1/4) */
     curve *c = &C[nc++];
     const double eps = T_MATCH / (double)N;
-    const int own = !me->type->follows_recon; /* its own attitude, whatever the recon */
-    snprintf(c->name, sizeof c->name, "%s %s%s, eps %.3g", me->type->name, own ? "(quaternion)" : "+ ",
-             own ? "" : SUS_RECON_NAMES[me->recon], eps);
+    char label[64];
+    snprintf(c->name, sizeof c->name, "%s, eps %.3g",
+             sus_step_method_label(me->type, me->recon, label, sizeof label), eps);
     c->ours = 1;
     c->param = eps;
     const long steps = lround(T_LONG / eps);
@@ -181,7 +181,7 @@ static int write_data(const char *datadir)
 static void caption(char *cap, size_t size)
 {
     int len = snprintf(cap, size,
-                       "Structure over a long run, T = 1e4 (issue 11). Regenerate: make figures "
+                       "Structure over a long run, T = 1e4. Regenerate: make figures "
                        "(src/prog/figure_longrun.c).\n"
                        "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches "
                        "attitude error 1e-10\n"

@@ -101,6 +101,65 @@ static int write_csv(const stab_fig *f, const char *dir)
     return 0;
 }
 
+/* The caption, with every method's linear stability limit. */
+static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t caplen)
+{
+    char limits[1024] = "";
+    for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
+        len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
+                        sus_step_method_get(m)->type->name, f->limit[m]);
+    snprintf(
+        cap, caplen,
+        "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
+        "src/exp/stability.h).\n"
+        "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
+        "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
+        "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run "
+        "lasts\n"
+        "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
+        "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
+        "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = the step's solve fails other than at a\n"
+        "fold, or a Taylor step lies beyond its series' radius of convergence; regularity lost = the branch\n"
+        "of the step equation continued from eps = 0 meets a fold (no root on it beyond), or the (REGLOC)\n"
+        "block is singular or has changed sign. Each implicit step solves for that branch: Newton from its\n"
+        "explicit prediction where that lands near it, continuation in eps elsewhere.\n"
+        "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
+        "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; "
+        "checked\n"
+        "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: "
+        "no\n"
+        "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ "
+        "1 for Euler).\n"
+        "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
+        "conserves E, and its step equation keeps its branch: every run is good. The variational step has\n"
+        "no linear limit either (its linearisation at the rotation has spectral radius < 1 for all h\n"
+        "tested), and its step equation keeps its branch too, but its energy loss moves its limit by more\n"
+        "than 1%% from h ~ 0.5 on (wrong limit). The compositions solve every step too, but from h ~ 4 on\n"
+        "they end elsewhere (wrong limit; bounded, as each midpoint substep conserves E). gauss4's step\n"
+        "equation meets a fold of its branch on one start (regularity lost): two roots meet and vanish\n"
+        "(claims ledger, stability-fold-gauss4).\n"
+        "Data: data/stability.csv.\n",
+        paper->k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+}
+
+/* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h.
+ * Returns the number of runs that ended with a non-finite error but no failure class. */
+static int run_maps(stab_fig *f, const sus_exact *paper)
+{
+    for (int i = 0; i < NH; i++)
+        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
+    int unclassified = 0;
+    for (int m = 0; m < f->nm; m++) {
+        sus_exp_stability_map(paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
+        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
+        for (int j = 0; j < NH * NANGLE; j++) {
+            const sus_exp_stab_result *r = &f->res[m][j];
+            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+        }
+    }
+    return unclassified;
+}
+
 int main(int argc, char **argv)
 {
     sus_model model;
@@ -116,17 +175,7 @@ int main(int argc, char **argv)
     f->limit = calloc((size_t)f->nm, sizeof *f->limit);
     if (!f->res || !f->limit)
         return 1;
-    for (int i = 0; i < NH; i++)
-        f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
-    int unclassified = 0;
-    for (int m = 0; m < f->nm; m++) {
-        sus_exp_stability_map(&paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
-        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
-        for (int j = 0; j < NH * NANGLE; j++) {
-            const sus_exp_stab_result *r = &f->res[m][j];
-            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
-        }
-    }
+    const int unclassified = run_maps(f, &paper);
     if (unclassified) {
         fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
                 unclassified);
@@ -134,42 +183,7 @@ int main(int argc, char **argv)
     }
     if (write_csv(f, argv[2]) != 0)
         return 1;
-    char limits[1024] = "";
-    for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
-        len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
-                        sus_step_method_get(m)->type->name, f->limit[m]);
     char cap[4096];
-    snprintf(
-        cap, sizeof cap,
-        "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
-        "src/exp/stability.h).\n"
-        "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
-        "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
-        "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run "
-        "lasts\n"
-        "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
-        "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
-        "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = Newton fails or lands on another root "
-        "than\n"
-        "the continued branch, or a Taylor step lies beyond its series' radius of convergence; regularity "
-        "lost = the (REGLOC) block is singular or has changed sign.\n"
-        "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
-        "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; "
-        "checked\n"
-        "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: "
-        "no\n"
-        "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ "
-        "1 for Euler).\n"
-        "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
-        "conserves E: every run is good up to h ~ 3. From h ~ 4 on, for starts on part of the ellipse, its\n"
-        "quadratic step equation, solved by Newton from an explicit predictor whose error grows like h^3,\n"
-        "lands on another root than the branch continued from eps = 0 (solver failure) or on a root past a\n"
-        "fold of that branch (regularity lost); the runs that stay on the branch remain good. The "
-        "variational\n"
-        "step has no linear limit either (its linearisation at the rotation has spectral radius < 1 for all\n"
-        "h tested), but its energy loss moves its limit by more than 1%% from h ~ 0.5 on (wrong limit), and\n"
-        "its cubic step equation loses the continued branch from h ~ 150.\n"
-        "Data: data/stability.csv.\n",
-        paper.k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+    caption(f, &paper, cap, sizeof cap);
     return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
 }

@@ -100,10 +100,12 @@ static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
     if (isfinite(st->det))
         snprintf(det, sizeof det, ", Jacobian determinant %.3g", st->det);
     const int finite = isfinite(st->residual) && isfinite(st->scale);
-    const char *why = rep->status == SUS_STEPPER_SINGULAR
-                          ? "the Jacobian of the step equation is singular ((REGLOC) fails)"
-                      : finite ? "Newton did not converge"
-                               : "Newton's iteration overflowed";
+    const char *why =
+        rep->status == SUS_STEPPER_SINGULAR
+            ? "the step equation's root, continued from eps = 0, meets a fold where the Jacobian "
+              "of (REGLOC) vanishes: no root on that branch for this step"
+        : finite ? "Newton did not converge, from the prediction nor along the continuation from eps = 0"
+                 : "Newton's iteration overflowed";
     snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations", rep->step, rep->t,
              why, res, det, st->iterations);
 }

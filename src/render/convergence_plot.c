@@ -228,27 +228,11 @@ static void draw(cairo_t *cr, void *vctx)
           SUS_EXP_SIZE_LAMBDA);
 }
 
-int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_spec *spec)
+/* DATADIR/NAME.csv: eps and, per selected method, its error curves (w, lambda, and SO(3) per
+ * reconstruction, local then global). Returns 0, or 1. */
+static int write_data(const sus_plot_conv_fig *f, const char *datadir)
 {
-    sus_model m;
-    sus_exact ex;
-    const int setup = sus_plot_fig_setup_paper(argc, spec->name, &m, &ex);
-    if (setup != 0)
-        return setup;
     char path[4096];
-    sus_plot_conv_fig *f = malloc(sizeof *f);
-    if (!f || sus_exp_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
-        return 1;
-    f->spec = spec;
-    for (f->j0 = 0; f->j0 < NJ && f->c.eps[f->j0] > spec->eps_plot_max; f->j0++)
-        ;
-    f->o0max = 0.0;
-    for (size_t t = 0; t < sizeof TK / sizeof TK[0]; t++) {
-        double w[2];
-        sus_exact_omega(&ex, TK[t], w);
-        f->o0max = fmax(f->o0max, fabs(sus_lagmult_o0(&m, w)));
-    }
-    /* data: eps and, per method, its error curves (w, lambda, and SO(3) per reconstruction) */
     enum { NQ = 4 + 2 * SUS_RECON_COUNT };
     const int nm = f->c.nmethod;
     const double **cols = calloc(2 + (size_t)NQ * (size_t)nm, sizeof *cols);
@@ -260,7 +244,7 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     cols[nc++] = f->c.eps;
     cols[nc++] = f->c.glob_eps;
     for (int k = 0; k < nm; k++) {
-        if (!spec->select(sus_step_method_get(k)))
+        if (!f->spec->select(sus_step_method_get(k)))
             continue;
         const char *name = sus_step_method_get(k)->type->name;
         const sus_exp_conv_method *c = &f->c.m[k];
@@ -279,11 +263,34 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
             len += (size_t)sprintf(header + len, ",global_so3_%s_%s", SUS_RECON_NAMES[r], name);
         }
     }
-    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], spec->name, "csv"), header, nc,
-                               cols, NJ, 1) != 0)
-        return 1;
+    sus_plot_fig_path(path, sizeof path, datadir, f->spec->name, "csv");
+    const int rc = sus_plot_fig_write_csv(path, header, nc, cols, NJ, 1) != 0;
     free(cols);
     free(header);
+    return rc;
+}
+
+int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_spec *spec)
+{
+    sus_model m;
+    sus_exact ex;
+    const int setup = sus_plot_fig_setup_paper(argc, spec->name, &m, &ex);
+    if (setup != 0)
+        return setup;
+    sus_plot_conv_fig *f = malloc(sizeof *f);
+    if (!f || sus_exp_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
+        return 1;
+    f->spec = spec;
+    for (f->j0 = 0; f->j0 < NJ && f->c.eps[f->j0] > spec->eps_plot_max; f->j0++)
+        ;
+    f->o0max = 0.0;
+    for (size_t t = 0; t < sizeof TK / sizeof TK[0]; t++) {
+        double w[2];
+        sus_exact_omega(&ex, TK[t], w);
+        f->o0max = fmax(f->o0max, fabs(sus_lagmult_o0(&m, w)));
+    }
+    if (write_data(f, argv[2]) != 0)
+        return 1;
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
     const double height = f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS ? CONV_H : CONV_H + strip_height(f);

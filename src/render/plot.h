@@ -1,7 +1,9 @@
 /* A small plotting layer on Cairo, shared by every figure: panels with linear or log axes,
  * nice-number ticks (log decades with minor ticks), lines, sub-sampled markers, legends,
  * reference-slope segments and panel letters. One drawing routine renders a page; sus_plot_write
- * sends it to a vector PDF and a 150 dpi PNG, each written all-or-nothing. */
+ * sends it to a vector PDF and a 150 dpi PNG, each written all-or-nothing. Its parts: plot.c
+ * (ranges, panels, ticks, frames), plot_text.c (labels with scripts), plot_marks.c (lines,
+ * markers, cells, slopes), plot_legend.c, plot_write.c (the PDF and PNG files). */
 #ifndef SUS_PLOT_PLOT_H
 #define SUS_PLOT_PLOT_H
 

@@ -167,40 +167,36 @@ static void arrow(const double from[3], const double to[3], double width)
     glEnd();
 }
 
-void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, int x0, int y0, int vw,
-                         int vh, int only_e3_tip)
+/* The tip of e3 alone, as a green point: what the animation's test finds in the frame. */
+static void draw_e3_tip(const double m[16])
 {
-    double m[16];
-    const double origin[3] = {0, 0, 0};
-    glViewport(x0, y0, vw, vh);
-    glEnable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixd(s->proj);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixd(s->view);
-    gl_matrix(b->R, m);
-    if (only_e3_tip) {
-        const double tip[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
-        glDisable(GL_LIGHTING);
-        glMultMatrixd(m);
-        glColor3d(0.0, 1.0, 0.0);
-        glPointSize(7.0f);
-        glBegin(GL_POINTS);
-        glVertex3dv(tip);
-        glEnd();
-        return;
-    }
-    /* the fixed point and the stand it hangs from (space frame) */
+    const double tip[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
+    glDisable(GL_LIGHTING);
+    glMultMatrixd(m);
+    glColor3d(0.0, 1.0, 0.0);
+    glPointSize(7.0f);
+    glBegin(GL_POINTS);
+    glVertex3dv(tip);
+    glEnd();
+}
+
+/* The fixed point and the stand it hangs from (space frame). */
+static void draw_stand(void)
+{
+    const double origin[3] = {0, 0, 0}, base[3] = {0.0, 0.0, -1.9};
     glDisable(GL_LIGHTING);
     glColor3d(0.25, 0.25, 0.25);
-    const double base[3] = {0.0, 0.0, -1.9};
     arrow(origin, base, 3.0);
     glPointSize(9.0f);
     glBegin(GL_POINTS);
     glVertex3dv(origin);
     glEnd();
-    /* the trail of the tip of e3, fading with age. The frame's alpha must stay 1: Cairo reads
-     * the buffer as premultiplied ARGB, where a colour above its alpha turns into garbage. */
+}
+
+/* The trail of the tip of e3, fading with age. The frame's alpha must stay 1: Cairo reads the
+ * buffer as premultiplied ARGB, where a colour above its alpha turns into garbage. */
+static void draw_trail(const sus_plot_scene_body *b)
+{
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
@@ -213,14 +209,25 @@ void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, 
     glEnd();
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_BLEND);
-    /* w in the space frame, R w */
+}
+
+/* w in the space frame, R w. */
+static void draw_omega(const sus_plot_scene_body *b)
+{
+    const double origin[3] = {0, 0, 0};
     double ws[3], wtip[3];
     sus_mat3_vec(ws, b->R, b->w);
     for (int i = 0; i < 3; i++)
         wtip[i] = 2.0 * ws[i];
     glColor3d(0.95, 0.60, 0.05);
     arrow(origin, wtip, 3.0);
-    /* the body */
+}
+
+/* The body: its axes e1, e2, e3 as arrows and its inertia box, lit by a light fixed in space;
+ * the modelview holds the body's frame m on return. */
+static void draw_body(const sus_plot_scene *s, const double m[16])
+{
+    const double origin[3] = {0, 0, 0};
     glMultMatrixd(m);
     const double e[3][3] = {{1.3, 0, 0}, {0, 1.3, 0}, {0, 0, SUS_PLOT_SCENE_E3_TIP}};
     glColor3d(0.30, 0.30, 0.30);
@@ -245,4 +252,25 @@ void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, 
     glColor3d(0.55, 0.70, 0.90);
     box();
     glDisable(GL_LIGHTING);
+}
+
+void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, int x0, int y0, int vw,
+                         int vh, int only_e3_tip)
+{
+    double m[16];
+    glViewport(x0, y0, vw, vh);
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixd(s->proj);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixd(s->view);
+    gl_matrix(b->R, m);
+    if (only_e3_tip) {
+        draw_e3_tip(m);
+        return;
+    }
+    draw_stand();
+    draw_trail(b);
+    draw_omega(b);
+    draw_body(s, m);
 }

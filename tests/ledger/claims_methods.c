@@ -8,16 +8,19 @@
  * against the exact solution at t_k + eps; the largest over 5 starts t_k spread over the
  * transient, t_k k = 0, 0.45, 1, 1.75, 2.9 with k the body's rate), on a grid scaled by the
  * body's time 1/k: eps k = 1.16 * 2^(-j/4), j = 0 .. NE-1, over 13 octaves (for the paper's
- * body eps = 8 down to 2^-10). A point is a candidate when its error is finite, above the
- * round-off floor 1000 u times the size of the quantity (orderfit.h: round-off then moves no
- * point by more than 0.1%) and below the size itself; the window is chosen from the curve by the
- * rule of claims_window.h (the longest run of one slope, at least an octave long). The order is
- * the slope minus 1 (local error O(eps^{q+1})), asserted within WINDOW_ORDER_TOL of the expected
- * one on every body; where no run has one slope the slope over the smallest-eps octave is a lower
- * estimate, asserted only >= expected / 2. That cannot tell p from p - 1, and says so; the plateau
- * lines and the Taylor control of claims_highorder.c do.
+ * body eps = 8 down to 2^-10). A point is a candidate when its error is finite, below the size of
+ * the quantity and above its round-off floor, from the size of the terms the method's evaluation
+ * rounds (claims_bodies.c: a near-singular I_m raises it by up to cond(I_m)). The window is chosen
+ * from the curve by the rule of claims_window.h (the longest run of one slope, at least an octave
+ * long) and kept where it is the asymptotic one (claims_orders.c: it reaches eps k < pi/10 and
+ * the octave below it keeps its slope). The order is the slope minus 1 (local error
+ * O(eps^{q+1})), asserted within WINDOW_ORDER_TOL of the expected one on every body with such a
+ * window; on a body without one, the slope over the smallest-eps octave is a lower estimate,
+ * asserted only >= expected / 2 (that cannot tell p from p - 1, and says so; the plateau lines
+ * and the Taylor control of claims_highorder.c do). A body whose error is at round-off wherever
+ * the method steps has no order, and the line names it.
  * The SO(3) order is TeoL's min(r, p) of the pair, r measured on the attitude's local error.
- * A curve with fewer than 3 points above round-off has no order: the line fails. */
+ * A curve with fewer than 3 steps taken has no order: the line fails. */
 #include "claims_methods.h"
 
 #include "claims_bodies.h"
@@ -40,10 +43,19 @@
 #define NTK CLAIMS_NTK
 #define NQ (2 + SUS_RECON_COUNT) /* w, lambda, SO(3) with each reconstruction */
 
-/* The sizes of the NQ quantities on a body: w, lambda, and the entries of a rotation. */
+/* The size of quantity q (w, lambda, SO(3) with each reconstruction). */
 static double size_of(const claims_body *d, int q)
 {
-    return q == 0 ? d->size_w : q == 1 ? d->size_lambda : 1.0;
+    return claims_body_size(d, q < 2 ? q : CLAIMS_Q_R);
+}
+
+/* The order of quantity q's error curve, above the floors of a method that rounds as t does. */
+static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q, const double *err)
+{
+    const claims_rounding k = {t->implicit, t->conserves_energy && !t->implicit, t->substeps};
+    double floor[NE];
+    claims_body_floors(d, &k, q < 2 ? q : CLAIMS_Q_R, floor);
+    return order_of_curve(d->eps, d->ex.k, err, NE, size_of(d, q), floor);
 }
 
 /* The local error curves of one method on one body: err[q][j], the largest over the starts;
@@ -78,12 +90,11 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
     for (int k = 0; k < BODIES_COUNT; k++) {
         const claims_body *d = claims_body_get(k);
         local_curves(me, d, err[k]);
-        const curve_order p = order_of_curve(d->eps, err[k][0], NE, size_of(d, 0));
+        const curve_order p = order_on(d, me->type, 0, err[k][0]);
         order_summary_add(&sum[0], p, eo->p, d->b.name);
-        order_summary_add(&sum[1], order_of_curve(d->eps, err[k][1], NE, size_of(d, 1)), eo->s, d->b.name);
+        order_summary_add(&sum[1], order_on(d, me->type, 1, err[k][1]), eo->s, d->b.name);
         for (int r = 0; r < SUS_RECON_COUNT; r++)
-            order_summary_add(&sum[2 + r], order_of_pair(order_of_curve(d->eps, err[k][2 + r], NE,
-                                                                        size_of(d, 2 + r)), p),
+            order_summary_add(&sum[2 + r], order_of_pair(order_on(d, me->type, 2 + r, err[k][2 + r]), p),
                               eo->so3[r], d->b.name);
     }
     char id[96], what[160];
@@ -105,17 +116,20 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
 
 /* ---- structure ---- */
 
+/* eps k = STRUCT_EPS k_paper, the body's own time (eps = 0.05 on the paper's body) */
 #define STRUCT_EPS 0.05
-#define STRUCT_STEPS 2000L    /* T = 100: the transient and the approach to the steady rotation */
+#define STRUCT_STEPS 2000L    /* T k = 100 k_paper: the transient and the approach to the steady rotation */
 
 typedef struct {
     const sus_model *m;
     double e0, energy, w3, orth;
+    double eterms;            /* the largest 1/2 sum_ij |w_i I_ij w_j| over the rows */
 } structure_ctx;
 
 static int track(void *vctx, const sus_row *row)
 {
     structure_ctx *c = vctx;
+    c->eterms = fmax(c->eterms, claims_energy_terms(c->m, row->w));
     c->energy = fmax(c->energy, fabs(sus_energy(c->m, row->w) - c->e0));
     c->w3 = fmax(c->w3, fabs(row->w[2]));
     c->orth = fmax(c->orth, sus_so3_orth_defect(row->R));
@@ -149,45 +163,53 @@ double method_orth_bound(const sus_stepper_type *t, long steps, double eps, doub
     return 16.0 * U + 8.0 * U * (double)steps * t->substeps * eps * size_w;
 }
 
-/* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body. */
+/* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body,
+ * each in its own time. */
 static void method_structure(const sus_step_method *me)
 {
     const sus_stepper_type *t = me->type;
+    const double k_paper = claims_body_get(0)->ex.k;
     structure_worst w3 = {0}, orth = {0}, en = {0};
     for (int k = 0; k < BODIES_COUNT; k++) {
         const claims_body *d = claims_body_get(k);
-        structure_ctx c = {&d->m, sus_energy(&d->m, d->b.w0), 0, 0, 0};
-        const sus_run_config cfg = {&d->m, me->type, me->recon, STRUCT_EPS, STRUCT_STEPS, 1};
+        const double eps = STRUCT_EPS * (k_paper / d->ex.k);
+        structure_ctx c = {&d->m, sus_energy(&d->m, d->b.w0), 0, 0, 0, 0};
+        const sus_run_config cfg = {&d->m, me->type, me->recon, eps, STRUCT_STEPS, 1};
         sus_run_report rep;
         if (sus_run(&cfg, d->b.w0, track, &c, &rep) != 0)
             c.energy = c.w3 = c.orth = INFINITY;
         worst_add(&w3, c.w3, 1.0, d->b.name);
-        worst_add(&orth, c.orth, method_orth_bound(t, STRUCT_STEPS, STRUCT_EPS, size_of(d, 0)),
-                  d->b.name);
-        /* each substep rounds E a few times and the errors need not cancel: 8 u E per substep */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.e0, d->b.name);
+        worst_add(&orth, c.orth, method_orth_bound(t, STRUCT_STEPS, eps, size_of(d, 0)), d->b.name);
+        /* each substep rounds E a few times and the errors need not cancel: 8 u e per substep, e
+         * the size of E's terms (claims_energy_terms); an implicit root's rounding dx = J^-1 r
+         * (J ~ I_m) moves E by <I_m w, dx> ~ <w, r>, r of size u |I_m| |w|: u e again, not
+         * amplified by cond(I_m) */
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms, d->b.name);
     }
     char id[96], q[400];
     const char *ref = me->paper_ref ? "(DSP), Algorithm (algo)" : "(extension)";
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
     snprintf(id, sizeof id, "method-w3-%s", me->type->name);
-    snprintf(q, sizeof q, "max |w3| over %ld steps of eps %g, %s, worst of %d bodies (seed %u) %s: exactly 0",
+    snprintf(q, sizeof q, "max |w3| over %ld steps of eps k = %g k_paper, %s, worst of %d bodies (seed %u) "
+             "%s: exactly 0",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, BODIES_COUNT, BODIES_SEED, w3.body);
     /* every stepper writes w3 = 0.0 (the second equation of (DSP)): a check of the code, which
      * no value of the paper's can fail, so not evidence */
     ledger_add(id, ref, q, w3.value, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
-    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps %g, %s + %s (%s), worst of %d bodies %s; "
-             "round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS, me->type->name, SUS_RECON_NAMES[me->recon],
-             t->attitude == SUS_ATTITUDE_QUAT ? "unit quaternion" : "compensated product", BODIES_COUNT,
-             orth.body, orth.bound);
+    char label[64];
+    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps k = %g k_paper, %s, R %s, worst of %d "
+             "bodies %s; round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS,
+             sus_step_method_label(t, me->recon, label, sizeof label),
+             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion" : "by compensated products",
+             BODIES_COUNT, orth.body, orth.bound);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
     if (!t->conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
     snprintf(q, sizeof q,
-             "max |E - E0| over %ld steps of eps %g, %s (%d substeps), worst of %d bodies %s; "
-             "bound 8 u N s E0",
+             "max |E - E0| over %ld steps of eps k = %g k_paper, %s (%d substeps), worst of %d bodies %s; "
+             "bound 8 u N s e, e = max 1/2 sum |w_i I_ij w_j| (E's terms)",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
     ledger_add_bound(id, me->paper_ref ? "Fig. 1(f), (DSP)" : ref, q, en.value, en.bound, 0, truth);

@@ -24,6 +24,9 @@
 
 #define NE CLAIMS_NE
 
+/* Runge-Kutta tables on (R, V): explicit steps that do not rescale the energy, one step each. */
+static const claims_rounding EXPLICIT = {0, 0, 1};
+
 typedef struct {
     const char *id;
     const sus_butcher *tab;
@@ -77,9 +80,12 @@ static void body_orders(const integrator *it, const claims_body *d, curve_order 
                 e[q][j] = fmax(e[q][j], ej[q]);
         }
     }
-    const double size[3] = {1.0, d->size_w, d->size_lambda};
-    for (int q = 0; q < 3; q++)
-        o[q] = order_of_curve(d->eps, e[q], NE, size[q]);
+    static const int quantity[3] = {CLAIMS_Q_R, CLAIMS_Q_W, CLAIMS_Q_LAMBDA};
+    for (int q = 0; q < 3; q++) {
+        double floor[NE];
+        claims_body_floors(d, &EXPLICIT, quantity[q], floor);
+        o[q] = order_of_curve(d->eps, d->ex.k, e[q], NE, claims_body_size(d, quantity[q]), floor);
+    }
 }
 
 /* The lines of one integrator: r, the reduced order l, s, and where r < l that the reduced order is

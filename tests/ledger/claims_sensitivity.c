@@ -46,18 +46,22 @@ typedef struct {
     double mid_energy, var_dE_lo, var_dE_hi; /* |E_N - E_0| / E_0, and (E_N - E_0) / E_0 */
 } sens_row;
 
-static void run_case(sens_case *c, const claims_body *cb, int s)
+/* Every case runs in its own time: at eps k_paper / k, with k its rate and k_paper the paper's
+ * body's from its own w0 (case 0), the same eps k as eps on the paper's body. The first failing
+ * steps are kept in the paper's units too (eps k / k_paper). */
+static void run_case(sens_case *c, const claims_body *cb, int s, double k_paper)
 {
     double w0[2];
     sus_exp_sens_state(&cb->ex, s, w0);
     c->m = cb->m;
     sus_exact_init(&c->ex, &c->m, w0);
+    const double scale = k_paper / c->ex.k;
     for (int i = 0; i < NEPS; i++) {
-        sus_exp_sens_run_one(&c->ex, sus_step_midpoint, eps_of(i), &c->mid[i]);
-        sus_exp_sens_run_one(&c->ex, sus_step_variational, eps_of(i), &c->var[i]);
+        sus_exp_sens_run_one(&c->ex, sus_step_midpoint, eps_of(i) * scale, &c->mid[i]);
+        sus_exp_sens_run_one(&c->ex, sus_step_variational, eps_of(i) * scale, &c->var[i]);
     }
-    c->fail_mid = sus_exp_sens_first_failure(&c->ex, sus_step_midpoint);
-    c->fail_var = sus_exp_sens_first_failure(&c->ex, sus_step_variational);
+    c->fail_mid = sus_exp_sens_first_failure(&c->ex, sus_step_midpoint, scale) / scale;
+    c->fail_var = sus_exp_sens_first_failure(&c->ex, sus_step_variational, scale) / scale;
 }
 
 static void fold_case(const sens_case *c, int i, sens_row *r)
@@ -120,8 +124,8 @@ static void write_row(FILE *fp, int i, const sens_row *r)
 }
 
 /* The first failing steps: the paper's body from its own w0 (case 0), the smallest over the
- * cases, as eps and as h = eps k, and how many cases fail nowhere up to the largest step
- * searched. */
+ * cases, as eps on the paper's body and as h = eps k, and how many cases fail nowhere up to the
+ * largest step searched. */
 static void write_failures(FILE *fp, const char *name, int var)
 {
     double lo = INFINITY, hlo = INFINITY;
@@ -129,7 +133,7 @@ static void write_failures(FILE *fp, const char *name, int var)
     for (int c = 0; c < NCASE; c++) {
         const double e = var ? cases[c].fail_var : cases[c].fail_mid;
         lo = fmin(lo, e);
-        hlo = fmin(hlo, e * cases[c].ex.k);
+        hlo = fmin(hlo, e * cases[0].ex.k); /* e in the paper's units (run_case) */
         none += isinf(e) != 0;
     }
     char p[48], a[48], h[48];
@@ -272,7 +276,8 @@ void sensitivity_claims(const char *tsv)
     sens_row rows[NEPS];
     for (int b = 0; b < BODIES_COUNT; b++)
         for (int s = 0; s < SUS_EXP_SENS_NSTATE; s++)
-            run_case(&cases[b * SUS_EXP_SENS_NSTATE + s], claims_body_get(b), s);
+            run_case(&cases[b * SUS_EXP_SENS_NSTATE + s], claims_body_get(b), s,
+                     claims_body_get(0)->ex.k);
     for (int i = 0; i < NEPS; i++) rows[i] = row_of(i);
     write_table(tsv, rows);
     regularity_lines();

@@ -55,14 +55,26 @@ static double miss(double h, double expect)
 }
 
 /* The measured limit farthest from expect over the paper's body and the general ones: in h = eps k the
- * linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. */
-static double limit_over_bodies(const sus_stepper_type *st, double expect, char *worst, size_t len)
+ * linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. A body
+ * where the returns end because a step is refused beyond its series' proved radius (a Taylor
+ * step: step_taylor.c) before expect cannot show the linear limit: it is named in *bound (with the
+ * h where its steps stop), not measured. */
+static double limit_over_bodies(const sus_stepper_type *st, double expect, char *worst, size_t len,
+                                char *bound, size_t blen)
 {
     double far = NAN;
+    int measured = 0;
+    bound[0] = '\0';
     for (int k = 0; k < BODIES_COUNT; k++) {
         const claims_body *d = claims_body_get(k);
-        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX);
-        if (k == 0 || miss(h, expect) > miss(far, expect)) {
+        int radius_bound;
+        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX, &radius_bound);
+        if (radius_bound && h < expect) { /* named: its steps stop at the radius before the limit */
+            const size_t n = strlen(bound);
+            snprintf(bound + n, blen - n, "%s%s (h <= %.3g)", n ? ", " : "", d->b.name, h);
+            continue;
+        }
+        if (!measured++ || miss(h, expect) > miss(far, expect)) {
             far = h;
             snprintf(worst, len, "%s", d->b.name);
         }
@@ -74,7 +86,7 @@ static double limit_over_bodies(const sus_stepper_type *st, double expect, char 
  * every body. */
 static void boundary_claims(void)
 {
-    char id[64], q[256];
+    char id[64], q[512];
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
         const sus_stepper_type *st = me->type;
@@ -86,19 +98,22 @@ static void boundary_claims(void)
             continue;
         const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
         const double expect = isfinite(theory) ? theory : predicted; /* theory where it is known */
-        char worst[16];
-        const double measured = limit_over_bodies(st, expect, worst, sizeof worst);
+        char worst[16], bound[160], named[200] = "";
+        const double measured = limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
+        if (bound[0])
+            snprintf(named, sizeof named, "; its steps are refused beyond their proved radius first on %s",
+                     bound);
         snprintf(id, sizeof id, "stability-boundary-%s", st->name);
         if (isfinite(predicted)) {
             /* The bisection stops at 1e-4 relative and 4000 steps resolve |R(-h)| - 1 to ~1e-4; the
              * start 1e-6 off the rotation keeps nonlinear terms at 1e-6: 1e-3 h is ample. */
             snprintf(q, sizeof q,
                      "largest h = eps k at which a start 1e-6 off the steady rotation returns (bisection), "
-                     "against the linear limit |R(-h)| = 1 of %s (%s); the farthest of %d bodies (%s)",
+                     "against the linear limit |R(-h)| = 1 of %s (%s); the farthest of %d bodies (%s)%s",
                      st->name,
                      isfinite(theory) ? "R = sum_{n<=p} z^n/n!, theory"
                                       : "R(z) of src/methods/stability_fn.c",
-                     BODIES_COUNT, worst);
+                     BODIES_COUNT, worst, named);
             ledger_add(id, "(extension)", q, measured, expect, 1e-3 * expect, LEDGER_EXTENSION);
             /* and R(z) in src/ against the truncated exponential of theory (both root-found to
              * 1e-14; 1e-10 leaves room) */
@@ -120,56 +135,91 @@ static void boundary_claims(void)
                      st->name,
                      me->type->stability ? "|R(-h)| <= 1 for all h tested" : "no stability function", H_MAX,
                      BODIES_COUNT, worst);
-            ledger_add_bound_unbounded(id, "(extension)", q, measured, H_MAX, 1, LEDGER_EXTENSION);
+            ledger_add_none_found(id, "(extension)", q, measured, H_MAX, H_MAX, LEDGER_EXTENSION);
         }
     }
 }
 
-/* Where the implicit steps stop being solvable. */
+/* Where the implicit steps stop being solvable: the smallest h of a grid (h = 10^-2 .. 10^3 by 0.2
+ * decades, nangle starts round the paper's energy ellipse) at which a run's step equation has no
+ * root on its branch (a fold) or its solve fails (stability.h), INFINITY when none; the failed
+ * run's result in *failed. */
+static double first_failure(const sus_exact *paper, const sus_stepper_type *st, int nangle, double h_from,
+                            sus_exp_stab_result *failed)
+{
+    enum { NHS = 26, NA_MAX = 36 };
+    for (int i = 0; i < NHS; i++) {
+        const double h = pow(10.0, -2.0 + 0.2 * i);
+        sus_exp_stab_result res[NA_MAX];
+        if (h < h_from * (1.0 - 1e-9))
+            continue;
+        sus_exp_stability_map(paper, st, &h, 1, nangle, res);
+        for (int a = 0; a < nangle; a++)
+            if (res[a].cls == SUS_EXP_STAB_SOLVER || res[a].cls == SUS_EXP_STAB_REGULARITY) {
+                *failed = res[a];
+                return h;
+            }
+    }
+    return INFINITY;
+}
+
+/* Solvability on the ledger's map (12 angles): every implicit step is asserted solvable on its
+ * branch far beyond the paper's eps = 1 (h = 0.145): from h = 1, 7x the paper's step, at least.
+ * Where the README states that no run fails up to the largest h tested (expected_orders.c:
+ * solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000 itself fails it).
+ * The steps solve for the branch themselves (newton.h), so a failure here is the step equation's:
+ * a fold, or a continuation that cannot follow it. */
 static void solvable_claims(const sus_exact *paper)
 {
-    char id[64], q[256];
-    /* The implicit steps stop being solvable far beyond the paper's eps = 1 (h = 0.145): the
-     * smallest h at which a run from the energy ellipse (12 angles, h = 10^-2 .. 10^3 by 0.2
-     * decades) meets a solver failure or a loss of regularity. Asserted: not below h = 1, i.e.
-     * 7x the paper's step. The grid starts two decades below the bound, so a step that fails
-     * everywhere fails the claim. */
-    enum { NA = 12, NHS = 26 };
-    double hs[NHS];
-    for (int i = 0; i < NHS; i++)
-        hs[i] = pow(10.0, -2.0 + 0.2 * i);
+    char id[64], q[320];
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
         if (!me->type->implicit)
             continue;
-        sus_exp_stab_result res[NHS * NA];
-        sus_exp_stability_map(paper, me->type, hs, NHS, NA, res);
-        double first = INFINITY;
-        for (int i = 0; i < NHS * NA; i++)
-            if (res[i].cls == SUS_EXP_STAB_SOLVER || res[i].cls == SUS_EXP_STAB_REGULARITY)
-                first = fmin(first, hs[i / NA]);
-        /* Asserted: the first failure is not below h = 1, i.e. 7x the paper's step; and it exists
-         * inside the grid (finite, <= H_MAX), else NaN fails the line: a step whose solver failures
-         * went unseen would run everywhere. */
-        snprintf(id, sizeof id, "stability-solvable-%s", me->type->name);
-        snprintf(q, sizeof q,
-                 "smallest h at which a %s run (12 angles, h = 0.01..1000) fails to solve its step or loses "
-                 "(REGLOC) regularity: at least 1 (7x the paper's eps = 1) and within the grid",
-                 me->type->name);
-        ledger_add_bound(id, "(extension)", q, first <= H_MAX ? first : NAN, 1.0, 1, LEDGER_EXTENSION);
-        /* Where the README states the limit from the stability map (figures/stability; the value
-         * in tests/ledger/expected_orders.c). The grid resolves 0.2 decades: the first failure
-         * must lie within a quarter decade of the stated value. */
+        sus_exp_stab_result failed;
+        const double first = first_failure(paper, me->type, 12, 0.0, &failed);
         const expected_order *eo = expected_order_of(me->type->name);
-        const double stated = eo && eo->solvable_h > 0 ? eo->solvable_h : NAN;
-        if (isfinite(stated)) {
-            snprintf(id, sizeof id, "stability-solvable-where-%s", me->type->name);
-            snprintf(q, sizeof q,
-                     "log10 of the first failing h of %s (grid 0.2 decades) against the README's h ~ %g "
-                     "(from the stability map): within 0.25 decades",
-                     me->type->name, stated);
-            ledger_add(id, "(extension)", q, log10(first), log10(stated), 0.25, LEDGER_EXTENSION);
-        }
+        const int none_stated = eo && isinf(eo->solvable_h);
+        snprintf(id, sizeof id, "stability-solvable-%s", me->type->name);
+        snprintf(
+            q, sizeof q,
+            "smallest h at which a %s run (12 angles, h = 0.01..1000) meets a fold of its step equation's "
+            "branch continued from eps = 0, or fails to solve it: %s",
+            me->type->name,
+            none_stated ? "none up to h = 1000, as the README states"
+                        : "at least 1 (7x the paper's eps = 1)");
+        ledger_add_none_found(id, "(extension)", q, first, none_stated ? H_MAX * (1.0 + 1e-12) : 1.0, H_MAX,
+                              LEDGER_EXTENSION);
+    }
+}
+
+/* A fold is what the solvable lines would see: where the README states one on the figure's map
+ * (36 angles; expected_orders.c: fold_on_map), the first run that meets it (searched from h = 1),
+ * the step there located by bisection on the continuation, and det J's decay towards it. Theory:
+ * at a quadratic fold det J ~ (e* - e)^(1/2); the next term, of relative size (e* - e)^(1/2) in
+ * the natural scaling, moves the log-log slope fitted over e* - e = 10^-3 .. 10^-7 e* by at most
+ * sqrt(1e-3) / 2 = 0.016: the tolerance is 0.05. A fold not found fails the line (NaN). */
+static void fold_claims(const sus_exact *paper)
+{
+    char id[64], q[320];
+    for (int m = 0; m < sus_step_method_count(); m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        const expected_order *eo = expected_order_of(me->type->name);
+        if (!me->type->implicit || !eo || !eo->fold_on_map)
+            continue;
+        sus_exp_stab_result failed = {0};
+        double e_star = NAN, exponent = NAN;
+        const double h = first_failure(paper, me->type, 36, 1.0, &failed);
+        if (isfinite(h) && failed.cls == SUS_EXP_STAB_REGULARITY)
+            sus_exp_fold(paper->model, me->type, failed.w_fail, h / paper->k, &e_star, &exponent);
+        snprintf(id, sizeof id, "stability-fold-%s", me->type->name);
+        snprintf(
+            q, sizeof q,
+            "exponent of |det J| of the %s step equation against the distance e* - e to the fold its branch "
+            "meets (first on the map of 36 angles from h = 1: h = %.3g, step %ld, fold at e* k = %.4g), fit "
+            "over e* - e = 1e-7..1e-3 e*: 1/2 (a quadratic fold)",
+            me->type->name, h, failed.step, e_star * paper->k);
+        ledger_add(id, "(extension)", q, exponent, 0.5, 0.05, LEDGER_EXTENSION);
     }
 }
 
@@ -177,4 +227,5 @@ void stability_claims(const sus_exact *paper)
 {
     boundary_claims();
     solvable_claims(paper);
+    fold_claims(paper);
 }

@@ -23,14 +23,15 @@ static int one_slope(const double *eps, const double *err, int lo, int hi)
     return smax - smin < WINDOW_SLOPE_SPAN;
 }
 
-/* Rule 1: the longest run of candidates with one slope; "smaller eps wins a tie" is the larger
- * j. Returns its length, 0 when none. */
+/* Rule 1: the run of candidates with one slope that reaches the smallest eps (the largest j),
+ * the longest of those. Returns its length, 0 when none. */
 static int plateau(const double *eps, const double *err, const int *cand, int n, int *lo_out)
 {
     int best_lo = -1, best_hi = -1;
     for (int lo = 0; lo < n; lo++)
         for (int hi = lo; hi < n && cand[hi]; hi++)
-            if (octave(eps, lo, hi) && hi - lo >= best_hi - best_lo && one_slope(eps, err, lo, hi)) {
+            if (octave(eps, lo, hi) && (hi > best_hi || (hi == best_hi && lo < best_lo)) &&
+                one_slope(eps, err, lo, hi)) {
                 best_lo = lo;
                 best_hi = hi;
             }

@@ -20,6 +20,7 @@ typedef struct {
     row_kind kind;
     int pass;
     int none_found; /* an unbounded limit never reached: "none found for h <= expected" */
+    double searched; /* > 0: the largest h searched, printed in place of expected there */
 } ledger_row;
 
 static ledger_row rows[LEDGER_MAX];
@@ -642,7 +643,7 @@ static void tex_measured(const ledger_row *r, char *out, size_t len)
 {
     char b[32];
     if (r->none_found) {
-        tex_number(r->expected, b, sizeof b);
+        tex_number(r->searched > 0.0 ? r->searched : r->expected, b, sizeof b);
         /* breakable: the ledger's measured column is narrow */
         snprintf(out, len, "\\text{none found}\\allowbreak\\ \\text{for }h\\le %.31s", b);
     } else
@@ -832,6 +833,26 @@ static int write_tex(const char *dir)
     return sus_sys_atomic_file_commit(&af, err, sizeof err);
 }
 
+/* claims_tex.tsv: each line's quantity and test in the LaTeX the companion prints (text, math in
+ * $...$), one line each, for the web edition, which typesets them with KaTeX. */
+static int write_tex_tsv(const char *dir)
+{
+    char path[4200], err[256];
+    sus_sys_atomic_file af;
+    snprintf(path, sizeof path, "%s/claims_tex.tsv", dir);
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0)
+        return -1;
+    fputs("id\tquantity\ttest\n", af.fp);
+    for (int i = 0; i < nrows; i++) {
+        fprintf(af.fp, "%s\t", rows[i].id);
+        tex_ascii(af.fp, rows[i].quantity);
+        fputc('\t', af.fp);
+        tex_test(af.fp, &rows[i]);
+        fputc('\n', af.fp);
+    }
+    return sus_sys_atomic_file_commit(&af, err, sizeof err);
+}
+
 /* Where a line was recorded: "tests/FILE.c:LINE". */
 typedef struct {
     const char *file;
@@ -904,6 +925,14 @@ void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, c
     add_bound((ledger_source){file, line}, id, paper_ref, quantity, measured, bound, at_least, truth, 1);
 }
 
+void ledger_add_none_found_at(const char *file, int line, const char *id, const char *paper_ref,
+                              const char *quantity, double measured, double bound, double searched,
+                              ledger_assert truth)
+{
+    add_bound((ledger_source){file, line}, id, paper_ref, quantity, measured, bound, 1, truth, 1);
+    rows[nrows - 1].searched = searched;
+}
+
 /* The test column: the check in words, "<= b", ">= b" or "|x - e| <= tol" with the numbers. */
 static void test_text(const ledger_row *r, char *out, size_t len)
 {
@@ -921,7 +950,7 @@ static void test_text(const ledger_row *r, char *out, size_t len)
 static void measured_text(const ledger_row *r, char *out, size_t len)
 {
     if (r->none_found)
-        snprintf(out, len, "none found for h <= %.6g", r->expected);
+        snprintf(out, len, "none found for h <= %.6g", r->searched > 0.0 ? r->searched : r->expected);
     else
         snprintf(out, len, "%.6g", r->measured);
 }
@@ -955,7 +984,7 @@ int ledger_finish(const char *tsv_path)
         *slash = '\0';
     else
         strcpy(dir, ".");
-    if (write_tex(dir) != 0) {
+    if (write_tex(dir) != 0 || write_tex_tsv(dir) != 0) {
         fprintf(stderr, "ledger: writing the LaTeX files next to %s failed\n", tsv_path);
         return -1;
     }

@@ -45,6 +45,13 @@ void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, c
                                    const char *quantity, double measured, double bound, int at_least,
                                    ledger_assert truth);
 
+/* The same for the smallest h at which something happens, asserted >= bound, searched for up to
+ * `searched` (> bound): +infinity when none was found, printed "none found for h <= searched". */
+#define ledger_add_none_found(...) ledger_add_none_found_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_add_none_found_at(const char *file, int line, const char *id, const char *paper_ref,
+                              const char *quantity, double measured, double bound, double searched,
+                              ledger_assert truth);
+
 /* Stops the claims program (exit 2) when a measurement a claim needs could not be made, with
  * "claims: WHAT failed" on stderr: no line is recorded for a run that did not happen. */
 void ledger_die(const char *what);

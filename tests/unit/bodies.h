@@ -7,7 +7,16 @@
  *   - a positive definite symmetric part (I_m itself symmetric positive definite, as (ContDyn)
  *     needs; the third row and column are drawn until (I + I^T)/2 is positive definite),
  *   - w(0) in a different quadrant from the previous body's, with c(w0) = I_3i w0_i away from 0.
- * Body 0 of a family is always the paper's (body_get(0)), so loops over bodies keep it. */
+ * Body 0 of a family is always the paper's (body_get(0)), so loops over bodies keep it.
+ * After the general bodies come BODIES_STIFF hard ones, drawn the same way but at the edges a
+ * reference or a method meets first (body_stiff):
+ *   - "bigb":  |I31|, |I32| 4 to 10 times the largest entry of I_m (a fast approach, rate k);
+ *   - "cond":  I_m with condition number 1e5 to 1e6 (an elongated energy ellipse);
+ *   - "fast":  |w0| from 2 to 3 (four times the paper's);
+ *   - "all":   the three at once.
+ * Only I_m must be symmetric positive definite for (ContDyn); with a third row ten times I_m the
+ * whole tensor would need I33 in the hundreds to be definite, so the stiff bodies' third row and
+ * column are drawn without that condition (as `suslov --inertia` accepts them). */
 #ifndef SUSLOV_BODIES_H
 #define SUSLOV_BODIES_H
 
@@ -19,7 +28,8 @@
 
 #define BODIES_SEED 20261123u
 #define BODIES_GENERAL 6            /* general bodies after the paper's */
-#define BODIES_COUNT (1 + BODIES_GENERAL)
+#define BODIES_STIFF 4              /* hard bodies after the general ones */
+#define BODIES_COUNT (1 + BODIES_GENERAL + BODIES_STIFF)
 
 typedef struct {
     double I[9];     /* rows as printed */
@@ -85,7 +95,51 @@ static inline void body_general(uint32_t seed, int k, body *b)
     snprintf(b->name, sizeof b->name, "body%d", k);
 }
 
-/* Body k of the family: 0 is the paper's, 1 .. BODIES_GENERAL general. */
+/* I_m = Q diag(l1, l1 / cond) Q^T, Q the rotation by a, with I12 = I21 exactly. */
+static inline void body_conditioned(uint64_t *s, double cond_lo, double cond_hi, double *I)
+{
+    const double l1 = body_uniform(s, 0.6, 2.0), l2 = l1 / exp(body_uniform(s, log(cond_lo), log(cond_hi)));
+    const double a = body_uniform(s, 0.3, 1.3), c = cos(a), sn = sin(a);
+    I[0] = c * c * l1 + sn * sn * l2;
+    I[4] = sn * sn * l1 + c * c * l2;
+    I[1] = I[3] = c * sn * (l1 - l2);
+}
+
+/* Stiff body j = 0 .. BODIES_STIFF - 1 (body BODIES_GENERAL + 1 + j of the family): bit 0 of its
+ * kind a large third row, bit 1 a near-singular I_m, bit 2 a large |w0| (bigb 1, cond 2, fast 4,
+ * all 7); signs as body_general's, by the body's index. */
+static inline void body_stiff(uint32_t seed, int j, body *b)
+{
+    static const int kinds[BODIES_STIFF] = {1, 2, 4, 7};
+    static const char *names[BODIES_STIFF] = {"bigb", "cond", "fast", "all"};
+    const int kind = kinds[j], k = BODIES_GENERAL + 1 + j;
+    uint64_t s = ((uint64_t)seed << 32) ^ (uint64_t)k;
+    double *I = b->I;
+    if (kind & 2) {
+        body_conditioned(&s, 1e5, 1e6, I);
+    } else {
+        I[0] = body_uniform(&s, 0.6, 2.0);
+        I[4] = body_uniform(&s, 0.6, 2.0);
+        I[1] = I[3] = body_signed(&s, 0.05, 0.5, k & 1) * sqrt(I[0] * I[4]);
+    }
+    const double big = (kind & 1) ? fmax(I[0], I[4]) : 1.0;
+    const double lo = (kind & 1) ? 4.0 * big : 0.05, hi = (kind & 1) ? 10.0 * big : 0.6;
+    I[6] = body_signed(&s, lo, hi, (k >> 1) & 1);
+    I[7] = body_signed(&s, lo, hi, (k >> 2) & 1);
+    I[2] = I[6] + body_signed(&s, 0.05, 0.3, (k + 1) & 1);
+    I[5] = I[7] + body_signed(&s, 0.05, 0.3, k & 1);
+    I[8] = body_uniform(&s, 0.8, 2.5);
+    const double r = (kind & 4) ? body_uniform(&s, 2.0, 3.0) : body_uniform(&s, 0.4, 0.9);
+    const double bn = hypot(I[6], I[7]);
+    do {
+        const double a = 1.5707963267948966 * ((k % 4) + body_uniform(&s, 0.2, 0.8));
+        b->w0[0] = r * cos(a);
+        b->w0[1] = r * sin(a);
+    } while (fabs(I[6] * b->w0[0] + I[7] * b->w0[1]) < 0.2 * r * bn);
+    snprintf(b->name, sizeof b->name, "%s", names[j]);
+}
+
+/* Body k of the family: 0 is the paper's, 1 .. BODIES_GENERAL general, then the stiff ones. */
 static inline void body_get(int k, body *b)
 {
     if (k == 0) {
@@ -94,6 +148,10 @@ static inline void body_get(int k, body *b)
         b->w0[0] = SUS_PAPER_OMEGA0[0];
         b->w0[1] = SUS_PAPER_OMEGA0[1];
         snprintf(b->name, sizeof b->name, "paper");
+        return;
+    }
+    if (k > BODIES_GENERAL) {
+        body_stiff(BODIES_SEED, k - BODIES_GENERAL - 1, b);
         return;
     }
     body_general(BODIES_SEED, k, b);

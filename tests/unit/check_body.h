@@ -5,6 +5,7 @@
 
 #include "bodies.h"
 #include "check.h"
+#include "exact.h"
 
 /* 0, or nonzero after a FAIL line naming the body and the model's reason. */
 static inline int check_body_model(const body *b, sus_model *m)
@@ -14,6 +15,19 @@ static inline int check_body_model(const body *b, sus_model *m)
         return 0;
     CHECK(0, "%s: the model refuses the body: %s", b->name, err);
     return -1;
+}
+
+/* The body's own time against the paper's: k_paper / k, k the rate at which the motion from w0 nears
+ * its steady rotation (exact.h), the time scale of (ContDyn) on that body. A step or a span fixed on
+ * the paper's body, times this, has the same h k on every body (the stiff ones' k reaches 1e7). */
+static inline double check_body_time(const sus_model *m, const double w0[2])
+{
+    sus_exact paper, ex;
+    sus_model mp;
+    sus_model_init(&mp, SUS_PAPER_INERTIA, NULL, 0);
+    sus_exact_init(&paper, &mp, SUS_PAPER_OMEGA0);
+    sus_exact_init(&ex, m, w0);
+    return paper.k / ex.k;
 }
 
 #endif

@@ -7,11 +7,13 @@
  *    rows, of T_p^2 / T_{p-1}, T_n = the largest entry of the group's coefficient n scaled by h^n.
  *    The coefficients are computed here in long double from (ContDyn) and from q' = 1/2 q (x) (0, w),
  *    dq(0) = 1; on every body of the family, from w0 and from w0 turned, at three tolerances and
- *    three steps, the step's estimate matches to 1e-10 relative (the double recursion's rounding,
- *    a few u times p per coefficient, tripled by the ratio, with room: the estimate only sizes
- *    steps). A group's entry left out or a coefficient index off by one moves it by O(1). */
+ *    three steps, the step's estimate matches to the double recursion's rounding, 12 p u cond(I_m)
+ *    relative (estimate_error). A group's entry left out or a coefficient index off by one moves it
+ *    by O(1). */
 #include "check_body.h"
+#include "check_exact.h"
 #include "driver.h"
+#include "exact.h"
 #include "reconstruct.h"
 #include "taylor.h"
 
@@ -36,10 +38,11 @@ static void order_rule(void)
           bad, loose, tight);
 }
 
-/* The largest entry of coefficient n of each group, scaled by h^n, up to order p. */
+/* The largest entry of coefficient n of each group, scaled by h^n, up to order p, in long double from
+ * (ContDyn) with |I_m| exact (check_exact.h) and from q' = 1/2 q (x) (0, w), q(0) = 1. */
 static void group_sizes(const double I[9], const double w0[2], ld h, int p, ld Tw[], ld Tq[])
 {
-    const ld d = (ld)I[0] * I[4] - (ld)I[1] * I[3];
+    const ld d = check_cross_diff_exact(I[0], I[4], I[1], I[3]);
     ld w[NMAX + 1][2] = {{w0[0], w0[1]}}, q[NMAX + 1][4] = {{1, 0, 0, 0}}, hn = 1;
     for (int n = 0; n <= p; n++) {
         if (n < p) {
@@ -68,7 +71,17 @@ static ld group_estimate(ld last2, ld last)
     return last2 > 0 ? last * last / last2 : last;
 }
 
-/* |estimate - expected| / expected for one step from w; -1 if the step fails. */
+/* cond(I_m), the ratio of its eigenvalues. */
+static double condition(const double I[9])
+{
+    const double mid = 0.5 * (I[0] + I[4]), rad = hypot(0.5 * (I[0] - I[4]), I[1]);
+    return (mid + rad) * (mid + rad) / (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]);
+}
+
+/* |estimate - expected| over its rounding for one step from w; -1 if the step fails. The double
+ * recursion rounds each coefficient by a few u (4 u) per order it builds on, so p of them; where fA w_n
+ * cancels (fA = J I_m / |I_m|: |fA w| can be |fA| |w| / cond(I_m)) that is relative to |fA| |w_n|, up
+ * to cond(I_m) times the coefficient; T_p^2 / T_{p-1} triples it: 12 p u cond(I_m) relative. */
 static double estimate_error(const sus_model *m, const double I[9], const double w0[2], double tol, double h)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
@@ -84,9 +97,11 @@ static double estimate_error(const sus_model *m, const double I[9], const double
     ld Tw[NMAX + 1], Tq[NMAX + 1];
     group_sizes(I, w0, st.det, p, Tw, Tq); /* st.det: the step taken */
     const ld e = fmaxl(group_estimate(Tw[p - 1], Tw[p]), group_estimate(Tq[p - 1], Tq[p]));
-    return (double)(fabsl(st.residual - e) / e);
+    return (double)(fabsl(st.residual - e) / (e * 12 * p * SUS_U * condition(I)));
 }
 
+/* On every body, from w0 and w0 turned, at three tolerances and three steps 0.05, 0.4 and 1.5 times
+ * the body's own time (check_body_time; the proved radius may shorten them). */
 static void estimates(void)
 {
     const double tols[3] = {1e-4, 1e-9, 1e-14}, steps[3] = {0.05, 0.4, 1.5};
@@ -97,21 +112,21 @@ static void estimates(void)
         sus_model m;
         body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
+        const double s = check_body_time(&m, b.w0);
         for (int j = 0; j < 2; j++) {
             /* w0, and w0 turned by a quarter turn (the other component leads) */
             const double w0[2] = {j ? -b.w0[1] : b.w0[0], j ? b.w0[0] : b.w0[1]};
             for (int i = 0; i < 9; i++) {
-                const double d = estimate_error(&m, b.I, w0, tols[i / 3], steps[i % 3]);
+                const double d = estimate_error(&m, b.I, w0, tols[i / 3], steps[i % 3] * s);
                 worst = d > worst || d < 0.0 || isnan(d) ? (d < 0.0 ? INFINITY : d) : worst;
                 n++;
             }
         }
     }
-    CHECK(worst <= 1e-10,
+    CHECK(worst <= 1.0,
           "taylor-adaptive's estimate is max over the w and quaternion rows of T_p^2/T_{p-1} "
-          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst relative difference %.2g (at most "
-          "1e-10)",
-          n, BODIES_COUNT, worst);
+          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst difference %.2g of its rounding, "
+          "12 p u cond(I_m) (at most 1)", n, BODIES_COUNT, worst);
 }
 
 /* One step of taylor-adaptive from (t, w) towards t_end with a fresh workspace, or continuing wk. */
@@ -188,48 +203,75 @@ static void step_size_rules(void)
  * start (sus_step_taylor_radius, checked against quadrature in test_taylor_radius), whatever the
  * estimate allows: at tol 0.1 (order 6) and at tol 1e30, which no estimate exceeds, so that the
  * radius alone limits the steps as they try to grow five-fold; |w| = 3 times each body's w0, over
- * [0, 20]; the family and a body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap
- * radius test K |w| h < 1 is then far from the bound a slip in K would give). */
+ * [0, 20 s] in the body's own time s (check_body_time, at most 10^4 steps a run); the family and a
+ * body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap radius test K |w| h < 1 is then
+ * far from the bound a slip in K would give). A run that settles
+ * on the steady rotation (step_taylor_adaptive.c) ends in one step that sums the quaternion's
+ * series for a constant w in closed form, whose radius is infinite: that step, the last of its
+ * run with w the steady rotation (the closed form's limit, exact.h, to 64 u), is counted apart;
+ * every run must still take series steps first (at least one each): each starts from whichever of
+ * +-3 w0 has g(w) = b . (A w) >= 0, the repelling side, from which the motion crosses the ellipse
+ * (the radius is the same at -w). */
+static int settled_on(const sus_model *m, const double w0[2], const double w[3], double t, double t_end)
+{
+    sus_exact ex;
+    double ws[2];
+    sus_exact_init(&ex, m, w0);
+    sus_exact_limit(&ex, ws);
+    return t == t_end && hypot(w[0] - ws[0], w[1] - ws[1]) <= 64.0 * SUS_U * hypot(ws[0], ws[1]);
+}
+
 static void steps_within_radius(void)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
     double worst = 0.0;
-    int n = 0, failed = 0;
+    int n = 0, failed = 0, settled = 0, runs = 0;
     for (int i = 0; i < 2 * BODIES_COUNT + 2; i++) {
         const int k = i / 2;
         body b = {{1.0, 0.9, 0.3, 0.9, 1.0, 0.2, 0.1, 0.4, 1.0}, {0.3, -0.5}, "near-singular"};
         sus_model m;
         if (k < BODIES_COUNT) body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
-        double w[3] = {3.0 * b.w0[0], 3.0 * b.w0[1], 0.0}, t = 0.0, lam;
+        const double *I = b.I, x = b.w0[0], y = b.w0[1];
+        const double g = I[6] * (-I[1] * x - I[4] * y) + I[7] * (I[0] * x + I[3] * y); /* |I_m| g */
+        const double s = g * (I[0] * I[4] - I[1] * I[3]) < 0.0 ? -3.0 : 3.0; /* g(w) >= 0: see above */
+        double w[3] = {s * b.w0[0], s * b.w0[1], 0.0}, t = 0.0, lam;
+        const double w0[2] = {w[0], w[1]}, t_end = 20.0 * check_body_time(&m, w);
         sus_attitude att;
         sus_attitude_identity(&att);
         sus_tol_work *wk = ops->alloc(&m, i % 2 ? 1e30 : 0.1, w);
-        while (wk && t < 20.0 && n < 100000) {
+        int series = 0;
+        for (int steps = 0; wk && t < t_end && steps < 10000; steps++) {
             const double rho = sus_step_taylor_radius(&m, w);
             sus_stepper_stats st;
-            if (ops->step(wk, 20.0, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) {
+            if (ops->step(wk, t_end, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) {
                 failed++;
                 break;
             }
+            if (settled_on(&m, w0, w, t, t_end) && st.residual == 0.0) {
+                settled++;
+                continue;
+            }
             worst = fmax(worst, st.det / rho);
             n++;
+            series++;
         }
-        failed += !wk;
+        failed += !wk || series == 0;
+        runs++;
         ops->free(wk);
     }
     CHECK(failed == 0 && worst <= 0.99 * (1.0 + 1e-15),
           "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, "
-          "on %d bodies and a near-singular I_m: %d steps, the longest %.4g of the proved radius (at most "
-          "0.99), %d runs failed",
-          BODIES_COUNT, n, worst, failed);
+          "on %d bodies and a near-singular I_m: %d series steps, the longest %.4g of the proved radius (at "
+          "most 0.99), %d of %d runs failed or took no series step (%d settled on the steady rotation)",
+          BODIES_COUNT, n, worst, failed, runs, settled);
 }
 
 /* The unit top right singular vector of (ContDyn)'s A = [-I12 -I22; I11 I21] / |I_m| (the eigenvector
  * of the largest eigenvalue of A^T A in closed form), from the printed entries. */
 static void top_singular(const double I[9], double v[2])
 {
-    const double d = I[0] * I[4] - I[1] * I[3];
+    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double a = -I[1] / d, b = -I[4] / d, c = I[0] / d, e = I[3] / d;
     const double p = a * a + c * c, r = b * b + e * e, q = a * b + c * e;
     const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
@@ -243,7 +285,10 @@ static void top_singular(const double I[9], double v[2])
  * (test_taylor_radius), so the cheap test K |w| h < 1 has no slack: a step proposed at 1 + 1e-7 or
  * 1.2 times 1/(K |w|) must still be cut to 0.99 rho. On each body so turned, tol 1e30 (no estimate
  * binds, the proposal is five times the first step), |w| = 0.25 and 4 (both components above 1 in
- * size for some bodies), from a first state sized so that the proposal lands there. */
+ * size for some bodies), from a first state sized so that the proposal lands there. A = J I_m /
+ * |I_m| (J the quarter turn) and v is an eigenvector of I_m, so g(w) = b . (A w) = 0 there, a
+ * rounding's sign from settling (step_taylor_adaptive.c settles where g < 0, at tol 1e30 at once):
+ * b is turned 1e-9 off v to the side where g > 0, which moves the radius by O(1e-18) only. */
 static void cheap_test_window(void)
 {
     const double ratio[2] = {1.0 + 1e-7, 1.2}, size[2] = {0.25, 4.0};
@@ -255,9 +300,12 @@ static void cheap_test_window(void)
         double v[2];
         body_get(k, &b);
         top_singular(b.I, v);
-        const double nb = hypot(b.I[6], b.I[7]);
-        b.I[6] = nb * v[0];
-        b.I[7] = nb * v[1];
+        const double nb = hypot(b.I[6], b.I[7]), *I = b.I;
+        /* the sign of v_perp . A v, v_perp = (-v2, v1), A as in top_singular (|I_m| > 0) */
+        const double av0 = -I[1] * v[0] - I[4] * v[1], av1 = I[0] * v[0] + I[3] * v[1];
+        const double side = -v[1] * av0 + v[0] * av1 > 0.0 ? 1e-9 : -1e-9;
+        b.I[6] = nb * (v[0] - side * v[1]);
+        b.I[7] = nb * (v[1] + side * v[0]);
         if (check_body_model(&b, &m) != 0) continue;
         for (int i = 0; i < 4; i++) {
             const double a = size[i / 2], s0 = 4.95 * a / ratio[i % 2] * (1.0 - 1e-12);
@@ -321,39 +369,55 @@ static void interval_end_and_overflow(void)
 }
 
 /* The driver's report counts the rejected tries of the run (stats.iterations of each step): their
- * total and their largest per step, against the same steps taken by hand, at tolerances where the
- * first try (0.99 rho) is rejected. */
-static void driver_report(void)
+ * total and their largest per step, against the same steps taken by hand, over [0, 20 s] in the body's
+ * own time (check_body_time), at tol 1e-10 and 1e-14, where the first try (0.99 rho) is rejected on the
+ * paper's body. A body whose proved radius holds every step far inside what the tolerance allows has
+ * no rejected try to count (the near-singular I_m: the estimate at the radius is below 1e-16): a NOTE
+ * says so, and its totals are compared at 0. Returns the number of differences; *max the largest. */
+static int report_against_hand(const body *b, const sus_model *m, double tol, int *max)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
-    int bad = 0, most = 0;
+    const double t_end = 20.0 * check_body_time(m, b->w0);
+    const sus_tol_config cfg = {m, &sus_step_taylor_adaptive_type, tol, t_end, 0.0, 0};
+    sus_row last;
+    sus_run_report rep;
+    const int rc = sus_run_tol(&cfg, b->w0, sus_keep_last, &last, &rep);
+    double w[3] = {b->w0[0], b->w0[1], 0.0}, t = 0.0;
+    long total = 0;
+    *max = 0;
+    sus_tol_work *wk = ops->alloc(m, cfg.tol, b->w0);
+    for (sus_stepper_stats st; wk && t < t_end && one_step(wk, t_end, &t, w, &st) == SUS_STEPPER_OK;) {
+        total += st.iterations;
+        *max = st.iterations > *max ? st.iterations : *max;
+    }
+    ops->free(wk);
+    return rc != SUS_RUN_OK || rep.sus_newton_iterations != total || rep.max_iterations != *max;
+}
+
+static void driver_report(void)
+{
+    int bad = 0, most = 0, paper = 0;
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
         body_get(k, &b);
         if (check_body_model(&b, &m) != 0) continue;
-        const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-10, 20.0, 0.0, 0};
-        sus_row last;
-        sus_run_report rep;
-        const int rc = sus_run_tol(&cfg, b.w0, sus_keep_last, &last, &rep);
-        double w[3] = {b.w0[0], b.w0[1], 0.0}, t = 0.0;
-        long total = 0;
-        int max = 0;
-        sus_tol_work *wk = ops->alloc(&m, cfg.tol, b.w0);
-        for (sus_stepper_stats st;
-             wk && t < cfg.t_end && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK;) {
-            total += st.iterations;
-            max = st.iterations > max ? st.iterations : max;
+        int seen = 0;
+        for (int j = 0; j < 2; j++) {
+            int max;
+            bad += report_against_hand(&b, &m, j ? 1e-14 : 1e-10, &max);
+            seen = max > seen ? max : seen;
         }
-        ops->free(wk);
-        bad +=
-            rc != SUS_RUN_OK || rep.sus_newton_iterations != total || rep.max_iterations != max || max == 0;
-        most = max > most ? max : most;
+        paper = k == 0 ? seen : paper;
+        most = seen > most ? seen : most;
+        if (seen == 0)
+            printf("NOTE %s: no try rejected at tol 1e-10 or 1e-14 (every step held by the proved radius): "
+                   "rejections compared at 0\n", b.name);
     }
-    CHECK(bad == 0,
-          "sus_run_tol reports the total and the largest number of rejected tries per step as "
-          "taken by hand, on %d bodies (tol 1e-10, [0, 20], at most %d per step): %d differ",
-          BODIES_COUNT, most, bad);
+    CHECK(bad == 0 && paper > 0,
+          "sus_run_tol reports the total and the largest number of rejected tries per step as taken by "
+          "hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 s], at most %d per step, %d on the paper's body): "
+          "%d differ", BODIES_COUNT, most, paper, bad);
 }
 
 static int stop_after_three(void *ctx, const sus_row *row)

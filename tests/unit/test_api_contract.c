@@ -386,6 +386,18 @@ static void registry_functions(void)
     CHECK(s == buf && strlen(buf) == sizeof buf - 1, "sus_step_method_names, NULL sep, 8 bytes: \"%s\"",
           buf);
     CHECK(sus_step_methods_write_tsv(NULL) == -1, "sus_step_methods_write_tsv(NULL): -1");
+    const sus_stepper_type *rk4 = sus_step_method_by_name("rk4")->type;
+    char lab[32] = "x";
+    const int refused = sus_step_method_label(rk4, SUS_RECON_CAYLEY, NULL, 8) == NULL &&
+                        sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, 0) == NULL && lab[0] == 'x' &&
+                        sus_step_method_label(NULL, SUS_RECON_CAYLEY, lab, sizeof lab) == NULL &&
+                        lab[0] == '\0' &&
+                        sus_step_method_label(rk4, SUS_RECON_COUNT, lab, sizeof lab) == NULL &&
+                        sus_step_method_label(rk4, (sus_recon)-1, lab, sizeof lab) == NULL;
+    CHECK(refused && sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, sizeof lab) == lab &&
+              strcmp(lab, "rk4 + cayley") == 0,
+          "sus_step_method_label: NULL for a NULL buf, len 0, a NULL type or an unknown recon; "
+          "control: \"%s\"", lab);
 }
 
 static void row_functions(void)

@@ -3,6 +3,7 @@
  * too long to integrate, which gives no answer rather than a wrong one. Its accuracy is tested in
  * test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
 #include "check_body.h"
+#include "check_exact.h"
 #include "mat3.h"
 #include "refattitude.h"
 #include "so3.h"
@@ -51,20 +52,30 @@ static void nonunit_quaternion(const sus_exact *ex)
     }
 }
 
-/* 2^62 steps or more (T >= 2^60 at 4 steps a unit) cannot run: R is non-finite, at once. Just below
- * that a run would take 10^11 years, so the edge is tested from above only; a short run stays finite. */
+/* A stretch of 2^62 steps or more before the steady tail cannot run: R is non-finite, at once. A
+ * body whose I31, I32 are 1e-20 approaches its steady rotation at k ~ 1e-20, so its tail starts
+ * near t = 1e21, past 2^62 steps of h ~ 1; a time that is no number gives no answer either. Within
+ * the tail any time is served at once (the tail is closed-form): a short run and t = 1e30 on an
+ * ordinary body stay finite. */
 static void too_long_stretch(const sus_model *m, const double w0[2])
 {
-    const double steps_per_unit = SUS_REFATT_PRECISE_STEPS;
-    const double T[] = {0x1p62 / steps_per_unit, 1e30, INFINITY, NAN};
-    for (int k = 0; k < 4; k++) {
-        double w[2], R[3][3];
-        sus_refatt_precise(m, w0, T[k], w, R);
-        CHECK(none_finite(R), "reference to T = %g (>= 2^62 steps, or not finite): R not finite", T[k]);
+    double I[9] = {1, 0.1, 0.2, 0.1, 1, 0.2, 1e-20, 1e-20, 1}, w[2], R[3][3];
+    char err[128];
+    sus_model slow;
+    if (sus_model_init(&slow, I, err, sizeof err) != 0) {
+        CHECK(0, "a body with I31 = I32 = 1e-20: %s", err);
+        return;
     }
-    double w[2], R[3][3];
-    sus_refatt_precise(m, w0, 1.0, w, R);
-    CHECK(all_finite(R) && isfinite(w[0]) && isfinite(w[1]), "reference to T = 1: w and R finite");
+    sus_refatt_precise(&slow, w0, 1e30, w, R);
+    CHECK(none_finite(R), "reference to T = 1e30 on a body whose tail starts near 1e21: R not finite");
+    sus_refatt_precise(m, w0, NAN, w, R);
+    CHECK(none_finite(R), "reference to T = NaN: R not finite");
+    const double T[] = {1.0, 1e30};
+    for (int k = 0; k < 2; k++) {
+        sus_refatt_precise(m, w0, T[k], w, R);
+        CHECK(all_finite(R) && isfinite(w[0]) && isfinite(w[1]), "reference to T = %g: w and R finite",
+              T[k]);
+    }
 }
 
 /* Started at t0 = 0, the reference starts from w0 itself, not from the closed form's value at 0 (an ulp
@@ -100,6 +111,28 @@ static void restart_at(const sus_exact *ex, const char *name)
     CHECK(d <= 1e-14, "%s: R(5) restarted at t0 = 3 is %.1e from the run from 0 (bound 1e-14)", name, d);
 }
 
+/* The reference's Cholesky coordinates (refattitude.c) in long double, with |I_m| and v2's numerator
+ * I11 I32 - I21 I31 formed as a b - c d in two roundings of 2^-64 = uL/2 (uL = LDBL_EPSILON) whatever
+ * their cancellation, against the exact differences (check_exact.h): l11 l22 = sqrt|I_m| within 3 uL
+ * (|I_m| uL and its square root uL, the division by l11 uL/2, here the product and sqrtl uL/2 more),
+ * and v2 l11 l11 l22 = I11 I32 - I21 I31 within 4 uL (the numerator uL, l11 sd and the division uL,
+ * here l11 l22 and two products 2 uL). Formed plainly they would err by uL/2 of I21^2 or |I21 I31|,
+ * cond(I_m) times more on a near-singular I_m: the stiff bodies "cond" and "all" show it. */
+static void cholesky_coordinates(const sus_exact *ex, const char *name)
+{
+    const double (*I)[3] = ex->model->I, I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const long double uL = LDBL_EPSILON;
+    sus_refatt ra;
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    const sus_refatt_chol *c = &ra.chol;
+    const long double sd = sqrtl(check_cross_diff_exact(I[0][0], I[1][1], I[1][0], I[1][0]));
+    const long double x = check_cross_diff_exact(I[0][0], I[2][1], I[1][0], I[2][0]), l = c->l11 * c->l22;
+    const double dl = (double)(fabsl(l - sd) / (sd * uL)), dv = (double)(fabsl(c->v[1] * c->l11 * l - x) /
+                                                                         (fabsl(x) * uL));
+    CHECK(dl <= 3.0 && dv <= 4.0, "%s: the reference's l11 l22 against sqrt|I_m| exact: %.2g uL (at most 3 "
+          "uL); v2 l11^2 l22 against I11 I32 - I21 I31 exact: %.2g uL (at most 4 uL)", name, dl, dv);
+}
+
 int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
@@ -112,6 +145,7 @@ int main(void)
         sus_exact_init(&ex, &m, b.w0);
         start_from_w0(&m, &ex, b.name);
         restart_at(&ex, b.name);
+        cholesky_coordinates(&ex, b.name);
         if (k == 1) { /* neither edge depends on the body: once, on a general one */
             nonunit_quaternion(&ex);
             too_long_stretch(&m, b.w0);

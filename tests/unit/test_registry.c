@@ -119,6 +119,29 @@ static void check_type(const sus_model *m, const sus_stepper_type *st)
           st->name, st->follows_recon, d);
 }
 
+/* A method's label says what its type says of itself: the reconstruction only when it follows
+ * one, else the attitude form it carries (a matrix-attitude method is no quaternion one). */
+static void check_labels(void)
+{
+    static const struct {
+        int follows_recon;
+        sus_attitude_form attitude;
+        const char *expected;
+    } cases[] = {{1, SUS_ATTITUDE_NONE, "m + exp-mid"},
+                 {1, SUS_ATTITUDE_QUAT, "m + exp-mid"},
+                 {0, SUS_ATTITUDE_QUAT, "m (quaternion)"},
+                 {0, SUS_ATTITUDE_MATRIX, "m (matrix)"}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const sus_stepper_type t = {.name = "m", .follows_recon = cases[i].follows_recon,
+                                    .attitude = cases[i].attitude};
+        char label[64];
+        sus_step_method_label(&t, SUS_RECON_EXP_MID, label, sizeof label);
+        CHECK(strcmp(label, cases[i].expected) == 0,
+              "label of a method with follows_recon = %d, attitude %s: \"%s\" (expected \"%s\")",
+              cases[i].follows_recon, sus_step_attitude_name(cases[i].attitude), label, cases[i].expected);
+    }
+}
+
 int main(void)
 {
     char err[256];
@@ -129,6 +152,7 @@ int main(void)
     }
     for (int i = 0; i < sus_step_method_count(); i++)
         check_type(&m, sus_step_method_get(i)->type);
+    check_labels();
 
     /* Each composition's substeps are its table's stages. */
     const struct {

@@ -8,6 +8,7 @@
  * room for the second order; 1e-14 |w| covers the rounding of a sum of at most 17 terms of size
  * at most |w| (17 u |w|) and of the scaling. */
 #include "check_body.h"
+#include "check_exact.h"
 #include "exact.h"
 #include "taylor.h"
 
@@ -296,7 +297,7 @@ static void refused_beyond_radius(void)
  * eigenvector of the largest eigenvalue of A^T A, in closed form) and ||A||, from the printed entries. */
 static double top_singular(const double I[9], double v[2])
 {
-    const double d = I[0] * I[4] - I[1] * I[3];
+    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double A[2][2] = {{-I[1] / d, -I[4] / d}, {I[0] / d, I[3] / d}};
     const double p = A[0][0] * A[0][0] + A[1][0] * A[1][0], r = A[0][1] * A[0][1] + A[1][1] * A[1][1];
     const double q = A[0][0] * A[0][1] + A[1][0] * A[1][1];

@@ -1,0 +1,117 @@
+#define _POSIX_C_SOURCE 200809L
+#include "bench.h"
+
+#include "monoclock.h"
+#include "refattitude.h"
+#include "so3.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+const double SUS_EXP_BENCH_LEVELS[SUS_EXP_BENCH_NLEVELS] = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
+/* The 1e-4 target sits below the measured floor of any Taylor design there (fewest steps x cost
+ * per step). */
+const double SUS_EXP_BENCH_LEVEL_TARGET[SUS_EXP_BENCH_NLEVELS] = {1.3, 2.2, 2.2, 3.0, 3.7, 4.5};
+
+int sus_exp_bench_init(sus_exp_bench *b, void (*progress)(const char *what))
+{
+    char err[256];
+    *b = (sus_exp_bench){.progress = progress};
+    sus_exp_bench_problem *pb = &b->pb;
+    if (sus_model_init(&pb->model, SUS_PAPER_INERTIA, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: the paper's inertia is rejected: %s\n", err);
+        return -1;
+    }
+    sus_exact_init(&pb->ex, &pb->model, SUS_PAPER_OMEGA0);
+    sus_exact_omega(&pb->ex, SUS_EXP_BENCH_T_END, pb->w_T);
+    double w_ref[2];
+    sus_refatt_precise(&pb->model, pb->ex.w0, SUS_EXP_BENCH_T_END, w_ref, pb->R_T);
+    return 0;
+}
+
+void sus_exp_bench_progress(const sus_exp_bench *b, const char *what)
+{
+    if (b->progress)
+        b->progress(what);
+}
+
+void sus_exp_bench_die(const char *what)
+{
+    fprintf(stderr, "bench: %s\n", what);
+    exit(1);
+}
+
+void *sus_exp_bench_calloc(size_t n, size_t size)
+{
+    void *p = calloc(n, size);
+    if (!p)
+        sus_exp_bench_die("out of memory");
+    return p;
+}
+
+static void *grow(void *p, size_t n, size_t size)
+{
+    p = realloc(p, n * size);
+    if (!p)
+        sus_exp_bench_die("out of memory");
+    return p;
+}
+
+/* The Taylor methods carry their own attitude (no reconstruction to choose) and have a w-step
+ * that does not depend on the attitude series. */
+int sus_exp_bench_own_attitude(const sus_step_method *me) { return !me->type->follows_recon; }
+
+/* Keeps E, w3 = 0 and R in SO(3) by construction, as the method's type says of itself. */
+int sus_exp_bench_keeps_structure(const sus_step_method *me) { return me->type->conserves_energy; }
+
+/* A step made of several implicit substeps: the compositions. */
+int sus_exp_bench_composed(const sus_step_method *me)
+{
+    return me->type->implicit && me->type->substeps > 1;
+}
+
+const char *sus_exp_bench_param_name(const sus_exp_bench_series *s)
+{
+    return s->ours && !s->tol_driven ? "eps" : "tol";
+}
+
+sus_exp_bench_series *sus_exp_bench_new_series(sus_exp_bench *b)
+{
+    b->S = grow(b->S, (size_t)(b->nseries + 1), sizeof *b->S);
+    b->S[b->nseries] = sus_exp_bench_calloc(1, sizeof **b->S);
+    return b->S[b->nseries++];
+}
+
+void sus_exp_bench_errors(const sus_exp_bench *b, const sus_exp_bench_series *s, const double w[2],
+                          const double R[3][3], double *ew, double *eR)
+{
+    *ew = hypot(w[0] - b->pb.w_T[0], w[1] - b->pb.w_T[1]);
+    *eR = s->w_only ? INFINITY : sus_so3_dist(b->pb.R_T, R);
+}
+
+static void add_point(sus_exp_bench *b, const sus_exp_bench_run_ops *ops, void *ctx,
+                      sus_exp_bench_series *s, int i)
+{
+    b->points = grow(b->points, (size_t)(b->npoints + 1), sizeof *b->points);
+    b->points[b->npoints++] = (sus_exp_bench_point){ops, ctx, s, i, 1, {0}};
+}
+
+int sus_exp_bench_record(sus_exp_bench *b, sus_exp_bench_series *s, double param,
+                         const sus_exp_bench_run_ops *ops, void *ctx)
+{
+    double w[2], R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, ew, eR;
+    const double t0 = sus_sys_now();
+    ops->run(ctx);
+    s->last_run = sus_sys_now() - t0;
+    if (s->n >= SUS_EXP_BENCH_MAXPTS || !ops->result(ctx, w, R))
+        return 0;
+    sus_exp_bench_errors(b, s, w, R, &ew, &eR);
+    if (!(ew < 1.0 && (s->w_only || eR < 1.0)))
+        return 0;
+    const int i = s->n++;
+    s->param[i] = param;
+    s->err_w[i] = ew;
+    s->err_R[i] = eR;
+    add_point(b, ops, ctx, s, i);
+    return 1;
+}

@@ -1,0 +1,163 @@
+/* make bench's state: the problem every method and peer is given (the paper's body,
+ * w(0) = (0.4, 0.5), t in [0, 50]), the work-precision series, their timed points, the per-step
+ * costs and the long runs. The phases fill it in order: sweeps (bench_sweep.h), timing
+ * (bench_timing.h), floor analysis (bench_floor.h), long runs (bench_longrun.h); the render
+ * layer prints, writes and draws it (bench_report.h, bench_tables.h, bench_plot.h).
+ * Errors: |w(50) - w_n| against the closed form, dist(R(50), R_n) (MetMat) against the precise
+ * long-double reference sus_refatt_precise (good to ~1e-17, see refattitude.h). */
+#ifndef SUS_EXP_BENCH_H
+#define SUS_EXP_BENCH_H
+
+#include "exact.h"
+#include "model.h"
+#include "peers.h"
+#include "registry.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SUS_EXP_BENCH_T_END 50.0
+#define SUS_EXP_BENCH_T_LONG 1e4
+/* The accuracies the targets ask for, and the speed-up each level asks for over the best honest
+ * peer (bench.c says why). */
+#define SUS_EXP_BENCH_NLEVELS 6
+extern const double SUS_EXP_BENCH_LEVELS[SUS_EXP_BENCH_NLEVELS];
+extern const double SUS_EXP_BENCH_LEVEL_TARGET[SUS_EXP_BENCH_NLEVELS];
+/* The peers' tolerances: four a decade, 10^(-3 - j/4), down to 1e-15. */
+#define SUS_EXP_BENCH_TOLS_PER_DECADE 4
+#define SUS_EXP_BENCH_PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / SUS_EXP_BENCH_TOLS_PER_DECADE)
+#define SUS_EXP_BENCH_PEER_TOL_MIN 0.99e-15
+/* Every point of every series is timed in interleaved rounds: a batch of repeats lasting at
+ * least BATCH_SECONDS per round, WP_ROUNDS rounds, the median over rounds (with min and max). A
+ * burst of load from elsewhere then slows one round of every point alike. */
+#define SUS_EXP_BENCH_WP_ROUNDS 7
+#define SUS_EXP_BENCH_BATCH_SECONDS 1e-3
+/* The per-step costs: the median of ROUNDS interleaved rounds of COST_STEPS steps. */
+#define SUS_EXP_BENCH_ROUNDS 11
+#define SUS_EXP_BENCH_COST_STEPS 20000L /* eps = 2.5e-3 */
+/* Points per series at most: the grids stop well before (about 50 N or tolerances). */
+#define SUS_EXP_BENCH_MAXPTS 64
+
+/* The problem and its reference values at t = 50. */
+typedef struct {
+    sus_model model;
+    sus_exact ex;
+    double w_T[2], R_T[3][3];
+} sus_exp_bench_problem;
+
+/* One work-precision series: a method of ours (with a reconstruction, or its own attitude, or w
+ * alone) or one configuration of a peer, swept over its step or tolerance. */
+typedef struct {
+    char name[96];
+    int ours;       /* 1: a registered method; 0: a peer */
+    int preserves;  /* keeps E, w3 = 0 and R in SO(3) by construction */
+    int w_only;     /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
+    int tol_driven; /* ours, tolerance-driven: param is TOL, steps the accepted steps */
+    const sus_step_method *me; /* ours: the method; NULL for a peer */
+    sus_recon recon;
+    const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
+    size_t dim;
+    sus_exp_peer_api api;
+    double hstart;
+    int n;
+    double param[SUS_EXP_BENCH_MAXPTS], err_w[SUS_EXP_BENCH_MAXPTS], err_R[SUS_EXP_BENCH_MAXPTS];
+    double sec[SUS_EXP_BENCH_MAXPTS], smin[SUS_EXP_BENCH_MAXPTS], smax[SUS_EXP_BENCH_MAXPTS];
+    long steps[SUS_EXP_BENCH_MAXPTS];
+    /* tolerance-driven: the cost of one accepted step in a bare loop */
+    double step_ns[SUS_EXP_BENCH_MAXPTS];
+    double last_run; /* seconds of the last point's first run (untimed rounds: one clock reading) */
+} sus_exp_bench_series;
+
+/* What a timed run is: run it, read the state it ended in (1 when it succeeded), and free its
+ * context and whatever the context holds. */
+typedef struct {
+    void (*run)(void *ctx);
+    int (*result)(const void *ctx, double w[2], double R[3][3]);
+    void (*release)(void *ctx);
+} sus_exp_bench_run_ops;
+
+/* A point of a series, timed with the others: its run, the batch of repeats a round makes, and
+ * the seconds per run of each round. */
+typedef struct {
+    const sus_exp_bench_run_ops *ops;
+    void *ctx; /* malloc'd by the sweep; owned by the point */
+    sus_exp_bench_series *s;
+    int i, batch;
+    double t[SUS_EXP_BENCH_WP_ROUNDS];
+} sus_exp_bench_point;
+
+/* The cost of one step, n each (one per registered method): the w-step, the whole step through
+ * the driver and in a bare loop, Newton iterations per step; GSL's rk4 and the closed form; and
+ * the tolerance-driven runs' sums of fastest rounds through the driver and in a bare loop. */
+typedef struct {
+    int n;
+    double *ns_raw, *ns_full, *ns_direct, *ns_full_min, *newton, ns_gsl_rk4, ns_exact;
+    double tol_drv_min, tol_bare_min;
+} sus_exp_bench_costs;
+
+/* The peers' lower envelope: every peer point that no other peer point beats in both time and
+ * error, by increasing time (the staircase drawn as one line). */
+typedef struct {
+    int n;
+    double *sec, *err; /* npoints each at most */
+} sus_exp_bench_envelope;
+
+/* The structure errors of a long run to T = 1e4. */
+typedef struct {
+    char name[64];
+    double orth, energy,
+        w3; /* max over the run of |R^T R - I| (||q| - 1| for (w, q)), |E - E0|, |w3| */
+    int ours;
+    size_t dim; /* a peer's formulation */
+} sus_exp_bench_longrun;
+
+typedef struct {
+    sus_exp_bench_problem pb;
+    sus_exp_bench_series *
+        *S; /* grown one series at a time: as many as the registry and peers give */
+    int nseries;
+    sus_exp_bench_point *points;
+    int npoints;
+    sus_exp_bench_costs cost;
+    sus_exp_bench_envelope env[2]; /* 0: w, 1: attitude */
+    sus_exp_bench_longrun *LR;     /* nseries at most */
+    int nlr;
+    void (*progress)(const char *what); /* a phase's progress, for a person watching; may be NULL */
+} sus_exp_bench;
+
+/* The problem set up in b (everything else empty). Returns 0, or -1 with a message on stderr. */
+int sus_exp_bench_init(sus_exp_bench *b, void (*progress)(const char *what));
+void sus_exp_bench_progress(const sus_exp_bench *b, const char *what);
+
+/* The bench's tables are sized from the counts (methods, series, points); running out of memory
+ * ends the bench, as does a peer that cannot allocate (the message says which). */
+void *sus_exp_bench_calloc(size_t n, size_t size);
+void sus_exp_bench_die(const char *what);
+
+/* What a method is, for the bench: one predicate each, so no consumer compares names. */
+int sus_exp_bench_own_attitude(const sus_step_method *me);
+int sus_exp_bench_keeps_structure(const sus_step_method *me);
+int sus_exp_bench_composed(const sus_step_method *me);
+
+/* What a series' parameter is: "eps" (a step) or "tol" (peers, tolerance-driven methods). */
+const char *sus_exp_bench_param_name(const sus_exp_bench_series *s);
+/* A new empty series, appended to b's. */
+sus_exp_bench_series *sus_exp_bench_new_series(sus_exp_bench *b);
+/* The errors of a final state (w, R) against the reference; err_R = inf for a w-only series. */
+void sus_exp_bench_errors(const sus_exp_bench *b, const sus_exp_bench_series *s, const double w[2],
+                          const double R[3][3], double *ew, double *eR);
+/* Runs ctx once and keeps it as the next point of s unless the run failed or diverged (an error
+ * above 1 says nothing about speed at any accuracy the targets ask for). Returns 1 when kept;
+ * otherwise the caller frees ctx. */
+int sus_exp_bench_record(sus_exp_bench *b, sus_exp_bench_series *s, double param,
+                         const sus_exp_bench_run_ops *ops, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

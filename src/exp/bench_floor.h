@@ -1,0 +1,55 @@
+/* make bench's analysis of the timed points: the fastest point at an accuracy, the peers' lower
+ * envelope, the floor of our explicit methods (fewest steps x cost per step), and the verdicts
+ * of the targets. which = 0 for the w error, 1 for the attitude error. */
+#ifndef SUS_EXP_BENCH_FLOOR_H
+#define SUS_EXP_BENCH_FLOOR_H
+
+#include "bench.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    double sec;
+    int series, point; /* -1 when none */
+} sus_exp_bench_best;
+
+int sus_exp_bench_is_peer(const sus_exp_bench_series *s);
+int sus_exp_bench_is_ours_preserving(const sus_exp_bench_series *s);
+
+/* The fastest point reaching error <= level among the series selected by want (sec = INFINITY
+ * and series = -1 if none). */
+sus_exp_bench_best sus_exp_bench_fastest(const sus_exp_bench *b, double level, int which,
+                                         int (*want)(const sus_exp_bench_series *));
+
+/* b->env[0] and b->env[1], from the timed points. */
+void sus_exp_bench_envelopes(sus_exp_bench *b);
+
+/* The floor at a level: the fewest steps any of our explicit structure-preserving methods needs
+ * to reach it, times that method's measured cost per step; INFINITY when none reaches it. */
+double sus_exp_bench_floor_seconds(const sus_exp_bench *b, double level, int which);
+
+/* The verdict at accuracy level l: ours (the fastest preserving method) against the best peer. */
+typedef struct {
+    sus_exp_bench_best ours, peer;
+    double floor; /* sus_exp_bench_floor_seconds, when ours reach the level */
+    /* the peer's seconds over ours: 0 when ours do not reach it, inf when no peer does */
+    double ratio;
+    int pass; /* ratio >= SUS_EXP_BENCH_LEVEL_TARGET[l] */
+} sus_exp_bench_level;
+sus_exp_bench_level sus_exp_bench_level_verdict(const sus_exp_bench *b, int which, int l);
+
+/* The per-step targets: GSL's rk4 step over ours, and an implicit step over our rk4's. */
+double sus_exp_bench_rk4_speedup(const sus_exp_bench *b);
+double sus_exp_bench_implicit_ratio(const sus_exp_bench *b, int m);
+/* Whether the implicit step is held to its target (a composition's is not: many substeps). */
+int sus_exp_bench_implicit_target(const sus_step_method *me);
+/* 1 when every implicit step held to its target costs <= 3x our rk4 step. */
+int sus_exp_bench_implicit_pass(const sus_exp_bench *b);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,204 @@
+#include "bench_plot.h"
+
+#include "plot.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Series i's colour: ours take hues around the wheel, peers grey. */
+static void series_colour(const sus_exp_bench *b, int i, double rgb[3])
+{
+    if (!b->S[i]->ours) {
+        rgb[0] = rgb[1] = rgb[2] = 0.62;
+        return;
+    }
+    int k = 0, n = 0;
+    for (int j = 0; j < b->nseries; j++)
+        if (b->S[j]->ours) {
+            if (j == i)
+                k = n;
+            n++;
+        }
+    const double h = 6.0 * (double)k / (double)n, x = 1.0 - fabs(fmod(h, 2.0) - 1.0), v = 0.85;
+    /* the hue's sector: which of r, g, b is full, which is x */
+    static const int full[6] = {0, 1, 1, 2, 2, 0}, part[6] = {1, 0, 2, 1, 0, 2};
+    const int sector = (int)h < 5 ? (int)h : 5;
+    double c[3] = {0, 0, 0};
+    c[full[sector]] = 1;
+    c[part[sector]] = x;
+    rgb[0] = v * c[0];
+    rgb[1] = v * c[1] * 0.85;
+    rgb[2] = v * c[2];
+}
+
+/* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text
+ * block. */
+#define WP_W 530.0
+#define WP_PANEL_H 230.0
+#define WP_LEGEND_Y (28.0 + WP_PANEL_H + 30.0)
+
+/* The styles of the series: ours with markers in turn, peers as grey dots without a label. */
+static void wp_styles(const sus_exp_bench *b, sus_plot_style *st, double (*rgb)[3])
+{
+    static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
+                              SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
+    int k = 0;
+    for (int i = 0; i < b->nseries; i++) {
+        const sus_exp_bench_series *s = b->S[i];
+        series_colour(b, i, rgb[i]);
+        st[i] =
+            sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, 0, s->ours ? mk[k++ % 6] : SUS_PLOT_DOT,
+                              s->ours ? 3.5 : 2.0, s->ours ? s->name : NULL);
+    }
+}
+
+/* Panel p: (a) the w error, (b) the attitude error (no w-only series there). */
+static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_style *st)
+{
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int i = 0; i < b->nseries; i++) {
+        if (p && b->S[i]->w_only)
+            continue; /* no attitude */
+        sus_plot_extend(&x0, &x1, b->S[i]->sec, (size_t)b->S[i]->n, 1, 1);
+        sus_plot_extend(&y0, &y1, p ? b->S[i]->err_R : b->S[i]->err_w, (size_t)b->S[i]->n, 1, 1);
+    }
+    sus_plot_axes ax;
+    sus_plot_axes_init(&ax, cr, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, WP_PANEL_H, x0, x1,
+                       fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
+    sus_plot_pad(&ax.x0, &ax.x1, 1);
+    sus_plot_pad(&ax.y0, &ax.y1, 1);
+    sus_plot_frame(&ax, "seconds per run",
+                   p ? "attitude error dist(R(50), R\xe2\x82\x99)"
+                     : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
+                   p ? "(b)" : "(a)");
+    for (int pass = 0; pass < 2; pass++) /* peers first, underneath */
+        for (int i = 0; i < b->nseries; i++) {
+            const sus_exp_bench_series *s = b->S[i];
+            if (s->ours != pass || (p && s->w_only))
+                continue;
+            sus_plot_series(&ax, s->sec, p ? s->err_R : s->err_w, (size_t)s->n, 1, &st[i]);
+            sus_plot_markers(&ax, s->sec, p ? s->err_R : s->err_w, (size_t)s->n, 1, &st[i]);
+        }
+    const sus_plot_style es = sus_plot_style_of(SUS_PLOT_BLACK, 2.2, 0, SUS_PLOT_NONE, 0, NULL);
+    sus_plot_series(&ax, b->env[p].sec, b->env[p].err, (size_t)b->env[p].n, 1, &es);
+    for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++) { /* the target accuracies */
+        const double yy[2] = {SUS_EXP_BENCH_LEVELS[l], SUS_EXP_BENCH_LEVELS[l]},
+                     xx[2] = {ax.x0, ax.x1};
+        const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_GREY, 0.3, 2, SUS_PLOT_NONE, 0, NULL);
+        sus_plot_series(&ax, xx, yy, 2, 1, &ls);
+    }
+}
+
+static void draw_wp(cairo_t *cr, void *vctx)
+{
+    const sus_exp_bench *b = vctx;
+    sus_plot_style *st = sus_exp_bench_calloc((size_t)b->nseries, sizeof *st);
+    sus_plot_style *ours = sus_exp_bench_calloc((size_t)b->nseries, sizeof *ours);
+    double(*rgb)[3] = sus_exp_bench_calloc((size_t)b->nseries, sizeof *rgb);
+    wp_styles(b, st, rgb);
+    for (int p = 0; p < 2; p++)
+        wp_panel(cr, b, p, st);
+    /* legend: ours in two columns below the panels; what the peers were given is in the caption
+     * (paper/methods.tex), not a box of text in the figure */
+    int nours = 0;
+    for (int i = 0; i < b->nseries; i++)
+        if (b->S[i]->ours)
+            ours[nours++] = st[i];
+    sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
+    free(st);
+    free(ours);
+    free(rgb);
+}
+
+/* ---- the cost of one step ---- */
+
+#define COST_H 280.0
+
+static double cost_width(const sus_exp_bench *b) { return 90.0 + 46.0 * (b->cost.n + 2); }
+
+/* Bar i of nb: the w-step (v1, light) and the whole step (v2, dark; ours only), its name below
+ * at 45 degrees and its value above. */
+static void cost_bar(const sus_exp_bench *b, const sus_plot_axes *ax, int i, double v1, double v2)
+{
+    cairo_t *cr = ax->cr;
+    const int n = b->cost.n;
+    const double bw = ax->w / (n + 2), bx = ax->x + i * bw;
+    const double ly0 = log10(ax->y0), span = log10(ax->y1) - ly0;
+    const double h1 = (log10(v1) - ly0) / span * ax->h, h2 = (log10(v2) - ly0) / span * ax->h;
+    cairo_set_source_rgb(cr, 0.55, 0.70, 0.90);
+    cairo_rectangle(cr, bx + 0.12 * bw, ax->y + ax->h - h1, 0.36 * bw, h1);
+    cairo_fill(cr);
+    if (i < n) {
+        cairo_set_source_rgb(cr, 0.15, 0.35, 0.75);
+        cairo_rectangle(cr, bx + 0.52 * bw, ax->y + ax->h - h2, 0.36 * bw, h2);
+        cairo_fill(cr);
+    }
+    const char *name = i < n    ? sus_step_method_get(i)->type->name
+                       : i == n ? "GSL rk4"
+                                : "exact \xcf\x89(t)";
+    cairo_save(cr);
+    cairo_translate(cr, bx + 0.5 * bw, ax->y + ax->h + 5);
+    cairo_rotate(cr, 0.7853981633974483); /* 45 degrees */
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    sus_plot_text(cr, 0, 0, name, 8.0, 0.0, 0.5, 0);
+    cairo_restore(cr);
+    char lab[32];
+    snprintf(lab, sizeof lab, "%.0f", i < n ? v2 : v1);
+    sus_plot_text(cr, bx + 0.5 * bw, ax->y + ax->h - fmax(h1, h2) - 8, lab, 7.0, 0.5, 0.0, 0);
+}
+
+static void draw_cost(cairo_t *cr, void *vctx)
+{
+    const sus_exp_bench *b = vctx;
+    const int nb = b->cost.n + 2;
+    const double W = cost_width(b), H = COST_H;
+    sus_plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
+    double *v1 = sus_exp_bench_calloc((size_t)nb, sizeof *v1),
+           *v2 = sus_exp_bench_calloc((size_t)nb, sizeof *v2);
+    for (int m = 0; m < b->cost.n; m++) {
+        v1[m] = b->cost.ns_raw[m];
+        v2[m] = b->cost.ns_full[m];
+    }
+    v1[b->cost.n] = v2[b->cost.n] = b->cost.ns_gsl_rk4;
+    v1[b->cost.n + 1] = v2[b->cost.n + 1] = b->cost.ns_exact;
+    double hi = 0.0;
+    for (int i = 0; i < nb; i++)
+        hi = fmax(hi, fmax(v1[i], v2[i]));
+    sus_plot_axes ax;
+    sus_plot_axes_init(&ax, cr, 60, 40, W - 80, H - 100, 0.0, nb, 1.0, hi * 1.5, 0, 1);
+    sus_plot_pad(&ax.y0, &ax.y1, 1);
+    ax.no_xticks = 1;
+    sus_plot_frame(&ax, NULL, "ns per step", NULL);
+    for (int i = 0; i < nb; i++)
+        cost_bar(b, &ax, i, v1[i], v2[i]);
+    const sus_plot_style leg[2] = {sus_plot_style_of((const double[3]){0.55, 0.70, 0.90}, 6.0, 0,
+                                                     SUS_PLOT_NONE, 0, "w-step only"),
+                                   sus_plot_style_of((const double[3]){0.15, 0.35, 0.75}, 6.0, 0,
+                                                     SUS_PLOT_NONE, 0,
+                                                     "whole step (w, R): default reconstruction, "
+                                                     "or own attitude")};
+    sus_plot_legend(&ax, leg, 2, 0);
+    free(v1);
+    free(v2);
+}
+
+int sus_plot_bench_figures(const sus_exp_bench *b, const char *figdir)
+{
+    char err[256], path[4096];
+    snprintf(path, sizeof path, "%s/work_precision", figdir);
+    int nours = 0;
+    for (int i = 0; i < b->nseries; i++)
+        nours += b->S[i]->ours;
+    /* tall enough for the legend's two columns and no more */
+    const double wp_h = WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 6.0;
+    if (sus_plot_write(path, WP_W, wp_h, draw_wp, (void *)b, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/step_cost", figdir);
+    if (sus_plot_write(path, cost_width(b), COST_H, draw_cost, (void *)b, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,14 @@
+/* make bench's figures: work_precision (seconds per run against the w and the attitude error at
+ * t = 50, our methods in colour over the peers in grey and the peers' envelope in black, the
+ * target levels dotted) and step_cost (the cost of one step of every method, GSL's rk4 and the
+ * closed form). */
+#ifndef SUS_PLOT_BENCH_PLOT_H
+#define SUS_PLOT_BENCH_PLOT_H
+
+#include "bench.h"
+
+/* FIGDIR/work_precision.{pdf,png} and FIGDIR/step_cost.{pdf,png}. Returns 0, or -1 with a
+ * message on stderr. */
+int sus_plot_bench_figures(const sus_exp_bench *b, const char *figdir);
+
+#endif

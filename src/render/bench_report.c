@@ -1,0 +1,177 @@
+#include "bench_report.h"
+
+#include "bench_floor.h"
+#include "dsp.h"
+
+#include <stdio.h>
+
+#define ROUNDS SUS_EXP_BENCH_ROUNDS
+#define COST_STEPS SUS_EXP_BENCH_COST_STEPS
+#define LEVELS SUS_EXP_BENCH_LEVELS
+
+void sus_plot_bench_header(const sus_exp_bench *b, int differ, int with_odeint)
+{
+    printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). "
+           "Work-precision times: median over %d\n"
+           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. "
+           "The machine is shared and\n"
+           "noisy: compare the ratios measured in this same run rather than absolute times.\n",
+           SUS_EXP_BENCH_T_END, SUS_EXP_BENCH_WP_ROUNDS, SUS_EXP_BENCH_BATCH_SECONDS);
+    if (!with_odeint)
+        printf("(built without Boost.Odeint: `make bench` builds the bench with it)\n");
+    printf("  %s %d of %d timed points end their timed runs with the error recorded for them\n\n",
+           differ ? "CHECK FAILED:" : "CHECK ok:", b->npoints - differ, b->npoints);
+}
+
+static void print_costs(const sus_exp_bench *b)
+{
+    const sus_exp_bench_costs *c = &b->cost;
+    printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS,
+           COST_STEPS, SUS_EXP_BENCH_T_END / (double)COST_STEPS);
+    const int irk4 = sus_step_method_index_of(sus_step_rk4);
+    printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
+           "x our rk4");
+    for (int m = 0; m < c->n; m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        /* the default reconstruction, or the attitude the method carries itself */
+        const char *att = me->type->follows_recon ? SUS_RECON_NAMES[me->recon]
+                                                  : sus_step_attitude_name(me->type->attitude);
+        printf("  %-12s %10.1f %10.1f %-10s %9.2f %12.2f\n", me->type->name, c->ns_raw[m],
+               c->ns_full[m], att, c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
+    }
+    printf("  %-12s %10.1f\n", "GSL rk4", c->ns_gsl_rk4);
+    printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", c->ns_exact);
+}
+
+/* The driver's overhead on the own-attitude methods and on the tolerance-driven runs. */
+static void print_overheads(const sus_exp_bench *b)
+{
+    const sus_exp_bench_costs *c = &b->cost;
+    for (int m = 0; m < c->n; m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        if (!sus_exp_bench_own_attitude(me))
+            continue;
+        const double over = c->ns_full_min[m] / c->ns_direct[m] - 1.0;
+        printf(
+            "  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop, fastest rounds): "
+            "%+.1f %%\n",
+            over <= 0.10 ? "PASS" : "MISS", me->type->name, c->ns_direct[m], 100.0 * over);
+    }
+    if (c->tol_bare_min > 0.0) {
+        const double over = c->tol_drv_min / c->tol_bare_min - 1.0;
+        printf("  %s the driver (sus_run_tol, one row) adds <= 10 %% to a tolerance-driven run "
+               "to t = 50, summed over its TOL grid (fastest rounds): %+.1f %%\n",
+               over <= 0.10 ? "PASS" : "MISS", 100.0 * over);
+    }
+}
+
+static void print_step_targets(const sus_exp_bench *b)
+{
+    const double speedup = sus_exp_bench_rk4_speedup(b);
+    printf("  %s our rk4 step is >= 5x faster than GSL rk4 through "
+           "gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
+           speedup >= 5 ? "PASS" : "MISS", speedup);
+    for (int m = 0; m < b->cost.n; m++) {
+        const sus_step_method *me = sus_step_method_get(m);
+        if (!sus_exp_bench_implicit_target(me))
+            continue;
+        const double r = sus_exp_bench_implicit_ratio(b, m);
+        printf("  %s an implicit %s step costs <= 3x our rk4 step: %.2fx (%.2f Newton iterations "
+               "per step)\n",
+               r <= 3 ? "PASS" : "MISS", me->type->name, r, b->cost.newton[m]);
+    }
+    print_overheads(b);
+}
+
+static void print_floor(const char *what, int l, const sus_exp_bench_level *v)
+{
+    if (isinf(v->floor))
+        printf("  MISS %s accuracy %.0e: no floor (none of our explicit methods reaches it)\n",
+               what, LEVELS[l]);
+    else
+        printf("  %s %s accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s "
+               "(fewest steps x cost per step): %.2fx\n",
+               v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", what, LEVELS[l], v->ours.sec,
+               v->floor, v->ours.sec / v->floor);
+}
+
+static void print_level(const sus_exp_bench *b, int which, int l)
+{
+    const sus_exp_bench_level v = sus_exp_bench_level_verdict(b, which, l);
+    const char *what = which ? "attitude" : "w";
+    if (v.ours.series < 0) {
+        printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods "
+               "reaches it\n",
+               what, LEVELS[l]);
+        return;
+    }
+    const sus_exp_bench_series *os = b->S[v.ours.series];
+    print_floor(what, l, &v);
+    if (v.peer.series < 0) {
+        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g); "
+               "no peer configuration reaches it\n",
+               what, LEVELS[l], v.ours.sec, os->name, sus_exp_bench_param_name(os),
+               os->param[v.ours.point]);
+        return;
+    }
+    const sus_exp_bench_series *ps = b->S[v.peer.series];
+    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) "
+           "vs best peer %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx (target %gx)\n",
+           v.pass ? "PASS" : "MISS", what, LEVELS[l], v.ours.sec, os->name,
+           sus_exp_bench_param_name(os), os->param[v.ours.point], v.peer.sec, ps->name,
+           ps->param[v.peer.point], which ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point],
+           v.ratio, SUS_EXP_BENCH_LEVEL_TARGET[l]);
+}
+
+void sus_plot_bench_costs_and_targets(const sus_exp_bench *b)
+{
+    print_costs(b);
+    printf("Targets:\n");
+    print_step_targets(b);
+    for (int which = 1; which >= 0; which--)
+        for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++)
+            print_level(b, which, l);
+}
+
+void sus_plot_bench_long_runs(const sus_exp_bench *b)
+{
+    for (int i = 0; i < b->nlr; i++) {
+        const sus_exp_bench_longrun *L = &b->LR[i];
+        if (L->ours) {
+            const int ok = L->orth <= 1e-13 && L->energy <= 1e-13 && L->w3 == 0.0;
+            printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g "
+                   "(targets 1e-13, 1e-13, 0)\n",
+                   ok ? "PASS" : "MISS", L->name, L->orth, L->energy, L->w3);
+        } else {
+            printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: "
+                   "%s = %.2g, |E - E0| = %.2g\n",
+                   L->name, L->dim == 6 ? "||q| - 1|" : "|R^T R - I|", L->orth, L->energy);
+        }
+    }
+}
+
+void sus_plot_bench_equal_error(const sus_exp_bench *b, const sus_exp_bench_equal_error *e, int n)
+{
+    for (int k = 0; k < n; k++) {
+        const sus_exp_bench_series *s = b->S[e[k].series];
+        const double ratio = e[k].peer_sec / e[k].sec;
+        printf("  %s T = 1e4 at equal error: %s (%s %.4g) %.3g s, error %.2g, "
+               "vs GSL rk8pd (w,q) tol %.2g %.3g s, error %.2g: %.2fx (target 3x)\n",
+               ratio >= 3.0 ? "PASS" : "MISS", s->name, sus_exp_bench_param_name(s),
+               s->param[e[k].point], e[k].sec, e[k].err, e[k].peer_tol, e[k].peer_sec,
+               e[k].peer_err, ratio);
+    }
+}
+
+void sus_plot_bench_reproduced(const sus_exp_bench *b, const sus_exp_bench_reproduced *r,
+                               const char *suslov)
+{
+    for (int k = 0; k < r->nfailed; k++) {
+        const sus_exp_bench_series *s = b->S[r->failed[k].series];
+        printf("  row not reproduced by suslov: %s %s %.17g\n", s->name,
+               sus_exp_bench_param_name(s), s->param[r->failed[k].point]);
+    }
+    printf("  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in "
+           "data/bench.csv)\n",
+           r->ok == r->tried ? "CHECK ok:" : "CHECK FAILED:", r->ok, r->tried, suslov);
+}

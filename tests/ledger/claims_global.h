@@ -1,0 +1,9 @@
+/* Global orders on every body of tests/unit/bodies.h (claims_bodies.h): the slope of the error at
+ * a fixed phase of the transient against the step, for every method of the registry, w and R;
+ * each line reports the body farthest from its claim. */
+#ifndef SUSLOV_CLAIMS_GLOBAL_H
+#define SUSLOV_CLAIMS_GLOBAL_H
+
+void global_order_claims(void);
+
+#endif

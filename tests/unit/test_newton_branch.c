@@ -1,0 +1,210 @@
+/* The implicit steps solve for the root on the branch continued in eps from eps = 0 (newton.h):
+ *   - where Newton from the explicit prediction fails (the variational step at h = eps k ~ 160, the
+ *     midpoint step at h ~ 4, both on the paper's energy ellipse), the step still returns a root,
+ *     to round-off, and it is the branch's: it equals the end of an independent continuation (4000
+ *     equal stages, each Newton from the last root, det J > 0 all along) to 1e-12 relative; a step
+ *     of negative eps (a composition's backward substep) likewise;
+ *   - where the prediction is good (h = 0.145, the paper's eps = 1, and h = 0.5; 200 steps on
+ *     every body of the family), the step is Newton from the prediction, bit for bit (the fast
+ *     path: the results of the fixed-step experiments at such steps are unchanged);
+ *   - a fold: from a state of the stability map where the 2-stage Gauss step's branch turns back,
+ *     the continuation reaches 0.99 of the fold's step, not 1.01 of it (SUS_STEPPER_SINGULAR), and
+ *     det J vanishes there like (e* - e)^(1/2) (exponent within 0.05: stability.h);
+ *   - the stability map classes a run whose step cannot be solved (the variational step from
+ *     |w| = 1e150 overflows at its first prediction and along its continuation) as a solver
+ *     failure at step 1;
+ *   - the stability map skips the rest of a run that has entered a cycle (stability.c): its final
+ *     error equals that of the whole run, step by step, bit for bit (midpoint at h = 1000, a
+ *     composition and the variational step at h = 100, six starts each). */
+#include "check_body.h"
+#include "exact.h"
+#include "newton.h"
+#include "registry.h"
+#include "stability.h"
+
+#include <math.h>
+
+/* The independent continuation: 4000 equal stages from the root at eps = 0; 0 with the root in x,
+ * -1 when a stage fails or det J <= 0 on the way. */
+static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, double eps, const double w[2],
+                                double *x)
+{
+    enum { STAGES = 4000 };
+    st->guess(m, 0.0, w, x);
+    for (int j = 1; j <= STAGES; j++) {
+        sus_stepper_stats s;
+        if (sus_step_newton_solve(st->residual, st->unknowns, m, eps * j / STAGES, w, x, &s) !=
+                SUS_STEPPER_OK ||
+            !(s.det > 0.0))
+            return -1;
+    }
+    return 0;
+}
+
+/* The state after `steps` steps of the map's run from angle a of na at step h (stability.h). */
+static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a, int na, double h, int steps,
+                      double w[3])
+{
+    sus_exp_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / na + SUS_EXP_STAB_ANGLE0, w);
+    w[2] = 0.0;
+    for (int k = 0; k < steps; k++) {
+        double x[3], lam;
+        sus_stepper_stats s;
+        st->apply(paper->model, h / paper->k, w, x, &lam, &s);
+        w[0] = x[0], w[1] = x[1];
+    }
+}
+
+/* One step: the step returns the branch's root; where `hard`, plain Newton from the prediction
+ * fails or ends off the branch there (else the case would not test the continuation). */
+static void branch_step(const sus_exact *paper, const char *name, double h, const double w[3], int hard)
+{
+    const sus_stepper_type *st = sus_step_method_by_name(name)->type;
+    const sus_model *m = paper->model;
+    const double eps = h / paper->k;
+    double x[SUS_MAX_UNKNOWNS], xu[SUS_MAX_UNKNOWNS], wn[3], g[SUS_MAX_UNKNOWNS], J[16], scale;
+    sus_stepper_stats s;
+    st->guess(m, eps, w, x);
+    const int plain = sus_step_newton_solve(st->residual, st->unknowns, m, eps, w, x, &s);
+    const int cont = uniform_continuation(st, m, eps, w, xu) == 0;
+    const int off_branch =
+        plain != SUS_STEPPER_OK || !(s.det > 0.0) || hypot(x[0] - xu[0], x[1] - xu[1]) > 1e-6;
+    const int rc = sus_step_implicit_solve(st, m, eps, w, wn, &s);
+    st->residual(m, eps, w, wn, g, J, &scale);
+    const double res = fmax(fabs(g[0]), fabs(g[1])), d = hypot(wn[0] - xu[0], wn[1] - xu[1]);
+    CHECK(cont && (off_branch || !hard) && rc == SUS_STEPPER_OK &&
+              res <= SUS_STEP_NEWTON_STAGNATION * scale && d <= 1e-12 * hypot(xu[0], xu[1]) && s.det > 0.0,
+          "%s at h = %g from (%.4g, %.4g): Newton from the prediction %s; the step: status %d, |G| = %.2g "
+          "(scale %.2g), %.2g from the continued branch's root, det J %.3g",
+          name, h, w[0], w[1],
+          plain != SUS_STEPPER_OK ? "fails"
+          : off_branch            ? "lands off the branch"
+                                  : "holds",
+          rc, res, scale, d, s.det);
+}
+
+/* Small steps, h = eps k = 0.145 (the paper's eps = 1) and 0.5 on each body: the step is plain
+ * Newton from the prediction, bit for bit. */
+static void fast_path(void)
+{
+    int differ = 0, n = 0;
+    const char *names[2] = {"midpoint", "variational"};
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) != 0) continue;
+        sus_exact ex;
+        sus_exact_init(&ex, &m, b.w0);
+        for (int i = 0; i < 4; i++) {
+            const sus_stepper_type *st = sus_step_method_by_name(names[i % 2])->type;
+            const double eps = (i < 2 ? 0.145 : 0.5) / ex.k;
+            double w[3] = {b.w0[0], b.w0[1], 0.0};
+            for (int j = 0; j < 200; j++, n++) {
+                double x[2], wp[2], wn[3];
+                sus_stepper_stats s;
+                st->guess(&m, eps, w, x);
+                sus_step_newton_solve(st->residual, 2, &m, eps, w, x, &s);
+                st->result(&m, eps, w, x, wp);
+                sus_step_implicit_solve(st, &m, eps, w, wn, &s);
+                differ += wn[0] != wp[0] || wn[1] != wp[1];
+                w[0] = wn[0], w[1] = wn[1];
+            }
+        }
+    }
+    CHECK(differ == 0,
+          "%d steps of h = eps k = 0.145 and 0.5 (midpoint, variational, %d bodies): the step is "
+          "Newton from the prediction bit for bit; %d differ",
+          n, BODIES_COUNT, differ);
+}
+
+static void fold(const sus_exact *paper)
+{
+    const sus_stepper_type *st = sus_step_method_by_name("gauss4")->type;
+    const sus_model *m = paper->model;
+    const double h = pow(10.0, -2.0 + 0.2 * 17); /* 25.1: the map's first fold of gauss4 */
+    double w[3], e_star = NAN, exponent = NAN, x[SUS_MAX_UNKNOWNS], reg;
+    sus_stepper_stats s;
+    map_state(paper, st, 29, 36, h, 2, w);
+    const int found = sus_exp_fold(m, st, w, h / paper->k, &e_star, &exponent) == 0;
+    const int below = sus_step_newton_branch(st->residual, st->guess, 4, m, 0.99 * e_star, w, x, &s, &reg);
+    const int above = sus_step_newton_branch(st->residual, st->guess, 4, m, 1.01 * e_star, w, x, &s, &reg);
+    CHECK(found && below == SUS_STEPPER_OK && above == SUS_STEPPER_SINGULAR && fabs(exponent - 0.5) <= 0.05,
+          "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 e*: %d; at 1.01 e*: "
+          "status %d, SINGULAR %d); det J ~ (e* - e)^%.4f (1/2)",
+          w[0], w[1], e_star * paper->k, below, above, SUS_STEPPER_SINGULAR, exponent);
+}
+
+/* A step that cannot be solved: the map's SOLVER class, at step 1. */
+static void unsolvable(const sus_exact *paper)
+{
+    const double w0[2] = {1e150, 1e100};
+    sus_exact ex;
+    sus_exp_stab_result r;
+    sus_exact_init(&ex, paper->model, w0);
+    sus_exp_stability_run(&ex, sus_step_method_by_name("variational")->type, 1e-150, 5, 0, &r);
+    CHECK(r.cls == SUS_EXP_STAB_SOLVER && r.step == 1,
+          "variational from |w| = 1e150: the map's class %s at step "
+          "%ld (solver failure at 1)",
+          SUS_EXP_STAB_NAMES[r.cls], r.step);
+}
+
+/* The whole run by hand against sus_exp_stability_run's, which skips cycles. */
+static void cycle_shortcut(const sus_exact *paper)
+{
+    const char *names[3] = {"midpoint", "comp4-s5", "variational"};
+    const double hs[3] = {1000.0, 100.0, 100.0};
+    int differ = 0, n = 0;
+    for (int i = 0; i < 3; i++) {
+        const sus_stepper_type *st = sus_step_method_by_name(names[i])->type;
+        const double eps = hs[i] / paper->k;
+        const long N = sus_exp_stability_steps(hs[i]);
+        for (int a = 0; a < 36; a += 6, n++) {
+            double w[3], winf[2];
+            sus_exact ex;
+            sus_exp_stab_result r;
+            sus_exp_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / 36 + SUS_EXP_STAB_ANGLE0, w);
+            w[2] = 0.0;
+            sus_exact_init(&ex, paper->model, w);
+            sus_exact_limit(&ex, winf);
+            sus_exp_stability_run(&ex, st, eps, N, 0, &r);
+            for (long k = 0; k < N; k++) {
+                double x[3], lam;
+                sus_stepper_stats s;
+                st->apply(paper->model, eps, w, x, &lam, &s);
+                w[0] = x[0], w[1] = x[1];
+            }
+            differ += r.final_err != hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
+        }
+    }
+    CHECK(differ == 0,
+          "%d runs of the stability map with their cycles skipped end as the whole runs do, bit for "
+          "bit: %d differ",
+          n, differ);
+}
+
+int main(void)
+{
+    sus_model m;
+    sus_exact paper;
+    char err[256];
+    if (sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) != 0) {
+        CHECK(0, "the paper's body: %s", err);
+        return check_summary("test_newton_branch");
+    }
+    sus_exact_init(&paper, &m, SUS_PAPER_OMEGA0);
+    double w[3];
+    const double h_var = pow(10.0, -2.0 + 0.2 * 21), h_mid = pow(10.0, -2.0 + 0.2 * 13); /* 158, 3.98 */
+    map_state(&paper, sus_step_method_by_name("variational")->type, 1, 36, h_var, 3, w);
+    branch_step(&paper, "variational", h_var, w, 1);
+    map_state(&paper, sus_step_method_by_name("midpoint")->type, 0, 36, h_mid, 0, w);
+    branch_step(&paper, "midpoint", h_mid, w, 1);
+    branch_step(&paper, "midpoint", -h_mid, w, 0);
+    map_state(&paper, sus_step_method_by_name("midpoint")->type, 2, 36, h_mid, 0, w);
+    branch_step(&paper, "midpoint", -h_mid, w, 1);
+    fast_path();
+    fold(&paper);
+    unsolvable(&paper);
+    cycle_shortcut(&paper);
+    return check_summary("test_newton_branch");
+}
