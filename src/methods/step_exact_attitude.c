@@ -42,9 +42,9 @@
  * degree's), decade by decade; within two degrees of it the time changes little. A Magnus6 step
  * (Blanes, Casas & Ros; three Gauss nodes) on the same closed-form w was measured beside these: with
  * an error estimate worth the name (step doubling: two halves against one whole step) a pair of
- * half steps costs about one Taylor step of degree 9 and advances less far than a step of the best
- * degree, so the Taylor series was the cheaper at every tolerance on the general bodies; it is not
- * part of the method.
+ * half steps costs as much as a Taylor step of low degree and advances less far than a step of the
+ * best degree, so the Taylor series was the cheaper at every tolerance on the general bodies; it is
+ * not part of the method.
  *
  * R stays in SO(3) to round-off: q is normalised at every step and R built from it. w is the
  * closed form at every step's end (|E - E0| a few u: w = L^{-T} u with |u| = r), w3 = 0. */
