@@ -40,6 +40,7 @@ if [ "$mode" != ledger ]; then
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
     run mutants_fresh sh tests/build/mutants_fresh.sh
+    run history sh tests/build/history.sh
     run eqmap sh tools/eqmap.sh check
 fi
 if [ "$mode" != test ]; then

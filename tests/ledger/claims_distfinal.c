@@ -133,7 +133,7 @@ void distfinal_claims(void)
     distfinal_line("distfinal-linear-terms-restored", "DistFinal (extension)",
                    "the same with eps R w^ for eps Ad_R w^: the linear terms cancel, 2",
                    d.lin_restored, 2.0, d.wmax, LEDGER_EXTENSION);
-    /* the figures, for the text: the two residuals at eps = 2^-7 */
+    /* for the companion's text: the two residuals at eps = 2^-7 */
     ledger_number("DistFinalPrintedAtSeven", d.lin_printed[7]);
     ledger_number("DistFinalRestoredAtSeven", d.lin_restored[7]);
 }
