@@ -27,6 +27,19 @@ static int env_set(const char *name)
     return v && *v;
 }
 
+int progress_modes(int *argc, char **argv)
+{
+    int quiet = 0, n = 1;
+    for (int i = 1; i < *argc; i++)
+        if (strcmp(argv[i], "--quiet") == 0)
+            quiet = 1;
+        else
+            argv[n++] = argv[i];
+    argv[n] = NULL;
+    *argc = n;
+    return quiet ? 0 : PROGRESS_TERMINAL | PROGRESS_LOG;
+}
+
 void progress_start(const char *who, const char *unit, long total, int modes)
 {
     const char *term = getenv("TERM");
@@ -42,7 +55,8 @@ void progress_start(const char *who, const char *unit, long total, int modes)
     /* SUSLOV_PROGRESS_AFTER=S (a test hook): the first line after S seconds, in either mode */
     const char *after = getenv("SUSLOV_PROGRESS_AFTER");
     pr.start = sus_sys_now();
-    pr.next = pr.start + (after && *after ? atof(after) : pr.log ? PROGRESS_LOG_EVERY : PROGRESS_AFTER);
+    const double first = pr.log ? PROGRESS_LOG_EVERY : PROGRESS_AFTER;
+    pr.next = pr.start + (after && *after ? atof(after) : first);
 }
 
 /* Back to the start of the line and clear it: ESC[K, or spaces over what was written. */
@@ -73,26 +87,45 @@ static const char *secs(double s, char *buf, size_t len)
     return buf;
 }
 
-/* "WHO: UNIT k of N (p%)" or "WHO: p%" or "WHO:", then the detail, the time taken and the
- * estimate of what is left (from the mean rate so far). */
-static int format_line(char *line, size_t len, long done, double dt, const char *detail)
+/* One part of the line: after "WHO:" with a space, after another part with a comma. */
+static void part(char *line, size_t len, size_t *n, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static void part(char *line, size_t len, size_t *n, const char *fmt, ...)
+{
+    const int first = line[*n - 1] == ':';
+    if (*n + 2 >= len)
+        return;
+    *n += (size_t)snprintf(line + *n, len - *n, first ? " " : ", ");
+    va_list ap;
+    va_start(ap, fmt);
+    const int k = vsnprintf(line + *n, len - *n, fmt, ap);
+    va_end(ap);
+    if (k > 0)
+        *n = *n + (size_t)k < len ? *n + (size_t)k : len - 1;
+}
+
+/* "WHO: UNIT k of N (p%)" or "WHO: p% done", then the detail, the rate, the time taken and the
+ * estimate of what is left (from the mean rate so far); returns the line's length. */
+static size_t format_line(char *line, size_t len, long done, double dt, const char *detail)
 {
     char a[32], b[32];
     const int known = pr.total > 0 && done < pr.total;
     const double frac = known ? (double)done / (double)pr.total : 0.0;
-    int n = snprintf(line, len, "%s:", pr.who);
-    if (pr.unit)
-        n += snprintf(line + n, len - (size_t)n, " %s %ld of %ld", pr.unit, done, pr.total);
-    if (known)
-        n += snprintf(line + n, len - (size_t)n, pr.unit ? " (%.1f%%)" : " %.0f%% done", 100.0 * frac);
+    size_t n = (size_t)snprintf(line, len, "%s:", pr.who);
+    if (pr.unit && known)
+        part(line, len, &n, "%s %ld of %ld (%.1f%%)", pr.unit, done, pr.total, 100.0 * frac);
+    else if (pr.unit)
+        part(line, len, &n, "%s %ld of %ld", pr.unit, done, pr.total);
+    else if (known)
+        part(line, len, &n, "%.0f%% done", 100.0 * frac);
     if (*detail)
-        n += snprintf(line + n, len - (size_t)n, "%s %s", pr.unit || known ? "," : "", detail);
-    if (pr.unit && dt > 0.0)
-        n += snprintf(line + n, len - (size_t)n, ", %.3g %ss/s", (double)done / dt, pr.unit);
-    n += snprintf(line + n, len - (size_t)n, ", %s elapsed", secs(dt, a, sizeof a));
+        part(line, len, &n, "%s", detail);
+    if (pr.unit && done > 0 && dt > 0.0)
+        part(line, len, &n, "%.3g %ss/s", (double)done / dt, pr.unit);
+    part(line, len, &n, "%s elapsed", secs(dt, a, sizeof a));
     if (known && done > 0)
-        n += snprintf(line + n, len - (size_t)n, ", about %s left", secs(dt * (1.0 - frac) / frac, b, sizeof b));
-    return n < (int)len ? n : (int)len - 1;
+        part(line, len, &n, "about %s left", secs(dt * (1.0 - frac) / frac, b, sizeof b));
+    return n;
 }
 
 void progress_tick(long done, const char *detail, ...)
@@ -110,14 +143,14 @@ void progress_tick(long done, const char *detail, ...)
         vsnprintf(what, sizeof what, detail, ap);
         va_end(ap);
     }
-    const int n = format_line(line, sizeof line, done, now - pr.start, what);
+    const size_t n = format_line(line, sizeof line - 1, done, now - pr.start, what);
     if (pr.log) { /* one write a line, so that two programs' lines never mix */
         line[n] = '\n';
-        fwrite(line, 1, (size_t)n + 1, stderr);
+        fwrite(line, 1, n + 1, stderr);
     } else {
         clear_line();
         fputs(line, stderr);
-        pr.width = n > pr.width ? n : pr.width;
+        pr.width = (int)n > pr.width ? (int)n : pr.width;
     }
     fflush(stderr);
     pr.shown = 1;

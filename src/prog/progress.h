@@ -15,6 +15,9 @@ enum {
     PROGRESS_LOG = 2       /* stderr not a terminal: a line every ten seconds */
 };
 
+/* The modes a program allows: none when its arguments hold --quiet, which is taken out of them
+ * (*argc and argv shortened), else both. */
+int progress_modes(int *argc, char **argv);
 /* who: the line's first word (the program). unit: what total counts, printed as "UNIT k of N"
  * with a rate in UNITs/s; NULL prints the fraction done only (work counted in uneven units).
  * total <= 0: unknown, so no fraction and no estimate. */

@@ -103,8 +103,8 @@ static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
     const int finite = isfinite(st->residual) && isfinite(st->scale);
     char regloc[96];
     const char *why = rep->status == SUS_STEPPER_SINGULAR
-                          ? sus_paper_numbered("the Jacobian of the step equation is singular ((REGLOC) fails)",
-                                               regloc, sizeof regloc)
+                          ? sus_paper_numbered("the Jacobian of the step equation is singular "
+                                               "((REGLOC) fails)", regloc, sizeof regloc)
                       : finite ? "Newton did not converge"
                                : "Newton's iteration overflowed";
     snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations", rep->step, rep->t,
