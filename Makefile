@@ -6,7 +6,8 @@
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make bench      work-precision and per-step cost against GSL (data/bench.csv)
-#   make paper      the companion text, paper/companion.pdf
+#   make paper      the companion text, paper/companion.pdf and paper/methods.pdf (committed,
+#                   byte for byte reproducible; make check fails when their numbers are stale)
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
 #   make deps       install missing Debian packages (make check installs only what it needs)
@@ -326,16 +327,19 @@ PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibli
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
-            tools/paper_tolerances.sh CITATION.cff .zenodo.json
+            tools/paper_tolerances.sh tools/paper_links.sh tools/paper_labels.py CITATION.cff .zenodo.json
 paper: paper/companion.pdf paper/methods.pdf
 
-# The companion (main text) and the software note (methods, benchmark, whole ledger, source).
-# PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one address
-# (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
+# The companion (main text) and the software note (methods, benchmark, whole ledger, source),
+# committed, with paper/ledger.sha256 (the ledger's outputs they print); only this rule writes
+# them. PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one
+# address (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
 PAPER_BASE ?=
 $(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
-paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
-	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
+paper/companion.pdf paper/methods.pdf paper/ledger.sha256 &: $(PAPER_IN) $(BUILD)/paper_base.stamp \
+    | deps-paper
+	$(call say,PAPER,paper/companion.pdf paper/methods.pdf)
+	$(Q)PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, one side-by-side page per source file, the
 # equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
@@ -492,12 +496,12 @@ clean:
 	$(call say,CLEAN,$(BUILD))
 	$(Q)rm -rf $(BUILD)
 
-# Everything `make figures`, `make bench` and `make paper` write; the PNG previews the README
-# shows and data/animation.cfg are committed sources of a fresh clone and stay (in a git
-# checkout, a PNG that git does not track goes too).
+# Everything `make figures`, `make bench` and `make paper` write but what is committed: the PNG
+# previews the README shows, data/animation.cfg, and the PDFs with their paper/ledger.sha256
+# stay (in a git checkout, a PNG that git does not track goes too).
 distclean: clean
 	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/methods.pdf paper/*.tmp
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

@@ -124,6 +124,8 @@ if [ "$mode" != test ]; then
     # Every tolerance of the ledger has a rule with its reason in paper/tolerances.tsv.
     run paper_tolerances sh tools/paper_tolerances.sh "$B/claims.tsv" paper/tolerances.tsv \
         "$B/tolerances.tex"
+    # The committed PDFs print the numbers this ledger gives (make paper writes them).
+    run paper_fresh sh tools/paper_fresh.sh "$B"
     st_end "paper checks" "$(echo $st_names | tr ' ' ',' | sed 's/,/, /g')"
 fi
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$sum" || status=1

@@ -498,7 +498,8 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
         "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
         "I;\n"
         "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
-        "orange arrow: w in space, R w. Distance (MetMat) to the exact attitude at t = %g: midpoint %.3f,\n"
+        "orange arrow: w in space, R w. The distance of (MetMat) to the exact attitude at t = %g: "
+        "midpoint %.3f,\n"
         "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
         "figures/attitude.mp4.\n"
         "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",

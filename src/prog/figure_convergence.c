@@ -24,7 +24,7 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "global\n"
         "error slope p, so the legends of (a), (c), (e) read one more than the order.\n"
         "(a), (b) w: p = 1, 2, 4, 2 (euler, midpoint, rk4, variational).\n"
-        "(c), (d) distance (MetMat) on SO(3): solid R_{k+1} = R_k cay(eps w_k) ((algo)): order 1 "
+        "(c), (d) the distance of (MetMat) on SO(3): solid R_{k+1} = R_k cay(eps w_k) ((algo)): order 1 "
         "for\n"
         "every method ((TeoL)), the four curves coincide locally; dashed: cayley-mid, order min(2, p).\n"
         "(e), (f) lambda: s = p with lambda(w^{k+1}); the variational (taualg) does not converge: its local "
