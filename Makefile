@@ -108,8 +108,9 @@ FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
 TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
 RENDER_H := $(notdir $(wildcard src/render/*.h))
+# (stdin from /dev/null: in a tree without src/render, grep gets no pattern and would read it)
 TESTS_DRAW := $(patsubst tests/unit/%.c,$(BUILD)/%,$(shell grep -lF $(RENDER_H:%=-e '"%"') \
-                  tests/unit/test_*.c 2>/dev/null))
+                  tests/unit/test_*.c </dev/null 2>/dev/null))
 CLAIMS   := $(BUILD)/claims
 TIMED    := $(BUILD)/timed
 

@@ -18,9 +18,21 @@ sum="$B/$mode-summary.txt"
 : >"$sum"
 : >"$L/skipped.txt"
 status=0
-# the current stage: its programs' names, counts and failures so far
+# the current stage: its title, programs' names, counts and failures so far
 st_names="" st_pass=0 st_fail=0 st_skip=0 st_out=""
-st_begin() { st_names="" st_pass=0 st_fail=0 st_skip=0 st_out=$(mktemp); }
+st_begin() { # st_begin TITLE N: N programs to run
+    st_title=$1 st_n=$2 st_k=0 st_t0=$(date +%s)
+    st_names="" st_pass=0 st_fail=0 st_skip=0 st_out=$(mktemp)
+}
+# On a terminal (not under NO_PROGRESS), the stage's line says what runs until its result replaces
+# it: "      CLI tests      3 of 10, 12 s: test_cli_promises"; a terminal without escape
+# sequences (TERM=dumb, NO_COLOR) gets spaces over it.
+live=0
+[ -t 1 ] && [ -z "${NO_PROGRESS:-}" ] && live=1
+clear_line() {
+    [ "$live" = 1 ] || return 0
+    if [ "${TERM:-}" = dumb ] || [ -n "${NO_COLOR:-}" ]; then printf '\r%79s\r' ''; else printf '\r\033[K'; fi
+}
 # count NAME LOG [STATUS]: the program's summary line into the stage and the summary file; a log
 # with none is a failure shown whole, and so is a failing exit STATUS beside no failed check
 count() {
@@ -40,9 +52,14 @@ count() {
 # run NAME COMMAND...: the program's output into its log; its FAIL lines into the stage's failures
 run() {
     name=$1; shift
-    st_names="$st_names $name"
+    st_names="$st_names $name" st_k=$((st_k + 1))
+    if [ "$live" = 1 ]; then
+        clear_line
+        printf '      %-14s %d of %d, %d s: %s' "$st_title" "$st_k" "$st_n" $(($(date +%s) - st_t0)) \
+            "$name" | cut -c1-79 | tr -d '\n'
+    fi
     rc=0
-    "$@" >"$L/$name.log" 2>&1 || rc=$?
+    "$@" </dev/null >"$L/$name.log" 2>&1 || rc=$? # a test never reads the terminal
     grep -E '^FAIL' "$L/$name.log" >>"$st_out"
     n=$(grep -cE '^SKIP' "$L/$name.log")
     grep -E '^SKIP' "$L/$name.log" >>"$L/skipped.txt"
@@ -51,6 +68,7 @@ run() {
 }
 # st_end TITLE WHAT: the stage's line, then its failures
 st_end() {
+    clear_line
     skipped=""
     [ "$st_skip" = 0 ] || skipped=", $st_skip skipped (see $L/skipped.txt)"
     [ "$st_fail" = 0 ] && verdict=PASS || { verdict=FAIL; status=1; }
@@ -67,14 +85,14 @@ for sig in INT TERM HUP; do
     trap "trap - EXIT $sig; rm -f \"\$st_out\"; kill -$sig \$\$" $sig
 done
 if [ "$mode" != ledger ]; then
-    st_begin
+    st_begin "unit tests" $#
     for t in "$@"; do run "$(basename "$t")" "$t"; done
     st_end "unit tests" "$# programs"
-    st_begin
     # every CLI test script, found by name (tools/mutants.sh finds them the same way)
+    st_begin "CLI tests" "$(ls tests/cli/test_*.sh | wc -l)"
     for c in tests/cli/test_*.sh; do run "$(basename "$c" .sh)" sh "$c" "$B"; done
     st_end "CLI tests" "$(echo $st_names | wc -w) scripts"
-    st_begin
+    st_begin "build checks" 6
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
@@ -84,7 +102,7 @@ if [ "$mode" != ledger ]; then
     st_end "build checks" "$(echo $st_names | tr ' ' ',' | sed 's/,/, /g')"
 fi
 if [ "$mode" != test ]; then
-    st_begin
+    st_begin "claims ledger" 0
     # The ledger's table is in claims.out (make ran the ledger only if the claims program changed);
     # its FAIL rows and anything it prints besides its rows are shown, never its PASS rows.
     cp "$B/claims.out" "$L/claims.log"
@@ -118,7 +136,7 @@ if [ "$mode" != test ]; then
     fi
     lines=$(awk 'END { print NR - 1 }' "$B/claims.tsv")
     st_end "claims ledger" "$lines lines, table in $B/claims.out"
-    st_begin
+    st_begin "paper checks" 3
     # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
     run paper_coverage sh tools/paper_coverage.sh "$B/claims.tsv"
     # Every tolerance of the ledger has a rule with its reason in paper/tolerances.tsv.
