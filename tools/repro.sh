@@ -12,7 +12,7 @@ set -eu
 # What the PDFs are built from: their text and tables, the programs that measure and draw (and
 # their settings), the tools that assemble them, and the citation files. Not the PDFs, nor the
 # digest of the numbers they were built from (tools/paper_fresh.sh).
-SOURCES="paper src tests/ledger tests/unit data/animation.cfg data/bench-recorded Makefile
+SOURCES="paper src tests/ledger data/animation.cfg data/bench-recorded Makefile
 tools/paper.sh tools/paper_coverage.sh tools/paper_layout.sh tools/paper_links.sh
 tools/paper_numbers.sh tools/paper_refs.sh tools/paper_tables.sh tools/paper_tolerances.sh
 tools/paper_labels.py tools/snippet.sh tools/eqmap.sh tools/repro.sh tools/figsplit.sh
