@@ -1,4 +1,4 @@
-/* The claims ledger of the core issue: consistency orders (TeoL, the general-DSP
+/* The claims ledger's core: consistency orders (TeoL, the general-DSP
  * proposition, PropoFinal, PropoCons1), the variational multiplier limit O_0, constraint and
  * group preservation, and the accuracy of the references used to measure them.
  *

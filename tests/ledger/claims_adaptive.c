@@ -18,8 +18,8 @@
  *     grows like TOL^{-1/(p+1)}) and 1 when N does not change: in [0.86, 1] for p = 6 ... 20; with
  *     0.15 for the order changing with TOL and the estimate's scatter, the band was [0.7, 1.15].
  *     Each edge is a line (the steepest body against the upper, the shallowest against the lower).
- *     The first measurement, with the order -ln(TOL)/2 + 1, missed the upper edge on one body; the
- *     README tells that history, the band was not moved. The 0.15 was an allowance, not an
+ *     With the order -ln(TOL)/2 + 1 one body lies above the upper edge; the band is as fixed
+ *     before measuring. The 0.15 was an allowance, not an
  *     estimate; two parts of it can be estimated (written after measuring, so they are not the
  *     line's threshold): the controller's SAFETY^{p+1} falls by 12 log10(1/0.9) = 0.55 decades as p
  *     goes from 8 to 20 over the ten decades (+0.055 of slope), and an estimate whose undershoot

@@ -211,8 +211,8 @@ void highorder_claims(const sus_model *m, const sus_exact *ex)
 
     /* The reference R(50) against the independent long-double Magnus integration along the
      * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17;
-     * each matrix is rounded to double once, so ~1e-16 is the floor of the comparison). The issue
-     * asks for <= 1e-15: a tenth of the 1e-14 that would blur errors of 1e-12 by 1%. */
+     * each matrix is rounded to double once, so ~1e-16 is the floor of the comparison). The bound
+     * is 1e-15: a tenth of the 1e-14 that would blur errors of 1e-12 by 1%. */
     {
         double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         sus_magnus4(ex, 0.0, T_ORD, 4000, Rm);
