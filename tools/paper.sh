@@ -74,7 +74,9 @@ fi
 printf '\\newcommand{\\CiteVersion}{%s}\n\\newcommand{\\CiteAuthor}{%s}\n' "$version" "$author" >>"$P/source.tex"
 sh tools/repro.sh "$B" "$P/repro.tex"
 sh tools/figsplit.sh figures/stability.pdf Stability "$P/figsplit.tex"
-cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" data/bench.tex "$P/"
+cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" "$P/"
+# the bench's numbers and its machine, from the recorded run (make bench-record)
+cat data/bench-recorded/bench.tex data/bench-recorded/machine.tex >"$P/bench.tex"
 # A fixed timestamp in the PDF's metadata (the text's date is the commit's, from repro.tex).
 export TEXINPUTS="$P:" SOURCE_DATE_EPOCH=946684800
 for doc in companion methods; do
