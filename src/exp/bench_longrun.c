@@ -136,10 +136,10 @@ static void time_interleaved(timed_run *r, int n, double *sec)
 
 /* The loosest of four tolerances a decade at which rk8pd, on (w, q) through the driver from
  * hstart 1e-3 (reduced 0: the full problem) or on the reduced problem (reduced 1: driver,
- * abs = rel, hstart 1e-2), ends within err of R_ref at T_LONG; opened in g, its tolerance and
- * error into *tol and *perr. Returns 0, or -1 (g closed) when none down to 1e-15 does. */
-static int rk8pd_matching(const sus_exp_bench *b, int reduced, double err,
-                          sus_exp_bench_peer_run *g, double *tol, double *perr)
+ * abs = rel, hstart 1e-2), ends within LONG_LEVEL of R_ref at T_LONG; opened in g, its tolerance
+ * and error into *tol and *perr. Returns 0, or -1 (g closed) when none down to 1e-15 does. */
+static int rk8pd_matching(const sus_exp_bench *b, int reduced, sus_exp_bench_peer_run *g,
+                          double *tol, double *perr)
 {
     for (int j = 0; SUS_EXP_BENCH_PEER_TOL(j) >= SUS_EXP_BENCH_PEER_TOL_MIN; j++) {
         *g = (sus_exp_bench_peer_run){.pb = &b->pb, .T = T_LONG};
@@ -154,7 +154,7 @@ static int rk8pd_matching(const sus_exp_bench *b, int reduced, double err,
         double R[3][3];
         sus_exp_peer_attitude(g->p.dim, g->y, R);
         *perr = sus_so3_dist(b->R_long, R);
-        if (g->status == GSL_SUCCESS && *perr <= err)
+        if (g->status == GSL_SUCCESS && *perr <= SUS_EXP_BENCH_LONG_LEVEL)
             return 0;
         sus_exp_peer_close(&g->p);
     }
@@ -162,7 +162,7 @@ static int rk8pd_matching(const sus_exp_bench *b, int reduced, double err,
 }
 
 /* Explicit methods only: the target is the series methods', and an implicit one needs so many
- * steps to reach 1e-10 that its T = 1e4 runs would take most of this phase. */
+ * steps to reach the level that its T = 1e4 runs would take most of this phase. */
 static int equal_error_wanted(const sus_exp_bench_series *s)
 {
     return s->ours && !s->w_only && !s->me->type->implicit && sus_exp_bench_own_attitude(s->me);
@@ -189,23 +189,48 @@ static const double (*ours_R(const sus_exp_bench_series *s, const sus_exp_bench_
     return (const double(*)[3])(s->tol_driven ? tr->last.R : dr->last.R);
 }
 
-/* Row e (series i, point j): ours to T_LONG, its error, and the matching rk8pd runs. */
-static void equal_error_row(const sus_exp_bench *b, int i, int j, sus_exp_bench_equal_error *e)
+/* The first point of s, in the order of its sweep (towards accuracy), whose run to T_LONG ends
+ * within LONG_LEVEL, trying at most MAX_TRIES from the first that reached it at t = 50; its
+ * index (-1 when none) and the run's end into e. */
+#define MAX_TRIES 12
+static int point_at_level(const sus_exp_bench *b, const sus_exp_bench_series *s,
+                          sus_exp_bench_equal_error *e)
+{
+    sus_exp_bench_tol_run tr;
+    sus_exp_bench_dsp_run dr;
+    timed_run r;
+    for (int j = 0, tries = 0; j < s->n && tries < MAX_TRIES; j++) {
+        if (!(s->err_R[j] <= SUS_EXP_BENCH_LONG_LEVEL))
+            continue;
+        tries++;
+        ours_run(b, s, j, T_LONG, &tr, &dr, &r);
+        r.fn(r.ctx);
+        memcpy(e->R_end, ours_R(s, &tr, &dr), sizeof e->R_end);
+        e->err = sus_so3_dist(b->R_long, e->R_end);
+        if (e->err <= SUS_EXP_BENCH_LONG_LEVEL)
+            return j;
+    }
+    return -1;
+}
+
+/* Row e: series i at the point that reaches the level at T_LONG, timed interleaved with the
+ * peers (g[k] when have[k]). Returns 0, or -1 when no point of i reaches the level. */
+static int equal_error_row(const sus_exp_bench *b, int i, sus_exp_bench_peer_run g[2],
+                           const int have[2], sus_exp_bench_equal_error *e)
 {
     const sus_exp_bench_series *s = b->S[i];
+    const double peer_tol = e->peer_tol, peer_err = e->peer_err, red_tol = e->red_tol,
+                 red_err = e->red_err;
+    *e = (sus_exp_bench_equal_error){.series = i, .peer_sec = INFINITY, .red_sec = INFINITY,
+                                     .peer_tol = peer_tol, .peer_err = peer_err,
+                                     .red_tol = red_tol, .red_err = red_err};
+    if ((e->point = point_at_level(b, s, e)) < 0)
+        return -1;
     sus_exp_bench_tol_run tr;
     sus_exp_bench_dsp_run dr;
     timed_run r[3];
     double sec[3];
-    *e = (sus_exp_bench_equal_error){.series = i, .point = j, .peer_sec = INFINITY,
-                                     .red_sec = INFINITY};
-    ours_run(b, s, j, T_LONG, &tr, &dr, &r[0]);
-    r[0].fn(r[0].ctx);
-    memcpy(e->R_end, ours_R(s, &tr, &dr), sizeof e->R_end);
-    e->err = sus_so3_dist(b->R_long, e->R_end);
-    sus_exp_bench_peer_run g[2];
-    const int have[2] = {rk8pd_matching(b, 0, e->err, &g[0], &e->peer_tol, &e->peer_err) == 0,
-                         rk8pd_matching(b, 1, e->err, &g[1], &e->red_tol, &e->red_err) == 0};
+    ours_run(b, s, e->point, T_LONG, &tr, &dr, &r[0]);
     int n = 1;
     for (int k = 0; k < 2; k++)
         if (have[k])
@@ -214,10 +239,9 @@ static void equal_error_row(const sus_exp_bench *b, int i, int j, sus_exp_bench_
     e->sec = sec[0];
     n = 1;
     for (int k = 0; k < 2; k++)
-        if (have[k]) {
+        if (have[k])
             *(k ? &e->red_sec : &e->peer_sec) = sec[n++];
-            sus_exp_peer_close(&g[k].p);
-        }
+    return 0;
 }
 
 int sus_exp_bench_best_equal_error(const sus_exp_bench *b)
@@ -263,10 +287,17 @@ void sus_exp_bench_equal_error_runs(sus_exp_bench *b)
     sus_refatt_precise(&b->pb.model, b->pb.ex.w0, T_LONG, w_ref, b->R_long);
     b->EQ = sus_exp_bench_calloc((size_t)b->nseries, sizeof *b->EQ);
     b->neq = 0;
+    sus_exp_bench_peer_run g[2];
+    sus_exp_bench_equal_error peers = {.peer_sec = INFINITY, .red_sec = INFINITY};
+    const int have[2] = {rk8pd_matching(b, 0, &g[0], &peers.peer_tol, &peers.peer_err) == 0,
+                         rk8pd_matching(b, 1, &g[1], &peers.red_tol, &peers.red_err) == 0};
     for (int i = 0; i < b->nseries; i++) {
-        const int j = equal_error_wanted(b->S[i]) ? point_at_1e10(b->S[i]) : -1;
-        if (j >= 0)
-            equal_error_row(b, i, j, &b->EQ[b->neq++]);
+        b->EQ[b->neq] = peers;
+        if (equal_error_wanted(b->S[i]) && equal_error_row(b, i, g, have, &b->EQ[b->neq]) == 0)
+            b->neq++;
     }
+    for (int k = 0; k < 2; k++)
+        if (have[k])
+            sus_exp_peer_close(&g[k].p);
     growth_run(b);
 }

@@ -15,10 +15,10 @@ extern "C" {
  * at the tolerance that did, sampled 1000 times over [0, T_LONG]. */
 void sus_exp_bench_long_runs(sus_exp_bench *b);
 
-/* b->EQ: each explicit own-attitude method of ours at the step (or TOL) that reached attitude
- * 1e-10 at t = 50, run to T_LONG, against rk8pd (w, q) and, for information, rk8pd on the
- * reduced problem, at equal error; b->R_long the reference there. Then b->growth: the fastest of
- * them at T_LONG run again to T_GROWTH. */
+/* b->EQ: each explicit own-attitude method of ours at its first step (or TOL) whose run to
+ * T_LONG ends within LONG_LEVEL of the reference (b->R_long), against rk8pd (w, q) and, for
+ * information, rk8pd on the reduced problem, each at its loosest tolerance that does too. Then
+ * b->growth: the row fastest against its peer, run again to T_GROWTH. */
 void sus_exp_bench_equal_error_runs(sus_exp_bench *b);
 
 /* The row of b->EQ that is fastest against its peer (the target's), or -1. */

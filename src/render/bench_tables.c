@@ -87,6 +87,15 @@ static const char *const LVL[NLEVELS] = {"Four", "Six", "Eight", "Ten", "Twelve"
 
 static const char *pass_word(int pass) { return pass ? "PASS" : "MISS"; }
 
+/* \newcommand{\NAME}{ratio}, to digits decimals; \infty where no peer reached the level. */
+static void tex_ratio(FILE *fp, const char *name, const char *suffix, double r, int digits)
+{
+    if (isinf(r))
+        fprintf(fp, "\\newcommand{\\%s%s}{\\infty}\n", name, suffix);
+    else
+        fprintf(fp, "\\newcommand{\\%s%s}{%.*f}\n", name, suffix, digits, r);
+}
+
 /* Two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict. The
  * w ratios are information (no target, no verdict). */
 static void tex_levels(FILE *fp, const sus_exp_bench *b)
@@ -95,11 +104,11 @@ static void tex_levels(FILE *fp, const sus_exp_bench *b)
         const sus_exp_bench_level vR = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_FULL, l),
                                   vD = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_REDUCED, l),
                                   vw = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_W_INFO, l);
-        fprintf(fp, "\\newcommand{\\BenchRatioR%s}{%.2f}\n\\newcommand{\\BenchPassR%s}{%s}\n",
-                LVL[l], vR.ratio, LVL[l], pass_word(vR.pass));
-        fprintf(fp, "\\newcommand{\\BenchRatioRed%s}{%.2f}\n\\newcommand{\\BenchPassRed%s}{%s}\n",
-                LVL[l], vD.ratio, LVL[l], pass_word(vD.pass));
-        fprintf(fp, "\\newcommand{\\BenchRatioW%s}{%.2f}\n", LVL[l], vw.ratio);
+        tex_ratio(fp, "BenchRatioR", LVL[l], vR.ratio, 2);
+        fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], pass_word(vR.pass));
+        tex_ratio(fp, "BenchRatioRed", LVL[l], vD.ratio, 2);
+        fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s}\n", LVL[l], pass_word(vD.pass));
+        tex_ratio(fp, "BenchRatioW", LVL[l], vw.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", LVL[l], vR.target);
     }
     fprintf(fp, "\\newcommand{\\BenchTargetRed}{%.2g}\n", SUS_EXP_BENCH_REDUCED_TARGET);
@@ -111,8 +120,8 @@ static void tex_long(FILE *fp, const sus_exp_bench *b)
     const int k = sus_exp_bench_best_equal_error(b);
     const double r = k < 0 ? 0.0 : b->EQ[k].peer_sec / b->EQ[k].sec,
                  g = sus_exp_bench_growth_ratio(b);
-    fprintf(fp, "\\newcommand{\\BenchLongRatio}{%.3g}\n\\newcommand{\\BenchPassLong}{%s}\n", r,
-            pass_word(r >= SUS_EXP_BENCH_LONG_TARGET));
+    tex_ratio(fp, "BenchLongRatio", "", r, 1);
+    fprintf(fp, "\\newcommand{\\BenchPassLong}{%s}\n", pass_word(r >= SUS_EXP_BENCH_LONG_TARGET));
     fprintf(fp, "\\newcommand{\\BenchLongTarget}{%g}\n", SUS_EXP_BENCH_LONG_TARGET);
     fprintf(fp, "\\newcommand{\\BenchGrowthRatio}{%.2f}\n\\newcommand{\\BenchPassGrowth}{%s}\n", g,
             pass_word(g <= SUS_EXP_BENCH_GROWTH_TARGET));
