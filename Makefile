@@ -226,11 +226,12 @@ check: all $(BUILD)/claims.out
 
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
 # summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
-# starts), and prints its table (claims.out). A run that does not reach its summary line
+# starts), and the web edition's claims_tex.tsv (each line's quantity and test in that LaTeX),
+# and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
-              $(BUILD)/sensitivity.tex
+              $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
 	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
 	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
@@ -304,16 +305,20 @@ $(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
 paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
 	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
-# The web edition (tools/web/): a static site, one side-by-side page per source file, the
-# equations, the ledger and the figures, rebuilt when any of them changes. Its tools (Debian's
-# python3-markdown, pygments, universal-ctags, chromium; KaTeX and playwright-core from npm) come
-# from make web-deps, which make check never needs. /usr/bin/python3 is Debian's, the one with
-# python3-markdown. The paper's LaTeX is read only when paper/labels.tsv is missing. The figure
-# programs' captions and data (seconds to draw) are prerequisites, so that a fresh clone's figures
-# page is complete; make bench and make animation (minutes) are not: their figures show the
-# committed PNG until they have run. A listing of the figure files' names and times is a
-# prerequisite too, with the names in src/ and tests/ so that a removed file also rebuilds the
-# site ($(WEB)/inputs.list, rewritten only when it changes).
+# The web edition (tools/web/): a static site, the findings first, one page per statement of the
+# paper, the ledger, the equations, the figures and one side-by-side page per source file, rebuilt
+# when any of them changes. Its tools (Debian's python3-markdown, pygments, universal-ctags,
+# chromium; KaTeX and playwright-core from npm) come from make web-deps, which make check never
+# needs; their installers write to $(BUILD)/web-deps.log. /usr/bin/python3 is Debian's, the one
+# with python3-markdown. The paper's LaTeX source (PAPER_TEX) gives the statements their quotes;
+# without it the pages carry none, the numbers come from paper/labels.tsv, and make web says so in
+# its one line. The figure programs' captions and data (seconds to draw) are prerequisites, so
+# that a fresh clone's figures page is complete; make bench and make animation (minutes) are not:
+# their figures show the committed PNG until they have run. A listing of the figure files' names
+# and times is a prerequisite too, with the names in src/ and tests/ so that a removed file also
+# rebuilds the site ($(WEB)/inputs.list, rewritten only when it changes). Quiet: one line per
+# step; V=1 shows the commands.
+WEB_Q     := $(if $(filter 1,$(V)),,@)
 WEB       := $(BUILD)/web
 WEB_PY    := /usr/bin/python3
 PAPER_TEX ?= ../shared/seeds/000_7d469b10bebd47d3.txt
@@ -341,18 +346,19 @@ wasm: $(WASM)
 
 $(BUILD)/wasm/%.o: src/%.c | web-deps
 	@mkdir -p $(@D)
-	$(WASM_CC) --target=wasm32-wasi $(WARN) -O2 $(inc_prog) -MMD -MP -c $< -o $@
+	$(WEB_Q)$(WASM_CC) --target=wasm32-wasi $(WARN) -O2 $(inc_prog) -MMD -MP -c $< -o $@
 
 $(WASM): $(WASM_OBJ)
+	@echo "WASM  $@ ($(words $(WASM_OBJ)) sources)"
 	@rm -f $(@D)/libsuslov.a
-	$(WASM_AR) rcs $(@D)/libsuslov.a $(filter-out %/wasm_api.o,$^)
-	$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry $(WASM_EXPORTS:%=-Wl,--export=wasm_%) \
-	    $(filter %/wasm_api.o,$^) $(@D)/libsuslov.a -lm -o $@.tmp
+	$(WEB_Q)$(WASM_AR) rcs $(@D)/libsuslov.a $(filter-out %/wasm_api.o,$^)
+	$(WEB_Q)$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry \
+	    $(WASM_EXPORTS:%=-Wl,--export=wasm_%) $(filter %/wasm_api.o,$^) $(@D)/libsuslov.a -lm -o $@.tmp
 	@mv $@.tmp $@
 -include $(WASM_OBJ:.o=.d)
 
-$(WEB)/index.html: $(WEB_IN) $(WASM) $(FIGS:%=figures/%.txt) | web-deps
-	$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) \
+$(WEB)/index.html: $(WEB_IN) $(BUILD)/claims_tex.tsv $(WASM) $(FIGS:%=figures/%.txt) | web-deps
+	$(WEB_Q)$(WEB_PY) tools/web/build.py --out $(WEB) --claims $(BUILD)/claims.tsv --paper $(PAPER_TEX) \
 	    --wasm $(WASM)
 
 $(WEB)/inputs.list: FORCE
@@ -362,14 +368,23 @@ $(WEB)/inputs.list: FORCE
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 
 web-deps:
-	@sh tools/web/deps.sh
+	@sh tools/web/deps.sh $(BUILD)/web-deps.log
 
 # Every page in headless chromium: links, math, no network, no sideways scroll at 390 and 1400 px,
-# the ledger's search and code links, the live pages' numbers against build/suslov's CSV, the
-# (taudyn) page and its screenshot ($(WEB)/shots/taudyn.png).
+# the home page's findings and figure, each statement's quote, the ledger's cards at both widths,
+# its search and code links, the live pages' numbers against build/suslov's CSV, their labels and
+# ticks, the (taudyn) page and its screenshot ($(WEB)/shots/taudyn.png).
 # Last line "check-web: N passed, N failed".
 check-web: web $(BUILD)/suslov
-	node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv $(BUILD)/suslov
+	$(WEB_Q)node tools/web/check_web.js $(WEB) paper/equations.txt $(BUILD)/claims.tsv $(BUILD)/suslov
+
+# Screenshots of the pages a reader meets first, at 390 and 1400 px, for a person to look at:
+# $(WEB)/shots/PAGE-WIDTH.png (tools/web/shots.js).
+WEB_SHOTS ?= index.html statements.html stmt-TeoL.html stmt-Fig2.html ledger.html ledger.html\#g-TeoL \
+             figures.html equations.html live-fig2.html live-attitude.html
+.PHONY: web-shots
+web-shots: web
+	@node tools/web/shots.js $(WEB) $(WEB)/shots $(WEB_SHOTS)
 
 # The mutation check: each one-line mutant of tests/build/mutants is applied to a scratch copy of the
 # tree, which is rebuilt and tested; every mutant must be killed (tools/mutants.sh). CI runs

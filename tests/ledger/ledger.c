@@ -832,6 +832,26 @@ static int write_tex(const char *dir)
     return sus_sys_atomic_file_commit(&af, err, sizeof err);
 }
 
+/* claims_tex.tsv: each line's quantity and test in the LaTeX the companion prints (text, math in
+ * $...$), one line each, for the web edition, which typesets them with KaTeX. */
+static int write_tex_tsv(const char *dir)
+{
+    char path[4200], err[256];
+    sus_sys_atomic_file af;
+    snprintf(path, sizeof path, "%s/claims_tex.tsv", dir);
+    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0)
+        return -1;
+    fputs("id\tquantity\ttest\n", af.fp);
+    for (int i = 0; i < nrows; i++) {
+        fprintf(af.fp, "%s\t", rows[i].id);
+        tex_ascii(af.fp, rows[i].quantity);
+        fputc('\t', af.fp);
+        tex_test(af.fp, &rows[i]);
+        fputc('\n', af.fp);
+    }
+    return sus_sys_atomic_file_commit(&af, err, sizeof err);
+}
+
 /* Where a line was recorded: "tests/FILE.c:LINE". */
 typedef struct {
     const char *file;
@@ -955,7 +975,7 @@ int ledger_finish(const char *tsv_path)
         *slash = '\0';
     else
         strcpy(dir, ".");
-    if (write_tex(dir) != 0) {
+    if (write_tex(dir) != 0 || write_tex_tsv(dir) != 0) {
         fprintf(stderr, "ledger: writing the LaTeX files next to %s failed\n", tsv_path);
         return -1;
     }

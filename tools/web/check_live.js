@@ -4,7 +4,8 @@
 // bit equality), the midpoint rule by fixed-point sweeps against suslov --sweeps, the convergence
 // page's fitted order against the ledger's; bad input gets the CLI's message (the CLI's own check
 // for the inertia); a re-run of Figure 2 to t = 200 is timed
-// (a PASS/MISS line against 200 ms, never a failure).
+// (a PASS/MISS line against 200 ms, never a failure); every axis of the panels has ticks enough to
+// read a value, and the attitude page names the method it shows.
 'use strict';
 const {execFileSync, spawnSync} = require('child_process');
 const path = require('path');
@@ -23,8 +24,7 @@ const W_COLS = 7;
 // The CLI's rows for the options `how` (--method M, and --sweeps N) and the rest.
 function cli(suslov, how, eps, steps, body, w0, every) {
     const out = execFileSync(
-        suslov,
-        how.concat([
+        suslov, how.concat([
             '--eps', eps, '--steps', String(steps), '--inertia', body, '--omega0', w0, '--every',
             String(every || 1), '--quiet'
         ]),
@@ -48,8 +48,10 @@ function ulps(a, b) {
 }
 
 async function submit(page, fields) {
-    await page.waitForFunction(() => document.querySelector('form.live').dataset.runs, null, {polling: 10});
-    const before = await page.evaluate(() => Number(document.querySelector('form.live').dataset.runs));
+    await page.waitForFunction(
+        () => document.querySelector('form.live').dataset.runs, null, {polling: 10});
+    const before =
+        await page.evaluate(() => Number(document.querySelector('form.live').dataset.runs));
     await page.evaluate((f) => {
         const form = document.querySelector('form.live');
         for (const [k, v] of Object.entries(f)) {
@@ -90,19 +92,21 @@ function compareRun(check, label, want, got) {
     check(
         got.length === want.length * 16 && bad === 0,
         `${label}: all 16 columns of ${want.length} rows equal the CLI's CSV bit for bit`,
-        `${bad} of ${want.length * 16} values differ, by at most ${umax} ulp; ${got.length / 16} rows`);
+        `${bad} of ${want.length * 16} values differ, by at most ${umax} ulp; ${
+            got.length / 16} rows`);
 }
 
 async function comparePoints(page, suslov, check) {
     for (const [a, b, eps, T, body, w0] of POINTS) {
-        const r =
-            await submit(page, {a, b, eps, T, reading: 'custom', inertia: body, omega0: w0, sweeps: '0'});
-        if (!check(r.error === '', `live Figure 2 runs ${a}, ${b} at eps ${eps}`, r.error)) continue;
+        const r = await submit(
+            page, {a, b, eps, T, reading: 'custom', inertia: body, omega0: w0, sweeps: '0'});
+        if (!check(r.error === '', `live Figure 2 runs ${a}, ${b} at eps ${eps}`, r.error))
+            continue;
         const steps = Math.round(Number(T) / Number(eps));
         [a, b].forEach((m, j) => {
             compareRun(
-                check, `live ${m} eps ${eps} body ${body}`, cli(suslov, ['--method', m], eps, steps, body, w0),
-                r.last.results[j].rows);
+                check, `live ${m} eps ${eps} body ${body}`,
+                cli(suslov, ['--method', m], eps, steps, body, w0), r.last.results[j].rows);
         });
     }
 }
@@ -116,14 +120,59 @@ const SWEEP_POINTS = [
 ];
 async function compareSweeps(page, suslov, check) {
     for (const [n, eps, T, body, w0] of SWEEP_POINTS) {
-        const r = await submit(
-            page, {a: 'midpoint', b: 'variational', eps, T, reading: 'custom', inertia: body, omega0: w0, sweeps: n});
-        if (!check(r.error === '', `live Figure 2 runs the midpoint rule by ${n} sweeps at eps ${eps}`, r.error))
+        const r = await submit(page, {
+            a: 'midpoint',
+            b: 'variational',
+            eps,
+            T,
+            reading: 'custom',
+            inertia: body,
+            omega0: w0,
+            sweeps: n
+        });
+        if (!check(
+                r.error === '', `live Figure 2 runs the midpoint rule by ${n} sweeps at eps ${eps}`,
+                r.error))
             continue;
         const steps = Math.round(Number(T) / Number(eps));
         compareRun(
             check, `live midpoint, ${n} sweeps, eps ${eps} body ${body}`,
-            cli(suslov, ['--method', 'midpoint', '--sweeps', n], eps, steps, body, w0), r.last.results[0].rows);
+            cli(suslov, ['--method', 'midpoint', '--sweeps', n], eps, steps, body, w0),
+            r.last.results[0].rows);
+    }
+}
+
+// The panels of a live page: each axis's tick labels (the title and the legend left out).
+function axes() {
+    return Array.from(document.querySelectorAll('#panels svg.plot')).map((svg) => {
+        const texts = Array.from(svg.querySelectorAll('text:not(.axis):not(.legend)'));
+        const at = (a) =>
+            texts.filter((t) => t.getAttribute('text-anchor') === a).map((t) => t.textContent);
+        return {panel: svg.getAttribute('aria-label'), x: at('middle'), y: at('end')};
+    });
+}
+
+// Enough ticks to read a value: at least four on every axis, no two labels alike, on the paper's
+// Figure 2 and on a short run whose energy moves by little (the labels then name an offset).
+async function checkAxes(page, check) {
+    for (const [eps, T] of [['1', '200'], ['0.02', '2']]) {
+        const r = await submit(page, {
+            eps,
+            T,
+            a: 'midpoint',
+            b: 'variational',
+            reading: 'row',
+            sweeps: '0',
+            inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1',
+            omega0: '0.4,0.5'
+        });
+        const panels = await page.evaluate(axes);
+        const bad = panels.filter(
+            (p) => [p.x, p.y].some((l) => l.length < 4 || new Set(l).size !== l.length));
+        check(
+            r.error === '' && panels.length > 0 && bad.length === 0,
+            `live Figure 2, eps ${eps}, T ${T}: every axis has at least four distinct tick labels`,
+            r.error || JSON.stringify(bad[0] || ''));
     }
 }
 
@@ -137,11 +186,19 @@ const RECON_POINTS = [
 ];
 async function compareRecons(ctx, webdir, suslov, check) {
     const page = await ctx.newPage();
-    await page.goto(pathToFileURL(path.join(webdir, 'live-attitude.html')).href, {waitUntil: 'load'});
+    await page.goto(
+        pathToFileURL(path.join(webdir, 'live-attitude.html')).href, {waitUntil: 'load'});
     for (const [m, recon, eps, T, body, w0] of RECON_POINTS) {
-        const r = await submit(page, {m, recon, eps, T, reading: 'custom', inertia: body, omega0: w0});
-        if (!check(r.error === '', `live attitude runs ${m} with ${recon} at eps ${eps}`, r.error)) continue;
-        const steps = Math.round(Number(T) / Number(eps)), every = Math.max(1, Math.ceil(steps / 600));
+        const r =
+            await submit(page, {m, recon, eps, T, reading: 'custom', inertia: body, omega0: w0});
+        if (!check(r.error === '', `live attitude runs ${m} with ${recon} at eps ${eps}`, r.error))
+            continue;
+        const label = await page.evaluate(() => document.getElementById('att-method').textContent);
+        check(
+            label.startsWith(m + ' (' + recon + ')'),
+            `live attitude: the left view is labelled ${m} (${recon})`, label);
+        const steps = Math.round(Number(T) / Number(eps)),
+              every = Math.max(1, Math.ceil(steps / 600));
         compareRun(
             check, `live ${m} + ${recon} eps ${eps} body ${body}`,
             cli(suslov, ['--method', m, '--reconstruct', recon], eps, steps, body, w0, every),
@@ -156,32 +213,51 @@ async function compareRecons(ctx, webdir, suslov, check) {
 // fit of the errors computed from the CLI's CSV (method and exact runs) for the same eps.
 async function compareFit(ctx, webdir, suslov, claims, check) {
     const page = await ctx.newPage();
-    await page.goto(pathToFileURL(path.join(webdir, 'live-convergence.html')).href, {waitUntil: 'load'});
+    await page.goto(
+        pathToFileURL(path.join(webdir, 'live-convergence.html')).href, {waitUntil: 'load'});
     for (const m of ['euler', 'midpoint', 'rk4', 'variational']) {
-        const r = await submit(page, {m, epsmax: '0.25', halvings: '8', T: '10', reading: 'row',
-                                      inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', omega0: '0.4,0.5'});
-        const slope = Number(await page.evaluate(() => document.getElementById('order').dataset.slope));
+        const r = await submit(page, {
+            m,
+            epsmax: '0.25',
+            halvings: '8',
+            T: '10',
+            reading: 'row',
+            inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1',
+            omega0: '0.4,0.5'
+        });
+        const slope =
+            Number(await page.evaluate(() => document.getElementById('order').dataset.slope));
         const ledger = claims.get(`global-order-${m}`);
-        if (!check(r.error === '' && ledger !== undefined, `live convergence runs ${m}`, r.error || 'no ledger line'))
+        if (!check(
+                r.error === '' && ledger !== undefined, `live convergence runs ${m}`,
+                r.error || 'no ledger line'))
             continue;
         check(
             Number(slope.toPrecision(6)) === Number(ledger),
-            `live convergence, ${m}: fitted order ${slope} is the ledger's global-order-${m} (${ledger})`, '');
+            `live convergence, ${m}: fitted order ${slope} is the ledger's global-order-${m} (${
+                ledger})`,
+            '');
         const eps = [], err = [];
         let size = 0;
         for (let j = 0; j <= 8; j++) {
             const N = Math.round(10 / (0.25 / 2 ** j)), h = String(10 / N);
-            const a = cli(suslov, ['--method', m], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5', N).pop();
-            const b = cli(suslov, ['--method', 'exact'], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5', N).pop();
+            const a =
+                cli(suslov, ['--method', m], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1', '0.4,0.5', N)
+                    .pop();
+            const b = cli(suslov, ['--method', 'exact'], h, N, '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1',
+                          '0.4,0.5', N)
+                          .pop();
             eps.push(10 / N);
             err.push(Math.hypot(a[2] - b[2], a[3] - b[3]));
             size = Math.max(size, Math.hypot(b[2], b[3]));
         }
         const fit = await page.evaluate(
-            (j) => Live.run([j]).then((res) => res[0].fit), {kind: 'fit', eps, err, epsMax: Infinity, size});
+            (j) => Live.run([j]).then((res) => res[0].fit),
+            {kind: 'fit', eps, err, epsMax: Infinity, size});
         check(
             Object.is(fit[0], slope),
-            `live convergence, ${m}: the same fit of the CLI's errors gives the page's order bit for bit`,
+            `live convergence, ${
+                m}: the same fit of the CLI's errors gives the page's order bit for bit`,
             `CLI data ${fit[0]}, page ${slope}`);
     }
     await page.close();
@@ -195,16 +271,23 @@ async function badInput(page, suslov, check) {
         [{eps: 'abc'}, ['--method', 'midpoint', '--eps', 'abc', '--steps', '10']],
         [
             {eps: '1', reading: 'custom', inertia: '1,2,0,2,1,0,0.2,0.1,1'},
-            ['--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia', '1,2,0,2,1,0,0.2,0.1,1']
+            [
+                '--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia',
+                '1,2,0,2,1,0,0.2,0.1,1'
+            ]
         ],
-        ...['0,0,0,0,0,0,0.2,0.1,1', '1,0.1,0.2,0.10000000000001,1,0.2,0.2,0.1,1', '1e200,0,0,0,1e200,0,0,0,1']
-            .map((I) => [{eps: '1', reading: 'custom', inertia: I},
-                         ['--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia', I]]),
+        ...['0,0,0,0,0,0,0.2,0.1,1', '1,0.1,0.2,0.10000000000001,1,0.2,0.2,0.1,1',
+            '1e200,0,0,0,1e200,0,0,0,1']
+            .map(
+                (I) =>
+                    [{eps: '1', reading: 'custom', inertia: I},
+                     ['--method', 'midpoint', '--eps', '1', '--steps', '10', '--inertia', I]]),
         [{eps: '1e-9', inertia: '1,0.1,0.2,0.1,1,0.2,0.2,0.1,1'}, null],
     ];
     for (const [fields, argv] of cases) {
         const r = await submit(
-            page, Object.assign({T: '200', a: 'midpoint', b: 'variational', reading: 'row'}, fields));
+            page,
+            Object.assign({T: '200', a: 'midpoint', b: 'variational', reading: 'row'}, fields));
         if (!argv) {
             check(
                 /rows to keep/.test(r.error),
@@ -223,6 +306,7 @@ async function run(ctx, webdir, suslov, claims, check) {
     const page = await ctx.newPage();
     await page.goto(pathToFileURL(path.join(webdir, 'live-fig2.html')).href, {waitUntil: 'load'});
     await comparePoints(page, suslov, check);
+    await checkAxes(page, check);
     await compareSweeps(page, suslov, check);
     await badInput(page, suslov, check);
     // A re-run of the paper's Figure 2 to t = 200, from Run to the panels drawn, as the page
@@ -240,9 +324,9 @@ async function run(ctx, webdir, suslov, claims, check) {
             sweeps: '0'
         });
         const ms = await page.evaluate(
-            () => Number(
-                (document.querySelector('form.live .status').textContent.match(/done in (\d+) ms/) ||
-                 [])[1]));
+            () => Number((
+                document.querySelector('form.live .status').textContent.match(/done in (\d+) ms/) ||
+                [])[1]));
         if (r.error || !(ms >= 0)) break;
         times.push(ms);
     }
@@ -252,7 +336,8 @@ async function run(ctx, webdir, suslov, claims, check) {
         times[0]}, max ${times[times.length - 1]})`);
     // a speed target, not a test (timings on a shared machine are noisy): a PASS/MISS line
     const ok = times.length === 5 && med < 200;
-    console.log(`check-web: ${ok ? 'PASS' : 'MISS'} Figure 2 re-run to t = 200 under 200 ms (median of 5)`);
+    console.log(
+        `check-web: ${ok ? 'PASS' : 'MISS'} Figure 2 re-run to t = 200 under 200 ms (median of 5)`);
     await page.close();
     await compareFit(ctx, webdir, suslov, claims, check);
     await compareRecons(ctx, webdir, suslov, check);

@@ -24,11 +24,14 @@ class Numberer:
         self.thm = {}   # environment -> (counter, printed name)
         for m in re.finditer(r"\\newtheorem\{(\w+)\}(?:\[(\w+)\])?\{([^}]*)\}", text):
             self.thm[m.group(1)] = (m.group(2) or m.group(1), m.group(3))
-        self.body = text[text.find("\\begin{document}"):]
+        start = max(text.find("\\begin{document}"), 0)
+        self.body = text[start:]
+        self.offset_line = text.count("\n", 0, start)
         self.eq = self.sec = self.fig = 0
         self.counters = {}
         self.stack = []
         self.labels = []
+        self.blocks = []    # (kind, number, LaTeX between \\begin and \\end, its first line)
         self.section_label = None
 
     def equation_number(self):
@@ -65,11 +68,13 @@ class Numberer:
                     self.section_label = None
             elif be == "begin":
                 self.begin(env)
+                self.stack[-1]["at"] = m.end()
             elif be == "end":
                 if self.stack:
                     e = self.stack.pop()
                     if e.get("rows"):
                         self.close_row(e)
+                    self.keep_block(e, m.start())
             elif newline:
                 if rows is not None:
                     self.close_row(rows)
@@ -84,6 +89,12 @@ class Numberer:
             elif label is not None:
                 self.label(label.strip(), rows)
         return self.labels
+
+    def keep_block(self, e, end):
+        """A theorem-like environment or a figure: its text, for quoting."""
+        if e["kind"] and e["kind"] != "equation" and e["number"] is not None:
+            line = self.offset_line + self.body.count("\n", 0, e["at"]) + 1
+            self.blocks.append((e["kind"].lower(), e["number"], self.body[e["at"]:end], line))
 
     def begin(self, env):
         base, starred = env.rstrip("*"), env.endswith("*")

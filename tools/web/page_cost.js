@@ -13,7 +13,8 @@ const {fileURLToPath, pathToFileURL} = require('url');
 const {chromium} = require('playwright-core');
 
 const PAGES = ['live-fig2.html', 'live-convergence.html', 'live-work.html', 'live-attitude.html'];
-const FLAGS = ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'];
+const FLAGS =
+    ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'];
 
 async function visit(ctx, file) {
     const tab = await ctx.newPage();
@@ -24,10 +25,12 @@ async function visit(ctx, file) {
     const t0 = Date.now();
     await tab.goto(pathToFileURL(file).href, {waitUntil: 'load'});
     const load = Date.now() - t0;
-    await tab.waitForFunction(() => document.querySelector('form.live').dataset.ready, null, {polling: 5});
+    await tab.waitForFunction(
+        () => document.querySelector('form.live').dataset.ready, null, {polling: 5});
     const ready = Date.now() - t0;
-    await tab.waitForFunction(() => document.querySelector('form.live').dataset.runs, null,
-                              {polling: 5, timeout: 120000});
+    await tab.waitForFunction(
+        () => document.querySelector('form.live').dataset.runs, null,
+        {polling: 5, timeout: 120000});
     const run = Date.now() - t0;
     await tab.close();
     let bytes = 0;
@@ -46,7 +49,10 @@ async function main() {
     for (let r = 0; r < rounds; r++) {
         const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'page-cost-'));
         const ctx = await chromium.launchPersistentContext(profile, {
-            executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true, args: FLAGS});
+            executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+            headless: true,
+            args: FLAGS
+        });
         for (const p of PAGES) res[p].push(await visit(ctx, path.resolve(webdir, p)));
         await ctx.close();
         fs.rmSync(profile, {recursive: true, force: true});
@@ -54,8 +60,10 @@ async function main() {
     console.log('page\tbytes\tload ms\tmodule ready ms\tfirst run drawn ms (median (min..max))');
     for (const p of PAGES) {
         const v = res[p];
-        console.log([p, v[0].bytes, stats(v.map((x) => x.load)), stats(v.map((x) => x.ready)),
-                     stats(v.map((x) => x.run))].join('\t'));
+        console.log([
+            p, v[0].bytes, stats(v.map((x) => x.load)), stats(v.map((x) => x.ready)),
+            stats(v.map((x) => x.run))
+        ].join('\t'));
     }
 }
 main().catch((e) => {

@@ -7,16 +7,18 @@ import os
 import re
 
 # the kinds of labels that are statements (a page each), in the paper's order
-STATEMENT_KINDS = ("definition", "proposition", "theorem", "corollary", "remark", "algorithm", "figure")
+STATEMENT_KINDS = ("definition", "proposition", "theorem", "corollary", "remark", "algorithm",
+                   "figure")
 # how the ledger, the findings and the errata abbreviate a statement's kind
 KIND_WORDS = {"proposition": "proposition", "propositions": "proposition", "prop": "proposition",
               "theorem": "theorem", "theorems": "theorem", "theo": "theorem",
-              "corollary": "corollary", "cor": "corollary", "remark": "remark", "definition": "definition",
-              "def": "definition", "algorithm": "algorithm", "figure": "figure", "fig": "figure"}
+              "corollary": "corollary", "cor": "corollary", "remark": "remark",
+              "definition": "definition", "def": "definition", "algorithm": "algorithm",
+              "figure": "figure", "fig": "figure"}
 NAMED_RE = re.compile(r"\b(%s)\.?\s*(\d+(?:\.\d+)?)(?:\s*[-\u2013]\s*(\d+(?:\.\d+)?))?"
                       % "|".join(KIND_WORDS), re.I)
-VERDICT_RANK = ("not reproduced", "erratum", "reproduced", "by definition", "by construction", "extension",
-                "not tested", "no ledger line")
+VERDICT_RANK = ("not reproduced", "erratum", "reproduced", "by definition", "by construction",
+                "extension", "not tested", "no ledger line")
 
 
 def read_tsv(path):
@@ -70,7 +72,8 @@ class Statements:
         self.of_claim = {c["id"]: self.mentioned(c["paper_ref"]) for c in claims}
         self.of_finding = {}
         for fd in self.findings:
-            # the title and the ledger lines decide; a statement the summary only cites is not its subject
+            # the title and the ledger lines decide; a statement the summary only cites is not
+            # its subject
             labs = self.mentioned(fd["title"])
             for cid in self.finding_claims(fd):
                 labs += self.of_claim.get(cid, [])
@@ -92,7 +95,8 @@ class Statements:
         return list(dict.fromkeys(labs))
 
     def finding_claims(self, fd):
-        return [i for i in re.split(r"[\s,]+", fd["ledger_ids"]) if i in self.claim_by_id]  # space-separated
+        # space-separated ids
+        return [i for i in re.split(r"[\s,]+", fd["ledger_ids"]) if i in self.claim_by_id]
 
     def name(self, lab):
         kind, number = self.labels[lab]
@@ -125,4 +129,5 @@ class Statements:
         out = {}
         for c in self.claims:
             out[c["verdict"]] = out.get(c["verdict"], 0) + 1
-        return sorted(out.items(), key=lambda kv: VERDICT_RANK.index(kv[0]) if kv[0] in VERDICT_RANK else 9)
+        return sorted(out.items(),
+                      key=lambda kv: VERDICT_RANK.index(kv[0]) if kv[0] in VERDICT_RANK else 9)

@@ -9,7 +9,8 @@ bad=$(grep -rlE "$libs" --include='*.h' src | xargs -r -n1 basename | sort -u)
 while :; do
     pat=$(printf '%s\n' $bad | sed 's/\./\\./; s/^/^#include "/; s/$/"/' | paste -sd'|' -)
     more=$( { printf '%s\n' $bad
-              [ -z "$pat" ] || grep -rlE "$pat" --include='*.h' src | xargs -r -n1 basename; } | sort -u)
+              [ -z "$pat" ] ||
+                  grep -rlE "$pat" --include='*.h' src | xargs -r -n1 basename; } | sort -u)
     [ "$more" = "$(printf '%s\n' $bad | sort -u)" ] && break
     bad=$more
 done

@@ -1,61 +1,77 @@
-// The ledger as a tool: free-text search (id, paper number such as "Proposition 5.1", words),
-// filters by verdict, statement, method and test direction, and sortable columns (numbers
-// numerically). The state is kept in the URL's query (?q=...&verdict=...) so that a view can be linked.
+// The ledger as a tool: free-text search (id, paper number such as "Proposition 5.1", words) and
+// filters by verdict, statement, method and test direction. The lines are grouped by statement,
+// each group folded (the lines beyond the paper folded again by the first word of their ids): a
+// search or a filter opens the groups that hold a match and hides the others; a link to one line
+// (#claim-ID) opens its groups. The state is kept in the URL's query
+// (?q=...&verdict=...) so that a view can be linked.
 'use strict';
 (function() {
-const table = document.getElementById('ledger'), body = table.tBodies[0];
-const rows = Array.from(body.rows), q = document.getElementById('ledger-q');
+const groups = Array.from(document.querySelectorAll('#ledger details.group'));
+const subs = Array.from(document.querySelectorAll('#ledger details.sub'));
+const cards = Array.from(document.querySelectorAll('#ledger article.claim'));
+const q = document.getElementById('ledger-q');
 const selects = Array.from(document.querySelectorAll('select[data-filter]'));
 const count = document.getElementById('ledger-count');
+
+function matches(r, words) {
+    if (!words.every((w) => r.dataset.search.includes(w))) return false;
+    for (const s of selects) {
+        const want = s.value, have = r.dataset[s.dataset.filter] || '';
+        if (want &&
+            !(s.dataset.filter === 'statement' ? have.split(' ').includes(want) : have === want))
+            return false;
+    }
+    return true;
+}
+
 function apply() {
     const words = q.value.toLowerCase().split(/\s+/).filter(Boolean);
+    const active = words.length > 0 || selects.some((s) => s.value);
     let shown = 0;
-    for (const r of rows) {
-        let ok = words.every((w) => r.dataset.search.includes(w));
-        for (const s of selects) {
-            const want = s.value, have = r.dataset[s.dataset.filter] || '';
-            if (want &&
-                !(s.dataset.filter === 'statement' ? have.split(' ').includes(want) : have === want))
-                ok = false;
+    for (const g of groups.concat(subs)) {
+        let here = 0;
+        for (const r of g.querySelectorAll('article.claim')) {
+            r.hidden = !matches(r, words);
+            here += !r.hidden;
         }
-        r.hidden = !ok;
-        shown += ok;
+        if (g.classList.contains('group')) shown += here;
+        g.hidden = here === 0;
+        if (active && here) g.open = true;
+        const n = g.querySelector('.g-count');
+        n.dataset.all = n.dataset.all || n.textContent;
+        n.textContent = active ? `${here} of ${n.dataset.all}` : n.dataset.all;
     }
-    count.textContent = `${shown} of ${rows.length} lines`;
+    count.textContent = `${shown} of ${cards.length} lines`;
     const p = new URLSearchParams();
     if (q.value) p.set('q', q.value);
     for (const s of selects)
         if (s.value) p.set(s.dataset.filter, s.value);
     history.replaceState(null, '', (p.toString() ? '?' + p : location.pathname) + location.hash);
 }
+
+// A link to a line or a group: open the group, then bring the line into view.
+function follow() {
+    const el = location.hash && document.getElementById(decodeURIComponent(location.hash.slice(1)));
+    if (!el) return;
+    for (let d = el.closest('details'); d; d = d.parentElement.closest('details')) {
+        d.hidden = false;
+        d.open = true;
+    }
+    if (el.hidden) {  // filtered out: show it anyway
+        el.hidden = false;
+    }
+    el.scrollIntoView();
+}
+
 const params = new URLSearchParams(location.search);
 q.value = params.get('q') || '';
 for (const s of selects) s.value = params.get(s.dataset.filter) || '';
 q.oninput = apply;
 for (const s of selects) s.onchange = apply;
-
-const num = (t) => {
-    const v = parseFloat(t);
-    return Number.isNaN(v) ? null : v;
-};
-Array.from(table.tHead.rows[0].cells).forEach((th, k) => {
-    th.tabIndex = 0;
-    th.title = 'sort';
-    const sort = () => {
-        const dir = th.dataset.dir === 'asc' ? -1 : 1;
-        for (const h of table.tHead.rows[0].cells) delete h.dataset.dir;
-        th.dataset.dir = dir === 1 ? 'asc' : 'desc';
-        const key = (r) => r.cells[k].textContent.trim();
-        rows.sort((a, b) => {
-            const x = num(key(a)), y = num(key(b));
-            return dir * (x !== null && y !== null ? x - y : key(a).localeCompare(key(b)));
-        });
-        for (const r of rows) body.appendChild(r);
-    };
-    th.onclick = sort;
-    th.onkeydown = (e) => {
-        if (e.key === 'Enter') sort();
-    };
-});
+const all = groups.concat(subs);
+document.getElementById('ledger-open').onclick = () => all.forEach((g) => g.open = !g.hidden);
+document.getElementById('ledger-close').onclick = () => all.forEach((g) => g.open = false);
+window.addEventListener('hashchange', follow);
 apply();
+follow();
 })();

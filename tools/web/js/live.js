@@ -17,10 +17,15 @@ function workerMain() {
     };
     // The C fit of orderfit.c over the points (eps, err): slope, intercept, used, eps range, floor.
     function fit(j) {
-        const FIT_MAX = 64, buf = new Float64Array(e.memory.buffer, e.wasm_fit_input(), 2 * FIT_MAX);
+        const FIT_MAX = 64,
+              buf = new Float64Array(e.memory.buffer, e.wasm_fit_input(), 2 * FIT_MAX);
         buf.set(j.eps);
         buf.set(j.err, FIT_MAX);
-        return {rc: 0, fit: Array.from(new Float64Array(e.memory.buffer, e.wasm_fit(j.eps.length, j.epsMax, j.size), 6))};
+        return {
+            rc: 0,
+            fit: Array.from(
+                new Float64Array(e.memory.buffer, e.wasm_fit(j.eps.length, j.epsMax, j.size), 6))
+        };
     }
     function job(j) {
         if (j.kind === 'fit') return fit(j);
@@ -43,7 +48,7 @@ function workerMain() {
             const bytes = Uint8Array.from(atob(ev.data.wasm), (c) => c.charCodeAt(0));
             const mod = new WebAssembly.Module(bytes);
             const imports = {};
-            // the library calls no system function; any import (stdio's) only reports "not supported"
+            // the library calls no system function; an import (stdio's) only says "not supported"
             for (const im of WebAssembly.Module.imports(mod))
                 (imports[im.module] = imports[im.module] || {})[im.name] = () => 52;
             e = new WebAssembly.Instance(mod, imports).exports;
@@ -131,7 +136,8 @@ function column(rows, c) {
 // An input field as a number, with the CLI's message when it is not one.
 function number(opt, s) {
     const v = Number(String(s).trim());
-    if (String(s).trim() === '' || Number.isNaN(v)) throw new Error(`${opt}: '${s}' is not a number`);
+    if (String(s).trim() === '' || Number.isNaN(v))
+        throw new Error(`${opt}: '${s}' is not a number`);
     if (!Number.isFinite(v)) throw new Error(`${opt}: '${s}' is not a finite number`);
     return v;
 }
@@ -158,7 +164,8 @@ function bindForm(form, handler) {
     const status = form.querySelector('.status'), err = form.querySelector('.error');
     methods().then((ms) => {
         for (const sel of form.querySelectorAll('select[data-methods]')) {
-            for (const m of ms) sel.add(new Option(m.name, m.index, false, m.name === sel.dataset.default));
+            for (const m of ms)
+                sel.add(new Option(m.name, m.index, false, m.name === sel.dataset.default));
             sel.title = 'registered methods of src/methods/registry.c';
         }
         // the reconstructions of src/core/reconstruct.c, after "the method's own" (-1)

@@ -1,17 +1,20 @@
 // The attitude, live: the body frame R_k of a method (left) and the exact R(t_k) (right), drawn
-// with WebGL as a wire box with its three axes, from one WebAssembly run; a slider picks k.
+// with WebGL as a wire box with its three axes, from one WebAssembly run; a slider picks k. The
+// labels above the views name the method and its reconstruction; the key below names the axes.
 'use strict';
 (function() {
 const form = document.querySelector('form.live'), canvas = document.getElementById('gl');
 const slider = document.getElementById('k');
 let runs = null;
-// a box of half-sides (0.9, 0.6, 0.3): its 12 edges, then the three axes (red e1, green e2, blue e3)
+// a box of half-sides (0.9, 0.6, 0.3): its 12 edges, then the axes (red e1, green e2, blue e3)
 const box = [], col = [];
 const c = [
-    [-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]
+    [-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1],
+    [-1, 1, 1]
 ].map(([x, y, z]) => [0.9 * x, 0.6 * y, 0.3 * z]);
 for (const [i, j] of [
-         [0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [0, 4], [1, 5], [2, 6], [3, 7]]) {
+         [0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [0, 4], [1, 5], [2, 6],
+         [3, 7]]) {
     box.push(c[i], c[j]);
     col.push([0.3, 0.3, 0.3], [0.3, 0.3, 0.3]);
 }
@@ -43,7 +46,8 @@ if (gl) {
     gl.attachShader(
         prog,
         sh(gl.FRAGMENT_SHADER,
-           'precision mediump float; varying vec3 v; void main() { gl_FragColor = vec4(v, 1.0); }'));
+           'precision mediump float; varying vec3 v;' +
+               'void main() { gl_FragColor = vec4(v, 1.0); }'));
     gl.linkProgram(prog);
     for (const [name, data] of [['p', box], ['c', col]]) {
         gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
@@ -66,7 +70,8 @@ const Rmat = (rows, k) => {
 function show() {
     if (!runs) return;
     const k = Number(slider.value), [a, e] = runs;
-    document.getElementById('kt').textContent = `= ${a.rows[k * Live.NCOL + 1].toPrecision(6)} (row ${k})`;
+    document.getElementById('kt').textContent =
+        `= ${a.rows[k * Live.NCOL + 1].toPrecision(6)} (row ${k})`;
     let d = 0;
     for (let i = 7; i < 16; i++) d += (a.rows[k * Live.NCOL + i] - e.rows[k * Live.NCOL + i]) ** 2;
     document.getElementById('dist').textContent =
@@ -91,8 +96,13 @@ async function draw(f) {
     if (!(steps >= 1))
         throw new Error(`--time ${T} with --eps ${eps} gives ${steps} steps; need at least 1`);
     const every = Math.max(1, Math.ceil(steps / 600));
-    const job = Object.assign({kind: 'run', method: m, recon: Number(f.recon.value), eps, steps, every}, Live.body(f));
+    const job = Object.assign(
+        {kind: 'run', method: m, recon: Number(f.recon.value), eps, steps, every}, Live.body(f));
     runs = await Live.runAll([job, Object.assign({}, job, {method: -1})], f);
+    const recon =
+        f.recon.value === '-1' ? 'its own reconstruction' : f.recon.selectedOptions[0].text;
+    document.getElementById('att-method').textContent =
+        `${f.m.selectedOptions[0].text} (${recon}), \u03b5 = ${eps}`;
     slider.max = String(runs[0].rows.length / Live.NCOL - 1);
     slider.value = slider.max;
     show();

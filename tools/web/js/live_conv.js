@@ -5,7 +5,8 @@
 'use strict';
 (function() {
 const form = document.querySelector('form.live');
-async function draw(f) {
+// The runs: the method and the exact solution at each step eps_max 2^-j, to T.
+function jobsOf(f) {
     const m = Number(f.m.value), emax = Live.number('eps max', f.epsmax.value),
           T = Live.number('--time', f.T.value);
     const nh = Live.number('halvings', f.halvings.value);
@@ -15,20 +16,16 @@ async function draw(f) {
     const body = Live.body(f), jobs = [];
     for (let j = 0; j <= nh; j++) {
         const steps = Math.max(1, Math.round(T / (emax / 2 ** j))), eps = T / steps;
-        jobs.push(Object.assign({kind: 'run', method: m, recon: -1, eps, steps, every: steps}, body));
+        jobs.push(
+            Object.assign({kind: 'run', method: m, recon: -1, eps, steps, every: steps}, body));
         jobs.push(Object.assign({kind: 'omega', eps, steps, every: steps}, body));
     }
-    const res = await Live.runAll(jobs, f);
-    const pts = [];
-    let size = 0;
-    for (let j = 0; j < res.length; j += 2) {
-        const a = res[j].rows, b = res[j + 1].rows, n = a.length - Live.NCOL;
-        pts.push({eps: jobs[j].eps, err: Math.hypot(a[n + 2] - b[n + 2], a[n + 3] - b[n + 3])});
-        size = Math.max(size, Math.hypot(b[n + 2], b[n + 3]));
-    }
-    const [fit] = await Live.runAll(
-        [{kind: 'fit', eps: pts.map((q) => q.eps), err: pts.map((q) => q.err), epsMax: Infinity, size}], f);
-    const [p, , used, lo, hi, floor] = fit.fit;
+    return jobs;
+}
+
+// The fitted order in words, and the plot of the errors with the fitted points marked.
+function show(f, pts, fit) {
+    const [p, , used, lo, hi, floor] = fit;
     // the points the C fit took: those inside its eps range and above its floor
     pts.forEach((q) => {
         q.fitted = used > 0 && q.eps >= lo && q.eps <= hi && q.err > floor;
@@ -40,6 +37,7 @@ async function draw(f) {
         `fitted order ${p.toPrecision(6)} over ${used} points (ε from ${lo.toPrecision(3)} to ${
             hi.toPrecision(3)})` :
         'fewer than three points above the round-off floor: no order fitted';
+    const xy = (qs) => ({x: qs.map((q) => q.eps), y: qs.map((q) => q.err)});
     Plot.plot(document.getElementById('panels'), {
         title: 'global error at T',
         xlabel: 'ε',
@@ -47,22 +45,39 @@ async function draw(f) {
         logx: true,
         logy: true,
         series: [
-            {
-                x: pts.map((q) => q.eps),
-                y: pts.map((q) => q.err),
-                color: '#2457a6',
-                line: true,
-                dots: 3,
-                label: f.m.selectedOptions[0].text
-            },
-            {x: use.map((q) => q.eps), y: use.map((q) => q.err), color: '#c0392b', dots: 2, label: 'fitted'}
+            Object.assign(
+                xy(pts),
+                {color: '#2457a6', line: true, dots: 3, label: f.m.selectedOptions[0].text}),
+            Object.assign(xy(use), {color: '#c0392b', dots: 2, label: 'fitted'})
         ]
     });
-    document.getElementById('points').innerHTML = '<tr><th>ε</th><th>error</th><th>fitted</th></tr>' +
+    document.getElementById('points').innerHTML =
+        '<tr><th>ε</th><th>error</th><th>fitted</th></tr>' +
         pts.map(
                (q) => `<tr><td class="num">${q.eps.toPrecision(6)}</td><td class="num">${
                    q.err.toExponential(3)}</td><td>${q.fitted ? 'yes' : 'round-off'}</td></tr>`)
             .join('');
+}
+
+async function draw(f) {
+    const jobs = jobsOf(f);
+    const res = await Live.runAll(jobs, f);
+    const pts = [];
+    let size = 0;
+    for (let j = 0; j < res.length; j += 2) {
+        const a = res[j].rows, b = res[j + 1].rows, n = a.length - Live.NCOL;
+        pts.push({eps: jobs[j].eps, err: Math.hypot(a[n + 2] - b[n + 2], a[n + 3] - b[n + 3])});
+        size = Math.max(size, Math.hypot(b[n + 2], b[n + 3]));
+    }
+    const fitJob = {
+        kind: 'fit',
+        eps: pts.map((q) => q.eps),
+        err: pts.map((q) => q.err),
+        epsMax: Infinity,
+        size
+    };
+    const [fit] = await Live.runAll([fitJob], f);
+    show(f, pts, fit.fit);
 }
 Live.bindForm(form, draw);
 })();

@@ -17,11 +17,19 @@ function jobs(f) {
     const steps = Math.round(T / eps);
     if (!(steps >= 1))
         throw new Error(`--time ${T} with --eps ${eps} gives ${steps} steps; need at least 1`);
-    const body = Live.body(f), a = Number(f.a.value), b = Number(f.b.value), n = Number(f.sweeps.value);
+    const body = Live.body(f), a = Number(f.a.value), b = Number(f.b.value),
+          n = Number(f.sweeps.value);
     // n > 0: method A is the midpoint rule solved by n fixed-point sweeps (suslov --sweeps n)
-    const A = n > 0 ?
-        {kind: 'sweeps', n, recon: -1, eps, steps, every: 1, label: `midpoint, ${n} sweep${n > 1 ? 's' : ''}`} :
-        {kind: 'run', method: a, recon: -1, eps, steps, every: 1, label: names[a]};
+    const A = n > 0 ? {
+        kind: 'sweeps',
+        n,
+        recon: -1,
+        eps,
+        steps,
+        every: 1,
+        label: `midpoint, ${n} sweep${n > 1 ? 's' : ''}`
+    } :
+                      {kind: 'run', method: a, recon: -1, eps, steps, every: 1, label: names[a]};
     const B = {kind: 'run', method: b, recon: -1, eps, steps, every: 1, label: names[b]};
     const ex = {kind: 'omega', eps: T / 4000, steps: 4000, every: 1, label: 'exact'};
     return [A, B, ex, {kind: 'limit'}].map((j) => Object.assign(j, body));
@@ -60,8 +68,8 @@ async function draw(f) {
         });
     });
     const last = (r) => r.rows.slice(r.rows.length - Live.NCOL);
-    const head =
-        '<tr>' + ['run', 'k', 't', 'ω₁', 'ω₂', 'λ', 'E', 'ms'].map((h) => `<th>${h}</th>`).join('') +
+    const head = '<tr>' +
+        ['run', 'k', 't', 'ω₁', 'ω₂', 'λ', 'E', 'ms'].map((h) => `<th>${h}</th>`).join('') +
         '</tr>';
     document.getElementById('final').innerHTML = head +
         runs.map(([r, , , , label]) => {

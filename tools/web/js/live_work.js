@@ -11,7 +11,8 @@ async function draw(f) {
     if (!(steps >= 1))
         throw new Error(`--time ${T} with --eps ${eps0} gives ${steps} steps; need at least 1`);
     const body = Live.body(f);
-    const run = Object.assign({kind: 'run', method: m, recon: -1, eps: eps0, steps, every: steps}, body);
+    const run =
+        Object.assign({kind: 'run', method: m, recon: -1, eps: eps0, steps, every: steps}, body);
     const ex = Object.assign({}, run, {kind: 'omega'});
     const res = await Live.runAll([run, run, run, run, run, run, ex], f);
     const ms = res.slice(1, 6).map((r) => r.ms).sort((a, b) => a - b);
@@ -20,7 +21,8 @@ async function draw(f) {
     document.getElementById('result').innerHTML =
         `${f.m.selectedOptions[0].text}, ε = ${eps0}, ${steps} steps: ` +
         `error |ω_N − ω(T)| = <b>${err.toExponential(3)}</b>; time <b>${ms[2].toFixed(2)} ms</b> ` +
-        `(min ${ms[0].toFixed(2)}, max ${ms[4].toFixed(2)}; ${(1e3 * ms[2] / steps).toFixed(3)} µs a step)`;
+        `(min ${ms[0].toFixed(2)}, max ${ms[4].toFixed(2)}; ${
+            (1e3 * ms[2] / steps).toFixed(3)} µs a step)`;
 }
 Live.bindForm(form, draw);
 })();

@@ -6,7 +6,8 @@
 const nav = document.querySelector('nav.top');
 const jump = nav.querySelector('select.jump');
 const targets = document.querySelectorAll('.code [id^="fn-"]').length ?
-    Array.from(document.querySelectorAll('.code [id^="fn-"]')).map((e) => [e.id, e.id.slice(3) + '()']) :
+    Array.from(document.querySelectorAll('.code [id^="fn-"]'))
+        .map((e) => [e.id, e.id.slice(3) + '()']) :
     Array.from(document.querySelectorAll('main h2[id], main h2, .eq[id] h2')).map((h, i) => {
         const el = h.closest('[id]') && h.closest('[id]') !== document.body ? h.closest('[id]') : h;
         if (!el.id) el.id = 'h-' + i;
@@ -27,7 +28,8 @@ function find(q) {
     const hits = [];
     for (const [text, href] of index) {
         const t = text.toLowerCase();
-        if (words.every((w) => t.includes(w))) hits.push([text, href, t.startsWith(words[0]) ? 0 : 1]);
+        if (words.every((w) => t.includes(w)))
+            hits.push([text, href, t.startsWith(words[0]) ? 0 : 1]);
         if (hits.length > 400) break;
     }
     return hits.sort((a, b) => a[2] - b[2] || a[0].length - b[0].length).slice(0, 30);
@@ -37,7 +39,8 @@ box.oninput = () => {
     out.hidden = hits.length === 0 && !box.value;
     out.innerHTML = hits.length ?
         hits.map(
-                ([t, h]) => `<a href="${h}">${t.replace(/[<&]/g, (c) => c === '<' ? '&lt;' : '&amp;')}</a>`)
+                ([t, h]) =>
+                    `<a href="${h}">${t.replace(/[<&]/g, (c) => c === '<' ? '&lt;' : '&amp;')}</a>`)
             .join('') :
         (box.value ? '<span>no match</span>' : '');
 };
