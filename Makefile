@@ -6,7 +6,7 @@
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make bench      work-precision and per-step cost against GSL and Boost: a fresh run in
-#                   data/bench-run/ (summary.md, bench.csv, ...), its figures in $(BUILD)/bench/
+#                   data/bench-run/ (summary.md, bench.csv, ...), its figures in $(BUILD)/bench-run/
 #   make bench-record  the same, into data/bench-recorded/ (the run the companion and the docs
 #                   quote, committed with its machine.txt), and the previews drawn from it
 #   make paper      the companion text, paper/companion.pdf
@@ -251,7 +251,7 @@ $(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
 
 # Speed and accuracy: the PASS/MISS lines of the speed targets (never a failing test). make bench
 # writes a fresh run, whole or not at all, into data/bench-run/ and its figures into
-# $(BUILD)/bench/; make bench-record writes the run the companion and the docs quote into
+# $(BUILD)/bench-run/; make bench-record writes the run the companion and the docs quote into
 # data/bench-recorded/ (committed: a deliberate step, the only one that writes there; BENCH_NOTE
 # says what else ran on the machine) and draws the committed previews from it. Both time the
 # Boost.Odeint peers too: bench.c again with SUSLOV_WITH_ODEINT, linked with
@@ -260,7 +260,7 @@ $(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
 BENCH_NOTE ?=
 bench: all $(BUILD)/bench_boost
 	@sh tools/timed.sh $(BUILD)/timings/bench.txt sh tools/bench.sh $(BUILD) "$(CFLAGS)" data/bench-run \
-	    $(BUILD)/bench
+	    $(BUILD)/bench-run
 bench-record: all $(BUILD)/bench_boost
 	@sh tools/bench.sh $(BUILD) "$(CFLAGS)" $(BENCH_REC) $(BUILD)/bench-recorded $(call sq,$(BENCH_NOTE))
 	@$(MAKE) --no-print-directory $(BENCH_FIGS)
