@@ -31,6 +31,28 @@ int sus_exp_bench_init(sus_exp_bench *b, void (*progress)(const char *what))
     return 0;
 }
 
+void sus_exp_bench_free(sus_exp_bench *b)
+{
+    for (int i = 0; i < b->nseries; i++)
+        free(b->S[i]);
+    free(b->S);
+    free(b->points);
+    sus_exp_bench_costs *c = &b->cost;
+    free(c->name);
+    free(c->ns_raw);
+    free(c->ns_full);
+    free(c->ns_direct);
+    free(c->ns_full_min);
+    free(c->newton);
+    for (int k = 0; k < 3; k++) {
+        free(b->env[k].sec);
+        free(b->env[k].err);
+    }
+    free(b->LR);
+    free(b->EQ);
+    *b = (sus_exp_bench){0};
+}
+
 double sus_exp_bench_now(void)
 {
     struct timespec ts;

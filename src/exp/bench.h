@@ -177,6 +177,9 @@ typedef struct {
 /* The problem set up in b (everything else empty). Returns 0, or -1 with a message on stderr. */
 int sus_exp_bench_init(sus_exp_bench *b, void (*progress)(const char *what));
 void sus_exp_bench_progress(const sus_exp_bench *b, const char *what);
+/* Frees what b holds (its series, tables and envelopes; the points' runs are released when they
+ * are timed) and leaves b empty. */
+void sus_exp_bench_free(sus_exp_bench *b);
 
 /* The bench's tables are sized from the counts (methods, series, points); running out of memory
  * ends the bench, as does a peer that cannot allocate (the message says which). */

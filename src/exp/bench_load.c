@@ -167,6 +167,7 @@ int sus_exp_bench_load(sus_exp_bench *b, const char *dir)
     fclose(fp);
     if (bad || b->nseries == 0 || b->cost.n == 0) {
         fprintf(stderr, "bench: %s, line %d: not a row of the bench's data\n", path, lineno);
+        sus_exp_bench_free(b);
         return -1;
     }
     sus_exp_bench_envelopes(b);

@@ -14,7 +14,7 @@ extern "C" {
 /* b (zeroed first) from DIR/bench.csv: its work rows as series (name, ours or peer, w alone or
  * reduced, parameter, steps, errors, seconds), its step rows as b->cost (names, w-step and whole
  * step, GSL's rk4, the closed form), and the peers' envelopes. Returns 0, or -1 with a message
- * on stderr (the file missing, or a row that is not the bench's). */
+ * on stderr (the file missing, or a row that is not the bench's) and b left empty. */
 int sus_exp_bench_load(sus_exp_bench *b, const char *dir);
 
 #ifdef __cplusplus

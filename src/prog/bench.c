@@ -186,7 +186,11 @@ static int check(const sus_exp_bench *b, const char *argv0)
 static int plot(const char *figdir, const char *datadir)
 {
     sus_exp_bench b;
-    return sus_exp_bench_load(&b, datadir) != 0 || sus_plot_bench_figures(&b, figdir) != 0;
+    if (sus_exp_bench_load(&b, datadir) != 0)
+        return 1;
+    const int failed = sus_plot_bench_figures(&b, figdir) != 0;
+    sus_exp_bench_free(&b);
+    return failed;
 }
 
 /* Measures, reports, writes DATADIR's files and draws FIGDIR's figures from them. */
@@ -211,14 +215,13 @@ static int bench(const char *argv0, const char *figdir, const char *datadir)
            t_phase[3] - t_phase[2], t_phase[4] - t_phase[3], t_phase[5] - t_phase[4]);
     fflush(stdout);
     /* data the companion would quote as checked: none rather than wrong */
-    if (differ || unreproduced) {
+    const int failed = differ || unreproduced;
+    if (failed)
         fprintf(stderr,
                 "bench: a CHECK FAILED (see its line in the output above); nothing written\n");
-        return 1;
-    }
-    if (sus_plot_bench_tables(&b, datadir) != 0)
-        return 1;
-    return plot(figdir, datadir);
+    const int unwritten = failed || sus_plot_bench_tables(&b, datadir) != 0;
+    sus_exp_bench_free(&b);
+    return unwritten || plot(figdir, datadir);
 }
 
 int main(int argc, char **argv)

@@ -124,6 +124,7 @@ static void check_round_trip(const sus_exp_bench *b)
                    c.cost.ns_raw[m] == b->cost.ns_raw[m] && c.cost.ns_full[m] == b->cost.ns_full[m];
         CHECK(same, "the same per-step costs, in the registry's order");
         CHECK(c.env[2].n == 1, "the envelopes again from what was read");
+        sus_exp_bench_free(&c);
     }
     /* a file that is not the bench's: refused, with a message */
     snprintf(path, sizeof path, "%s/bench.csv", dir);
@@ -148,5 +149,6 @@ int main(void)
     fill(&b);
     check_verdicts(&b);
     check_round_trip(&b);
+    sus_exp_bench_free(&b);
     return check_summary("test_bench");
 }
