@@ -17,6 +17,11 @@ check() { # check DESCRIPTION COMMAND...
 }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# dash runs no EXIT trap on a signal: remove the folder, then die of the same signal
+for sig in INT TERM HUP; do
+    # shellcheck disable=SC2064 # $sig now, the rest at the signal
+    trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
+done
 
 sh tools/readme_make.sh --print >"$tmp/want"
 sed -n '/^<!-- make targets -->$/,/^<!-- end make targets -->$/p' docs/reference/make-targets.md |
