@@ -1,7 +1,7 @@
 #!/bin/sh
 # The make targets as the Makefile's header comment states them, for docs/reference/make-targets.md:
 # its lines that start with "#   " (a target, a variable, or their continuation), without the "# ".
-# With --print, writes them to stdout in the code fence the document holds (tests/build/doc_blocks.sh
+# With --print, writes them to stdout in the code fence the document holds (tests/build/doc_facts.sh
 # compares); without, rewrites the document's block between "<!-- make targets -->" and
 # "<!-- end make targets -->".
 # Usage: tools/readme_make.sh [--print]
