@@ -32,7 +32,8 @@ check "docs/reference/make-targets.md quotes the Makefile's header (run tools/re
 # The ids of a README item: the item starting "- **TITLE" up to the next item or blank line.
 item_ids() {
     awk -v t="- **$1" 'index($0, t) == 1 { on = 1; print; next }
-        on && (/^- / || /^$/) { exit } on' README.md | grep -o 'F[0-9][0-9]*' | sort -u | tr '\n' ' '
+        on && (/^- / || /^$/) { exit } on' README.md |
+        grep -o 'F[0-9][0-9]*' | sort -u | tr '\n' ' '
 }
 verdict_ids() {
     awk -F'\t' -v v="$1" 'NR > 1 && $3 == v { print $1 }' paper/findings.tsv | sort -u | tr '\n' ' '
@@ -40,15 +41,16 @@ verdict_ids() {
 for pair in "Not reproduced:not reproduced" "Errata:erratum"; do
     title=${pair%%:*} verdict=${pair#*:}
     got=$(item_ids "$title") want=$(verdict_ids "$verdict")
-    check "README.md's \"$title\" item names the findings ${want:-(none)}with verdict $verdict in paper/findings.tsv (it names ${got:-none})" \
-        test -n "$want" -a "$got" = "$want"
+    d="README.md's \"$title\" item names the findings ${want:-(none)}with verdict $verdict in"
+    check "$d paper/findings.tsv (it names ${got:-none})" test -n "$want" -a "$got" = "$want"
 done
 
 n=$(wc -l <README.md)
 check "README.md is at most 150 lines ($n)" test "$n" -le 150
 head -40 README.md >"$tmp/first"
-check "README.md's first 40 lines say what was found, show a figure and give make figures and make check" \
-    sh -c "grep -q '^## What we found' '$tmp/first' && grep -Eq 'figures/[a-z0-9_]+\\.png' '$tmp/first' &&
+check "README.md's first 40 lines say what was found, show a figure, give the two commands" \
+    sh -c "grep -q '^## What we found' '$tmp/first' &&
+           grep -Eq 'figures/[a-z0-9_]+\\.png' '$tmp/first' &&
            grep -q '^make figures' '$tmp/first' && grep -q '^make check' '$tmp/first'"
 echo "doc_facts: $pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -8,7 +8,8 @@ set -u
 B=${1:-build}
 . "$(dirname "$0")/cli_testlib.sh"
 DOC=docs/howto/use-the-library.md
-sed -n '/^<!-- program -->$/,/^<!-- end program -->$/p' "$DOC" | sed '1,2d;$d' | sed '$d' >"$T/prog.c"
+sed -n '/^<!-- program -->$/,/^<!-- end program -->$/p' "$DOC" | sed '1,2d;$d' | sed '$d' \
+    >"$T/prog.c"
 check "$DOC holds a program between its markers ($(wc -l <"$T/prog.c") lines)" \
     grep -q 'int main(void)' "$T/prog.c"
 cp "$T/prog.c" "$T/prog.cpp"
@@ -27,10 +28,12 @@ for lang in c cpp; do
         continue
     fi
     # shellcheck disable=SC2086 # flags and libraries are meant to split
-    $cc $san $std -Wall -Wextra -pedantic -Werror -I"$T/include" "$T/prog.$lang" -o "$T/prog_$lang" \
-        $libs 2>"$T/cc"; rc=$?
-    check "the document's program compiles as $lang with $cc ($(head -c 300 "$T/cc"))" test "$rc" = 0
-    got=$("$T/prog_$lang" | awk '{ printf "%.6g %s %s %s\n", $1, $2, $3, $4 }'); rc=$?
+    $cc $san $std -Wall -Wextra -pedantic -Werror -I"$T/include" "$T/prog.$lang" \
+        -o "$T/prog_$lang" $libs 2>"$T/cc"; rc=$?
+    check "the document's program compiles as $lang with $cc ($(head -c 300 "$T/cc"))" \
+        test "$rc" = 0
+    "$T/prog_$lang" >"$T/out_$lang"; rc=$?
+    got=$(awk '{ printf "%.6g %s %s %s\n", $1, $2, $3, $4 }' "$T/out_$lang")
     check "the $lang program prints the rows suslov prints for the same run" \
         test "$rc" = 0 -a -n "$got" -a "$got" = "$want"
 done
