@@ -1,24 +1,32 @@
 # Reproducible companion to Jimenez & Scheurle, "On some aspects of the discretization of the
-# Suslov problem". `make check` runs the tests and the claims ledger; see README.md.
+# Suslov problem". `make check` runs the tests and the claims ledger; see README.md, and
+# docs/reference/make-targets.md, which quotes the lines below (tools/readme_make.sh).
 #
 #   make            build build/suslov, the figure programs and the test programs
 #   make test       unit, CLI and build tests (seconds); make ledger: the claims ledger
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
-#   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
+#   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv, and the animation
+#   make animation  the animation alone: figures/attitude.mp4, figures/attitude/, the filmstrip
 #   make bench      work-precision and per-step cost against GSL and Boost: a fresh run in
 #                   data/bench-run/ (summary.md, bench.csv, ...), its figures in $(BUILD)/bench-run/
 #   make bench-record  the same, into data/bench-recorded/ (the run the companion and the docs
 #                   quote, committed with its machine.txt), and the previews drawn from it
 #   make paper      the companion text, paper/companion.pdf and paper/methods.pdf (committed,
-#                   byte for byte reproducible; make check fails when their numbers are stale)
+#                   byte for byte reproducible; make check fails when their numbers are stale);
+#                   PAPER_BASE=URL/ makes its code links absolute
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
-#                   make check-web tests it in headless chromium; make web-deps installs its tools
+#                   make check-web tests it in headless chromium; make web-deps installs its tools;
+#                   make web-shots takes screenshots; PAPER_TEX=FILE is the paper's LaTeX source
 #   make deps       install missing Debian packages (make check installs only what it needs)
 #   make install    PREFIX=DIR (default /usr/local): suslov, its manual page, libsuslov.a, the
 #                   public headers (include/suslov/suslov.h) and suslov.pc for pkg-config;
 #                   make uninstall PREFIX=DIR removes them
+#   make fuzz       hostile argument vectors against suslov for T seconds (default 60), seed SEED
+#   make mutants    the hand-listed mutants of tests/build/mutants, each one must fail a test
+#                   (MUTANTS_STRIDE=k: every k-th); make mutants-ops: the generated campaign (hours)
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
+#   BUILD=DIR       the build directory (default build)
 #   V=1             print every command in full (default: one short line per step, "  CC  FILE")
 #   WERROR=1        treat warnings as errors (CI)
 #   SAN=1           build into build/san with -fsanitize=address,undefined,float-cast-overflow

@@ -21,7 +21,7 @@ S=$(mktemp -d)
 chmod 755 "$S" # the permission tests run the scratch build as the user nobody
 trap 'rm -rf "$S"' EXIT
 unset MAKEFLAGS MFLAGS MAKELEVEL SAN BUILD  # a fresh make of its own, whatever called it
-cp -R src tests tools paper Makefile README.md "$S"/
+cp -R src tests tools paper docs Makefile README.md "$S"/
 mkdir -p "$S/data" "$S/figures"
 cp data/animation.cfg "$S/data/" 2>/dev/null || true
 cp -R data/bench-recorded "$S/data/" 2>/dev/null || true # the recorded bench run (test_bench_record)

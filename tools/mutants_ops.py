@@ -237,7 +237,7 @@ class Scratch:
 
     def __init__(self, root):
         self.dir = tempfile.mkdtemp(prefix="mutops.")
-        for d in ("src", "tests", "tools", "paper"):
+        for d in ("src", "tests", "tools", "paper", "docs"):
             shutil.copytree(os.path.join(root, d), os.path.join(self.dir, d))
         shutil.copy(os.path.join(root, "Makefile"), self.dir)
         os.makedirs(os.path.join(self.dir, "data"), exist_ok=True)

@@ -4,8 +4,8 @@
 # versions). The same sources and toolchain give the same PDF bytes, so the block holds nothing
 # of the machine or the moment (no kernel, CPU or timing): those belong to a recorded run.
 # The commit of the sources is the last one on the first-parent line that changed an input of
-# the PDFs (SOURCES below); a commit that changes none of them (the PDFs themselves, the README,
-# the CI script) leaves it, and the PDFs' bytes, as they were. tools/paper.sh takes the PDFs'
+# the PDFs (SOURCES below); a commit that changes none of them (the PDFs themselves, the README
+# and docs/, the CI script) leaves it, and the PDFs' bytes, as they were. tools/paper.sh takes the PDFs'
 # dates from the same commit.
 # Usage: repro.sh OUT.tex        repro.sh --commit: print that commit and its time (%H %ct)
 set -eu

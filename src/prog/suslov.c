@@ -1,6 +1,6 @@
 /* suslov: integrate the Suslov problem with one of the paper's methods and print CSV rows
  * (k, t, w, lambda, E, R). Its options, --help and manual page come from one table
- * (suslov_cli.c); see README.md. */
+ * (suslov_cli.c); see docs/reference/cli.md. */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
 #include "cli_options.h"

@@ -1,5 +1,5 @@
 /* fuzz: throws random and hostile argument vectors at `suslov` and checks every promise of its
- * interface (README, `suslov` section) on each run:
+ * interface (docs/reference/cli.md) on each run:
  *   - the exit status is 0, 2 or 3 (or 128+15 when the fuzzer itself stopped a long run with
  *     SIGTERM); never a crash, a sanitizer report or another status;
  *   - on 2 and 3 stderr is exactly one line "suslov: error: ..."; on 0 stderr is empty or one

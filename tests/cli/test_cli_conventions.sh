@@ -2,7 +2,7 @@
 # The conventions a scripting user expects of suslov: --version, --, --method list, one number
 # grammar, repeated and inapplicable options, --header and its fields, the trailer of an
 # incomplete file, long options with =, TERM=dumb and NO_COLOR, and --help, the manual page and
-# README.md telling the same. Usage: test_cli_conventions.sh BUILD_DIR
+# docs/reference/cli.md telling the same. Usage: test_cli_conventions.sh BUILD_DIR
 set -u
 B=${1:-build}
 . "$(dirname "$0")/cli_testlib.sh"
@@ -192,8 +192,9 @@ if command -v script >/dev/null; then
     done
 fi
 
-# --help, the manual page and README.md tell the same: the manual page is written from the
-# option table --help prints, and README.md quotes --help verbatim between its markers
+# --help, the manual page and docs/reference/cli.md tell the same: the manual page is written from
+# the option table --help prints, and docs/reference/cli.md quotes --help verbatim between its
+# markers (tools/readme_help.sh rewrites its copy)
 "$S" --help >"$T/help"
 "$S" --man >"$T/man"
 missing=""
@@ -219,7 +220,9 @@ else
     skip "the manual page's layout: no groff"
 fi
 check "the built manual page $B/man/suslov.1 is the one suslov --man writes" cmp -s "$T/man" "$B/man/suslov.1"
-sed -n '/^<!-- suslov --help -->$/,/^<!-- end suslov --help -->$/p' README.md | sed '1,2d;$d' | sed '$d' >"$T/readme"
-check "README.md quotes suslov --help verbatim (its promises are --help's)" cmp -s "$T/help" "$T/readme"
+sed -n '/^<!-- suslov --help -->$/,/^<!-- end suslov --help -->$/p' docs/reference/cli.md |
+    sed '1,2d;$d' | sed '$d' >"$T/doc"
+check "docs/reference/cli.md quotes suslov --help verbatim (run tools/readme_help.sh after a change)" \
+    cmp -s "$T/help" "$T/doc"
 
 done_tests test_cli_conventions

@@ -164,7 +164,8 @@ check "exact with I31 = I32 = 1e-200 to t = 1e10 is refused (exit $rc: $(cat "$T
 "$S" --method midpoint --eps 1e6 --steps 3 --omega0 1e100,1e100 >/dev/null 2>"$T/err"; rc=$?
 check "a Newton iteration reaching NaN: exit 3, one line, no 'nan' in it ($(cat "$T/err"))" \
     sh -c "test $rc = 3 -a \$(wc -l <'$T/err') = 1 && ! grep -qiwE 'nan|inf(inity)?' '$T/err' && grep -q 'not a finite number' '$T/err'"
-# ... and every solver failure names the residual (README: "the step, t and the residual"): when
+# ... and every solver failure names the residual (docs/reference/cli.md and
+# docs/explanation/where-methods-fail.md: "the step, t and the residual"): when
 # it is not a finite number, says so, with the last finite one before it if there was one
 fails() { # fails METHOD ARGS...: one failing run, the line kept in $T/err
     m=$1; shift

@@ -7,8 +7,8 @@
  * reading "loses energy faster" at eps when its loss E_0 - E_N exceeds the variational one; a gain
  * is no loss. Each line gives the largest eps up to which, from eps = 0.25, no step size of the
  * grid has it lose faster (a run that fails to converge or blows up ends the range: there the
- * statement was not measured). The bound is the figure's eps = 1: the README states the
- * comparison at Figure 2's step, and the line fails if the statement does not reach it.
+ * statement was not measured). The bound is the figure's eps = 1: docs/tutorial/figure-2-again.md
+ * states the comparison at Figure 2's step, and the line fails if the statement does not reach it.
  *
  * The error ratio: |w_var(t) - w(t)| / |w_mid(t) - w(t)| at eps = 1 over t = 2..60, its
  * range, the ratio of the two maxima over [0, 60], and its value at t = 10, so that "converges

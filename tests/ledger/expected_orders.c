@@ -12,10 +12,10 @@
 
 static const expected_order TABLE[] = {
     /* The general-DSP proposition: explicit Euler is (1, 1), RK4 is (4, 4); the midpoint DSP is
-     * (2, 2) (the text once calls it "(2,1)", the proposition gives s = p). The README states,
-     * from the stability map, that the midpoint and variational step equations keep a root on
-     * their branch continued from eps = 0 for every start up to h = 1000 (no fold), and that
-     * the map meets a fold of gauss4's. */
+     * (2, 2) (the text once calls it "(2,1)", the proposition gives s = p).
+     * docs/explanation/where-methods-fail.md states, from the stability map, that the midpoint
+     * and variational step equations keep a root on their branch continued from eps = 0 for
+     * every start up to h = 1000 (no fold), and that the map meets a fold of gauss4's. */
     {"euler", 1, 1, SO3(1, 1, 1), "Prop. general DSP (p,p)", 1, 0, 0},
     {"midpoint", 2, 2, SO3(1, 2, 2), "Prop. general DSP (p,p)", 0, INFINITY, 0},
     {"rk4", 4, 4, SO3(1, 2, 2), "Prop. general DSP (p,p)", 1, 0, 0},

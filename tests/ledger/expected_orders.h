@@ -15,9 +15,9 @@ typedef struct {
     /* Linear stability: 1 when theory gives R(z) = sum_{n<=p} z^n/n! (an explicit Runge-Kutta
      * method with p = stages <= 4, or a Taylor series of degree p), so that the real stability
      * limit follows from p alone; the first step h at which a run's step equation loses its
-     * branch, as the README states it from the stability map (0: none stated; INFINITY: none up
-     * to the largest h tested); and 1 where the README states that the map meets a fold of the
-     * step equation's branch. */
+     * branch, as docs/explanation/where-methods-fail.md states it from the stability map (0: none
+     * stated; INFINITY: none up to the largest h tested); and 1 where that document states that
+     * the map meets a fold of the step equation's branch. */
     int stab_truncated_exp;
     double solvable_h;
     int fold_on_map;
