@@ -66,14 +66,19 @@ static void killing_claims(gsl_rng *r) {
         invariant = fmax(invariant, fabs(dot3(Rx, Ry) - dot3(x, y)));
     }
     /* entries below 2 (and 3 for R): a dozen products and sums, so round-off is below 1e-14 */
-    ledger_add("isom-bracket", "Isom", "max over 64 pairs of |[x^, y^] - (x cross y)^| (entries)", bracket,
+    ledger_add("isom-bracket", "\\eqref{Isom}",
+               "max over 64 pairs of $|[\\hat{x}, \\hat{y}] - \\widehat{x \\times y}|$ (entries)", bracket,
                0.0, 1e-14, LEDGER_REPRODUCED);
-    ledger_add("killing-trace", "Killing", "max over 64 pairs of |-tr(x^ y^)/2 - <x, y>|", trace, 0.0, 1e-14,
-               LEDGER_REPRODUCED);
-    ledger_add("killing-transpose", "Killing", "max over 64 pairs of |tr(x^T y^)/2 - <x, y>|", transpose, 0.0,
-               1e-14, LEDGER_REPRODUCED);
-    ledger_add("killing-ad-invariant", "Killing",
-               "max over 64 pairs and rotations R = cay(a) of |(R x, R y) - (x, y)|: invariant under Ad",
+    ledger_add("killing-trace", "\\eqref{Killing}",
+               "max over 64 pairs of $|-\\mathrm{tr}(\\hat{x} \\hat{y})/2 - \\langle x, y \\rangle|$",
+               trace, 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add("killing-transpose", "\\eqref{Killing}",
+               "max over 64 pairs of $|\\mathrm{tr}(\\hat{x}^\\top \\hat{y})/2 - \\langle x, y "
+               "\\rangle|$",
+               transpose, 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add("killing-ad-invariant", "\\eqref{Killing}",
+               "max over 64 pairs and rotations $R = \\mathrm{cay}(a)$ of $|(R x, R y) - (x, y)|$: "
+               "invariant under $\\mathrm{Ad}$",
                invariant, 0.0, 1e-14, LEDGER_REPRODUCED);
 }
 
@@ -154,9 +159,10 @@ static void corollary_covectors(const double I[3][3], double eps, const double a
 }
 
 static void corollary_claims(gsl_rng *r, const sus_model *m) {
-    ledger_add("cor44-identity-cayley", "CoroRetr (proof)",
-               "max over 64 x of |dcay^{-1}_x cay(x) - dcay^{-1}_{-x}|: Ad*_{tau(x)} (dtau^{-1}_x)^* = "
-               "(dtau^{-1}_{-x})^*",
+    ledger_add("cor44-identity-cayley", "\\PaperRefOr{CoroRetr}, proof",
+               "max over 64 $x$ of $|\\mathrm{dcay}^{-1}_x \\mathrm{cay}(x) - \\mathrm{dcay}^{-1}_{-x}|$: "
+               "$\\mathrm{Ad}^*_{\\tau(x)} (\\mathrm{d}\\tau^{-1}_x)^* = "
+               "(\\mathrm{d}\\tau^{-1}_{-x})^*$",
                corollary_identity(r), 0.0, 1e-14, LEDGER_REPRODUCED);
     double proof_err = 0.0, ratio_lo = INFINITY, ratio_hi = -INFINITY;
     for (int body = 0; body < 2; body++)
@@ -175,16 +181,18 @@ static void corollary_claims(gsl_rng *r, const sus_model *m) {
             ratio_hi = fmax(ratio_hi, ratio);
         }
     /* central differences with h = 1e-4 on an action of size <= 1: relative error ~1e-8 */
-    ledger_add("cor44-proof-from-action", "CoroRetr (proof)",
-               "max over 64 samples (2 bodies) of |d(action)/d eta_k - the proof's last display| / |display|",
+    ledger_add("cor44-proof-from-action", "\\PaperRefOr{CoroRetr}, proof",
+               "max over 64 samples (2 bodies) of the distance of $\\mathrm{d}(\\mathrm{action}) / "
+               "\\mathrm{d}\\eta_k$ from the proof's last display, relative to the display",
                proof_err, 0.0, 1e-6, LEDGER_REPRODUCED);
-    char q[256];
-    snprintf(
-        q, sizeof q,
-        "d(action)/d eta_k over the left side of (AltNHEq), shifted to k-1: same sign and lambda means 1; "
-        "range [%.12g, %.12g]",
-        ratio_lo, ratio_hi);
-    ledger_add("cor44-sign", "CoroRetr vs its proof", q, ratio_hi, 1.0, 1e-6, LEDGER_ERRATUM);
+    char q[400];
+    snprintf(q, sizeof q,
+             "$\\mathrm{d}(\\mathrm{action}) / \\mathrm{d}\\eta_k$ over the left side of "
+             "\\eqref{AltNHEq}, shifted to $k-1$: the same sign and $\\lambda$ means 1; range "
+             "$[%.12g, %.12g]$",
+             ratio_lo, ratio_hi);
+    ledger_add("cor44-sign", "\\PaperRefOr{CoroRetr} against its proof", q, ratio_hi, 1.0, 1e-6,
+               LEDGER_ERRATUM);
 }
 
 /* ---- dreps: phi_d o tau need not cut out the subspace w_3 = 0 ---- */
@@ -233,19 +241,22 @@ static void subspace_claims(void) {
     ledger_number("SecFiveFourViolationEpsQuarter", viol[2]);
     /* a violation a million times round-off at eps = 1/4 cannot be a rounding artefact */
     ledger_add_bound(
-        "sec54-not-preserved", "dreps",
-        "|w_3| on the zero set of phi_d o cay at (w_1, w_2) = (0.4, 0.5), eps = 1/4, phi_d = w_3 read "
-        "at (2,1) on the forward difference (W - I)/eps: the text says it need not vanish",
+        "sec54-not-preserved", "\\PaperRefOr{dreps}",
+        "$|\\omega_3|$ on the zero set of $\\varphi_d \\circ \\mathrm{cay}$ at $(\\omega_1, \\omega_2) = "
+        "(0.4, 0.5)$, $\\varepsilon = 1/4$, $\\varphi_d = \\omega_3$ read at $(2,1)$ on the forward "
+        "difference $(W - I)/\\varepsilon$: the text says it need not vanish",
         viol[2], 1e-10, 1, LEDGER_REPRODUCED);
     /* (caypart): the (2,1) entry is (x_3 + x_1 x_2/2)/(1 + |x/2|^2), so w_3 = -eps w_1 w_2/2: slope 1 */
     ledger_add(
-        "sec54-violation-order", "dreps (extension)",
-        "slope of log |w_3| against log eps on that zero set, eps = 2^-j, j = 2..10: our analysis gives 1",
+        "sec54-violation-order", "\\PaperRefOr{dreps}, extension",
+        "slope of $\\log |\\omega_3|$ against $\\log \\varepsilon$ on that zero set, $\\varepsilon = "
+        "2^{-j}$, $j = 2, \\dots, 10$: our analysis gives 1",
         slope, 1.0, 0.1, LEDGER_EXTENSION);
     ledger_add(
-        "sec54-skew-preserved", "dreps (extension)",
-        "max over eps = 2^-j, j = 0..10, of |w_3| when phi_d reads the skew part of (W - I)/eps: the Cayley "
-        "map's skew part is x^/(1 + |x/2|^2), so the zero set is the subspace",
+        "sec54-skew-preserved", "\\PaperRefOr{dreps}, extension",
+        "max over $\\varepsilon = 2^{-j}$, $j = 0, \\dots, 10$, of $|\\omega_3|$ when $\\varphi_d$ reads "
+        "the skew part of $(W - I)/\\varepsilon$: the Cayley map's skew part is $\\hat{x}/(1 + "
+        "|x/2|^2)$, so the zero set is the subspace",
         skew, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 

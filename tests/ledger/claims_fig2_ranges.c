@@ -14,11 +14,13 @@
  * range, the ratio of the two maxima over [0, 60], and its value at t = 10, so that "converges
  * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each. */
 #include "claims_fig2more.h"
+#include "claims_refs.h"
 #include "dsp.h"
 
 #include "experiments.h"
 #include "ledger.h"
 #include "midpoint_sweeps.h"
+#include "notation.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -104,15 +106,15 @@ static void energy_range_claims(const sus_model *m)
             if (!ended)
                 upto = grid_eps(j);
         }
-        char id[80], name[32], q[320];
+        char id[80], name[32], q[480];
         reading_name(reading, name, sizeof name);
         snprintf(id, sizeof id, "fig2-energy-none-faster-%s", name);
         snprintf(q, sizeof q,
-                 "largest eps from 0.25 (grid 0.25 * 2^(j/4) to 8) up to which the %s reading loses no "
-                 "more energy over [0, 200] than the variational one; more at %d of 21 eps (from %.3g), "
-                 "failed at %d",
+                 "largest $\\varepsilon$ from 0.25 (grid $0.25 \\cdot 2^{j/4}$ to 8) up to which the %s "
+                 "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
+                 "21 $\\varepsilon$ (from %.3g), failed at %d",
                  name, faster, first_faster, failed);
-        ledger_add_bound(id, "Fig. 2(d) (reading, extension)", q, upto, SUS_EXP_FIG2_EPS, 1,
+        ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_EXP_FIG2_EPS, 1,
                          LEDGER_EXTENSION);
     }
 }
@@ -141,19 +143,21 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
     }
     ledger_number("FigTwoRatioOverTMin", lo);
     ledger_number("FigTwoRatioOverTMax", hi);
-    char q[256];
+    char q[480];
     snprintf(q, sizeof q,
-             "smallest over t = 2..60 of |w_var(t) - w(t)| / |w_mid(t) - w(t)| at eps = 1 (largest %.3g); "
-             "'converges much faster' needs <= 1/10 somewhere",
+             "smallest over $t = 2, \\dots, 60$ of $|\\omega_\\mathrm{var}(t) - \\omega(t)| / "
+             "|\\omega_\\mathrm{mid}(t) - \\omega(t)|$ at $\\varepsilon = 1$ (largest %.3g); "
+             "``converges much faster'' needs $\\le 1/10$ somewhere",
              hi);
-    ledger_add_bound("fig2-converges-faster-t-range", "Fig. 2 caption, Conclusions", q, lo, 1.0 / MUCH, 0,
+    ledger_add_bound("fig2-converges-faster-t-range", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     snprintf(q, sizeof q,
-             "max over [0, 60] of |w_var - w| over max of |w_mid - w| at eps = 1 (%.3g over %.3g); "
-             "'much faster' needs <= 1/10",
-             max_var, max_mid);
-    ledger_add_bound("fig2-converges-faster-max-ratio", "Fig. 2 caption, Conclusions", q, max_var / max_mid,
-                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+             "max over $[0, 60]$ of $|\\omega_\\mathrm{var} - \\omega|$ over max of "
+             "$|\\omega_\\mathrm{mid} - \\omega|$ at $\\varepsilon = 1$ ($%s$ over $%s$); ``much "
+             "faster'' needs $\\le 1/10$",
+             notation_g(max_var, 3).s, notation_g(max_mid, 3).s);
+    ledger_add_bound("fig2-converges-faster-max-ratio", REF_FIG2_CONCLUSIONS, q,
+                     max_var / max_mid, 1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 }
 
 void fig2_range_claims(const sus_model *m, const sus_exact *ex)

@@ -13,6 +13,7 @@
 
 #include "exact.h"
 #include "experiments.h"
+#include "claims_refs.h"
 #include "ledger.h"
 #include "stepper.h"
 
@@ -84,15 +85,14 @@ static void reading(const char *name, const char *id, const double I[9])
     ledger_number(key, a.own100);
     snprintf(key, sizeof key, "FigTwoReading%sOwnMid", name);
     ledger_number(key, b.own100);
-    snprintf(
-        q, sizeof q,
-        "of the statements of Figure 2 (energy, faster, limit, own: see the file), how many hold with the "
-        "labels as printed and I read by %s; the caption claims all 4",
-        id);
+    snprintf(q, sizeof q,
+             "of the statements of \\PaperRefOr{Fig2} (energy, faster, limit, own: see the file), how "
+             "many hold with the labels as printed and $I$ read by %s; the caption claims all 4",
+             id);
     char lid[64];
     snprintf(lid, sizeof lid, "fig2-inertia-%s", id);
     /* a count of statements is an integer: 0.5 tells 4 from 3 */
-    ledger_add(lid, "Fig. 2 caption, Conclusions", q, holds, 4.0, 0.5, LEDGER_NOT_REPRODUCED);
+    ledger_add(lid, REF_FIG2_CONCLUSIONS, q, holds, 4.0, 0.5, LEDGER_NOT_REPRODUCED);
 }
 
 void fig2readings_claims(const sus_model *m)

@@ -5,9 +5,11 @@
 #include "dsp.h"
 
 #include "experiments.h"
+#include "claims_refs.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "midpoint_sweeps.h"
+#include "notation.h"
 #include "series.h"
 #include "so3.h"
 
@@ -116,15 +118,15 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
                               const sus_exp_series *mid, const sus_exp_series *var, double eps, long N,
                               long every)
 {
-    char id[64], what[256];
+    char id[64], what[400];
     const double cm = constraint_of(mid, m, sus_step_midpoint, eps, N, every);
     const double cv = constraint_of(var, m, sus_step_variational, eps, N, every);
     const double c = isnan(cm) || isnan(cv) ? NAN : fmax(cm, cv); /* fmax would drop a NaN */
     snprintf(id, sizeof id, "%s-constraint", fig);
     snprintf(what, sizeof what,
-             "max over both methods of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), eps = %g, %ld steps (series "
-             "checked "
-             "complete and recomputed from R_k)",
+             "max over both methods of $\\max(|\\omega_3|, |\\langle e_3, (R_k^\\top R_k "
+             "\\hat{\\omega}_k)^\\vee \\rangle|)$, $\\varepsilon = %g$, %ld steps (series checked "
+             "complete and recomputed from $R_k$)",
              eps, N);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
     ledger_add(id, ref, what, c, 0.0, 1e-14, LEDGER_REPRODUCED);
@@ -139,8 +141,9 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
     snprintf(what, sizeof what,
-             "the same measurement on a midpoint run with w3 = %g injected every step: it sees it",
-             VIOLATION);
+             "the same measurement on a midpoint run with $\\omega_3 = %s$ injected every step: it "
+             "sees it",
+             notation_g(VIOLATION, 6).s);
     ledger_add(id, "(test of the test)", what, seen, VIOLATION, 0.1 * VIOLATION, LEDGER_EXTENSION);
 }
 
@@ -155,8 +158,9 @@ static void figure1(const sus_model *m, const sus_exact *ex)
         fmax(sus_exp_series_maxdiff(&mid, &var, FIELD(w1)), sus_exp_series_maxdiff(&mid, &var, FIELD(w2)));
     /* A difference invisible in panels (a)-(b): the smallest plotted range (w2: 0.50 .. 0.68)
      * spans ~400 pixels at 150 dpi, so 1e-4 is a fraction of a pixel. */
-    ledger_add("fig1-indistinguishable", "Sec. 5.6 text, Fig. 1",
-               "max_k |w_mid - w_var| at eps = 1e-3 over [0, 60]: below a pixel (1e-4) of panels (a)-(b)",
+    ledger_add("fig1-indistinguishable", REF_SEC56 "; \\PaperRefOr{Fig1}",
+               "$\\max_k |\\omega_\\mathrm{mid} - \\omega_\\mathrm{var}|$ at $\\varepsilon = 10^{-3}$ "
+               "over $[0, 60]$: below a pixel ($10^{-4}$) of panels (a) and (b)",
                dw, 0.0, 1e-4, LEDGER_REPRODUCED);
     /* "...except with respect to the multipliers": the multipliers differ by O_0 of PropoFinal,
      * up to O(eps) = O(1e-3 |lambda'|) ~ 1e-5. */
@@ -176,24 +180,24 @@ static void figure1(const sus_model *m, const sus_exact *ex)
     }
     if (mid.n < 2)
         off = NAN;
-    char q[256];
-    snprintf(
-        q, sizeof q,
-        "max_k>=1 |(lambda_mid - lambda_var)_k - O_0(w(t_k))| at eps = 1e-3: the multipliers differ by O_0 "
-        "(PropoFinal), up to max |O_0| = %.4g",
-        o0);
+    char q[400];
+    snprintf(q, sizeof q,
+             "$\\max_{k \\ge 1} |(\\lambda_\\mathrm{mid} - \\lambda_\\mathrm{var})_k - "
+             "O_0(\\omega(t_k))|$ at $\\varepsilon = 10^{-3}$: the multipliers differ by $O_0$ "
+             "(\\PaperRefOr{PropoFinal}), up to $\\max |O_0| = %.4g$",
+             o0);
     ledger_number("FigOneMaxOZero", o0);
-    ledger_add("fig1-multipliers-differ", "Sec. 5.6 text, Fig. 1(c)-(d)", q, off, 0.0, 1e-4,
-               LEDGER_REPRODUCED);
-    constraint_claims("fig1", "Fig. 1(e)", m, &mid, &var, eps, N, every);
+    ledger_add("fig1-multipliers-differ", REF_SEC56 "; \\PaperRefOr{Fig1}, panels (c) and (d)", q,
+               off, 0.0, 1e-4, LEDGER_REPRODUCED);
+    constraint_claims("fig1", "\\PaperRefOr{Fig1}, panel (e)", m, &mid, &var, eps, N, every);
     /* Round-off in E over 6e4 steps walks like sqrt(N) u E ~ 1e-14; 1e-13 leaves a factor 10. */
-    ledger_add(
-        "fig1-energy-midpoint", "Fig. 1(f)",
-        "max_k |E_k - E_0| of the midpoint rule, eps = 1e-3: conserved to round-off (it conserves E exactly)",
+    ledger_add("fig1-energy-midpoint", "\\PaperRefOr{Fig1}, panel (f)",
+               "$\\max_k |E_k - E_0|$ of the midpoint rule, $\\varepsilon = 10^{-3}$: conserved to "
+               "round-off (it conserves $E$ exactly)",
         sus_exp_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
-    ledger_add_bound("fig1-energy-variational", "Fig. 1(f) (extension)",
-                     "max_k |E_k - E_0| of the variational integrator, eps = 1e-3: at least 1e-12, i.e. not "
-                     "round-off (O(eps^2) drift)",
+    ledger_add_bound("fig1-energy-variational", "\\PaperRefOr{Fig1}, panel (f); extension",
+                     "$\\max_k |E_k - E_0|$ of the variational integrator, $\\varepsilon = 10^{-3}$: at "
+                     "least $10^{-12}$, i.e. not round-off ($O(\\varepsilon^2)$ drift)",
                      sus_exp_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
     sus_exp_series_free(&mid);
     sus_exp_series_free(&var);
@@ -221,13 +225,14 @@ static void sweeps_are_explicit_methods(const sus_model *m, double eps, long N, 
             w[0] += eps * f[0];
             w[1] += eps * f[1];
         }
-        char id[64], what[160];
+        char id[64], what[320];
         snprintf(id, sizeof id, "fig2-reading-%d-sweep%s", n,
                  n == 1 ? "-is-euler" : "s-are-explicit-midpoint");
         snprintf(what, sizeof what,
-                 "max_k |E_k| difference, %d fixed-point sweep%s against %s written out, eps = %g, %ld steps",
+                 "$\\max_k$ of the difference in $E_k$, %d fixed-point sweep%s against %s written out, "
+                 "$\\varepsilon = %g$, %ld steps",
                  n, n == 1 ? "" : "s", n == 1 ? "explicit Euler" : "the explicit midpoint rule", eps, N);
-        ledger_add(id, "Fig. 2(d) (evidence)", what, d, 0.0, 1e-15, LEDGER_EXTENSION);
+        ledger_add(id, REF_FIG2D "; evidence", what, d, 0.0, 1e-15, LEDGER_EXTENSION);
     }
 }
 
@@ -243,15 +248,14 @@ static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
         err_mid = fmax(err_mid, hypot(mid->w1[i] - w[0], mid->w2[i] - w[1]));
     }
     const double r0 = hypot(SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
-    char q_buf[256];
-    snprintf(q_buf, sizeof q_buf,
-             "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200], above the midpoint rule's (expected); "
-             "the paper's "
-             "'quite well' gives no tolerance to test");
     /* The paper gives no tolerance for "quite well" and its figure image is missing, so no
      * verdict on the paper can follow from a threshold we would choose; what is measured is the
      * comparison, recorded as ours. */
-    ledger_add_bound("fig2-accuracy", "(extension)", q_buf, err_var / r0, err_mid / r0, 1, LEDGER_EXTENSION);
+    ledger_add_bound("fig2-accuracy", "(extension)",
+                     "$\\max_k |\\omega_\\mathrm{var} - \\omega(t_k)| / |\\omega_0|$ at $\\varepsilon "
+                     "= 1$ over $[0, 200]$, above the midpoint rule's (expected); the paper's ``quite "
+                     "well'' gives no tolerance to test",
+                     err_var / r0, err_mid / r0, 1, LEDGER_EXTENSION);
     ledger_number("FigTwoMidAccuracyPercent", 100.0 * err_mid / r0);
     ledger_number("FigTwoVarAccuracyPercent", 100.0 * err_var / r0);
 }
@@ -259,19 +263,19 @@ static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
 /* The caption: midpoint shows a fast decay of energy, the variational integrator is better. */
 static void fig2_energy_claims(const sus_exp_series *mid, double loss_mid, double loss_var)
 {
-    ledger_add_bound("fig2-energy-midpoint", "Fig. 2(d), Sec. 5.6 text",
-                     "energy lost by the midpoint rule over [0, 200], eps = 1; the paper's 'fast decay' "
-                     "needs it to exceed the variational loss (expected)",
+    ledger_add_bound("fig2-energy-midpoint", REF_FIG2D "; " REF_SEC56,
+                     "energy lost by the midpoint rule over $[0, 200]$, $\\varepsilon = 1$; the paper's "
+                     "``fast decay'' needs it to exceed the variational loss (expected)",
                      loss_mid, loss_var, 1, LEDGER_NOT_REPRODUCED);
-    ledger_add_bound("fig2-energy-variational", "Fig. 2(d), Sec. 5.6 text",
-                     "|E_N - E_0| of the variational integrator, eps = 1; 'much better' needs it below the "
-                     "midpoint's |E_N - E_0| (expected)",
+    ledger_add_bound("fig2-energy-variational", REF_FIG2D "; " REF_SEC56,
+                     "$|E_N - E_0|$ of the variational integrator, $\\varepsilon = 1$; ``much better'' "
+                     "needs it below the midpoint's $|E_N - E_0|$ (expected)",
                      fabs(loss_var), fabs(loss_mid), 0, LEDGER_NOT_REPRODUCED);
     /* 200 steps, each changing E by at most a few roundings u E ~ 1e-16 (Newton solves to 16 u
      * of its scale): a walk of sqrt(200) u E ~ 1e-15; 1e-14 leaves a factor 10. */
     ledger_add("fig2-energy-midpoint-conserved", "(extension)",
-               "max_k |E_k - E_0| of the midpoint rule at eps = 1 over 200 steps: round-off, the implicit "
-               "midpoint rule conserves E",
+               "$\\max_k |E_k - E_0|$ of the midpoint rule at $\\varepsilon = 1$ over 200 steps: "
+               "round-off, the implicit midpoint rule conserves $E$",
                sus_exp_series_maxdrift(mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
 }
 
@@ -290,10 +294,10 @@ static void fig2_readings_claims(const sus_model *m, double eps, long N, double 
     sweeps_are_explicit_methods(m, eps, N, E);
     free(E);
     ledger_number("FigTwoReadingsWorstLoss", worst_loss);
-    ledger_add_bound("fig2-energy-readings", "Fig. 2(d) (evidence)",
-                     "largest energy loss at t = 200 over the readings of the midpoint rule (Newton; 1..8 "
-                     "fixed-point sweeps, incl. explicit Euler and explicit midpoint); the caption needs it "
-                     "above the variational loss (expected)",
+    ledger_add_bound("fig2-energy-readings", REF_FIG2D "; evidence",
+                     "largest energy loss at $t = 200$ over the readings of the midpoint rule (Newton; 1 "
+                     "to 8 fixed-point sweeps, explicit Euler and explicit midpoint among them); the "
+                     "caption needs it above the variational loss (expected)",
                      worst_loss, loss_var, 1, LEDGER_NOT_REPRODUCED);
 }
 
@@ -307,15 +311,17 @@ static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid, co
     sus_exact_limit(ex, winf);
     const double lim_var = hypot(var->w1[last] - winf[0], var->w2[last] - winf[1]);
     const double lim_mid = hypot(mid->w1[last] - winf[0], mid->w2[last] - winf[1]);
-    ledger_add_bound("fig2-longterm", "Fig. 2 caption",
-                     "|w_var(200) - w_inf|, eps = 1: 'long-term behaviour much more accurate' needs it below "
-                     "the midpoint's |w_mid(200) - w_inf| (expected)",
+    ledger_add_bound("fig2-longterm", REF_FIG2_CAPTION,
+                     "$|\\omega_\\mathrm{var}(200) - \\omega_\\infty|$, $\\varepsilon = 1$: ``long-term "
+                     "behaviour much more accurate'' needs it below the midpoint's "
+                     "$|\\omega_\\mathrm{mid}(200) - \\omega_\\infty|$ (expected)",
                      lim_var, lim_mid, 0, LEDGER_NOT_REPRODUCED);
     /* The midpoint rule conserves E, and its fixed points are the zeros of f on the energy
      * ellipse: it tends to the exact steady rotation. At t = 200 the exact distance is
      * e^{-200 k} ~ 1e-13; 1e-10 bounds the midpoint's. */
     ledger_add("fig2-limit-midpoint", "(extension)",
-               "|w_mid(200) - w_inf| at eps = 1: the midpoint rule reaches the exact steady rotation",
+               "$|\\omega_\\mathrm{mid}(200) - \\omega_\\infty|$ at $\\varepsilon = 1$: the midpoint "
+               "rule reaches the exact steady rotation",
                lim_mid, 0.0, 1e-10, LEDGER_EXTENSION);
     /* A fixed point of (taudyn) has c(w) = 0: the variational integrator also ends on a steady
      * rotation, but at the energy it has lost, so |w_var - w_inf| = |w_inf| (1 - sqrt(E_N/E_0)).
@@ -323,9 +329,9 @@ static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid, co
      * e^{-200 k} ~ 3e-13 from it, and 1e-9 allows the variational run to settle a thousand
      * times more slowly than the exact one. */
     const double predicted = hypot(winf[0], winf[1]) * (1.0 - sqrt(var->energy[last] / E0));
-    ledger_add(
-        "fig2-limit-variational", "(extension)",
-        "|w_var(200) - w_inf| against |w_inf| (1 - sqrt(E_N / E_0)): a steady rotation at the wrong energy",
+    ledger_add("fig2-limit-variational", "(extension)",
+               "$|\\omega_\\mathrm{var}(200) - \\omega_\\infty|$ against $|\\omega_\\infty| (1 - "
+               "\\sqrt{E_N / E_0})$: a steady rotation at the wrong energy",
         lim_var, predicted, 1e-9, LEDGER_EXTENSION);
 }
 
@@ -339,7 +345,7 @@ static void figure2(const sus_model *m, const sus_exact *ex)
     const size_t last = mid.n - 1;
     const double E0 = mid.energy[0];
     const double loss_mid = E0 - mid.energy[last], loss_var = E0 - var.energy[last];
-    constraint_claims("fig2", "Fig. 2(e)", m, &mid, &var, eps, N, 1);
+    constraint_claims("fig2", "\\PaperRefOr{Fig2}, panel (e)", m, &mid, &var, eps, N, 1);
     fig2_energy_claims(&mid, loss_mid, loss_var);
     fig2_readings_claims(m, eps, N, loss_mid, loss_var);
     fig2_accuracy_claims(ex, &mid, &var);
@@ -372,9 +378,10 @@ static void inertia_ambiguity(const sus_model *m)
         sus_exact_omega(&ec, SUS_EXP_INERTIA_DT * (double)i, b);
         d = fmax(d, hypot(a[0] - b[0], a[1] - b[1]));
     }
-    ledger_add_bound("inertia-row-vs-column", "(RGB2) with I as printed (extension)",
-                     "max_t |w_row(t) - w_col(t)| on [0, 60], exact solutions with (I31, I32) = (0.2, 0.1) "
-                     "vs (0.2, 0.2): the choice is visible (> 1e-3)",
+    ledger_add_bound("inertia-row-vs-column", "\\eqref{RGB2} with $I$ as printed; extension",
+                     "$\\max_t |\\omega_\\mathrm{row}(t) - \\omega_\\mathrm{col}(t)|$ on $[0, 60]$, exact "
+                     "solutions with $(I_{31}, I_{32}) = (0.2, 0.1)$ against $(0.2, 0.2)$: the choice is "
+                     "visible ($> 10^{-3}$)",
                      d, 1e-3, 1, LEDGER_EXTENSION);
 }
 

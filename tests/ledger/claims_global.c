@@ -163,7 +163,7 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
                        const worst_fit *wf)
 {
     const int p = q ? eo->so3[recon] : eo->p, paper = me->paper_ref != NULL;
-    char id[96], what[512], label[64];
+    char id[96], what[640], label[64];
     const curve_fit *f = &wf->f;
     if (q)
         snprintf(id, sizeof id, paper ? "global-so3-order-bodies-%s-%s" : "highorder-so3-order-%s-%s",
@@ -172,21 +172,24 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
         snprintf(id, sizeof id, paper ? "global-order-bodies-%s" : "highorder-w-order-%s", me->type->name);
     const double t_paper = paper ? T_PAPER_METHODS : T_EXTENSION;
     snprintf(what, sizeof what,
-             "slope of %s at k T = %.3g (t = %g on the paper's body) against eps, %s, errors in [max(1000 u, "
-             "100 N s u), 1] x size; the nearest to its bound of %d bodies: %s (h = eps k %.3g .. %.3g, %d "
-             "points%s)",
-             q ? "(MetMat) dist(R(T), R_N)" : "|w(T) - w_N|", t_paper * claims_body_get(0)->ex.k, t_paper,
-             q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name, wf->bodies,
-             wf->body, isnan(f->w.slope) ? 0.0 : f->w.eps_lo, isnan(f->w.slope) ? 0.0 : f->w.eps_hi,
-             f->w.used, f->w.plateau ? ", one slope" : "; no one slope: lower estimate, >= p/2");
+             "slope of %s at $k T = %.3g$ ($t = %g$ on the paper's body) against $\\varepsilon$, %s, "
+             "errors in $[\\max(1000\\,u, 100\\,N s\\,u), 1] \\times \\mathrm{size}$; the nearest "
+             "to its bound of %d bodies: %s ($h = \\varepsilon k$ from %.3g to %.3g, %d points%s)",
+             q ? "the distance \\eqref{MetMat} $\\mathrm{dist}(R(T), R_N)$"
+               : "$|\\omega(T) - \\omega_N|$",
+             t_paper * claims_body_get(0)->ex.k, t_paper,
+             q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name,
+             wf->bodies, wf->body, isnan(f->w.slope) ? 0.0 : f->w.eps_lo,
+             isnan(f->w.slope) ? 0.0 : f->w.eps_hi, f->w.used,
+             f->w.plateau ? ", one slope" : "; no one slope: lower estimate, $\\ge p/2$");
     if (wf->roundoff[0]) { /* named, not measured: their errors are round-off at every step tried */
         const size_t len = strlen(what);
-        snprintf(what + len, sizeof what - len, "; at round-off at all but <= 2 steps, no order: %s",
-                 wf->roundoff);
+        snprintf(what + len, sizeof what - len,
+                 "; at round-off at all but at most 2 steps, no order: %s", wf->roundoff);
     }
     const double slope = isnan(f->w.slope) ? -INFINITY : f->w.slope;
     const ledger_assert truth = paper && !q ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    const char *ref = paper && q ? "TeoL (extension)" : eo->ref;
+    const char *ref = paper && q ? "\\PaperRefOr{TeoL}, extension" : eo->ref;
     if (f->w.plateau && !isnan(f->w.slope))
         ledger_add(id, ref, what, slope, p, WINDOW_ORDER_TOL, truth);
     else
@@ -243,35 +246,51 @@ static void reference_line(const body_target *t)
         if (!(d <= worst))
             worst = d, snprintf(name, sizeof name, "%s", t[k].d->b.name);
     }
-    char what[256];
+    char what[400];
     snprintf(what, sizeof what,
-             "dist(R_ref(T), R_magnus(T)) at k T = %.3g (the longer phase), the worst of %d bodies (%s): the "
-             "reference that judges the global orders on every body; claimed <= 1e-15",
+             "$\\mathrm{dist}(R_\\mathrm{ref}(T), R_\\mathrm{magnus}(T))$ at $k T = %.3g$ (the longer "
+             "phase), the worst of %d bodies (%s): the reference that judges the global orders on "
+             "every body; claimed $\\le 10^{-15}$",
              T_EXTENSION * claims_body_get(0)->ex.k, BODIES_COUNT, name);
     ledger_add("global-reference-attitude-bodies", "(method)", what, worst, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 
-void global_order_claims(void)
+/* The targets of every body at the extensions' phase (te) and the paper methods' (tp), made once
+ * in a process. */
+static body_target te[BODIES_COUNT], tp[BODIES_COUNT];
+static int targets_made;
+
+static void make_targets(void)
 {
-    body_target te[BODIES_COUNT], tp[BODIES_COUNT];
     const double k_paper = claims_body_get(0)->ex.k;
+    if (targets_made)
+        return;
     for (int k = 0; k < BODIES_COUNT; k++) {
         te[k] = target_of(k, k_paper, T_EXTENSION);
         tp[k] = target_of(k, k_paper, T_PAPER_METHODS);
     }
+    targets_made = 1;
+}
+
+void global_reference_claims(void)
+{
+    make_targets();
     reference_line(te);
-    for (int i = 0; i < sus_step_method_count(); i++) {
-        const sus_step_method *me = sus_step_method_get(i);
-        const expected_order *eo = expected_order_of(me->type->name);
-        if (!eo)
-            continue; /* missing: claims_methods.c fails it */
-        if (me->paper_ref) { /* every reconstruction, as claims.c's global lines */
-            for (int r = 0; r < SUS_RECON_COUNT; r++)
-                order_rows(tp, me, eo, (sus_recon)r, r == 0);
-            continue;
-        }
-        order_rows(te, me, eo, me->recon, 1);
-        if (!me->type->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
-            order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
+}
+
+void global_order_claims_of(int i)
+{
+    const sus_step_method *me = sus_step_method_get(i);
+    const expected_order *eo = expected_order_of(me->type->name);
+    if (!eo)
+        return; /* missing: claims_methods.c fails it */
+    make_targets();
+    if (me->paper_ref) { /* every reconstruction, as claims_consistency.c's global lines */
+        for (int r = 0; r < SUS_RECON_COUNT; r++)
+            order_rows(tp, me, eo, (sus_recon)r, r == 0);
+        return;
     }
+    order_rows(te, me, eo, me->recon, 1);
+    if (!me->type->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
+        order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
 }

@@ -39,7 +39,7 @@ typedef struct {
     int unmeasured;           /* bodies with fewer than 3 steps taken */
     const char *unmeasured_body;
     int roundoff;             /* bodies whose error is at round-off wherever a step is taken */
-    char roundoff_bodies[96]; /* their names, each with the largest eps k stepped */
+    char roundoff_bodies[160]; /* their names, each with the largest eps k stepped */
 } order_summary;
 
 order_summary order_summary_new(void);
