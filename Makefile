@@ -6,7 +6,8 @@
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
 #   make bench      work-precision and per-step cost against GSL (data/bench.csv)
-#   make paper      the companion text, paper/companion.pdf
+#   make paper      the companion text, paper/companion.pdf and paper/methods.pdf (committed,
+#                   byte for byte reproducible; make check fails when their numbers are stale)
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
 #                   make check-web tests it in headless chromium; make web-deps installs its tools
 #   make deps       install missing Debian packages (make check installs only what it needs)
@@ -15,12 +16,27 @@
 #                   make uninstall PREFIX=DIR removes them
 #   make clean      remove $(BUILD); make distclean also removes every generated figure, data
 #                   file, frame, video and PDF (not the committed PNG previews or data/animation.cfg)
+#   V=1             print every command in full (default: one short line per step, "  CC  FILE")
 #   WERROR=1        treat warnings as errors (CI)
 #   SAN=1           build into build/san with -fsanitize=address,undefined,float-cast-overflow
 #                   (added to any CFLAGS; float-cast-overflow is not part of undefined)
 
 # `make` alone is `make all`: the stamp rules below come first and would otherwise be the goal.
 .DEFAULT_GOAL := all
+# Output for people: one short line per step, as the Linux kernel's build prints it
+# ("  CC      src/core/model.c"), and the commands themselves with V=1. make -s prints neither.
+# A recipe line is $(call say,WHAT,FILE) followed by the command prefixed with $(Q).
+V ?= 0
+ifeq ($(V),1)
+Q   :=
+say  = @:
+else
+Q   := @
+say  = @printf '  %-7s %s\n' $(call sq,$(1)) $(call sq,$(2))
+endif
+ifneq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+say  = @:
+endif
 CC      ?= cc
 BUILD   ?= build
 # An empty BUILD= would write to /obj and /suslov; a BUILD with a space breaks make's own lists.
@@ -78,7 +94,7 @@ CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 # files of src/prog (suslov's option table, parser and progress line) are the programs' own
 # support, archived like a layer.
 PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c) \
-             src/prog/wasm_api.c
+             src/prog/wasm_api.c src/prog/timed.c
 src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
 obj_of  = $(patsubst src/%.c,$(BUILD)/obj/%.o,$(call src_of,$(1)))
 lib_of  = $(BUILD)/libsus_$(1).a
@@ -92,9 +108,11 @@ FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
 TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
 RENDER_H := $(notdir $(wildcard src/render/*.h))
+# (stdin from /dev/null: in a tree without src/render, grep gets no pattern and would read it)
 TESTS_DRAW := $(patsubst tests/unit/%.c,$(BUILD)/%,$(shell grep -lF $(RENDER_H:%=-e '"%"') \
-                  tests/unit/test_*.c 2>/dev/null))
+                  tests/unit/test_*.c </dev/null 2>/dev/null))
 CLAIMS   := $(BUILD)/claims
+TIMED    := $(BUILD)/timed
 
 # Stamps that change only when their text does: the compile flags (a change of CFLAGS, WERROR or
 # SAN recompiles everything) and each archive's member list (a deleted source leaves no stale
@@ -111,7 +129,8 @@ $(eval $(call STAMP_RULE,$(BUILD)/flags.stamp,$(CC) $(WARN) $(CFLAGS) $(SANFLAGS
 $(foreach l,$(LIB_LAYERS),$(eval $(call STAMP_RULE,$(BUILD)/libsus_$(l).list,$(call obj_of,$(l)))))
 
 .PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench paper clean distclean
-all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS)
+all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS) \
+     $(TIMED)
 
 # What each goal needs (tools/deps.sh PROFILE): check = compiler, GSL, Cairo, OSMesa, fonts;
 # figures adds ffmpeg; paper adds TeX. Objects wait only on the check profile, through a stamp
@@ -128,16 +147,19 @@ $(DEPS_CHECK): tools/deps.sh $(BUILD)/flags.stamp
 
 $(BUILD)/obj/%.o: src/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(call CFLAGS_OF,$(firstword $(subst /, ,$*))) $(VERSION_DEF) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(call CFLAGS_OF,$(firstword $(subst /, ,$*))) $(VERSION_DEF) -c $< -o $@
 
 $(BUILD)/tobj/%.o: tests/%.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(call CFLAGS_OF,tests) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(call CFLAGS_OF,tests) -c $< -o $@
 
 define ARCHIVE_RULE
 $(call lib_of,$(1)): $(call obj_of,$(1)) $(BUILD)/libsus_$(1).list
 	@rm -f $$@
-	$$(AR) rcs $$@ $(call obj_of,$(1))
+	$$(call say,AR,$$@)
+	$$(Q)$$(AR) rcs $$@ $(call obj_of,$(1))
 endef
 $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
@@ -153,7 +175,15 @@ $(BUILD)/obj/prog/suslov_cli.o: $(BUILD)/version.stamp
 $(BUILD)/obj/prog/suslov_cli.o: VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
+
+# Runs a long step (the figure programs, the ledger, the tests, the bench): records its time under
+# $(BUILD)/timings and, with --progress, shows its progress against the last run's time
+# (src/prog/timed.c). Order-only where it wraps a figure: rebuilding it redraws nothing.
+$(TIMED): $(BUILD)/obj/prog/timed.o $(LIBS_LINK)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A program that draws files depends on the objects it links, not on the whole archives: the
 # linker's --trace given twice names the archive members it pulled, and $@.link.d makes the
@@ -164,23 +194,33 @@ $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 # stops the build (make then finds its recipe, if any, in the pattern rule).
 DRAW_PROGS := $(BUILD)/animation $(BUILD)/bench $(FIG_BIN)
 $(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/prog/%.o | $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(LIBS_DRAW) -o $@ -Wl,--trace,--trace >$@.trace
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(LIBS_DRAW) -o $@ -Wl,--trace,--trace >$@.trace
 	@objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
 	    -e 's|^.*libsus_\([a-z]*\)\.a(\(.*\.o\))$$|$(BUILD)/obj/\1/\2|p' $@.trace | sort -u | tr '\n' ' '); \
 	    { echo "$@: $${objs:-$(LIBS_LINK)}"; for o in $$objs; do echo "$$o:"; done; } >$@.link.d; rm -f $@.trace
 
 $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(if $(filter $@,$(TESTS_DRAW)),$(LIBS_DRAW),$(LIBS_RUN)) -o $@
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(if $(filter $@,$(TESTS_DRAW)),$(LIBS_DRAW),$(LIBS_RUN)) -o $@
 
 CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
 $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
-	$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
 # only when the program (or anything it is linked from) changes. The figures' tools (ffmpeg) are
 # checked through a stamp, as the check profile's are, so that `make -q figures` answers 0 when
-# every figure is up to date (an always-run prerequisite would make it answer 1 for ever).
+# every figure is up to date (an always-run prerequisite would make it answer 1 for ever). The
+# last line says what was written and where; not under -q, where a recipe would make `figures`
+# out of date for ever.
 figures: $(FIGS:%=figures/%.pdf) animation
+ifeq ($(findstring q,$(firstword -$(MAKEFLAGS))),)
+	@echo "figures: $(words $(FIGS)) figures in figures/ (NAME.pdf, a NAME.png preview, the caption" \
+	    "NAME.txt) with their data in data/NAME.csv; the animation in figures/attitude.mp4," \
+	    "figures/attitude/ and figures/attitude_filmstrip.png"
+endif
 DEPS_FIGURES := $(BUILD)/deps-figures.stamp
 $(DEPS_FIGURES): tools/deps.sh
 	@sh tools/deps.sh figures && mkdir -p $(@D) && touch $@
@@ -189,17 +229,23 @@ $(DEPS_FIGURES): tools/deps.sh
 # R_k it draws.
 animation: figures/attitude_filmstrip.png
 
-figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg | $(DEPS_FIGURES)
+figures/attitude_filmstrip.png figures/attitude.txt data/attitude.csv &: $(BUILD)/animation data/animation.cfg \
+    | $(DEPS_FIGURES) $(TIMED)
 	@mkdir -p figures data
-	sh tools/timed.sh $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
+	$(call say,FIG,figures/attitude)
+	$(Q)$(TIMED) $(BUILD)/timings/animation.txt $< data/animation.cfg figures data
 
 # Every figure output is written atomically by its program (src/util/atomic_file.c), so an
 # interrupted make must never delete one: a half-made file cannot exist.
 .PRECIOUS: figures/%.pdf figures/%.png figures/%.txt data/%.csv figures/attitude_filmstrip.png \
            figures/attitude.txt data/attitude.csv
-figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS_FIGURES)
+# A program that shows no progress of its own gets the wrapper's, against its last run's time.
+OWN_PROGRESS := stability
+figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS_FIGURES) $(TIMED)
 	@mkdir -p figures data
-	sh tools/timed.sh $(BUILD)/timings/figure_$*.txt $< figures data
+	$(call say,FIG,figures/$*)
+	$(Q)$(TIMED) $(if $(filter $*,$(OWN_PROGRESS)),,--progress figure_$*) $(BUILD)/timings/figure_$*.txt \
+	    $< figures data
 
 # make test: the unit tests, the CLI tests and the build checks, exactly $(TESTS) and the scripts
 # named in tests/run.sh (a few seconds). make ledger: the claims ledger, run again only when the
@@ -209,13 +255,13 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS
 SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
     LSAN_OPTIONS="suppressions='$(CURDIR)/tests/build/lsan.supp':print_suppressions=0"
 test: all
-	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
+	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
 ledger: $(BUILD)/claims.out
 	@sh tests/run.sh $(BUILD) ledger
 
 check: all $(BUILD)/claims.out
-	@$(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
+	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
 # summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
@@ -225,9 +271,11 @@ check: all $(BUILD)/claims.out
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
               $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
-$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS)
-	@out=$(BUILD)/claims.out; $(SAN_ENV) sh tools/timed.sh $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv \
-	    >$$out.tmp 2>&1; if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
+$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) | $(TIMED)
+	$(call say,LEDGER,$(BUILD)/claims.tsv)
+	$(Q)out=$(BUILD)/claims.out; $(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp \
+	    $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv; \
+	    if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
 	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
 
 # The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
@@ -240,7 +288,8 @@ fuzz: $(BUILD)/suslov $(BUILD)/fuzz
 	@$(SAN_ENV) $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
 
 $(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
-	$(CC) $(ALL_LDFLAGS) $^ -o $@
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_LDFLAGS) $^ -o $@
 
 # Speed and accuracy: data/bench.csv, figures/work_precision and figures/step_cost, and the
 # PASS/MISS lines of the speed targets (never a failing test). make bench also times the
@@ -248,19 +297,22 @@ $(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
 # (g++ and the header-only Boost from `tools/deps.sh bench`, which make check never needs).
 bench: all $(BUILD)/bench_boost
 	@mkdir -p figures data
-	@sh tools/timed.sh $(BUILD)/timings/bench.txt sh tools/bench.sh $(BUILD) "$(CFLAGS)"
+	@$(TIMED) $(BUILD)/timings/bench.txt sh tools/bench.sh $(BUILD) "$(CFLAGS)"
 
 CXXWARN := -std=c++17 -Wall -Wextra -Wshadow $(filter -Werror,$(WARN))
 deps-bench:
 	@sh tools/deps.sh bench
 $(BUILD)/obj/prog/bench_odeint.o: src/prog/bench_odeint.cpp $(BUILD)/flags.stamp | deps-bench
 	@mkdir -p $(@D)
-	$(CXX) $(CXXWARN) $(CFLAGS) $(SANFLAGS) $(inc_prog) -MMD -MP -c $< -o $@
+	$(call say,CXX,$<)
+	$(Q)$(CXX) $(CXXWARN) $(CFLAGS) $(SANFLAGS) $(inc_prog) -MMD -MP -c $< -o $@
 $(BUILD)/obj/prog/bench_boost.o: src/prog/bench.c $(BUILD)/flags.stamp | $(DEPS_CHECK)
 	@mkdir -p $(@D)
-	$(CC) $(call CFLAGS_OF,prog) -DSUSLOV_WITH_ODEINT -c $< -o $@
+	$(call say,CC,$< (with Boost.Odeint))
+	$(Q)$(CC) $(call CFLAGS_OF,prog) -DSUSLOV_WITH_ODEINT -c $< -o $@
 $(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_odeint.o $(LIBS_LINK)
-	$(CXX) $(ALL_LDFLAGS) $^ $(LIBS_DRAW) -o $@
+	$(call say,LD,$@)
+	$(Q)$(CXX) $(ALL_LDFLAGS) $^ $(LIBS_DRAW) -o $@
 
 # The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
 # (data/bench.tex), figures from the figure programs, listings and equation map from src/.
@@ -277,16 +329,19 @@ PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibli
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \
-            tools/paper_tolerances.sh CITATION.cff .zenodo.json
+            tools/paper_tolerances.sh tools/paper_links.sh tools/paper_labels.py CITATION.cff .zenodo.json
 paper: paper/companion.pdf paper/methods.pdf
 
-# The companion (main text) and the software note (methods, benchmark, whole ledger, source).
-# PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one address
-# (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
+# The companion (main text) and the software note (methods, benchmark, whole ledger, source),
+# committed, with paper/ledger.sha256 (the ledger's outputs they print); only this rule writes
+# them. PAPER_BASE=https://host/owner/repo/blob/COMMIT/ makes the code links absolute under one
+# address (default: relative to paper/, resolved in the clone); a change of it rebuilds the PDFs.
 PAPER_BASE ?=
 $(eval $(call STAMP_RULE,$(BUILD)/paper_base.stamp,base=$(PAPER_BASE)))
-paper/companion.pdf paper/methods.pdf &: $(PAPER_IN) $(BUILD)/paper_base.stamp | deps-paper
-	@PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
+paper/companion.pdf paper/methods.pdf paper/ledger.sha256 &: $(PAPER_IN) $(BUILD)/paper_base.stamp \
+    | deps-paper
+	$(call say,PAPER,paper/companion.pdf paper/methods.pdf)
+	$(Q)PAPER_BASE='$(PAPER_BASE)' PAPER_TEX='$(PAPER_TEX)' sh tools/paper.sh $(BUILD)
 
 # The web edition (tools/web/): a static site, the findings first, one page per statement of the
 # paper, the ledger, the equations, the figures and one side-by-side page per source file, rebuilt
@@ -404,7 +459,8 @@ mutants-ops: | deps-mutants
 # The manual page, written by suslov itself from the option table that --help prints.
 $(BUILD)/man/suslov.1: $(BUILD)/suslov
 	@mkdir -p $(@D)
-	$< --man >$@.tmp && mv $@.tmp $@
+	$(call say,GEN,$@)
+	$(Q)$< --man >$@.tmp && mv $@.tmp $@
 
 # make install PREFIX=DIR (and DESTDIR= for staging): the command, its manual page, and the
 # library for C and C++ programs: libsuslov.a (the core and methods layers, which need only libm)
@@ -420,7 +476,8 @@ INSTALL_OBJ := $(foreach l,$(INSTALL_LAYERS),$(call obj_of,$(l)))
 # One archive for the user, libsuslov.a: the members of those layers' archives.
 $(BUILD)/libsuslov.a: $(INSTALL_OBJ) $(foreach l,$(INSTALL_LAYERS),$(BUILD)/libsus_$(l).list)
 	@rm -f $@
-	$(AR) rcs $@ $(INSTALL_OBJ)
+	$(call say,AR,$@)
+	$(Q)$(AR) rcs $@ $(INSTALL_OBJ)
 ifneq ($(filter install uninstall,$(MAKECMDGOALS)),)
 ifneq ($(shell case $(call sq,$(PREFIX)) in (/*) echo absolute;; esac),absolute)
 $(error PREFIX='$(PREFIX)' is not an absolute directory)
@@ -452,14 +509,15 @@ uninstall:
 	        "$$d/share/man/man1/suslov.1" && rm -rf "$$d/include/suslov" && echo "uninstalled from $$d"
 
 clean:
-	rm -rf $(BUILD)
+	$(call say,CLEAN,$(BUILD))
+	$(Q)rm -rf $(BUILD)
 
-# Everything `make figures`, `make bench` and `make paper` write; the PNG previews the README
-# shows and data/animation.cfg are committed sources of a fresh clone and stay (in a git
-# checkout, a PNG that git does not track goes too).
+# Everything `make figures`, `make bench` and `make paper` write but what is committed: the PNG
+# previews the README shows, data/animation.cfg, and the PDFs with their paper/ledger.sha256
+# stay (in a git checkout, a PNG that git does not track goes too).
 distclean: clean
 	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/companion.pdf paper/methods.pdf paper/*.tmp
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

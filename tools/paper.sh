@@ -6,6 +6,11 @@
 # (tools/paper_coverage.sh), and run pdflatex three times (longtable column widths settle over
 # passes) on the companion and on the software note. Fails on an undefined reference, a float
 # too large for its page, an overfull box wider than 10 pt, or a Type 3 (bitmap) font.
+# The PDFs are committed, and byte for byte reproducible: their dates are the time of the commit
+# of their sources (tools/repro.sh --commit), pdfTeX writes no trailer ID and no file names of
+# the figures it includes, so the same sources and tools give the same bytes. Beside them,
+# paper/ledger.sha256 records the ledger's outputs they were built from; make check compares it
+# with the ledger's current ones (tools/paper_fresh.sh), so that they cannot go stale unseen.
 # PAPER_BASE (environment): the base address of the code links (see below).
 # Usage: paper.sh BUILD_DIR
 set -eu
@@ -25,10 +30,12 @@ awk 'NR == 1, /\*\// { print }' "$(where exact.h)" >"$P/snip_exact_derivation.c"
 sh tools/eqmap.sh tex "$P/eqmap.tex" >/dev/null ||
     echo "paper: the equation map has gaps; run: sh tools/eqmap.sh check" >&2
 [ -s "$P/eqmap.tex" ]
-for doc in companion methods; do sh tools/paper_numbers.sh "paper/$doc.tex"; done
-sh tools/paper_coverage.sh "$B/claims.tsv"
+# a check quietly: its output only when it fails
+quietly() { "$@" >"$P/check.out" 2>&1 || { cat "$P/check.out" >&2; exit 1; }; }
+for doc in companion methods; do quietly sh tools/paper_numbers.sh "paper/$doc.tex"; done
+quietly sh tools/paper_coverage.sh "$B/claims.tsv"
 sh tools/paper_tables.sh "$P" "$B/claims.tsv" "$B/summary.tex"
-sh tools/paper_tolerances.sh "$B/claims.tsv" paper/tolerances.tsv "$P/tolerances.tex"
+quietly sh tools/paper_tolerances.sh "$B/claims.tsv" paper/tolerances.tsv "$P/tolerances.tex"
 sh tools/paper_refs.sh paper/labels.tsv "$P/labels.tex"
 sh tools/paper_links.sh "$P/links.tex"
 # The base of the code links (make paper PAPER_BASE=https://host/repo/blob/COMMIT/): ../ by default,
@@ -72,15 +79,17 @@ if [ -z "$version" ] || ! grep -q "\"version\": \"$version\"" .zenodo.json ||
     echo "paper: CITATION.cff and .zenodo.json disagree on the version or the author" >&2; exit 1
 fi
 printf '\\newcommand{\\CiteVersion}{%s}\n\\newcommand{\\CiteAuthor}{%s}\n' "$version" "$author" >>"$P/source.tex"
-sh tools/repro.sh "$B" "$P/repro.tex"
+sh tools/repro.sh "$P/repro.tex"
 sh tools/figsplit.sh figures/stability.pdf Stability "$P/figsplit.tex"
 cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" data/bench.tex "$P/"
-# A fixed timestamp in the PDF's metadata (the text's date is the commit's, from repro.tex).
-export TEXINPUTS="$P:" SOURCE_DATE_EPOCH=946684800
+# The PDFs' dates (creation, modification, \today) are the time of the commit of their sources
+# (outside git, a fixed one); no trailer ID, and no names or info of included files.
+epoch=$(sh tools/repro.sh --commit | cut -d' ' -f2)
+export TEXINPUTS="$P:" SOURCE_DATE_EPOCH="${epoch:-946684800}" FORCE_SOURCE_DATE=1
 for doc in companion methods; do
     for pass in 1 2 3; do
-        if ! pdflatex -interaction=nonstopmode -halt-on-error -output-directory="$P" "paper/$doc.tex" \
-            >"$P/pdflatex.out" 2>&1; then
+        if ! pdflatex -interaction=nonstopmode -halt-on-error -output-directory="$P" -jobname="$doc" \
+            "\\pdftrailerid{}\\pdfsuppressptexinfo=-1\\input{paper/$doc.tex}" >"$P/pdflatex.out" 2>&1; then
             grep -A5 '^!' "$P/$doc.log" | head -20 >&2
             echo "paper: pdflatex failed on $doc (pass $pass); the log is $P/$doc.log" >&2
             exit 1
@@ -88,7 +97,10 @@ for doc in companion methods; do
     done
     sh tools/paper_layout.sh "$P/$doc.log" "$P/$doc.pdf"
 done
+# the digest of the ledger's outputs the PDFs print (tools/paper_fresh.sh reads it)
+(cd "$P" && sha256sum numbers.tex ledger.tex summary.tex sensitivity.tex) >paper/ledger.sha256.tmp
 for doc in companion methods; do
     cp "$P/$doc.pdf" "paper/$doc.pdf.tmp" && mv "paper/$doc.pdf.tmp" "paper/$doc.pdf"
     echo "paper: wrote paper/$doc.pdf ($(pdfinfo "paper/$doc.pdf" 2>/dev/null | awk '/^Pages/ { print $2 " pages" }'))"
 done
+mv paper/ledger.sha256.tmp paper/ledger.sha256

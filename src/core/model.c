@@ -25,11 +25,11 @@ static int check_coefficients(const sus_model *m, char *err, size_t errlen)
 {
     const char *what = NULL;
     if (!isfinite(m->norm_fA))
-        what = "a (ContDyn) coefficient I_ij/|I_m|, or their norm ||I_m^-1||, overflows";
+        what = "a coefficient I_ij/|I_m| of (ContDyn), or their norm ||I_m^-1||, overflows";
     else if (!isfinite(m->norm_b))
-        what = "the size of the (ContDyn) field, |(I31, I32)|, overflows";
+        what = "the size of the field of (ContDyn), |(I31, I32)|, overflows";
     else if (!(isfinite(m->o0c[0]) && isfinite(m->o0c[1])))
-        what = "a (LagMult) coefficient I32 Ij1 - I31 Ij2 overflows";
+        what = "a coefficient I32 Ij1 - I31 Ij2 of (LagMult) overflows";
     if (!what)
         return 0;
     snprintf(err, errlen, "too extreme for double precision: %s (|I_m| = %.17g)", what, m->det_m);

@@ -152,7 +152,7 @@ void sus_attitude_increment(sus_attitude *a, const double D[3][3])
 
 const char *const SUS_RECON_NAMES[SUS_RECON_COUNT] = {"cayley", "cayley-mid", "exp-mid"};
 const char *const SUS_RECON_ABOUT[SUS_RECON_COUNT] = {
-    "R_{k+1} = R_k cay(H w_k^), Algorithm (algo)",
+    "R_{k+1} = R_k cay(H w_k^), (algo)",
     "R_{k+1} = R_k cay(H (w_k^ + w_{k+1}^)/2) (extension)",
     "R_{k+1} = R_k exp(H (w_k^ + w_{k+1}^)/2), Rodrigues (extension)",
 };

@@ -27,7 +27,9 @@
  * sus_step_method_count(), so that the sweeps over eps do not meet them. */
 #define SUS_STEP_TOL_METHODS(M) \
     M(taylor_adaptive, "taylor", NULL, EXP_MID, \
-      "Taylor series, order and steps from --tol, rows by dense output (--every-time)")
+      "Taylor series, order and steps from --tol, rows by dense output (--every-time)") \
+    M(exact_attitude, "closed form", NULL, EXP_MID, \
+      "w from the closed form, attitude series with steps from --tol, the steady tail in one step")
 
 #define TAYLOR_ABOUT(P) \
     "Taylor series of order " #P ", quaternion attitude series, E restored"

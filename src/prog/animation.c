@@ -1,7 +1,7 @@
 /* The attitude animation: the exact motion, the midpoint rule and the variational integrator
  * side by side, at eps = 1 with R_{k+1} = R_k cay(eps w^_k) (Algorithm (algo)), rendered off
  * screen with OSMesa; labels and time drawn with Cairo onto each frame.
- * Usage: animation CONFIG FIGDIR DATADIR
+ * Usage: animation [--quiet] CONFIG FIGDIR DATADIR (--quiet: no progress line)
  * Writes FIGDIR/attitude/frame_NNNN.png, FIGDIR/attitude.mp4 (when ffmpeg is installed and
  * SUSLOV_NO_VIDEO is unset), FIGDIR/attitude_filmstrip.png, FIGDIR/attitude.txt, and
  * DATADIR/attitude.csv: the R_k of both integrators at every step, exactly as `suslov` prints
@@ -16,7 +16,7 @@
 #include "fig_output.h"
 #include "gl_context.h"
 #include "mat3.h"
-#include "monoclock.h"
+#include "progress.h"
 #include "refattitude.h"
 #include "scene.h"
 #include "so3.h"
@@ -134,7 +134,7 @@ typedef struct {
 
 static int read_config(const char *path, anim_config *c)
 {
-    *c = (anim_config){640, 360, 30, 10.0, 60.0, 1.0};
+    *c = (anim_config){1280, 720, 30, 10.0, 60.0, 1.0};
     FILE *fp = fopen(path, "r");
     if (!fp) {
         fprintf(stderr, "animation: %s: %s; using the defaults\n", path, strerror(errno));
@@ -237,6 +237,51 @@ static int write_attitude_csv(const char *path, const dsp_track *t, const char *
 
 static const char *const LABELS[3] = {"exact", "midpoint, \xce\xb5 = 1", "variational, \xce\xb5 = 1"};
 
+/* The key to what each body carries, in two columns of up to three rows along the bottom from x0:
+ * a swatch of the scene's own colour (a stroke for an arrow, a square for the box), and what it
+ * is. */
+static void draw_key(cairo_t *cr, double x0, int H, double fs)
+{
+    static const struct {
+        const double *rgb;
+        int square, col, row;
+        const char *text;
+    } KEY[] = {
+        {SUS_PLOT_SCENE_RGB_E3, 0, 0, 0,
+         "e\xe2\x82\x83, along which \xcf\x89 must vanish, and the trail of its tip"},
+        {SUS_PLOT_SCENE_RGB_AXES, 0, 0, 1, "e\xe2\x82\x81, e\xe2\x82\x82: the other body axes"},
+        {SUS_PLOT_SCENE_RGB_STAND, 0, 0, 2, "the stand, with the fixed point at its top"},
+        {SUS_PLOT_SCENE_RGB_OMEGA, 0, 1, 0, "\xcf\x89, the angular velocity, drawn in space"},
+        {SUS_PLOT_SCENE_RGB_BOX, 1, 1, 1, "the body: the principal axes of I"},
+    };
+    enum { N = sizeof KEY / sizeof KEY[0] };
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, fs);
+    cairo_set_line_width(cr, 0.3 * fs);
+    double col1 = 0.0; /* the second column starts past the first's widest text */
+    for (int i = 0; i < N; i++) {
+        cairo_text_extents_t te;
+        cairo_text_extents(cr, KEY[i].text, &te);
+        if (KEY[i].col == 0 && te.x_advance > col1)
+            col1 = te.x_advance;
+    }
+    for (int i = 0; i < N; i++) {
+        const double x = x0 + (KEY[i].col ? col1 + 4.0 * fs : 0.0), y = H - (2.6 - KEY[i].row) * 1.5 * fs;
+        cairo_set_source_rgb(cr, KEY[i].rgb[0], KEY[i].rgb[1], KEY[i].rgb[2]);
+        if (KEY[i].square) {
+            cairo_rectangle(cr, x + 0.3 * fs, y - 0.8 * fs, 0.8 * fs, 0.8 * fs);
+            cairo_fill(cr);
+        } else {
+            cairo_move_to(cr, x, y - 0.35 * fs);
+            cairo_line_to(cr, x + 1.4 * fs, y - 0.35 * fs);
+            cairo_stroke(cr);
+        }
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        cairo_move_to(cr, x + 1.8 * fs, y);
+        cairo_show_text(cr, KEY[i].text);
+    }
+}
+
 static void label_frame(uint32_t *px, int W, int H, double time)
 {
     cairo_surface_t *s =
@@ -257,6 +302,7 @@ static void label_frame(uint32_t *px, int W, int H, double time)
     cairo_set_font_size(cr, 0.9 * fs);
     cairo_move_to(cr, 0.6 * fs, H - 0.6 * fs);
     cairo_show_text(cr, buf);
+    draw_key(cr, 6.0 * fs, H, 0.45 * fs);
     cairo_destroy(cr);
     cairo_surface_flush(s);
     cairo_surface_destroy(s);
@@ -342,7 +388,6 @@ static void close_video(FILE *video, const char *mp4)
         return;
     if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
         video_tmp[0] = '\0';
-        fprintf(stderr, "animation: wrote %s\n", mp4);
     } else {
         stop_video();
         fprintf(stderr, "animation: ffmpeg failed; no video\n");
@@ -441,11 +486,11 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
     char cap[2048];
     snprintf(
         cap, sizeof cap,
-        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg->\n"
+        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
         "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
         "the midpoint rule\n"
-        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) (Algorithm "
-        "(algo)),\n"
+        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) "
+        "((algo)),\n"
         "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
         "own\n"
         "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
@@ -453,7 +498,8 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
         "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
         "I;\n"
         "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
-        "orange arrow: w in space, R w. (MetMat) distance to the exact attitude at t = %g: midpoint %.3f,\n"
+        "orange arrow: w in space, R w. The distance of (MetMat) to the exact attitude at t = %g: "
+        "midpoint %.3f,\n"
         "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
         "figures/attitude.mp4.\n"
         "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
@@ -465,8 +511,8 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
     return 0;
 }
 
-/* Renders every frame, the video and the filmstrip. */
-static int render(frames *fr, const anim_config *cfg, const char *figdir)
+/* Renders every frame, the video and the filmstrip, with the progress (modes: progress.h). */
+static int render(frames *fr, const anim_config *cfg, const char *figdir, int modes)
 {
     char path[4096], mp4[4096];
     snprintf(path, sizeof path, "%s/attitude", figdir);
@@ -481,9 +527,13 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir)
     sus_mat3_identity(I3);
     sus_refatt_init(&ra, fr->ex, 0.0, I3);
     fr->strip = owned.strip = malloc(6 * (size_t)fr->W * fr->H * sizeof(uint32_t));
-    for (int f = 0; f < fr->nframes; f++)
+    progress_start("animation", "frame", fr->nframes, modes);
+    for (int f = 0; f < fr->nframes; f++) {
+        progress_tick(f, NULL);
         if (draw_frame(fr, &ra, f, figdir, &video) != 0)
             return -1;
+    }
+    progress_end();
     close_video(video, mp4);
     if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, figdir) != 0)
         return -1;
@@ -494,8 +544,9 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir)
 
 int main(int argc, char **argv)
 {
+    const int modes = progress_modes(&argc, argv);
     if (argc != 4) {
-        fprintf(stderr, "usage: animation CONFIG FIGDIR DATADIR\n");
+        fprintf(stderr, "usage: animation [--quiet] CONFIG FIGDIR DATADIR\n");
         return 2;
     }
     gsl_set_error_handler_off();
@@ -526,11 +577,7 @@ int main(int argc, char **argv)
         return 1;
     }
     fr.px = sus_plot_gl_context_pixels(gl);
-    const double t0 = sus_sys_now();
-    if (render(&fr, &cfg, figdir) != 0 || write_caption(&cfg, &fr, figdir) != 0)
+    if (render(&fr, &cfg, figdir, modes) != 0 || write_caption(&cfg, &fr, figdir) != 0)
         return 1;
-    const double elapsed = sus_sys_now() - t0;
-    printf("animation: %d frames of %dx%d rendered and written in %.2f s: %.1f frames/s\n", fr.nframes, fr.W,
-           fr.H, elapsed, fr.nframes / elapsed);
     return 0; /* the rows and the GL context are released at exit (release_owned) */
 }

@@ -2,6 +2,7 @@
 #include "cli_options.h"
 
 #include "echo.h"
+#include "paper_ref.h"
 
 #include <errno.h>
 #include <float.h>
@@ -195,10 +196,18 @@ int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, cons
 
 /* ---- --help ---- */
 
+/* The texts cite the paper by its LaTeX labels, as the code does; a reader gets the published
+ * numbers ("(ContDyn)" -> "eq. (27)", paper_ref.h). One text at a time: the buffer is reused. */
+static const char *numbered(const char *text)
+{
+    static char buf[8192];
+    return sus_paper_numbered(text, buf, sizeof buf);
+}
+
 /* Lines of text, the first after `first`, the others after `indent`; an empty line stays empty. */
 static void help_lines(FILE *fp, const char *text, const char *first, const char *indent)
 {
-    const char *p = text;
+    const char *p = numbered(text);
     for (int n = 0; *p || n == 0; n++) {
         const char *nl = strchr(p, '\n');
         const int len = nl ? (int)(nl - p) : (int)strlen(p);
@@ -216,17 +225,19 @@ void cli_line(FILE *fp, int man, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(buf, sizeof buf, fmt, ap);
     va_end(ap);
+    const char *text = numbered(buf);
     if (!man) {
-        fprintf(fp, "%22s%s\n", "", buf);
+        fprintf(fp, "%22s%s\n", "", text);
         return;
     }
-    roff_text(fp, buf, (int)strlen(buf));
+    roff_text(fp, text, (int)strlen(text));
     fputc('\n', fp);
 }
 
 void cli_help(const cli_spec *spec, FILE *fp)
 {
-    fprintf(fp, "usage: %s\n\n%s\n\n", spec->synopsis, spec->description);
+    fprintf(fp, "usage: %s\n\n", spec->synopsis);
+    fprintf(fp, "%s\n\n", numbered(spec->description));
     for (int i = 0; i < spec->nopts; i++) {
         const cli_option *o = &spec->opts[i];
         char head[64];
@@ -273,7 +284,7 @@ static int indent_of(const char *line)
 static void roff_body(FILE *fp, const char *text)
 {
     enum { PROSE, KEPT, LIST } mode = PROSE;
-    for (const char *p = text; *p;) {
+    for (const char *p = numbered(text); *p;) {
         const char *nl = strchr(p, '\n');
         const int len = nl ? (int)(nl - p) : (int)strlen(p), ind = len ? indent_of(p) : 0;
         const char *next = nl ? nl + 1 : p + len;

@@ -11,9 +11,9 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 {
     snprintf(
         buf, len,
-        "Convergence of the paper's four DSPs (the order claims of the general-DSP proposition, PropoFinal "
+        "Convergence of the paper's four DSPs (the order claims of (nolabel:proposition-5.2), (PropoFinal) "
         "and\n"
-        "TeoL). Regenerate: make figures (src/prog/figure_convergence.c, src/render/convergence_plot.c).\n"
+        "(TeoL)). Regenerate: make figures (src/prog/figure_convergence.c, src/render/convergence_plot.c).\n"
         "eps = 2^-j, j = 0..10; inertia as printed, w(0) = (0.4, 0.5). Local errors: one step from the "
         "exact\n"
         "solution at t_k, largest over t_k in {0, 3, 7, 12, 20}; global errors at t = 10 from t = 0. "
@@ -24,12 +24,12 @@ static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
         "global\n"
         "error slope p, so the legends of (a), (c), (e) read one more than the order.\n"
         "(a), (b) w: p = 1, 2, 4, 2 (euler, midpoint, rk4, variational).\n"
-        "(c), (d) (MetMat) distance on SO(3): solid R_{k+1} = R_k cay(eps w_k) (Algorithm (algo)): order 1 "
+        "(c), (d) the distance of (MetMat) on SO(3): solid R_{k+1} = R_k cay(eps w_k) ((algo)): order 1 "
         "for\n"
-        "every method (TeoL), the four curves coincide locally; dashed: cayley-mid, order min(2, p).\n"
+        "every method ((TeoL)), the four curves coincide locally; dashed: cayley-mid, order min(2, p).\n"
         "(e), (f) lambda: s = p with lambda(w^{k+1}); the variational (taualg) does not converge: its local "
         "error\n"
-        "tends to |O_0| (up to %.4f over these t_k), as PropoFinal states.\n"
+        "tends to |O_0| (up to %.4f over these t_k), as (PropoFinal) states.\n"
         "Data: data/convergence.csv. Fitted slopes with their windows: build/claims.tsv (make check).\n",
         f->o0max);
 }

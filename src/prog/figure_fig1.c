@@ -47,8 +47,8 @@ static void draw_corrected(cairo_t *cr, const fig1 *f, double W, double H,
     sus_plot_extend(&lo, &hi, f->lam_corr, n, 1, 0);
     sus_plot_axes_cell(&ax, cr, W, H, ROWS, 2, 6, 0.0, T_END, lo, hi, 0, 0);
     sus_plot_frame(&ax, "t", "\xce\xbb, variational, (36) corrected", "(g)");
-    sus_plot_series(&ax, f->ex.t, f->ex.lambda, n, 1, ref);
     sus_plot_markers(&ax, f->var.t, f->lam_corr, n, MARK_EVERY, &cor);
+    sus_plot_series(&ax, f->ex.t, f->ex.lambda, n, 1, ref); /* on top: the markers sit on it */
     const sus_plot_style legg[2] = {*ref, cor};
     sus_plot_legend(&ax, legg, 2, 1);
     lo = INFINITY;
@@ -92,8 +92,8 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_extend(&lo, &hi, top[p].y, n, 1, 0);
         sus_plot_axes_cell(&ax, cr, W, H, ROWS, 2, p, 0.0, T_END, lo, hi, 0, 0);
         sus_plot_frame(&ax, "t", top[p].ylabel, top[p].letter);
-        sus_plot_series(&ax, f->ex.t, top[p].yref, n, 1, &ref);
         sus_plot_markers(&ax, f->mid.t, top[p].y, n, MARK_EVERY, top[p].st);
+        sus_plot_series(&ax, f->ex.t, top[p].yref, n, 1, &ref); /* on top: the markers sit on it */
         const sus_plot_style leg[2] = {ref, *top[p].st};
         sus_plot_legend(&ax, leg, 2, p == 1 ? 3 : 1);
     }
@@ -216,7 +216,7 @@ static void caption(const fig1 *f, const sus_exact *ex, long N, char *cap, size_
         "(c) lambda of the midpoint rule; (d) lambda of the variational integrator (taualg): "
         "offset from "
         "the\n"
-        "reference by O_0 of PropoFinal (at most %.3g here), the inconsistent multiplier.\n"
+        "reference by O_0 of (PropoFinal) (at most %.3g here), the inconsistent multiplier.\n"
         "(e) w3 is 0 exactly for both (imposed by (DSP)); plotted is the unreduced constraint of "
         "the\n"
         "reconstructed velocity, |<e3, vee(R_k^T R_k w^_k)>| <= %.2g (round-off; zeros are not "

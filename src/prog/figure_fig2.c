@@ -49,9 +49,11 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_extend(&lo, &hi, panels[p].yv, f->var.n, 1, 0);
         sus_plot_axes_cell(&ax, cr, W, H, 3, 2, p, 0.0, T_END, lo, hi, 0, 0);
         sus_plot_frame(&ax, "t", panels[p].ylabel, letters[p]);
-        sus_plot_series(&ax, f->ex.t, panels[p].yref, f->ex.n, 1, &ref);
+        /* the reference last, on top: where a method is exact (E of the midpoint rule in (d))
+         * its markers would hide it */
         sus_plot_markers(&ax, f->mid.t, panels[p].ym, f->mid.n, 1, &mid);
         sus_plot_markers(&ax, f->var.t, panels[p].yv, f->var.n, 1, &var);
+        sus_plot_series(&ax, f->ex.t, panels[p].yref, f->ex.n, 1, &ref);
         static const int corner[4] = {1, 1, 3, 5};
         sus_plot_legend(&ax, leg, 3, corner[p]);
     }
@@ -71,9 +73,9 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, fmax(lo, 1e-17), hi, 0, 1);
     sus_plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
                letters[5]);
-    sus_plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
     sus_plot_markers(&ax, f->mid.t, f->dist[1], f->mid.n, 1, &mid);
     sus_plot_markers(&ax, f->var.t, f->dist[2], f->var.n, 1, &var);
+    sus_plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
     sus_plot_legend(&ax, leg, 3, 2);
 }
 

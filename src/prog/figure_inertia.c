@@ -120,9 +120,9 @@ int main(int argc, char **argv)
     snprintf(cap, sizeof cap,
              "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
              "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
-             "(RGB2)/(ContDyn)/(LagMult)\n"
-             "use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); a symmetric body "
-             "with the\n"
+             "(RGB2), (ContDyn)\n"
+             "and (LagMult) use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); "
+             "a symmetric body with the\n"
              "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t in "
              "[0, %g].\n"
              "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row - w_col|, at most %.3f. Steady rotations:\n"

@@ -7,6 +7,7 @@
 #include "exact.h"
 #include "fig_output.h"
 #include "fig_setup.h"
+#include "paper_ref.h"
 #include "perturbation.h"
 #include "plot.h"
 #include "registry.h"
@@ -174,9 +175,10 @@ static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, doub
     f->wk[0][1] = x[1];
     for (int k = 0; k < NSTEP_A; k++) {
         if (sus_exp_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_EXP_PERTURB_OK) {
+            char eq2[32];
             fprintf(stderr,
-                    "figure_perturbation: (Eq2) failed on period %d, t in [%g, %g], Newton residual %.3g\n",
-                    k,
+                    "figure_perturbation: %s failed on period %d, t in [%g, %g], Newton residual %.3g\n",
+                    sus_paper_name("Eq2", eq2, sizeof eq2), k,
                     EPS_A * k, EPS_A * (k + 1), P.sus_exp_newton_res);
             return 3;
         }

@@ -1,10 +1,11 @@
 /* Where each integrator stops working: a map over the dimensionless step h = eps k and the
  * initial angle on the energy ellipse, coloured by the class of the run (stability.h), with
- * the linear stability limits drawn on top. Usage: figure_stability FIGDIR DATADIR */
+ * the linear stability limits drawn on top. Usage: figure_stability [--quiet] FIGDIR DATADIR */
 #include "atomic_file.h"
 #include "fig_output.h"
 #include "fig_setup.h"
 #include "plot.h"
+#include "progress.h"
 #include "stability.h"
 
 #include <math.h>
@@ -142,26 +143,40 @@ static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t
         paper->k, NH, SUS_EXP_STAB_BRANCH_H, limits);
 }
 
-/* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h.
- * Returns the number of runs that ended with a non-finite error but no failure class. */
-static int run_maps(stab_fig *f, const sus_exact *paper)
+/* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h, with
+ * its progress (the work counted in steps: a run's cost follows its step count, from 40000 at the
+ * smallest h to 50 in the middle). Returns the number of runs that ended with a non-finite error
+ * but no failure class. */
+static int run_maps(stab_fig *f, const sus_exact *paper, int modes)
 {
-    for (int i = 0; i < NH; i++)
+    long per_method = 0, done = 0;
+    for (int i = 0; i < NH; i++) {
         f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
+        per_method += NANGLE * sus_exp_stability_steps(f->hs[i]);
+    }
+    progress_start("figure_stability", NULL, per_method * f->nm, modes);
     int unclassified = 0;
     for (int m = 0; m < f->nm; m++) {
-        sus_exp_stability_map(paper, sus_step_method_get(m)->type, f->hs, NH, NANGLE, f->res[m]);
+        const sus_stepper_type *st = sus_step_method_get(m)->type;
+        for (int i = 0; i < NH; i++) { /* one h at a time, for the progress: the same runs */
+            progress_tick(done, "method %d of %d (%s)", m + 1, f->nm, st->name);
+            sus_exp_stability_map(paper, st, &f->hs[i], 1, NANGLE, &f->res[m][i * NANGLE]);
+            done += NANGLE * sus_exp_stability_steps(f->hs[i]);
+        }
         f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
         for (int j = 0; j < NH * NANGLE; j++) {
             const sus_exp_stab_result *r = &f->res[m][j];
             unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
         }
     }
+    progress_end();
     return unclassified;
 }
 
+/* --quiet: no progress line */
 int main(int argc, char **argv)
 {
+    const int modes = progress_modes(&argc, argv);
     sus_model model;
     sus_exact paper;
     const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);
@@ -175,7 +190,7 @@ int main(int argc, char **argv)
     f->limit = calloc((size_t)f->nm, sizeof *f->limit);
     if (!f->res || !f->limit)
         return 1;
-    const int unclassified = run_maps(f, &paper);
+    const int unclassified = run_maps(f, &paper, modes);
     if (unclassified) {
         fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
                 unclassified);

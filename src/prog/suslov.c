@@ -7,6 +7,7 @@
 #include "driver.h"
 #include "exact_run.h"
 #include "model.h"
+#include "paper_ref.h"
 #include "progress.h"
 #include "suslov_cli.h"
 
@@ -55,7 +56,7 @@ static int take_row(void *vctx, const sus_row *r)
 {
     csv_ctx *ctx = vctx;
     if ((ctx->calls++ & ctx->tick_mask) == 0)
-        progress_tick(r->k, r->t);
+        progress_tick(r->k, "t = %.6g", r->t);
     if (!isfinite(sus_energy(ctx->m, r->w))) {
         ctx->blowup = 1;
         ctx->blow_k = r->k;
@@ -100,10 +101,12 @@ static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
     if (isfinite(st->det))
         snprintf(det, sizeof det, ", Jacobian determinant %.3g", st->det);
     const int finite = isfinite(st->residual) && isfinite(st->scale);
+    char regloc[200];
     const char *why =
         rep->status == SUS_STEPPER_SINGULAR
-            ? "the step equation's root, continued from eps = 0, meets a fold where the Jacobian "
-              "of (REGLOC) vanishes: no root on that branch for this step"
+            ? sus_paper_numbered("the step equation's root, continued from eps = 0, meets a fold where the "
+                                 "Jacobian of (REGLOC) vanishes: no root on that branch for this step",
+                                 regloc, sizeof regloc)
         : finite ? "Newton did not converge, from the prediction nor along the continuation from eps = 0"
                  : "Newton's iteration overflowed";
     snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations", rep->step, rep->t,
@@ -179,11 +182,11 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
     *ctx = (csv_ctx){.fp = fp, .m = &a->model, .every = a->every, .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
     /* Progress only where a person watches stderr and the rows do not scroll over it. */
-    progress_start(!a->quiet && isatty(STDERR_FILENO) && (a->output != NULL || !isatty(STDOUT_FILENO)),
-                   a->steps);
+    progress_start("suslov", "step", a->steps,
+                   !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0);
     int rc = exact ? sus_run_exact(&cfg, a->w0, take_row, ctx, report)
                    : sus_run(&cfg, a->w0, take_row, ctx, report);
-    progress_erase();
+    progress_end();
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
         rc = SUS_RUN_BLOWUP;
         report->step = ctx->blow_k;

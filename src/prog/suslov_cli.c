@@ -8,6 +8,7 @@
 #include "exact_run.h"
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
+#include "paper_ref.h"
 #include "stepper.h"
 
 #include <float.h>
@@ -207,7 +208,8 @@ static const cli_option OPTIONS[] = {
                        "command line, method, eps, steps, body, w0 and units", set_header, NULL},
     {"--no-header", NULL, "bare CSV: no comment lines at all", set_header, NULL},
     {"--quiet", NULL, "no progress line (shown on a terminal stderr when a run takes > 1 s;\n"
-                      "without escape sequences under TERM=dumb or NO_COLOR)", set_quiet, NULL},
+                      "without escape sequences under TERM=dumb or NO_COLOR; never with\n"
+                      "NO_PROGRESS)", set_quiet, NULL},
     {"--version", NULL, "print the version (the git commit built from, or unknown) and exit", show_version,
      NULL},
     {"--help", NULL, "print this text and exit", show_help, NULL},
@@ -271,6 +273,8 @@ static const cli_section SECTIONS[] = {
     {"ENVIRONMENT",
      "NO_COLOR (non-empty), TERM=dumb\n"
      "    the progress line uses no escape sequence\n"
+     "NO_PROGRESS (non-empty)\n"
+     "    no progress line, as with --quiet\n"
      "SUSLOV_NO_O_TMPFILE (non-empty, for tests)\n"
      "    use a named temporary file instead of an unnamed one; every catchable fatal signal\n"
      "    then removes it\n"
@@ -303,8 +307,10 @@ static void method_list(void)
         const sus_step_method *me = sus_step_method_get(i);
         char order[16];
         snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->order);
+        char about[512];
         printf(fmt, me->type->name, me->family, order,
-               me->type->follows_recon ? SUS_RECON_NAMES[me->recon] : "own", me->about);
+               me->type->follows_recon ? SUS_RECON_NAMES[me->recon] : "own",
+               sus_paper_numbered(me->about, about, sizeof about));
     }
     cli_exit_stdout();
 }
@@ -461,8 +467,10 @@ static void check_run(suslov_args *a, const given *g)
     char bad[512];
     if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
         cli_die("%s", bad);
-    if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0)
-        cli_die("--inertia: %s", err);
+    if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0) {
+        char said[sizeof err]; /* the model cites the paper by labels; the reader gets numbers */
+        cli_die("--inertia: %s", sus_paper_numbered(err, said, sizeof said));
+    }
     check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);

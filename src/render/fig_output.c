@@ -1,9 +1,12 @@
 #include "fig_output.h"
 
 #include "atomic_file.h"
+#include "paper_ref.h"
 #include "plot.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 static int finish(sus_sys_atomic_file *af, const char *path)
 {
@@ -32,15 +35,21 @@ int sus_plot_fig_write_csv(const char *path, const char *header, int ncols, cons
     return finish(&af, path);
 }
 
+/* A caption cites the paper by its labels, as the code does; the reader gets the published numbers
+ * (paper_ref.h), each at most 2.5 times as long as its "(LABEL)" ("(TeoL)" -> "Proposition 5.1"). */
 int sus_plot_fig_write_text(const char *path, const char *text)
 {
     char err[512];
+    const size_t len = 3 * strlen(text) + 64;
+    char *numbered = malloc(len);
     sus_sys_atomic_file af;
-    if (sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
-        fprintf(stderr, "error: %s\n", err);
+    if (!numbered || sus_sys_atomic_file_open(&af, path, err, sizeof err) != 0) {
+        fprintf(stderr, "error: %s\n", numbered ? err : "out of memory");
+        free(numbered);
         return -1;
     }
-    fputs(text, af.fp);
+    fputs(sus_paper_numbered(text, numbered, len), af.fp);
+    free(numbered);
     return finish(&af, path);
 }
 

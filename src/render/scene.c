@@ -99,6 +99,7 @@ int sus_plot_scene_init(sus_plot_scene *s, const sus_model *mdl, int vw, int vh)
                  up[3] = {0.0, 0.0,
                           1.0}; /* far enough that a 1/3-wide viewport holds the body and its arrows */
     perspective(s->proj, 38.0, (double)vw / (double)vh, 0.5, 20.0);
+    s->line_scale = vh > 360 ? vh / 360.0 : 1.0;
     look_at(s->view, eye, up);
     return 0;
 }
@@ -154,6 +155,12 @@ static void box(void)
     glEnd();
 }
 
+const double SUS_PLOT_SCENE_RGB_AXES[3] = {0.30, 0.30, 0.30};
+const double SUS_PLOT_SCENE_RGB_E3[3] = {0.85, 0.10, 0.10};
+const double SUS_PLOT_SCENE_RGB_OMEGA[3] = {0.95, 0.60, 0.05};
+const double SUS_PLOT_SCENE_RGB_BOX[3] = {0.55, 0.70, 0.90};
+const double SUS_PLOT_SCENE_RGB_STAND[3] = {0.15, 0.15, 0.15};
+
 static void arrow(const double from[3], const double to[3], double width)
 {
     glLineWidth((float)width);
@@ -181,13 +188,13 @@ static void draw_e3_tip(const double m[16])
 }
 
 /* The fixed point and the stand it hangs from (space frame). */
-static void draw_stand(void)
+static void draw_stand(const sus_plot_scene *s)
 {
     const double origin[3] = {0, 0, 0}, base[3] = {0.0, 0.0, -1.9};
     glDisable(GL_LIGHTING);
-    glColor3d(0.25, 0.25, 0.25);
-    arrow(origin, base, 3.0);
-    glPointSize(9.0f);
+    glColor3dv(SUS_PLOT_SCENE_RGB_STAND);
+    arrow(origin, base, 3.0 * s->line_scale);
+    glPointSize((float)(9.0 * s->line_scale));
     glBegin(GL_POINTS);
     glVertex3dv(origin);
     glEnd();
@@ -195,15 +202,16 @@ static void draw_stand(void)
 
 /* The trail of the tip of e3, fading with age. The frame's alpha must stay 1: Cairo reads the
  * buffer as premultiplied ARGB, where a colour above its alpha turns into garbage. */
-static void draw_trail(const sus_plot_scene_body *b)
+static void draw_trail(const sus_plot_scene *s, const sus_plot_scene_body *b)
 {
+    const double *c = SUS_PLOT_SCENE_RGB_E3;
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-    glLineWidth(2.0f);
+    glLineWidth((float)(2.0 * s->line_scale));
     glBegin(GL_LINE_STRIP);
     for (int i = 0; i < b->ntrail; i++) {
-        glColor4d(0.85, 0.15, 0.10, (double)(i + 1) / b->ntrail);
+        glColor4d(c[0], c[1], c[2], (double)(i + 1) / b->ntrail);
         glVertex3dv(b->trail[i]);
     }
     glEnd();
@@ -212,15 +220,15 @@ static void draw_trail(const sus_plot_scene_body *b)
 }
 
 /* w in the space frame, R w. */
-static void draw_omega(const sus_plot_scene_body *b)
+static void draw_omega(const sus_plot_scene *s, const sus_plot_scene_body *b)
 {
     const double origin[3] = {0, 0, 0};
     double ws[3], wtip[3];
     sus_mat3_vec(ws, b->R, b->w);
     for (int i = 0; i < 3; i++)
         wtip[i] = 2.0 * ws[i];
-    glColor3d(0.95, 0.60, 0.05);
-    arrow(origin, wtip, 3.0);
+    glColor3dv(SUS_PLOT_SCENE_RGB_OMEGA);
+    arrow(origin, wtip, 3.0 * s->line_scale);
 }
 
 /* The body: its axes e1, e2, e3 as arrows and its inertia box, lit by a light fixed in space;
@@ -230,11 +238,11 @@ static void draw_body(const sus_plot_scene *s, const double m[16])
     const double origin[3] = {0, 0, 0};
     glMultMatrixd(m);
     const double e[3][3] = {{1.3, 0, 0}, {0, 1.3, 0}, {0, 0, SUS_PLOT_SCENE_E3_TIP}};
-    glColor3d(0.30, 0.30, 0.30);
-    arrow(origin, e[0], 2.5);
-    arrow(origin, e[1], 2.5);
-    glColor3d(0.85, 0.10, 0.10);
-    arrow(origin, e[2], 3.5);
+    glColor3dv(SUS_PLOT_SCENE_RGB_AXES);
+    arrow(origin, e[0], 2.5 * s->line_scale);
+    arrow(origin, e[1], 2.5 * s->line_scale);
+    glColor3dv(SUS_PLOT_SCENE_RGB_E3);
+    arrow(origin, e[2], 3.5 * s->line_scale);
     glEnable(GL_LIGHTING);
     glEnable(GL_LIGHT0);
     glEnable(GL_COLOR_MATERIAL);
@@ -249,7 +257,7 @@ static void draw_body(const sus_plot_scene *s, const double m[16])
     gl_matrix(s->axes, A);
     glMultMatrixd(A);
     glScaled(s->half[0] * 0.8, s->half[1] * 0.8, s->half[2] * 0.8);
-    glColor3d(0.55, 0.70, 0.90);
+    glColor3dv(SUS_PLOT_SCENE_RGB_BOX);
     box();
     glDisable(GL_LIGHTING);
 }
@@ -269,8 +277,8 @@ void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, 
         draw_e3_tip(m);
         return;
     }
-    draw_stand();
-    draw_trail(b);
-    draw_omega(b);
+    draw_stand(s);
+    draw_trail(s, b);
+    draw_omega(s, b);
     draw_body(s, m);
 }

@@ -14,7 +14,15 @@ typedef struct {
     double half[3];          /* half extents of the box along its principal axes */
     double axes[3][3];       /* principal axes (columns) in the body frame */
     double proj[16], view[16]; /* column-major, as glLoadMatrixd takes them */
+    double line_scale;       /* line widths and points grow with the viewport: vh / 360, >= 1 */
 } sus_plot_scene;
+
+/* The scene's colours (RGB), so that a legend drawn beside it names them right. */
+extern const double SUS_PLOT_SCENE_RGB_AXES[3];  /* e1 and e2 */
+extern const double SUS_PLOT_SCENE_RGB_E3[3];    /* e3 and the trail of its tip */
+extern const double SUS_PLOT_SCENE_RGB_OMEGA[3]; /* w, drawn in space: R w */
+extern const double SUS_PLOT_SCENE_RGB_BOX[3];   /* the body's inertia box */
+extern const double SUS_PLOT_SCENE_RGB_STAND[3]; /* the stand, the fixed point at its top */
 
 typedef struct {
     double R[3][3];                /* attitude */

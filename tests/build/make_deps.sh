@@ -71,9 +71,10 @@ if make -n BUILD="$tmp/b" paper 2>/dev/null | grep -q 'deps.sh paper'; then ok; 
 # 4. distclean in a scratch tree: generated files go, committed ones stay.
 mkdir -p "$tmp/t/figures/attitude" "$tmp/t/data" "$tmp/t/paper" "$tmp/t/build/x"
 cp Makefile "$tmp/t/"
-keep="data/animation.cfg data/.gitkeep figures/.gitkeep figures/fig1.png paper/companion.tex paper/equations.txt"
+keep="data/animation.cfg data/.gitkeep figures/.gitkeep figures/fig1.png paper/companion.tex paper/equations.txt
+      paper/companion.pdf paper/methods.pdf paper/ledger.sha256"
 gone="figures/fig1.pdf figures/fig1.txt data/fig1.csv figures/attitude/frame_0000.png figures/attitude.mp4
-      figures/attitude.txt data/attitude.csv data/bench.tex paper/companion.pdf build/x/suslov"
+      figures/attitude.txt data/attitude.csv data/bench.tex paper/x.tmp build/x/suslov"
 for f in $keep $gone; do : >"$tmp/t/$f"; done
 (cd "$tmp/t" && make -s distclean >/dev/null 2>&1)
 for f in $keep; do [ -e "$tmp/t/$f" ] && ok || bad "distclean removed the committed $f"; done

@@ -125,16 +125,16 @@ bad_says "the multiplier at the default w0 overflows with this inertia: the line
 # what double precision cannot hold is refused for that reason, not called indefinite or put on w0
 bad_says "I_m positive definite but lost to cancellation" "too ill-conditioned for double precision" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0.99999999999999989,0,0.99999999999999989,1,0,0,0,1
-bad_says "I22/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a (ContDyn) coefficient" \
+bad_says "I22/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a coefficient I_ij/|I_m| of eq. (27)" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1e-300,9.9999999999999956e-146,0,9.9999999999999956e-146,1e10,0,0,0,1
-bad_says "|(I31, I32)| overflows" "too extreme for double precision: the size of the (ContDyn) field" \
+bad_says "|(I31, I32)| overflows" "too extreme for double precision: the size of the field of eq. (27)" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1,0,1.7e308,1.7e308,1
-bad_says "I11/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a (ContDyn) coefficient" \
+bad_says "I11/|I_m| = 1e10/1e-305 overflows" "too extreme for double precision: a coefficient I_ij/|I_m| of eq. (27)" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1e10,9.9999999999999956e-146,0,9.9999999999999956e-146,1e-300,0,0,0,1
-bad_says "I31 I22 = 1e310 overflows" "too extreme for double precision: a (LagMult) coefficient" \
+bad_says "I31 I22 = 1e310 overflows" "too extreme for double precision: a coefficient I32 Ij1 - I31 Ij2 of eq. (28)" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0,0,0,1e10,0,1e300,1,1 --omega0 1e-200,1e-200
 bad_says "I32 I11 = 1e310 overflows (the other coefficient of O_0)" \
-    "too extreme for double precision: a (LagMult) coefficient" \
+    "too extreme for double precision: a coefficient I32 Ij1 - I31 Ij2 of eq. (28)" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1e10,0,0,0,1,0,1,1e300,1 --omega0 1e-200,1e-200
 # I_m = diag(1e-200, 1e200) is positive definite with |I_m| = 1 and every coefficient in range: a
 # body; with I31 = I32 = 0, c(w) = 0 and (ContDyn) keeps w = w0 on every row
@@ -343,8 +343,8 @@ if command -v script >/dev/null; then
     SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv'" /dev/null >"$T/tty" 2>&1; rc=$?
     SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output '$T/pr.csv' --quiet" /dev/null >"$T/ttyq" 2>&1
     SUSLOV_PROGRESS_AFTER=0 "$S" --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output "$T/pr.csv" 2>"$T/notty"
-    check "progress on a terminal: 'step .. of 200000 .. steps/s .. left' then erased (ends with CR ESC[K); nothing with --quiet or without a terminal" \
-        sh -c "test $rc = 0 && grep -q 'suslov: step [0-9]* of 200000 (.*), t = .*steps/s, .* s left' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b && test ! -s '$T/ttyq' -a ! -s '$T/notty'"
+    check "progress on a terminal: 'step .. of 200000 (..%), t = .., .. s elapsed' then erased (ends with CR ESC[K); nothing with --quiet or without a terminal" \
+        sh -c "test $rc = 0 && grep -q 'suslov: step [0-9]* of 200000 (.*), t = .*, [0-9]* s elapsed' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b && test ! -s '$T/ttyq' -a ! -s '$T/notty'"
 fi
 
 # a write error (emit asks the run to stop: SUS_RUN_STOPPED) is status 1 with one line,

@@ -284,7 +284,7 @@ static void small_statements(const sus_model *m, const sus_exact *ex)
 
     /* The corrected (cayinver) (3,3) = 1 adds (c(w^{k+1}) - c(w^k))/eps: consistent, but s = 0, not
      * the midpoint's 2. The paper makes no statement on the corrected entry (the expectation s = 2
-     * is the issue's), so this is an extension: s = 0 (an order is an integer: a tenth of the gap). */
+     * is ours), so this is an extension: s = 0 (an order is an integer: a tenth of the gap). */
     double err[NJ5], eps[NJ5];
     for (int j = 0; j < NJ5; j++) {
         eps[j] = eps_of(j);

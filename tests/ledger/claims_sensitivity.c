@@ -256,7 +256,7 @@ static void numbers(const sens_row *rows)
     ledger_number("SensFigTwoEnergyZero", e0);
     ledger_number("SensFigTwoVarEnergyEnd", e0 * (1.0 + p->var[PAPER_EPS_INDEX].denergy));
     ledger_number("SensFigTwoSteps", (double)p->var[PAPER_EPS_INDEX].steps);
-    /* the paper's body from its own w0 at eps = 2, 4, 8: the runs made for the review */
+    /* the paper's body from its own w0 at eps = 2, 4, 8, the three largest steps of the sweep */
     static const char *const name[] = {"Two", "Four", "Eight"};
     for (int i = NEPS - 3; i < NEPS; i++) {
         char n1[64];

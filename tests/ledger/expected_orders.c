@@ -53,3 +53,19 @@ const expected_order *expected_order_of(const char *method)
             return &TABLE[i];
     return NULL;
 }
+
+/* taylor-adaptive holds each step's estimate to TOL (as Jorba & Zou 2005 and heyoka do);
+ * exact-attitude shares TOL out over the run (w and lambda are the closed form, and the flow of
+ * R' = R w^ keeps norms, so the local errors add up to a bound of the global one). */
+static const expected_tol TOL_TABLE[] = {
+    {"taylor-adaptive", "adaptive", TOL_LOCAL, "Jorba & Zou 2005 (the step's estimate)"},
+    {"exact-attitude", "exactatt", TOL_GLOBAL, "its step file's top (a budget over the run)"},
+};
+
+const expected_tol *expected_tol_of(const char *method)
+{
+    for (size_t i = 0; i < sizeof TOL_TABLE / sizeof TOL_TABLE[0]; i++)
+        if (strcmp(TOL_TABLE[i].method, method) == 0)
+            return &TOL_TABLE[i];
+    return NULL;
+}

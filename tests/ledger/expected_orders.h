@@ -25,4 +25,17 @@ typedef struct {
 
 const expected_order *expected_order_of(const char *method);
 
+/* What a tolerance-driven method's TOL bounds (stepper.h, sus_tol_ops; it has no fixed step to take
+ * an order in): TOL_LOCAL, each step's own error estimate, so that the global error is up to N of
+ * them; TOL_GLOBAL, the global error of R at every time, up to round-off. key starts the ids of its
+ * ledger lines (tests/ledger/claims_adaptive.c). */
+typedef struct {
+    const char *method;
+    const char *key;
+    enum { TOL_LOCAL = 1, TOL_GLOBAL } bounds;
+    const char *ref; /* where that is stated */
+} expected_tol;
+
+const expected_tol *expected_tol_of(const char *method);
+
 #endif

@@ -9,7 +9,7 @@
  *     order takes longer steps at the same tolerance, so the first tolerance of a new order can
  *     take fewer steps than the last of the old.) And w(50) within 10 N TOL of the closed form
  *     (exact.h), the bound of claims_adaptive.c;
- *   - the issue's case: I_m = [1 1-1e-10; 1-1e-10 1] to t = 10 at TOL 1e-6 costs no more steps
+ *   - a near-singular case: I_m = [1 1-1e-10; 1-1e-10 1] to t = 10 at TOL 1e-6 costs no more steps
  *     than at 1e-15 (it took 10^6 steps and failed);
  *   - the settling step keeps the promise of a step: from the state it starts at, its w and its
  *     attitude increment are within TOL of the exact motion over the rest of the run (w by the

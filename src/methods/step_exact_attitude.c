@@ -1,0 +1,304 @@
+/* exact-attitude: a tolerance-driven method that uses what is known. w(t) and lambda(t) come from
+ * the closed form (exact.h, evaluated by exact_fast.h with one exp; lambda = (LagMult) of it), so
+ * the only equation left to integrate is the linear one R' = R w^(t), carried as a unit
+ * quaternion, q' = 1/2 q (x) (0, w).
+ *
+ * Tolerance. TOL bounds dist(R, R_ref) = |R R_ref^T - I|_F over the whole run, up to round-off. For
+ * unit quaternions dist <= 2 sqrt2 |q - q_ref| (a rotation by theta has dist 2 sqrt2 sin(theta/2),
+ * and |q - q_ref| = 2 sin(theta/4) for the nearer sign), so the method works with tolq = TOL /
+ * (2 sqrt2) in |dq|. The flow of q' = 1/2 q (x) (0, w) keeps norms, so the error at any time is at
+ * most the sum of the local errors of the steps taken so far, plus the tail's (below). The steps
+ * share a budget: each accepted step's local error estimate is at most rate h, rate = (budget -
+ * spent) / (t_stop - t), so the estimates summed never exceed the budget: tolq for a run that ends
+ * before the tail, tolq / 2 for one that reaches it, the tail taking the other half. t_stop is t_end
+ * or the start of the tail, where the integration stops exactly.
+ *
+ * The tail. w(t) -> w_inf at the rate k. Once half the closed-form bound of the integral of
+ * |w - w_inf| from t on (exact_tail.h; half: the quaternion's share) is at most tolq / 2, one step
+ * jumps to t_end: q(T) = q(t*) (x) exp((T - t*) w_inf / 2), the steady rotation in closed form. So
+ * the cost of a run stops growing with T. Its error grows with T all the same, as any method's
+ * must: a step that turns R by the angle theta computes theta in double, so it is off by about
+ * u theta; in the tail theta = (T - t*) |w_inf| (w_inf and T known to a few roundings; dR/dT = R w^
+ * moves R by |w| per unit of T), so the absolute error grows like u T |w_inf|: the conditioning of
+ * the problem itself, not of the method (tests/unit/test_exact_attitude.c holds it to a bound of
+ * that form at T = 1e4 and 1e6).
+ *
+ * Steps: the Taylor series of w (the Cauchy recursion of (ContDyn) seeded by the closed form's
+ * w(t), which is w's own series) and of q, to degree d, from taylor_series.h, over the longest step
+ * allowed, H = rho(t) / 2 with rho(t) = |s(t) + i pi/2| / k the distance from t to w's nearest
+ * complex singularity (sech and tanh of s = s0 + sigma k t have poles at s = i pi/2 + i pi n). The
+ * sum through d (the degree-(d-1) sum locally extrapolated) is off by the terms past d. Over a step
+ * s H they fall, from one degree to the next, by at most a s with a = H max(1 / rho, |w|_max /
+ * (2 (d + 2))): the nearest singularity's ratio, and the rotation's, whose terms go like x^n / n!,
+ * x = h |w| / 2. Projected from each of the last three terms (a conjugate pair of singularities makes
+ * single terms dip, so one alone can mislead), the terms past d sum to at most
+ *     est(s) = s^{d+1} B / (1 - a s),   B = max(|Q_d| a, |Q_{d-1}| a^2, |Q_{d-2}| a^3),
+ * with h folded into the coefficients (X_n = x_n H^n, so the step s H has X_n s^n). The step takes
+ * the largest s <= 1 with a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms)
+ * and 2 B s^d <= rate H, so that est(s) <= rate s H: one series a step, never a retry.
+ *
+ * The degree, by TOL (DEGREES): the one with the least measured time to t = 50 over the paper's,
+ * the general and the stiff bodies of tests/unit/bodies.h (geometric mean of time over the best
+ * degree's), decade by decade; within two degrees of it the time changes little. A Magnus6 step
+ * (Blanes, Casas & Ros; three Gauss nodes) on the same closed-form w was measured beside these: with
+ * an error estimate worth the name (step doubling: two halves against one whole step) a pair of
+ * half steps costs as much as a Taylor step of low degree and advances less far than a step of the
+ * best degree, so the Taylor series was the cheaper at every tolerance on the general bodies; it is
+ * not part of the method.
+ *
+ * R stays in SO(3) to round-off: q is normalised at every step and R built from it. w is the
+ * closed form at every step's end (|E - E0| a few u: w = L^{-T} u with |u| = r), w3 = 0. */
+#include "exact_attitude.h"
+
+#include "exact.h"
+#include "exact_fast.h"
+#include "exact_tail.h"
+#include "quaternion.h"
+#include "taylor_series.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TAIL_SHARE 0.5
+#define RADIUS_SHARE 0.5
+#define DIST_PER_Q 2.8284271247461903 /* 2 sqrt2: dist(R, R') <= 2 sqrt2 |q - q'| */
+#define HALF_PI 1.5707963267948966
+
+typedef enum { KIND_TAYLOR, KIND_TAIL } step_kind;
+
+/* One degree of the series: series_of computes the rows to degree order over a step h from w. */
+typedef struct {
+    int order; /* N + 1, the degree of the sums */
+    void (*series_of)(const sus_model *m, double h, const double w[2], taylor_series *ts);
+} degree;
+
+struct sus_tol_work {
+    const sus_model *m;
+    sus_exact ex;
+    sus_exact_fast f;
+    double tolq;   /* TOL in |dq| */
+    double w_max;  /* r |L^{-1}|_F >= |w(t)| for real t */
+    double t_tail; /* the tail from here on */
+    double spent;  /* the accepted steps' estimates, summed */
+    const degree *deg;
+    step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
+    double t0, h, q0[4];
+    taylor_series ts; /* its series (q's rows scaled to its length) */
+};
+
+/* ---- the degree by TOL ---- */
+
+#define SERIES(N)                                                                                           \
+    static void series##N(const sus_model *m, double h, const double w[2], taylor_series *ts)               \
+    {                                                                                                       \
+        series(m, N, h, w, 1, ts);                                                                          \
+    }
+SERIES(11)
+SERIES(13)
+SERIES(15)
+SERIES(17)
+
+/* The degree for TOL >= tol_min; the first row whose tol_min TOL reaches. */
+static const struct {
+    double tol_min;
+    degree d;
+} DEGREES[] = {
+    {3.2e-4, {11, series11}}, {3.2e-6, {13, series13}}, {3.2e-10, {15, series15}}, {0.0, {17, series17}},
+};
+
+static const degree *degree_for(double tol)
+{
+    int i = 0;
+    while (!(tol >= DEGREES[i].tol_min))
+        i++;
+    return &DEGREES[i].d;
+}
+
+int sus_step_exact_attitude_order(double tol)
+{
+    return degree_for(tol)->order;
+}
+
+/* ---- one step ---- */
+
+/* The distance from t to w's nearest complex singularity (top of the file). */
+static double radius(const sus_tol_work *wk, double t)
+{
+    const double s = wk->f.s0 + wk->f.ks * t;
+    return sqrt(s * s + HALF_PI * HALF_PI) / wk->ex.k; /* |s| < 1e150: no overflow */
+}
+
+/* Where the integration stops: t_end, or the start of the tail. */
+static double stop_of(const sus_tol_work *wk, double t_end)
+{
+    return t_end > wk->t_tail ? wk->t_tail : t_end;
+}
+
+/* The allowed local error per unit time from t on (top of the file). */
+static double rate_of(const sus_tol_work *wk, double t, double t_end)
+{
+    const double budget = t_end > wk->t_tail ? (1.0 - TAIL_SHARE) * wk->tolq : wk->tolq;
+    /* a caller that moves t_end past the tail after spending more than its share gets a sixteenth
+     * of the share to go on with (sus_run_tol never does: its t_end is fixed) */
+    const double left = budget - wk->spent > 0.0 ? budget - wk->spent : budget / 16.0;
+    return left / (stop_of(wk, t_end) - t);
+}
+
+/* |Q_n|_2 over the four components. */
+static double quat_row(const taylor_series *ts, int n)
+{
+    const v2d p = ts->P[n], m = ts->M[n];
+    return sqrt(p[0] * p[0] + p[1] * p[1] + m[0] * m[0] + m[1] * m[1]);
+}
+
+/* q <- q (x) sum_{n <= d} Q_n theta^n. */
+static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4])
+{
+    v2d P = {0.0, 0.0}, M = {0.0, 0.0};
+    for (int n = d; n >= 0; n--) {
+        P = P * theta + ts->P[n];
+        M = M * theta + ts->M[n];
+    }
+    const double dq[4] = {P[0], M[0], M[1], P[1]};
+    double p[4];
+    sus_quat_mul(p, q, dq);
+    memcpy(q, p, sizeof p);
+}
+
+/* The bound, per degree, on how the terms past the last fall over a step H from t (top of the
+ * file): the nearest singularity's H / rho, or the rotation's x / (d + 2), x = H |w|_max / 2. */
+static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int d)
+{
+    return H * fmax(1.0 / rho, wk->w_max / (2.0 * (d + 2)));
+}
+
+/* A step of at most left from (t, w, q) whose estimate is at most rate h (top of the file): the
+ * series over H, the step s H, q's rows rescaled to it (dense output reads them), q advanced.
+ * Returns 0, or -1 for a series that overflowed (nothing advanced). */
+static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2], double q[4],
+                       double *h, double *est)
+{
+    const int d = wk->deg->order;
+    const double rho = radius(wk, t), H = fmin(left, RADIUS_SHARE * rho);
+    wk->deg->series_of(wk->m, H, w, &wk->ts);
+    const double a = decay_per_degree(wk, H, rho, d);
+    const double q2 = quat_row(&wk->ts, d - 2), q1 = quat_row(&wk->ts, d - 1), q0 = quat_row(&wk->ts, d);
+    const double B = fmax(q0 * a, fmax(q1 * a * a, q2 * a * a * a)); /* the envelope at d + 1 */
+    double s = fmin(1.0, 0.5 / a);
+    if (s * q0 > 0.5 * q1) /* the last two terms halve too */
+        s = 0.5 * q1 / q0;
+    if (2.0 * B * pow(s, d) > rate * H) /* s^(d+1) B / (1 - s a) <= rate s H, 1 - s a >= 1/2 */
+        s = pow(rate * H / (2.0 * B), 1.0 / d);
+    double sn = 1.0;
+    for (int j = 1; j <= d; j++) { /* q's rows: w's are read no more */
+        sn *= s;
+        wk->ts.P[j] *= sn;
+        wk->ts.M[j] *= sn;
+    }
+    *h = s * H;
+    *est = sn * s * B / (1.0 - s * a);
+    if (!isfinite(B))
+        return -1;
+    taylor_sum(&wk->ts, d, 1.0, q);
+    return 0;
+}
+
+/* The steady rotation over tau: q <- q (x) exp(tau w_inf / 2). */
+static void tail_rotate(const sus_tol_work *wk, double tau, double q[4])
+{
+    const double n = hypot(wk->f.winf[0], wk->f.winf[1]);
+    double s, c, p[4];
+    sus_so3_sincos(0.5 * tau * n, &s, &c);
+    const double f = n > 0.0 ? s / n : 0.5 * tau; /* sin(tau |w_inf| / 2) / |w_inf| */
+    const double dq[4] = {c, f * wk->f.winf[0], f * wk->f.winf[1], 0.0};
+    sus_quat_mul(p, q, dq);
+    memcpy(q, p, sizeof p);
+}
+
+/* w and lambda at t from the closed form, and the attitude from q. */
+static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3], double *lambda,
+                     sus_attitude *att)
+{
+    sus_exact_fast_omega(&wk->f, t, w);
+    w[2] = 0.0;
+    *lambda = sus_lagmult(wk->m, w);
+    sus_quat_to_attitude(q, att);
+}
+
+/* ---- the tolerance-driven operations ---- */
+
+static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2])
+{
+    sus_tol_work *wk = malloc(sizeof *wk);
+    if (!wk)
+        return NULL;
+    *wk = (sus_tol_work){.m = m, .tolq = tol / DIST_PER_Q, .deg = degree_for(tol)};
+    if (sus_exact_init(&wk->ex, m, w0) != 0 || sus_exact_fast_init(&wk->f, &wk->ex) != 0) {
+        free(wk);
+        return NULL;
+    }
+    const sus_exact *ex = &wk->ex;
+    const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
+    wk->w_max = sqrt(a * a + b * b + c * c) * ex->r;
+    /* half the bound is the quaternion's error; that half at most the tail's share of tolq */
+    wk->t_tail = sus_exact_tail_time(&wk->ex, 2.0 * TAIL_SHARE * wk->tolq);
+    return wk;
+}
+
+static void ea_free(sus_tol_work *wk)
+{
+    free(wk);
+}
+
+static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda, sus_attitude *att,
+                   sus_stepper_stats *st)
+{
+    double q[4], h = t_end - *t, est = 0.0, rate = 0.0, stop = t_end;
+    int failed = 0;
+    sus_quat_of_attitude(att, q);
+    memcpy(wk->q0, q, sizeof q);
+    if (*t >= wk->t_tail) {
+        wk->kind = KIND_TAIL;
+        tail_rotate(wk, h, q);
+        est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
+    } else {
+        wk->kind = KIND_TAYLOR;
+        rate = rate_of(wk, *t, t_end);
+        stop = stop_of(wk, t_end);
+        failed = taylor_step(wk, *t, stop - *t, rate, w, q, &h, &est);
+    }
+    *st = (sus_stepper_stats){.residual = DIST_PER_Q * est, .scale = DIST_PER_Q * rate * h, .det = h};
+    if (failed || !(*t + h > *t))
+        return SUS_STEPPER_REJECTED;
+    wk->spent += est;
+    wk->t0 = *t;
+    wk->h = h;
+    *t = h < stop - *t ? *t + h : stop; /* exactly at t_end, or at the tail's start */
+    state_at(wk, *t, q, w, lambda, att);
+    return SUS_STEPPER_OK;
+}
+
+/* The state at tau into the last step: the steady rotation, or the step's Taylor polynomial at
+ * tau / h; w and lambda from the closed form. */
+static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
+{
+    double q[4];
+    memcpy(q, wk->q0, sizeof q);
+    if (wk->kind == KIND_TAIL)
+        tail_rotate(wk, tau, q);
+    else
+        taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
+    state_at(wk, wk->t0 + tau, q, w, lambda, att);
+}
+
+static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order};
+
+const sus_stepper_type sus_step_exact_attitude_type = {.name = "exact-attitude",
+                                                       .order = 0,
+                                                       .lambda_order = 0,
+                                                       .conserves_energy = 1,
+                                                       .attitude = SUS_ATTITUDE_QUAT,
+                                                       .substeps = 1,
+                                                       .source = __FILE__,
+                                                       .tol = &EA_OPS};

@@ -1,0 +1,38 @@
+#!/bin/sh
+# The product speaks of itself alone: no tracked file names a tracker's numbers ("issue 12"), a
+# review's items, working sessions, work logs or who did what when. Those belong to the history
+# of the development (git log), which a reader of the code cannot look up. One check per pattern,
+# over the files git tracks; each hit is printed as FILE:LINE: TEXT.
+# Left out: this file (it spells the patterns); README.md and tools/web/build.py, rewritten
+# elsewhere, until they are.
+# Usage: history.sh. Last line: "history: N passed, N failed" (a SKIP outside a git checkout).
+set -u
+pass=0 fail=0
+if ! git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    echo "SKIP history: not a git checkout"
+    echo "history: 0 passed, 0 failed"
+    exit 0
+fi
+# pattern (extended regular expression, case-insensitive) | what it catches
+while IFS='|' read -r pattern what; do
+    hits=$(git grep -n -I -i -E "$pattern" -- . ':!tests/build/history.sh' ':!README.md' \
+        ':!tools/web/build.py' 2>/dev/null | cut -c1-160)
+    if [ -z "$hits" ]; then
+        pass=$((pass + 1))
+    else
+        fail=$((fail + 1))
+        echo "FAIL history: $what:"
+        echo "$hits" | sed 's/^/    /'
+    fi
+done <<'EOF'
+\bissues? #?[0-9]+|a tracker's numbers
+\b(pull request|PR|ticket) #?[0-9]+|a pull request's or ticket's number
+\bthe( [a-z-]+)? issue('s)?\b|a tracker's issue named as "the issue"
+\breview items?\b|a review's items
+\breviewers?\b|the reviewers of the development
+\bsessions?\b|working sessions
+\bwork ?logs?\b|work logs
+\b(helpers?|agents?) (task|branch|worktree)s?\b|who did what
+EOF
+echo "history: $pass passed, $fail failed"
+[ "$fail" = 0 ]

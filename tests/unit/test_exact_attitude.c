@@ -1,0 +1,456 @@
+/* exact-attitude (src/methods/step_exact_attitude.c) and its closed-form helpers, on the paper's
+ * body and every body of tests/unit/bodies.h:
+ *   - exact_fast.h's w(t) (one exp) agrees with sus_exact_omega to a few roundings of w's scale;
+ *   - exact_tail.h's bound is above the integral of |w - w_inf| (by quadrature of the closed form)
+ *     and within the factor the derivation allows of it; its time gives the bound asked for;
+ *   - each accepted step's local error (against the long-double reference's exact increment) is at
+ *     most its estimate plus the step's round-off, and the error at t = 50 at most TOL plus the
+ *     steps' round-off;
+ *   - the tail: a run to T = 1e6 takes as many steps as one to T = 1e3 (the tail is one step), and
+ *     its error at T = 1e4 and 1e6 is at most TOL + C u T |w_inf|, the conditioning of the problem
+ *     (an angle (T - t*) |w_inf| rounded in double), against a reference whose tail is a
+ *     long-double rotation about a long-double w_inf;
+ *   - dense output at a step's end is the step's own state; a body with I31 = I32 = 0 (w constant)
+ *     is one step, the rotation exp(T w0^).
+ * Round-off allowances, fixed from counts of roundings before measuring:
+ *   - ROUND_STEP = 34 u per step in dist(R, .): the quaternion product q (x) dq rounds each
+ *     component by at most 4 u (four products summed), the sum of the series and the normalisation
+ *     add 2 u, so |dq| moves by about 12 u, and dist <= 2 sqrt2 |dq|;
+ *   - ROUND_W = 16 u r |L^{-1}|_F for w: w = L^{-T} u, |u| = r, and each of the two ways of computing
+ *     it rounds a handful of times (exact_fast.h), every rounding relative to that scale;
+ *   - COND = 32 u per radian turned: a step that turns R by the angle theta = h |w| computes that
+ *     angle in double, so its result carries about u theta (the problem's conditioning); in the
+ *     tail, the angle carries the roundings of w_inf (16 u, as above, relative), of T - t* and of
+ *     the product (2 u), sin and cos (2 u), and dist = sqrt2 angle for small angles:
+ *     (16 + 4) sqrt2 < 32. A step's allowance is ROUND_STEP u + COND u h max(|w(t0)|, |w(t1)|), a
+ *     run's the sum over its steps. */
+#include "check.h"
+#include "check_body.h"
+#include "driver.h"
+#include "exact.h"
+#include "exact_attitude.h"
+#include "exact_fast.h"
+#include "exact_tail.h"
+#include "quaternion.h"
+#include "refattitude.h"
+#include "so3.h"
+#include "taylor.h"
+
+#include <math.h>
+#include <string.h>
+
+#define U SUS_U
+#define ROUND_STEP 34.0
+#define ROUND_W 16.0
+#define COND 32.0
+
+static const sus_tol_ops *ops(void)
+{
+    return sus_step_exact_attitude_type.tol;
+}
+
+/* The family's bodies, then two of the paper's own altered to stress the step rule: "slow" with a
+ * third row a tenth of the paper's (k ten times smaller: steps so long that the rotation over a step,
+ * not w's singularity, bounds the series' terms) and "fast" with w0 eight times the paper's (k and
+ * the rotation eight times larger). */
+#define TEST_BODIES (BODIES_COUNT + 2)
+
+static void test_body(int j, body *b)
+{
+    if (j < BODIES_COUNT) {
+        body_get(j, b);
+        return;
+    }
+    body_get(0, b);
+    if (j == BODIES_COUNT) {
+        b->I[6] *= 0.1;
+        b->I[7] *= 0.1;
+        snprintf(b->name, sizeof b->name, "slow");
+    } else {
+        b->w0[0] *= 8.0;
+        b->w0[1] *= 8.0;
+        snprintf(b->name, sizeof b->name, "fast");
+    }
+}
+
+/* |L^{-1}|_F r: the scale of w and of its roundings (exact.h's Cholesky factor). */
+static double w_scale(const sus_exact *ex)
+{
+    const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
+    return sqrt(a * a + b * b + c * c) * ex->r;
+}
+
+/* ---- the closed form with one exp ---- */
+
+static void fast_omega_agrees(void)
+{
+    double worst = 0.0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        sus_exact_fast f;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0) || sus_exact_fast_init(&f, &ex))
+            continue;
+        const double span = 60.0 / fmax(ex.k, 1e-3); /* the whole transient and the tail */
+        for (int i = 1; i <= 4000; i++) {
+            double w1[2], w2[2];
+            const double t = span * i / 4000.0;
+            sus_exact_omega(&ex, t, w1);
+            sus_exact_fast_omega(&f, t, w2);
+            worst = fmax(worst, hypot(w1[0] - w2[0], w1[1] - w2[1]) / (ROUND_W * U * w_scale(&ex)));
+        }
+    }
+    CHECK(worst <= 1.0, "exact_fast's w(t) within %g u r |L^-1|_F of sus_exact_omega on %d bodies, t in (0, "
+          "60/k]: worst %.3g of that", ROUND_W, BODIES_COUNT, worst);
+}
+
+/* ---- the tail's bound ---- */
+
+/* The integral of |w - w_inf| over [t, t + 60/k] by composite Simpson on n panels (the rest is
+ * below e^{-60} of the bound). */
+static double tail_integral(const sus_exact *ex, double t)
+{
+    const int n = 20000;
+    const double len = 60.0 / ex->k, h = len / n;
+    double winf[2], sum = 0.0;
+    sus_exact_limit(ex, winf);
+    for (int i = 0; i <= n; i++) {
+        double w[2];
+        sus_exact_omega(ex, t + i * h, w);
+        const double g = hypot(w[0] - winf[0], w[1] - winf[1]);
+        sum += g * (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0);
+    }
+    return sum * h / 3.0;
+}
+
+/* The smallest singular value of L^{-1} over |L^{-1}|_F: the derivation's bound uses |L^{-1}|_F
+ * where |L^{-T} (u - u_inf)| may be as small as sigma_min |u - u_inf|. */
+static double norm_ratio(const sus_exact *ex)
+{
+    const double a = 1.0 / ex->l11, d = 1.0 / ex->l22, c = -ex->l21 / (ex->l11 * ex->l22);
+    const double fro2 = a * a + c * c + d * d, det = a * d;
+    const double smax2 = 0.5 * (fro2 + sqrt(fro2 * fro2 - 4.0 * det * det));
+    return fabs(det) / sqrt(smax2) / sqrt(fro2);
+}
+
+static void tail_bound_holds(void)
+{
+    double over = 0.0, under = INFINITY, inv = 0.0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        body_get(k, &b);
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+            continue;
+        const double t0 = fmax(0.0, -ex.sigma * ex.s0 / ex.k); /* a(t) >= 0 from here on */
+        for (int j = 0; j < 4; j++) {
+            const double t = t0 + j * 5.0 / ex.k, B = sus_exact_tail_bound(&ex, t), I = tail_integral(&ex, t);
+            over = fmax(over, I / B);
+            /* for a >= 0: |u - u_inf| >= 2 E / sqrt2, and |L^{-T} x| >= sigma_min |x| */
+            under = fmin(under, I / (B * norm_ratio(&ex) / sqrt(2.0)));
+        }
+        for (int j = 0; j < 3; j++) {
+            const double budget = pow(10.0, -4.0 - 5.0 * j);
+            inv = fmax(inv, fabs(sus_exact_tail_bound(&ex, sus_exact_tail_time(&ex, budget)) / budget - 1.0));
+        }
+    }
+    CHECK(over <= 1.0 + 1e-9, "the tail's bound is above the integral of |w - w_inf| (Simpson, 20000 panels) "
+          "on %d bodies, 4 times each: largest integral / bound %.6f", BODIES_COUNT, over);
+    CHECK(under >= 1.0 - 1e-9, "and not loose beyond the derivation's factor (sigma_min |L^-1|_F^-1 / sqrt2 "
+          "for a >= 0): smallest integral / (bound x factor) %.4f", under);
+    CHECK(inv <= 1e-12, "the bound at sus_exact_tail_time(budget) is the budget, 1e-4 ... 1e-14: worst "
+          "relative difference %.3g", inv);
+}
+
+/* ---- steps against the reference ---- */
+
+/* R0 Phi with Phi the reference's exact increment over [t0, t1]. */
+static void exact_after(const sus_exact *ex, const double R0[3][3], double t0, double t1, double R[3][3])
+{
+    double Phi[3][3];
+    sus_refatt_increment(ex, t0, t1, Phi);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[i][j] = R0[i][0] * Phi[0][j] + R0[i][1] * Phi[1][j] + R0[i][2] * Phi[2][j];
+}
+
+typedef struct {
+    double local;  /* worst (local error - round-off) / estimate over steps */
+    double global; /* worst dist(R, R_ref)(T) / (TOL + the steps' round-off) */
+    long steps;
+} step_check;
+
+/* A step's round-off allowance (the top of the file). */
+static double step_roundoff(double h, const double w0[3], const double w1[3])
+{
+    return (ROUND_STEP + COND * h * fmax(hypot(w0[0], w0[1]), hypot(w1[0], w1[1]))) * U;
+}
+
+/* One run of a body to T at tol, step by step, each step's local error against its estimate. */
+static void run_checked(const sus_model *m, const double w0[2], double tol, double T, step_check *c)
+{
+    sus_exact ex;
+    sus_exact_init(&ex, m, w0);
+    sus_tol_work *wk = ops()->alloc(m, tol, w0);
+    double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam, R[3][3], Rn[3][3], Re[3][3], wr[2], Rr[3][3];
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    long n = 0;
+    double round = 0.0;
+    while (wk && t < T) {
+        const double t0 = t, wb[3] = {w[0], w[1], 0.0};
+        sus_attitude_get(&att, R);
+        if (ops()->step(wk, T, &t, w, &lam, &att, &st) != SUS_STEPPER_OK)
+            break;
+        n++;
+        sus_attitude_get(&att, Rn);
+        exact_after(&ex, R, t0, t, Re);
+        const double r = step_roundoff(t - t0, wb, w), excess = sus_so3_dist(Re, Rn) - r;
+        round += r;
+        c->local = fmax(c->local, excess > 0.0 ? excess / st.residual : 0.0);
+    }
+    if (wk)
+        ops()->free(wk);
+    sus_refatt_precise(m, w0, T, wr, Rr);
+    sus_attitude_get(&att, R);
+    c->global = fmax(c->global, t < T ? INFINITY : sus_so3_dist(R, Rr) / (tol + round));
+    c->steps += n;
+}
+
+static void steps_within_estimates(void)
+{
+    step_check c = {0};
+    for (int k = 0; k < TEST_BODIES; k++) {
+        body b;
+        sus_model m;
+        test_body(k, &b);
+        if (check_body_model(&b, &m))
+            continue;
+        for (int e = 4; e <= 13; e += 3)
+            run_checked(&m, b.w0, pow(10.0, -e), 50.0, &c);
+    }
+    CHECK(c.local <= 1.0, "every step's local error (against the reference's increment) is at most its "
+          "estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate %.3g over %ld steps, %d "
+          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13", ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
+    CHECK(c.global <= 1.0, "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio "
+          "%.3g", c.global);
+}
+
+/* ---- the method's own rules: the budget ---- */
+
+typedef struct {
+    double sum;  /* worst (sum of the estimates) / TOL over runs */
+    double step; /* worst estimate / share over the integration steps */
+} budget_check;
+
+static void run_budget(const sus_model *m, const double w0[2], double tol, double T, budget_check *c)
+{
+    sus_tol_work *wk = ops()->alloc(m, tol, w0);
+    double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam, sum = 0.0;
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    while (wk && t < T && ops()->step(wk, T, &t, w, &lam, &att, &st) == SUS_STEPPER_OK) {
+        sum += st.residual;
+        if (st.scale > 0.0) /* an integration step (the tail's has no share: its bound is fixed) */
+            c->step = fmax(c->step, st.residual / st.scale);
+    }
+    if (wk)
+        ops()->free(wk);
+    c->sum = fmax(c->sum, t < T ? INFINITY : sum / tol);
+}
+
+/* The top of step_exact_attitude.c: every integration step's estimate is at most its share rate h,
+ * and the estimates with the tail's bound sum to at most TOL; runs to T = 400 reach the tail. */
+static void budget_kept(void)
+{
+    budget_check c = {0.0, 0.0};
+    for (int k = 0; k < TEST_BODIES; k++) {
+        body b;
+        sus_model m;
+        test_body(k, &b);
+        if (check_body_model(&b, &m))
+            continue;
+        for (int e = 4; e <= 12; e += 4) {
+            run_budget(&m, b.w0, pow(10.0, -e), 50.0, &c);
+            run_budget(&m, b.w0, pow(10.0, -e), 400.0, &c);
+        }
+    }
+    CHECK(c.step <= 1.0 + 1e-12, "every step's estimate is at most its share of the budget, rate h: worst "
+          "ratio %.15g (%d bodies, TOL 1e-4, 1e-8, 1e-12, T = 50 and 400)", c.step, TEST_BODIES);
+    CHECK(c.sum <= 1.0 + 1e-12, "the steps' estimates and the tail's bound sum to at most TOL: worst sum / "
+          "TOL %.15g", c.sum);
+}
+
+/* ---- the tail ---- */
+
+/* Steps to T; R(T) and w(T) (w may be NULL). */
+static long steps_to_w(const sus_model *m, const double w0[2], double tol, double T, double R[3][3],
+                       double wT[3])
+{
+    sus_tol_work *wk = ops()->alloc(m, tol, w0);
+    double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam;
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    long n = 0;
+    while (wk && t < T && ops()->step(wk, T, &t, w, &lam, &att, &st) == SUS_STEPPER_OK)
+        n++;
+    if (wk)
+        ops()->free(wk);
+    sus_attitude_get(&att, R);
+    if (wT)
+        memcpy(wT, w, sizeof w);
+    return t < T ? -1 : n;
+}
+
+static long steps_to(const sus_model *m, const double w0[2], double tol, double T, double R[3][3])
+{
+    return steps_to_w(m, w0, tol, T, R, NULL);
+}
+
+/* x^T I_m x in long double. */
+static long double quad_form(const sus_model *m, long double x, long double y)
+{
+    return x * (m->I[0][0] * x + m->I[0][1] * y) + y * (m->I[1][0] * x + m->I[1][1] * y);
+}
+
+/* The reference at T past the tail: R(t_s) from the long-double integration, with t_s where the
+ * tail's integral is below 1e-20, then the steady rotation about w* in long double. w* lies on
+ * the line c(w) = 0 at the energy E0 (the attracting steady rotation), on the side the closed
+ * form approaches. */
+static void reference_far(const sus_model *m, const sus_exact *ex, double T, double R[3][3])
+{
+    const double t_s = fmax(0.0, sus_exact_tail_time(ex, 1e-20));
+    const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    double Rs[3][3], winf[2];
+    sus_refatt ra;
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    sus_refatt_advance(&ra, t_s, Rs);
+    sus_exact_limit(ex, winf);
+    const long double v0 = -(long double)m->b[1], v1 = m->b[0];
+    const long double e0 = quad_form(m, ex->w0[0], ex->w0[1]), ev = quad_form(m, v0, v1);
+    const long double sgn = v0 * winf[0] + v1 * winf[1] >= 0 ? 1.0L : -1.0L, g = sgn * sqrtl(e0 / ev);
+    const long double w[2] = {g * v0, g * v1}, n = hypotl(w[0], w[1]);
+    const long double th = ((long double)T - t_s) * n, c = cosl(th), s = sinl(th), x = w[0] / n, y = w[1] / n;
+    /* Rodrigues: exp(th n^) = I + sin th n^ + (1 - cos th) n^2, n = (x, y, 0) */
+    const long double E[3][3] = {{c + (1 - c) * x * x, (1 - c) * x * y, s * y},
+                                 {(1 - c) * x * y, c + (1 - c) * y * y, -s * x},
+                                 {-s * y, s * x, c}};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[i][j] = (double)(Rs[i][0] * E[0][j] + Rs[i][1] * E[1][j] + Rs[i][2] * E[2][j]);
+}
+
+static void tail_is_one_step(void)
+{
+    const double tol = 1e-10, Ts[2] = {1e4, 1e6};
+    int same = 1;
+    double worst = 0.0, ratio[2] = {0.0, 0.0};
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        double R[3][3], Rr[3][3], winf[2];
+        body_get(k, &b);
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+            continue;
+        const long n3 = steps_to(&m, b.w0, tol, 1e3, R);
+        same &= n3 > 0 && steps_to(&m, b.w0, tol, 1e6, R) == n3;
+        sus_exact_limit(&ex, winf);
+        for (int i = 0; i < 2; i++) {
+            const double cond = U * Ts[i] * hypot(winf[0], winf[1]);
+            steps_to(&m, b.w0, tol, Ts[i], R);
+            reference_far(&m, &ex, Ts[i], Rr);
+            const double err = sus_so3_dist(R, Rr);
+            worst = fmax(worst, err / (tol + COND * cond));
+            ratio[i] = fmax(ratio[i], err / cond);
+        }
+    }
+    CHECK(same, "a run to T = 1e6 takes as many steps as one to T = 1e3 (TOL %g, %d bodies): the tail is one "
+          "step", tol, BODIES_COUNT);
+    CHECK(worst <= 1.0, "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: the "
+          "angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest error / (u T |w_inf|) "
+          "%.3g at 1e4, %.3g at 1e6", COND, worst, ratio[0], ratio[1]);
+}
+
+/* ---- dense output and a constant w ---- */
+
+static void dense_ends_at_the_step(void)
+{
+    body b;
+    sus_model m;
+    body_get(1, &b);
+    if (check_body_model(&b, &m))
+        return;
+    int same = 1, steps = 0;
+    sus_tol_work *wk = ops()->alloc(&m, 1e-8, b.w0);
+    double t = 0.0, w[3] = {b.w0[0], b.w0[1], 0.0}, lam;
+    sus_attitude att;
+    sus_stepper_stats st;
+    sus_attitude_identity(&att);
+    while (wk && t < 400.0 && ops()->step(wk, 400.0, &t, w, &lam, &att, &st) == SUS_STEPPER_OK) {
+        double wd[3], ld, R[3][3], Rd[3][3];
+        sus_attitude ad = att;
+        ops()->dense(wk, st.det, wd, &ld, &ad);
+        sus_attitude_get(&att, R);
+        sus_attitude_get(&ad, Rd);
+        same &= memcmp(R, Rd, sizeof R) == 0 && wd[0] == w[0] && wd[1] == w[1] && wd[2] == 0.0 && ld == lam;
+        steps++;
+    }
+    if (wk)
+        ops()->free(wk);
+    CHECK(same && t == 400.0, "dense output at each step's length is the step's own state (w, lambda, R), "
+          "%d steps to t = 400 (tail included)", steps);
+}
+
+static void constant_w_is_one_rotation(void)
+{
+    double I[9];
+    memcpy(I, SUS_PAPER_INERTIA, sizeof I);
+    I[6] = I[7] = 0.0; /* I31 = I32 = 0: c(w) = 0, w stays w0 */
+    sus_model m;
+    if (sus_model_init(&m, I, NULL, 0) != 0) {
+        CHECK(0, "the body with I31 = I32 = 0");
+        return;
+    }
+    const double w0[2] = {0.4, 0.5}, T = 123.25, v[3] = {T * w0[0], T * w0[1], 0.0};
+    double R[3][3], Rx[3][3], w[3];
+    const long n = steps_to_w(&m, w0, 1e-12, T, R, w);
+    sus_so3_exp(v, Rx);
+    const double err = sus_so3_dist(R, Rx), bound = 1e-12 + COND * U * T * hypot(w0[0], w0[1]);
+    CHECK(n == 1 && err <= bound && w[0] == w0[0] && w[1] == w0[1] && w[2] == 0.0,
+          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, R(T) = exp(T w0^) within %.3g (bound %.3g)", n,
+          err, bound);
+}
+
+static void degree_rule(void)
+{
+    int mono = 1, lo = 99, hi = 0;
+    for (int e = 0; e <= 160; e++) {
+        const double tol = pow(10.0, -0.1 * e);
+        const int d = sus_step_exact_attitude_order(tol), d2 = sus_step_exact_attitude_order(tol * 0.99);
+        mono &= d2 >= d;
+        lo = d < lo ? d : lo;
+        hi = d > hi ? d : hi;
+    }
+    CHECK(mono && lo >= 9 && hi <= SUS_STEP_TAYLOR_MAX_ORDER - 1, "the degree never falls as TOL tightens, "
+          "within the series' range: %d ... %d over TOL = 1 ... 1e-16", lo, hi);
+}
+
+int main(void)
+{
+    fast_omega_agrees();
+    tail_bound_holds();
+    steps_within_estimates();
+    budget_kept();
+    tail_is_one_step();
+    dense_ends_at_the_step();
+    constant_w_is_one_rotation();
+    degree_rule();
+    return check_summary("test_exact_attitude");
+}
