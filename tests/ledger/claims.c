@@ -159,20 +159,20 @@ static void write_methods(const char *tsv)
         ledger_die(err);
 }
 
-/* -j JOBS and the path; bad arguments: one line and exit 2. */
+/* -j JOBS (or -jJOBS) and the path; bad arguments: one line and exit 2. */
 static int parse_args(int argc, char **argv)
 {
     int jobs = ledger_jobs_online(), i = 1;
-    if (i + 1 < argc && strcmp(argv[i], "-j") == 0) {
+    if (i < argc && strncmp(argv[i], "-j", 2) == 0) {
+        const char *v = argv[i][2] ? argv[i] + 2 : i + 1 < argc ? argv[++i] : "";
         char *end;
-        const long j = strtol(argv[i + 1], &end, 10);
-        if (*end || j < 1 || j > 256) {
-            fprintf(stderr, "claims: -j takes a number of jobs from 1 to 256, not '%s'\n",
-                    argv[i + 1]);
+        const long j = strtol(v, &end, 10);
+        if (!*v || *end || j < 1 || j > 256) {
+            fprintf(stderr, "claims: -j takes a number of jobs from 1 to 256, not '%s'\n", v);
             exit(2);
         }
         jobs = (int)j;
-        i += 2;
+        i++;
     }
     if (argc - i > 1 || (i < argc && argv[i][0] == '-')) {
         fprintf(stderr, "usage: claims [-j JOBS] [CLAIMS_TSV]\n");

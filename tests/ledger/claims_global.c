@@ -47,6 +47,7 @@
 #include "driver.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "magnus4.h"
 #include "orderfit.h"
 #include "refattitude.h"
@@ -174,13 +175,13 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
     snprintf(what, sizeof what,
              "slope of %s at $k T = %.3g$ ($t = %g$ on the paper's body) against $\\varepsilon$, %s, "
              "errors in $[\\max(1000\\,u, 100\\,N s\\,u), 1] \\times \\mathrm{size}$; the nearest "
-             "to its bound of %d bodies: %s ($h = \\varepsilon k$ from %.3g to %.3g, %d points%s)",
+             "to its bound of %d bodies: %s ($h = \\varepsilon k$ from $%s$ to $%s$, %d points%s)",
              q ? "the distance \\eqref{MetMat} $\\mathrm{dist}(R(T), R_N)$"
                : "$|\\omega(T) - \\omega_N|$",
              t_paper * claims_body_get(0)->ex.k, t_paper,
              q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name,
-             wf->bodies, wf->body, isnan(f->w.slope) ? 0.0 : f->w.eps_lo,
-             isnan(f->w.slope) ? 0.0 : f->w.eps_hi, f->w.used,
+             wf->bodies, wf->body, notation_g(isnan(f->w.slope) ? 0.0 : f->w.eps_lo, 3).s,
+             notation_g(isnan(f->w.slope) ? 0.0 : f->w.eps_hi, 3).s, f->w.used,
              f->w.plateau ? ", one slope" : "; no one slope: lower estimate, $\\ge p/2$");
     if (wf->roundoff[0]) { /* named, not measured: their errors are round-off at every step tried */
         const size_t len = strlen(what);

@@ -63,7 +63,6 @@ static void keep(const char *s, int ids, char *tex, size_t tlen, char *plain, si
             snprintf(err, sizeof err, "longer than %d bytes: \"%s\"", (int)tlen - 1, s);
         snprintf(what, sizeof what, "the notation of the line recorded at %s:%d: %s", src.file,
                  src.line, err);
-        if (getenv("TMP_NOTATION_LIST")) { fprintf(stderr, "NOTATION %s\n", what); snprintf(plain, plen, "%s", s); } else
         ledger_die(what);
     }
     snprintf(tex, tlen, "%s", s);

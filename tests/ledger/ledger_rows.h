@@ -14,8 +14,8 @@ typedef enum { ROW_WITHIN, ROW_AT_LEAST, ROW_AT_MOST } row_kind;
 
 typedef struct {
     char id[64], verdict[16], source[80];
-    char ref[160], quantity[640];             /* as written, in the notation (notation.h) */
-    char ref_plain[224], quantity_plain[640]; /* their plain text; the reference with its ids */
+    char ref[160], quantity[800];             /* as written, in the notation (notation.h) */
+    char ref_plain[224], quantity_plain[800]; /* their plain text; the reference with its ids */
     double measured, expected, tol;
     row_kind kind;
     int pass;

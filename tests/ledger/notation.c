@@ -1,6 +1,6 @@
 #include "notation.h"
 
-#include "paper_labels.h"
+#include "paper_ref.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -181,7 +181,25 @@ static const char *label_arg(renderer *r, size_t *n)
     return start;
 }
 
-/* The published name of a reference, and with ids its label: "Proposition 5.1 (TeoL)". */
+/* The published name of the first n bytes of a label: "(27)" for an equation (with "eq. " in
+ * front when not bare), "Proposition 5.1", "Section 5.6", "Figure 2" otherwise; NULL when the
+ * paper has no such label (paper/labels.tsv, compiled into src/render/paper_labels.c). */
+static const char *published(const char *label, size_t n, int bare, char *buf, size_t len)
+{
+    char name[64];
+    const sus_paper_label *p = sus_paper_label_find(label, n);
+    if (!p || n >= sizeof name)
+        return NULL;
+    if (strcmp(p->kind, "equation") == 0 || strcmp(p->kind, "subequation") == 0) {
+        snprintf(buf, len, "%s(%s)", bare ? "" : "eq. ", p->number);
+        return buf;
+    }
+    snprintf(name, sizeof name, "%.*s", (int)n, label);
+    return sus_paper_name(name, buf, len);
+}
+
+/* The published name of a reference, and with ids its label: "Proposition 5.1 (TeoL)"; an
+ * unlabelled statement's stand-in (nolabel:KIND-N) is never shown. */
 static void reference(renderer *r, int equation)
 {
     char name[64];
@@ -189,12 +207,12 @@ static void reference(renderer *r, int equation)
     const char *label = label_arg(r, &n);
     if (!label)
         return;
-    if (!paper_label_name(label, n, equation && !r->ids, name, sizeof name)) {
+    if (!published(label, n, equation && !r->ids, name, sizeof name)) {
         fail(r, "no label '%.*s' in paper/labels.tsv", (int)n, label);
         return;
     }
     emits(r, name);
-    if (r->ids && !paper_label_is_stand_in(label, n)) {
+    if (r->ids && strncmp(label, "nolabel:", 8) != 0) {
         emits(r, " (");
         emit(r, label, n);
         emits(r, ")");
