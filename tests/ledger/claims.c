@@ -128,12 +128,12 @@ static void prepare(void)
  * R(10) alike. */
 static void reference_claims(void)
 {
-    ledger_add("reference-attitude-local", "(method)",
-               "$\\max |\\Phi_\\mathrm{ref} - \\Phi_\\mathrm{magnus4}|$ over all one-step increments "
-               "(long-double Taylor reference); tolerance 1\\% of the smallest fitted local "
-               "$\\mathrm{SO}(3)$ error",
-               P.conv.ref_local_err, 0.0, 0.01 * ledger_min(CLAIMS_MIN_SO3_LOCAL),
-               LEDGER_EXTENSION);
+    ledger_add(
+        "reference-attitude-local", "(method)",
+        "$\\max |\\Phi_\\mathrm{ref} - \\Phi_\\mathrm{magnus4}|$ over all one-step increments "
+        "(long-double Taylor reference); tolerance 1\\% of the smallest fitted local "
+        "$\\mathrm{SO}(3)$ error",
+        P.conv.ref_local_err, 0.0, 0.01 * ledger_min(CLAIMS_MIN_SO3_LOCAL), LEDGER_EXTENSION);
     ledger_add("reference-attitude-global", "(method)",
                "$|R_\\mathrm{ref}(10) - R_\\mathrm{magnus4}(10)|$ (long-double Taylor reference); "
                "tolerance 1\\% of the smallest fitted global $\\mathrm{SO}(3)$ error",

@@ -130,7 +130,8 @@ void consistency_local_claims(const claims_paper *pp)
             continue; /* missing: recorded as a failure; an extension: claims_methods.c */
         const double p = reduced_orders(me, &pp->conv, s, eo);
         for (int r = 0; r < SUS_RECON_COUNT; r++) {
-            /* Proposition 5.1: the unreduced order is min(r, l), r from (MetMat) on SO(3), l = p. */
+            /* Proposition 5.1: the unreduced order is min(r, l), r from (MetMat) on SO(3), l = p.
+             */
             const double rr =
                 fit_on(pp->conv.eps, cm->loc_so3[r], SUS_EXP_CONV_NJ, 1, SIZE_R, FIT_EPS_MAX);
             const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
@@ -185,9 +186,10 @@ void consistency_multiplier_claims(const claims_paper *p)
                "$s$ of \\eqref{taualg} $+ (c(\\omega^{k+1}) - c(\\omega^k))/\\varepsilon$ against "
                "$\\lambda(t_k+\\varepsilon)$: consistent, $s = 0$",
                fit(full_err, 1, SIZE_LAMBDA), 0.0, LEDGER_EXTENSION);
-    order_line("lambda-order-variational-exact-dcayinv-mid", ref,
-               "the same multiplier against $\\lambda(t_k+\\varepsilon/2)$: $s = 1$ at the half step",
-               fit(half_err, 1, SIZE_LAMBDA), 1.0, LEDGER_EXTENSION);
+    order_line(
+        "lambda-order-variational-exact-dcayinv-mid", ref,
+        "the same multiplier against $\\lambda(t_k+\\varepsilon/2)$: $s = 1$ at the half step",
+        fit(half_err, 1, SIZE_LAMBDA), 1.0, LEDGER_EXTENSION);
 }
 
 /* ---- (36) as printed against the formula for dcay^{-1} after (23) ---- */
@@ -213,12 +215,12 @@ void consistency_cayinver_claims(void)
      * Two lines: the printed matrix is not dcay^{-1} (its (3,3) entry is off by exactly 1), and
      * every other entry is right. The entries are a few products of numbers below 2: 1e-14 is
      * about fifty roundings. A typo against the formula the paper prints two pages earlier. */
-    ledger_add("cayinver-equals-dcayinv",
-               "\\eqref{cayinver} against the formula after \\eqref{caypart}",
-               "max over 16 $(\\varepsilon, \\omega)$ of the difference between the entry $(3,3)$ of "
-               "\\eqref{cayinver} as printed and that of $(I - \\hat{\\omega}/2 + \\omega "
-               "\\omega^\\top/4)(\\varepsilon \\omega)$: 1, not 0",
-               d33, 0.0, 1e-14, LEDGER_ERRATUM);
+    ledger_add(
+        "cayinver-equals-dcayinv", "\\eqref{cayinver} against the formula after \\eqref{caypart}",
+        "max over 16 $(\\varepsilon, \\omega)$ of the difference between the entry $(3,3)$ of "
+        "\\eqref{cayinver} as printed and that of $(I - \\hat{\\omega}/2 + \\omega "
+        "\\omega^\\top/4)(\\varepsilon \\omega)$: 1, not 0",
+        d33, 0.0, 1e-14, LEDGER_ERRATUM);
     ledger_add("cayinver-33-off-by-one", "(extension)",
                "the entry $(3,3)$ differs by exactly 1: max over 16 $(\\varepsilon, \\omega)$ of "
                "$|d_{33} - 1|$, $d_{33}$ that difference",
@@ -311,14 +313,16 @@ void consistency_unreduced_claims(const claims_paper *p)
     unreduced_errors(p, &u, ev, exi, eR, el);
     const double l = fit(ev, 1, SIZE_W);
     const char *ext = "\\PaperRefOr{UnredConsis}, extension";
-    order_line("unreduced-velocity-order-rk4", ext,
-               "$l$: local slope of $|V(t_k+\\varepsilon) - V_{k+1}|$ ($3 \\times 3$ coordinates of "
-               "$T\\mathrm{SO}(3)$) minus 1, RK4 on \\eqref{LdAeqs}",
-               l, 4.0, LEDGER_EXTENSION);
-    order_line("unreduced-position-order-rk4", ext,
-               "$r$: local slope of the distance \\eqref{MetMat} $\\mathrm{dist}(R(t_k+\\varepsilon), "
-               "R_{k+1})$ minus 1, RK4 on \\eqref{LdAeqs}",
-               fit(eR, 1, SIZE_R), 4.0, LEDGER_EXTENSION);
+    order_line(
+        "unreduced-velocity-order-rk4", ext,
+        "$l$: local slope of $|V(t_k+\\varepsilon) - V_{k+1}|$ ($3 \\times 3$ coordinates of "
+        "$T\\mathrm{SO}(3)$) minus 1, RK4 on \\eqref{LdAeqs}",
+        l, 4.0, LEDGER_EXTENSION);
+    order_line(
+        "unreduced-position-order-rk4", ext,
+        "$r$: local slope of the distance \\eqref{MetMat} $\\mathrm{dist}(R(t_k+\\varepsilon), "
+        "R_{k+1})$ minus 1, RK4 on \\eqref{LdAeqs}",
+        fit(eR, 1, SIZE_R), 4.0, LEDGER_EXTENSION);
     order_line("reduced-from-unreduced", "\\PaperRefOr{PropoCons1}",
                "order of the left-trivialized sequence $\\xi_k = (R_k^\\top V_k)^\\vee$ of RK4 on "
                "\\eqref{LdAeqs}: it inherits $l = 4$",

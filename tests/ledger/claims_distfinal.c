@@ -100,11 +100,12 @@ static void distfinal_line(const char *id, const char *ref, const char *what, co
                            double expected, double s_paper, ledger_assert truth)
 {
     char q[640];
-    snprintf(q, sizeof q,
-             "%s; max over %d bodies and $t_k k$ from 0.45 to 2.9, each at $\\varepsilon = 2^{-j} "
-             "s_\\mathrm{paper}/s$, $s = \\max(|\\omega|, k)$ on its motion; fit over $j \\in [4, 10]$, "
-             "errors above $1000\\,u$; $s \\varepsilon \\le %.2g$ at $j = 4$",
-             what, BODIES_COUNT, s_paper * DF_EPS_MAX);
+    snprintf(
+        q, sizeof q,
+        "%s; max over %d bodies and $t_k k$ from 0.45 to 2.9, each at $\\varepsilon = 2^{-j} "
+        "s_\\mathrm{paper}/s$, $s = \\max(|\\omega|, k)$ on its motion; fit over $j \\in [4, 10]$, "
+        "errors above $1000\\,u$; $s \\varepsilon \\le %.2g$ at $j = 4$",
+        what, BODIES_COUNT, s_paper * DF_EPS_MAX);
     ledger_add(id, ref, q, slope_of(err), expected, ORDER_TOL, truth);
 }
 
@@ -136,15 +137,17 @@ void distfinal_claims(void)
                    "slope of $|R(t_k+\\varepsilon) - R(t_k) - \\varepsilon \\mathrm{Ad}_{R(t_k)} "
                    "\\hat{\\omega}(t_k)|$, the expansion as printed: $O(\\varepsilon^2)$ means 2",
                    d.exp_printed, 2.0, s_paper, LEDGER_ERRATUM);
-    distfinal_line("distfinal-expansion-restored", ext,
-                   "the same with the factor $R$ restored, $\\varepsilon (\\mathrm{Ad}_R \\hat{\\omega}) "
-                   "R = \\varepsilon R \\hat{\\omega}$: 2",
-                   d.exp_restored, 2.0, s_paper, LEDGER_EXTENSION);
-    distfinal_line("distfinal-linear-terms-printed", proof,
-                   "slope of $|I - (R + \\varepsilon \\mathrm{Ad}_R \\hat{\\omega})(I - \\varepsilon "
-                   "\\hat{\\omega} + \\varepsilon^2 \\hat{\\omega}^2/2) R^\\top|$ as printed: the text "
-                   "says the linear terms cancel, so 2",
-                   d.lin_printed, 2.0, s_paper, LEDGER_ERRATUM);
+    distfinal_line(
+        "distfinal-expansion-restored", ext,
+        "the same with the factor $R$ restored, $\\varepsilon (\\mathrm{Ad}_R \\hat{\\omega}) "
+        "R = \\varepsilon R \\hat{\\omega}$: 2",
+        d.exp_restored, 2.0, s_paper, LEDGER_EXTENSION);
+    distfinal_line(
+        "distfinal-linear-terms-printed", proof,
+        "slope of $|I - (R + \\varepsilon \\mathrm{Ad}_R \\hat{\\omega})(I - \\varepsilon "
+        "\\hat{\\omega} + \\varepsilon^2 \\hat{\\omega}^2/2) R^\\top|$ as printed: the text "
+        "says the linear terms cancel, so 2",
+        d.lin_printed, 2.0, s_paper, LEDGER_ERRATUM);
     distfinal_line("distfinal-linear-terms-restored", ext,
                    "the same with $\\varepsilon R \\hat{\\omega}$ for $\\varepsilon \\mathrm{Ad}_R "
                    "\\hat{\\omega}$: the linear terms cancel, 2",

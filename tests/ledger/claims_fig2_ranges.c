@@ -12,7 +12,8 @@
  *
  * The error ratio: |w_var(t) - w(t)| / |w_mid(t) - w(t)| at eps = 1 over t = 2..60, its
  * range, the ratio of the two maxima over [0, 60], and its value at t = 10, so that "converges
- * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each. */
+ * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each.
+ */
 #include "claims_fig2more.h"
 #include "claims_refs.h"
 #include "dsp.h"
@@ -26,7 +27,7 @@
 #include <stdio.h>
 
 #define NEPS 21                         /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
-#define MUCH 10.0                       /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
+#define MUCH 10.0 /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
 
 static double grid_eps(int j) { return 0.25 * pow(2.0, 0.25 * j); }
 
@@ -37,7 +38,8 @@ static double stepper_loss(const sus_model *m, const sus_stepper_type *st, doubl
     double w[3] = {w0[0], w0[1], 0.0}, x[3], lam;
     sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) ||
+            !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
         w[1] = x[1];
@@ -76,7 +78,8 @@ static void reading_name(int reading, char *id, size_t len)
     else if (reading < 0)
         snprintf(id, len, "trapezoidal");
     else if (reading <= 2)
-        snprintf(id, len, "%s", reading == 1 ? "sweeps-1-explicit-euler" : "sweeps-2-explicit-midpoint");
+        snprintf(id, len, "%s",
+                 reading == 1 ? "sweeps-1-explicit-euler" : "sweeps-2-explicit-midpoint");
     else
         snprintf(id, len, "sweeps-%d", reading);
 }
@@ -109,11 +112,12 @@ static void energy_range_claims(const sus_model *m)
         char id[80], name[32], q[480];
         reading_name(reading, name, sizeof name);
         snprintf(id, sizeof id, "fig2-energy-none-faster-%s", name);
-        snprintf(q, sizeof q,
-                 "largest $\\varepsilon$ from 0.25 (grid $0.25 \\cdot 2^{j/4}$ to 8) up to which the %s "
-                 "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
-                 "21 $\\varepsilon$ (from %.3g), failed at %d",
-                 name, faster, first_faster, failed);
+        snprintf(
+            q, sizeof q,
+            "largest $\\varepsilon$ from 0.25 (grid $0.25 \\cdot 2^{j/4}$ to 8) up to which the %s "
+            "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
+            "21 $\\varepsilon$ (from %.3g), failed at %d",
+            name, faster, first_faster, failed);
         ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_EXP_FIG2_EPS, 1,
                          LEDGER_EXTENSION);
     }
@@ -122,7 +126,8 @@ static void energy_range_claims(const sus_model *m)
 /* The error ratio at eps = 1 over t: its range over t = 2..60 and the ratio of the maxima. */
 static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
 {
-    double wm[3] = {ex->w0[0], ex->w0[1], 0.0}, wv[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], we[2], lam;
+    double wm[3] = {ex->w0[0], ex->w0[1], 0.0}, wv[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], we[2],
+           lam;
     double lo = INFINITY, hi = 0.0, max_var = 0.0, max_mid = 0.0;
     sus_stepper_stats ss;
     for (int k = 1; k <= 60; k++) { /* eps = 1: t_k = k */
@@ -133,7 +138,8 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
             ledger_die("the variational run of the error ratio");
         wv[0] = x[0], wv[1] = x[1];
         sus_exact_omega(ex, (double)k, we);
-        const double ev = hypot(wv[0] - we[0], wv[1] - we[1]), em = hypot(wm[0] - we[0], wm[1] - we[1]);
+        const double ev = hypot(wv[0] - we[0], wv[1] - we[1]),
+                     em = hypot(wm[0] - we[0], wm[1] - we[1]);
         max_var = fmax(max_var, ev);
         max_mid = fmax(max_mid, em);
         if (k >= 2) {

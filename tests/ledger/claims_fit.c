@@ -53,8 +53,8 @@ static void ratio_id(const char *id, char *out, size_t len)
 }
 
 int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
-                          const double *err, const double *need, int n, double floor_c, int floor_pow,
-                          double shift, double expected, ledger_assert truth)
+                          const double *err, const double *need, int n, double floor_c,
+                          int floor_pow, double shift, double expected, ledger_assert truth)
 {
     sus_exp_order_fit f;
     char q[640];
@@ -75,7 +75,8 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
         snprintf(q, sizeof q, "%s; fit $\\varepsilon \\in [%s, %s]$, %d points%s", what,
                  notation_g(f.eps_lo, 3).s, notation_g(f.eps_hi, 3).s, f.used,
                  wide ? " (window widened: round-off below)" : "");
-        ledger_add(id, ref, q, f.slope - shift, expected, wide ? wide_tolerance(f.eps_hi) : ORDER_TOL, truth);
+        ledger_add(id, ref, q, f.slope - shift, expected,
+                   wide ? wide_tolerance(f.eps_hi) : ORDER_TOL, truth);
         return 1;
     }
     /* No slope: the sizes are at round-off over the fit window. Where theory puts a lower
@@ -98,10 +99,11 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
     char eref[200], rid[96];
     snprintf(eref, sizeof eref, "%s%s", ref, strstr(ref, "extension") ? "" : ", extension");
     ratio_id(id, rid, sizeof rid);
-    snprintf(q, sizeof q,
-             "[no slope (order %g at round-off); size over theory's lower estimate $\\ge 0.1$ at the "
-             "%d $\\varepsilon$ where the estimate is above 10 floors] %s",
-             expected, measurable, what);
+    snprintf(
+        q, sizeof q,
+        "[no slope (order %g at round-off); size over theory's lower estimate $\\ge 0.1$ at the "
+        "%d $\\varepsilon$ where the estimate is above 10 floors] %s",
+        expected, measurable, what);
     ledger_add_bound(rid, eref, q, need ? carry : -INFINITY, 0.1, 1, LEDGER_EXTENSION);
     return 1;
 }

@@ -51,7 +51,8 @@ static double size_of(const claims_body *d, int q)
 }
 
 /* The order of quantity q's error curve, above the floors of a method that rounds as t does. */
-static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q, const double *err)
+static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q,
+                            const double *err)
 {
     const claims_rounding k = {t->implicit, t->conserves_energy && !t->implicit, t->substeps};
     double floor[NE];
@@ -95,7 +96,8 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
         order_summary_add(&sum[0], p, eo->p, d->b.name);
         order_summary_add(&sum[1], order_on(d, me->type, 1, err[k][1]), eo->s, d->b.name);
         for (int r = 0; r < SUS_RECON_COUNT; r++)
-            order_summary_add(&sum[2 + r], order_of_pair(order_on(d, me->type, 2 + r, err[k][2 + r]), p),
+            order_summary_add(&sum[2 + r],
+                              order_of_pair(order_on(d, me->type, 2 + r, err[k][2 + r]), p),
                               eo->so3[r], d->b.name);
     }
     char id[96], what[160];
@@ -125,7 +127,8 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
 
 /* eps k = STRUCT_EPS k_paper, the body's own time (eps = 0.05 on the paper's body) */
 #define STRUCT_EPS 0.05
-#define STRUCT_STEPS 2000L    /* T k = 100 k_paper: the transient and the approach to the steady rotation */
+#define STRUCT_STEPS                                                                               \
+    2000L /* T k = 100 k_paper: the transient and the approach to the steady rotation */
 
 typedef struct {
     const sus_model *m;
@@ -191,7 +194,8 @@ static void method_structure(const sus_step_method *me)
          * the size of E's terms (claims_energy_terms); an implicit root's rounding dx = J^-1 r
          * (J ~ I_m) moves E by <I_m w, dx> ~ <w, r>, r of size u |I_m| |w|: u e again, not
          * amplified by cond(I_m) */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms, d->b.name);
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms,
+                  d->b.name);
     }
     char id[96], q[640];
     const char *ref = me->paper_ref ? "\\eqref{DSP}, \\PaperRefOr{algo}" : "(extension)";
@@ -210,17 +214,19 @@ static void method_structure(const sus_step_method *me)
              "$\\max |R^\\top R - I|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, "
              "%s, $R$ %s, worst of %d bodies %s; round-off bound $%s$",
              STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
-             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion" : "by compensated products",
+             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
+                                              : "by compensated products",
              BODIES_COUNT, orth.body, notation_g(orth.bound, 2).s);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
     if (!t->conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
-    snprintf(q, sizeof q,
-             "$\\max |E - E_0|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s (%d "
-             "substeps), worst of %d bodies %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
-             "\\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of $E$)",
-             STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
+    snprintf(
+        q, sizeof q,
+        "$\\max |E - E_0|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s (%d "
+        "substeps), worst of %d bodies %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
+        "\\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of $E$)",
+        STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
     ledger_add_bound(id, me->paper_ref ? "\\PaperRefOr{Fig1}, panel (f); \\eqref{DSP}" : ref, q,
                      en.value, en.bound, 0, truth);
@@ -234,8 +240,8 @@ void methods_claims_of(int i)
         char id[96];
         snprintf(id, sizeof id, "expected-order-known-%s", me->type->name);
         ledger_add_bound(id, "\\texttt{tests/ledger/expected\\_orders.c}",
-                         "the method has a stated order to test against: 1 when it does", 0.0, 1.0, 1,
-                         LEDGER_EXTENSION);
+                         "the method has a stated order to test against: 1 when it does", 0.0, 1.0,
+                         1, LEDGER_EXTENSION);
         return;
     }
     method_orders(me, eo);

@@ -11,7 +11,8 @@
 #include <math.h>
 #include <stdio.h>
 
-/* max over s of |sech'''(s)| = |sech s tanh s (5 - 6 tanh^2 s)|: 1.52443 at s = +-0.509, rounded up. */
+/* max over s of |sech'''(s)| = |sech s tanh s (5 - 6 tanh^2 s)|: 1.52443 at s = +-0.509, rounded
+ * up. */
 #define SECH3_MAX 1.525
 /* eps_i k = k_paper 2^-(LIM_J0 + i), i < LIM_N (eps_i = 2^-(LIM_J0 + i) on the paper's body):
  * small enough that the eps^2 term is a 1e-7 part of the intercept, large enough that the
@@ -41,7 +42,8 @@ static lim_sizes lim_sizes_of(const sus_exact *bex)
     /* Q(w) = w1 (I21 w1 + I22 w2) - w2 (I11 w1 + I12 w2), (LagMult)'s first line */
     const double s11 = I[1][0], s12 = 0.5 * (I[1][1] - I[0][0]), s22 = -I[0][1];
     /* L^-1 = [[1/l11, 0], [-l21/(l11 l22), 1/l22]] */
-    const double g11 = 1.0 / bex->l11, g21 = -bex->l21 / (bex->l11 * bex->l22), g22 = 1.0 / bex->l22;
+    const double g11 = 1.0 / bex->l11, g21 = -bex->l21 / (bex->l11 * bex->l22),
+                 g22 = 1.0 / bex->l22;
     const double m11 = g11 * g11 * s11;
     const double m12 = g11 * (g21 * s11 + g22 * s12);
     const double m22 = g21 * g21 * s11 + 2.0 * g21 * g22 * s12 + g22 * g22 * s22;
@@ -135,7 +137,8 @@ static double lim_roundoff(const sus_model *m, double W, double dx)
 {
     const double (*I)[3] = m->I;
     const double im = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
-    const double to = (fabs(m->b[0]) + fabs(m->b[1])) * (fabs(m->o0c[0]) + fabs(m->o0c[1])) / m->det_m;
+    const double to =
+        (fabs(m->b[0]) + fabs(m->b[1])) * (fabs(m->o0c[0]) + fabs(m->o0c[1])) / m->det_m;
     return im * W * dx + 64.0 * SUS_U * (im + to) * W * W;
 }
 
@@ -194,14 +197,15 @@ void multiplier_limit_claims(const claims_paper *p)
             snprintf(far_name, sizeof far_name, "%s", d->b.name);
         }
     }
-    snprintf(text, sizeof text,
-             "max over $t_k$ of $|\\lim_{\\varepsilon \\to 0} (\\lambda(t_k+\\varepsilon) - "
-             "\\lambda_{k+1}) - O_0(\\omega(t_k))|$, \\eqref{taualg} as printed, fit over "
-             "$\\varepsilon \\in [2^{-14}, 2^{-10}]$ $k_\\mathrm{paper}/k$ (the body's own time); "
-             "expected $O_0$ by a central difference of $c(\\omega(t))$ on the closed form, not from "
-             "\\eqref{LagMult}; %d bodies (worst: %s); bound $2 (155/64) A \\varepsilon_1 "
-             "\\varepsilon_5$ + round-off, $A \\ge |a|$ from the closed form: the limit is $O_0$",
-             BODIES_COUNT, worst_name);
+    snprintf(
+        text, sizeof text,
+        "max over $t_k$ of $|\\lim_{\\varepsilon \\to 0} (\\lambda(t_k+\\varepsilon) - "
+        "\\lambda_{k+1}) - O_0(\\omega(t_k))|$, \\eqref{taualg} as printed, fit over "
+        "$\\varepsilon \\in [2^{-14}, 2^{-10}]$ $k_\\mathrm{paper}/k$ (the body's own time); "
+        "expected $O_0$ by a central difference of $c(\\omega(t))$ on the closed form, not from "
+        "\\eqref{LagMult}; %d bodies (worst: %s); bound $2 (155/64) A \\varepsilon_1 "
+        "\\varepsilon_5$ + round-off, $A \\ge |a|$ from the closed form: the limit is $O_0$",
+        BODIES_COUNT, worst_name);
     ledger_add("lambda-limit-variational", "\\PaperRefOr{PropoFinal}, proof", text, worst.dev, 0.0,
                worst.bound, LEDGER_REPRODUCED);
     snprintf(text, sizeof text,

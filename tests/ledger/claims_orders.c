@@ -19,7 +19,8 @@ static double slope_over(const double *eps, const double *err, int lo, int hi)
 }
 
 /* The last index of the octave of candidates that starts at lo (eps falls with j), or -1 when the
- * candidates stop before an octave: the grids are powers of 2^(1/4) (claims_window.c's rounding). */
+ * candidates stop before an octave: the grids are powers of 2^(1/4) (claims_window.c's rounding).
+ */
 static int octave_from(const double *eps, const int *cand, int n, int lo)
 {
     for (int j = lo; j < n && cand[j]; j++)
@@ -160,15 +161,17 @@ static void fallback_note(const order_summary *s, char *buf, size_t len)
                  s->fallback, s->fb_lo, s->fb_hi);
 }
 
-void ledger_order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
-                   const order_summary *s, int expected, const char *ref, ledger_assert truth)
+void ledger_order_line_at(const char *file, int line, const char *id, const char *what,
+                          const char *name, const order_summary *s, int expected, const char *ref,
+                          ledger_assert truth)
 {
     char q[640], note[320], fb[200];
     const int measured = BODIES_COUNT - s->roundoff;
     roundoff_note(s, note, sizeof note);
     if (s->unmeasured || !measured) {
-        snprintf(q, sizeof q, "%s, %s: no order on %s (%d of %d bodies): fewer than 3 steps taken, or "
-                              "fewer than 3 consecutive errors above the round-off floor%s",
+        snprintf(q, sizeof q,
+                 "%s, %s: no order on %s (%d of %d bodies): fewer than 3 steps taken, or "
+                 "fewer than 3 consecutive errors above the round-off floor%s",
                  what, name, s->unmeasured ? s->unmeasured_body : "any",
                  s->unmeasured ? s->unmeasured : measured, BODIES_COUNT, note);
         ledger_add_bound_at(file, line, id, ref, q, -INFINITY, expected - 1.0, 1, truth);
@@ -185,10 +188,11 @@ void ledger_order_line_at(const char *file, int line, const char *id, const char
         return;
     }
     fallback_note(s, fb, sizeof fb);
-    snprintf(q, sizeof q,
-             "%s, %s; worst of %d of %d bodies (seed %u) with one slope, %s, window $\\varepsilon k "
-             "\\in [%.3g, %.3g]$; range %.2f to %.2f%s%s",
-             what, name, s->plateaus, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
-             s->hi, fb, note);
+    snprintf(
+        q, sizeof q,
+        "%s, %s; worst of %d of %d bodies (seed %u) with one slope, %s, window $\\varepsilon k "
+        "\\in [%.3g, %.3g]$; range %.2f to %.2f%s%s",
+        what, name, s->plateaus, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi,
+        s->lo, s->hi, fb, note);
     ledger_add_at(file, line, id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
 }

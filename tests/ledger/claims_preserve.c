@@ -17,7 +17,8 @@ typedef struct {
     double w3, mu, defect;
 } preserve_ctx;
 
-/* Step 6 of (algo): v_{R_k} = R_k w^_k; the unreduced constraint is <e3, vee(R_k^T v_{R_k})> = 0. */
+/* Step 6 of (algo): v_{R_k} = R_k w^_k; the unreduced constraint is <e3, vee(R_k^T v_{R_k})> = 0.
+ */
 static int track(void *vctx, const sus_row *row)
 {
     preserve_ctx *c = vctx;
@@ -55,10 +56,9 @@ void preserve_claims(const claims_paper *p, int method)
              "max over $10^6$ steps ($\\varepsilon = 0.01$) of $\\max(|\\omega_3|, |\\langle e_3, "
              "(R_k^\\top R_k \\hat{\\omega}_k)^\\vee \\rangle|)$, %s",
              label);
-    ledger_add(id,
-               me->paper_ref ? "\\PaperRefOr{algo}, \\PaperRefOr{nolabel:remark-5.2}" : "(extension)",
-               what, fmax(c.w3, c.mu), 0.0, 1e-14,
-               me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
+    ledger_add(
+        id, me->paper_ref ? "\\PaperRefOr{algo}, \\PaperRefOr{nolabel:remark-5.2}" : "(extension)",
+        what, fmax(c.w3, c.mu), 0.0, 1e-14, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     /* A plain sum R + R D rounds each of the N = 1e6 additions at u |R|: a random walk of
      * sqrt(N) u = 1.1e-13 (measured 1.1e-13 .. 7.1e-13 over the methods with the compensation
      * removed from sus_attitude_increment). The compensated sum keeps only the error of the
@@ -117,11 +117,12 @@ void preserve_control_claims(const claims_paper *p)
         defect = fmax(defect, sus_so3_orth_defect(R));
     }
     /* A hundred times the bounds asserted above: the measurement can tell them apart. */
-    ledger_add_bound("negative-control-unreduced-rk4", "(extension)",
-                     "RK4 on \\eqref{LdAeqs}, $10^6$ steps of $\\varepsilon = 0.01$: $\\max |R^\\top "
-                     "R - I|$ must exceed $10^{-10}$, over $1000\\times$ the bound $5 \\times "
-                     "10^{-14}$ above",
-                     defect, 1e-10, 1, LEDGER_EXTENSION);
+    ledger_add_bound(
+        "negative-control-unreduced-rk4", "(extension)",
+        "RK4 on \\eqref{LdAeqs}, $10^6$ steps of $\\varepsilon = 0.01$: $\\max |R^\\top "
+        "R - I|$ must exceed $10^{-10}$, over $1000\\times$ the bound $5 \\times "
+        "10^{-14}$ above",
+        defect, 1e-10, 1, LEDGER_EXTENSION);
     ledger_add_bound("negative-control-unreduced-rk4-constraint", "(extension)",
                      "RK4 on \\eqref{LdAeqs}, same run: $\\max |\\langle e_3, (R^\\top V)^\\vee "
                      "\\rangle|$ must exceed $100\\times$ the bound $10^{-14}$ above",

@@ -54,9 +54,9 @@ static double miss(double h, double expect)
     return isnan(h) ? INFINITY : isfinite(expect) ? fabs(h - expect) : -h;
 }
 
-/* The measured limit farthest from expect over the paper's body and the general ones: in h = eps k the
- * linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. A body
- * where the returns end because a step is refused beyond its series' proved radius (a Taylor
+/* The measured limit farthest from expect over the paper's body and the general ones: in h = eps k
+ * the linearisation is psi' = -k psi on every body, so theory gives one limit for all of them. A
+ * body where the returns end because a step is refused beyond its series' proved radius (a Taylor
  * step: step_taylor.c) before expect cannot show the linear limit: it is named in *bound (with the
  * h where its steps stop), not measured. */
 static double limit_over_bodies(const sus_stepper_type *st, double expect, char *worst, size_t len,
@@ -192,12 +192,13 @@ void stability_solvable_claims(const sus_exact *paper, int m)
     const expected_order *eo = expected_order_of(me->type->name);
     const int none_stated = eo && isinf(eo->solvable_h);
     snprintf(id, sizeof id, "stability-solvable-%s", me->type->name);
-    snprintf(q, sizeof q,
-             "smallest $h$ at which a %s run (12 angles, $h$ from 0.01 to 1000) meets a fold of its "
-             "step equation's branch continued from $\\varepsilon = 0$, or fails to solve it: %s",
-             me->type->name,
-             none_stated ? "none up to $h = 1000$, as the README states"
-                         : "at least 1 ($7\\times$ the paper's $\\varepsilon = 1$)");
+    snprintf(
+        q, sizeof q,
+        "smallest $h$ at which a %s run (12 angles, $h$ from 0.01 to 1000) meets a fold of its "
+        "step equation's branch continued from $\\varepsilon = 0$, or fails to solve it: %s",
+        me->type->name,
+        none_stated ? "none up to $h = 1000$, as the README states"
+                    : "at least 1 ($7\\times$ the paper's $\\varepsilon = 1$)");
     ledger_add_none_found(id, "(extension)", q, first, none_stated ? H_MAX * (1.0 + 1e-12) : 1.0,
                           H_MAX, LEDGER_EXTENSION);
 }

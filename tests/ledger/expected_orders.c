@@ -11,8 +11,11 @@
 #define REF_GENERAL_DSP "\\PaperRefOr{nolabel:proposition-5.2}, order $(p,p)$"
 #define TAYLOR "Taylor's theorem; Jorba \\& Zou 2005"
 
-#define SO3(cayley, cayley_mid, exp_mid) \
-    {[SUS_RECON_CAYLEY] = cayley, [SUS_RECON_CAYLEY_MID] = cayley_mid, [SUS_RECON_EXP_MID] = exp_mid}
+#define SO3(cayley, cayley_mid, exp_mid)                                                           \
+    {                                                                                              \
+        [SUS_RECON_CAYLEY] = cayley, [SUS_RECON_CAYLEY_MID] = cayley_mid,                          \
+        [SUS_RECON_EXP_MID] = exp_mid                                                              \
+    }
 
 static const expected_order TABLE[] = {
     /* The general-DSP proposition: explicit Euler is (1, 1), RK4 is (4, 4); the midpoint DSP is
@@ -33,7 +36,8 @@ static const expected_order TABLE[] = {
     {"comp4-s5", 4, 4, SO3(1, 4, 4), "Suzuki 1990 ($s = 5$), HLW V.3", 0, 0, 0},
     {"comp6-kl", 6, 6, SO3(1, 6, 6), "Kahan \\& Li 1997 ($s = 9$), HLW V.3", 0, 0, 0},
     {"comp8-kl", 8, 8, SO3(1, 8, 8), "Kahan \\& Li 1997 ($s = 17$), HLW V.3", 0, 0, 0},
-    {"comp10-ss", 10, 10, SO3(1, 10, 10), "Sofroniou \\& Spaletta 2005 ($s = 35$), HLW V.3", 0, 0, 0},
+    {"comp10-ss", 10, 10, SO3(1, 10, 10), "Sofroniou \\& Spaletta 2005 ($s = 35$), HLW V.3", 0, 0,
+     0},
     /* A Taylor method of degree p has order p (truncation of the exact series); its attitude is
      * the degree-p series of the quaternion, whatever the reconstruction asked for. */
     {"taylor8", 8, 8, SO3(8, 8, 8), TAYLOR, 1, 0, 0},
@@ -43,7 +47,8 @@ static const expected_order TABLE[] = {
     /* The 2-stage Gauss-Legendre collocation has order 2s = 4 (Butcher 1964; HLW Thm. II.1.5); with
      * lambda(w^{k+1}) from (LagMult) the general-DSP proposition gives s = p. Its attitude is the
      * same collocation on the quaternion kinematics, order 4 whatever reconstruction is asked. */
-    {"gauss4", 4, 4, SO3(4, 4, 4), "Gauss-Legendre $s = 2$ (HLW II.1.3); " REF_GENERAL_DSP, 0, 0, 1},
+    {"gauss4", 4, 4, SO3(4, 4, 4), "Gauss-Legendre $s = 2$ (HLW II.1.3); " REF_GENERAL_DSP, 0, 0,
+     1},
 };
 
 const expected_order *expected_order_of(const char *method)

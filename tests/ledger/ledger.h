@@ -12,11 +12,12 @@
 #define SUSLOV_LEDGER_H
 
 typedef enum {
-    LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
-    LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol */
-    LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
-    LEDGER_ERRATUM,        /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
-                            * (it contradicts the paper's own formulas, not its results) */
+    LEDGER_REPRODUCED, /* we assert the paper's claim holds: |measured - expected| <= tol */
+    LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol
+                            */
+    LEDGER_EXTENSION, /* our own claim beyond the paper: |measured - expected| <= tol */
+    LEDGER_ERRATUM, /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
+                     * (it contradicts the paper's own formulas, not its results) */
     LEDGER_BY_CONSTRUCTION /* a line that holds because the code sets it so (every stepper writes
                             * w3 = 0.0): it checks the implementation, cannot refute the paper and
                             * is not counted as evidence; passes when it holds */
@@ -28,8 +29,9 @@ typedef enum {
  * when it is
  * what `truth` asserts, which the caller states and justifies next to the call. */
 #define ledger_add(...) ledger_add_at(__FILE__, __LINE__, __VA_ARGS__)
-void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref, const char *quantity,
-                   double measured, double expected, double tol, ledger_assert truth);
+void ledger_add_at(const char *file, int line, const char *id, const char *paper_ref,
+                   const char *quantity, double measured, double expected, double tol,
+                   ledger_assert truth);
 
 /* The same for a one-sided claim: it holds when measured >= bound (at_least) or measured <=
  * bound (otherwise); the TSV shows the bound as "expected" and tolerance 0, and the quantity
@@ -43,10 +45,11 @@ void ledger_add_bound_at(const char *file, int line, const char *id, const char 
  * up to the bound, the largest h tested" (a stability limit that is never reached): such a line
  * prints "none found for h <= BOUND" as its measured value, in claims.tsv and in the companion,
  * never inf. Every other line fails on an infinite value. */
-#define ledger_add_bound_unbounded(...) ledger_add_bound_unbounded_at(__FILE__, __LINE__, __VA_ARGS__)
-void ledger_add_bound_unbounded_at(const char *file, int line, const char *id, const char *paper_ref,
-                                   const char *quantity, double measured, double bound, int at_least,
-                                   ledger_assert truth);
+#define ledger_add_bound_unbounded(...)                                                            \
+    ledger_add_bound_unbounded_at(__FILE__, __LINE__, __VA_ARGS__)
+void ledger_add_bound_unbounded_at(const char *file, int line, const char *id,
+                                   const char *paper_ref, const char *quantity, double measured,
+                                   double bound, int at_least, ledger_assert truth);
 
 /* The same for the smallest h at which something happens, asserted >= bound, searched for up to
  * `searched` (> bound): +infinity when none was found, printed "none found for h <= searched". */

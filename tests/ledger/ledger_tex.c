@@ -309,7 +309,8 @@ static int write_file(const char *dir, const char *name,
 
 int ledger_write_tex(const char *dir)
 {
-    return write_file(dir, "numbers.tex", write_numbers) || write_file(dir, "ledger.tex", write_ledger) ||
+    return write_file(dir, "numbers.tex", write_numbers) ||
+                   write_file(dir, "ledger.tex", write_ledger) ||
                    write_file(dir, "summary.tex", write_summary) ||
                    write_file(dir, "claims_tex.tsv", write_tex_tsv)
                ? -1

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ---- the table: every macro the notation knows, and its plain text ---------------------------- */
+/* ---- the table: every macro the notation knows, and its plain text ------------------------ */
 
 enum { IN_MATH = 1, IN_TEXT = 2, ANYWHERE = 3 };
 
@@ -73,8 +73,9 @@ static const macro MACROS[] = {
     {"det", M_SYMBOL, IN_MATH, "det"}, {"exp", M_SYMBOL, IN_MATH, "exp"},
     {"log", M_SYMBOL, IN_MATH, "log"}, {"ln", M_SYMBOL, IN_MATH, "ln"},
     {"sin", M_SYMBOL, IN_MATH, "sin"}, {"cos", M_SYMBOL, IN_MATH, "cos"},
-    {"tanh", M_SYMBOL, IN_MATH, "tanh"}, {"cot", M_SYMBOL, IN_MATH, "cot"}, {"cosh", M_SYMBOL, IN_MATH, "cosh"},
+    {"tanh", M_SYMBOL, IN_MATH, "tanh"}, {"cosh", M_SYMBOL, IN_MATH, "cosh"},
     {"sinh", M_SYMBOL, IN_MATH, "sinh"}, {"arg", M_SYMBOL, IN_MATH, "arg"},
+    {"cot", M_SYMBOL, IN_MATH, "cot"},
     /* fonts and text */
     {"mathrm", M_FONT, IN_MATH, NULL}, {"mathit", M_FONT, IN_MATH, NULL},
     {"mathbf", M_FONT, IN_MATH, NULL}, {"mathcal", M_FONT, IN_MATH, NULL},
@@ -83,7 +84,8 @@ static const macro MACROS[] = {
     {"textit", M_TEXT, IN_TEXT, NULL}, {"textbf", M_TEXT, IN_TEXT, NULL},
     {"texttt", M_TEXT, IN_TEXT, NULL},
     /* accents: the combining character after the argument */
-    {"hat", M_ACCENT, IN_MATH, "\xcc\x82"}, {"widehat", M_ACCENT, IN_MATH, "\xcc\x82"}, {"tilde", M_ACCENT, IN_MATH, "\xcc\x83"},
+    {"hat", M_ACCENT, IN_MATH, "\xcc\x82"}, {"widehat", M_ACCENT, IN_MATH, "\xcc\x82"},
+    {"tilde", M_ACCENT, IN_MATH, "\xcc\x83"},
     {"bar", M_ACCENT, IN_MATH, "\xcc\x84"}, {"dot", M_ACCENT, IN_MATH, "\xcc\x87"},
     {"sqrt", M_SQRT, IN_MATH, "√"}, {"frac", M_FRAC, IN_MATH, NULL},
     {"left", M_DELIM, IN_MATH, NULL}, {"right", M_DELIM, IN_MATH, NULL},
