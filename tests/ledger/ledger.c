@@ -54,11 +54,11 @@ typedef struct {
 
 /* A string of the notation, kept as written and as plain text; a string outside the notation
  * stops the ledger with the line that recorded it. */
-static void keep(const char *s, int ids, char *tex, size_t tlen, char *plain, size_t plen,
-                 ledger_source src)
+static void keep(const char *s, notation_refs refs, char *tex, size_t tlen, char *plain,
+                 size_t plen, ledger_source src)
 {
     char err[800], what[1000];
-    if (strlen(s) >= tlen || notation_plain(s, ids, plain, plen, err, sizeof err) != 0) {
+    if (strlen(s) >= tlen || notation_plain(s, refs, plain, plen, err, sizeof err) != 0) {
         if (strlen(s) >= tlen)
             snprintf(err, sizeof err, "longer than %d bytes: \"%s\"", (int)tlen - 1, s);
         snprintf(what, sizeof what, "the notation of the line recorded at %s:%d: %s", src.file,
@@ -79,9 +79,10 @@ static void add_row(ledger_source src, const char *id, const char *paper_ref, co
     ledger_row *r = &state.rows[state.nrows++];
     memset(r, 0, sizeof *r);
     snprintf(r->id, sizeof r->id, "%s", id);
-    keep(paper_ref, 1, r->ref, sizeof r->ref, r->ref_plain, sizeof r->ref_plain, src);
-    keep(quantity, 0, r->quantity, sizeof r->quantity, r->quantity_plain, sizeof r->quantity_plain,
+    keep(paper_ref, PLAIN_REF_IDS, r->ref, sizeof r->ref, r->ref_plain, sizeof r->ref_plain,
          src);
+    keep(quantity, PLAIN_QUANTITY, r->quantity, sizeof r->quantity, r->quantity_plain,
+         sizeof r->quantity_plain, src);
     snprintf(r->source, sizeof r->source, "%s:%d", src.file, src.line);
     r->measured = measured;
     r->expected = expected;

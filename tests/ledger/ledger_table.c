@@ -65,7 +65,7 @@ static void print_findings(FILE *fp, const ledger_state *s)
             const ledger_row *r = &s->rows[i];
             if (strcmp(r->verdict, LEDGER_VERDICTS[v]) != 0)
                 continue;
-            if (notation_plain(r->ref, 0, ref, sizeof ref, err, sizeof err) != 0)
+            if (notation_plain(r->ref, PLAIN_REF, ref, sizeof ref, err, sizeof err) != 0)
                 snprintf(ref, sizeof ref, "%s", r->ref_plain);
             fprintf(fp, "  %-14s  %s: %s\n", r->verdict, ref, r->id);
         }

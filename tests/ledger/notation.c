@@ -118,7 +118,7 @@ typedef struct {
     const char *p; /* the position */
     char *out;
     size_t len, n;
-    int ids; /* references with their labels as secondary ids */
+    notation_refs refs; /* how references read */
     int failed;
     char *err;
     size_t errlen;
@@ -209,12 +209,12 @@ static void reference(renderer *r, int equation)
     const char *label = label_arg(r, &n);
     if (!label)
         return;
-    if (!published(label, n, equation && !r->ids, name, sizeof name)) {
+    if (!published(label, n, equation && r->refs == PLAIN_QUANTITY, name, sizeof name)) {
         fail(r, "no label '%.*s' in paper/labels.tsv", (int)n, label);
         return;
     }
     emits(r, name);
-    if (r->ids && strncmp(label, "nolabel:", 8) != 0) {
+    if (r->refs == PLAIN_REF_IDS && strncmp(label, "nolabel:", 8) != 0) {
         emits(r, " (");
         emit(r, label, n);
         emits(r, ")");
@@ -364,9 +364,10 @@ static void render(renderer *r, int math, char close)
     }
 }
 
-int notation_plain(const char *s, int ids, char *out, size_t len, char *err, size_t errlen)
+int notation_plain(const char *s, notation_refs refs, char *out, size_t len, char *err,
+                   size_t errlen)
 {
-    renderer r = {s, s, out, len, 0, ids, 0, err, errlen};
+    renderer r = {s, s, out, len, 0, refs, 0, err, errlen};
     out[0] = '\0';
     render(&r, 0, '\0');
     if (!r.failed && *r.p)

@@ -20,12 +20,16 @@
 
 #include <stddef.h>
 
-/* The plain text of s into out (UTF-8, at most len - 1 bytes). References print the paper's
- * published number, "(27)", "Proposition 5.1"; with ids (a paper_ref column), followed by the
- * label as a secondary id: "eq. (27) (ContDyn)", "Proposition 5.1 (TeoL)". Returns 0, or -1
- * with a message in err when s is outside the notation (or a label is not the paper's) or the
- * text does not fit. */
-int notation_plain(const char *s, int ids, char *out, size_t len, char *err, size_t errlen);
+/* How references read in plain text: a quantity's "(27)"; a paper_ref's "eq. (27)"; and with its
+ * label as a secondary id, "eq. (27) (ContDyn)", "Proposition 5.1 (TeoL)" (never the stand-in of
+ * an unlabelled statement, nolabel:KIND-N). */
+typedef enum { PLAIN_QUANTITY, PLAIN_REF, PLAIN_REF_IDS } notation_refs;
+
+/* The plain text of s into out (UTF-8, at most len - 1 bytes), references by the paper's
+ * published numbers. Returns 0, or -1 with a message in err when s is outside the notation (or
+ * a label is not the paper's) or the text does not fit. */
+int notation_plain(const char *s, notation_refs refs, char *out, size_t len, char *err,
+                   size_t errlen);
 
 /* A number for math mode, to a given count of significant digits: 0.0105, 3.49\times10^{-9},
  * 10^{-14}; the text of %.*g otherwise (no exponent). */

@@ -19,30 +19,42 @@ HEAD = ('<div class="claim head" aria-hidden="true"><span>ledger line</span>'
         '<span>verdict</span></div>')
 
 
+# In claims.tsv's paper_ref the paper is cited by its published numbers, each label that has one
+# following as a secondary id: "Proposition 5.1 (TeoL)", "eq. (27) (ContDyn)", "Remark 5.2".
+CITED_RE = re.compile(r"(eq\. \([0-9a-z]+\)|[A-Z][a-z]+ [0-9]+(?:\.[0-9]+)?)"
+                      r"(?: \(([A-Za-z][A-Za-z0-9-]*)\))?")
+
+
 def published_ref(site, text):
-    """The ledger's paper_ref with each label replaced by what the paper prints (TeoL ->
-    Proposition 5.1, linked to its page; (PerFin2) -> (44), linked to the equation)."""
+    """The ledger's paper_ref with each citation linked: a statement to its page, an equation to its
+    entry, the label after it in small type (Proposition 5.1 (TeoL) -> Proposition 5.1, linked,
+    then TeoL)."""
     def sub(m):
-        w = m.group(0)
-        if w not in site.labels:
-            return w
-        kind, number = site.labels[w]
-        if kind in frame.STATEMENT_KINDS and w in site.st.labels:
-            return '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(w), esc(w),
-                                                      esc(site.st.name(w)))
-        if kind == "equation":
-            frame.REFERENCED.add(w)
-            return ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
-                    % (esc(w), esc(w), esc(number)))
-        return w
-    out, rest = [], esc(text)
-    words = r"[A-Za-z][A-Za-z0-9-]*"
-    for phrase, lab in site.st.aliases:    # first: "Prop. general DSP" -> Proposition 5.2
-        if lab in site.st.labels and esc(phrase) in rest:
-            head, rest = rest.split(esc(phrase), 1)
-            out += [re.sub(words, sub, head), '<a href="%s" title="%s">%s</a>' % (
-                argument_pages.stmt_page(lab), esc(phrase), esc(site.st.name(lab)))]
-    return "".join(out) + re.sub(words, sub, rest)
+        name, lab = m.group(1), m.group(2)
+        if not lab:     # an unlabelled statement, cited by number alone: "Remark 5.2"
+            kind, _, number = name.partition(" ")
+            lab = site.st.by_name.get((kind.lower(), number))
+            if not lab:
+                return esc(m.group(0))
+            return '<a href="%s">%s</a>' % (argument_pages.stmt_page(lab), esc(name))
+        if lab not in site.labels:
+            return esc(m.group(0))
+        kind = site.labels[lab][0]
+        if kind in frame.STATEMENT_KINDS and lab in site.st.labels:
+            link = '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(lab), esc(lab),
+                                                      esc(name))
+        elif kind == "equation":
+            frame.REFERENCED.add(lab)
+            link = ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
+                    % (esc(lab), esc(lab), esc(name)))
+        else:
+            link = esc(name)
+        return "%s %s" % (link, secondary(lab))
+    out, last = [], 0
+    for m in CITED_RE.finditer(text):
+        out += [esc(text[last:m.start()]), sub(m)]
+        last = m.end()
+    return "".join(out) + esc(text[last:])
 
 
 def source_link(site, c):
