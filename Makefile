@@ -5,7 +5,10 @@
 #   make test       unit, CLI and build tests (seconds); make ledger: the claims ledger
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv
-#   make bench      work-precision and per-step cost against GSL (data/bench.csv)
+#   make bench      work-precision and per-step cost against GSL and Boost: a fresh run in
+#                   data/bench-run/ (summary.md, bench.csv, ...), its figures in $(BUILD)/bench-run/
+#   make bench-record  the same, into data/bench-recorded/ (the run the companion and the docs
+#                   quote, committed with its machine.txt), and the previews drawn from it
 #   make paper      the companion text, paper/companion.pdf and paper/methods.pdf (committed,
 #                   byte for byte reproducible; make check fails when their numbers are stale)
 #   make web        the annotated web edition, $(BUILD)/web/index.html (opens from disk);
@@ -106,6 +109,10 @@ LIBS_LINK := $(foreach l,$(call reverse,$(LIB_LAYERS)),$(call lib_of,$(l)))
 FIG_SRC  := $(wildcard src/prog/figure_*.c)
 FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
+# The bench's figures, drawn from the recorded run (make bench-record, below)
+BENCH_REC  := data/bench-recorded
+BENCH_FIGS := figures/work_precision.pdf figures/work_precision.png figures/step_cost.pdf \
+              figures/step_cost.png
 TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
 RENDER_H := $(notdir $(wildcard src/render/*.h))
 # (stdin from /dev/null: in a tree without src/render, grep gets no pattern and would read it)
@@ -128,7 +135,7 @@ endef
 $(eval $(call STAMP_RULE,$(BUILD)/flags.stamp,$(CC) $(WARN) $(CFLAGS) $(SANFLAGS) $(LDFLAGS) | $(CXX)))
 $(foreach l,$(LIB_LAYERS),$(eval $(call STAMP_RULE,$(BUILD)/libsus_$(l).list,$(call obj_of,$(l)))))
 
-.PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench paper clean distclean
+.PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench bench-record paper clean distclean
 all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS) \
      $(TIMED)
 
@@ -215,11 +222,12 @@ $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 # every figure is up to date (an always-run prerequisite would make it answer 1 for ever). The
 # last line says what was written and where; not under -q, where a recipe would make `figures`
 # out of date for ever.
-figures: $(FIGS:%=figures/%.pdf) animation
+figures: $(FIGS:%=figures/%.pdf) animation $(BENCH_FIGS)
 ifeq ($(findstring q,$(firstword -$(MAKEFLAGS))),)
 	@echo "figures: $(words $(FIGS)) figures in figures/ (NAME.pdf, a NAME.png preview, the caption" \
-	    "NAME.txt) with their data in data/NAME.csv; the animation in figures/attitude.mp4," \
-	    "figures/attitude/ and figures/attitude_filmstrip.png"
+	    "NAME.txt) with their data in data/NAME.csv; the bench's two from its recorded run" \
+	    "(data/bench-recorded/); the animation in figures/attitude.mp4, figures/attitude/ and" \
+	    "figures/attitude_filmstrip.png"
 endif
 DEPS_FIGURES := $(BUILD)/deps-figures.stamp
 $(DEPS_FIGURES): tools/deps.sh
@@ -302,13 +310,29 @@ $(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $^ -o $@
 
-# Speed and accuracy: data/bench.csv, figures/work_precision and figures/step_cost, and the
-# PASS/MISS lines of the speed targets (never a failing test). make bench also times the
-# Boost.Odeint peers: bench.c again with SUSLOV_WITH_ODEINT, linked with src/prog/bench_odeint.cpp
-# (g++ and the header-only Boost from `tools/deps.sh bench`, which make check never needs).
+# Speed and accuracy: the PASS/MISS lines of the speed targets (never a failing test). make bench
+# writes a fresh run, whole or not at all, into data/bench-run/ and its figures into
+# $(BUILD)/bench-run/; make bench-record writes the run the companion and the docs quote into
+# data/bench-recorded/ (committed: a deliberate step, the only one that writes there; BENCH_NOTE
+# says what else ran on the machine) and draws the committed previews from it. Both time the
+# Boost.Odeint peers too: bench.c again with SUSLOV_WITH_ODEINT, linked with
+# src/prog/bench_odeint.cpp (g++ and the header-only Boost from `tools/deps.sh bench`, which make
+# check never needs).
+BENCH_NOTE ?=
 bench: all $(BUILD)/bench_boost
-	@mkdir -p figures data
-	@$(TIMED) $(BUILD)/timings/bench.txt sh tools/bench.sh $(BUILD) "$(CFLAGS)"
+	@$(TIMED) $(BUILD)/timings/bench.txt sh tools/bench.sh $(BUILD) "$(CFLAGS)" data/bench-run \
+	    $(BUILD)/bench-run
+bench-record: all $(BUILD)/bench_boost
+	@sh tools/bench.sh $(BUILD) "$(CFLAGS)" $(BENCH_REC) $(BUILD)/bench-recorded $(call sq,$(BENCH_NOTE))
+	@$(MAKE) --no-print-directory $(BENCH_FIGS)
+
+# The bench's figures of the recorded run (the committed previews, and the PDF the software note
+# prints): drawn from its data alone, in a second, so they are the same bytes every time.
+.PRECIOUS: $(BENCH_FIGS)
+$(BENCH_FIGS) &: $(BUILD)/bench $(BENCH_REC)/bench.csv
+	@mkdir -p figures
+	$(call say,FIG,figures/work_precision figures/step_cost)
+	$(Q)$(BUILD)/bench --plot figures $(BENCH_REC)
 
 CXXWARN := -std=c++17 -Wall -Wextra -Wshadow $(filter -Werror,$(WARN))
 deps-bench:
@@ -325,17 +349,12 @@ $(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_od
 	$(call say,LD,$@)
 	$(Q)$(CXX) $(ALL_LDFLAGS) $^ $(LIBS_DRAW) -o $@
 
-# The companion text: every number from the claims ledger (build/numbers.tex) and the benchmark
-# (data/bench.tex), figures from the figure programs, listings and equation map from src/.
-# The same program as make bench (with the Boost.Odeint peers), so that the companion quotes
-# the same comparison whichever of the two wrote data/bench.tex last.
-data/bench.tex data/bench.csv figures/work_precision.pdf figures/step_cost.pdf &: $(BUILD)/bench_boost | $(BUILD)/suslov
-	@mkdir -p figures data
-	$< figures data > $(BUILD)/bench_paper.txt || { grep "CHECK FAILED\|not reproduced" $(BUILD)/bench_paper.txt; exit 1; }
-
+# The companion text: every number from the claims ledger (build/numbers.tex) and the recorded
+# bench run (data/bench-recorded/bench.tex and machine.tex), figures from the figure programs and
+# from the recorded run's data, listings and equation map from src/.
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
-            $(BUILD)/summary.tex $(BUILD)/sensitivity.tex data/bench.tex \
+            $(BUILD)/summary.tex $(BUILD)/sensitivity.tex $(BENCH_REC)/bench.tex $(BENCH_REC)/machine.tex \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
@@ -524,11 +543,11 @@ clean:
 	$(Q)rm -rf $(BUILD)
 
 # Everything `make figures`, `make bench` and `make paper` write but what is committed: the PNG
-# previews the README shows, data/animation.cfg, and the PDFs with their paper/ledger.sha256
-# stay (in a git checkout, a PNG that git does not track goes too).
+# previews the README shows, data/animation.cfg, the recorded bench run, and the PDFs with their
+# paper/ledger.sha256 stay (in a git checkout, a PNG that git does not track goes too).
 distclean: clean
 	rm -rf figures/*.pdf figures/*.txt figures/*.tmp.* figures/.tmp.* figures/attitude figures/attitude.mp4 \
-	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* paper/*.tmp
+	    data/*.csv data/*.tex data/*.tmp.* data/.tmp.* data/bench-run paper/*.tmp
 	@if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
 	    for f in figures/*.png; do \
 	        [ ! -e "$$f" ] || git ls-files --error-unmatch "$$f" >/dev/null 2>&1 || { echo "rm -f $$f"; rm -f "$$f"; }; \

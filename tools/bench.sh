@@ -1,36 +1,87 @@
 #!/bin/sh
-# make bench: the benchmark program, then the wall-clock targets of `make check` and
-# `make figures`, with the machine described. Prints PASS/MISS lines; never fails on a MISS.
+# make bench and make bench-record: one run of the benchmark program, then the wall-clock targets
+# of `make check`, `make figures` and figure_stability, the machine described, and a Markdown
+# summary. Prints PASS/MISS lines; never fails on a MISS.
+# Usage: bench.sh BUILD CFLAGS OUTDIR FIGDIR [NOTE]
+#   OUTDIR gets the run whole or not at all (it is replaced only when the run succeeded): bench.csv,
+#   bench.tex, what_to_use.tsv and longruns.tsv (the program's), bench.txt (what it printed, and
+#   the wall-clock lines), machine.txt and machine.tex (where, when, from which commit, the load
+#   on the machine, NOTE), summary.md (tools/bench_summary.sh). FIGDIR gets the run's figures.
 set -eu
-B=${1:-build}
-CFLAGS_USED=${2:-}
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'),"
-echo "         $(cc --version | head -1), CFLAGS: $CFLAGS_USED"
-echo
-# bench_boost is the same program with the Boost.Odeint peers (make bench builds it)
-if [ -x "$B/bench_boost" ]; then "$B/bench_boost" figures data; else "$B/bench" figures data; fi
-sh tools/readme_bench.sh # the README's tables from this run's data/what_to_use.tsv
-secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
+B=$1 CFLAGS_USED=$2 OUT=$3 FIG=$4 NOTE=${5:-}
+mkdir -p "$(dirname "$OUT")" "$FIG"
+tmp="$OUT.tmp.$$"
+rm -rf "$tmp"
+mkdir "$tmp"
+trap 'rm -rf "$tmp"' EXIT
+for sig in INT TERM HUP; do
+    # shellcheck disable=SC2064 # $sig now, the rest at the signal
+    trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
+done
+load() { cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown; }
+load0=$(load)
+start=$(date -u '+%Y-%m-%d %H:%M UTC')
 t0=$(date +%s.%N)
+# bench_boost is the same program with the Boost.Odeint peers (make bench builds it)
+prog="$B/bench"
+[ -x "$B/bench_boost" ] && prog="$B/bench_boost"
+if ! "$prog" "$FIG" "$tmp" >"$tmp/bench.txt"; then
+    cat "$tmp/bench.txt"
+    echo "bench: the run failed; $OUT is left as it was" >&2
+    exit 1
+fi
+cat "$tmp/bench.txt"
+t1=$(date +%s.%N)
+secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
 # make check's work, timed whole: the tests, and the ledger run afresh (make reruns it only when
 # its program changed), into a scratch directory: the ledger writes numbers.tex, ledger.tex,
 # summary.tex and methods.tsv beside its TSV, and build/'s are the ones make made
-tmp=$(mktemp -d)
-{ sh tests/run.sh "$B" test "$B"/test_* && "$B/claims" "$tmp/claims.tsv"; } >/dev/null 2>&1 ||
-    echo "  (make check reported failures)"
-rm -rf "$tmp"
-t1=$(date +%s.%N)
-tmp=$(mktemp -d)
-# only the figure programs themselves: build/ also holds figure_*.link.d, *.trace and the like
+scratch=$(mktemp -d)
+c0=$(date +%s.%N)
+{ sh tests/run.sh "$B" test "$B"/test_* && "$B/claims" "$scratch/claims.tsv"; } >/dev/null 2>&1 ||
+    echo "  (make check reported failures)" >>"$tmp/bench.txt"
+c1=$(date +%s.%N)
+rm -rf "$scratch"
+scratch=$(mktemp -d)
+# only the figure programs themselves: build/ also holds figure_*.link.d, *.trace and the like;
+# one after another, as make figures runs them
+stab=""
 for f in "$B"/figure_*; do
     [ -f "$f" ] && [ -x "$f" ] || continue
-    "$f" "$tmp" "$tmp" >/dev/null
+    s0=$(date +%s.%N)
+    "$f" "$scratch" "$scratch" >/dev/null 2>&1
+    [ "$(basename "$f")" = figure_stability ] && stab=$(secs "$s0" "$(date +%s.%N)")
 done
-"$B/animation" data/animation.cfg "$tmp" "$tmp" >/dev/null 2>&1
-t2=$(date +%s.%N)
-rm -rf "$tmp"
-c=$(secs "$t0" "$t1") f=$(secs "$t1" "$t2")
-awk -v c="$c" -v f="$f" 'BEGIN {
-    printf "  %s make check (tests + claims ledger, built) in %s s (target < 60 s)\n", (c < 60 ? "PASS" : "MISS"), c
-    printf "  %s make figures (every figure program and the animation, built) in %s s (target < 120 s)\n", (f < 120 ? "PASS" : "MISS"), f
-}'
+"$B/animation" data/animation.cfg "$scratch" "$scratch" >/dev/null 2>&1
+f1=$(date +%s.%N)
+rm -rf "$scratch"
+awk -v c="$(secs "$c0" "$c1")" -v f="$(secs "$c1" "$f1")" -v s="${stab:-nan}" 'BEGIN {
+    printf "Wall-clock targets (this machine, as loaded as it was):\n"
+    printf "  %s figure_stability in %s s (target <= 10 s)\n", (s != "nan" && s <= 10 ? "PASS" : "MISS"), s
+    printf "  %s make figures (every figure program and the animation, built) in %s s (target <= 25 s)\n", (f <= 25 ? "PASS" : "MISS"), f
+    printf "  %s make check (the tests and the claims ledger run afresh, built) in %s s (target <= 40 s)\n", (c <= 40 ? "PASS" : "MISS"), c
+}' | tee -a "$tmp/bench.txt"
+load1=$(load)
+commit=$(git rev-parse HEAD 2>/dev/null || echo "not a git checkout")
+dirty=""
+[ -n "$(git status --porcelain --untracked-files=no 2>/dev/null)" ] && dirty=" (with uncommitted changes)"
+{
+    echo "date: $start"
+    echo "commit: $commit$dirty"
+    echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+    echo "cores: $(nproc)"
+    echo "os: $( (. /etc/os-release && echo "$PRETTY_NAME") 2>/dev/null || uname -s), kernel $(uname -r)"
+    echo "compiler: $(${CC:-cc} --version | head -1), CFLAGS $CFLAGS_USED"
+    echo "gsl: $(pkg-config --modversion gsl 2>/dev/null || echo unknown)"
+    echo "boost: $(sed -n 's/^#define BOOST_LIB_VERSION "\(.*\)"/\1/p' /usr/include/boost/version.hpp 2>/dev/null | tr _ .)"
+    echo "load average (1, 5, 15 min) at the start: $load0"
+    echo "load average (1, 5, 15 min) at the end: $load1"
+    echo "bench seconds (wall clock): $(secs "$t0" "$t1")"
+    [ -z "$NOTE" ] || echo "note: $NOTE"
+} >"$tmp/machine.txt"
+sh tools/bench_summary.sh "$tmp" tex >"$tmp/machine.tex"
+sh tools/bench_summary.sh "$tmp" md "$OUT" >"$tmp/summary.md"
+rm -rf "$OUT"
+mv "$tmp" "$OUT"
+trap - EXIT
+echo "bench: wrote $OUT/ (summary.md, the data and machine.txt) and $FIG/ (the figures)"

@@ -6,8 +6,8 @@
 #            builds a C++ program against the library), make, pkg-config, GSL, Cairo, OSMesa,
 #            a font (make check)
 #   figures  check + ffmpeg (make figures: the animation's video)
-#   paper    figures + TeX Live (make paper; the default). make paper also runs the bench,
-#            so the Makefile adds the bench profile there
+#   paper    figures + TeX Live (make paper; the default). make paper quotes the recorded
+#            bench run (data/bench-recorded/) and runs no bench
 #   bench    check + g++ and Boost.Odeint headers (make bench: the Boost peers; never make check)
 #   mutants  check + python3 (make mutants-ops: tools/mutants_ops.py)
 set -eu

@@ -24,6 +24,7 @@ unset MAKEFLAGS MFLAGS MAKELEVEL SAN BUILD  # a fresh make of its own, whatever 
 cp -R src tests tools paper Makefile README.md "$S"/
 mkdir -p "$S/data" "$S/figures"
 cp data/animation.cfg "$S/data/" 2>/dev/null || true
+cp -R data/bench-recorded "$S/data/" 2>/dev/null || true # the recorded bench run (test_bench_record)
 cd "$S" || exit 2
 B=build/mut
 # Every mutant relinks each program: gold does that faster than ld.bfd, where cc has it.

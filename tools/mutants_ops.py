@@ -245,6 +245,9 @@ class Scratch:
         cfg = os.path.join(root, "data", "animation.cfg")
         if os.path.exists(cfg):
             shutil.copy(cfg, os.path.join(self.dir, "data"))
+        rec = os.path.join(root, "data", "bench-recorded")  # the recorded bench run (test_bench_record)
+        if os.path.isdir(rec):
+            shutil.copytree(rec, os.path.join(self.dir, "data", "bench-recorded"))
         self.env = {k: v for k, v in os.environ.items()
                     if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "SAN", "BUILD", "CFLAGS")}
         # the build is sanitized (BOUNDS): test_cli.sh then leaves out its address-space limit check,

@@ -81,8 +81,10 @@ fi
 printf '\\newcommand{\\CiteVersion}{%s}\n\\newcommand{\\CiteAuthor}{%s}\n' "$version" "$author" >>"$P/source.tex"
 sh tools/repro.sh "$P/repro.tex"
 sh tools/figsplit.sh figures/stability.pdf Stability "$P/figsplit.tex"
-cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" data/bench.tex "$P/"
-# The PDFs' dates (creation, modification, \today) are the time of the commit of their sources
+cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" "$P/"
+# the bench's numbers and its machine, from the recorded run (make bench-record)
+cat data/bench-recorded/bench.tex data/bench-recorded/machine.tex >"$P/bench.tex"
+# The PDFs' dates (creation, modification, 	oday) are the time of the commit of their sources
 # (outside git, a fixed one); no trailer ID, and no names or info of included files.
 epoch=$(sh tools/repro.sh --commit | cut -d' ' -f2)
 export TEXINPUTS="$P:" SOURCE_DATE_EPOCH="${epoch:-946684800}" FORCE_SOURCE_DATE=1

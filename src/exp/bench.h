@@ -1,8 +1,11 @@
 /* make bench's state: the problem every method and peer is given (the paper's body,
  * w(0) = (0.4, 0.5), t in [0, 50]), the work-precision series, their timed points, the per-step
- * costs and the long runs. The phases fill it in order: sweeps (bench_sweep.h), timing
- * (bench_timing.h), floor analysis (bench_floor.h), long runs (bench_longrun.h); the render
- * layer prints, writes and draws it (bench_report.h, bench_tables.h, bench_plot.h).
+ * costs and the long runs. The peers get the full problem (w and the attitude, in three
+ * formulations) and, apart, the reduced one (reduced.h: the attitude alone along the closed-form
+ * w), so that our methods meet them on either structure. The phases fill it in order: sweeps
+ * (bench_sweep.h), timing (bench_timing.h), floor analysis (bench_floor.h), long runs
+ * (bench_longrun.h); the render layer prints, writes and draws it (bench_report.h,
+ * bench_tables.h, bench_plot.h); bench_load.h reads a run's data back for drawing.
  * Errors: |w(50) - w_n| against the closed form, dist(R(50), R_n) (MetMat) against the precise
  * long-double reference sus_refatt_precise (good to ~1e-17, see refattitude.h). */
 #ifndef SUS_EXP_BENCH_H
@@ -11,6 +14,7 @@
 #include "exact.h"
 #include "model.h"
 #include "peers.h"
+#include "reduced.h"
 #include "registry.h"
 
 #include <math.h>
@@ -22,11 +26,18 @@ extern "C" {
 
 #define SUS_EXP_BENCH_T_END 50.0
 #define SUS_EXP_BENCH_T_LONG 1e4
+#define SUS_EXP_BENCH_T_GROWTH 1e6
 /* The accuracies the targets ask for, and the speed-up each level asks for over the best honest
- * peer (bench.c says why). */
+ * peer on the full problem (bench.c says why); on the reduced problem, REDUCED_TARGET at every
+ * level. At T_LONG and equal error, LONG_TARGET over rk8pd; the cost of a run to T_GROWTH at
+ * most GROWTH_TARGET times the cost of the same run to T_LONG. */
 #define SUS_EXP_BENCH_NLEVELS 6
 extern const double SUS_EXP_BENCH_LEVELS[SUS_EXP_BENCH_NLEVELS];
 extern const double SUS_EXP_BENCH_LEVEL_TARGET[SUS_EXP_BENCH_NLEVELS];
+#define SUS_EXP_BENCH_REDUCED_TARGET 1.5
+#define SUS_EXP_BENCH_LONG_LEVEL 1e-9 /* the attitude error both sides reach at T_LONG */
+#define SUS_EXP_BENCH_LONG_TARGET 20.0
+#define SUS_EXP_BENCH_GROWTH_TARGET 1.5
 /* The peers' tolerances: four a decade, 10^(-3 - j/4), down to 1e-15. */
 #define SUS_EXP_BENCH_TOLS_PER_DECADE 4
 #define SUS_EXP_BENCH_PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / SUS_EXP_BENCH_TOLS_PER_DECADE)
@@ -42,27 +53,35 @@ extern const double SUS_EXP_BENCH_LEVEL_TARGET[SUS_EXP_BENCH_NLEVELS];
 /* Points per series at most: the grids stop well before (about 50 N or tolerances). */
 #define SUS_EXP_BENCH_MAXPTS 64
 
+/* The bench's clock, in seconds: the CPU time of the calling thread, so that the other processes
+ * of a shared machine are not counted in a run's time (their traffic in the caches and memory
+ * still slows it). Every run the bench times is single-threaded and does no I/O. */
+double sus_exp_bench_now(void);
+
 /* The problem and its reference values at t = 50. */
 typedef struct {
     sus_model model;
     sus_exact ex;
+    sus_exp_reduced red; /* w(t) for the reduced problem */
     double w_T[2], R_T[3][3];
 } sus_exp_bench_problem;
 
 /* One work-precision series: a method of ours (with a reconstruction, or its own attitude, or w
- * alone) or one configuration of a peer, swept over its step or tolerance. */
+ * alone) or one configuration of a peer on the full or the reduced problem, swept over its step
+ * or tolerance. */
 typedef struct {
     char name[96];
     int ours;       /* 1: a registered method; 0: a peer */
     int preserves;  /* keeps E, w3 = 0 and R in SO(3) by construction */
     int w_only;     /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
+    int reduced;    /* a peer given w(t) (reduced.h): counts for the attitude only (err_w = 0) */
     int tol_driven; /* ours, tolerance-driven: param is TOL, steps the accepted steps */
     const sus_step_method *me; /* ours: the method; NULL for a peer */
     sus_recon recon;
     const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
     size_t dim;
     sus_exp_peer_api api;
-    double hstart;
+    double hstart, rel; /* a GSL peer's initial step, and its rel tolerance over its abs one */
     int n;
     double param[SUS_EXP_BENCH_MAXPTS], err_w[SUS_EXP_BENCH_MAXPTS], err_R[SUS_EXP_BENCH_MAXPTS];
     double sec[SUS_EXP_BENCH_MAXPTS], smin[SUS_EXP_BENCH_MAXPTS], smax[SUS_EXP_BENCH_MAXPTS];
@@ -91,11 +110,14 @@ typedef struct {
 } sus_exp_bench_point;
 
 /* The cost of one step, n each (one per registered method): the w-step, the whole step through
- * the driver and in a bare loop, Newton iterations per step; GSL's rk4 and the closed form; and
- * the tolerance-driven runs' sums of fastest rounds through the driver and in a bare loop. */
+ * the driver and in a bare loop, Newton iterations per step; GSL's rk4 and the closed form (as
+ * exact.h and as reduced.h evaluate it); and the tolerance-driven runs' sums of fastest rounds
+ * through the driver and in a bare loop. */
 typedef struct {
     int n;
+    char (*name)[40]; /* the methods' names */
     double *ns_raw, *ns_full, *ns_direct, *ns_full_min, *newton, ns_gsl_rk4, ns_exact;
+    double ns_exact_one_exp;
     double tol_drv_min, tol_bare_min;
 } sus_exp_bench_costs;
 
@@ -105,6 +127,25 @@ typedef struct {
     int n;
     double *sec, *err; /* npoints each at most */
 } sus_exp_bench_envelope;
+
+/* At T = 1e4 and equal error: one of ours at its first point (towards accuracy) whose run to
+ * T = 1e4 ends within LONG_LEVEL, against the loosest rk8pd (w, q) tolerance (four a decade)
+ * that does too (peer_sec = INFINITY when none down to 1e-15 does); beside it, for information,
+ * rk8pd on the reduced problem likewise (red_*). Seconds are medians of interleaved rounds.
+ * R_end: where our run ended. */
+typedef struct {
+    int series, point;
+    double sec, err, R_end[3][3];
+    double peer_sec, peer_err, peer_tol;
+    double red_sec, red_err, red_tol;
+} sus_exp_bench_equal_error;
+
+/* The cost of ours from T = 1e4 to T = 1e6: the fastest at T = 1e4 and equal error, at the same
+ * step or TOL, run to T_GROWTH (series = -1 when none ran). */
+typedef struct {
+    int series, point, eq; /* eq: its row of b->EQ */
+    double sec, sec_long, R_end[3][3]; /* to T_GROWTH and, timed beside it, to T_LONG */
+} sus_exp_bench_growth;
 
 /* The structure errors of a long run to T = 1e4. */
 typedef struct {
@@ -123,9 +164,13 @@ typedef struct {
     sus_exp_bench_point *points;
     int npoints;
     sus_exp_bench_costs cost;
-    sus_exp_bench_envelope env[2]; /* 0: w, 1: attitude */
+    sus_exp_bench_envelope env[3]; /* the full problem's peers 0: w, 1: attitude; 2: reduced */
     sus_exp_bench_longrun *LR;     /* nseries at most */
     int nlr;
+    sus_exp_bench_equal_error *EQ; /* nseries at most */
+    int neq;
+    double R_long[3][3]; /* the reference R(T_LONG) */
+    sus_exp_bench_growth growth;
     void (*progress)(const char *what); /* a phase's progress, for a person watching; may be NULL */
 } sus_exp_bench;
 

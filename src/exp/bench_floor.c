@@ -5,7 +5,8 @@
 #include <gsl/gsl_sort.h>
 #include <stdlib.h>
 
-int sus_exp_bench_is_peer(const sus_exp_bench_series *s) { return !s->ours; }
+int sus_exp_bench_is_peer(const sus_exp_bench_series *s) { return !s->ours && !s->reduced; }
+int sus_exp_bench_is_reduced_peer(const sus_exp_bench_series *s) { return !s->ours && s->reduced; }
 int sus_exp_bench_is_ours_preserving(const sus_exp_bench_series *s)
 {
     return s->ours && s->preserves;
@@ -28,12 +29,14 @@ sus_exp_bench_best sus_exp_bench_fastest(const sus_exp_bench *b, double level, i
     return best;
 }
 
-/* The peers' points (time and error) into sec and err; returns how many. */
-static int peer_points(const sus_exp_bench *b, int which, double *sec, double *err)
+/* The points (time and error) of the peers that want selects into sec and err; returns how
+ * many. */
+static int peer_points(const sus_exp_bench *b, int which, int (*want)(const sus_exp_bench_series *),
+                       double *sec, double *err)
 {
     int n = 0;
     for (int i = 0; i < b->nseries; i++)
-        if (!b->S[i]->ours)
+        if (want(b->S[i]))
             for (int j = 0; j < b->S[i]->n; j++) {
                 sec[n] = b->S[i]->sec[j];
                 err[n] = which ? b->S[i]->err_R[j] : b->S[i]->err_w[j];
@@ -42,7 +45,8 @@ static int peer_points(const sus_exp_bench *b, int which, double *sec, double *e
     return n;
 }
 
-static void build_envelope(const sus_exp_bench *b, int which, sus_exp_bench_envelope *e)
+static void build_envelope(const sus_exp_bench *b, int which,
+                           int (*want)(const sus_exp_bench_series *), sus_exp_bench_envelope *e)
 {
     const size_t np = (size_t)b->npoints;
     double *sec = sus_exp_bench_calloc(np, sizeof *sec),
@@ -50,7 +54,7 @@ static void build_envelope(const sus_exp_bench *b, int which, sus_exp_bench_enve
     size_t *idx = sus_exp_bench_calloc(np, sizeof *idx);
     e->sec = sus_exp_bench_calloc(np, sizeof *e->sec);
     e->err = sus_exp_bench_calloc(np, sizeof *e->err);
-    const int n = peer_points(b, which, sec, err);
+    const int n = peer_points(b, which, want, sec, err);
     gsl_sort_index(idx, sec, 1, (size_t)n);
     e->n = 0;
     double best = INFINITY;
@@ -70,8 +74,9 @@ static void build_envelope(const sus_exp_bench *b, int which, sus_exp_bench_enve
 
 void sus_exp_bench_envelopes(sus_exp_bench *b)
 {
-    build_envelope(b, 0, &b->env[0]);
-    build_envelope(b, 1, &b->env[1]);
+    build_envelope(b, 0, sus_exp_bench_is_peer, &b->env[0]);
+    build_envelope(b, 1, sus_exp_bench_is_peer, &b->env[1]);
+    build_envelope(b, 1, sus_exp_bench_is_reduced_peer, &b->env[2]);
 }
 
 /* Implicit steps are left out: their Newton iterations, hence their cost, depend on the step. A
@@ -96,17 +101,33 @@ double sus_exp_bench_floor_seconds(const sus_exp_bench *b, double level, int whi
     return best;
 }
 
-sus_exp_bench_level sus_exp_bench_level_verdict(const sus_exp_bench *b, int which, int l)
+const char *sus_exp_bench_comparison_name(sus_exp_bench_comparison c)
+{
+    return c == SUS_EXP_BENCH_ATT_FULL      ? "attitude"
+           : c == SUS_EXP_BENCH_ATT_REDUCED ? "attitude-reduced"
+                                            : "omega";
+}
+
+sus_exp_bench_level sus_exp_bench_level_verdict(const sus_exp_bench *b,
+                                                sus_exp_bench_comparison c, int l)
 {
     const double level = SUS_EXP_BENCH_LEVELS[l];
+    const int which = c != SUS_EXP_BENCH_W_INFO;
     sus_exp_bench_level v = {
         sus_exp_bench_fastest(b, level, which, sus_exp_bench_is_ours_preserving),
-        sus_exp_bench_fastest(b, level, which, sus_exp_bench_is_peer), INFINITY, 0.0, 0};
+        sus_exp_bench_fastest(b, level, which,
+                              c == SUS_EXP_BENCH_ATT_REDUCED ? sus_exp_bench_is_reduced_peer
+                                                             : sus_exp_bench_is_peer),
+        INFINITY, 0.0,
+        c == SUS_EXP_BENCH_ATT_FULL      ? SUS_EXP_BENCH_LEVEL_TARGET[l]
+        : c == SUS_EXP_BENCH_ATT_REDUCED ? SUS_EXP_BENCH_REDUCED_TARGET
+                                         : NAN,
+        0};
     if (v.ours.series < 0)
         return v;
     v.floor = sus_exp_bench_floor_seconds(b, level, which);
     v.ratio = v.peer.series < 0 ? INFINITY : v.peer.sec / v.ours.sec;
-    v.pass = v.ratio >= SUS_EXP_BENCH_LEVEL_TARGET[l];
+    v.pass = v.ratio >= v.target;
     return v;
 }
 

@@ -1,6 +1,6 @@
 /* make bench's long runs to T = 1e4: the structure errors of our preserving methods and of the
- * rk8pd peer at matched accuracy, and our explicit own-attitude methods against rk8pd (w, q) at
- * equal attitude error there. */
+ * rk8pd peer at matched accuracy, our explicit own-attitude methods against rk8pd (w, q) at
+ * equal attitude error there, and the cost of the fastest of them from T = 1e4 to T = 1e6. */
 #ifndef SUS_EXP_BENCH_LONGRUN_H
 #define SUS_EXP_BENCH_LONGRUN_H
 
@@ -15,17 +15,17 @@ extern "C" {
  * at the tolerance that did, sampled 1000 times over [0, T_LONG]. */
 void sus_exp_bench_long_runs(sus_exp_bench *b);
 
-/* One of ours at T = 1e4 against the loosest rk8pd (w, q) tolerance (four a decade) that reaches
- * the same attitude error there (peer_sec = INFINITY when none down to 1e-15 does). */
-typedef struct {
-    int series, point;
-    double sec, err;
-    double peer_sec, peer_err, peer_tol;
-} sus_exp_bench_equal_error;
+/* b->EQ: each explicit own-attitude method of ours at its first step (or TOL) whose run to
+ * T_LONG ends within LONG_LEVEL of the reference (b->R_long), against rk8pd (w, q) and, for
+ * information, rk8pd on the reduced problem, each at its loosest tolerance that does too. Then
+ * b->growth: the row fastest against its peer, run again to T_GROWTH. */
+void sus_exp_bench_equal_error_runs(sus_exp_bench *b);
 
-/* Each explicit own-attitude method of ours at the step (or TOL) that reached attitude 1e-10 at
- * t = 50, run to T_LONG, into out (b->nseries at most); returns how many. */
-int sus_exp_bench_equal_error_runs(const sus_exp_bench *b, sus_exp_bench_equal_error *out);
+/* The row of b->EQ that is fastest against its peer (the target's), or -1. */
+int sus_exp_bench_best_equal_error(const sus_exp_bench *b);
+
+/* The seconds of a growth run over those of the same run to T_LONG (NAN when none ran). */
+double sus_exp_bench_growth_ratio(const sus_exp_bench *b);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,8 @@
 /* The runs make bench times, each from the same state every time it runs (so a timed repeat
  * ends bit for bit where the first run did): our methods through the driver, as `suslov` runs
  * them; their w-steps alone; a tolerance-driven method through sus_run_tol; and a GSL odeiv2
- * peer in one configuration (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2. */
+ * peer in one configuration (src/exp/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2, and the
+ * reduced problem, q alone along the closed-form w, 4. */
 #ifndef SUS_EXP_BENCH_RUNS_H
 #define SUS_EXP_BENCH_RUNS_H
 
@@ -45,7 +46,7 @@ typedef struct {
     double sink;
 } sus_exp_bench_tol_run;
 
-/* A GSL peer (sus_exp_peer_open'ed) to T. */
+/* A GSL peer (sus_exp_peer_open'ed, or sus_exp_peer_open_reduced'ed) to T. */
 typedef struct {
     const sus_exp_bench_problem *pb;
     sus_exp_peer p;

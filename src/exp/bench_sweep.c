@@ -147,24 +147,32 @@ static void sweep_ours_tol(sus_exp_bench *b, const sus_step_method *me)
 
 const char *sus_exp_bench_dim_name(size_t dim)
 {
-    return dim == 11 ? "(w,R)" : dim == 6 ? "(w,q)" : "(w)";
+    return dim == 11 ? "(w,R)" : dim == 6 ? "(w,q)" : dim == 4 ? "reduced (q)" : "(w)";
 }
 
-static void sweep_gsl(sus_exp_bench *b, const gsl_odeiv2_step_type *type, size_t dim,
-                      sus_exp_peer_api api, double hstart)
+/* A GSL peer's series: on the full problem (abs = rel = tol), or on the reduced one (dim 4) with
+ * rel = rel_factor tol: 1 (GSL's y control, abs = rel) or 0 (absolute error alone). */
+static void sweep_gsl_control(sus_exp_bench *b, const gsl_odeiv2_step_type *type, size_t dim,
+                              sus_exp_peer_api api, double hstart, double rel_factor)
 {
     sus_exp_bench_series *s = sus_exp_bench_new_series(b);
-    snprintf(s->name, sizeof s->name, "GSL %s %s %s h0 %g", type->name, sus_exp_bench_dim_name(dim),
-             api == SUS_EXP_PEER_DRIVER ? "driver" : "evolve", hstart);
+    snprintf(s->name, sizeof s->name, "GSL %s %s %s%s h0 %g", type->name,
+             sus_exp_bench_dim_name(dim), api == SUS_EXP_PEER_DRIVER ? "driver" : "evolve",
+             dim != 4 ? "" : rel_factor > 0.0 ? " abs=rel" : " abs", hstart);
     s->w_only = dim == 2;
+    s->reduced = dim == 4;
     s->type = type;
     s->dim = dim;
     s->api = api;
     s->hstart = hstart;
+    s->rel = rel_factor;
     for (int j = 0; j < MAXPTS && PEER_TOL(j) >= SUS_EXP_BENCH_PEER_TOL_MIN; j++) {
         sus_exp_bench_peer_run *g = sus_exp_bench_calloc(1, sizeof *g);
         *g = (sus_exp_bench_peer_run){.pb = &b->pb, .T = T_END};
-        if (sus_exp_peer_open(&g->p, &b->pb.model, type, dim, api, PEER_TOL(j), hstart) != 0)
+        const double tol = PEER_TOL(j);
+        if ((dim == 4 ? sus_exp_peer_open_reduced(&g->p, &b->pb.red, type, api, tol,
+                                                  rel_factor * tol, hstart)
+                      : sus_exp_peer_open(&g->p, &b->pb.model, type, dim, api, tol, hstart)) != 0)
             sus_exp_bench_die("GSL allocation failed");
         if (!sus_exp_bench_record(b, s, PEER_TOL(j), &SUS_EXP_BENCH_PEER_OPS, g)) {
             SUS_EXP_BENCH_PEER_OPS.release(g);
@@ -172,6 +180,26 @@ static void sweep_gsl(sus_exp_bench *b, const gsl_odeiv2_step_type *type, size_t
         }
         s->steps[s->n - 1] = g->steps;
     }
+}
+
+static void sweep_gsl(sus_exp_bench *b, const gsl_odeiv2_step_type *type, size_t dim,
+                      sus_exp_peer_api api, double hstart)
+{
+    sweep_gsl_control(b, type, dim, api, hstart, 1.0);
+}
+
+/* The reduced problem: rk8pd and rkck through either API, under either error control, from a
+ * small and a large initial step (the step controller forgets hstart within a few steps: the
+ * full problem's four initial steps differ by a few per cent at most). */
+static void sweep_reduced(sus_exp_bench *b)
+{
+    const gsl_odeiv2_step_type *types[2] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck};
+    const double hstarts[2] = {1e-2, 1.0}, rel[2] = {1.0, 0.0};
+    for (int k = 0; k < 2; k++)
+        for (int api = 0; api < 2; api++)
+            for (int c = 0; c < 2; c++)
+                for (int h = 0; h < 2; h++)
+                    sweep_gsl_control(b, types[k], 4, (sus_exp_peer_api)api, hstarts[h], rel[c]);
 }
 
 static void sweep_methods(sus_exp_bench *b)
@@ -207,4 +235,7 @@ void sus_exp_bench_sweep_all(sus_exp_bench *b, sus_exp_bench_more_peers more, vo
         if (more)
             more(b, dims[d], ctx);
     }
+    sweep_reduced(b);
+    if (more)
+        more(b, 4, ctx);
 }

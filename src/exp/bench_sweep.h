@@ -18,15 +18,18 @@ extern "C" {
 #endif
 
 /* Peers defined outside the library (make bench's Boost.Odeint ones), swept on formulation dim
- * after the GSL ones of that formulation. */
+ * (11, 6, 2, or 4: the reduced problem) after the GSL ones of that formulation. */
 typedef void (*sus_exp_bench_more_peers)(sus_exp_bench *b, size_t dim, void *ctx);
 
 /* Every registered method, then the GSL peers: rk8pd and rkck in every configuration a user might
  * pick (driver or evolve loop, initial step 1e-3, 1e-2, 0.1, 1), rkf45 and msadams through the
- * driver from 1e-3; on (w, R), (w, q) and w alone, each followed by more(b, dim, ctx) when set. */
+ * driver from 1e-3; on (w, R), (w, q) and w alone, each followed by more(b, dim, ctx) when set.
+ * Then the reduced problem: rk8pd and rkck, driver or evolve, abs = rel or abs alone, initial
+ * step 1e-2 or 1, followed by more(b, 4, ctx). */
 void sus_exp_bench_sweep_all(sus_exp_bench *b, sus_exp_bench_more_peers more, void *ctx);
 
-/* "(w,R)", "(w,q)" or "(w)": the formulation of dim 11, 6 or 2, for a peer's name. */
+/* "(w,R)", "(w,q)", "(w)" or "reduced (q)": the formulation of dim 11, 6, 2 or 4, for a peer's
+ * name. */
 const char *sus_exp_bench_dim_name(size_t dim);
 
 #ifdef __cplusplus

@@ -2,7 +2,6 @@
 #include "bench_timing.h"
 
 #include "bench_runs.h"
-#include "monoclock.h"
 
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
@@ -21,9 +20,9 @@ static void calibrate_batches(sus_exp_bench *b)
 {
     for (int p = 0; p < b->npoints; p++) {
         sus_exp_bench_point *pt = &b->points[p];
-        const double t0 = sus_sys_now();
+        const double t0 = sus_exp_bench_now();
         pt->ops->run(pt->ctx);
-        const double t1 = sus_sys_now() - t0;
+        const double t1 = sus_exp_bench_now() - t0;
         pt->batch = t1 >= BATCH_SECONDS ? 1 : (int)ceil(BATCH_SECONDS / fmax(t1, 1e-7));
     }
 }
@@ -58,10 +57,10 @@ int sus_exp_bench_time_points(sus_exp_bench *b)
         sus_exp_bench_progress(b, msg);
         for (int p = 0; p < b->npoints; p++) {
             sus_exp_bench_point *pt = &b->points[p];
-            const double t0 = sus_sys_now();
+            const double t0 = sus_exp_bench_now();
             for (int k = 0; k < pt->batch; k++)
                 pt->ops->run(pt->ctx);
-            pt->t[r] = (sus_sys_now() - t0) / pt->batch;
+            pt->t[r] = (sus_exp_bench_now() - t0) / pt->batch;
         }
     }
     const int bad = timed_errors_differ(b);
@@ -118,6 +117,7 @@ static void gsl_fixed_fn(void *vctx)
 
 typedef struct {
     const sus_exact *ex;
+    const sus_exp_reduced *red;
     long n;
     double acc;
 } exact_run;
@@ -128,6 +128,18 @@ static void exact_fn(void *vctx)
     double acc = 0.0, w[2];
     for (long i = 0; i < e->n; i++) {
         sus_exact_omega(e->ex, T_END * (double)i / (double)e->n, w);
+        acc += w[0];
+    }
+    e->acc = acc;
+}
+
+/* The same with one exponential (reduced.h), as the peers on the reduced problem evaluate it. */
+static void exact_one_exp_fn(void *vctx)
+{
+    exact_run *e = vctx;
+    double acc = 0.0, w[2];
+    for (long i = 0; i < e->n; i++) {
+        sus_exp_reduced_omega(e->red, T_END * (double)i / (double)e->n, w);
         acc += w[0];
     }
     e->acc = acc;
@@ -183,9 +195,9 @@ static void take_costs(const sus_exp_bench *b, cost_cfg *cfg, int n)
         snprintf(msg, sizeof msg, "per-step costs, round %d of %d", r + 1, ROUNDS);
         sus_exp_bench_progress(b, msg);
         for (int c = 0; c < n; c++) {
-            const double t0 = sus_sys_now();
+            const double t0 = sus_exp_bench_now();
             cfg[c].fn(cfg[c].ctx);
-            cfg[c].t[r] = sus_sys_now() - t0;
+            cfg[c].t[r] = sus_exp_bench_now() - t0;
         }
     }
 }
@@ -193,6 +205,9 @@ static void take_costs(const sus_exp_bench *b, cost_cfg *cfg, int n)
 static void alloc_costs(sus_exp_bench_costs *cost, int nm)
 {
     *cost = (sus_exp_bench_costs){.n = nm};
+    cost->name = sus_exp_bench_calloc((size_t)nm, sizeof *cost->name);
+    for (int m = 0; m < nm; m++)
+        snprintf(cost->name[m], sizeof cost->name[m], "%s", sus_step_method_get(m)->type->name);
     cost->ns_raw = sus_exp_bench_calloc((size_t)nm, sizeof(double));
     cost->ns_full = sus_exp_bench_calloc((size_t)nm, sizeof(double));
     cost->ns_direct = sus_exp_bench_calloc((size_t)nm, sizeof(double));
@@ -200,8 +215,8 @@ static void alloc_costs(sus_exp_bench_costs *cost, int nm)
     cost->newton = sus_exp_bench_calloc((size_t)nm, sizeof(double));
 }
 
-/* The configurations in cfg (3 nm + 2 of them): the w-steps, the whole steps through the driver,
- * GSL's rk4, the closed form, the whole steps in a bare loop. */
+/* The configurations in cfg (3 nm + 3 of them): the w-steps, the whole steps through the driver,
+ * GSL's rk4, the closed form, the whole steps in a bare loop, the closed form with one exp. */
 static void cost_configs(const sus_exp_bench *b, cost_cfg *cfg, sus_exp_bench_w_run *raw,
                          sus_exp_bench_dsp_run *rec, gsl_fixed_run *g, exact_run *e)
 {
@@ -217,6 +232,7 @@ static void cost_configs(const sus_exp_bench *b, cost_cfg *cfg, sus_exp_bench_w_
     }
     cfg[2 * nm] = (cost_cfg){gsl_fixed_fn, g, {0}};
     cfg[2 * nm + 1] = (cost_cfg){exact_fn, e, {0}};
+    cfg[3 * nm + 2] = (cost_cfg){exact_one_exp_fn, e, {0}};
 }
 
 void sus_exp_bench_measure_step_costs(sus_exp_bench *b)
@@ -224,7 +240,7 @@ void sus_exp_bench_measure_step_costs(sus_exp_bench *b)
     const int nm = sus_step_method_count();
     sus_exp_bench_w_run *raw = sus_exp_bench_calloc((size_t)nm, sizeof *raw);
     sus_exp_bench_dsp_run *rec = sus_exp_bench_calloc((size_t)nm, sizeof *rec);
-    cost_cfg *cfg = sus_exp_bench_calloc((size_t)(3 * nm + 2), sizeof *cfg);
+    cost_cfg *cfg = sus_exp_bench_calloc((size_t)(3 * nm + 3), sizeof *cfg);
     sus_exp_bench_costs *cost = &b->cost;
     alloc_costs(cost, nm);
     gsl_fixed_run g = {&b->pb,
@@ -235,9 +251,9 @@ void sus_exp_bench_measure_step_costs(sus_exp_bench *b)
                        {0}};
     if (!(g.d = gsl_odeiv2_driver_alloc_y_new(&g.sys, gsl_odeiv2_step_rk4, g.h, 1e-6, 1e-6)))
         sus_exp_bench_die("GSL allocation failed");
-    exact_run e = {&b->pb.ex, COST_STEPS, 0.0};
+    exact_run e = {&b->pb.ex, &b->pb.red, COST_STEPS, 0.0};
     cost_configs(b, cfg, raw, rec, &g, &e);
-    take_costs(b, cfg, 3 * nm + 2);
+    take_costs(b, cfg, 3 * nm + 3);
     gsl_odeiv2_driver_free(g.d);
     for (int m = 0; m < nm; m++) {
         cost->ns_raw[m] = median_ns(&cfg[m], COST_STEPS);
@@ -250,6 +266,7 @@ void sus_exp_bench_measure_step_costs(sus_exp_bench *b)
     }
     cost->ns_gsl_rk4 = median_ns(&cfg[2 * nm], COST_STEPS);
     cost->ns_exact = median_ns(&cfg[2 * nm + 1], COST_STEPS);
+    cost->ns_exact_one_exp = median_ns(&cfg[3 * nm + 2], COST_STEPS);
     free(raw);
     free(rec);
     free(cfg);
@@ -264,15 +281,15 @@ static void tol_point_costs(sus_exp_bench *b, sus_exp_bench_series *s, int j)
 {
     sus_exp_bench_tol_run r = {.pb = &b->pb, .st = s->me->type, .tol = s->param[j], .T = T_END};
     cost_cfg c[2] = {{sus_exp_bench_tol_fn, &r, {0}}, {tol_bare_fn, &r, {0}}};
-    double t0 = sus_sys_now();
+    double t0 = sus_exp_bench_now();
     sus_exp_bench_tol_fn(&r);
-    const long batch = (long)ceil(BATCH_SECONDS / fmax(sus_sys_now() - t0, 1e-7));
+    const long batch = (long)ceil(BATCH_SECONDS / fmax(sus_exp_bench_now() - t0, 1e-7));
     for (int k = 0; k < ROUNDS; k++)
         for (int q = 0; q < 2; q++) {
-            t0 = sus_sys_now();
+            t0 = sus_exp_bench_now();
             for (long i = 0; i < batch; i++)
                 c[q].fn(c[q].ctx);
-            c[q].t[k] = sus_sys_now() - t0;
+            c[q].t[k] = sus_exp_bench_now() - t0;
         }
     const long steps = batch * r.last.k;
     b->cost.tol_drv_min += min_ns(&c[0], steps);

@@ -40,6 +40,10 @@ int sus_exp_peer_rhs_w(double t, const double y[], double f[], void *params)
 void sus_exp_peer_initial(size_t dim, const double w0[2], double *y)
 {
     memset(y, 0, dim * sizeof *y);
+    if (dim == 4) { /* the reduced problem: q alone */
+        y[0] = 1.0;
+        return;
+    }
     y[0] = w0[0];
     y[1] = w0[1];
     if (dim == 11)
@@ -53,30 +57,47 @@ void sus_exp_peer_attitude(size_t dim, const double *y, double R[3][3])
     if (dim == 11)
         memcpy(R, y + 2, 9 * sizeof(double));
     else
-        sus_quat_rotation(y + 2, R);
+        sus_quat_rotation(dim == 4 ? y : y + 2, R);
+}
+
+/* p's driver, or its step, control and evolve objects, for the system p->sys. */
+static int peer_alloc(sus_exp_peer *p)
+{
+    if (p->api == SUS_EXP_PEER_DRIVER) {
+        p->d = gsl_odeiv2_driver_alloc_y_new(&p->sys, p->type, p->hstart, p->tol, p->rel);
+        if (p->d)
+            gsl_odeiv2_driver_set_nmax(p->d, SUS_EXP_PEER_MAX_STEPS);
+        return p->d ? 0 : -1;
+    }
+    p->s = gsl_odeiv2_step_alloc(p->type, p->dim);
+    p->c = gsl_odeiv2_control_y_new(p->tol, p->rel);
+    p->e = gsl_odeiv2_evolve_alloc(p->dim);
+    if (p->s && p->c && p->e)
+        return 0;
+    sus_exp_peer_close(p);
+    return -1;
 }
 
 int sus_exp_peer_open(sus_exp_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type, size_t dim,
                      sus_exp_peer_api api, double tol, double hstart)
 {
-    *p = (sus_exp_peer){.type = type, .api = api, .dim = dim, .tol = tol, .hstart = hstart};
+    *p = (sus_exp_peer){
+        .type = type, .api = api, .dim = dim, .tol = tol, .rel = tol, .hstart = hstart};
     int (*rhs)(double, const double[], double[], void *) = dim == 11 ? sus_exp_peer_rhs_wR
                                                          : dim == 6  ? sus_exp_peer_rhs_wq
                                                                      : sus_exp_peer_rhs_w;
     p->sys = (gsl_odeiv2_system){rhs, NULL, dim, (void *)m};
-    if (api == SUS_EXP_PEER_DRIVER) {
-        p->d = gsl_odeiv2_driver_alloc_y_new(&p->sys, type, hstart, tol, tol);
-        if (p->d)
-            gsl_odeiv2_driver_set_nmax(p->d, SUS_EXP_PEER_MAX_STEPS);
-        return p->d ? 0 : -1;
-    }
-    p->s = gsl_odeiv2_step_alloc(type, dim);
-    p->c = gsl_odeiv2_control_y_new(tol, tol);
-    p->e = gsl_odeiv2_evolve_alloc(dim);
-    if (p->s && p->c && p->e)
-        return 0;
-    sus_exp_peer_close(p);
-    return -1;
+    return peer_alloc(p);
+}
+
+int sus_exp_peer_open_reduced(sus_exp_peer *p, const sus_exp_reduced *r,
+                              const gsl_odeiv2_step_type *type, sus_exp_peer_api api, double tol,
+                              double rel, double hstart)
+{
+    *p = (sus_exp_peer){
+        .type = type, .api = api, .dim = 4, .tol = tol, .rel = rel, .hstart = hstart};
+    p->sys = (gsl_odeiv2_system){sus_exp_reduced_rhs, NULL, 4, (void *)r};
+    return peer_alloc(p);
 }
 
 static int evolve_run(sus_exp_peer *p, double T, double *y, long *steps)

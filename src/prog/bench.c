@@ -1,7 +1,7 @@
 /* make bench: work-precision of every registered method against library integrators, the cost of
  * one step, the long-run structure errors, and the speed targets of the benchmark, printed as
  * PASS/MISS lines (never a failing test: the machine is shared and noisy).
- * Usage: bench FIGDIR DATADIR
+ * Usage: bench FIGDIR DATADIR, or bench --plot FIGDIR DATADIR
  *
  * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]), at
  * abs = rel tolerance 1e-3 ... 1e-15 (four a decade): GSL odeiv2 rk8pd and rkck through
@@ -14,10 +14,17 @@
  * "(w only)"). Every run of a configuration starts from the same state, its step size included
  * (src/exp/peers.c), and the error credited to a point is the one its timed runs end with. The
  * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.
- * The phases are in src/exp/bench*.c, the report, tables and figures in src/render/bench*.c. */
+ * The reduced problem (src/exp/reduced.h: q alone along the closed-form w, 4 unknowns) goes to
+ * rk8pd and rkck (driver or evolve loop, abs = rel or abs alone, initial step 1e-2 or 1) and to
+ * Boost's rkf78 (abs = rel or abs alone). The attitude targets compare our fastest method with the
+ * best peer on each problem; the w race is information only (the closed form gives w).
+ * The phases are in src/exp/bench*.c, the report, tables and figures in src/render/bench*.c.
+ * The figures are drawn from DATADIR/bench.csv once it is written; `bench --plot FIGDIR DATADIR`
+ * draws them again from a run's data alone (make figures does, from the recorded run). */
 #define _POSIX_C_SOURCE 200809L
 #include "bench.h"
 #include "bench_floor.h"
+#include "bench_load.h"
 #include "bench_longrun.h"
 #include "bench_plot.h"
 #include "bench_report.h"
@@ -60,7 +67,8 @@ static void odeint_fn(void *vctx)
 static int odeint_result(const void *vctx, double w[2], double R[3][3])
 {
     const odeint_run *r = vctx;
-    memcpy(w, r->y, 2 * sizeof(double));
+    /* the reduced problem is given w(t): its w is the closed form's */
+    memcpy(w, r->dim == 4 ? r->pb->w_T : r->y, 2 * sizeof(double));
     if (r->dim != 2)
         sus_exp_peer_attitude(r->dim, r->y, R);
     return 1;
@@ -75,20 +83,30 @@ static void odeint_release(void *vctx)
 
 static const sus_exp_bench_run_ops ODEINT_OPS = {odeint_fn, odeint_result, odeint_release};
 
-static void sweep_odeint(sus_exp_bench *b, int stepper, size_t dim)
+/* A Boost peer's series: stepper on formulation dim, or (dim 4) rkf78 on the reduced problem
+ * with rel = rel_factor tol (1: abs = rel; 0: absolute error alone). */
+static void sweep_odeint(sus_exp_bench *b, int stepper, size_t dim, double rel_factor)
 {
     sus_exp_bench_series *s = sus_exp_bench_new_series(b);
-    snprintf(s->name, sizeof s->name, "Boost %s %s",
+    snprintf(s->name, sizeof s->name, "Boost %s %s%s",
              stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer",
-             sus_exp_bench_dim_name(dim));
+             sus_exp_bench_dim_name(dim),
+             dim != 4 ? "" : rel_factor > 0.0 ? " abs=rel" : " abs");
     s->w_only = dim == 2;
+    s->reduced = dim == 4;
+    s->dim = dim;
+    s->rel = rel_factor;
     for (int j = 0;
          j < SUS_EXP_BENCH_MAXPTS && SUS_EXP_BENCH_PEER_TOL(j) >= SUS_EXP_BENCH_PEER_TOL_MIN; j++) {
         const double tol = SUS_EXP_BENCH_PEER_TOL(j);
         odeint_run *r = sus_exp_bench_calloc(1, sizeof *r);
-        *r = (odeint_run){&b->pb, suslov_odeint_open(stepper, (int)dim, tol, &b->pb.model),
-                          dim,    SUS_EXP_BENCH_T_END,
-                          {0},    0};
+        *r = (odeint_run){&b->pb,
+                          dim == 4 ? suslov_odeint_open_reduced(&b->pb.red, tol, rel_factor * tol)
+                                   : suslov_odeint_open(stepper, (int)dim, tol, &b->pb.model),
+                          dim,
+                          SUS_EXP_BENCH_T_END,
+                          {0},
+                          0};
         if (!r->o)
             sus_exp_bench_die("Boost.Odeint allocation failed");
         if (!sus_exp_bench_record(b, s, tol, &ODEINT_OPS, r)) {
@@ -99,11 +117,15 @@ static void sweep_odeint(sus_exp_bench *b, int stepper, size_t dim)
     }
 }
 
+/* On the full problem rkf78 and Bulirsch-Stoer; on the reduced one rkf78 under either control. */
 static void more_peers(sus_exp_bench *b, size_t dim, void *ctx)
 {
     (void)ctx;
     for (int k = 0; k < 2; k++)
-        sweep_odeint(b, k, dim);
+        if (dim == 4)
+            sweep_odeint(b, SUSLOV_ODEINT_RKF78, dim, k == 0 ? 1.0 : 0.0);
+        else
+            sweep_odeint(b, k, dim, 1.0);
 }
 #else
 enum { WITH_ODEINT = 0 };
@@ -135,6 +157,7 @@ static int measure(sus_exp_bench *b, double t_phase[5])
     t_phase[3] = sus_sys_now();
     sus_exp_bench_progress(b, "long runs");
     sus_exp_bench_long_runs(b);
+    sus_exp_bench_equal_error_runs(b);
     t_phase[4] = sus_sys_now();
     if (progress_tty)
         fprintf(stderr, "\r%70s\r", "");
@@ -149,13 +172,9 @@ static const char *suslov_path(const char *argv0, char *buf, size_t len)
     return buf;
 }
 
-/* The equal-error runs and the re-runs with suslov, reported; returns 1 when a row was not
- * reproduced. */
+/* The re-runs with suslov, reported; returns 1 when a row was not reproduced. */
 static int check(const sus_exp_bench *b, const char *argv0)
 {
-    sus_exp_bench_equal_error *eq = sus_exp_bench_calloc((size_t)b->nseries, sizeof *eq);
-    sus_plot_bench_equal_error(b, eq, sus_exp_bench_equal_error_runs(b, eq));
-    free(eq);
     char suslov[4096];
     sus_exp_bench_reproduced rep;
     sus_exp_bench_check_reproduce(b, suslov_path(argv0, suslov, sizeof suslov), &rep);
@@ -163,13 +182,16 @@ static int check(const sus_exp_bench *b, const char *argv0)
     return rep.ok != rep.tried;
 }
 
-int main(int argc, char **argv)
+/* FIGDIR's figures drawn from DATADIR/bench.csv. Returns 0, or 1 with a message on stderr. */
+static int plot(const char *figdir, const char *datadir)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: bench FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
+    sus_exp_bench b;
+    return sus_exp_bench_load(&b, datadir) != 0 || sus_plot_bench_figures(&b, figdir) != 0;
+}
+
+/* Measures, reports, writes DATADIR's files and draws FIGDIR's figures from them. */
+static int bench(const char *argv0, const char *figdir, const char *datadir)
+{
     progress_tty = isatty(2);
     sus_exp_bench b;
     if (sus_exp_bench_init(&b, progress_tty ? progress : NULL) != 0)
@@ -179,19 +201,36 @@ int main(int argc, char **argv)
     sus_plot_bench_header(&b, differ, WITH_ODEINT);
     sus_plot_bench_costs_and_targets(&b);
     sus_plot_bench_long_runs(&b);
-    const int unreproduced = check(&b, argv[0]);
+    sus_plot_bench_equal_error(&b);
+    sus_plot_bench_growth(&b);
+    const int unreproduced = check(&b, argv0);
     t_phase[5] = sus_sys_now();
     printf("\nbench ran for %.1f s (sweeps %.1f, work-precision timing %.1f, step costs %.1f, "
-           "long runs %.1f, equal-error runs and reproducing %.1f)\n",
+           "long runs %.1f, reproducing %.1f)\n",
            t_phase[5] - t_phase[0], t_phase[1] - t_phase[0], t_phase[2] - t_phase[1],
            t_phase[3] - t_phase[2], t_phase[4] - t_phase[3], t_phase[5] - t_phase[4]);
+    fflush(stdout);
     /* data the companion would quote as checked: none rather than wrong */
     if (differ || unreproduced) {
         fprintf(stderr,
                 "bench: a CHECK FAILED (see its line in the output above); nothing written\n");
         return 1;
     }
-    if (sus_plot_bench_tables(&b, argv[2]) != 0 || sus_plot_bench_figures(&b, argv[1]) != 0)
+    if (sus_plot_bench_tables(&b, datadir) != 0)
         return 1;
-    return 0;
+    return plot(figdir, datadir);
+}
+
+int main(int argc, char **argv)
+{
+    const int replot = argc == 4 && strcmp(argv[1], "--plot") == 0;
+    if (argc != 3 + replot || (!replot && argv[1][0] == '-')) {
+        fprintf(stderr, "usage: bench FIGDIR DATADIR (measure, write DATADIR's files, draw "
+                        "FIGDIR's figures from them)\n"
+                        "       bench --plot FIGDIR DATADIR (draw FIGDIR's figures from "
+                        "DATADIR/bench.csv)\n");
+        return 2;
+    }
+    gsl_set_error_handler_off();
+    return replot ? plot(argv[2], argv[3]) : bench(argv[0], argv[1], argv[2]);
 }

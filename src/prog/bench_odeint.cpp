@@ -1,6 +1,6 @@
 // Boost.Odeint peers for make bench (see bench_odeint.h). The right-hand sides are the same
 // (ContDyn) as everywhere (model.h), with R' = R w^ or q' = 1/2 q (x) (0, w) for the attitude (none for w
-// alone).
+// alone); the reduced problem's is q' = 1/2 q (x) (0, w(t)) with w(t) from reduced.h, as GSL's.
 #include "bench_odeint.h"
 
 extern "C" {
@@ -47,6 +47,18 @@ template <std::size_t N> struct rhs {
     }
 };
 
+struct reduced_rhs {
+    const sus_exp_reduced *r;
+    void operator()(const std::array<double, 4> &q, std::array<double, 4> &f, double t) const
+    {
+        double w[3] = {0.0, 0.0, 0.0}, p[4];
+        sus_exp_reduced_omega(r, t, w);
+        sus_quat_mul_pure(p, q.data(), w);
+        for (int i = 0; i < 4; i++)
+            f[i] = 0.5 * p[i];
+    }
+};
+
 struct base {
     virtual ~base() = default;
     virtual long run(double T, double *y) = 0;
@@ -64,6 +76,22 @@ template <std::size_t N> struct rkf78 final : base {
         auto st = odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<std::array<double, N>>());
         const long n = (long)odeint::integrate_adaptive(st, f, s, 0.0, T, 1e-3);
         for (std::size_t i = 0; i < N; i++)
+            y[i] = s[i];
+        return n;
+    }
+};
+
+struct rkf78_reduced final : base {
+    reduced_rhs f;
+    double tol, rel;
+    rkf78_reduced(const sus_exp_reduced *r, double t, double rl) : f{r}, tol(t), rel(rl) {}
+    long run(double T, double *y) override
+    {
+        std::array<double, 4> s = {y[0], y[1], y[2], y[3]};
+        auto st = odeint::make_controlled(tol, rel,
+                                          odeint::runge_kutta_fehlberg78<std::array<double, 4>>());
+        const long n = (long)odeint::integrate_adaptive(st, f, s, 0.0, T, 1e-3);
+        for (std::size_t i = 0; i < 4; i++)
             y[i] = s[i];
         return n;
     }
@@ -103,6 +131,18 @@ extern "C" suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, c
         b = dim == 11  ? static_cast<base *>(new (std::nothrow) bs<11>(m, tol))
             : dim == 6 ? static_cast<base *>(new (std::nothrow) bs<6>(m, tol))
                        : static_cast<base *>(new (std::nothrow) bs<2>(m, tol));
+    if (!b)
+        return nullptr;
+    suslov_odeint *o = new (std::nothrow) suslov_odeint{b};
+    if (!o)
+        delete b;
+    return o;
+}
+
+extern "C" suslov_odeint *suslov_odeint_open_reduced(const sus_exp_reduced *r, double tol,
+                                                     double rel)
+{
+    base *b = new (std::nothrow) rkf78_reduced(r, tol, rel);
     if (!b)
         return nullptr;
     suslov_odeint *o = new (std::nothrow) suslov_odeint{b};

@@ -5,11 +5,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* Series i's colour: ours take hues around the wheel, peers grey. */
+/* Series i's colour: ours take hues around the wheel, peers grey (on the reduced problem a
+ * bluer grey). */
 static void series_colour(const sus_exp_bench *b, int i, double rgb[3])
 {
     if (!b->S[i]->ours) {
         rgb[0] = rgb[1] = rgb[2] = 0.62;
+        if (b->S[i]->reduced)
+            rgb[0] = rgb[1] = 0.66, rgb[2] = 0.82;
         return;
     }
     int k = 0, n = 0;
@@ -37,7 +40,8 @@ static void series_colour(const sus_exp_bench *b, int i, double rgb[3])
 #define WP_PANEL_H 230.0
 #define WP_LEGEND_Y (28.0 + WP_PANEL_H + 30.0)
 
-/* The styles of the series: ours with markers in turn, peers as grey dots without a label. */
+/* The styles of the series: ours with markers in turn, peers as grey dots without a label (on the
+ * reduced problem, dashed). */
 static void wp_styles(const sus_exp_bench *b, sus_plot_style *st, double (*rgb)[3])
 {
     static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
@@ -46,19 +50,34 @@ static void wp_styles(const sus_exp_bench *b, sus_plot_style *st, double (*rgb)[
     for (int i = 0; i < b->nseries; i++) {
         const sus_exp_bench_series *s = b->S[i];
         series_colour(b, i, rgb[i]);
-        st[i] =
-            sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, 0, s->ours ? mk[k++ % 6] : SUS_PLOT_DOT,
-                              s->ours ? 3.5 : 2.0, s->ours ? s->name : NULL);
+        st[i] = sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, s->reduced,
+                                  s->ours ? mk[k++ % 6] : SUS_PLOT_DOT, s->ours ? 3.5 : 2.0,
+                                  s->ours ? s->name : NULL);
     }
 }
 
-/* Panel p: (a) the w error, (b) the attitude error (no w-only series there). */
+/* The lower envelopes of the peers: on the full problem solid, on the reduced one dashed. */
+static sus_plot_style envelope_style(int reduced)
+{
+    return sus_plot_style_of(SUS_PLOT_BLACK, reduced ? 1.6 : 2.2, reduced, SUS_PLOT_NONE, 0,
+                             reduced ? "peers given w(t): lower envelope"
+                                     : "peers, full problem: lower envelope");
+}
+
+/* Whether panel p draws series s: (a) the w error, not of the reduced problem (given w); (b) the
+ * attitude error, not of w alone. */
+static int in_panel(const sus_exp_bench_series *s, int p)
+{
+    return p ? !s->w_only : !s->reduced;
+}
+
+/* Panel p: (a) the w error, (b) the attitude error. */
 static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_style *st)
 {
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < b->nseries; i++) {
-        if (p && b->S[i]->w_only)
-            continue; /* no attitude */
+        if (!in_panel(b->S[i], p))
+            continue;
         sus_plot_extend(&x0, &x1, b->S[i]->sec, (size_t)b->S[i]->n, 1, 1);
         sus_plot_extend(&y0, &y1, p ? b->S[i]->err_R : b->S[i]->err_w, (size_t)b->S[i]->n, 1, 1);
     }
@@ -74,13 +93,15 @@ static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_
     for (int pass = 0; pass < 2; pass++) /* peers first, underneath */
         for (int i = 0; i < b->nseries; i++) {
             const sus_exp_bench_series *s = b->S[i];
-            if (s->ours != pass || (p && s->w_only))
+            if (s->ours != pass || !in_panel(s, p))
                 continue;
             sus_plot_series(&ax, s->sec, p ? s->err_R : s->err_w, (size_t)s->n, 1, &st[i]);
             sus_plot_markers(&ax, s->sec, p ? s->err_R : s->err_w, (size_t)s->n, 1, &st[i]);
         }
-    const sus_plot_style es = sus_plot_style_of(SUS_PLOT_BLACK, 2.2, 0, SUS_PLOT_NONE, 0, NULL);
+    const sus_plot_style es = envelope_style(0), er = envelope_style(1);
     sus_plot_series(&ax, b->env[p].sec, b->env[p].err, (size_t)b->env[p].n, 1, &es);
+    if (p)
+        sus_plot_series(&ax, b->env[2].sec, b->env[2].err, (size_t)b->env[2].n, 1, &er);
     for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++) { /* the target accuracies */
         const double yy[2] = {SUS_EXP_BENCH_LEVELS[l], SUS_EXP_BENCH_LEVELS[l]},
                      xx[2] = {ax.x0, ax.x1};
@@ -93,17 +114,19 @@ static void draw_wp(cairo_t *cr, void *vctx)
 {
     const sus_exp_bench *b = vctx;
     sus_plot_style *st = sus_exp_bench_calloc((size_t)b->nseries, sizeof *st);
-    sus_plot_style *ours = sus_exp_bench_calloc((size_t)b->nseries, sizeof *ours);
+    sus_plot_style *ours = sus_exp_bench_calloc((size_t)b->nseries + 2, sizeof *ours);
     double(*rgb)[3] = sus_exp_bench_calloc((size_t)b->nseries, sizeof *rgb);
     wp_styles(b, st, rgb);
     for (int p = 0; p < 2; p++)
         wp_panel(cr, b, p, st);
-    /* legend: ours in two columns below the panels; what the peers were given is in the caption
-     * (paper/methods.tex), not a box of text in the figure */
+    /* legend: ours and the peers' two envelopes in two columns below the panels; what the peers
+     * were given is in the caption (paper/methods.tex), not a box of text in the figure */
     int nours = 0;
     for (int i = 0; i < b->nseries; i++)
         if (b->S[i]->ours)
             ours[nours++] = st[i];
+    ours[nours++] = envelope_style(0);
+    ours[nours++] = envelope_style(1);
     sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
     free(st);
     free(ours);
@@ -133,7 +156,7 @@ static void cost_bar(const sus_exp_bench *b, const sus_plot_axes *ax, int i, dou
         cairo_rectangle(cr, bx + 0.52 * bw, ax->y + ax->h - h2, 0.36 * bw, h2);
         cairo_fill(cr);
     }
-    const char *name = i < n    ? sus_step_method_get(i)->type->name
+    const char *name = i < n    ? b->cost.name[i]
                        : i == n ? "GSL rk4"
                                 : "exact \xcf\x89(t)";
     cairo_save(cr);
@@ -186,7 +209,7 @@ int sus_plot_bench_figures(const sus_exp_bench *b, const char *figdir)
 {
     char err[256], path[4096];
     snprintf(path, sizeof path, "%s/work_precision", figdir);
-    int nours = 0;
+    int nours = 2; /* the two envelopes */
     for (int i = 0; i < b->nseries; i++)
         nours += b->S[i]->ours;
     /* tall enough for the legend's two columns and no more */

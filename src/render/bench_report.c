@@ -1,6 +1,7 @@
 #include "bench_report.h"
 
 #include "bench_floor.h"
+#include "bench_longrun.h"
 #include "dsp.h"
 
 #include <stdio.h>
@@ -11,11 +12,12 @@
 
 void sus_plot_bench_header(const sus_exp_bench *b, int differ, int with_odeint)
 {
-    printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). "
-           "Work-precision times: median over %d\n"
-           "interleaved rounds, each a batch of >= %g s, min and max in data/bench.csv. "
-           "The machine is shared and\n"
-           "noisy: compare the ratios measured in this same run rather than absolute times.\n",
+    printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). Times are the CPU time of "
+           "the bench's thread.\n"
+           "Work-precision times: median over %d interleaved rounds, each a batch of >= %g s, "
+           "min and max in bench.csv.\n"
+           "On a shared machine, compare the ratios measured in this same run rather than "
+           "absolute times.\n",
            SUS_EXP_BENCH_T_END, SUS_EXP_BENCH_WP_ROUNDS, SUS_EXP_BENCH_BATCH_SECONDS);
     if (!with_odeint)
         printf("(built without Boost.Odeint: `make bench` builds the bench with it)\n");
@@ -40,7 +42,10 @@ static void print_costs(const sus_exp_bench *b)
                c->ns_full[m], att, c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
     }
     printf("  %-12s %10.1f\n", "GSL rk4", c->ns_gsl_rk4);
-    printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n\n", "exact w(t)", c->ns_exact);
+    printf("  %-12s %10.1f   (one closed-form w(t): the floor)\n", "exact w(t)", c->ns_exact);
+    printf("  %-12s %10.1f   (the same with one exp, as the peers on the reduced problem have "
+           "it)\n\n",
+           "w(t), 1 exp", c->ns_exact_one_exp);
 }
 
 /* The driver's overhead on the own-attitude methods and on the tolerance-driven runs. */
@@ -83,44 +88,56 @@ static void print_step_targets(const sus_exp_bench *b)
     print_overheads(b);
 }
 
-static void print_floor(const char *what, int l, const sus_exp_bench_level *v)
+static void print_floor(int l, const sus_exp_bench_level *v)
 {
     if (isinf(v->floor))
-        printf("  MISS %s accuracy %.0e: no floor (none of our explicit methods reaches it)\n",
-               what, LEVELS[l]);
+        printf("  MISS attitude accuracy %.0e: no floor (none of our explicit methods reaches "
+               "it)\n",
+               LEVELS[l]);
     else
-        printf("  %s %s accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s "
+        printf("  %s attitude accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s "
                "(fewest steps x cost per step): %.2fx\n",
-               v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", what, LEVELS[l], v->ours.sec,
+               v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", LEVELS[l], v->ours.sec,
                v->floor, v->ours.sec / v->floor);
 }
 
-static void print_level(const sus_exp_bench *b, int which, int l)
+/* The line's head: PASS or MISS against a target, "info" for a comparison without one. */
+static const char *verdict(const sus_exp_bench_level *v)
 {
-    const sus_exp_bench_level v = sus_exp_bench_level_verdict(b, which, l);
-    const char *what = which ? "attitude" : "w";
+    return isnan(v->target) ? "info" : v->pass ? "PASS" : "MISS";
+}
+
+static const char *const WHAT[SUS_EXP_BENCH_NCOMP] = {
+    "attitude", "attitude (reduced problem)", "w"};
+static const char *const AGAINST[SUS_EXP_BENCH_NCOMP] = {
+    "best peer on the full problem", "best peer on the reduced problem", "best peer"};
+
+static void print_level(const sus_exp_bench *b, sus_exp_bench_comparison c, int l)
+{
+    const sus_exp_bench_level v = sus_exp_bench_level_verdict(b, c, l);
     if (v.ours.series < 0) {
-        printf("  MISS %s accuracy %.0e at t = 50: none of our structure-preserving methods "
+        printf("  %s %s accuracy %.0e at t = 50: none of our structure-preserving methods "
                "reaches it\n",
-               what, LEVELS[l]);
+               isnan(v.target) ? "info" : "MISS", WHAT[c], LEVELS[l]);
         return;
     }
     const sus_exp_bench_series *os = b->S[v.ours.series];
-    print_floor(what, l, &v);
+    if (c == SUS_EXP_BENCH_ATT_FULL)
+        print_floor(l, &v);
+    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) ", verdict(&v), WHAT[c],
+           LEVELS[l], v.ours.sec, os->name, sus_exp_bench_param_name(os), os->param[v.ours.point]);
     if (v.peer.series < 0) {
-        printf("  PASS %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g); "
-               "no peer configuration reaches it\n",
-               what, LEVELS[l], v.ours.sec, os->name, sus_exp_bench_param_name(os),
-               os->param[v.ours.point]);
+        printf("; no peer configuration reaches it\n");
         return;
     }
     const sus_exp_bench_series *ps = b->S[v.peer.series];
-    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) "
-           "vs best peer %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx (target %gx)\n",
-           v.pass ? "PASS" : "MISS", what, LEVELS[l], v.ours.sec, os->name,
-           sus_exp_bench_param_name(os), os->param[v.ours.point], v.peer.sec, ps->name,
-           ps->param[v.peer.point], which ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point],
-           v.ratio, SUS_EXP_BENCH_LEVEL_TARGET[l]);
+    printf("vs %s %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c],
+           v.peer.sec, ps->name, ps->param[v.peer.point],
+           c != SUS_EXP_BENCH_W_INFO ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point], v.ratio);
+    if (isnan(v.target))
+        printf(" (no target: the closed form gives w(t) in %.3g ns)\n", b->cost.ns_exact);
+    else
+        printf(" (target %gx)\n", v.target);
 }
 
 void sus_plot_bench_costs_and_targets(const sus_exp_bench *b)
@@ -128,9 +145,9 @@ void sus_plot_bench_costs_and_targets(const sus_exp_bench *b)
     print_costs(b);
     printf("Targets:\n");
     print_step_targets(b);
-    for (int which = 1; which >= 0; which--)
+    for (int c = 0; c < SUS_EXP_BENCH_NCOMP; c++)
         for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++)
-            print_level(b, which, l);
+            print_level(b, (sus_exp_bench_comparison)c, l);
 }
 
 void sus_plot_bench_long_runs(const sus_exp_bench *b)
@@ -150,17 +167,60 @@ void sus_plot_bench_long_runs(const sus_exp_bench *b)
     }
 }
 
-void sus_plot_bench_equal_error(const sus_exp_bench *b, const sus_exp_bench_equal_error *e, int n)
+/* A peer of a long run: its tolerance, seconds, error and ratio, or that none reaches the level. */
+static void print_long_peer(const char *name, double tol, double sec, double err, double ours)
 {
-    for (int k = 0; k < n; k++) {
-        const sus_exp_bench_series *s = b->S[e[k].series];
-        const double ratio = e[k].peer_sec / e[k].sec;
-        printf("  %s T = 1e4 at equal error: %s (%s %.4g) %.3g s, error %.2g, "
-               "vs GSL rk8pd (w,q) tol %.2g %.3g s, error %.2g: %.2fx (target 3x)\n",
-               ratio >= 3.0 ? "PASS" : "MISS", s->name, sus_exp_bench_param_name(s),
-               s->param[e[k].point], e[k].sec, e[k].err, e[k].peer_tol, e[k].peer_sec,
-               e[k].peer_err, ratio);
+    if (isinf(sec))
+        printf("no %s tolerance down to 1e-15 reaches it", name);
+    else
+        printf("%s tol %.2g %.3g s, error %.2g: %.2fx", name, tol, sec, err, sec / ours);
+}
+
+/* Each of ours at T = 1e4 (information), then the target: the best of them. */
+void sus_plot_bench_equal_error(const sus_exp_bench *b)
+{
+    for (int k = 0; k < b->neq; k++) {
+        const sus_exp_bench_equal_error *e = &b->EQ[k];
+        const sus_exp_bench_series *s = b->S[e->series];
+        printf("  info T = 1e4, attitude error <= %g: %s (%s %.4g) %.3g s, error %.2g; ",
+               SUS_EXP_BENCH_LONG_LEVEL, s->name, sus_exp_bench_param_name(s), s->param[e->point],
+               e->sec, e->err);
+        print_long_peer("GSL rk8pd (w,q)", e->peer_tol, e->peer_sec, e->peer_err, e->sec);
+        printf("; ");
+        print_long_peer("GSL rk8pd reduced (q)", e->red_tol, e->red_sec, e->red_err, e->sec);
+        printf("\n");
     }
+    const int best = sus_exp_bench_best_equal_error(b);
+    if (best < 0) {
+        printf("  MISS T = 1e4 at equal error: none of our explicit own-attitude methods reaches "
+               "attitude %g there\n",
+               SUS_EXP_BENCH_LONG_LEVEL);
+        return;
+    }
+    const sus_exp_bench_equal_error *e = &b->EQ[best];
+    const double ratio = e->peer_sec / e->sec;
+    if (isinf(ratio))
+        printf("  PASS T = 1e4 at equal error (attitude <= %g): ours %s %.3g s; no rk8pd (w,q) "
+               "tolerance down to 1e-15 reaches it\n",
+               SUS_EXP_BENCH_LONG_LEVEL, b->S[e->series]->name, e->sec);
+    else
+        printf("  %s T = 1e4 at equal error (attitude <= %g): ours %s is %.2fx faster than GSL "
+               "rk8pd (w,q) (target %gx)\n",
+               ratio >= SUS_EXP_BENCH_LONG_TARGET ? "PASS" : "MISS", SUS_EXP_BENCH_LONG_LEVEL,
+               b->S[e->series]->name, ratio, SUS_EXP_BENCH_LONG_TARGET);
+}
+
+void sus_plot_bench_growth(const sus_exp_bench *b)
+{
+    const sus_exp_bench_growth *g = &b->growth;
+    if (g->series < 0)
+        return;
+    const sus_exp_bench_series *s = b->S[g->series];
+    const double r = sus_exp_bench_growth_ratio(b);
+    printf("  %s cost at T = 1e6 <= %gx the cost at T = 1e4: %s (%s %.4g) %.3g s against "
+           "%.3g s: %.2fx\n",
+           r <= SUS_EXP_BENCH_GROWTH_TARGET ? "PASS" : "MISS", SUS_EXP_BENCH_GROWTH_TARGET, s->name,
+           sus_exp_bench_param_name(s), s->param[g->point], g->sec, g->sec_long, r);
 }
 
 void sus_plot_bench_reproduced(const sus_exp_bench *b, const sus_exp_bench_reproduced *r,
@@ -168,10 +228,10 @@ void sus_plot_bench_reproduced(const sus_exp_bench *b, const sus_exp_bench_repro
 {
     for (int k = 0; k < r->nfailed; k++) {
         const sus_exp_bench_series *s = b->S[r->failed[k].series];
-        printf("  row not reproduced by suslov: %s %s %.17g\n", s->name,
-               sus_exp_bench_param_name(s), s->param[r->failed[k].point]);
+        printf("  row not reproduced by suslov: %s %s %.17g to T = %g\n", s->name,
+               sus_exp_bench_param_name(s), s->param[r->failed[k].point], r->failed[k].T);
     }
-    printf("  %s %d of %d \"ours\" rows re-run with %s give the same errors (suslov_args in "
-           "data/bench.csv)\n",
+    printf("  %s %d of %d \"ours\" rows re-run with %s give the same results (suslov_args in "
+           "bench.csv, longruns.tsv)\n",
            r->ok == r->tried ? "CHECK ok:" : "CHECK FAILED:", r->ok, r->tried, suslov);
 }

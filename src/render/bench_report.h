@@ -14,7 +14,10 @@ void sus_plot_bench_header(const sus_exp_bench *b, int differ, int with_odeint);
 void sus_plot_bench_costs_and_targets(const sus_exp_bench *b);
 /* The long runs' structure errors. */
 void sus_plot_bench_long_runs(const sus_exp_bench *b);
-void sus_plot_bench_equal_error(const sus_exp_bench *b, const sus_exp_bench_equal_error *e, int n);
+/* The runs to T = 1e4 at equal error (b->EQ) and the target line of the best of them; the cost
+ * of that run to T = 1e6 against T = 1e4 (b->growth). */
+void sus_plot_bench_equal_error(const sus_exp_bench *b);
+void sus_plot_bench_growth(const sus_exp_bench *b);
 /* The rows suslov did not reproduce, and the CHECK line; suslov is the program's path. */
 void sus_plot_bench_reproduced(const sus_exp_bench *b, const sus_exp_bench_reproduced *r,
                                const char *suslov);

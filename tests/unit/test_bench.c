@@ -1,0 +1,152 @@
+/* The bench's bookkeeping, on a bench filled by hand (no timing): which peer each comparison
+ * takes (src/exp/bench_floor.c: the full problem's peers for the attitude target, the reduced
+ * problem's for the other, never a peer given w(t) for the w race, never a w-only one for the
+ * attitude), and the data file the figures are drawn from (src/render/bench_tables.c writes
+ * bench.csv, src/exp/bench_load.c reads it back: the same series, points and step costs). */
+#define _POSIX_C_SOURCE 200809L
+#include "bench.h"
+#include "bench_floor.h"
+#include "bench_load.h"
+#include "bench_tables.h"
+#include "check.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* A series of one point: error e_w and e_R (INFINITY: none) in sec seconds. */
+static sus_exp_bench_series *one_point(sus_exp_bench *b, const char *name, int ours, int w_only,
+                                       int reduced, double e_w, double e_R, double sec)
+{
+    sus_exp_bench_series *s = sus_exp_bench_new_series(b);
+    snprintf(s->name, sizeof s->name, "%s", name);
+    s->ours = ours;
+    s->preserves = ours;
+    s->w_only = w_only;
+    s->reduced = reduced;
+    s->me = ours ? sus_step_method_by_name("taylor8") : NULL;
+    s->recon = ours ? s->me->recon : SUS_RECON_CAYLEY;
+    s->n = 1;
+    s->param[0] = 0.5;
+    s->steps[0] = 100;
+    s->err_w[0] = e_w;
+    s->err_R[0] = e_R;
+    s->sec[0] = s->smin[0] = s->smax[0] = sec;
+    b->npoints++;
+    return s;
+}
+
+/* Per-step costs for every registered method (the tables name some by type). */
+static void fill_costs(sus_exp_bench *b)
+{
+    const int n = sus_step_method_count();
+    sus_exp_bench_costs *c = &b->cost;
+    c->n = n;
+    c->name = sus_exp_bench_calloc((size_t)n, sizeof *c->name);
+    c->ns_raw = sus_exp_bench_calloc((size_t)n, sizeof(double));
+    c->ns_full = sus_exp_bench_calloc((size_t)n, sizeof(double));
+    c->newton = sus_exp_bench_calloc((size_t)n, sizeof(double));
+    for (int m = 0; m < n; m++) {
+        snprintf(c->name[m], sizeof c->name[m], "%s", sus_step_method_get(m)->type->name);
+        c->ns_raw[m] = 10.0 + m;
+        c->ns_full[m] = 20.0 + m;
+    }
+    c->ns_gsl_rk4 = 150.0;
+    c->ns_exact = 27.5;
+    c->ns_exact_one_exp = 12.5;
+}
+
+/* ours 1 us; a full-problem peer 3 us; a reduced-problem peer 0.4 us; a w-only peer 0.5 us. */
+static void fill(sus_exp_bench *b)
+{
+    *b = (sus_exp_bench){.growth = {.series = -1, .point = -1, .eq = -1}};
+    sus_exp_bench_init(b, NULL);
+    one_point(b, "ours", 1, 0, 0, 1e-5, 1e-5, 1e-6);
+    one_point(b, "full peer", 0, 0, 0, 1e-5, 1e-5, 3e-6);
+    one_point(b, "reduced peer", 0, 0, 1, 0.0, 1e-5, 0.4e-6);
+    one_point(b, "w peer", 0, 1, 0, 1e-5, INFINITY, 0.5e-6);
+    b->growth = (sus_exp_bench_growth){.series = -1, .point = -1, .eq = -1};
+    fill_costs(b);
+    sus_exp_bench_envelopes(b);
+}
+
+static void check_verdicts(const sus_exp_bench *b)
+{
+    const sus_exp_bench_level f = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_FULL, 0),
+                              r = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_REDUCED, 0),
+                              w = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_W_INFO, 0);
+    CHECK(f.ours.series == 0 && f.peer.series == 1 && f.ratio == 3e-6 / 1e-6 && f.pass,
+          "attitude, full problem: ours against the full problem's peer (series %d, ratio %g, "
+          "target %g)", f.peer.series, f.ratio, f.target);
+    CHECK(r.peer.series == 2 && r.ratio == 0.4e-6 / 1e-6 && !r.pass &&
+              r.target == SUS_EXP_BENCH_REDUCED_TARGET,
+          "attitude, reduced problem: against the peer given w(t) (series %d, ratio %g, target %g)",
+          r.peer.series, r.ratio, r.target);
+    CHECK(w.peer.series == 3 && isnan(w.target),
+          "w: against the w-only peer, never the one given w(t); information, no target (series "
+          "%d, target %g)", w.peer.series, w.target);
+    CHECK(b->env[1].n == 1 && b->env[1].sec[0] == 3e-6 && b->env[2].n == 1 &&
+              b->env[2].sec[0] == 0.4e-6,
+          "the attitude envelopes: the full problem's peers, and apart the reduced one's");
+}
+
+static int same_series(const sus_exp_bench_series *a, const sus_exp_bench_series *b)
+{
+    const double rel = 1e-5; /* bench.csv prints errors and seconds to 6 digits */
+    return strcmp(a->name, b->name) == 0 && a->ours == b->ours && a->w_only == b->w_only &&
+           a->reduced == b->reduced && a->n == b->n && a->param[0] == b->param[0] &&
+           a->steps[0] == b->steps[0] && fabs(a->sec[0] - b->sec[0]) <= rel * a->sec[0] &&
+           fabs(a->err_w[0] - b->err_w[0]) <= rel * a->err_w[0] &&
+           (isinf(a->err_R[0]) ? isinf(b->err_R[0])
+                               : fabs(a->err_R[0] - b->err_R[0]) <= rel * a->err_R[0]);
+}
+
+static void check_round_trip(const sus_exp_bench *b)
+{
+    char dir[] = "/tmp/test_bench.XXXXXX", path[64];
+    if (!mkdtemp(dir)) {
+        CHECK(0, "a scratch directory");
+        return;
+    }
+    sus_exp_bench c;
+    const int wrote = sus_plot_bench_tables(b, dir) == 0;
+    const int read = wrote && sus_exp_bench_load(&c, dir) == 0;
+    CHECK(read, "bench.csv written and read back");
+    if (read) {
+        int same = c.nseries == b->nseries;
+        for (int i = 0; same && i < b->nseries; i++)
+            same = same_series(b->S[i], c.S[i]);
+        CHECK(same, "the same %d series, each its points (read %d)", b->nseries, c.nseries);
+        same = c.cost.n == b->cost.n && c.cost.ns_gsl_rk4 == 150.0 && c.cost.ns_exact == 27.5;
+        for (int m = 0; same && m < b->cost.n; m++)
+            same = strcmp(c.cost.name[m], b->cost.name[m]) == 0 &&
+                   c.cost.ns_raw[m] == b->cost.ns_raw[m] && c.cost.ns_full[m] == b->cost.ns_full[m];
+        CHECK(same, "the same per-step costs, in the registry's order");
+        CHECK(c.env[2].n == 1, "the envelopes again from what was read");
+    }
+    /* a file that is not the bench's: refused, with a message */
+    snprintf(path, sizeof path, "%s/bench.csv", dir);
+    FILE *fp = fopen(path, "w");
+    if (fp) {
+        fputs("section,method\nwork,x\n", fp);
+        fclose(fp);
+    }
+    CHECK(sus_exp_bench_load(&c, dir) != 0, "a bench.csv that is not the bench's is refused");
+    static const char *const files[] = {"bench.csv", "bench.tex", "what_to_use.tsv",
+                                        "longruns.tsv"};
+    for (int k = 0; k < 4; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, files[k]);
+        remove(path);
+    }
+    rmdir(dir);
+}
+
+int main(void)
+{
+    sus_exp_bench b;
+    fill(&b);
+    check_verdicts(&b);
+    check_round_trip(&b);
+    return check_summary("test_bench");
+}
