@@ -186,7 +186,7 @@ typedef struct {
     double slope, slope_min, ratio_lo,
         ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
     char slope_body[16], lo_body[16], hi_body[16]; /* copies: each body is gone after its turn */
-    char slow[96];            /* bodies whose attitude turns slower than w settles, with |w| / k */
+    char slow[160];           /* bodies whose attitude turns slower than w settles, with |w| / k */
     int points, fitted;
     int bodies,
         in_theory; /* bodies fitted; of them, slopes inside the one-order theory [SLOPE_P6, 1] */
@@ -203,7 +203,8 @@ static void summary_add(tol_summary *s, const char *name, double rate, double sl
             s->ratio_hi = per_step[j], snprintf(s->hi_body, sizeof s->hi_body, "%s", name);
     if (rate < RATE_RATIO_MIN) {
         const size_t len = strlen(s->slow);
-        snprintf(s->slow + len, sizeof s->slow - len, "%s%s %.2g", len ? ", " : "", name, rate);
+        snprintf(s->slow + len, sizeof s->slow - len, "%s%s $%s$", len ? ", " : "", name,
+                 notation_g(rate, 2).s);
         return;
     }
     if (!s->slope_body[0] || !(slope <= s->slope))
@@ -267,7 +268,7 @@ static void local_claims(const tol_method *tm)
     tol_summary s[2] = {{.points = 0}, {.points = 0}};
     for (int k = 0; k < BODIES_COUNT; k++)
         body_errors(tm, claims_body_get(k), s);
-    char text[800], slow[256], id[96];
+    char text[800], slow[400], id[96];
     snprintf(
         slow, sizeof slow,
         "without: %s ($|\\omega|/k < %g$: the attitude turns slower than $\\omega$ settles, its "

@@ -109,15 +109,17 @@ static void energy_range_claims(const sus_model *m)
             if (!ended)
                 upto = grid_eps(j);
         }
-        char id[80], name[32], q[480];
+        char id[80], name[32], q[480], from[40] = "";
         reading_name(reading, name, sizeof name);
         snprintf(id, sizeof id, "fig2-energy-none-faster-%s", name);
+        if (faster)
+            snprintf(from, sizeof from, " (from %.3g)", first_faster);
         snprintf(
             q, sizeof q,
             "largest $\\varepsilon$ from 0.25 (grid $0.25 \\cdot 2^{j/4}$ to 8) up to which the %s "
             "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
-            "21 $\\varepsilon$ (from %.3g), failed at %d",
-            name, faster, first_faster, failed);
+            "21 $\\varepsilon$%s, failed at %d",
+            name, faster, from, failed);
         ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_EXP_FIG2_EPS, 1,
                          LEDGER_EXTENSION);
     }
@@ -152,9 +154,9 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
     char q[480];
     snprintf(q, sizeof q,
              "smallest over $t = 2, \\dots, 60$ of $|\\omega_\\mathrm{var}(t) - \\omega(t)| / "
-             "|\\omega_\\mathrm{mid}(t) - \\omega(t)|$ at $\\varepsilon = 1$ (largest %.3g); "
+             "|\\omega_\\mathrm{mid}(t) - \\omega(t)|$ at $\\varepsilon = 1$ (largest $%s$); "
              "``converges much faster'' needs $\\le 1/10$ somewhere",
-             hi);
+             notation_g(hi, 3).s);
     ledger_add_bound("fig2-converges-faster-t-range", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     snprintf(q, sizeof q,

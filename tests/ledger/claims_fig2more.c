@@ -154,8 +154,9 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
     snprintf(
         q, sizeof q,
         "smallest over $\\varepsilon = 2^{-j}$ ($j = 0, \\dots, 10$) of $e_\\mathrm{var}(10) / "
-        "e_\\mathrm{mid}(10)$ (largest %.3g); faster convergence needs it $\\le 1/10$ somewhere",
-        hi);
+        "e_\\mathrm{mid}(10)$ (largest $%s$); faster convergence needs it $\\le 1/10$ "
+        "somewhere",
+        notation_g(hi, 3).s);
     ledger_add_bound("fig2-converges-faster-eps", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     ledger_number("FigTwoVarOverMidErrorMin", lo);

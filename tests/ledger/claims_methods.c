@@ -203,7 +203,7 @@ static void method_structure(const sus_step_method *me)
     snprintf(id, sizeof id, "method-w3-%s", me->type->name);
     snprintf(q, sizeof q,
              "$\\max |\\omega_3|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s, "
-             "worst of %d bodies (seed %u) %s: exactly 0",
+             "the worst of %d bodies (seed %u), %s: exactly 0",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, BODIES_COUNT, BODIES_SEED, w3.body);
     /* every stepper writes w3 = 0.0 (the second equation of (DSP)): a check of the code, which
      * no value of the paper's can fail, so not evidence */
@@ -212,7 +212,7 @@ static void method_structure(const sus_step_method *me)
     char label[64];
     snprintf(q, sizeof q,
              "$\\max |R^\\top R - I|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, "
-             "%s, $R$ %s, worst of %d bodies %s; round-off bound $%s$",
+             "%s, $R$ %s, the worst of %d bodies, %s; round-off bound $%s$",
              STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
              t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
                                               : "by compensated products",
@@ -224,7 +224,7 @@ static void method_structure(const sus_step_method *me)
     snprintf(
         q, sizeof q,
         "$\\max |E - E_0|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s (%d "
-        "substeps), worst of %d bodies %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
+        "substeps), the worst of %d bodies, %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
         "\\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of $E$)",
         STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */

@@ -44,7 +44,8 @@ static void print_line(FILE *fp, const ledger_row *r)
     ledger_test_text(r, test, sizeof test);
     ledger_measured_text(r, meas, sizeof meas);
     fprintf(fp, "%-44s check: %-4s  finding: %s\n", r->id, r->pass ? "pass" : "FAIL", r->verdict);
-    fprintf(fp, "    measured x = %s, test %s; in the paper: %s\n", meas, test, r->ref_plain);
+    fprintf(fp, "    measured x = %s, test %s%s; in the paper: %s\n", meas,
+            r->kind == ROW_WITHIN ? "" : "x ", test, r->ref_plain);
     fprintf(fp, "    %s  [%s]\n", r->quantity_plain, r->source);
 }
 

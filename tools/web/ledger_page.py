@@ -43,10 +43,11 @@ def published_ref(site, text):
         if kind in frame.STATEMENT_KINDS and lab in site.st.labels:
             link = '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(lab), esc(lab),
                                                       esc(name))
-        elif kind == "equation":
+        elif kind == "equation":    # "eq. " before the link, which shows the number: (27)
             frame.REFERENCED.add(lab)
-            link = ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
-                    % (esc(lab), esc(lab), esc(name)))
+            link = ('%s<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
+                    % (esc(name[:name.index("(")]), esc(lab), esc(lab),
+                       esc(name[name.index("("):])))
         else:
             link = esc(name)
         return "%s %s" % (link, secondary(lab))
@@ -177,18 +178,31 @@ def by_stem(site, claims, tex):
                    for stem, cs in stems.items())
 
 
-def group_html(site, key, name, claims, tex):
+def group_html(site, key, name, claims, tex, also=()):
+    """A group of lines; `also`: the other statements whose lines all sit in this group (a line
+    citing two is under the first in the paper's order), each an anchor that opens it."""
     link = ""
     if key in site.st.order:
         link = ("<p class='g-link'><a href='%s'>%s: the statement as printed, its verdict and its "
                 "evidence</a></p>" % (argument_pages.stmt_page(key), esc(name)))
+    anchors = "".join('<span id="g-%s"></span>' % esc(lab.replace(":", "-")) for lab in also)
     return ('<details class="group" id="g-%s"><summary><span class="g-name">%s</span>%s '
-            '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span></summary>%s'
+            '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span></summary>%s%s'
             '%s</details>'
             % (esc(key.replace(":", "-")), esc(name), secondary(key) if key != BEYOND[0] else "",
                len(claims), "s" if len(claims) != 1 else "", tally(verdict_counts(claims), False),
-               link, by_stem(site, claims, tex) if key == BEYOND[0] else
+               anchors, link, by_stem(site, claims, tex) if key == BEYOND[0] else
                HEAD + "".join(card(site, c, tex) for c in claims)))
+
+
+def other_statements(site, order, groups):
+    """For each group, the statements its lines cite that have no group of their own."""
+    keys, placed, out = {k for k, _ in order}, set(), {}
+    for k in order:
+        labs = [lab for c in groups[k] for lab in site.st.of_claim[c["id"]]]
+        out[k] = [lab for lab in dict.fromkeys(labs) if lab not in keys and lab not in placed]
+        placed.update(out[k])
+    return out
 
 
 def filters(site):
@@ -231,6 +245,8 @@ def build(site):
            "<form class='filters' onsubmit='return false'>%s <span id='ledger-count'></span></form>"
            % filters(site),
            "<div id='ledger'>"]
-    out += [group_html(site, key, name, groups[(key, name)], tex) for key, name in order]
+    also = other_statements(site, order, groups)
+    out += [group_html(site, key, name, groups[(key, name)], tex, also[(key, name)])
+            for key, name in order]
     out.append("</div></main>")
     site.write_page("ledger.html", "Claims ledger", "ledger", "\n".join(out), ["ledger.js"])
