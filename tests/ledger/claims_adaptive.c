@@ -268,7 +268,7 @@ static void local_claims(const tol_method *tm)
     tol_summary s[2] = {{.points = 0}, {.points = 0}};
     for (int k = 0; k < BODIES_COUNT; k++)
         body_errors(tm, claims_body_get(k), s);
-    char text[800], slow[400], id[96];
+    char text[1024], slow[320], id[96];
     snprintf(
         slow, sizeof slow,
         "without: %s ($|\\omega|/k < %g$: the attitude turns slower than $\\omega$ settles, its "
