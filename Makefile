@@ -265,7 +265,8 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS
 
 # make test: the unit tests, the CLI tests and the build checks, exactly $(TESTS) and the scripts
 # named in tests/run.sh (a few seconds). make ledger: the claims ledger, run again only when the
-# claims program changed (it reads no other input); its table is kept in $(BUILD)/claims.out.
+# claims program changed (it reads no other input); its table is kept in $(BUILD)/claims.out and
+# printed whole (make check prints the lines whose check failed and the findings; V=1 the table).
 # make check: both, and "N passed, N failed" over all of them on the last line.
 # The suppressions path is quoted for LSan, so that a checkout path with a space works.
 SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
@@ -273,10 +274,10 @@ SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
 test: all
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
-ledger: $(BUILD)/claims.out
+ledger: $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
 	@sh tests/run.sh $(BUILD) ledger
 
-check: all $(BUILD)/claims.out
+check: all $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
@@ -293,6 +294,16 @@ $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) | $(TIMED)
 	    $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv; \
 	    if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
 	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
+
+# The ledger runs its sections on every core (tests/ledger/ledger_jobs.h), and is the same byte for
+# byte as a run of one section after the other in one process: the claims program with -j1 writes
+# its files into $(BUILD)/ledger-j1 (beside the parallel run, under make -j), and tests/run.sh
+# compares them.
+$(BUILD)/ledger-j1/claims.out: $(CLAIMS) | $(TIMED)
+	$(call say,LEDGER,$(BUILD)/ledger-j1/claims.tsv (-j1))
+	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-j1.txt $(CLAIMS) -j1 \
+	    $(@D)/claims.tsv; if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
+	    else cat $@.tmp; rm -f $@.tmp; echo "ledger -j1: the claims program stopped early"; exit 1; fi
 
 # The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The test runner. Usage: run.sh BUILD_DIR MODE [TEST_PROGRAM...]
 #   test    run exactly the given unit test programs, then the CLI and build tests below
-#   ledger  the claims ledger's checks, on the table make kept in BUILD_DIR/claims.out
+#   ledger  the claims ledger's table (whole) and checks, on what make kept in BUILD_DIR/claims.out
 #   check   both
 # One line per stage (unit tests, CLI tests, build checks, the ledger, the paper's checks): PASS or
 # FAIL, what ran and its counts. A failure is shown in full under its stage: the FAIL lines of each
@@ -105,18 +105,21 @@ if [ "$mode" != ledger ]; then
 fi
 if [ "$mode" != test ]; then
     st_begin "claims ledger" 0
-    # The ledger's table is in claims.out (make ran the ledger only if the claims program changed);
-    # its FAIL rows and anything it prints besides its rows are shown, never its PASS rows.
+    # claims.out (make ran the ledger only if the claims program changed) holds the table, then
+    # under "checks that failed:" each failing line again, then the findings. The table is printed
+    # whole by make ledger and with V=1; a failing line always, in full, under the stage's line.
     cp "$B/claims.out" "$L/claims.log"
     st_names=claims
-    awk '/^ +claim  / { next } /^PASS / { row = 1; next } /^FAIL / { row = 0; print; next }
-         /^      / { if (!row) print; next } { row = 0 }
-         /^$/ || /^ledger written to / || /^claims: [0-9]+ passed/ { next } { print }' \
+    if [ "$mode" = ledger ] || [ "${V:-0}" = 1 ]; then
+        awk '/^checks that failed:$/ || /^findings of / { exit } { print }' "$B/claims.out"
+    fi
+    awk '/^checks that failed:$/ { on = 1; next } /^findings of / { exit } on && NF' \
         "$B/claims.out" >>"$st_out"
     grep -q '^claims: [0-9]* passed, 0 failed' "$B/claims.out" || status=1
     count claims "$B/claims.out"
     # claims.tsv is the TSV (its header first), not the printed table
-    if head -1 "$B/claims.tsv" | grep -q '^id	paper_ref	quantity	measured	expected	tolerance	verdict'; then
+    want='^id	paper_ref	quantity	measured	expected	tolerance	verdict'
+    if head -1 "$B/claims.tsv" | grep -q "$want"; then
         echo "claims_tsv: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
     else
         echo "FAIL claims.tsv does not start with its header" >>"$st_out"
@@ -124,7 +127,9 @@ if [ "$mode" != test ]; then
     fi
     # every id once: the companion makes a macro of each
     dup=$(cut -f1 "$B/claims.tsv" | sort | uniq -d | head -3 | tr '\n' ' ')
-    if [ -z "$dup" ]; then echo "claims_ids: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1)); else
+    if [ -z "$dup" ]; then
+        echo "claims_ids: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
+    else
         echo "FAIL claims.tsv repeats ids: $dup" >>"$st_out"
         echo "claims_ids: 0 passed, 1 failed" >>"$sum"; st_fail=$((st_fail + 1))
     fi
@@ -135,6 +140,18 @@ if [ "$mode" != test ]; then
         echo "claims_no_nan: 0 passed, 1 failed" >>"$sum"; st_fail=$((st_fail + 1))
     else
         echo "claims_no_nan: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
+    fi
+    # The same files, byte for byte, from one section after the other in one process (claims -j1,
+    # which make ran into $B/ledger-j1): the parallel sections lean on no other's state.
+    differ=""
+    for f in claims.out claims.tsv methods.tsv numbers.tex ledger.tex summary.tex sensitivity.tex \
+        claims_tex.tsv; do cmp -s "$B/ledger-j1/$f" "$B/$f" || differ="$differ $f"; done
+    if [ -z "$differ" ]; then
+        echo "ledger_j1: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
+    else
+        echo "FAIL the ledger on one core ($B/ledger-j1) differs from the parallel run in:$differ" \
+            >>"$st_out"
+        echo "ledger_j1: 0 passed, 1 failed" >>"$sum"; st_fail=$((st_fail + 1))
     fi
     lines=$(awk 'END { print NR - 1 }' "$B/claims.tsv")
     st_end "claims ledger" "$lines lines, table in $B/claims.out"
@@ -147,6 +164,11 @@ if [ "$mode" != test ]; then
     # The committed PDFs print the numbers this ledger gives (make paper writes them).
     run paper_fresh sh tools/paper_fresh.sh "$B"
     st_end "paper checks" "$(echo $st_names | tr ' ' ',' | sed 's/,/, /g')"
+    # The findings, last: the tally by verdict and each line that contradicts the paper, by its
+    # published number; then where the whole ledger is.
+    awk '/^findings of / { on = 1 } /^claims: [0-9]+ passed/ { exit } on' "$B/claims.out"
+    echo "the whole ledger: $B/claims.out (each line's check and finding) and $B/claims.tsv;" \
+        "make ledger, or make check V=1, prints it"
 fi
 awk '{ p += $2; f += $4 } END { printf "%d passed, %d failed\n", p, f; exit f > 0 }' "$sum" || status=1
 exit $status

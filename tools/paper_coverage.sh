@@ -1,7 +1,7 @@
 #!/bin/sh
 # Every numbered statement of the paper (proposition, theorem, corollary, remark, algorithm,
-# figure; paper/labels.tsv) must be tested by a ledger line (its label, or the name the ledger
-# gives it, in the paper_ref column of claims.tsv) or listed, with the reason, in
+# figure; paper/labels.tsv) must be tested by a ledger line (its label, or its published name,
+# "Proposition 5.2", in the paper_ref column of claims.tsv) or listed, with the reason, in
 # paper/not_tested.tsv; every claim of the Conclusions (paper/conclusions.tsv) and every finding
 # (paper/findings.tsv) must name ledger lines that exist; and every ledger line whose verdict is
 # "not reproduced" or "erratum" must belong to a finding; and every unit test that
@@ -23,18 +23,17 @@ file == 4 { n = split($4, ids, " ");
             for (i = 1; i <= n; i++) { infinding[ids[i]] = 1; checks++
                 if (!(ids[i] in verdict)) { print "findings " $1 ": no ledger line " ids[i]; bad++ } }
             next }
-file == 5 && $2 ~ /^(proposition|theorem|corollary|remark|algorithm|figure)$/ { label[$1] = $2 " " $3 }
+file == 5 && $2 ~ /^(proposition|theorem|corollary|remark|algorithm|figure)$/ {
+    label[$1] = $2 " " $3
+    # its published name, as the paper_ref column prints it: "Proposition 5.2" (a regex)
+    pub[$1] = toupper(substr($2, 1, 1)) substr($2, 2) " " $3; gsub(/\./, "\\.", pub[$1]) }
 END {
-    # the names the ledger uses where a statement has no label of its own
-    alias["nolabel:proposition-5.2"] = "Prop. general DSP"
-    alias["nolabel:remark-5.2"] = "Algorithm (algo), Remark"
-    alias["Fig1"] = "Fig. 1"; alias["Fig2"] = "Fig. 2"
     for (l in label) {
         checks++
         found = (l in untested)
         for (r = 2; r <= nref && !found; r++) {
-            s = ref[r]; gsub(/[(),]/, " ", s)
-            found = (" " s " ") ~ (" " l " ") || ((l in alias) && index(ref[r], alias[l]))
+            s = ref[r]; gsub(/[(),;]/, " ", s)
+            found = (" " s " ") ~ (" " l " ") || (" " s " ") ~ (" " pub[l] " ")
         }
         if (!found) { print "coverage: " label[l] " (" l ") is in neither the ledger nor paper/not_tested.tsv"; bad++ }
     }

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The companion's table of every tolerance and fit window the claims ledger uses, from the ledger
-# itself (build/claims.tsv: the tolerance and test columns, and the fit window its quantity names)
-# and the reason for each kind of threshold (paper/tolerances.tsv, one rule a row, first match
+# itself (build/claims.tsv: the tolerance and test columns; claims_tex.tsv beside it: the fit window
+# its quantity names) and the reason for each kind of threshold (paper/tolerances.tsv, one rule a row, first match
 # wins: a regex on the id, a regex on the test, and a range of tolerances). Fails when a ledger
 # line matches no rule, so a new kind of threshold cannot enter the ledger without its reason
 # (make check runs it too, through tests/run.sh).
@@ -15,14 +15,12 @@ function tex(v,   m, e) { # a number as LaTeX: 1e-14 -> 10^{-14}, 0.25 stays
     split(e, m, "e")
     m[2] = m[2] + 0
     return (m[1] == "1" ? "" : m[1] "\\times") "10^{" m[2] "}" }
-function pow2(s) { # 2^-10 -> 2^{-10}
-    while (match(s, /\^-?[0-9]+/)) s = substr(s, 1, RSTART) "{" substr(s, RSTART + 1, RLENGTH - 1) "}" substr(s, RSTART + RLENGTH)
-    return s }
-function window(q) {
-    if (match(q, /fit (over )?eps in \[[^]]*\]/)) { q = substr(q, RSTART, RLENGTH); sub(/^fit (over )?eps in /, "", q); return "$\\eps\\in" pow2(q) "$" }
-    if (match(q, /window eps (k )?[0-9.e+-]+ \.\. [0-9.e+-]+/)) return "per curve"
+function window(q) { # the fit window a quantity states, from its LaTeX (claims_tex.tsv)
+    if (match(q, /fit (over )?\$\\varepsilon \\in \[[^]$]*\]\$/)) { q = substr(q, RSTART, RLENGTH); sub(/^fit (over )?/, "", q); return q }
+    if (match(q, /window \$\\varepsilon k \\in \[[0-9.e+-]+, [0-9.e+-]+\]\$/)) return "per curve"
     return "" }
 FNR == 1 { next }
+FILENAME == ARGV[2] { texq[$1] = $2; next }
 FILENAME == ARGV[1] { nr++; rid[nr] = $2; rtest[nr] = $3; lo[nr] = $4; hi[nr] = $5; chk[nr] = $6; why[nr] = $7; next }
 {
     for (r = 1; r <= nr; r++)
@@ -30,10 +28,11 @@ FILENAME == ARGV[1] { nr++; rid[nr] = $2; rtest[nr] = $3; lo[nr] = $4; hi[nr] = 
     if (r > nr) { printf "paper_tolerances: no rule in %s for ledger line %s (tolerance %s, test %s)\n", ARGV[1], $1, $6, $8 > "/dev/stderr"; bad++; next }
     n[r]++; covered++
     if (!((r, $6) in seen)) { seen[r, $6] = 1; nv[r]++; if (nv[r] == 1 || $6 + 0 < vmin[r]) vmin[r] = $6 + 0; if (nv[r] == 1 || $6 + 0 > vmax[r]) vmax[r] = $6 + 0; vals[r] = vals[r] (nv[r] > 1 ? ", " : "") "$" tex($6 + 0) "$" }
-    w = window($3)
-    if (w == "per curve" && match($3, /window eps (k )?[0-9.e+-]+ \.\. [0-9.e+-]+/)) {
-        ws = substr($3, RSTART, RLENGTH); if (sub(/^window eps k /, "", ws)) wk[r] = " k"; else sub(/^window eps /, "", ws)
-        split(ws, ab, " \\.\\. ")
+    w = window(texq[$1])
+    if (w == "per curve" && match(texq[$1], /window \$\\varepsilon k \\in \[[0-9.e+-]+, [0-9.e+-]+\]\$/)) {
+        ws = substr(texq[$1], RSTART, RLENGTH); sub(/^window \$\\varepsilon k \\in \[/, "", ws); sub(/\]\$$/, "", ws)
+        wk[r] = " k"
+        split(ws, ab, ", ")
         if (!(r in wlo) || ab[1] + 0 < wlo[r]) wlo[r] = ab[1] + 0
         if (!(r in whi) || ab[2] + 0 > whi[r]) whi[r] = ab[2] + 0
     } else if (w != "" && index(fixed[r], w) == 0) fixed[r] = fixed[r] (fixed[r] == "" ? "" : "; ") w
@@ -52,5 +51,5 @@ END {
         else wd = fixed[r] == "" ? "---" : fixed[r]
         printf "%s & %s & %d & %s & %s\\\\\n", chk[r], v, n[r], wd, why[r]
     }
-    print "\\end{longtable}" }' "$2" "$1" >"$3.tmp" || { rm -f "$3.tmp"; exit 1; }
+    print "\\end{longtable}" }' "$2" "$(dirname "$1")/claims_tex.tsv" "$1" >"$3.tmp" || { rm -f "$3.tmp"; exit 1; }
 mv "$3.tmp" "$3"

@@ -4,9 +4,9 @@
  * (expected_tol_of): TOL_LOCAL (each step's own estimate; taylor-adaptive) or TOL_GLOBAL (R's
  * global error; exact-attitude).
  *
- * TOL_LOCAL. Error against TOL at t = T_ERR: w and R against the long-double reference (sus_refatt_precise,
- * good to ~1e-17), for TOL = 10^-4 ... 10^-14, one a decade. What theory says, fixed before
- * measuring (the commit that added this file holds them as first written):
+ * TOL_LOCAL. Error against TOL at t = T_ERR: w and R against the long-double reference
+ * (sus_refatt_precise, good to ~1e-17), for TOL = 10^-4 ... 10^-14, one a decade. What theory says,
+ * fixed before measuring (the commit that added this file holds them as first written):
  *   - each accepted step's estimated error is at most TOL, and the global error at t is a sum of
  *     N such local errors carried by the flow, so err <= F N TOL with F = 10, the factor by which
  *     the last-two-terms estimate may undershoot a tail whose ratio r is up to 0.9 (true tail
@@ -41,14 +41,16 @@
  * |terms| of E (E0 itself where none cancels; far more on a near-singular I_m) (every step
  * scales w onto E(w_0) itself, so the rounding does not accumulate). *
  * TOL_GLOBAL, fixed from theory before measuring (each body in its own time, as above):
- *   - dist(R, R_ref)(t k = 50 k_paper) <= TOL + (34 N + 32 sum h |w|) u for TOL = 10^-4 ... 10^-14: the
- *     method's estimates of its N steps sum to at most TOL (its file's top); each step rounds |q| by
- *     about 12 u (the quaternion product, the series' sum, the normalisation), dist <= 2 sqrt2 |dq|:
+ *   - dist(R, R_ref)(t k = 50 k_paper) <= TOL + (34 N + 32 sum h |w|) u for TOL = 10^-4 ... 10^-14:
+ * the method's estimates of its N steps sum to at most TOL (its file's top); each step rounds |q|
+ * by about 12 u (the quaternion product, the series' sum, the normalisation), dist <= 2 sqrt2 |dq|:
  *     34 u a step; and a step that turns R by theta = h |w| computes that angle in double, about u
- *     theta (32: tests/unit/test_exact_attitude.c counts it), h |w| taken as h max(|w|) at its ends;
+ *     theta (32: tests/unit/test_exact_attitude.c counts it), h |w| taken as h max(|w|) at its
+ * ends;
  *   - |w - w_ref| <= 64 u r |L^{-1}|_F at the same time: w is the closed form, w = L^{-T} u with
  *     |u| = r, whose parameters (s0, k, r, beta, L) and evaluation carry some 16 roundings, each
- *     moving w by at most about u times that scale (|d(sech s, tanh s)/ds| <= 1, |s| e^{-|s|} <= 1/e);
+ *     moving w by at most about u times that scale (|d(sech s, tanh s)/ds| <= 1, |s| e^{-|s|} <=
+ * 1/e);
  *   - structure to T k = 1e4 k_paper, the steady tail included: w3 = 0 exactly; |R^T R - I| <=
  *     1e-14 (R from a unit quaternion); |E - E0| <= 32 u kappa E0, kappa = |L|_F |L^{-1}|_F: E =
  *     |u|^2 / 2 with u = L^T w, and w's roundings (relative to r |L^{-1}|_F, above) reach E
@@ -61,6 +63,7 @@
 #include "exact.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "orderfit.h"
 #include "refattitude.h"
 #include "registry.h"
@@ -77,7 +80,8 @@
 #define NTOL 11 /* 1e-4 ... 1e-14 */
 #define F_UNDERSHOOT 10.0
 #define RATIO_LO 1e-2
-#define SLOPE_P6 (6.0 / 7.0) /* 1 - 1/(p+1) at the lowest order, p = 6: the one-order theory's lower end */
+#define SLOPE_P6                                                                                   \
+    (6.0 / 7.0) /* 1 - 1/(p+1) at the lowest order, p = 6: the one-order theory's lower end */
 #define SLOPE_MID 0.925 /* the band [0.7, 1.15] */
 #define SLOPE_HALF 0.225
 #define ORTH_BOUND 1e-14
@@ -102,7 +106,7 @@ typedef struct {
     double w[3], R[3][3];
     double w3, orth, energy; /* the largest over the rows */
     double eterms;           /* the largest sum of |terms| of E(w) over the rows */
-    double t, turn;          /* the last row's time; the sum of h max(|w|) over the steps (TOL_GLOBAL) */
+    double t, turn; /* the last row's time; the sum of h max(|w|) over the steps (TOL_GLOBAL) */
 } track_ctx;
 
 static int track(void *vctx, const sus_row *r)
@@ -123,8 +127,8 @@ static int track(void *vctx, const sus_row *r)
     return 0;
 }
 
-static int run(const sus_stepper_type *type, const sus_model *m, const double w0[2], double tol, double T,
-               track_ctx *c)
+static int run(const sus_stepper_type *type, const sus_model *m, const double w0[2], double tol,
+               double T, track_ctx *c)
 {
     *c = (track_ctx){.m = m, .e0 = sus_energy(m, w0)};
     const sus_tol_config cfg = {m, type, tol, T, 0.0, 0};
@@ -160,9 +164,14 @@ static void key_number(const tol_method *tm, const char *suffix, double value)
     ledger_number(name, value);
 }
 
+/* The times and tolerances the lines name, in the notation. */
+#define T50 "$t k = 50\\,k_\\mathrm{paper}$"
+#define T1E4 "$T k = 10^4\\,k_\\mathrm{paper}$"
+#define TOLS "$\\mathrm{TOL} = 10^{-4}, \\dots, 10^{-14}$"
+
 /* A run of the method, or the claims program stops (ledger_die) naming it. */
-static void run_or_die(const tol_method *tm, const sus_model *m, const double w0[2], double tol, double T,
-                       track_ctx *c)
+static void run_or_die(const tol_method *tm, const sus_model *m, const double w0[2], double tol,
+                       double T, track_ctx *c)
 {
     char what[96];
     if (run(tm->type, m, w0, tol, T, c) == SUS_RUN_OK)
@@ -177,23 +186,25 @@ typedef struct {
     double slope, slope_min, ratio_lo,
         ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
     char slope_body[16], lo_body[16], hi_body[16]; /* copies: each body is gone after its turn */
-    char slow[96];            /* bodies whose attitude turns slower than w settles, with |w| / k */
+    char slow[160];           /* bodies whose attitude turns slower than w settles, with |w| / k */
     int points, fitted;
-    int bodies, in_theory; /* bodies fitted; of them, slopes inside the one-order theory [SLOPE_P6, 1] */
+    int bodies,
+        in_theory; /* bodies fitted; of them, slopes inside the one-order theory [SLOPE_P6, 1] */
 } tol_summary;
 
 /* The worst-so-far bookkeeping of one body's measurements of one quantity; a body whose R error is
  * not what its tolerance controls (rate = |w| / k below RATE_RATIO_MIN) enters the upper bound
  * only. */
-static void summary_add(tol_summary *s, const char *name, double rate, double slope, const double *ratio,
-                        const double *per_step, int n)
+static void summary_add(tol_summary *s, const char *name, double rate, double slope,
+                        const double *ratio, const double *per_step, int n)
 {
     for (int j = 0; j < NTOL; j++)
         if (!s->hi_body[0] || !(per_step[j] <= s->ratio_hi))
             s->ratio_hi = per_step[j], snprintf(s->hi_body, sizeof s->hi_body, "%s", name);
     if (rate < RATE_RATIO_MIN) {
         const size_t len = strlen(s->slow);
-        snprintf(s->slow + len, sizeof s->slow - len, "%s%s %.2g", len ? ", " : "", name, rate);
+        snprintf(s->slow + len, sizeof s->slow - len, "%s%s $%s$", len ? ", " : "", name,
+                 notation_g(rate, 2).s);
         return;
     }
     if (!s->slope_body[0] || !(slope <= s->slope))
@@ -227,7 +238,8 @@ static void body_errors(const tol_method *tm, const claims_body *d, tol_summary 
         const double tol = pow(10.0, -4.0 - j);
         track_ctx c;
         run_or_die(tm, m, b->w0, tol, T, &c);
-        const double er[2] = {hypot(c.w[0] - w_ref[0], c.w[1] - w_ref[1]), sus_so3_dist(R_ref, c.R)};
+        const double er[2] = {hypot(c.w[0] - w_ref[0], c.w[1] - w_ref[1]),
+                              sus_so3_dist(R_ref, c.R)};
         const double size[2] = {hypot(w_ref[0], w_ref[1]), 1.0};
         for (int q = 0; q < 2; q++) {
             per_step[q][j] = er[q] / (tol * (double)c.steps);
@@ -256,49 +268,58 @@ static void local_claims(const tol_method *tm)
     tol_summary s[2] = {{.points = 0}, {.points = 0}};
     for (int k = 0; k < BODIES_COUNT; k++)
         body_errors(tm, claims_body_get(k), s);
-    char text[700], slow[256], id[96];
-    snprintf(slow, sizeof slow, "without: %s (|w| / k < %g: the attitude turns slower than w settles, "
-                                "its error is not what TOL controls; a scope set after measuring)",
-             s[1].slow[0] ? s[1].slow : "none", RATE_RATIO_MIN);
+    char text[1024], slow[320], id[96];
+    snprintf(
+        slow, sizeof slow,
+        "without: %s ($|\\omega|/k < %g$: the attitude turns slower than $\\omega$ settles, its "
+        "error is not what TOL controls; a scope set after measuring)",
+        s[1].slow[0] ? s[1].slow : "none", RATE_RATIO_MIN);
     key_number(tm, "SlopeRMin", s[1].slope_min);
     key_number(tm, "SlopeRMax", s[1].slope);
     /* the band's two edges, each a line: the steepest body against the upper, the shallowest
      * against the lower (the verdict moves with an edge only if it crosses these two slopes) */
-    snprintf(text, sizeof text,
-             "steepest slope of log dist(R, R_ref)(t k = 50 k_paper) against log TOL, TOL = 1e-4 ... 1e-14 "
-             "above "
-             "100 N u (%d of %d points), %s, %d of %d bodies (%s): <= %.2f, the upper edge of "
-             "the band [%.2f, %.2f] fixed before measuring; the verdict turns at an edge of %.3f, and %d of "
-             "%d bodies lie inside the one-order theory [%.2f, 1]; %s",
-             s[1].fitted, s[1].points, name, s[1].bodies, BODIES_COUNT, s[1].slope_body,
-             SLOPE_MID + SLOPE_HALF, SLOPE_MID - SLOPE_HALF, SLOPE_MID + SLOPE_HALF, s[1].slope,
-             s[1].in_theory, s[1].bodies, SLOPE_P6, slow);
+    snprintf(
+        text, sizeof text,
+        "steepest slope of $\\log \\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50 " against $\\log "
+        "\\mathrm{TOL}$, " TOLS " above $100\\,N u$ (%d of %d points), %s, %d of %d bodies (%s): "
+        "$\\le %.2f$, the upper edge of the band $[%.2f, %.2f]$ fixed before measuring; the "
+        "verdict turns at an edge of %.3f, and %d of %d bodies lie inside the one-order theory "
+        "$[%.2f, 1]$; %s",
+        s[1].fitted, s[1].points, name, s[1].bodies, BODIES_COUNT, s[1].slope_body,
+        SLOPE_MID + SLOPE_HALF, SLOPE_MID - SLOPE_HALF, SLOPE_MID + SLOPE_HALF, s[1].slope,
+        s[1].in_theory, s[1].bodies, SLOPE_P6, slow);
     snprintf(id, sizeof id, "%s-tol-slope-R", key);
     ledger_add_bound(id, "(extension)", text, s[1].slope, SLOPE_MID + SLOPE_HALF, 0,
                      LEDGER_EXTENSION);
     snprintf(text, sizeof text,
-             "shallowest slope of log dist(R, R_ref)(t k = 50 k_paper) against log TOL, as above, %d of %d "
-             "bodies: >= %.2f, the lower edge of the band [%.2f, %.2f]; %s",
+             "shallowest slope of $\\log \\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50
+             " against $\\log "
+             "\\mathrm{TOL}$, as above, %d of %d bodies: $\\ge %.2f$, the lower edge of the band "
+             "$[%.2f, %.2f]$; %s",
              s[1].bodies, BODIES_COUNT, SLOPE_MID - SLOPE_HALF, SLOPE_MID - SLOPE_HALF,
              SLOPE_MID + SLOPE_HALF, slow);
     snprintf(id, sizeof id, "%s-tol-slope-R-min", key);
     ledger_add_bound(id, "(extension)", text, s[1].slope_min, SLOPE_MID - SLOPE_HALF,
                      1, LEDGER_EXTENSION);
     snprintf(text, sizeof text,
-             "smallest dist(R, R_ref)(t k = 50 k_paper) / TOL over TOL = 1e-4 ... 1e-14 above 100 N u, "
-             "%s, %d of %d bodies (%s): >= %g (within two decades below TOL); %s",
+             "smallest $\\mathrm{dist}(R, R_\\mathrm{ref})/\\mathrm{TOL}$ at " T50 ", " TOLS
+             " above "
+             "$100\\,N u$, %s, %d of %d bodies (%s): $\\ge %g$ (within two decades below TOL); %s",
              name, s[1].bodies, BODIES_COUNT, s[1].lo_body, RATIO_LO, slow);
     snprintf(id, sizeof id, "%s-tol-ratio-lo-R", key);
     ledger_add_bound(id, "(extension)", text, s[1].ratio_lo, RATIO_LO, 1,
                      LEDGER_EXTENSION);
-    static const char *const what[2] = {"|w - w_ref|", "dist(R, R_ref)"}, *const wr[2] = {"w", "R"};
+    static const char *const what[2] = {"$|\\omega - \\omega_\\mathrm{ref}|$",
+                                        "$\\mathrm{dist}(R, R_\\mathrm{ref})$"},
+                             *const wr[2] = {"w", "R"};
     for (int q = 0; q < 2; q++) {
         snprintf(id, sizeof id, "%s-tol-ratio-hi-%s", key, wr[q]);
-        snprintf(
-            text, sizeof text,
-            "largest %s(t k = 50 k_paper) / (N TOL) over TOL = 1e-4 ... 1e-14 (N accepted steps), "
-            "%s, %d bodies (%s): <= %g (N local errors of at most TOL, estimate within %gx)",
-            what[q], name, BODIES_COUNT, s[q].hi_body, F_UNDERSHOOT, F_UNDERSHOOT);
+        snprintf(text, sizeof text,
+                 "largest %s at " T50 " over $N\\,\\mathrm{TOL}$, " TOLS
+                 " ($N$ accepted steps), %s, "
+                 "%d bodies (%s): $\\le %g$ ($N$ local errors of at most TOL, estimate within "
+                 "$%g\\times$)",
+                 what[q], name, BODIES_COUNT, s[q].hi_body, F_UNDERSHOOT, F_UNDERSHOOT);
         ledger_add_bound(id, "(extension)", text, s[q].ratio_hi, F_UNDERSHOOT, 0, LEDGER_EXTENSION);
     }
 }
@@ -346,46 +367,53 @@ static void global_claims(const tol_method *tm)
 {
     const char *name = tm->type->name, *key = tm->eo->key;
     global_worst g = {.R = 0.0};
-    char id[96], text[400];
+    char id[96], text[640];
     for (int k = 0; k < BODIES_COUNT; k++)
         global_body(tm, claims_body_get(k), &g);
     key_number(tm, "TolRatioR", g.R);
-    snprintf(text, sizeof text,
-             "largest dist(R, R_ref)(t k = 50 k_paper) / (TOL + (%g N + %g sum h |w|) u) over TOL = 1e-4 ... "
-             "1e-14 (N accepted steps), %s, %d bodies (%s): <= 1 (step estimates summing to at most TOL; "
-             "round-off of the steps and of the angles they turn)",
-             ROUND_STEP, ROUND_TURN, name, BODIES_COUNT, g.R_body);
+    snprintf(
+        text, sizeof text,
+        "largest $\\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50 " over $\\mathrm{TOL} + (%g N + %g "
+        "\\sum h |\\omega|) u$, " TOLS " ($N$ accepted steps), %s, %d bodies (%s): $\\le 1$ (step "
+        "estimates summing to at most TOL; round-off of the steps and of the angles they turn)",
+        ROUND_STEP, ROUND_TURN, name, BODIES_COUNT, g.R_body);
     snprintf(id, sizeof id, "%s-tol-R", key);
     ledger_add_bound(id, "(extension)", text, g.R, 1.0, 0, LEDGER_EXTENSION);
-    snprintf(text, sizeof text,
-             "largest |w - w_ref| / (%g u r |L^-1|_F) over the same runs, %s, %d bodies (%s): <= 1 (w is the "
-             "closed form: its roundings alone)",
-             ROUND_W, name, BODIES_COUNT, g.w_body);
+    snprintf(
+        text, sizeof text,
+        "largest $|\\omega - \\omega_\\mathrm{ref}| / (%g\\,u\\,r |L^{-1}|_F)$ over the same runs, "
+        "%s, %d bodies (%s): $\\le 1$ ($\\omega$ is the closed form: its roundings alone)",
+        ROUND_W, name, BODIES_COUNT, g.w_body);
     snprintf(id, sizeof id, "%s-tol-w", key);
     ledger_add_bound(id, "(extension)", text, g.w, 1.0, 0, LEDGER_EXTENSION);
 }
 
 /* ---- both: w3, |R^T R - I| and |E - E0| over every step to T k = 1e4 k_paper, worst of the
- * bodies; E against the size of its terms (TOL_LOCAL) or kappa E0 (TOL_GLOBAL, the top of the file) */
+ * bodies; E against the size of its terms (TOL_LOCAL) or kappa E0 (TOL_GLOBAL, the top of the file)
+ */
 
 static void energy_line(const tol_method *tm, double en)
 {
-    char id[96], text[400];
+    char id[96], text[640];
     if (tm->eo->bounds == TOL_GLOBAL)
-        snprintf(text, sizeof text,
-                 "max |E - E0| / (u E0 kappa), kappa = |L|_F |L^-1|_F (I_m = L L^T), over every step to "
-                 "T k = 1e4 k_paper, %s at TOL %g, %d bodies; bound %g (w is the closed form, |L^T w| = r: "
-                 "its roundings reach E through L^T)",
-                 tm->type->name, TOL_STRUCT, BODIES_COUNT, ENERGY_KAPPA);
+        snprintf(
+            text, sizeof text,
+            "$\\max |E - E_0| / (u E_0 \\kappa)$, $\\kappa = |L|_F |L^{-1}|_F$ ($I_m = L "
+            "L^\\top$), over every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d bodies; bound "
+            "%g ($\\omega$ is the closed form, $|L^\\top \\omega| = r$: its roundings reach $E$ "
+            "through $L^\\top$)",
+            tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT, ENERGY_KAPPA);
     else
-        snprintf(text, sizeof text,
-                 "max |E - E0| / (u e) over every step to T k = 1e4 k_paper, %s at TOL %g, %d "
-                 "bodies, e = max 1/2 sum |w_i I_ij w_j| (E's terms, E0 when none cancels); bound 8 (each "
-                 "step scales w onto E0 itself: no accumulation)",
-                 tm->type->name, TOL_STRUCT, BODIES_COUNT);
+        snprintf(
+            text, sizeof text,
+            "$\\max |E - E_0| / (u e)$ over every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, "
+            "%d bodies, $e = \\max \\frac{1}{2} \\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of "
+            "$E$, $E_0$ when none cancels); bound 8 (each step scales $\\omega$ onto $E_0$ itself: "
+            "no accumulation)",
+            tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     snprintf(id, sizeof id, "%s-energy", tm->eo->key);
-    ledger_add_bound(id, "(extension)", text, en, tm->eo->bounds == TOL_GLOBAL ? ENERGY_KAPPA : 8.0, 0,
-                     LEDGER_EXTENSION);
+    ledger_add_bound(id, "(extension)", text, en, tm->eo->bounds == TOL_GLOBAL ? ENERGY_KAPPA : 8.0,
+                     0, LEDGER_EXTENSION);
 }
 
 static void structure_claims(const tol_method *tm)
@@ -404,18 +432,20 @@ static void structure_claims(const tol_method *tm)
         en = fmax(en, c.energy / (U * (tm->eo->bounds == TOL_GLOBAL ? kappa * c.e0 : c.eterms)));
         steps += c.steps;
     }
-    char id[96], text[400];
+    char id[96], text[640];
     key_number(tm, "StructSteps", (double)steps / BODIES_COUNT);
     snprintf(text, sizeof text,
-             "max |w3| over every step to T k = 1e4 k_paper, %s at TOL %g, %d bodies: exactly 0", name,
-             TOL_STRUCT, BODIES_COUNT);
+             "$\\max |\\omega_3|$ over every step to " T1E4
+             ", %s at $\\mathrm{TOL} = %s$, %d bodies: "
+             "exactly 0",
+             name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     /* the method writes w3 = 0.0 at every step: a check of the code, not evidence */
     snprintf(id, sizeof id, "%s-w3", key);
     ledger_add(id, "(extension)", text, w3, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(text, sizeof text,
-             "max |R^T R - I| over every step to T k = 1e4 k_paper, %s at TOL %g, %d bodies; "
-             "round-off bound %g (R from a unit quaternion at each step)",
-             name, TOL_STRUCT, BODIES_COUNT, ORTH_BOUND);
+             "$\\max |R^\\top R - I|$ over every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d "
+             "bodies; round-off bound $%s$ ($R$ from a unit quaternion at each step)",
+             name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT, notation_g(ORTH_BOUND, 6).s);
     snprintf(id, sizeof id, "%s-orth", key);
     ledger_add_bound(id, "(extension)", text, orth, ORTH_BOUND, 0, LEDGER_EXTENSION);
     energy_line(tm, en);
@@ -430,10 +460,11 @@ void adaptive_claims(void)
         if (!tm.eo) {
             char id[64];
             snprintf(id, sizeof id, "expected-tol-known-%s", type->name);
-            ledger_add_bound(id, "(tests/ledger/expected_orders.c)",
-                             "the tolerance-driven method has a stated meaning of TOL to test: 1 when "
-                             "it does",
-                             0.0, 1.0, 1, LEDGER_EXTENSION);
+            ledger_add_bound(
+                id, "\\texttt{tests/ledger/expected\\_orders.c}",
+                "the tolerance-driven method has a stated meaning of TOL to test: 1 when "
+                "it does",
+                0.0, 1.0, 1, LEDGER_EXTENSION);
             continue;
         }
         if (tm.eo->bounds == TOL_GLOBAL)

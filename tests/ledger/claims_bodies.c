@@ -87,11 +87,13 @@ double claims_body_size(const claims_body *d, int q)
  *      times w's own and the field's or the scaling's, and g I_m^-1 (|g I_m^-1| <= |g| /
  *      lambda_min) times the implicit residual's terms.
  *   R: 1 (the entries of a rotation) plus eps times w's (through the attitude step's angle). */
-static double yardstick(const claims_body *d, const claims_rounding *k, int q, const sus_exp_local_ref *ref)
+static double yardstick(const claims_body *d, const claims_rounding *k, int q,
+                        const sus_exp_local_ref *ref)
 {
     const sus_model *m = &d->m;
     const double (*I)[3] = m->I, *w = ref->w_exact, eps = ref->eps;
-    const double nw = hypot(w[0], w[1]), im = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
+    const double nw = hypot(w[0], w[1]),
+                 im = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
     const double lmax = 0.5 * (I[0][0] + I[1][1]) + hypot(0.5 * (I[0][0] - I[1][1]), I[0][1]);
     const double lmin = m->det_m / lmax, field = eps * fabs(sus_c(m, w)) * nw;
     double other = field / lmin, res = 0.0, g[2];
@@ -105,7 +107,8 @@ static double yardstick(const claims_body *d, const claims_rounding *k, int q, c
         return 1.0 + eps * (nw + other + res / lmin);
     const double terms = lagmult_terms(m, w, g);
     /* g^T I_m^-1 = (g1 I22 - g2 I21, g2 I11 - g1 I12) / |I_m| */
-    const double gi = hypot(g[0] * I[1][1] - g[1] * I[1][0], g[1] * I[0][0] - g[0] * I[0][1]) / m->det_m;
+    const double gi =
+        hypot(g[0] * I[1][1] - g[1] * I[1][0], g[1] * I[0][0] - g[0] * I[0][1]) / m->det_m;
     return terms + hypot(g[0], g[1]) * (nw + other) + gi * res;
 }
 
@@ -113,13 +116,15 @@ static double yardstick(const claims_body *d, const claims_rounding *k, int q, c
  * times the quantity then moves a point by at most 0.1%) and 100 u s times the yardstick, the
  * largest over the starts (s substeps per step, each rounding once: the worst-case sum then moves
  * a point by at most 1%), the two floors of claims_window.h's analysis. */
-void claims_body_floors(const claims_body *d, const claims_rounding *k, int q, double floor[CLAIMS_NE])
+void claims_body_floors(const claims_body *d, const claims_rounding *k, int q,
+                        double floor[CLAIMS_NE])
 {
     for (int j = 0; j < CLAIMS_NE; j++) {
         double y = 0.0;
         for (int t = 0; t < CLAIMS_NTK; t++)
             y = fmax(y, yardstick(d, k, q, &d->ref[j][t]));
-        floor[j] = fmax(SUS_EXP_FIT_FLOOR_REL * claims_body_size(d, q), 100.0 * SUS_U * k->substeps * y);
+        floor[j] =
+            fmax(SUS_EXP_FIT_FLOOR_REL * claims_body_size(d, q), 100.0 * SUS_U * k->substeps * y);
     }
 }
 

@@ -47,6 +47,7 @@ typedef struct {
  * floor of its local error at each eps[j] for a method that rounds as k says, from the size of
  * the terms its evaluation rounds (claims_bodies.c). */
 double claims_body_size(const claims_body *d, int q);
-void claims_body_floors(const claims_body *d, const claims_rounding *k, int q, double floor[CLAIMS_NE]);
+void claims_body_floors(const claims_body *d, const claims_rounding *k, int q,
+                        double floor[CLAIMS_NE]);
 
 #endif

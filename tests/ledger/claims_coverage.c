@@ -33,7 +33,8 @@ static void apply_dual(const double M[3][3], const double p[3], double out[3]) {
         out[i] = M[0][i] * p[0] + M[1][i] * p[1] + M[2][i] * p[2];
 }
 
-/* ---- (Isom), (Killing): the bracket is the cross product, the Killing form the dot product ---- */
+/* ---- (Isom), (Killing): the bracket is the cross product, the Killing form the dot product ----
+ */
 static void killing_claims(gsl_rng *r) {
     double bracket = 0.0, trace = 0.0, transpose = 0.0, invariant = 0.0;
     for (int n = 0; n < NSAMPLE; n++) {
@@ -66,14 +67,20 @@ static void killing_claims(gsl_rng *r) {
         invariant = fmax(invariant, fabs(dot3(Rx, Ry) - dot3(x, y)));
     }
     /* entries below 2 (and 3 for R): a dozen products and sums, so round-off is below 1e-14 */
-    ledger_add("isom-bracket", "Isom", "max over 64 pairs of |[x^, y^] - (x cross y)^| (entries)", bracket,
-               0.0, 1e-14, LEDGER_REPRODUCED);
-    ledger_add("killing-trace", "Killing", "max over 64 pairs of |-tr(x^ y^)/2 - <x, y>|", trace, 0.0, 1e-14,
-               LEDGER_REPRODUCED);
-    ledger_add("killing-transpose", "Killing", "max over 64 pairs of |tr(x^T y^)/2 - <x, y>|", transpose, 0.0,
-               1e-14, LEDGER_REPRODUCED);
-    ledger_add("killing-ad-invariant", "Killing",
-               "max over 64 pairs and rotations R = cay(a) of |(R x, R y) - (x, y)|: invariant under Ad",
+    ledger_add("isom-bracket", "\\eqref{Isom}",
+               "max over 64 pairs of $|[\\hat{x}, \\hat{y}] - \\widehat{x \\times y}|$ (entries)",
+               bracket, 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add(
+        "killing-trace", "\\eqref{Killing}",
+        "max over 64 pairs of $|-\\mathrm{tr}(\\hat{x} \\hat{y})/2 - \\langle x, y \\rangle|$",
+        trace, 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add("killing-transpose", "\\eqref{Killing}",
+               "max over 64 pairs of $|\\mathrm{tr}(\\hat{x}^\\top \\hat{y})/2 - \\langle x, y "
+               "\\rangle|$",
+               transpose, 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add("killing-ad-invariant", "\\eqref{Killing}",
+               "max over 64 pairs and rotations $R = \\mathrm{cay}(a)$ of $|(R x, R y) - (x, y)|$: "
+               "invariant under $\\mathrm{Ad}$",
                invariant, 0.0, 1e-14, LEDGER_REPRODUCED);
 }
 
@@ -88,7 +95,8 @@ static double corollary_identity(gsl_rng *r) {
         sus_so3_cay(x, R);
         sus_so3_dcay_inv(x, D);
         sus_so3_dcay_inv(mx, Dm);
-        /* Ad*_R = R^T on covectors, so the identity transposed reads dcay^{-1}_x R = dcay^{-1}_{-x} */
+        /* Ad*_R = R^T on covectors, so the identity transposed reads dcay^{-1}_x R = dcay^{-1}_{-x}
+         */
         sus_mat3_mul(DR, D, R);
         worst = fmax(worst, sus_mat3_dist(DR, Dm));
     }
@@ -100,7 +108,8 @@ static double corollary_identity(gsl_rng *r) {
 static double action(const double I[3][3], double eps, const double a[3], const double b[3],
                      const double se[3]) {
     double Ga[3][3], Gb[3][3], S[3][3], Gk[3][3], G1[3][3], W[3][3], xi[3], v[3], sum = 0.0;
-    double ea[3] = {eps * a[0], eps * a[1], eps * a[2]}, eb[3] = {eps * b[0], eps * b[1], eps * b[2]};
+    double ea[3] = {eps * a[0], eps * a[1], eps * a[2]},
+           eb[3] = {eps * b[0], eps * b[1], eps * b[2]};
     sus_so3_cay(ea, Ga);
     sus_so3_cay(eb, Gb);
     sus_so3_cay(se, S);
@@ -122,8 +131,9 @@ static double action(const double I[3][3], double eps, const double a[3], const 
 
 /* The three covectors at one sample: C from the action by central differences (the proof's first
  * display, times eps), the proof's last display, and the left side of (AltNHEq) shifted to k-1. */
-static void corollary_covectors(const double I[3][3], double eps, const double a[3], const double b[3],
-                                double num[3], double proof[3], double stated[3]) {
+static void corollary_covectors(const double I[3][3], double eps, const double a[3],
+                                const double b[3], double num[3], double proof[3], double stated[3])
+{
     const double h = 1e-4; /* error h^2 f'''/6 ~ 1e-9 against round-off u/h ~ 1e-12 */
     for (int i = 0; i < 3; i++) {
         double sp[3] = {0, 0, 0}, sm[3] = {0, 0, 0};
@@ -154,10 +164,12 @@ static void corollary_covectors(const double I[3][3], double eps, const double a
 }
 
 static void corollary_claims(gsl_rng *r, const sus_model *m) {
-    ledger_add("cor44-identity-cayley", "CoroRetr (proof)",
-               "max over 64 x of |dcay^{-1}_x cay(x) - dcay^{-1}_{-x}|: Ad*_{tau(x)} (dtau^{-1}_x)^* = "
-               "(dtau^{-1}_{-x})^*",
-               corollary_identity(r), 0.0, 1e-14, LEDGER_REPRODUCED);
+    ledger_add(
+        "cor44-identity-cayley", "\\PaperRefOr{CoroRetr}, proof",
+        "max over 64 $x$ of $|\\mathrm{dcay}^{-1}_x \\mathrm{cay}(x) - \\mathrm{dcay}^{-1}_{-x}|$: "
+        "$\\mathrm{Ad}^*_{\\tau(x)} (\\mathrm{d}\\tau^{-1}_x)^* = "
+        "(\\mathrm{d}\\tau^{-1}_{-x})^*$",
+        corollary_identity(r), 0.0, 1e-14, LEDGER_REPRODUCED);
     double proof_err = 0.0, ratio_lo = INFINITY, ratio_hi = -INFINITY;
     for (int body = 0; body < 2; body++)
         for (int n = 0; n < NSAMPLE / 2; n++) {
@@ -165,8 +177,8 @@ static void corollary_claims(gsl_rng *r, const sus_model *m) {
             const double eps = 0.05 + 0.45 * gsl_rng_uniform(r);
             random_vec(r, 1.0, a);
             random_vec(r, 1.0, b);
-            corollary_covectors(body ? GENERAL_BODY : (const double(*)[3])m->I, eps, a, b, num, proof,
-                                stated);
+            corollary_covectors(body ? GENERAL_BODY : (const double(*)[3])m->I, eps, a, b, num,
+                                proof, stated);
             const double sz = sqrt(dot3(proof, proof));
             for (int i = 0; i < 3; i++)
                 proof_err = fmax(proof_err, fabs(num[i] - proof[i]) / sz);
@@ -175,16 +187,18 @@ static void corollary_claims(gsl_rng *r, const sus_model *m) {
             ratio_hi = fmax(ratio_hi, ratio);
         }
     /* central differences with h = 1e-4 on an action of size <= 1: relative error ~1e-8 */
-    ledger_add("cor44-proof-from-action", "CoroRetr (proof)",
-               "max over 64 samples (2 bodies) of |d(action)/d eta_k - the proof's last display| / |display|",
+    ledger_add("cor44-proof-from-action", "\\PaperRefOr{CoroRetr}, proof",
+               "max over 64 samples (2 bodies) of the distance of $\\mathrm{d}(\\mathrm{action}) / "
+               "\\mathrm{d}\\eta_k$ from the proof's last display, relative to the display",
                proof_err, 0.0, 1e-6, LEDGER_REPRODUCED);
-    char q[256];
-    snprintf(
-        q, sizeof q,
-        "d(action)/d eta_k over the left side of (AltNHEq), shifted to k-1: same sign and lambda means 1; "
-        "range [%.12g, %.12g]",
-        ratio_lo, ratio_hi);
-    ledger_add("cor44-sign", "CoroRetr vs its proof", q, ratio_hi, 1.0, 1e-6, LEDGER_ERRATUM);
+    char q[400];
+    snprintf(q, sizeof q,
+             "$\\mathrm{d}(\\mathrm{action}) / \\mathrm{d}\\eta_k$ over the left side of "
+             "\\eqref{AltNHEq}, shifted to $k-1$: the same sign and $\\lambda$ means 1; range "
+             "$[%.12g, %.12g]$",
+             ratio_lo, ratio_hi);
+    ledger_add("cor44-sign", "\\PaperRefOr{CoroRetr} against its proof", q, ratio_hi, 1.0, 1e-6,
+               LEDGER_ERRATUM);
 }
 
 /* ---- dreps: phi_d o tau need not cut out the subspace w_3 = 0 ---- */
@@ -209,8 +223,8 @@ static double root_xi3(phi_args *a) {
         for (int it = 0; it < 200; it++) {
             gsl_root_fsolver_iterate(s);
             root = gsl_root_fsolver_root(s);
-            if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 1e-300,
-                                       4e-16) == GSL_SUCCESS)
+            if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
+                                       1e-300, 4e-16) == GSL_SUCCESS)
                 break;
         }
     gsl_root_fsolver_free(s);
@@ -232,20 +246,26 @@ static void subspace_claims(void) {
         sus_exp_fit_order(eps, viol, NJ, SUS_EXP_FIT_EPS_MAX, 1e-13, &fit) == 0 ? fit.slope : NAN;
     ledger_number("SecFiveFourViolationEpsQuarter", viol[2]);
     /* a violation a million times round-off at eps = 1/4 cannot be a rounding artefact */
-    ledger_add_bound(
-        "sec54-not-preserved", "dreps",
-        "|w_3| on the zero set of phi_d o cay at (w_1, w_2) = (0.4, 0.5), eps = 1/4, phi_d = w_3 read "
-        "at (2,1) on the forward difference (W - I)/eps: the text says it need not vanish",
-        viol[2], 1e-10, 1, LEDGER_REPRODUCED);
-    /* (caypart): the (2,1) entry is (x_3 + x_1 x_2/2)/(1 + |x/2|^2), so w_3 = -eps w_1 w_2/2: slope 1 */
+    ledger_add_bound("sec54-not-preserved", "\\PaperRefOr{dreps}",
+                     "$|\\omega_3|$ on the zero set of $\\varphi_d \\circ \\mathrm{cay}$ at "
+                     "$(\\omega_1, \\omega_2) = "
+                     "(0.4, 0.5)$, $\\varepsilon = 1/4$, $\\varphi_d = \\omega_3$ read at $(2,1)$ "
+                     "on the forward "
+                     "difference $(W - I)/\\varepsilon$: the text says it need not vanish",
+                     viol[2], 1e-10, 1, LEDGER_REPRODUCED);
+    /* (caypart): the (2,1) entry is (x_3 + x_1 x_2/2)/(1 + |x/2|^2), so w_3 = -eps w_1 w_2/2: slope
+     * 1 */
+    ledger_add("sec54-violation-order", "\\PaperRefOr{dreps}, extension",
+               "slope of $\\log |\\omega_3|$ against $\\log \\varepsilon$ on that zero set, "
+               "$\\varepsilon = "
+               "2^{-j}$, $j = 2, \\dots, 10$: our analysis gives 1",
+               slope, 1.0, 0.1, LEDGER_EXTENSION);
     ledger_add(
-        "sec54-violation-order", "dreps (extension)",
-        "slope of log |w_3| against log eps on that zero set, eps = 2^-j, j = 2..10: our analysis gives 1",
-        slope, 1.0, 0.1, LEDGER_EXTENSION);
-    ledger_add(
-        "sec54-skew-preserved", "dreps (extension)",
-        "max over eps = 2^-j, j = 0..10, of |w_3| when phi_d reads the skew part of (W - I)/eps: the Cayley "
-        "map's skew part is x^/(1 + |x/2|^2), so the zero set is the subspace",
+        "sec54-skew-preserved", "\\PaperRefOr{dreps}, extension",
+        "max over $\\varepsilon = 2^{-j}$, $j = 0, \\dots, 10$, of $|\\omega_3|$ when $\\varphi_d$ "
+        "reads "
+        "the skew part of $(W - I)/\\varepsilon$: the Cayley map's skew part is $\\hat{x}/(1 + "
+        "|x/2|^2)$, so the zero set is the subspace",
         skew, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 

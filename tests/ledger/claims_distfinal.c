@@ -99,12 +99,13 @@ static double slope_of(const double *err)
 static void distfinal_line(const char *id, const char *ref, const char *what, const double *err,
                            double expected, double s_paper, ledger_assert truth)
 {
-    char q[400];
-    snprintf(q, sizeof q,
-             "%s; max over %d bodies and t_k k = 0.45 .. 2.9, each at eps = 2^-j s_paper / s, "
-             "s = max(|w|, k) on its motion; fit over j in [4, 10], errors above 1000 u; "
-             "s eps <= %.2g at j = 4",
-             what, BODIES_COUNT, s_paper * DF_EPS_MAX);
+    char q[640];
+    snprintf(
+        q, sizeof q,
+        "%s; max over %d bodies and $t_k k$ from 0.45 to 2.9, each at $\\varepsilon = 2^{-j} "
+        "s_\\mathrm{paper}/s$, $s = \\max(|\\omega|, k)$ on its motion; fit over $j \\in [4, 10]$, "
+        "errors above $1000\\,u$; $s \\varepsilon \\le %.2g$ at $j = 4$",
+        what, BODIES_COUNT, s_paper * DF_EPS_MAX);
     ledger_add(id, ref, q, slope_of(err), expected, ORDER_TOL, truth);
 }
 
@@ -130,21 +131,26 @@ void distfinal_claims(void)
     /* The display states R(t_k+eps) = R(t_k) + eps Ad_R w^ + O(eps^2) (slope 2): with Ad_R w^ the
      * remainder is eps R w^ R^T (I - R^T) + O(eps^2), slope 1. An erratum: the next sentence of
      * the proof, R' = (Ad_R w^) R, contradicts the printed term. */
+    const char *proof = "\\eqref{DistFinal} in the proof of \\PaperRefOr{TeoL}";
+    const char *ext = "\\eqref{DistFinal}, extension";
+    distfinal_line("distfinal-expansion-printed", proof,
+                   "slope of $|R(t_k+\\varepsilon) - R(t_k) - \\varepsilon \\mathrm{Ad}_{R(t_k)} "
+                   "\\hat{\\omega}(t_k)|$, the expansion as printed: $O(\\varepsilon^2)$ means 2",
+                   d.exp_printed, 2.0, s_paper, LEDGER_ERRATUM);
     distfinal_line(
-        "distfinal-expansion-printed", "DistFinal (TeoL proof)",
-        "slope of |R(t_k+eps) - R(t_k) - eps Ad_{R(t_k)} w^(t_k)|, the expansion as printed: "
-        "O(eps^2) means 2",
-        d.exp_printed, 2.0, s_paper, LEDGER_ERRATUM);
-    distfinal_line("distfinal-expansion-restored", "DistFinal (extension)",
-                   "the same with the factor R restored, eps (Ad_R w^) R = eps R w^: 2",
-                   d.exp_restored, 2.0, s_paper, LEDGER_EXTENSION);
+        "distfinal-expansion-restored", ext,
+        "the same with the factor $R$ restored, $\\varepsilon (\\mathrm{Ad}_R \\hat{\\omega}) "
+        "R = \\varepsilon R \\hat{\\omega}$: 2",
+        d.exp_restored, 2.0, s_paper, LEDGER_EXTENSION);
     distfinal_line(
-        "distfinal-linear-terms-printed", "DistFinal (TeoL proof)",
-        "slope of |I - (R + eps Ad_R w^)(I - eps w^ + eps^2 w^2/2) R^T| as printed: the text says "
-        "the linear terms cancel, so 2",
+        "distfinal-linear-terms-printed", proof,
+        "slope of $|I - (R + \\varepsilon \\mathrm{Ad}_R \\hat{\\omega})(I - \\varepsilon "
+        "\\hat{\\omega} + \\varepsilon^2 \\hat{\\omega}^2/2) R^\\top|$ as printed: the text "
+        "says the linear terms cancel, so 2",
         d.lin_printed, 2.0, s_paper, LEDGER_ERRATUM);
-    distfinal_line("distfinal-linear-terms-restored", "DistFinal (extension)",
-                   "the same with eps R w^ for eps Ad_R w^: the linear terms cancel, 2",
+    distfinal_line("distfinal-linear-terms-restored", ext,
+                   "the same with $\\varepsilon R \\hat{\\omega}$ for $\\varepsilon \\mathrm{Ad}_R "
+                   "\\hat{\\omega}$: the linear terms cancel, 2",
                    d.lin_restored, 2.0, s_paper, LEDGER_EXTENSION);
     /* for the text: the two residuals at eps = 2^-7 on the paper's body */
     ledger_number("DistFinalPrintedAtSeven", paper.lin_printed[7]);

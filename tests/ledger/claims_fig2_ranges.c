@@ -12,19 +12,22 @@
  *
  * The error ratio: |w_var(t) - w(t)| / |w_mid(t) - w(t)| at eps = 1 over t = 2..60, its
  * range, the ratio of the two maxima over [0, 60], and its value at t = 10, so that "converges
- * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each. */
+ * much faster" (which needs a ratio <= 1/10, tests/ledger/claims_fig2more.c) is tested under each.
+ */
 #include "claims_fig2more.h"
+#include "claims_refs.h"
 #include "dsp.h"
 
 #include "experiments.h"
 #include "ledger.h"
 #include "midpoint_sweeps.h"
+#include "notation.h"
 
 #include <math.h>
 #include <stdio.h>
 
 #define NEPS 21                         /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
-#define MUCH 10.0                       /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
+#define MUCH 10.0 /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
 
 static double grid_eps(int j) { return 0.25 * pow(2.0, 0.25 * j); }
 
@@ -35,7 +38,8 @@ static double stepper_loss(const sus_model *m, const sus_stepper_type *st, doubl
     double w[3] = {w0[0], w0[1], 0.0}, x[3], lam;
     sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) ||
+            !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
         w[1] = x[1];
@@ -74,7 +78,8 @@ static void reading_name(int reading, char *id, size_t len)
     else if (reading < 0)
         snprintf(id, len, "trapezoidal");
     else if (reading <= 2)
-        snprintf(id, len, "%s", reading == 1 ? "sweeps-1-explicit-euler" : "sweeps-2-explicit-midpoint");
+        snprintf(id, len, "%s",
+                 reading == 1 ? "sweeps-1-explicit-euler" : "sweeps-2-explicit-midpoint");
     else
         snprintf(id, len, "sweeps-%d", reading);
 }
@@ -104,15 +109,18 @@ static void energy_range_claims(const sus_model *m)
             if (!ended)
                 upto = grid_eps(j);
         }
-        char id[80], name[32], q[320];
+        char id[80], name[32], q[480], from[40] = "";
         reading_name(reading, name, sizeof name);
         snprintf(id, sizeof id, "fig2-energy-none-faster-%s", name);
-        snprintf(q, sizeof q,
-                 "largest eps from 0.25 (grid 0.25 * 2^(j/4) to 8) up to which the %s reading loses no "
-                 "more energy over [0, 200] than the variational one; more at %d of 21 eps (from %.3g), "
-                 "failed at %d",
-                 name, faster, first_faster, failed);
-        ledger_add_bound(id, "Fig. 2(d) (reading, extension)", q, upto, SUS_EXP_FIG2_EPS, 1,
+        if (faster)
+            snprintf(from, sizeof from, " (from %.3g)", first_faster);
+        snprintf(
+            q, sizeof q,
+            "largest $\\varepsilon$ from 0.25 (grid $0.25 \\cdot 2^{j/4}$ to 8) up to which the %s "
+            "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
+            "21 $\\varepsilon$%s, failed at %d",
+            name, faster, from, failed);
+        ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_EXP_FIG2_EPS, 1,
                          LEDGER_EXTENSION);
     }
 }
@@ -120,7 +128,8 @@ static void energy_range_claims(const sus_model *m)
 /* The error ratio at eps = 1 over t: its range over t = 2..60 and the ratio of the maxima. */
 static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
 {
-    double wm[3] = {ex->w0[0], ex->w0[1], 0.0}, wv[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], we[2], lam;
+    double wm[3] = {ex->w0[0], ex->w0[1], 0.0}, wv[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], we[2],
+           lam;
     double lo = INFINITY, hi = 0.0, max_var = 0.0, max_mid = 0.0;
     sus_stepper_stats ss;
     for (int k = 1; k <= 60; k++) { /* eps = 1: t_k = k */
@@ -131,7 +140,8 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
             ledger_die("the variational run of the error ratio");
         wv[0] = x[0], wv[1] = x[1];
         sus_exact_omega(ex, (double)k, we);
-        const double ev = hypot(wv[0] - we[0], wv[1] - we[1]), em = hypot(wm[0] - we[0], wm[1] - we[1]);
+        const double ev = hypot(wv[0] - we[0], wv[1] - we[1]),
+                     em = hypot(wm[0] - we[0], wm[1] - we[1]);
         max_var = fmax(max_var, ev);
         max_mid = fmax(max_mid, em);
         if (k >= 2) {
@@ -141,19 +151,21 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
     }
     ledger_number("FigTwoRatioOverTMin", lo);
     ledger_number("FigTwoRatioOverTMax", hi);
-    char q[256];
+    char q[480];
     snprintf(q, sizeof q,
-             "smallest over t = 2..60 of |w_var(t) - w(t)| / |w_mid(t) - w(t)| at eps = 1 (largest %.3g); "
-             "'converges much faster' needs <= 1/10 somewhere",
-             hi);
-    ledger_add_bound("fig2-converges-faster-t-range", "Fig. 2 caption, Conclusions", q, lo, 1.0 / MUCH, 0,
+             "smallest over $t = 2, \\dots, 60$ of $|\\omega_\\mathrm{var}(t) - \\omega(t)| / "
+             "|\\omega_\\mathrm{mid}(t) - \\omega(t)|$ at $\\varepsilon = 1$ (largest $%s$); "
+             "``converges much faster'' needs $\\le 1/10$ somewhere",
+             notation_g(hi, 3).s);
+    ledger_add_bound("fig2-converges-faster-t-range", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     snprintf(q, sizeof q,
-             "max over [0, 60] of |w_var - w| over max of |w_mid - w| at eps = 1 (%.3g over %.3g); "
-             "'much faster' needs <= 1/10",
-             max_var, max_mid);
-    ledger_add_bound("fig2-converges-faster-max-ratio", "Fig. 2 caption, Conclusions", q, max_var / max_mid,
-                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+             "max over $[0, 60]$ of $|\\omega_\\mathrm{var} - \\omega|$ over max of "
+             "$|\\omega_\\mathrm{mid} - \\omega|$ at $\\varepsilon = 1$ ($%s$ over $%s$); ``much "
+             "faster'' needs $\\le 1/10$",
+             notation_g(max_var, 3).s, notation_g(max_mid, 3).s);
+    ledger_add_bound("fig2-converges-faster-max-ratio", REF_FIG2_CONCLUSIONS, q,
+                     max_var / max_mid, 1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 }
 
 void fig2_range_claims(const sus_model *m, const sus_exact *ex)

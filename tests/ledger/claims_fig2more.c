@@ -7,7 +7,9 @@
 #include "claims_fig2more.h"
 #include "dsp.h"
 
+#include "claims_refs.h"
 #include "ledger.h"
+#include "notation.h"
 #include "stepper.h"
 
 #include <math.h>
@@ -18,13 +20,16 @@
 
 /* Macro names (letters only) of the count of Figure 2's statements holding as printed at tau %. */
 static const char *const SWAP_PRINTED_AT[20] = {
-    "FigTwoSwapPrintedAtOnePct", "FigTwoSwapPrintedAtTwoPct", "FigTwoSwapPrintedAtThreePct",
-    "FigTwoSwapPrintedAtFourPct", "FigTwoSwapPrintedAtFivePct", "FigTwoSwapPrintedAtSixPct",
-    "FigTwoSwapPrintedAtSevenPct", "FigTwoSwapPrintedAtEightPct", "FigTwoSwapPrintedAtNinePct",
-    "FigTwoSwapPrintedAtTenPct", "FigTwoSwapPrintedAtElevenPct", "FigTwoSwapPrintedAtTwelvePct",
-    "FigTwoSwapPrintedAtThirteenPct", "FigTwoSwapPrintedAtFourteenPct", "FigTwoSwapPrintedAtFifteenPct",
-    "FigTwoSwapPrintedAtSixteenPct", "FigTwoSwapPrintedAtSeventeenPct", "FigTwoSwapPrintedAtEighteenPct",
-    "FigTwoSwapPrintedAtNineteenPct", "FigTwoSwapPrintedAtTwentyPct"};
+    "FigTwoSwapPrintedAtOnePct",       "FigTwoSwapPrintedAtTwoPct",
+    "FigTwoSwapPrintedAtThreePct",     "FigTwoSwapPrintedAtFourPct",
+    "FigTwoSwapPrintedAtFivePct",      "FigTwoSwapPrintedAtSixPct",
+    "FigTwoSwapPrintedAtSevenPct",     "FigTwoSwapPrintedAtEightPct",
+    "FigTwoSwapPrintedAtNinePct",      "FigTwoSwapPrintedAtTenPct",
+    "FigTwoSwapPrintedAtElevenPct",    "FigTwoSwapPrintedAtTwelvePct",
+    "FigTwoSwapPrintedAtThirteenPct",  "FigTwoSwapPrintedAtFourteenPct",
+    "FigTwoSwapPrintedAtFifteenPct",   "FigTwoSwapPrintedAtSixteenPct",
+    "FigTwoSwapPrintedAtSeventeenPct", "FigTwoSwapPrintedAtEighteenPct",
+    "FigTwoSwapPrintedAtNineteenPct",  "FigTwoSwapPrintedAtTwentyPct"};
 
 /* The trapezoidal reading of the midpoint rule: l = I_m (f(w^k) + f(w^{k+1}))/2 in
  * (Discretization), solved by fixed-point iteration to round-off (a contraction: eps |f'| <= 0.2
@@ -37,7 +42,8 @@ static int trapezoidal_apply(const sus_model *m, double eps, const double w[3], 
     int it;
     for (it = 0; it < 200; it++) {
         sus_contdyn(m, x, fx);
-        const double y0 = w[0] + 0.5 * eps * (fw[0] + fx[0]), y1 = w[1] + 0.5 * eps * (fw[1] + fx[1]);
+        const double y0 = w[0] + 0.5 * eps * (fw[0] + fx[0]),
+                     y1 = w[1] + 0.5 * eps * (fw[1] + fx[1]);
         const double d = fabs(y0 - x[0]) + fabs(y1 - x[1]);
         x[0] = y0;
         x[1] = y1;
@@ -63,7 +69,8 @@ typedef struct {
 static run_result run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
                       double eps, long N)
 {
-    double w[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], lam, we[2] = {ex->w0[0], ex->w0[1]}, worst = 0.0;
+    double w[3] = {ex->w0[0], ex->w0[1], 0.0}, x[3], lam, we[2] = {ex->w0[0], ex->w0[1]},
+           worst = 0.0;
     sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
         if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
@@ -91,7 +98,8 @@ static void swap_claims(const run_result v10, const run_result m10, const run_re
     int fixed[2] = {0, 0}, lo[2] = {4, 4}, hi[2] = {0, 0};
     for (int s = 0; s < 2; s++) {
         const run_result *a = A[s], *b = A[1 - s];
-        fixed[s] = (fabs(a[0].loss) < fabs(b[0].loss)) + (a[1].err < b[1].err) + (a[2].err < b[2].err);
+        fixed[s] =
+            (fabs(a[0].loss) < fabs(b[0].loss)) + (a[1].err < b[1].err) + (a[2].err < b[2].err);
         for (int pct = 1; pct <= 20; pct++) {
             const int n = fixed[s] + (a[2].worst < 0.01 * pct * r0);
             lo[s] = n < lo[s] ? n : lo[s];
@@ -106,17 +114,20 @@ static void swap_claims(const run_result v10, const run_result m10, const run_re
     ledger_number("FigTwoSwapPrintedMax", hi[0]);
     /* the paper needs all 4; a count is an integer, 0.5 tells 3 from 4. Asserted for the largest
      * count over tau in [1 %, 20 %], so no tau in that range changes the verdict. */
-    ledger_add("fig2-swap-printed", "Fig. 2 caption, Sec. 5.6 text",
-               "largest over tau = 1..20 % of how many of the 4 statements of Figure 2 (energy, faster "
-               "convergence, long-term accuracy, within tau of |w0| at eps = 1) hold with the labels as "
-               "printed",
-               hi[0], 4.0, 0.5, LEDGER_NOT_REPRODUCED);
-    ledger_add("fig2-swap-swapped", "Fig. 2 caption (extension: labels swapped)",
-               "smallest over tau = 1..20 % of how many of the same 4 hold with 'midpoint' and 'variational' "
-               "swapped: the measurements support the swapped reading",
-               lo[1], 4.0, 0.5, LEDGER_EXTENSION);
-    ledger_add("fig2-swap-printed-none", "Fig. 2 caption, Sec. 5.6 text (extension)",
-               "how many of the 3 statements that need no threshold (energy, faster convergence, long-term "
+    ledger_add(
+        "fig2-swap-printed", REF_FIG2_SEC56,
+        "largest over $\\tau$ from 1 to 20\\% of how many of the 4 statements of "
+        "\\PaperRefOr{Fig2} (energy, faster convergence, long-term accuracy, within $\\tau$ of "
+        "$|\\omega_0|$ at $\\varepsilon = 1$) hold with the labels as printed",
+        hi[0], 4.0, 0.5, LEDGER_NOT_REPRODUCED);
+    ledger_add(
+        "fig2-swap-swapped", REF_FIG2_CAPTION "; extension: labels swapped",
+        "smallest over $\\tau$ from 1 to 20\\% of how many of the same 4 hold with `midpoint' "
+        "and `variational' swapped: the measurements support the swapped reading",
+        lo[1], 4.0, 0.5, LEDGER_EXTENSION);
+    ledger_add("fig2-swap-printed-none", REF_FIG2_SEC56 "; extension",
+               "how many of the 3 statements that need no threshold (energy, faster convergence, "
+               "long-term "
                "accuracy) hold with the labels as printed: none",
                fixed[0], 0.0, 0.5, LEDGER_EXTENSION);
 }
@@ -126,10 +137,11 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
     const sus_stepper_type *mid = sus_step_midpoint, *var = sus_step_variational;
     /* converges much faster: global error at t = 10, eps = 1 and across eps = 2^-j */
     const run_result m10 = run(m, ex, mid, 1.0, 10), v10 = run(m, ex, var, 1.0, 10);
-    ledger_add_bound("fig2-converges-faster", "Fig. 2 caption, Conclusions",
-                     "|w_var(10) - w(10)| / |w_mid(10) - w(10)| at eps = 1; 'converges much faster' needs "
-                     "<= 1/10",
-                     v10.err / m10.err, 1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound(
+        "fig2-converges-faster", REF_FIG2_CONCLUSIONS,
+        "$|\\omega_\\mathrm{var}(10) - \\omega(10)| / |\\omega_\\mathrm{mid}(10) - "
+        "\\omega(10)|$ at $\\varepsilon = 1$; ``converges much faster'' needs $\\le 1/10$",
+        v10.err / m10.err, 1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
     double lo = INFINITY, hi = 0.0;
     for (int j = 0; j <= 10; j++) {
         const double eps = ldexp(1.0, -j);
@@ -138,38 +150,44 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
         lo = fmin(lo, b.err / a.err);
         hi = fmax(hi, b.err / a.err);
     }
-    char q[256];
-    snprintf(q, sizeof q,
-             "smallest over eps = 2^-j (j = 0..10) of err_var(10) / err_mid(10) (largest %.3g); faster "
-             "convergence needs it <= 1/10 somewhere",
-             hi);
-    ledger_add_bound("fig2-converges-faster-eps", "Fig. 2 caption, Conclusions", q, lo, 1.0 / MUCH, 0,
+    char q[512];
+    snprintf(
+        q, sizeof q,
+        "smallest over $\\varepsilon = 2^{-j}$ ($j = 0, \\dots, 10$) of $e_\\mathrm{var}(10) / "
+        "e_\\mathrm{mid}(10)$ (largest $%s$); faster convergence needs it $\\le 1/10$ "
+        "somewhere",
+        notation_g(hi, 3).s);
+    ledger_add_bound("fig2-converges-faster-eps", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);
     ledger_number("FigTwoVarOverMidErrorMin", lo);
     /* long-term behaviour: t = 200 (the figure) and t = 10^4, eps = 1 */
     const run_result m200 = run(m, ex, mid, 1.0, 200), v200 = run(m, ex, var, 1.0, 200);
     const run_result m1e4 = run(m, ex, mid, 1.0, 10000), v1e4 = run(m, ex, var, 1.0, 10000);
-    snprintf(q, sizeof q,
-             "|w_var(200) - w(200)| / |w_mid(200) - w(200)|, eps = 1 (%.2g vs %.2g): to the exact w(200), "
-             "not to w_inf as in fig2-longterm, so another ratio of two tiny numbers; 'much more accurate' "
-             "needs <= 1/10",
-             v200.err, m200.err);
-    ledger_add_bound("fig2-longterm-200", "Fig. 2 caption, Conclusions", q, v200.err / m200.err, 1.0 / MUCH,
-                     0, LEDGER_NOT_REPRODUCED);
-    snprintf(q, sizeof q, "the same at t = 10^4, eps = 1 (%.2g vs %.2g)", v1e4.err, m1e4.err);
-    ledger_add_bound("fig2-longterm-1e4", "Fig. 2 caption, Conclusions", q, v1e4.err / m1e4.err, 1.0 / MUCH,
-                     0, LEDGER_NOT_REPRODUCED);
+    snprintf(
+        q, sizeof q,
+        "$|\\omega_\\mathrm{var}(200) - \\omega(200)| / |\\omega_\\mathrm{mid}(200) - "
+        "\\omega(200)|$, $\\varepsilon = 1$ ($%s$ against $%s$): to the exact $\\omega(200)$, not "
+        "to $\\omega_\\infty$ as in \\texttt{fig2-longterm}, so another ratio of two tiny "
+        "numbers; ``much more accurate'' needs $\\le 1/10$",
+        notation_g(v200.err, 2).s, notation_g(m200.err, 2).s);
+    ledger_add_bound("fig2-longterm-200", REF_FIG2_CONCLUSIONS, q, v200.err / m200.err,
+                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+    snprintf(q, sizeof q, "the same at $t = 10^4$, $\\varepsilon = 1$ ($%s$ against $%s$)",
+             notation_g(v1e4.err, 2).s, notation_g(m1e4.err, 2).s);
+    ledger_add_bound("fig2-longterm-1e4", REF_FIG2_CONCLUSIONS, q, v1e4.err / m1e4.err,
+                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 
     swap_claims(v10, m10, v200, m200, hypot(ex->w0[0], ex->w0[1]));
     /* the trapezoidal reading of "the midpoint rule" */
     const run_result t200 = run(m, ex, &fig2_trapezoidal, 1.0, 200);
     snprintf(q, sizeof q,
-             "energy lost over [0, 200] at eps = 1 by the trapezoidal reading of the midpoint rule (%.3g, "
-             "< 0: a gain), over the variational loss (%.3g), signed; the caption needs > 1",
-             t200.loss, v200.loss);
+             "energy lost over $[0, 200]$ at $\\varepsilon = 1$ by the trapezoidal reading of the "
+             "midpoint rule ($%s$; below 0: a gain), over the variational loss ($%s$), signed; the "
+             "caption needs $> 1$",
+             notation_g(t200.loss, 3).s, notation_g(v200.loss, 3).s);
     /* signed: a gain is not a decay, however large */
-    ledger_add_bound("fig2-trapezoidal-energy", "Fig. 2(d) (reading)", q, t200.loss / v200.loss, 1.0, 1,
-                     LEDGER_NOT_REPRODUCED);
+    ledger_add_bound("fig2-trapezoidal-energy", REF_FIG2D "; reading", q, t200.loss / v200.loss,
+                     1.0, 1, LEDGER_NOT_REPRODUCED);
     ledger_number("FigTwoTrapezoidalLoss", t200.loss);
     fig2_range_claims(m, ex);
 }

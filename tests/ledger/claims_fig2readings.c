@@ -5,14 +5,15 @@
  *   energy  A keeps E better: |E_A(200) - E_0| < |E_B(200) - E_0|;
  *   faster  A converges much faster: |w_A(10) - w(10)| <= |w_B(10) - w(10)| / 10;
  *   limit   A is much more accurate long-term: |w_A(200) - w_inf| <= |w_B(200) - w_inf| / 10;
- *   own     A settles much faster onto its own limit: |w_A(100) - w_A(inf)| <= |w_B(100) - w_B(inf)|
- *           / 10, w(inf) taken at t = 10^4 (both settle geometrically, far below round-off there).
+ *   own     A settles much faster onto its own limit: |w_A(100) - w_A(inf)| <= |w_B(100) -
+ * w_B(inf)| / 10, w(inf) taken at t = 10^4 (both settle geometrically, far below round-off there).
  * "Much" is read as a factor 10, as in claims_fig2more.c, fixed before measuring. */
 #include "claims_fig2readings.h"
 #include "dsp.h"
 
 #include "exact.h"
 #include "experiments.h"
+#include "claims_refs.h"
 #include "ledger.h"
 #include "stepper.h"
 
@@ -69,14 +70,16 @@ static void reading(const char *name, const char *id, const double I[9])
     const fig2_reading_run a = run_reading(&m, &ex, sus_step_variational);
     const fig2_reading_run b = run_reading(&m, &ex, sus_step_midpoint);
     const char *stmt[4] = {"Energy", "Faster", "Limit", "Own"};
-    const double ratio[4] = {a.loss / b.loss, a.err10 / b.err10, a.lim200 / b.lim200, a.own100 / b.own100};
+    const double ratio[4] = {a.loss / b.loss, a.err10 / b.err10, a.lim200 / b.lim200,
+                             a.own100 / b.own100};
     const double bound[4] = {1.0, 1.0 / MUCH, 1.0 / MUCH, 1.0 / MUCH};
     int holds = 0;
     for (int s = 0; s < 4; s++) {
         snprintf(key, sizeof key, "FigTwoReading%s%s", name, stmt[s]);
         ledger_number(key, ratio[s]);
         snprintf(key, sizeof key, "FigTwoReading%s%sHolds", name, stmt[s]);
-        const int h = s == 0 ? ratio[s] < bound[s] : ratio[s] <= bound[s]; /* energy: strictly better */
+        const int h =
+            s == 0 ? ratio[s] < bound[s] : ratio[s] <= bound[s]; /* energy: strictly better */
         ledger_number(key, h);
         holds += h;
     }
@@ -86,13 +89,13 @@ static void reading(const char *name, const char *id, const double I[9])
     ledger_number(key, b.own100);
     snprintf(
         q, sizeof q,
-        "of the statements of Figure 2 (energy, faster, limit, own: see the file), how many hold with the "
-        "labels as printed and I read by %s; the caption claims all 4",
+        "of the statements of \\PaperRefOr{Fig2} (energy, faster, limit, own: see the file), how "
+        "many hold with the labels as printed and $I$ read by %s; the caption claims all 4",
         id);
     char lid[64];
     snprintf(lid, sizeof lid, "fig2-inertia-%s", id);
     /* a count of statements is an integer: 0.5 tells 4 from 3 */
-    ledger_add(lid, "Fig. 2 caption, Conclusions", q, holds, 4.0, 0.5, LEDGER_NOT_REPRODUCED);
+    ledger_add(lid, REF_FIG2_CONCLUSIONS, q, holds, 4.0, 0.5, LEDGER_NOT_REPRODUCED);
 }
 
 void fig2readings_claims(const sus_model *m)

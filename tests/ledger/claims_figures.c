@@ -1,13 +1,16 @@
 /* The claims the captions of Figures 1 and 2 make, measured on the same runs the figures draw
- * (src/prog/figure_fig1.c, src/prog/figure_fig2.c, src/prog/figure_fig2_energy.c, src/prog/figure_inertia.c).
+ * (src/prog/figure_fig1.c, src/prog/figure_fig2.c, src/prog/figure_fig2_energy.c,
+ * src/prog/figure_inertia.c).
  */
 #include "claims_figures.h"
 #include "dsp.h"
 
 #include "experiments.h"
+#include "claims_refs.h"
 #include "ledger.h"
 #include "mat3.h"
 #include "midpoint_sweeps.h"
+#include "notation.h"
 #include "series.h"
 #include "so3.h"
 
@@ -18,12 +21,13 @@
 
 #define FIELD(f) offsetof(sus_exp_series, f)
 
-static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *st, double eps, long N,
-                long every)
+static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *st, double eps,
+                long N, long every)
 {
     sus_run_report rep;
     const sus_run_config cfg = {m, st, SUS_RECON_CAYLEY, eps, N, every};
-    if (sus_exp_series_init(s, N, every) != 0 || sus_exp_series_run(s, &cfg, SUS_PAPER_OMEGA0, &rep) != 0) {
+    if (sus_exp_series_init(s, N, every) != 0 ||
+        sus_exp_series_run(s, &cfg, SUS_PAPER_OMEGA0, &rep) != 0) {
         fprintf(stderr, "claims: %s run at eps = %g failed\n", st->name, eps);
         exit(2);
     }
@@ -32,11 +36,12 @@ static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *s
 /* Is the series the run it claims to be? N/every + 1 rows (the last one at t = N eps), row 0 at
  * w(0), the energy column E(w_k) of its own w, and w_k nowhere zero (the solution tends to a
  * steady rotation of the initial energy, |w| ~ 0.64). A zeroed or truncated series fails. */
-static int series_is_run(const sus_exp_series *s, const sus_model *m, double eps, long N, long every)
+static int series_is_run(const sus_exp_series *s, const sus_model *m, double eps, long N,
+                         long every)
 {
     if (s->n != (size_t)(N / every + 1) || s->t[0] != 0.0 ||
-        fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps || s->w1[0] != SUS_PAPER_OMEGA0[0] ||
-        s->w2[0] != SUS_PAPER_OMEGA0[1])
+        fabs(s->t[s->n - 1] - (double)N * eps) > 1e-9 * N * eps ||
+        s->w1[0] != SUS_PAPER_OMEGA0[0] || s->w2[0] != SUS_PAPER_OMEGA0[1])
         return 0;
     for (size_t i = 0; i < s->n; i++) {
         const double w[2] = {s->w1[i], s->w2[i]};
@@ -87,7 +92,8 @@ static int recheck(void *vctx, const sus_row *row)
     recheck_ctx *c = vctx;
     if (c->i < c->s->n) {
         const double mu = row_constraint(row);
-        c->mismatch = fmax(c->mismatch, fabs(mu - c->s->mu[c->i]) + fabs(row->w[2] - c->s->w3[c->i]));
+        c->mismatch =
+            fmax(c->mismatch, fabs(mu - c->s->mu[c->i]) + fabs(row->w[2] - c->s->w3[c->i]));
         c->worst = fmax(c->worst, fmax(fabs(mu), fabs(row->w[2])));
     }
     c->i++;
@@ -113,18 +119,18 @@ static double constraint_of(const sus_exp_series *s, const sus_model *m, const s
  * positive control on the same eps and steps: w3 = 1e-9 injected each step must be measured
  * as 1e-9 (vee(R^T R w^)_3 = w3 (1 + O(|R^T R - I|)), so within 10%). */
 static void constraint_claims(const char *fig, const char *ref, const sus_model *m,
-                              const sus_exp_series *mid, const sus_exp_series *var, double eps, long N,
-                              long every)
+                              const sus_exp_series *mid, const sus_exp_series *var, double eps,
+                              long N, long every)
 {
-    char id[64], what[256];
+    char id[64], what[400];
     const double cm = constraint_of(mid, m, sus_step_midpoint, eps, N, every);
     const double cv = constraint_of(var, m, sus_step_variational, eps, N, every);
     const double c = isnan(cm) || isnan(cv) ? NAN : fmax(cm, cv); /* fmax would drop a NaN */
     snprintf(id, sizeof id, "%s-constraint", fig);
     snprintf(what, sizeof what,
-             "max over both methods of max(|w3|, |<e3, vee(R_k^T R_k w^_k)>|), eps = %g, %ld steps (series "
-             "checked "
-             "complete and recomputed from R_k)",
+             "max over both methods of $\\max(|\\omega_3|, |\\langle e_3, (R_k^\\top R_k "
+             "\\hat{\\omega}_k)^\\vee \\rangle|)$, $\\varepsilon = %g$, %ld steps (series checked "
+             "complete and recomputed from $R_k$)",
              eps, N);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
     ledger_add(id, ref, what, c, 0.0, 1e-14, LEDGER_REPRODUCED);
@@ -139,8 +145,9 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
     snprintf(what, sizeof what,
-             "the same measurement on a midpoint run with w3 = %g injected every step: it sees it",
-             VIOLATION);
+             "the same measurement on a midpoint run with $\\omega_3 = %s$ injected every step: it "
+             "sees it",
+             notation_g(VIOLATION, 6).s);
     ledger_add(id, "(test of the test)", what, seen, VIOLATION, 0.1 * VIOLATION, LEDGER_EXTENSION);
 }
 
@@ -151,13 +158,15 @@ static void figure1(const sus_model *m, const sus_exact *ex)
     const long N = sus_exp_experiment_steps(SUS_EXP_FIG1_T_END, eps), every = SUS_EXP_FIG1_EVERY;
     run(&mid, m, sus_step_midpoint, eps, N, every);
     run(&var, m, sus_step_variational, eps, N, every);
-    const double dw =
-        fmax(sus_exp_series_maxdiff(&mid, &var, FIELD(w1)), sus_exp_series_maxdiff(&mid, &var, FIELD(w2)));
+    const double dw = fmax(sus_exp_series_maxdiff(&mid, &var, FIELD(w1)),
+                           sus_exp_series_maxdiff(&mid, &var, FIELD(w2)));
     /* A difference invisible in panels (a)-(b): the smallest plotted range (w2: 0.50 .. 0.68)
      * spans ~400 pixels at 150 dpi, so 1e-4 is a fraction of a pixel. */
-    ledger_add("fig1-indistinguishable", "Sec. 5.6 text, Fig. 1",
-               "max_k |w_mid - w_var| at eps = 1e-3 over [0, 60]: below a pixel (1e-4) of panels (a)-(b)",
-               dw, 0.0, 1e-4, LEDGER_REPRODUCED);
+    ledger_add(
+        "fig1-indistinguishable", REF_SEC56 "; \\PaperRefOr{Fig1}",
+        "$\\max_k |\\omega_\\mathrm{mid} - \\omega_\\mathrm{var}|$ at $\\varepsilon = 10^{-3}$ "
+        "over $[0, 60]$: below a pixel ($10^{-4}$) of panels (a) and (b)",
+        dw, 0.0, 1e-4, LEDGER_REPRODUCED);
     /* "...except with respect to the multipliers": the multipliers differ by O_0 of PropoFinal,
      * up to O(eps) = O(1e-3 |lambda'|) ~ 1e-5. */
     double o0 = 0.0; /* max over the run of |O_0(w(t))| */
@@ -176,25 +185,26 @@ static void figure1(const sus_model *m, const sus_exact *ex)
     }
     if (mid.n < 2)
         off = NAN;
-    char q[256];
-    snprintf(
-        q, sizeof q,
-        "max_k>=1 |(lambda_mid - lambda_var)_k - O_0(w(t_k))| at eps = 1e-3: the multipliers differ by O_0 "
-        "(PropoFinal), up to max |O_0| = %.4g",
-        o0);
+    char q[400];
+    snprintf(q, sizeof q,
+             "$\\max_{k \\ge 1} |(\\lambda_\\mathrm{mid} - \\lambda_\\mathrm{var})_k - "
+             "O_0(\\omega(t_k))|$ at $\\varepsilon = 10^{-3}$: the multipliers differ by $O_0$ "
+             "(\\PaperRefOr{PropoFinal}), up to $\\max |O_0| = %.4g$",
+             o0);
     ledger_number("FigOneMaxOZero", o0);
-    ledger_add("fig1-multipliers-differ", "Sec. 5.6 text, Fig. 1(c)-(d)", q, off, 0.0, 1e-4,
-               LEDGER_REPRODUCED);
-    constraint_claims("fig1", "Fig. 1(e)", m, &mid, &var, eps, N, every);
+    ledger_add("fig1-multipliers-differ", REF_SEC56 "; \\PaperRefOr{Fig1}, panels (c) and (d)", q,
+               off, 0.0, 1e-4, LEDGER_REPRODUCED);
+    constraint_claims("fig1", "\\PaperRefOr{Fig1}, panel (e)", m, &mid, &var, eps, N, every);
     /* Round-off in E over 6e4 steps walks like sqrt(N) u E ~ 1e-14; 1e-13 leaves a factor 10. */
-    ledger_add(
-        "fig1-energy-midpoint", "Fig. 1(f)",
-        "max_k |E_k - E_0| of the midpoint rule, eps = 1e-3: conserved to round-off (it conserves E exactly)",
+    ledger_add("fig1-energy-midpoint", "\\PaperRefOr{Fig1}, panel (f)",
+               "$\\max_k |E_k - E_0|$ of the midpoint rule, $\\varepsilon = 10^{-3}$: conserved to "
+               "round-off (it conserves $E$ exactly)",
         sus_exp_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
-    ledger_add_bound("fig1-energy-variational", "Fig. 1(f) (extension)",
-                     "max_k |E_k - E_0| of the variational integrator, eps = 1e-3: at least 1e-12, i.e. not "
-                     "round-off (O(eps^2) drift)",
-                     sus_exp_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
+    ledger_add_bound(
+        "fig1-energy-variational", "\\PaperRefOr{Fig1}, panel (f); extension",
+        "$\\max_k |E_k - E_0|$ of the variational integrator, $\\varepsilon = 10^{-3}$: at "
+        "least $10^{-12}$, i.e. not round-off ($O(\\varepsilon^2)$ drift)",
+        sus_exp_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
     sus_exp_series_free(&mid);
     sus_exp_series_free(&var);
 }
@@ -221,19 +231,22 @@ static void sweeps_are_explicit_methods(const sus_model *m, double eps, long N, 
             w[0] += eps * f[0];
             w[1] += eps * f[1];
         }
-        char id[64], what[160];
+        char id[64], what[320];
         snprintf(id, sizeof id, "fig2-reading-%d-sweep%s", n,
                  n == 1 ? "-is-euler" : "s-are-explicit-midpoint");
-        snprintf(what, sizeof what,
-                 "max_k |E_k| difference, %d fixed-point sweep%s against %s written out, eps = %g, %ld steps",
-                 n, n == 1 ? "" : "s", n == 1 ? "explicit Euler" : "the explicit midpoint rule", eps, N);
-        ledger_add(id, "Fig. 2(d) (evidence)", what, d, 0.0, 1e-15, LEDGER_EXTENSION);
+        snprintf(
+            what, sizeof what,
+            "$\\max_k$ of the difference in $E_k$, %d fixed-point sweep%s against %s written out, "
+            "$\\varepsilon = %g$, %ld steps",
+            n, n == 1 ? "" : "s", n == 1 ? "explicit Euler" : "the explicit midpoint rule", eps, N);
+        ledger_add(id, REF_FIG2D "; evidence", what, d, 0.0, 1e-15, LEDGER_EXTENSION);
     }
 }
 
 /* "works quite well if the step size is relatively big": the variational error relative to
  * |w0|, against the midpoint rule's, over the Figure 2 run. */
-static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid, const sus_exp_series *var)
+static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
+                                 const sus_exp_series *var)
 {
     double err_var = 0.0, err_mid = 0.0;
     for (size_t i = 0; i < mid->n; i++) {
@@ -243,15 +256,15 @@ static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
         err_mid = fmax(err_mid, hypot(mid->w1[i] - w[0], mid->w2[i] - w[1]));
     }
     const double r0 = hypot(SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
-    char q_buf[256];
-    snprintf(q_buf, sizeof q_buf,
-             "max_k |w_var - w(t_k)| / |w0| at eps = 1 over [0, 200], above the midpoint rule's (expected); "
-             "the paper's "
-             "'quite well' gives no tolerance to test");
     /* The paper gives no tolerance for "quite well" and its figure image is missing, so no
      * verdict on the paper can follow from a threshold we would choose; what is measured is the
      * comparison, recorded as ours. */
-    ledger_add_bound("fig2-accuracy", "(extension)", q_buf, err_var / r0, err_mid / r0, 1, LEDGER_EXTENSION);
+    ledger_add_bound(
+        "fig2-accuracy", "(extension)",
+        "$\\max_k |\\omega_\\mathrm{var} - \\omega(t_k)| / |\\omega_0|$ at $\\varepsilon "
+        "= 1$ over $[0, 200]$, above the midpoint rule's (expected); the paper's ``quite "
+        "well'' gives no tolerance to test",
+        err_var / r0, err_mid / r0, 1, LEDGER_EXTENSION);
     ledger_number("FigTwoMidAccuracyPercent", 100.0 * err_mid / r0);
     ledger_number("FigTwoVarAccuracyPercent", 100.0 * err_var / r0);
 }
@@ -259,24 +272,27 @@ static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
 /* The caption: midpoint shows a fast decay of energy, the variational integrator is better. */
 static void fig2_energy_claims(const sus_exp_series *mid, double loss_mid, double loss_var)
 {
-    ledger_add_bound("fig2-energy-midpoint", "Fig. 2(d), Sec. 5.6 text",
-                     "energy lost by the midpoint rule over [0, 200], eps = 1; the paper's 'fast decay' "
-                     "needs it to exceed the variational loss (expected)",
-                     loss_mid, loss_var, 1, LEDGER_NOT_REPRODUCED);
-    ledger_add_bound("fig2-energy-variational", "Fig. 2(d), Sec. 5.6 text",
-                     "|E_N - E_0| of the variational integrator, eps = 1; 'much better' needs it below the "
-                     "midpoint's |E_N - E_0| (expected)",
-                     fabs(loss_var), fabs(loss_mid), 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound(
+        "fig2-energy-midpoint", REF_FIG2D "; " REF_SEC56,
+        "energy lost by the midpoint rule over $[0, 200]$, $\\varepsilon = 1$; the paper's "
+        "``fast decay'' needs it to exceed the variational loss (expected)",
+        loss_mid, loss_var, 1, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound(
+        "fig2-energy-variational", REF_FIG2D "; " REF_SEC56,
+        "$|E_N - E_0|$ of the variational integrator, $\\varepsilon = 1$; ``much better'' "
+        "needs it below the midpoint's $|E_N - E_0|$ (expected)",
+        fabs(loss_var), fabs(loss_mid), 0, LEDGER_NOT_REPRODUCED);
     /* 200 steps, each changing E by at most a few roundings u E ~ 1e-16 (Newton solves to 16 u
      * of its scale): a walk of sqrt(200) u E ~ 1e-15; 1e-14 leaves a factor 10. */
     ledger_add("fig2-energy-midpoint-conserved", "(extension)",
-               "max_k |E_k - E_0| of the midpoint rule at eps = 1 over 200 steps: round-off, the implicit "
-               "midpoint rule conserves E",
+               "$\\max_k |E_k - E_0|$ of the midpoint rule at $\\varepsilon = 1$ over 200 steps: "
+               "round-off, the implicit midpoint rule conserves $E$",
                sus_exp_series_maxdrift(mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
 }
 
 /* Every reading of the midpoint rule's implicit equation tried (figures/fig2_energy). */
-static void fig2_readings_claims(const sus_model *m, double eps, long N, double loss_mid, double loss_var)
+static void fig2_readings_claims(const sus_model *m, double eps, long N, double loss_mid,
+                                 double loss_var)
 {
     double worst_loss = loss_mid, *E = malloc((size_t)(N + 1) * sizeof *E), wN[2];
     int gaining = 0;
@@ -286,20 +302,23 @@ static void fig2_readings_claims(const sus_model *m, double eps, long N, double 
         gaining += E[N] > E[0];
     }
     ledger_number("FigTwoSweepsTried", SUS_EXP_FIG2_NSWEEP);
-    ledger_number("FigTwoSweepsGaining", gaining); /* readings that end with more energy than they began */
+    ledger_number("FigTwoSweepsGaining",
+                  gaining); /* readings that end with more energy than they began */
     sweeps_are_explicit_methods(m, eps, N, E);
     free(E);
     ledger_number("FigTwoReadingsWorstLoss", worst_loss);
-    ledger_add_bound("fig2-energy-readings", "Fig. 2(d) (evidence)",
-                     "largest energy loss at t = 200 over the readings of the midpoint rule (Newton; 1..8 "
-                     "fixed-point sweeps, incl. explicit Euler and explicit midpoint); the caption needs it "
-                     "above the variational loss (expected)",
-                     worst_loss, loss_var, 1, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound(
+        "fig2-energy-readings", REF_FIG2D "; evidence",
+        "largest energy loss at $t = 200$ over the readings of the midpoint rule (Newton; 1 "
+        "to 8 fixed-point sweeps, explicit Euler and explicit midpoint among them); the "
+        "caption needs it above the variational loss (expected)",
+        worst_loss, loss_var, 1, LEDGER_NOT_REPRODUCED);
 }
 
 /* Where each run ends: the midpoint rule at the exact steady rotation, the variational integrator
  * at a steady rotation of the energy it has lost. */
-static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid, const sus_exp_series *var)
+static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid,
+                              const sus_exp_series *var)
 {
     const size_t last = mid->n - 1;
     const double E0 = mid->energy[0];
@@ -307,25 +326,29 @@ static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid, co
     sus_exact_limit(ex, winf);
     const double lim_var = hypot(var->w1[last] - winf[0], var->w2[last] - winf[1]);
     const double lim_mid = hypot(mid->w1[last] - winf[0], mid->w2[last] - winf[1]);
-    ledger_add_bound("fig2-longterm", "Fig. 2 caption",
-                     "|w_var(200) - w_inf|, eps = 1: 'long-term behaviour much more accurate' needs it below "
-                     "the midpoint's |w_mid(200) - w_inf| (expected)",
-                     lim_var, lim_mid, 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound(
+        "fig2-longterm", REF_FIG2_CAPTION,
+        "$|\\omega_\\mathrm{var}(200) - \\omega_\\infty|$, $\\varepsilon = 1$: ``long-term "
+        "behaviour much more accurate'' needs it below the midpoint's "
+        "$|\\omega_\\mathrm{mid}(200) - \\omega_\\infty|$ (expected)",
+        lim_var, lim_mid, 0, LEDGER_NOT_REPRODUCED);
     /* The midpoint rule conserves E, and its fixed points are the zeros of f on the energy
      * ellipse: it tends to the exact steady rotation. At t = 200 the exact distance is
      * e^{-200 k} ~ 1e-13; 1e-10 bounds the midpoint's. */
-    ledger_add("fig2-limit-midpoint", "(extension)",
-               "|w_mid(200) - w_inf| at eps = 1: the midpoint rule reaches the exact steady rotation",
-               lim_mid, 0.0, 1e-10, LEDGER_EXTENSION);
+    ledger_add(
+        "fig2-limit-midpoint", "(extension)",
+        "$|\\omega_\\mathrm{mid}(200) - \\omega_\\infty|$ at $\\varepsilon = 1$: the midpoint "
+        "rule reaches the exact steady rotation",
+        lim_mid, 0.0, 1e-10, LEDGER_EXTENSION);
     /* A fixed point of (taudyn) has c(w) = 0: the variational integrator also ends on a steady
      * rotation, but at the energy it has lost, so |w_var - w_inf| = |w_inf| (1 - sqrt(E_N/E_0)).
      * The identity holds once the run sits on that rotation: at t = 200 the exact motion is
      * e^{-200 k} ~ 3e-13 from it, and 1e-9 allows the variational run to settle a thousand
      * times more slowly than the exact one. */
     const double predicted = hypot(winf[0], winf[1]) * (1.0 - sqrt(var->energy[last] / E0));
-    ledger_add(
-        "fig2-limit-variational", "(extension)",
-        "|w_var(200) - w_inf| against |w_inf| (1 - sqrt(E_N / E_0)): a steady rotation at the wrong energy",
+    ledger_add("fig2-limit-variational", "(extension)",
+               "$|\\omega_\\mathrm{var}(200) - \\omega_\\infty|$ against $|\\omega_\\infty| (1 - "
+               "\\sqrt{E_N / E_0})$: a steady rotation at the wrong energy",
         lim_var, predicted, 1e-9, LEDGER_EXTENSION);
 }
 
@@ -339,7 +362,7 @@ static void figure2(const sus_model *m, const sus_exact *ex)
     const size_t last = mid.n - 1;
     const double E0 = mid.energy[0];
     const double loss_mid = E0 - mid.energy[last], loss_var = E0 - var.energy[last];
-    constraint_claims("fig2", "Fig. 2(e)", m, &mid, &var, eps, N, 1);
+    constraint_claims("fig2", "\\PaperRefOr{Fig2}, panel (e)", m, &mid, &var, eps, N, 1);
     fig2_energy_claims(&mid, loss_mid, loss_var);
     fig2_readings_claims(m, eps, N, loss_mid, loss_var);
     fig2_accuracy_claims(ex, &mid, &var);
@@ -372,10 +395,12 @@ static void inertia_ambiguity(const sus_model *m)
         sus_exact_omega(&ec, SUS_EXP_INERTIA_DT * (double)i, b);
         d = fmax(d, hypot(a[0] - b[0], a[1] - b[1]));
     }
-    ledger_add_bound("inertia-row-vs-column", "(RGB2) with I as printed (extension)",
-                     "max_t |w_row(t) - w_col(t)| on [0, 60], exact solutions with (I31, I32) = (0.2, 0.1) "
-                     "vs (0.2, 0.2): the choice is visible (> 1e-3)",
-                     d, 1e-3, 1, LEDGER_EXTENSION);
+    ledger_add_bound(
+        "inertia-row-vs-column", "\\eqref{RGB2} with $I$ as printed; extension",
+        "$\\max_t |\\omega_\\mathrm{row}(t) - \\omega_\\mathrm{col}(t)|$ on $[0, 60]$, exact "
+        "solutions with $(I_{31}, I_{32}) = (0.2, 0.1)$ against $(0.2, 0.2)$: the choice is "
+        "visible ($> 10^{-3}$)",
+        d, 1e-3, 1, LEDGER_EXTENSION);
 }
 
 void figure_claims(const sus_model *m, const sus_exact *ex)

@@ -2,6 +2,7 @@
 
 #include "exact.h"
 #include "model.h"
+#include "notation.h"
 #include "orderfit.h"
 
 #include <math.h>
@@ -52,11 +53,11 @@ static void ratio_id(const char *id, char *out, size_t len)
 }
 
 int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
-                          const double *err, const double *need, int n, double floor_c, int floor_pow,
-                          double shift, double expected, ledger_assert truth)
+                          const double *err, const double *need, int n, double floor_c,
+                          int floor_pow, double shift, double expected, ledger_assert truth)
 {
     sus_exp_order_fit f;
-    char q[400];
+    char q[640];
     double e[MAXN], emax = SUS_EXP_FIT_EPS_MAX, big = 0.0;
     if (n > MAXN)
         n = MAXN;
@@ -71,9 +72,11 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
     }
     if (ok) {
         const int wide = emax > SUS_EXP_FIT_EPS_MAX;
-        snprintf(q, sizeof q, "%s; fit eps in [%.3g, %.3g], %d pts%s", what, f.eps_lo, f.eps_hi, f.used,
+        snprintf(q, sizeof q, "%s; fit $\\varepsilon \\in [%s, %s]$, %d points%s", what,
+                 notation_g(f.eps_lo, 3).s, notation_g(f.eps_hi, 3).s, f.used,
                  wide ? " (window widened: round-off below)" : "");
-        ledger_add(id, ref, q, f.slope - shift, expected, wide ? wide_tolerance(f.eps_hi) : ORDER_TOL, truth);
+        ledger_add(id, ref, q, f.slope - shift, expected,
+                   wide ? wide_tolerance(f.eps_hi) : ORDER_TOL, truth);
         return 1;
     }
     /* No slope: the sizes are at round-off over the fit window. Where theory puts a lower
@@ -93,13 +96,14 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
     }
     if (need && !measurable)
         return 0;
-    char eref[128], rid[96];
-    snprintf(eref, sizeof eref, "%s%s", ref, strstr(ref, "extension") ? "" : " (extension)");
+    char eref[200], rid[96];
+    snprintf(eref, sizeof eref, "%s%s", ref, strstr(ref, "extension") ? "" : ", extension");
     ratio_id(id, rid, sizeof rid);
-    /* the numbers first: the quantity column holds 255 characters */
-    snprintf(q, sizeof q, "[no slope (order %g at round-off); size / theory's lower estimate >= 0.1 at the "
-                          "%d eps "
-             "where the estimate is above 10 floors] %s", expected, measurable, what);
+    snprintf(
+        q, sizeof q,
+        "[no slope (order %g at round-off); size over theory's lower estimate $\\ge 0.1$ at the "
+        "%d $\\varepsilon$ where the estimate is above 10 floors] %s",
+        expected, measurable, what);
     ledger_add_bound(rid, eref, q, need ? carry : -INFINITY, 0.1, 1, LEDGER_EXTENSION);
     return 1;
 }

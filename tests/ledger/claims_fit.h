@@ -16,7 +16,7 @@
  * fails). Where no eps has need above 10 floors nothing can be tested: no line, and 0 is
  * returned (else 1). need = NULL: no such estimate, and the line fails. */
 int claims_order_or_floor(const char *id, const char *ref, const char *what, const double *eps,
-                          const double *err, const double *need, int n, double floor_c, int floor_pow,
-                          double shift, double expected, ledger_assert truth);
+                          const double *err, const double *need, int n, double floor_c,
+                          int floor_pow, double shift, double expected, ledger_assert truth);
 
 #endif

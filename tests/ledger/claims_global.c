@@ -47,6 +47,7 @@
 #include "driver.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "magnus4.h"
 #include "orderfit.h"
 #include "refattitude.h"
@@ -94,8 +95,8 @@ static body_target target_of(int k, double k_paper, double t_paper)
 
 /* The errors at T for the grid of N (below n_max), down to the round-off floor of both
  * quantities; eps[] holds h = eps k. Returns the count. */
-static int error_curves(const body_target *t, const sus_stepper_type *st, sus_recon recon, long n_max,
-                        double *h, double *ew, double *eR)
+static int error_curves(const body_target *t, const sus_stepper_type *st, sus_recon recon,
+                        long n_max, double *h, double *ew, double *eR)
 {
     const double size_w = t->d->size_w;
     int n = 0;
@@ -129,8 +130,8 @@ typedef struct {
     double margin;
 } curve_fit;
 
-static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, const double *err, int n,
-                           double size, double kT, int *at_roundoff)
+static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, const double *err,
+                           int n, double size, double kT, int *at_roundoff)
 {
     int cand[MAXN], ncand = 0, above = 0;
     for (int j = 0; j < n; j++) {
@@ -163,30 +164,36 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
                        const worst_fit *wf)
 {
     const int p = q ? eo->so3[recon] : eo->p, paper = me->paper_ref != NULL;
-    char id[96], what[512], label[64];
+    char id[96], what[640], label[64];
     const curve_fit *f = &wf->f;
     if (q)
-        snprintf(id, sizeof id, paper ? "global-so3-order-bodies-%s-%s" : "highorder-so3-order-%s-%s",
+        snprintf(id, sizeof id,
+                 paper ? "global-so3-order-bodies-%s-%s" : "highorder-so3-order-%s-%s",
                  SUS_RECON_NAMES[recon], me->type->name);
     else
-        snprintf(id, sizeof id, paper ? "global-order-bodies-%s" : "highorder-w-order-%s", me->type->name);
+        snprintf(id, sizeof id, paper ? "global-order-bodies-%s" : "highorder-w-order-%s",
+                 me->type->name);
     const double t_paper = paper ? T_PAPER_METHODS : T_EXTENSION;
-    snprintf(what, sizeof what,
-             "slope of %s at k T = %.3g (t = %g on the paper's body) against eps, %s, errors in [max(1000 u, "
-             "100 N s u), 1] x size; the nearest to its bound of %d bodies: %s (h = eps k %.3g .. %.3g, %d "
-             "points%s)",
-             q ? "(MetMat) dist(R(T), R_N)" : "|w(T) - w_N|", t_paper * claims_body_get(0)->ex.k, t_paper,
-             q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name, wf->bodies,
-             wf->body, isnan(f->w.slope) ? 0.0 : f->w.eps_lo, isnan(f->w.slope) ? 0.0 : f->w.eps_hi,
-             f->w.used, f->w.plateau ? ", one slope" : "; no one slope: lower estimate, >= p/2");
+    snprintf(
+        what, sizeof what,
+        "slope of %s at $k T = %.3g$ ($t = %g$ on the paper's body) against $\\varepsilon$, %s, "
+        "errors in $[\\max(1000\\,u, 100\\,N s\\,u), 1] \\times \\mathrm{size}$; the nearest "
+        "to its bound of %d bodies: %s ($h = \\varepsilon k$ from $%s$ to $%s$, %d points%s)",
+        q ? "the distance \\eqref{MetMat} $\\mathrm{dist}(R(T), R_N)$"
+          : "$|\\omega(T) - \\omega_N|$",
+        t_paper * claims_body_get(0)->ex.k, t_paper,
+        q ? sus_step_method_label(me->type, recon, label, sizeof label) : me->type->name,
+        wf->bodies, wf->body, notation_g(isnan(f->w.slope) ? 0.0 : f->w.eps_lo, 3).s,
+        notation_g(isnan(f->w.slope) ? 0.0 : f->w.eps_hi, 3).s, f->w.used,
+        f->w.plateau ? ", one slope" : "; no one slope: lower estimate, $\\ge p/2$");
     if (wf->roundoff[0]) { /* named, not measured: their errors are round-off at every step tried */
         const size_t len = strlen(what);
-        snprintf(what + len, sizeof what - len, "; at round-off at all but <= 2 steps, no order: %s",
-                 wf->roundoff);
+        snprintf(what + len, sizeof what - len,
+                 "; at round-off at all but at most 2 steps, no order: %s", wf->roundoff);
     }
     const double slope = isnan(f->w.slope) ? -INFINITY : f->w.slope;
     const ledger_assert truth = paper && !q ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    const char *ref = paper && q ? "TeoL (extension)" : eo->ref;
+    const char *ref = paper && q ? "\\PaperRefOr{TeoL}, extension" : eo->ref;
     if (f->w.plateau && !isnan(f->w.slope))
         ledger_add(id, ref, what, slope, p, WINDOW_ORDER_TOL, truth);
     else
@@ -197,7 +204,8 @@ static void order_line(const sus_step_method *me, const expected_order *eo, sus_
 static void order_rows(const body_target *t, const sus_step_method *me, const expected_order *eo,
                        sus_recon recon, int with_w)
 {
-    worst_fit wf[2] = {{.f.margin = INFINITY, .f.w.slope = NAN}, {.f.margin = INFINITY, .f.w.slope = NAN}};
+    worst_fit wf[2] = {{.f.margin = INFINITY, .f.w.slope = NAN},
+                       {.f.margin = INFINITY, .f.w.slope = NAN}};
     const long n_max = me->paper_ref ? N_PAPER : N_EXTENSION;
     for (int k = 0; k < BODIES_COUNT; k++) {
         double h[MAXN], ew[MAXN], eR[MAXN];
@@ -205,8 +213,9 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
         for (int q = with_w ? 0 : 1; q < 2; q++) {
             const int p = q ? eo->so3[recon] : eo->p;
             int at_roundoff;
-            const curve_fit f = fit_curve(me->type, p, h, q ? eR : ew, n, q ? SUS_EXP_SIZE_R : t[k].d->size_w,
-                                          t[k].d->ex.k * t[k].T, &at_roundoff);
+            const curve_fit f =
+                fit_curve(me->type, p, h, q ? eR : ew, n, q ? SUS_EXP_SIZE_R : t[k].d->size_w,
+                          t[k].d->ex.k * t[k].T, &at_roundoff);
             if (at_roundoff) {
                 const size_t len = strlen(wf[q].roundoff);
                 snprintf(wf[q].roundoff + len, sizeof wf[q].roundoff - len, "%s%s", len ? ", " : "",
@@ -224,7 +233,8 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
             }
         }
     }
-    for (int q = with_w ? 0 : 1; q < 2; q++) /* no line only where the rule above left out every body */
+    for (int q = with_w ? 0 : 1; q < 2;
+         q++) /* no line only where the rule above left out every body */
         if (wf[q].bodies || !wf[q].skipped)
             order_line(me, eo, recon, q, &wf[q]);
 }
@@ -243,35 +253,53 @@ static void reference_line(const body_target *t)
         if (!(d <= worst))
             worst = d, snprintf(name, sizeof name, "%s", t[k].d->b.name);
     }
-    char what[256];
-    snprintf(what, sizeof what,
-             "dist(R_ref(T), R_magnus(T)) at k T = %.3g (the longer phase), the worst of %d bodies (%s): the "
-             "reference that judges the global orders on every body; claimed <= 1e-15",
-             T_EXTENSION * claims_body_get(0)->ex.k, BODIES_COUNT, name);
-    ledger_add("global-reference-attitude-bodies", "(method)", what, worst, 0.0, 1e-15, LEDGER_EXTENSION);
+    char what[400];
+    snprintf(
+        what, sizeof what,
+        "$\\mathrm{dist}(R_\\mathrm{ref}(T), R_\\mathrm{magnus}(T))$ at $k T = %.3g$ (the longer "
+        "phase), the worst of %d bodies (%s): the reference that judges the global orders on "
+        "every body; claimed $\\le 10^{-15}$",
+        T_EXTENSION * claims_body_get(0)->ex.k, BODIES_COUNT, name);
+    ledger_add("global-reference-attitude-bodies", "(method)", what, worst, 0.0, 1e-15,
+               LEDGER_EXTENSION);
 }
 
-void global_order_claims(void)
+/* The targets of every body at the extensions' phase (te) and the paper methods' (tp), made once
+ * in a process. */
+static body_target te[BODIES_COUNT], tp[BODIES_COUNT];
+static int targets_made;
+
+static void make_targets(void)
 {
-    body_target te[BODIES_COUNT], tp[BODIES_COUNT];
     const double k_paper = claims_body_get(0)->ex.k;
+    if (targets_made)
+        return;
     for (int k = 0; k < BODIES_COUNT; k++) {
         te[k] = target_of(k, k_paper, T_EXTENSION);
         tp[k] = target_of(k, k_paper, T_PAPER_METHODS);
     }
+    targets_made = 1;
+}
+
+void global_reference_claims(void)
+{
+    make_targets();
     reference_line(te);
-    for (int i = 0; i < sus_step_method_count(); i++) {
-        const sus_step_method *me = sus_step_method_get(i);
-        const expected_order *eo = expected_order_of(me->type->name);
-        if (!eo)
-            continue; /* missing: claims_methods.c fails it */
-        if (me->paper_ref) { /* every reconstruction, as claims.c's global lines */
-            for (int r = 0; r < SUS_RECON_COUNT; r++)
-                order_rows(tp, me, eo, (sus_recon)r, r == 0);
-            continue;
-        }
-        order_rows(te, me, eo, me->recon, 1);
-        if (!me->type->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
-            order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
+}
+
+void global_order_claims_of(int i)
+{
+    const sus_step_method *me = sus_step_method_get(i);
+    const expected_order *eo = expected_order_of(me->type->name);
+    if (!eo)
+        return; /* missing: claims_methods.c fails it */
+    make_targets();
+    if (me->paper_ref) { /* every reconstruction, as claims_consistency.c's global lines */
+        for (int r = 0; r < SUS_RECON_COUNT; r++)
+            order_rows(tp, me, eo, (sus_recon)r, r == 0);
+        return;
     }
+    order_rows(te, me, eo, me->recon, 1);
+    if (!me->type->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
+        order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
 }

@@ -4,6 +4,9 @@
 #ifndef SUSLOV_CLAIMS_GLOBAL_H
 #define SUSLOV_CLAIMS_GLOBAL_H
 
-void global_order_claims(void);
+/* The reference attitude that judges them, on every body. */
+void global_reference_claims(void);
+/* The lines of the i-th registered method. */
+void global_order_claims_of(int i);
 
 #endif

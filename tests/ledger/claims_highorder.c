@@ -17,6 +17,7 @@
 #include "driver.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "magnus4.h"
 #include "orderfit.h"
 #include "reconstruct.h"
@@ -61,10 +62,10 @@ static int run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *
 
 /* A Taylor method of order p against its own truncation at p - 1 (the control): one full step
  * (w, R) from the exact w(t_k) at 8 starts, local w errors against the closed form, on every body
- * at the same h = eps k and phases k t_k as on the paper's body. The global slopes (claims_global.c)
- * cannot tell p from p - 1 (pre-asymptotic, steep), the local errors can: theory gives
- * e_p ~ C_{p+1} eps^{p+1} and e_{p-1} ~ C_p eps^p with C_{j+1} / C_j ~ 1 / rho (rho = pi / (2 k),
- * the series' radius in t), so max_t e_p / max_t e_{p-1} ~ eps / rho = 0.19 at eps k = 0.29
+ * at the same h = eps k and phases k t_k as on the paper's body. The global slopes
+ * (claims_global.c) cannot tell p from p - 1 (pre-asymptotic, steep), the local errors can: theory
+ * gives e_p ~ C_{p+1} eps^{p+1} and e_{p-1} ~ C_p eps^p with C_{j+1} / C_j ~ 1 / rho (rho = pi / (2
+ * k), the series' radius in t), so max_t e_p / max_t e_{p-1} ~ eps / rho = 0.19 at eps k = 0.29
  * (eps = 2 on the paper's body). Single starts scatter (coefficients of either sign); the maxima
  * over 8 starts do not by more than 2x. A method of order p - 1 gives 1. Asserted on the worst
  * body: <= 0.6, over the bodies where the truncation's error stays 1000x above round-off at this
@@ -84,7 +85,8 @@ static double control_ratio(const claims_body *d, const sus_step_method *me, int
         const double w[3] = {wk[0], wk[1], 0.0};
         sus_attitude_identity(&a1);
         sus_attitude_identity(&a2);
-        if (sus_stepper_full(me->type, &d->m, eps, me->recon, &a1, w, wn, &lam, &ss) != SUS_STEPPER_OK ||
+        if (sus_stepper_full(me->type, &d->m, eps, me->recon, &a1, w, wn, &lam, &ss) !=
+                SUS_STEPPER_OK ||
             me->type->apply_order(p - 1, &d->m, eps, &a2, w, wc, &lam, &ss) != SUS_STEPPER_OK)
             return INFINITY; /* a failed step fails the line */
         em = fmax(em, hypot(wn[0] - we[0], wn[1] - we[1]));
@@ -110,13 +112,15 @@ static void taylor_control(const sus_step_method *me, int p)
         if (!(r <= worst))
             worst = r, snprintf(name, sizeof name, "%s", d->b.name);
     }
-    char id[96], what[320];
+    char id[96], what[480];
     snprintf(id, sizeof id, "highorder-control-%s", me->type->name);
-    snprintf(what, sizeof what,
-             "max local w error of %s over that of its truncation at order %d, one step of eps k = 0.29 from "
-             "w(t), 8 t, the worst (%s) of the %d of %d bodies where the truncation's error is above "
-             "1000 u |w|; theory ~eps/rho = 0.19",
-             me->type->name, p - 1, name, measured, BODIES_COUNT);
+    snprintf(
+        what, sizeof what,
+        "max local $\\omega$ error of %s over that of its truncation at order %d, one step of "
+        "$\\varepsilon k = 0.29$ from $\\omega(t)$, 8 $t$, the worst (%s) of the %d of %d bodies "
+        "where the truncation's error is above $1000\\,u |\\omega|$; theory $\\sim "
+        "\\varepsilon/\\rho = 0.19$",
+        me->type->name, p - 1, name, measured, BODIES_COUNT);
     ledger_add_bound(id, "(extension)", what, measured ? worst : NAN, 0.6, 0, LEDGER_EXTENSION);
 }
 
@@ -128,18 +132,22 @@ static void taylor_control(const sus_step_method *me, int p)
 static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_method *me)
 {
     const long N = 100000L;
-    char id[96], what[256];
+    char id[96], what[400];
     last_row l;
     const int ok = run(m, ex, me->type, me->recon, 1e4, N, 100, &l) == 0;
     const double yard = (double)N * me->type->substeps * (DBL_EPSILON / 2) * l.e0;
     snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
-    snprintf(what, sizeof what, "max |E - E0| over %ld steps of eps %g (T = 1e4), %s; bound N s u E0 = "
-                                "%.2g (s = %d substeps)",
-             N, 1e4 / (double)N, me->type->name, yard, me->type->substeps);
+    snprintf(
+        what, sizeof what,
+        "$\\max |E - E_0|$ over %ld steps of $\\varepsilon = %g$ ($T = 10^4$), %s; bound $N s\\,u "
+        "E_0 = %s$ ($s = %d$ substeps)",
+        N, 1e4 / (double)N, me->type->name, notation_g(yard, 2).s, me->type->substeps);
     if (me->type->conserves_energy)
-        ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0, LEDGER_EXTENSION);
+        ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0,
+                         LEDGER_EXTENSION);
     snprintf(id, sizeof id, "highorder-w3-%s", me->type->name);
-    snprintf(what, sizeof what, "max |w3| over %ld steps to T = 1e4, %s: exactly 0", N, me->type->name);
+    snprintf(what, sizeof what, "$\\max |\\omega_3|$ over %ld steps to $T = 10^4$, %s: exactly 0",
+             N, me->type->name);
     /* every stepper writes w3 = 0.0: a check of the code, not evidence */
     ledger_add(id, "(extension)", what, ok ? l.w3 : INFINITY, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(id, sizeof id, "highorder-so3-%s", me->type->name);
@@ -148,8 +156,10 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
     const double size_w = fmax(hypot(ex->w0[0], ex->w0[1]), hypot(wl[0], wl[1]));
     const double orth = method_orth_bound(me->type, N, 1e4 / (double)N, size_w);
     char label[64];
-    snprintf(what, sizeof what, "max |R^T R - I| over %ld steps to T = 1e4, %s; round-off bound %.2g",
-             N, sus_step_method_label(me->type, me->recon, label, sizeof label), orth);
+    snprintf(what, sizeof what,
+             "$\\max |R^\\top R - I|$ over %ld steps to $T = 10^4$, %s; round-off bound $%s$", N,
+             sus_step_method_label(me->type, me->recon, label, sizeof label),
+             notation_g(orth, 2).s);
     ledger_add_bound(id, "(extension)", what, ok ? l.orth : INFINITY, orth, 0, LEDGER_EXTENSION);
 }
 
@@ -159,8 +169,8 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
  * that run's (the fastest setting that reached it), not one from theory: these are regression
  * points at the large steps where a defect shows that the asymptotic order lines cannot see (a
  * quaternion series one degree short, E no longer restored). Paper's body only: a step count
- * belongs to one body's time scale. E: each step evaluates E twice, divides, takes a root and scales: at most
- * 8 roundings of E per step that need not cancel, 8 N u E0. */
+ * belongs to one body's time scale. E: each step evaluates E twice, divides, takes a root and
+ * scales: at most 8 roundings of E per step that need not cancel, 8 N u E0. */
 static const struct {
     const char *method;
     long steps;
@@ -176,7 +186,7 @@ static const struct {
 static void recommended_settings(const sus_model *m, const sus_exact *ex, const double w_T[2],
                                  const double R_T[3][3])
 {
-    char id[96], what[256];
+    char id[96], what[400];
     for (size_t i = 0; i < sizeof RECOMMENDED / sizeof RECOMMENDED[0]; i++) {
         const sus_step_method *me = sus_step_method_by_name(RECOMMENDED[i].method);
         if (!me)
@@ -184,59 +194,64 @@ static void recommended_settings(const sus_model *m, const sus_exact *ex, const 
         const long N = RECOMMENDED[i].steps;
         last_row l;
         const int ok = run(m, ex, me->type, me->recon, T_ORD, N, 1, &l) == 0;
-        const double err = !ok ? INFINITY : RECOMMENDED[i].attitude ? sus_so3_dist(R_T, l.R)
-                                                                    : hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
+        const double err = !ok                       ? INFINITY
+                           : RECOMMENDED[i].attitude ? sus_so3_dist(R_T, l.R)
+                                                     : hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
         snprintf(id, sizeof id, "recommended-%s-%s-%ld", RECOMMENDED[i].attitude ? "attitude" : "w",
                  me->type->name, N);
-        snprintf(what, sizeof what, "%s at t = 50, %s with %ld steps (eps %.4g), an earlier bench run's "
-                 "setting for %.0e: at most that",
-                 RECOMMENDED[i].attitude ? "(MetMat) dist(R(50), R_N)" : "|w(50) - w_N|", me->type->name, N,
-                 T_ORD / (double)N, RECOMMENDED[i].level);
+        snprintf(
+            what, sizeof what,
+            "%s at $t = 50$, %s with %ld steps ($\\varepsilon = %.4g$), an earlier bench run's "
+            "setting for $%s$: at most that",
+            RECOMMENDED[i].attitude ? "the distance \\eqref{MetMat} $\\mathrm{dist}(R(50), R_N)$"
+                                    : "$|\\omega(50) - \\omega_N|$",
+            me->type->name, N, T_ORD / (double)N, notation_g(RECOMMENDED[i].level, 1).s);
         ledger_add_bound(id, "(make bench, earlier run)", what, err, RECOMMENDED[i].level, 0,
                          LEDGER_EXTENSION);
         const double yard = 8.0 * (double)N * DBL_EPSILON * l.e0;
         snprintf(id, sizeof id, "recommended-energy-%s-%ld", me->type->name, N);
-        snprintf(what, sizeof what, "max |E - E0| over the same run (%s, eps %.4g): E restored, bound 8 N "
-                                    "u E0 = %.2g",
-                 me->type->name, T_ORD / (double)N, yard);
-        ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0, LEDGER_EXTENSION);
+        snprintf(
+            what, sizeof what,
+            "$\\max |E - E_0|$ over the same run (%s, $\\varepsilon = %.4g$): $E$ restored, bound "
+            "$8 N u E_0 = %s$",
+            me->type->name, T_ORD / (double)N, notation_g(yard, 2).s);
+        ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0,
+                         LEDGER_EXTENSION);
     }
 }
 
-void highorder_claims(const sus_model *m, const sus_exact *ex)
+/* The reference R(50) against the independent long-double Magnus integration along the
+ * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17; each
+ * matrix is rounded to double once, so ~1e-16 is the floor of the comparison): <= 1e-15, a tenth
+ * of the 1e-14 that would blur errors of 1e-12 by 1%; then the recommended settings against it. */
+void highorder_reference_claims(const sus_model *m, const sus_exact *ex)
 {
     double w_T[2], R_T[3][3], w_ref[2];
+    double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     sus_exact_omega(ex, T_ORD, w_T);
     sus_refatt_precise(m, ex->w0, T_ORD, w_ref, R_T);
-
-    /* The reference R(50) against the independent long-double Magnus integration along the
-     * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17;
-     * each matrix is rounded to double once, so ~1e-16 is the floor of the comparison). The bound
-     * is 1e-15: a tenth of the 1e-14 that would blur errors of 1e-12 by 1%. */
-    {
-        double Rm[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        sus_magnus4(ex, 0.0, T_ORD, 4000, Rm);
-        ledger_add("highorder-reference-attitude", "(method)",
-                   "dist(R_ref(50), R_magnus(50)): long-double Taylor (order 28) on (ContDyn) + quaternion "
-                   "vs long-double "
-                   "Magnus-4 (Richardson) along the closed form; claimed <= 1e-15",
-                   sus_so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
-        ledger_add("highorder-reference-omega", "(method)",
-                   "|w_ref(50) - w_exact(50)|: the reference's w against the closed form, claimed <= 4 u "
-                   "|w| ~ 1e-15 "
-                   "(each side rounds a few times)",
-                   hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
-    }
-
+    sus_magnus4(ex, 0.0, T_ORD, 4000, Rm);
+    ledger_add("highorder-reference-attitude", "(method)",
+               "$\\mathrm{dist}(R_\\mathrm{ref}(50), R_\\mathrm{magnus}(50))$: long-double Taylor "
+               "(order 28) on \\eqref{ContDyn} and the quaternion against long-double Magnus-4 "
+               "(Richardson) along the closed form; claimed $\\le 10^{-15}$",
+               sus_so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
+    ledger_add(
+        "highorder-reference-omega", "(method)",
+        "$|\\omega_\\mathrm{ref}(50) - \\omega_\\mathrm{exact}(50)|$: the reference's $\\omega$ "
+        "against the closed form, claimed $\\le 4\\,u |\\omega| \\sim 10^{-15}$ (each side rounds "
+        "a few times)",
+        hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
     recommended_settings(m, ex, w_T, R_T);
-    global_order_claims();
-    for (int i = 0; i < sus_step_method_count(); i++) {
-        const sus_step_method *me = sus_step_method_get(i);
-        const expected_order *eo = expected_order_of(me->type->name);
-        if (!eo || me->paper_ref)
-            continue; /* missing: claims_methods.c fails it; the paper's methods: claims.c */
-        if (me->type->apply_order) /* a truncated series: against its own truncation */
-            taylor_control(me, eo->p);
-        long_run(m, ex, me);
-    }
+}
+
+void highorder_method_claims(const sus_model *m, const sus_exact *ex, int i)
+{
+    const sus_step_method *me = sus_step_method_get(i);
+    const expected_order *eo = expected_order_of(me->type->name);
+    if (!eo || me->paper_ref)
+        return; /* missing: claims_methods.c fails it; the paper's methods: claims_consistency.c */
+    if (me->type->apply_order) /* a truncated series: against its own truncation */
+        taylor_control(me, eo->p);
+    long_run(m, ex, me);
 }

@@ -1,12 +1,15 @@
-/* Ledger rows of the high-order methods (compositions, Taylor series): their global orders on
- * every body (claims_global.c, called from here), the Taylor methods' control of p against p - 1,
- * the structure they keep at T = 1e4, the bench's recommended settings, and the accuracy of the
- * long-double reference attitude that judges them. */
+/* Ledger rows of the high-order methods (compositions, Taylor series): the Taylor methods'
+ * control of p against p - 1, the structure they keep at T = 1e4, the bench's recommended
+ * settings, and the accuracy of the long-double reference attitude that judges them (their
+ * global orders on every body: claims_global.h). */
 #ifndef SUSLOV_CLAIMS_HIGHORDER_H
 #define SUSLOV_CLAIMS_HIGHORDER_H
 
 #include "exact.h"
 
-void highorder_claims(const sus_model *m, const sus_exact *ex);
+/* The reference attitude at t = 50 and the recommended settings checked against it. */
+void highorder_reference_claims(const sus_model *m, const sus_exact *ex);
+/* The control and the long run of the i-th registered method, if it is one of ours. */
+void highorder_method_claims(const sus_model *m, const sus_exact *ex, int i);
 
 #endif

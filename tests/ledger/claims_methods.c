@@ -29,6 +29,7 @@
 #include "driver.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "orderfit.h"
 #include "registry.h"
 #include "so3.h"
@@ -50,7 +51,8 @@ static double size_of(const claims_body *d, int q)
 }
 
 /* The order of quantity q's error curve, above the floors of a method that rounds as t does. */
-static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q, const double *err)
+static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q,
+                            const double *err)
 {
     const claims_rounding k = {t->implicit, t->conserves_energy && !t->implicit, t->substeps};
     double floor[NE];
@@ -94,23 +96,30 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
         order_summary_add(&sum[0], p, eo->p, d->b.name);
         order_summary_add(&sum[1], order_on(d, me->type, 1, err[k][1]), eo->s, d->b.name);
         for (int r = 0; r < SUS_RECON_COUNT; r++)
-            order_summary_add(&sum[2 + r], order_of_pair(order_on(d, me->type, 2 + r, err[k][2 + r]), p),
+            order_summary_add(&sum[2 + r],
+                              order_of_pair(order_on(d, me->type, 2 + r, err[k][2 + r]), p),
                               eo->so3[r], d->b.name);
     }
     char id[96], what[160];
     snprintf(id, sizeof id, "method-p-%s", me->type->name);
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    ledger_order_line(id, "p: local w error slope - 1", me->type->name, &sum[0], eo->p, eo->ref, truth);
+    ledger_order_line(id, "$p$: local $\\omega$ error slope $- 1$", me->type->name, &sum[0], eo->p,
+                      eo->ref, truth);
     snprintf(id, sizeof id, "method-s-%s", me->type->name);
-    ledger_order_line(id, "s: local lambda error slope - 1", me->type->name, &sum[1], eo->s, eo->ref, truth);
+    ledger_order_line(id, "$s$: local $\\lambda$ error slope $- 1$", me->type->name, &sum[1], eo->s,
+                      eo->ref, truth);
     for (int r = 0; r < SUS_RECON_COUNT; r++) {
-        /* TeoL is about the Cayley reconstruction of Algorithm 5.1; the symmetric ones are ours */
+        /* Proposition 5.1 is about the Cayley reconstruction of Algorithm 5.1; the symmetric ones
+         * are ours */
         const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
         snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
-        snprintf(what, sizeof what, "SO(3) order min(r, p), r: local (MetMat) error slope - 1, %s",
+        snprintf(what, sizeof what,
+                 "$\\mathrm{SO}(3)$ order $\\min(r, p)$, $r$: local \\eqref{MetMat} error slope "
+                 "$- 1$, %s",
                  SUS_RECON_NAMES[r]);
         ledger_order_line(id, what, me->type->name, &sum[2 + r], eo->so3[r],
-                          paper ? "TeoL" : "TeoL (extension)", paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
+                          paper ? "\\PaperRefOr{TeoL}" : "\\PaperRefOr{TeoL}, extension",
+                          paper ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
 }
 
@@ -118,7 +127,8 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
 
 /* eps k = STRUCT_EPS k_paper, the body's own time (eps = 0.05 on the paper's body) */
 #define STRUCT_EPS 0.05
-#define STRUCT_STEPS 2000L    /* T k = 100 k_paper: the transient and the approach to the steady rotation */
+#define STRUCT_STEPS                                                                               \
+    2000L /* T k = 100 k_paper: the transient and the approach to the steady rotation */
 
 typedef struct {
     const sus_model *m;
@@ -184,51 +194,56 @@ static void method_structure(const sus_step_method *me)
          * the size of E's terms (claims_energy_terms); an implicit root's rounding dx = J^-1 r
          * (J ~ I_m) moves E by <I_m w, dx> ~ <w, r>, r of size u |I_m| |w|: u e again, not
          * amplified by cond(I_m) */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms, d->b.name);
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms,
+                  d->b.name);
     }
-    char id[96], q[400];
-    const char *ref = me->paper_ref ? "(DSP), Algorithm (algo)" : "(extension)";
+    char id[96], q[640];
+    const char *ref = me->paper_ref ? "\\eqref{DSP}, \\PaperRefOr{algo}" : "(extension)";
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
     snprintf(id, sizeof id, "method-w3-%s", me->type->name);
-    snprintf(q, sizeof q, "max |w3| over %ld steps of eps k = %g k_paper, %s, worst of %d bodies (seed %u) "
-             "%s: exactly 0",
+    snprintf(q, sizeof q,
+             "$\\max |\\omega_3|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s, "
+             "the worst of %d bodies (seed %u), %s: exactly 0",
              STRUCT_STEPS, STRUCT_EPS, me->type->name, BODIES_COUNT, BODIES_SEED, w3.body);
     /* every stepper writes w3 = 0.0 (the second equation of (DSP)): a check of the code, which
      * no value of the paper's can fail, so not evidence */
     ledger_add(id, ref, q, w3.value, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
     char label[64];
-    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps k = %g k_paper, %s, R %s, worst of %d "
-             "bodies %s; round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS,
-             sus_step_method_label(t, me->recon, label, sizeof label),
-             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion" : "by compensated products",
-             BODIES_COUNT, orth.body, orth.bound);
+    snprintf(q, sizeof q,
+             "$\\max |R^\\top R - I|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, "
+             "%s, $R$ %s, the worst of %d bodies, %s; round-off bound $%s$",
+             STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
+             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
+                                              : "by compensated products",
+             BODIES_COUNT, orth.body, notation_g(orth.bound, 2).s);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
     if (!t->conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
-    snprintf(q, sizeof q,
-             "max |E - E0| over %ld steps of eps k = %g k_paper, %s (%d substeps), worst of %d bodies %s; "
-             "bound 8 u N s e, e = max 1/2 sum |w_i I_ij w_j| (E's terms)",
-             STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
+    snprintf(
+        q, sizeof q,
+        "$\\max |E - E_0|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s (%d "
+        "substeps), the worst of %d bodies, %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
+        "\\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of $E$)",
+        STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
-    ledger_add_bound(id, me->paper_ref ? "Fig. 1(f), (DSP)" : ref, q, en.value, en.bound, 0, truth);
+    ledger_add_bound(id, me->paper_ref ? "\\PaperRefOr{Fig1}, panel (f); \\eqref{DSP}" : ref, q,
+                     en.value, en.bound, 0, truth);
 }
 
-void methods_claims(void)
+void methods_claims_of(int i)
 {
-    for (int i = 0; i < sus_step_method_count(); i++) {
-        const sus_step_method *me = sus_step_method_get(i);
-        const expected_order *eo = expected_order_of(me->type->name);
-        if (!eo) {
-            char id[96];
-            snprintf(id, sizeof id, "expected-order-known-%s", me->type->name);
-            ledger_add_bound(id, "(tests/ledger/expected_orders.c)", "the method has a stated order to test "
-                                                              "against: "
-                             "1 when it does", 0.0, 1.0, 1, LEDGER_EXTENSION);
-            continue;
-        }
-        method_orders(me, eo);
-        method_structure(me);
+    const sus_step_method *me = sus_step_method_get(i);
+    const expected_order *eo = expected_order_of(me->type->name);
+    if (!eo) {
+        char id[96];
+        snprintf(id, sizeof id, "expected-order-known-%s", me->type->name);
+        ledger_add_bound(id, "\\texttt{tests/ledger/expected\\_orders.c}",
+                         "the method has a stated order to test against: 1 when it does", 0.0, 1.0,
+                         1, LEDGER_EXTENSION);
+        return;
     }
+    method_orders(me, eo);
+    method_structure(me);
 }

@@ -5,7 +5,8 @@
 
 #include "stepper.h"
 
-void methods_claims(void);
+/* The lines of the i-th registered method. */
+void methods_claims_of(int i);
 
 /* The round-off bound on |R^T R - I| after `steps` steps of eps with |w| <= size_w, by the method's
  * attitude form (the reasons are at its definition). */

@@ -19,7 +19,8 @@ static double slope_over(const double *eps, const double *err, int lo, int hi)
 }
 
 /* The last index of the octave of candidates that starts at lo (eps falls with j), or -1 when the
- * candidates stop before an octave: the grids are powers of 2^(1/4) (claims_window.c's rounding). */
+ * candidates stop before an octave: the grids are powers of 2^(1/4) (claims_window.c's rounding).
+ */
 static int octave_from(const double *eps, const int *cand, int n, int lo)
 {
     for (int j = lo; j < n && cand[j]; j++)
@@ -110,7 +111,7 @@ void order_summary_add(order_summary *s, curve_order c, double expected, const c
 {
     if (c.at_roundoff) {
         const size_t len = strlen(s->roundoff_bodies);
-        snprintf(s->roundoff_bodies + len, sizeof s->roundoff_bodies - len, "%s%s (<= %.3g)",
+        snprintf(s->roundoff_bodies + len, sizeof s->roundoff_bodies - len, "%s%s ($\\le %.3g$)",
                  s->roundoff++ ? ", " : "", body_name, c.eps_ok);
         return;
     }
@@ -143,8 +144,10 @@ static void roundoff_note(const order_summary *s, char *buf, size_t len)
 {
     buf[0] = '\0';
     if (s->roundoff)
-        snprintf(buf, len, "; no order on %d (error below the round-off floor at every eps k stepped, "
-                           "up to): %s", s->roundoff, s->roundoff_bodies);
+        snprintf(buf, len,
+                 "; no order on %d (error below the round-off floor at every $\\varepsilon k$ "
+                 "stepped, up to): %s",
+                 s->roundoff, s->roundoff_bodies);
 }
 
 /* "; k with only a lower estimate ...": the fallback bodies beside the windows of one slope. */
@@ -152,38 +155,44 @@ static void fallback_note(const order_summary *s, char *buf, size_t len)
 {
     buf[0] = '\0';
     if (s->fallback)
-        snprintf(buf, len, "; %d reach round-off before one slope (lower estimate over the last octave "
-                           "above it, >= p/2): %.2f .. %.2f",
+        snprintf(buf, len,
+                 "; %d reach round-off before one slope (lower estimate over the last octave above "
+                 "it, $\\ge p/2$): %.2f to %.2f",
                  s->fallback, s->fb_lo, s->fb_hi);
 }
 
-void ledger_order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
-                   const order_summary *s, int expected, const char *ref, ledger_assert truth)
+void ledger_order_line_at(const char *file, int line, const char *id, const char *what,
+                          const char *name, const order_summary *s, int expected, const char *ref,
+                          ledger_assert truth)
 {
-    char q[512], note[200], fb[128];
+    char q[640], note[320], fb[200];
     const int measured = BODIES_COUNT - s->roundoff;
     roundoff_note(s, note, sizeof note);
     if (s->unmeasured || !measured) {
-        snprintf(q, sizeof q, "%s, %s: no order on %s (%d of %d bodies): fewer than 3 steps taken, or "
-                              "fewer than 3 consecutive errors above the round-off floor%s",
+        snprintf(q, sizeof q,
+                 "%s, %s: no order on %s (%d of %d bodies): fewer than 3 steps taken, or "
+                 "fewer than 3 consecutive errors above the round-off floor%s",
                  what, name, s->unmeasured ? s->unmeasured_body : "any",
                  s->unmeasured ? s->unmeasured : measured, BODIES_COUNT, note);
         ledger_add_bound_at(file, line, id, ref, q, -INFINITY, expected - 1.0, 1, truth);
         return;
     }
     if (!s->plateaus || s->fb_lo < 0.5 * expected) {
-        snprintf(q, sizeof q, "%s, %s >= p/2 (lower estimate: not p vs p-1); lowest of %d of %d bodies "
-                              "(seed %u) %s; %d reach round-off before one slope, fit on the last octave "
-                              "above it; range %.2f .. %.2f%s",
+        snprintf(q, sizeof q,
+                 "%s, %s $\\ge p/2$ (lower estimate: not $p$ against $p-1$); lowest of %d of %d "
+                 "bodies (seed %u) %s; %d reach round-off before one slope, fit on the last octave "
+                 "above it; range %.2f to %.2f%s",
                  what, name, measured, BODIES_COUNT, BODIES_SEED, s->fb_body, s->fallback, s->fb_lo,
                  s->fb_hi, note);
         ledger_add_bound_at(file, line, id, ref, q, s->fb_lo, 0.5 * expected, 1, truth);
         return;
     }
     fallback_note(s, fb, sizeof fb);
-    snprintf(q, sizeof q, "%s, %s; worst of %d of %d bodies (seed %u) with one slope, %s, window eps k "
-                          "%.3g .. %.3g; range %.2f .. %.2f%s%s",
-             what, name, s->plateaus, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi, s->lo,
-             s->hi, fb, note);
+    snprintf(
+        q, sizeof q,
+        "%s, %s; worst of %d of %d bodies (seed %u) with one slope, %s, window $\\varepsilon k "
+        "\\in [%.3g, %.3g]$; range %.2f to %.2f%s%s",
+        what, name, s->plateaus, BODIES_COUNT, BODIES_SEED, s->worst_body, s->eps_lo, s->eps_hi,
+        s->lo, s->hi, fb, note);
     ledger_add_at(file, line, id, ref, q, s->worst, expected, WINDOW_ORDER_TOL, truth);
 }

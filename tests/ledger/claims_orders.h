@@ -10,7 +10,7 @@
 typedef struct {
     double order;             /* NaN: fewer than 3 points above round-off */
     int plateau;              /* 1: a window of one slope, 0: the lower estimate */
-    int at_roundoff;          /* 1: 3 or more steps taken, but fewer than 3 errors above the floor */
+    int at_roundoff; /* 1: 3 or more steps taken, but fewer than 3 errors above the floor */
     double eps_lo, eps_hi;    /* the window, in eps k */
     double eps_ok;            /* the largest eps k at which the step was taken */
 } curve_order;
@@ -39,7 +39,7 @@ typedef struct {
     int unmeasured;           /* bodies with fewer than 3 steps taken */
     const char *unmeasured_body;
     int roundoff;             /* bodies whose error is at round-off wherever a step is taken */
-    char roundoff_bodies[96]; /* their names, each with the largest eps k stepped */
+    char roundoff_bodies[160]; /* their names, each with the largest eps k stepped */
 } order_summary;
 
 order_summary order_summary_new(void);
@@ -52,7 +52,8 @@ void order_summary_add(order_summary *s, curve_order c, double expected, const c
  * round-off are named and carry no order. The line fails when a body took fewer than 3 steps or
  * no body has an order. */
 #define ledger_order_line(...) ledger_order_line_at(__FILE__, __LINE__, __VA_ARGS__)
-void ledger_order_line_at(const char *file, int line, const char *id, const char *what, const char *name,
-                   const order_summary *s, int expected, const char *ref, ledger_assert truth);
+void ledger_order_line_at(const char *file, int line, const char *id, const char *what,
+                          const char *name, const order_summary *s, int expected, const char *ref,
+                          ledger_assert truth);
 
 #endif

@@ -30,15 +30,16 @@ static const claims_rounding EXPLICIT = {0, 0, 1};
 typedef struct {
     const char *id;
     const sus_butcher *tab;
-    int cayley;     /* 1: the table on xi with R_{k+1} = R_k cay(eps xi_k^); 2: the table on (R, V) for
-                     * the velocity, the same attitude */
-    int r, l;       /* what theory gives: the table's order for both, or r = 1 (TeoL) and l = the table's */
+    int cayley; /* 1: the table on xi with R_{k+1} = R_k cay(eps xi_k^); 2: the table on (R, V) for
+                 * the velocity, the same attitude */
+    int r,
+        l; /* what theory gives: the table's order for both, or r = 1 (TeoL) and l = the table's */
 } integrator;
 
 /* One step of the integrator from the exact state at start t (R(t_k), V = R w^) over ref's eps: the
  * errors of R, of xi = vee(R^T V) and of lambda(xi) against the exact solution at t_k + eps. */
-static void step_errors(const integrator *it, const claims_body *d, sus_unreduced *u, const double Rk[3][3],
-                        const sus_exp_local_ref *ref, double e[3])
+static void step_errors(const integrator *it, const claims_body *d, sus_unreduced *u,
+                        const double Rk[3][3], const sus_exp_local_ref *ref, double e[3])
 {
     double W[3][3], R[3][3], V[3][3], Rx[3][3], xi[3];
     sus_so3_hat(ref->w_k, W);
@@ -52,7 +53,8 @@ static void step_errors(const integrator *it, const claims_body *d, sus_unreduce
         sus_unreduced_rk(u, it->tab, ref->eps, R, V);
     sus_mat3_mul(Rx, Rk, ref->Phi);
     sus_unreduced_xi(R, V, xi);
-    const double dxi[3] = {ref->w_exact[0] - xi[0], ref->w_exact[1] - xi[1], ref->w_exact[2] - xi[2]};
+    const double dxi[3] = {ref->w_exact[0] - xi[0], ref->w_exact[1] - xi[1],
+                           ref->w_exact[2] - xi[2]};
     e[0] = sus_so3_dist(Rx, R);
     e[1] = sus_vec3_norm(dxi);
     e[2] = fabs(ref->lambda_exact - sus_lagmult(&d->m, xi));
@@ -92,26 +94,39 @@ static void body_orders(const integrator *it, const claims_body *d, curve_order 
  * l and not min(r, l). */
 static void claims_lines(const integrator *it, const order_summary sum[3], double gap)
 {
-    char id[64], what[200];
+    char id[64], what[320];
     snprintf(id, sizeof id, "propocons1-r-%s", it->id);
-    ledger_order_line(id, "r: local slope of (MetMat) dist(R(t_k+eps), R_{k+1}) minus 1 on (LdAeqs)",
-                      it->id, &sum[0], it->r, "Def. UnredConsis (extension)", LEDGER_EXTENSION);
+    ledger_order_line(id,
+                      "$r$: local slope of the distance \\eqref{MetMat} $\\mathrm{dist}(R(t_k+"
+                      "\\varepsilon), R_{k+1})$ minus 1 on \\eqref{LdAeqs}",
+                      it->id, &sum[0], it->r, "\\PaperRefOr{UnredConsis}, extension",
+                      LEDGER_EXTENSION);
     snprintf(id, sizeof id, "propocons1-reduced-%s", it->id);
-    snprintf(what, sizeof what, "order of xi_k = vee(R_k^T V_k) (= l, left-trivialized velocity: PropoCons1 "
-             "holds by Def. UnredConsis 2), min(r, l) = %d; l = %d", it->r < it->l ? it->r : it->l, it->l);
-    ledger_order_line(id, what, it->id, &sum[1], it->l, "PropoCons1", LEDGER_REPRODUCED);
+    snprintf(what, sizeof what,
+             "order of $\\xi_k = (R_k^\\top V_k)^\\vee$ ($= l$, the left-trivialized velocity: "
+             "\\PaperRefOr{PropoCons1} holds by \\PaperRefOr{UnredConsis}, 2), $\\min(r, l) = %d$; "
+             "$l = %d$",
+             it->r < it->l ? it->r : it->l, it->l);
+    ledger_order_line(id, what, it->id, &sum[1], it->l, "\\PaperRefOr{PropoCons1}",
+                      LEDGER_REPRODUCED);
     snprintf(id, sizeof id, "propocons1-lambda-%s", it->id);
-    snprintf(what, sizeof what, "s of lambda(xi_{k+1}) (LagMult): it carries over with l = %d", it->l);
-    ledger_order_line(id, what, it->id, &sum[2], it->l, "PropoCons1", LEDGER_REPRODUCED);
+    snprintf(what, sizeof what,
+             "$s$ of $\\lambda(\\xi_{k+1})$ \\eqref{LagMult}: it carries over with $l = %d$",
+             it->l);
+    ledger_order_line(id, what, it->id, &sum[2], it->l, "\\PaperRefOr{PropoCons1}",
+                      LEDGER_REPRODUCED);
     if (it->r == it->l)
         return;
     /* the reduced order is l, not min(r, l); PropoCons1 itself holds by definition (the reduced
      * variable is the velocity whose order is l), so this shows only that */
     snprintf(id, sizeof id, "propocons1-not-min-%s", it->id);
-    snprintf(what, sizeof what, "least over %d bodies of the reduced order minus r for %s: the reduced "
-             "order is l, not min(r, l) (PropoCons1 holds by Def. UnredConsis 2); l - r = %d expected",
-             BODIES_COUNT, it->id, it->l - it->r);
-    ledger_add_bound(id, "PropoCons1", what, gap, 1.5, 1, LEDGER_REPRODUCED);
+    snprintf(
+        what, sizeof what,
+        "least over %d bodies of the reduced order minus $r$ for %s: the reduced order is $l$, "
+        "not $\\min(r, l)$ (\\PaperRefOr{PropoCons1} holds by \\PaperRefOr{UnredConsis}, 2); $l "
+        "- r = %d$ expected",
+        BODIES_COUNT, it->id, it->l - it->r);
+    ledger_add_bound(id, "\\PaperRefOr{PropoCons1}", what, gap, 1.5, 1, LEDGER_REPRODUCED);
 }
 
 void propocons1_claims(void)

@@ -15,6 +15,7 @@
 #include "claims_quad.h"
 
 #include "ledger.h"
+#include "notation.h"
 #include "mat3.h"
 #include "orderfit.h"
 #include "perturbation.h"
@@ -286,19 +287,21 @@ static void remark_line(const qmodel *q, const sus_exact *ex, int p, const char 
         }
         err[j] = (double)e;
     }
-    char id[64], quantity[400];
+    char id[64], quantity[640];
     snprintf(id, sizeof id, "remark55-formula-%s-quad", name);
     snprintf(
         quantity, sizeof quantity,
-        "s with the shift from p + 1 = %d terms (e_{p+1} .. e_{2p+1}), in binary128 (u = 2^-112), "
-        "%s: "
-        "the remark's s = 2p + 1; error %.2g at eps = 2^-10; fit over eps in [2^-10, 2^-2], errors "
-        "above 1000 u |lambda|",
-        p + 1, name, err[NJ - 1]);
+        "$s$ with the shift from $p + 1 = %d$ terms ($e_{p+1}, \\dots, e_{2p+1}$), in binary128 "
+        "($u = 2^{-112}$), %s: the remark's $s = 2p + 1$; error $%s$ at $\\varepsilon = "
+        "2^{-10}$; fit over $\\varepsilon \\in [2^{-10}, 2^{-2}]$, errors above $1000\\,u "
+        "|\\lambda|$",
+        p + 1, name, notation_g(err[NJ - 1], 2).s);
     double last;
     const double s = qfit(eps, err, 1000.0 * QU * SUS_EXP_SIZE_LAMBDA, 0, &last) - 1.0;
     last_number(id, last - 1.0);
-    ledger_add(id, truth == LEDGER_EXTENSION ? "RemarkLambda (extension: control)" : "RemarkLambda",
+    ledger_add(id,
+               truth == LEDGER_EXTENSION ? "\\PaperRefOr{RemarkLambda}, extension: control"
+                                         : "\\PaperRefOr{RemarkLambda}",
                quantity, s, 2 * p + 1, ORDER_TOL, truth);
 }
 
@@ -319,21 +322,22 @@ static void sec6_line(const qmodel *q, const sus_model *m, const sus_exact *ex, 
         }
         err[j] = (double)e;
     }
-    char id[64], quantity[400];
+    char id[64], quantity[640];
     snprintf(id, sizeof id, "sec6-multiplier-order-%s-quad", name);
     snprintf(
         quantity, sizeof quantity,
-        "order of sup |lambda_pert - lambda(xi)| of (PerFin2) along the blended curve (%d times a "
-        "period) from x0 = w(0, 3, 7), in binary128, %s; %.2g at eps = 2^-10; fit over eps in "
-        "[2^-10, 2^-2], sizes above 1000 u |w| 3 / eps",
-        NSAMP + 1, name, err[NJ - 1]);
+        "order of $\\sup |\\lambda_\\mathrm{pert} - \\lambda(\\xi)|$ of \\eqref{PerFin2} along "
+        "the blended curve (%d times a period) from $x_0 = \\omega(0), \\omega(3), \\omega(7)$, "
+        "in binary128, %s; $%s$ at $\\varepsilon = 2^{-10}$; fit over $\\varepsilon \\in "
+        "[2^{-10}, 2^{-2}]$, sizes above $1000\\,u |\\omega| \\cdot 3/\\varepsilon$",
+        NSAMP + 1, name, notation_g(err[NJ - 1], 2).s);
     /* the floor of perturbation.h's FLOOR_G with binary128's u */
     double last;
     const double s = qfit(eps, err, 1000.0 * QU * SUS_EXP_SIZE_W * 3.0, 1, &last);
     last_number(id, last);
     ledger_add(id,
-               truth == LEDGER_EXTENSION ? "PerTh (appendix) (extension: control)"
-                                         : "PerTh (appendix)",
+               truth == LEDGER_EXTENSION ? "\\PaperRefOr{PerTh}, appendix; extension: control"
+                                         : "\\PaperRefOr{PerTh}, appendix",
                quantity, s, p, ORDER_TOL, truth);
 }
 

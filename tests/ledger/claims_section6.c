@@ -13,6 +13,7 @@
 #include "claims_fit.h"
 #include "expected_orders.h"
 #include "ledger.h"
+#include "notation.h"
 #include "orderfit.h"
 #include "perturbation.h"
 #include "registry.h"
@@ -36,7 +37,10 @@ static const double TK6[] = {0.0, 3.0, 7.0};
 #define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
 #define ATT_TOL SUS_EXP_PERTURB_ATT_TOL
 
-static double norm2(const double a[2], const double b[2]) { return hypot(a[0] - b[0], a[1] - b[1]); }
+static double norm2(const double a[2], const double b[2])
+{
+    return hypot(a[0] - b[0], a[1] - b[1]);
+}
 
 /* the method's own w-step */
 static void step(const sus_model *m, const sus_stepper_type *st, double eps, const double x0[2],
@@ -115,49 +119,62 @@ static void reduced_runs(const sus_model *m, const sus_exact *ex, const sus_step
 /* Orders without a line (nothing above round-off to test): counted for the companion. */
 static int unmeasured;
 
-static void reduced_lines(const sus_step_method *me, const expected_order *eo, const reduced_data *d)
+static void reduced_lines(const sus_step_method *me, const expected_order *eo,
+                          const reduced_data *d)
 {
     const sus_stepper_type *st = me->type;
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    const char *ext = me->paper_ref ? "" : " (extension: our method)";
-    char id[96], q[400], ref[96];
+    const char *ext = me->paper_ref ? "" : ", extension: our method";
+    char id[96], q[640], ref[200];
     /* rk8pd at abs = rel = 1e-14 over one period, a few dozen steps: ~1e-14 |w| each; the field
      * is exact to Newton's 64 u |x| (perturbation.c). 1e-12 leaves a factor ~30 over both. */
     snprintf(id, sizeof id, "sec6-embedding-%s", st->name);
-    snprintf(q, sizeof q, "max |G(eps,0;x0) - phi(eps,x0)|, period map of x' = h + eps^p d (rk8pd 1e-14; d "
-                          "by Newton, "
-             "%.1f its/eval) vs the %s step, eps = 1, 1/4, 1/16; the unperturbed flow misses by >= %.2g",
-             d->evals ? (double)d->its / (double)d->evals : 0.0, st->name, d->emb_local);
-    snprintf(ref, sizeof ref, "%s%s", "TheoPer", ext);
+    snprintf(q, sizeof q,
+             "$\\max |G(\\varepsilon,0;x_0) - \\phi(\\varepsilon,x_0)|$, period map of $x' = h + "
+             "\\varepsilon^p d$ (rk8pd $10^{-14}$; $d$ by Newton, %.1f iterations per evaluation) "
+             "against the %s step, $\\varepsilon = 1, 1/4, 1/16$; the unperturbed flow misses by "
+             "$\\ge %s$",
+             d->evals ? (double)d->its / (double)d->evals : 0.0, st->name,
+             notation_g(d->emb_local, 2).s);
+    snprintf(ref, sizeof ref, "\\PaperRefOr{TheoPer}%s", ext);
     ledger_add(id, ref, q, d->emb, 0.0, 1e-12, truth);
     snprintf(id, sizeof id, "sec6-size-order-%s", st->name);
-    snprintf(q, sizeof q, "p of sup_t |eps^p d| from x0 = w(0, 3, 7), %s", st->name);
-    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->sup_g, d->loc, NJ6, FLOOR_G, 1, 0.0, eo->p,
-                                         truth);
+    snprintf(
+        q, sizeof q,
+        "$p$ of $\\sup_t |\\varepsilon^p d|$ from $x_0 = \\omega(0), \\omega(3), \\omega(7)$, %s",
+        st->name);
+    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->sup_g, d->loc, NJ6, FLOOR_G, 1, 0.0,
+                                         eo->p, truth);
     /* xi3' is zero by the elimination up to u |xi'| per evaluation, and |xi'| eps <= |w| over a
      * period here, so xi3 stays at a few u |w| (u |w| = 1.8e-16): 1e-15 is ~6 u |w| */
     snprintf(id, sizeof id, "sec6-constraint-%s", st->name);
-    snprintf(q, sizeof q, "max |xi_3| along (PerFin2) from (x0, 0), lambda by (LagElim), rk8pd, eps = 2 .. "
-                          "2^-8, %s; "
-             "(xi_1, xi_2)(eps) = step to %.1e", st->name, d->emb3);
-    snprintf(ref, sizeof ref, "%s%s", "PerTh, (PerFin2)", ext);
+    snprintf(
+        q, sizeof q,
+        "$\\max |\\xi_3|$ along \\eqref{PerFin2} from $(x_0, 0)$, $\\lambda$ by \\eqref{LagElim}, "
+        "rk8pd, $\\varepsilon$ from 2 to $2^{-8}$, %s; $(\\xi_1, \\xi_2)(\\varepsilon) =$ step to "
+        "$%s$",
+        st->name, notation_g(d->emb3, 2).s);
+    snprintf(ref, sizeof ref, "\\PaperRefOr{PerTh}, \\eqref{PerFin2}%s", ext);
     ledger_add(id, ref, q, d->xi3, 0.0, 1e-15, truth);
     snprintf(id, sizeof id, "sec6-perfin2-embedding-%s", st->name);
-    snprintf(ref, sizeof ref, "%s%s", "PerTh (appendix, step 3)", ext);
-    ledger_add(id, ref, "max |(xi_1, xi_2)(eps) - phi(eps, x0)| for the 3-d (PerFin2), same runs; bound as "
-                        "for TheoPer",
+    snprintf(ref, sizeof ref, "\\PaperRefOr{PerTh}, appendix, step 3%s", ext);
+    ledger_add(id, ref,
+               "$\\max |(\\xi_1, \\xi_2)(\\varepsilon) - \\phi(\\varepsilon, x_0)|$ for the "
+               "three-dimensional \\eqref{PerFin2}, same runs; bound as for \\PaperRefOr{TheoPer}",
                d->emb3, 0.0, 1e-12, truth);
     snprintf(id, sizeof id, "sec6-multiplier-order-%s", st->name);
-    snprintf(q, sizeof q, "order of sup |lambda_pert - lambda(xi)| on (PerFin2), force (I_m eps^p d, 0); "
-                          "%.2g at "
-             "eps = 1/16, %s", d->dlam[5], st->name);
+    snprintf(
+        q, sizeof q,
+        "order of $\\sup |\\lambda_\\mathrm{pert} - \\lambda(\\xi)|$ on \\eqref{PerFin2}, force "
+        "$(I_m \\varepsilon^p d, 0)$; $%s$ at $\\varepsilon = 1/16$, %s",
+        notation_g(d->dlam[5], 2).s, st->name);
     /* the multiplier moves by grad lambda . (eps^p d): |grad lambda| ~ 2 |lambda| / |w| */
     double lneed[NJ6];
     for (int j = 0; j < NJ6; j++)
         lneed[j] = d->loc[j] * 2.0 * SUS_EXP_SIZE_LAMBDA / SUS_EXP_SIZE_W;
-    snprintf(ref, sizeof ref, "%s%s", "PerTh (appendix)", ext);
-    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0, eo->p,
-                                         truth);
+    snprintf(ref, sizeof ref, "\\PaperRefOr{PerTh}, appendix%s", ext);
+    unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0,
+                                         eo->p, truth);
     if (st == sus_step_midpoint) {
         ledger_number("SecSixEmbedMid", d->emb);
         ledger_number("SecSixDlamMid", d->dlam[5]);
@@ -171,8 +188,9 @@ static void per11_lines(const sus_model *m, const sus_exact *ex, const sus_step_
 {
     const sus_stepper_type *st = me->type;
     const ledger_assert truth = me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION;
-    char id[96], q[400], ref[96];
-    snprintf(ref, sizeof ref, "Per11%s", me->paper_ref ? "" : " (extension: our method)");
+    char id[96], q[640], ref[200];
+    snprintf(ref, sizeof ref, "\\PaperRefOr{Per11}%s",
+             me->paper_ref ? "" : ", extension: our method");
     for (int r = 0; r < SUS_RECON_COUNT; r++) {
         double att[NJ_SO3] = {0}, all[NJ_SO3] = {0};
         for (int j = 0; j < NJ_SO3; j++) {
@@ -183,15 +201,20 @@ static void per11_lines(const sus_model *m, const sus_exact *ex, const sus_step_
                 double x0[2], a, g;
                 sus_exact_omega(ex, TK6[t], x0);
                 const sus_recon rk = (sus_recon)r;
-                if (sus_exp_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) != SUS_EXP_PERTURB_OK)
+                if (sus_exp_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) !=
+                    SUS_EXP_PERTURB_OK)
                     ledger_die("(Per11) attitude blend");
                 att[j] = fmax(att[j], a);
                 all[j] = fmax(all[j], fmax(a, g));
             }
         }
         snprintf(id, sizeof id, "sec6-per11-%s-%s", SUS_RECON_NAMES[r], st->name);
-        snprintf(q, sizeof q, "order of sup max(|vee(R^T R') - w|, |eps^p d|), geodesic blend on SO(3) x "
-                 "R^2, %s, %s; attitude part %.2g at eps = 1/4", st->name, SUS_RECON_NAMES[r], att[3]);
+        snprintf(
+            q, sizeof q,
+            "order of $\\sup \\max(|(R^\\top R')^\\vee - \\omega|, |\\varepsilon^p d|)$, "
+            "geodesic blend on $\\mathrm{SO}(3) \\times \\mathbb{R}^2$, %s, %s; attitude part $%s$ "
+            "at $\\varepsilon = 1/4$",
+            st->name, SUS_RECON_NAMES[r], notation_g(att[3], 2).s);
         const double floor = fmax(FLOOR_G, FLOOR_ATT);
         unmeasured += !claims_order_or_floor(id, ref, q, d->eps, all, d->loc, NJ_SO3, floor, 1, 0.0,
                                              eo->so3[r], truth);
@@ -201,11 +224,14 @@ static void per11_lines(const sus_model *m, const sus_exact *ex, const sus_step_
          * symmetric reconstructions (the midpoint rule for R' = R w^) */
         const double rexp = r == SUS_RECON_CAYLEY ? 1.0 : 2.0;
         snprintf(id, sizeof id, "sec6-per11-attitude-%s", SUS_RECON_NAMES[r]);
-        snprintf(q, sizeof q, "order of sup |vee(R^T R') - w| alone (SO(3) part of (PerFin1)), midpoint, %s",
-                 SUS_RECON_NAMES[r]);
+        snprintf(
+            q, sizeof q,
+            "order of $\\sup |(R^\\top R')^\\vee - \\omega|$ alone (the $\\mathrm{SO}(3)$ part of "
+            "\\eqref{PerFin1}), midpoint, %s",
+            SUS_RECON_NAMES[r]);
         /* the Introduction promises this bound; the paper states no order for it: ours */
-        claims_order_or_floor(id, "Per11, TeoL (extension)", q, d->eps, att, NULL, NJ_SO3, FLOOR_ATT, 1, 0.0,
-                              rexp, LEDGER_EXTENSION);
+        claims_order_or_floor(id, "\\PaperRefOr{Per11}, \\PaperRefOr{TeoL}, extension", q, d->eps,
+                              att, NULL, NJ_SO3, FLOOR_ATT, 1, 0.0, rexp, LEDGER_EXTENSION);
     }
 }
 
@@ -216,7 +242,8 @@ void section6_claims(const sus_model *m, const sus_exact *ex)
         const sus_step_method *me = sus_step_method_get(i);
         const expected_order *eo = expected_order_of(me->type->name);
         if (!eo)
-            ledger_die("expected order (tests/ledger/expected_orders.c has no line for a registry method)");
+            ledger_die("expected order (tests/ledger/expected_orders.c has no line for a registry "
+                       "method)");
         reduced_data d;
         reduced_runs(m, ex, me->type, &d);
         reduced_lines(me, eo, &d);

@@ -193,18 +193,18 @@ static void regularity_lines(void)
      * a thousand roundings of det I_m is far from that and from a sign change. */
     const double bound = 1000.0 * SUS_U;
     snprintf(q, sizeof q,
-             "min over every step of the runs (%d bodies, %d starts each, eps = 2^-3 .. 1) of det J "
-             "/ det I_m, J the block of (REGLOC), midpoint DSP: the step is defined (regular) "
-             "where the paper steps; >= 1000 u",
+             "min over every step of the runs (%d bodies, %d starts each, $\\varepsilon$ from "
+             "$2^{-3}$ to 1) of $\\det J / \\det I_m$, $J$ the block of \\eqref{REGLOC}, midpoint "
+             "DSP: the step is defined (regular) where the paper steps; $\\ge 1000\\,u$",
              BODIES_COUNT, SUS_EXP_SENS_NSTATE);
-    ledger_add_bound("regloc-regular-midpoint", "REGLOC", q, regularity(0), bound, 1,
+    ledger_add_bound("regloc-regular-midpoint", "\\eqref{REGLOC}", q, regularity(0), bound, 1,
                      LEDGER_REPRODUCED);
-    snprintf(
-        q, sizeof q,
-        "the same for (taudyn), the upper-left block of (RegCond) with the Cayley map (the "
-        "bordered matrix is regular exactly when it is), variational; >= 1000 u");
-    ledger_add_bound("regcond-regular-variational", "RegCond, REGLOC", q, regularity(1), bound, 1,
-                     LEDGER_REPRODUCED);
+    ledger_add_bound(
+        "regcond-regular-variational", "\\eqref{RegCond}, \\eqref{REGLOC}",
+        "the same for \\eqref{taudyn}, the upper-left block of \\eqref{RegCond} with the "
+        "Cayley map (the bordered matrix is regular exactly when it is), variational; "
+        "$\\ge 1000\\,u$",
+        regularity(1), bound, 1, LEDGER_REPRODUCED);
 }
 
 /* The numbers the companion quotes. */
@@ -246,6 +246,11 @@ static void numbers(const sens_row *rows)
     ledger_number("SensWellPct", 100.0 * WELL);
     ledger_number("SensMidWellEps", mid_well);
     ledger_number("SensVarWellEps", var_well);
+}
+
+/* The paper's body: Figure 2's run and the three largest steps, for the companion. */
+static void paper_case_numbers(void)
+{
     /* Figure 2's run (the paper's body, its w0, eps = 1, T = 200): where each method ends, for
      * the reader who reads the published panels (a), (b) and (d) */
     const sens_case *p = &cases[0];
@@ -282,6 +287,7 @@ void sensitivity_claims(const char *tsv)
     write_table(tsv, rows);
     regularity_lines();
     numbers(rows);
+    paper_case_numbers();
     /* The energy statement, decided by theory before measuring: the midpoint rule conserves E
      * exactly (its change is round-off) and the variational integrator does not, so the
      * variational change is never the smaller, at any step, body or start: 0 cases. */
@@ -290,12 +296,13 @@ void sensitivity_claims(const char *tsv)
         energy += rows[i].energy;
         n += rows[i].n;
     }
-    char q[300];
+    char q[400];
     snprintf(
         q, sizeof q,
-        "cases (of %d: %d bodies, %d starts each, eps = 2^-3 .. 2^3, both runs defined) where the "
-        "variational |E_N - E_0| is below the midpoint rule's: theory gives none",
+        "cases (of %d: %d bodies, %d starts each, $\\varepsilon$ from $2^{-3}$ to $2^3$, both runs "
+        "defined) where the variational $|E_N - E_0|$ is below the midpoint rule's: theory gives "
+        "none",
         n, BODIES_COUNT, SUS_EXP_SENS_NSTATE);
-    ledger_add("fig2-sensitivity-energy", "Fig. 2 (extension)", q, energy, 0.0, 0.5,
+    ledger_add("fig2-sensitivity-energy", "\\PaperRefOr{Fig2}, extension", q, energy, 0.0, 0.5,
                LEDGER_EXTENSION);
 }

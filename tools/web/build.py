@@ -39,6 +39,7 @@ from source_pages import WORD_RE, page_of  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 KATEX = os.path.join(HERE, "node_modules", "katex", "dist")
+TEX_REF_RE = re.compile(r"\\(?:eqref|PaperRefOr)\{([^}]*)\}")
 THEOREM_KINDS = {"proposition", "theorem", "definition", "algorithm", "corollary", "remark",
                  "lemma"}
 
@@ -152,8 +153,10 @@ class Site:
 
     def labels_of_claim(self, c, file_labels):
         labs = []
-        # (label) in the reference or the quantity; statements (TeoL, PropoFinal) by name
-        for lab in LABEL_RE.findall(c["paper_ref"] + " " + c["quantity"]):
+        # (label) in the reference, \eqref{label} in the quantity's LaTeX (its plain text shows
+        # the number alone); statements (TeoL, PropoFinal) by name
+        tex = (self.claims_tex or {}).get(c["id"], {}).get("quantity", "")
+        for lab in LABEL_RE.findall(c["paper_ref"]) + TEX_REF_RE.findall(tex):
             if lab in self.labels:
                 labs.append(lab)
         for w in WORD_RE.findall(c["paper_ref"]):

@@ -19,30 +19,43 @@ HEAD = ('<div class="claim head" aria-hidden="true"><span>ledger line</span>'
         '<span>verdict</span></div>')
 
 
+# In claims.tsv's paper_ref the paper is cited by its published numbers, each label that has one
+# following as a secondary id: "Proposition 5.1 (TeoL)", "eq. (27) (ContDyn)", "Remark 5.2".
+CITED_RE = re.compile(r"(eq\. \([0-9a-z]+\)|[A-Z][a-z]+ [0-9]+(?:\.[0-9]+)?)"
+                      r"(?: \(([A-Za-z][A-Za-z0-9-]*)\))?")
+
+
 def published_ref(site, text):
-    """The ledger's paper_ref with each label replaced by what the paper prints (TeoL ->
-    Proposition 5.1, linked to its page; (PerFin2) -> (44), linked to the equation)."""
+    """The ledger's paper_ref with each citation linked: a statement to its page, an equation to its
+    entry, the label after it in small type (Proposition 5.1 (TeoL) -> Proposition 5.1, linked,
+    then TeoL)."""
     def sub(m):
-        w = m.group(0)
-        if w not in site.labels:
-            return w
-        kind, number = site.labels[w]
-        if kind in frame.STATEMENT_KINDS and w in site.st.labels:
-            return '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(w), esc(w),
-                                                      esc(site.st.name(w)))
-        if kind == "equation":
-            frame.REFERENCED.add(w)
-            return ('<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
-                    % (esc(w), esc(w), esc(number)))
-        return w
-    out, rest = [], esc(text)
-    words = r"[A-Za-z][A-Za-z0-9-]*"
-    for phrase, lab in site.st.aliases:    # first: "Prop. general DSP" -> Proposition 5.2
-        if lab in site.st.labels and esc(phrase) in rest:
-            head, rest = rest.split(esc(phrase), 1)
-            out += [re.sub(words, sub, head), '<a href="%s" title="%s">%s</a>' % (
-                argument_pages.stmt_page(lab), esc(phrase), esc(site.st.name(lab)))]
-    return "".join(out) + re.sub(words, sub, rest)
+        name, lab = m.group(1), m.group(2)
+        if not lab:     # an unlabelled statement, cited by number alone: "Remark 5.2"
+            kind, _, number = name.partition(" ")
+            lab = site.st.by_name.get((kind.lower(), number))
+            if not lab:
+                return esc(m.group(0))
+            return '<a href="%s">%s</a>' % (argument_pages.stmt_page(lab), esc(name))
+        if lab not in site.labels:
+            return esc(m.group(0))
+        kind = site.labels[lab][0]
+        if kind in frame.STATEMENT_KINDS and lab in site.st.labels:
+            link = '<a href="%s" title="%s">%s</a>' % (argument_pages.stmt_page(lab), esc(lab),
+                                                      esc(name))
+        elif kind == "equation":    # "eq. " before the link, which shows the number: (27)
+            frame.REFERENCED.add(lab)
+            link = ('%s<a class="label" href="equations.html#eq-%s" title="%s">%s</a>'
+                    % (esc(name[:name.index("(")]), esc(lab), esc(lab),
+                       esc(name[name.index("("):])))
+        else:
+            link = esc(name)
+        return "%s %s" % (link, secondary(lab))
+    out, last = [], 0
+    for m in CITED_RE.finditer(text):
+        out += [esc(text[last:m.start()]), sub(m)]
+        last = m.end()
+    return "".join(out) + esc(text[last:])
 
 
 def source_link(site, c):
@@ -165,18 +178,31 @@ def by_stem(site, claims, tex):
                    for stem, cs in stems.items())
 
 
-def group_html(site, key, name, claims, tex):
+def group_html(site, key, name, claims, tex, also=()):
+    """A group of lines; `also`: the other statements whose lines all sit in this group (a line
+    citing two is under the first in the paper's order), each an anchor that opens it."""
     link = ""
     if key in site.st.order:
         link = ("<p class='g-link'><a href='%s'>%s: the statement as printed, its verdict and its "
                 "evidence</a></p>" % (argument_pages.stmt_page(key), esc(name)))
+    anchors = "".join('<span id="g-%s"></span>' % esc(lab.replace(":", "-")) for lab in also)
     return ('<details class="group" id="g-%s"><summary><span class="g-name">%s</span>%s '
-            '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span></summary>%s'
+            '<span class="g-count">%d line%s</span> <span class="g-tally">%s</span></summary>%s%s'
             '%s</details>'
             % (esc(key.replace(":", "-")), esc(name), secondary(key) if key != BEYOND[0] else "",
                len(claims), "s" if len(claims) != 1 else "", tally(verdict_counts(claims), False),
-               link, by_stem(site, claims, tex) if key == BEYOND[0] else
+               anchors, link, by_stem(site, claims, tex) if key == BEYOND[0] else
                HEAD + "".join(card(site, c, tex) for c in claims)))
+
+
+def other_statements(site, order, groups):
+    """For each group, the statements its lines cite that have no group of their own."""
+    keys, placed, out = {k for k, _ in order}, set(), {}
+    for k in order:
+        labs = [lab for c in groups[k] for lab in site.st.of_claim[c["id"]]]
+        out[k] = [lab for lab in dict.fromkeys(labs) if lab not in keys and lab not in placed]
+        placed.update(out[k])
+    return out
 
 
 def filters(site):
@@ -219,6 +245,8 @@ def build(site):
            "<form class='filters' onsubmit='return false'>%s <span id='ledger-count'></span></form>"
            % filters(site),
            "<div id='ledger'>"]
-    out += [group_html(site, key, name, groups[(key, name)], tex) for key, name in order]
+    also = other_statements(site, order, groups)
+    out += [group_html(site, key, name, groups[(key, name)], tex, also[(key, name)])
+            for key, name in order]
     out.append("</div></main>")
     site.write_page("ledger.html", "Claims ledger", "ledger", "\n".join(out), ["ledger.js"])
