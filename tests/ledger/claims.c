@@ -283,9 +283,9 @@ static double lim_step(const sus_exact *bex, double tk, double eps, double *dx)
     sus_stepper_stats st;
     sus_exact_omega(bex, tk, wk);
     sus_exact_omega(bex, tk + eps, we);
-    if (sus_step_variational->apply(m, eps, wk, x, &lam, &st) != SUS_STEPPER_OK)
+    if (sus_step_variational->step->apply(m, eps, wk, x, &lam, &st) != SUS_STEPPER_OK)
         ledger_die("variational local step");
-    sus_step_variational->residual(m, eps, wk, x, g, J, &scale);
+    sus_step_variational->equation->residual(m, eps, wk, x, g, J, &scale);
     const double det = fabs(J[0] * J[3] - J[1] * J[2]);
     const double jinv = fmax(fabs(J[3]) + fabs(J[1]), fabs(J[2]) + fabs(J[0])) / det;
     *dx = jinv * (st.residual + 8.0 * SUS_U * scale);
@@ -389,7 +389,7 @@ static void variational_multiplier_claims(void)
             const double eps = eps_of(j);
             double w[3] = {wk[0], wk[1], 0.0}, xn[3], lam, wm[2], we[2];
             sus_stepper_stats st;
-            if (sus_step_variational->apply(model, eps, w, xn, &lam, &st) != SUS_STEPPER_OK)
+            if (sus_step_variational->step->apply(model, eps, w, xn, &lam, &st) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double full = lam + (sus_c(model, xn) - sus_c(model, w)) / eps;
             sus_exact_omega(&ex, TK[t] + eps, we);
@@ -625,7 +625,7 @@ static void negative_controls(void)
     sus_mat3_identity(Rn);
     for (long k = 0; k < PRESERVE_STEPS; k++) {
         const double xi[3] = {PRESERVE_EPS * w[0], PRESERVE_EPS * w[1], 0.0};
-        if (sus_step_rk4->apply(model, PRESERVE_EPS, w, x, &lam, &sst) != SUS_STEPPER_OK)
+        if (sus_step_rk4->step->apply(model, PRESERVE_EPS, w, x, &lam, &sst) != SUS_STEPPER_OK)
             ledger_die("rk4 step");
         sus_so3_cay(xi, C);
         sus_mat3_mul(P, Rn, C);

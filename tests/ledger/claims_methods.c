@@ -52,7 +52,8 @@ static double size_of(const claims_body *d, int q)
 /* The order of quantity q's error curve, above the floors of a method that rounds as t does. */
 static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q, const double *err)
 {
-    const claims_rounding k = {t->implicit, t->conserves_energy && !t->implicit, t->substeps};
+    const claims_rounding k = {t->desc.implicit, t->desc.conserves_energy && !t->desc.implicit,
+                               t->desc.substeps};
     double floor[NE];
     claims_body_floors(d, &k, q < 2 ? q : CLAIMS_Q_R, floor);
     return order_of_curve(d->eps, d->ex.k, err, NE, size_of(d, q), floor);
@@ -158,9 +159,9 @@ static void worst_add(structure_worst *s, double value, double bound, const char
  * weight, four roundings per entry: 8 u N s eps |w|, plus 16 u for the last product. */
 double method_orth_bound(const sus_stepper_type *t, long steps, double eps, double size_w)
 {
-    if (t->attitude == SUS_ATTITUDE_QUAT)
+    if (t->desc.attitude == SUS_ATTITUDE_QUAT)
         return 1e-14;
-    return 16.0 * U + 8.0 * U * (double)steps * t->substeps * eps * size_w;
+    return 16.0 * U + 8.0 * U * (double)steps * t->desc.substeps * eps * size_w;
 }
 
 /* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body,
@@ -184,7 +185,8 @@ static void method_structure(const sus_step_method *me)
          * the size of E's terms (claims_energy_terms); an implicit root's rounding dx = J^-1 r
          * (J ~ I_m) moves E by <I_m w, dx> ~ <w, r>, r of size u |I_m| |w|: u e again, not
          * amplified by cond(I_m) */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms, d->b.name);
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->desc.substeps * c.eterms,
+                  d->b.name);
     }
     char id[96], q[400];
     const char *ref = me->paper_ref ? "(DSP), Algorithm (algo)" : "(extension)";
@@ -198,19 +200,21 @@ static void method_structure(const sus_step_method *me)
     ledger_add(id, ref, q, w3.value, 0.0, 0.0, LEDGER_BY_CONSTRUCTION);
     snprintf(id, sizeof id, "method-orth-%s", me->type->name);
     char label[64];
-    snprintf(q, sizeof q, "max |R^T R - I| over %ld steps of eps k = %g k_paper, %s, R %s, worst of %d "
-             "bodies %s; round-off bound %.2g", STRUCT_STEPS, STRUCT_EPS,
-             sus_step_method_label(t, me->recon, label, sizeof label),
-             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion" : "by compensated products",
+    snprintf(q, sizeof q,
+             "max |R^T R - I| over %ld steps of eps k = %g k_paper, %s, R %s, worst of %d "
+             "bodies %s; round-off bound %.2g",
+             STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
+             t->desc.attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
+                                                   : "by compensated products",
              BODIES_COUNT, orth.body, orth.bound);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
-    if (!t->conserves_energy)
+    if (!t->desc.conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
     snprintf(q, sizeof q,
              "max |E - E0| over %ld steps of eps k = %g k_paper, %s (%d substeps), worst of %d bodies %s; "
              "bound 8 u N s e, e = max 1/2 sum |w_i I_ij w_j| (E's terms)",
-             STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
+             STRUCT_STEPS, STRUCT_EPS, me->type->name, t->desc.substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
     ledger_add_bound(id, me->paper_ref ? "Fig. 1(f), (DSP)" : ref, q, en.value, en.bound, 0, truth);
 }

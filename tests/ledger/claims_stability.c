@@ -94,7 +94,7 @@ static void boundary_claims(void)
          * unstable only in narrow bands around the poles z = 2/g_i of the negative weights, so
          * the bisection below and a first crossing measure different things; no claim is made
          * (the map in figures/stability shows where they work). */
-        if (!me->type->stability && me->type->substeps > 1)
+        if (!me->type->desc.stability && me->type->desc.substeps > 1)
             continue;
         const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
         const double expect = isfinite(theory) ? theory : predicted; /* theory where it is known */
@@ -130,11 +130,13 @@ static void boundary_claims(void)
              * the start near the rotation must still return at h = H_MAX, where the measurement
              * gives INFINITY; a NaN (no return even at h = 0.1) fails. */
             snprintf(q, sizeof q,
-                     "%s has no linear stability limit (%s): the start 1e-6 off the rotation still returns "
-                     "at h = %g (largest h tested), on each of %d bodies (the least: %s)",
+                     "%s has no linear stability limit (%s): the start 1e-6 off the rotation "
+                     "still returns at h = %g (largest h tested), on each of %d bodies (the "
+                     "least: %s)",
                      st->name,
-                     me->type->stability ? "|R(-h)| <= 1 for all h tested" : "no stability function", H_MAX,
-                     BODIES_COUNT, worst);
+                     me->type->desc.stability ? "|R(-h)| <= 1 for all h tested"
+                                              : "no stability function",
+                     H_MAX, BODIES_COUNT, worst);
             ledger_add_none_found(id, "(extension)", q, measured, H_MAX, H_MAX, LEDGER_EXTENSION);
         }
     }
@@ -174,7 +176,7 @@ static void solvable_claims(const sus_exact *paper)
     char id[64], q[320];
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
-        if (!me->type->implicit)
+        if (!me->type->desc.implicit)
             continue;
         sus_exp_stab_result failed;
         const double first = first_failure(paper, me->type, 12, 0.0, &failed);
@@ -205,7 +207,7 @@ static void fold_claims(const sus_exact *paper)
     for (int m = 0; m < sus_step_method_count(); m++) {
         const sus_step_method *me = sus_step_method_get(m);
         const expected_order *eo = expected_order_of(me->type->name);
-        if (!me->type->implicit || !eo || !eo->fold_on_map)
+        if (!me->type->desc.implicit || !eo || !eo->fold_on_map)
             continue;
         sus_exp_stab_result failed = {0};
         double e_star = NAN, exponent = NAN;
