@@ -45,8 +45,10 @@ static const char *fixed_stepper(const sus_stepper_type *st, sus_recon recon)
         return "cfg->stepper is NULL";
     if (st->tol)
         return "cfg->stepper chooses its own steps: run it with sus_run_tol";
-    if (!st->apply && !st->apply_full)
-        return "cfg->stepper has neither apply nor apply_full";
+    if (!st->step)
+        return "cfg->stepper has no step interface (cfg->stepper->step is NULL)";
+    if (!st->step->apply && !st->step->apply_full)
+        return "cfg->stepper->step has neither apply nor apply_full";
     if ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT)
         return "cfg->recon is not one of sus_recon's values";
     return NULL;

@@ -1,7 +1,8 @@
 /* One step of a Discrete Suslov Problem (DSP): (w^k) -> (w^{k+1}, lambda_{k+1}) with
  * (w^{k+1})_3 = 0, in the spirit of GSL's gsl_odeiv2_step_type: a stepper is a constant
- * struct with a name, the orders the paper proves, and an apply function; the driver knows
- * only this struct. Steps keep all state on the stack: no allocation per step. */
+ * struct of small constant parts (its step functions, its implicit equation, what it says of
+ * itself); the drivers know only these structs. Steps keep all state on the stack: no
+ * allocation per step. */
 #ifndef SUS_STEPPER_H
 #define SUS_STEPPER_H
 
@@ -41,26 +42,48 @@ typedef struct {
     double last_residual;
 } sus_stepper_stats;
 
-/* The largest number of unknowns of an implicit step equation: Newton keeps its n x n Jacobian
- * on the stack. */
-#define SUS_MAX_UNKNOWNS 8
-
-/* An implicit DSP's step equation G(x) = 0 in its n unknowns x (type->unknowns), given w = w^k:
- * the residual g[n], its Jacobian J[n*n] in x (row-major; for x = w^{k+1} the upper-left block
- * of (REGLOC)), and scale = sum of |terms| of G, the yardstick for its round-off. */
-typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2],
-                                   const double *x, double *g, double *J, double *scale);
-
 /* How a method advances the attitude R_k. NONE: it steps w only and the driver reconstructs R
  * as a rotation matrix with the requested reconstruction; QUAT: apply_full carries R as a unit
  * quaternion and writes back R(q/|q|). */
 typedef enum { SUS_ATTITUDE_NONE = 0, SUS_ATTITUDE_MATRIX, SUS_ATTITUDE_QUAT } sus_attitude_form;
 
-/* A tolerance-driven method (tol set in its type) chooses its own steps, so it cannot be one
- * map (w^k) -> (w^{k+1}) of a given eps: it keeps state between steps (the last step's length and
- * series), held in a workspace the driver allocates once per run (never per step). The driver
- * knows only these functions; the fixed-step sweeps over eps do not list such methods
- * (registry.h), and apply and apply_full are NULL. */
+/* A stepper is four parts, each what one kind of consumer reads, each a small const struct:
+ *   step      the step interface, what the fixed-step driver calls (NULL: tolerance-driven);
+ *   tol       the tolerance interface, what the tolerance driver calls (NULL: fixed-step);
+ *   equation  the implicit step equation, what Newton and its tests read (NULL: none of its own);
+ *   desc      the self-description, what the labels, the sweeps, the order fits and the tests
+ *             read; every stepper has one.
+ * Exactly one of step and tol is set. No consumer compares names: what it needs is in desc. */
+
+/* ---- the step interface ---- */
+
+/* One step of a fixed-step method. w and w_next are 3-vectors of so(3) ~ R^3; w[2] must be 0
+ * and the step sets w_next[2] = 0, the second equation of (DSP). Returns SUS_STEPPER_*. */
+typedef int (*sus_apply_fn)(const sus_model *m, double eps, const double w[3], double w_next[3],
+                            double *lambda_next, sus_stepper_stats *st);
+/* One step of the whole state (w, R_k) -> (w^{k+1}, R_{k+1}), the method advancing the attitude
+ * itself (see desc.attitude, desc.follows_recon). */
+typedef int (*sus_apply_full_fn)(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
+                                 const double w[3], double w_next[3], double *lambda_next,
+                                 sus_stepper_stats *st);
+/* The same method's whole step at another order p (a ledger control). */
+typedef int (*sus_apply_order_fn)(int p, const sus_model *m, double eps, sus_attitude *att,
+                                  const double w[3], double w_next[3], double *lambda_next,
+                                  sus_stepper_stats *st);
+
+typedef struct {
+    sus_apply_fn apply;           /* the w-step: always set */
+    /* Optional: when set, the driver calls it instead of apply followed by sus_reconstruct. */
+    sus_apply_full_fn apply_full;
+    sus_apply_order_fn apply_order; /* optional: NULL if the method is not parametrised by p */
+} sus_step_ops;
+
+/* ---- the tolerance interface ---- */
+
+/* A tolerance-driven method chooses its own steps, so it cannot be one map (w^k) -> (w^{k+1})
+ * of a given eps: it keeps state between steps (the last step's length and series), held in a
+ * workspace the driver allocates once per run (never per step). The driver knows only these
+ * functions; the fixed-step sweeps over eps do not list such methods (registry.h). */
 typedef struct sus_tol_work sus_tol_work;
 typedef struct {
     /* A workspace for a run from w0 at tolerance tol, or NULL when out of memory. */
@@ -78,42 +101,56 @@ typedef struct {
     int (*order)(double tol); /* the order it uses at tol */
 } sus_tol_ops;
 
+/* ---- the implicit step equation ---- */
+
+/* The largest number of unknowns of an implicit step equation: Newton keeps its n x n Jacobian
+ * on the stack. */
+#define SUS_MAX_UNKNOWNS 8
+
+/* An implicit DSP's step equation G(x) = 0 in its n unknowns x (equation->unknowns), given
+ * w = w^k: the residual g[n], its Jacobian J[n*n] in x (row-major; for x = w^{k+1} the upper-left
+ * block of (REGLOC)), and scale = sum of |terms| of G, the yardstick for its round-off. */
+typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2],
+                                   const double *x, double *g, double *J, double *scale);
+/* The starting point of Newton at eps; at eps = 0 it is the root. */
+typedef void (*sus_guess_fn)(const sus_model *m, double eps, const double w[2], double *x);
+/* w^{k+1} from the root x. */
+typedef void (*sus_result_fn)(const sus_model *m, double eps, const double w[2], const double *x,
+                              double w_next[2]);
+
 typedef struct {
-    const char *name;
-    int order;         /* p: local w error O(eps^{p+1}) */
-    int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
-    /* w and w_next are 3-vectors of so(3) ~ R^3; w[2] must be 0 and the step sets
-     * w_next[2] = 0, the second equation of (DSP). Returns SUS_STEPPER_*. */
-    int (*apply)(const sus_model *m, double eps, const double w[3], double w_next[3],
-                 double *lambda_next, sus_stepper_stats *st);
-    /* Optional: one step of the whole state (w, R_k) -> (w^{k+1}, R_{k+1}). When set, the driver
-     * calls it instead of apply followed by sus_reconstruct, and the method advances the
-     * attitude itself (see attitude, follows_recon). apply must still give the w-only step. */
-    int (*apply_full)(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
-                      const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st);
-    int implicit;      /* 1 when a step solves an equation (its own, or in its substeps) */
-    /* The implicit step equation: unknowns = n (0 for an explicit step), residual its G, guess
-     * the starting point of Newton, and result w^{k+1} from the root x. NULL for explicit steps. */
-    int unknowns;
+    int unknowns; /* n, 1 <= n <= SUS_MAX_UNKNOWNS */
     sus_residual_fn residual;
-    void (*guess)(const sus_model *m, double eps, const double w[2], double *x);
-    void (*result)(const sus_model *m, double eps, const double w[2], const double *x, double w_next[2]);
+    sus_guess_fn guess;
+    sus_result_fn result;
+} sus_step_equation;
+
+/* ---- the self-description ---- */
+
+typedef struct {
+    int order;         /* p: local w error O(eps^{p+1}); 0 for a tolerance-driven method */
+    int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
+    int implicit;      /* 1 when a step solves an equation (its own, or in its substeps) */
+    int conserves_energy;         /* E = 1/2 <I_m w, w> exact up to round-off */
+    sus_attitude_form attitude;   /* what apply_full (or the tolerance step) carries */
+    int follows_recon;            /* 1 when the requested reconstruction is used */
+    int substeps;                 /* base steps per step: the round-off accumulates per substep */
+    /* Order fitting: 1 when the error constants grow with the order (a series truncated within
+     * its radius), so that a slope over a few octaves of eps can fall a whole order short of p. */
+    int pre_asymptotic;
     /* The linear stability function R(z) of the w-step for real z = eps * eigenvalue (the
      * transverse eigenvalue at the attracting rotation is real, -k); NULL when the step has none
      * (not a linear one-step map of f, or no single limit). */
     double (*stability)(double z);
-    int conserves_energy;            /* E = 1/2 <I_m w, w> exact up to round-off */
-    sus_attitude_form attitude;   /* what apply_full carries */
-    int follows_recon;               /* 1 when the requested reconstruction is used */
-    int substeps;                    /* base steps per step: the round-off accumulates per substep */
-    /* Order fitting: 1 when the error constants grow with the order (a series truncated within
-     * its radius), so that a slope over a few octaves of eps can fall a whole order short of p. */
-    int pre_asymptotic;
-    /* Optional: the same method at another order p (a ledger control); NULL if not parametrised. */
-    int (*apply_order)(int p, const sus_model *m, double eps, sus_attitude *att,
-                       const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st);
-    const char *source;              /* the file that defines the step (__FILE__) */
-    const sus_tol_ops *tol;          /* NULL for a fixed-step method; see sus_tol_ops */
+    const char *source;           /* the file that defines the step (__FILE__) */
+} sus_stepper_desc;
+
+typedef struct {
+    const char *name;
+    const sus_step_ops *step;          /* NULL for a tolerance-driven method */
+    const sus_tol_ops *tol;            /* NULL for a fixed-step method */
+    const sus_step_equation *equation; /* NULL for an explicit step, or one solved in substeps */
+    sus_stepper_desc desc;
 } sus_stepper_type;
 
 /* One step of (w, R): apply_full when the type has it, else apply and then (algo)'s
@@ -124,13 +161,6 @@ typedef struct {
 int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps, sus_recon recon,
                      sus_attitude *att, const double w[3], double w_next[3], double *lambda_next,
                      sus_stepper_stats *stats);
-
-/* Explicit midpoint (second order) prediction, the starting point of the Newton solves. These
- * two write NaN where an input is NULL, and nothing where the output is. */
-void sus_predict(const sus_model *m, double eps, const double w[2], double x[2]);
-/* The result hook of a step whose unknowns are x = w^{k+1} itself. */
-void sus_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,
-                        double w_next[2]);
 
 #ifdef __cplusplus
 }

@@ -90,15 +90,18 @@ static void *grow(void *p, size_t n, size_t size)
 
 /* The Taylor methods carry their own attitude (no reconstruction to choose) and have a w-step
  * that does not depend on the attitude series. */
-int sus_exp_bench_own_attitude(const sus_step_method *me) { return !me->type->follows_recon; }
+int sus_exp_bench_own_attitude(const sus_step_method *me) { return !me->type->desc.follows_recon; }
 
 /* Keeps E, w3 = 0 and R in SO(3) by construction, as the method's type says of itself. */
-int sus_exp_bench_keeps_structure(const sus_step_method *me) { return me->type->conserves_energy; }
+int sus_exp_bench_keeps_structure(const sus_step_method *me)
+{
+    return me->type->desc.conserves_energy;
+}
 
 /* A step made of several implicit substeps: the compositions. */
 int sus_exp_bench_composed(const sus_step_method *me)
 {
-    return me->type->implicit && me->type->substeps > 1;
+    return me->type->desc.implicit && me->type->desc.substeps > 1;
 }
 
 const char *sus_exp_bench_param_name(const sus_exp_bench_series *s)

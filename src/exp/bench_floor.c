@@ -87,7 +87,7 @@ double sus_exp_bench_floor_seconds(const sus_exp_bench *b, double level, int whi
     for (int i = 0; i < b->nseries; i++) {
         const sus_exp_bench_series *s = b->S[i];
         const sus_step_method *me = s->ours && s->preserves ? s->me : NULL;
-        if (!me || me->type->implicit || (which && s->w_only))
+        if (!me || me->type->desc.implicit || (which && s->w_only))
             continue;
         const int m = s->tol_driven ? -1 : sus_step_method_index_of(me->type);
         for (int j = 0; j < s->n; j++) {
@@ -143,7 +143,7 @@ double sus_exp_bench_implicit_ratio(const sus_exp_bench *b, int m)
 
 int sus_exp_bench_implicit_target(const sus_step_method *me)
 {
-    return me->type->implicit && !sus_exp_bench_composed(me);
+    return me->type->desc.implicit && !sus_exp_bench_composed(me);
 }
 
 int sus_exp_bench_implicit_pass(const sus_exp_bench *b)

@@ -165,7 +165,8 @@ static int rk8pd_matching(const sus_exp_bench *b, int reduced, sus_exp_bench_pee
  * steps to reach the level that its T = 1e4 runs would take most of this phase. */
 static int equal_error_wanted(const sus_exp_bench_series *s)
 {
-    return s->ours && !s->w_only && !s->me->type->implicit && sus_exp_bench_own_attitude(s->me);
+    return s->ours && !s->w_only && !s->me->type->desc.implicit &&
+           sus_exp_bench_own_attitude(s->me);
 }
 
 /* Series s at point j as a run to T (a fixed-step run keeps s's step as nearly as N = T / eps

@@ -35,7 +35,7 @@ void sus_exp_bench_w_fn(void *vctx)
     const double eps = r->T / (double)r->N;
     r->status = SUS_STEPPER_OK;
     for (long k = 0; k < r->N && r->status == SUS_STEPPER_OK; k++) {
-        r->status = r->st->apply(&pb->model, eps, w, x, &lam, &stats);
+        r->status = r->st->step->apply(&pb->model, eps, w, x, &lam, &stats);
         it += stats.iterations;
         w[0] = x[0];
         w[1] = x[1];

@@ -95,7 +95,7 @@ static void sweep_ours(sus_exp_bench *b, const sus_step_method *me, sus_recon re
 {
     sus_exp_bench_series *s = sus_exp_bench_new_series(b);
     sus_step_method_label(me->type, recon, s->name, sizeof s->name);
-    const int fine = sus_exp_bench_own_attitude(me), high = me->type->order > 4;
+    const int fine = sus_exp_bench_own_attitude(me), high = me->type->desc.order > 4;
     s->ours = 1;
     s->me = me;
     s->recon = recon;
@@ -210,7 +210,7 @@ static void sweep_methods(sus_exp_bench *b)
         if (sus_exp_bench_own_attitude(me))
             sweep_ours_w(b, me);
         /* the symmetric Cayley reconstruction beside the default one, where it differs */
-        else if (me->type->order >= 2 && me->recon != SUS_RECON_CAYLEY_MID)
+        else if (me->type->desc.order >= 2 && me->recon != SUS_RECON_CAYLEY_MID)
             sweep_ours(b, me, SUS_RECON_CAYLEY_MID);
     }
     for (int m = sus_step_method_count(); m < sus_step_method_count_all(); m++)

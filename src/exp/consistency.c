@@ -22,7 +22,7 @@ int sus_exp_local_errors(const sus_model *m, const sus_stepper_type *stepper,
                         const sus_exp_local_ref *ref, sus_exp_local_err *err)
 {
     double w_next[3], lambda, R_next[3][3];
-    const int status = stepper->apply(m, ref->eps, ref->w_k, w_next, &lambda, &err->stats);
+    const int status = stepper->step->apply(m, ref->eps, ref->w_k, w_next, &lambda, &err->stats);
     const double d[3] = {ref->w_exact[0] - w_next[0], ref->w_exact[1] - w_next[1],
                          ref->w_exact[2] - w_next[2]};
     err->w = sus_vec3_norm(d);
@@ -31,11 +31,12 @@ int sus_exp_local_errors(const sus_model *m, const sus_stepper_type *stepper,
     for (int r = 0; r < SUS_RECON_COUNT && status == SUS_STEPPER_OK; r++) {
         sus_attitude att;
         sus_attitude_identity(&att);
-        if (stepper->apply_full) { /* the attitude is advanced inside the step (e.g. after every substep) */
+        /* apply_full: the attitude is advanced inside the step (e.g. after every substep) */
+        if (stepper->step->apply_full) {
             double w_full[3], lambda_full;
             sus_stepper_stats st;
-            const int sf =
-                stepper->apply_full(m, ref->eps, (sus_recon)r, &att, ref->w_k, w_full, &lambda_full, &st);
+            const int sf = stepper->step->apply_full(m, ref->eps, (sus_recon)r, &att, ref->w_k,
+                                                     w_full, &lambda_full, &st);
             if (sf != SUS_STEPPER_OK)
                 return sf;
         } else { /* (algo) after the w-step already taken */

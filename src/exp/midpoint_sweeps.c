@@ -41,19 +41,17 @@ static int sweeps_apply(int n, const sus_model *m, double eps, const double w[3]
 }
 
 /* apply takes no n: one function and one type for each n. */
-#define SWEEPS_TYPE(n)                                                                                \
-    static int apply_##n(const sus_model *m, double eps, const double w[3], double w_next[3],        \
-                         double *lambda_next, sus_stepper_stats *st)                                 \
-    {                                                                                                 \
-        return sweeps_apply(n, m, eps, w, w_next, lambda_next, st);                                  \
-    }                                                                                                 \
-    static const sus_stepper_type sweeps_##n = {.name = "midpoint-sweeps" #n,                           \
-                                                .order = (n) < 2 ? (n) : 2,                           \
-                                                .lambda_order = (n) < 2 ? (n) : 2,                    \
-                                                .apply = apply_##n,                                   \
-                                                .follows_recon = 1,                                   \
-                                                .substeps = 1,                                        \
-                                                .source = __FILE__};
+#define SWEEPS_TYPE(n)                                                                             \
+    static int apply_##n(const sus_model *m, double eps, const double w[3], double w_next[3],      \
+                         double *lambda_next, sus_stepper_stats *st)                               \
+    {                                                                                              \
+        return sweeps_apply(n, m, eps, w, w_next, lambda_next, st);                                \
+    }                                                                                              \
+    static const sus_step_ops step_##n = {.apply = apply_##n};                                     \
+    static const sus_stepper_type sweeps_##n = {                                                   \
+        .name = "midpoint-sweeps" #n, .step = &step_##n,                                           \
+        .desc = {.order = (n) < 2 ? (n) : 2, .lambda_order = (n) < 2 ? (n) : 2,                    \
+                 .follows_recon = 1, .substeps = 1, .source = __FILE__}};
 SWEEPS_TYPE(1)
 SWEEPS_TYPE(2)
 SWEEPS_TYPE(3)

@@ -62,7 +62,7 @@ static int phi(const sus_exp_perturb *P, const double x0[2], double x1[2])
 {
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
     sus_stepper_stats st;
-    if (P->st->apply(P->m, P->eps, w, wn, &lam, &st) != SUS_STEPPER_OK)
+    if (P->st->step->apply(P->m, P->eps, w, wn, &lam, &st) != SUS_STEPPER_OK)
         return SUS_EXP_PERTURB_STEP_FAILED;
     x1[0] = wn[0];
     x1[1] = wn[1];

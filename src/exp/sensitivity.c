@@ -59,15 +59,15 @@ static double record(const sus_exact *ex, const sus_model *m, double t, double t
 static int continued_root(const sus_model *m, const sus_stepper_type *st, double eps,
                           const double w[2], double x[2])
 {
-    const int n = st->unknowns;
+    const int n = st->equation->unknowns;
     double a[SUS_MAX_UNKNOWNS], b[SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS];
-    st->guess(m, 0.0, w, b);
+    st->equation->guess(m, 0.0, w, b);
     for (int i = 0; i < n; i++) a[i] = b[i];
     for (int j = 1; j <= SENS_CONT; j++) {
         sus_stepper_stats s;
         const double e = eps * j / SENS_CONT;
         for (int i = 0; i < n; i++) g[i] = 2.0 * b[i] - a[i];
-        if (sus_step_newton_solve(st->residual, n, m, e, w, g, &s) != SUS_STEPPER_OK ||
+        if (sus_step_newton_solve(st->equation->residual, n, m, e, w, g, &s) != SUS_STEPPER_OK ||
             !(s.det > 0.0))
             return -1;
         for (int i = 0; i < n; i++) {
@@ -75,7 +75,7 @@ static int continued_root(const sus_model *m, const sus_stepper_type *st, double
             b[i] = g[i];
         }
     }
-    st->result(m, eps, w, b, x);
+    st->equation->result(m, eps, w, b, x);
     return 0;
 }
 
@@ -87,7 +87,7 @@ static int step_failed(int status, const double w[3], const double x[3], const s
                        const sus_model *m, const sus_stepper_type *st, double eps, double *det_min)
 {
     if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1])) return 1;
-    if (!st->unknowns) return 0;
+    if (!st->equation) return 0;
     const double ratio = s->det / m->det_m;
     *det_min = fmin(*det_min, ratio);
     double xc[2];

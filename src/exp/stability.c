@@ -19,9 +19,11 @@ static int continue_root(const sus_model *m, const sus_stepper_type *st, double 
 {
     double root[SUS_MAX_UNKNOWNS], reg;
     sus_stepper_stats s;
-    const int rc = sus_step_newton_branch(st->residual, st->guess, st->unknowns, m, eps, w, root, &s, &reg);
+    const sus_step_equation *eq = st->equation;
+    const int rc =
+        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, &reg);
     if (rc == SUS_STEPPER_OK)
-        st->result(m, eps, w, root, x);
+        eq->result(m, eps, w, root, x);
     return rc;
 }
 
@@ -29,13 +31,14 @@ static int continue_root(const sus_model *m, const sus_stepper_type *st, double 
 static int step_class(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
                       const double x[2], int status, const sus_stepper_stats *s, double r0, int check_branch)
 {
-    if (status == SUS_STEPPER_SINGULAR || (st->unknowns && status == SUS_STEPPER_OK && !(s->det > 0.0)))
+    if (status == SUS_STEPPER_SINGULAR ||
+        (st->equation && status == SUS_STEPPER_OK && !(s->det > 0.0)))
         return SUS_EXP_STAB_REGULARITY;
     if (status != SUS_STEPPER_OK)
         return SUS_EXP_STAB_SOLVER;
     if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > SUS_EXP_STAB_BLOWUP_FACTOR * r0)
         return SUS_EXP_STAB_BLOWUP;
-    if (check_branch && st->unknowns) {
+    if (check_branch && st->equation) {
         double xc[2];
         const int rc = continue_root(m, st, eps, w, xc);
         if (rc != SUS_STEPPER_OK)
@@ -74,7 +77,7 @@ void sus_exp_stability_run(const sus_exact *ex, const sus_stepper_type *st, doub
         double x[3], lam;
         sus_stepper_stats s;
         ring[(k - 1) % SUS_EXP_STAB_CYCLE][0] = w[0], ring[(k - 1) % SUS_EXP_STAB_CYCLE][1] = w[1];
-        const int status = st->apply(m, eps, w, x, &lam, &s);
+        const int status = st->step->apply(m, eps, w, x, &lam, &s);
         res->step = k;
         res->w_fail[0] = w[0], res->w_fail[1] = w[1];
         if ((res->cls = step_class(m, st, eps, w, x, status, &s, r0, check_branch)) >= 0)
@@ -98,8 +101,9 @@ static int reaches(const sus_model *m, const sus_stepper_type *st, const double 
 {
     double reg;
     sus_stepper_stats s;
-    return sus_step_newton_branch(st->residual, st->guess, st->unknowns, m, e, w, root, &s, &reg) ==
-           SUS_STEPPER_OK;
+    const sus_step_equation *eq = st->equation;
+    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, &reg)
+        == SUS_STEPPER_OK;
 }
 
 /* |det J| of the step equation at its branch root for step e. */
@@ -109,8 +113,8 @@ static double branch_det(const sus_model *m, const sus_stepper_type *st, const d
         dx[SUS_MAX_UNKNOWNS], det = NAN, scale;
     if (!reaches(m, st, w, e, root))
         return NAN;
-    st->residual(m, e, w, root, g, J, &scale);
-    sus_step_linear_solve(st->unknowns, J, g, dx, &det);
+    st->equation->residual(m, e, w, root, g, J, &scale);
+    sus_step_linear_solve(st->equation->unknowns, J, g, dx, &det);
     return fabs(det);
 }
 
@@ -118,7 +122,7 @@ int sus_exp_fold(const sus_model *m, const sus_stepper_type *st, const double w[
                  double *e_star, double *exponent)
 {
     double root[SUS_MAX_UNKNOWNS], lo = 0.0, hi = eps, s[SUS_EXP_FOLD_POINTS], d[SUS_EXP_FOLD_POINTS];
-    if (!st->unknowns || reaches(m, st, w, eps, root))
+    if (!st->equation || reaches(m, st, w, eps, root))
         return -1;
     while (fabs(hi - lo) > SUS_EXP_FOLD_BISECT * fabs(eps)) {
         const double mid = 0.5 * (lo + hi);
@@ -157,7 +161,7 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     for (int k = 0; k < 4000; k++) {
         double x[3], lam;
         sus_stepper_stats s;
-        const int status = st->apply(ex->model, eps, w, x, &lam, &s);
+        const int status = st->step->apply(ex->model, eps, w, x, &lam, &s);
         if (status == SUS_STEPPER_DIVERGED)
             return 2;
         if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
@@ -217,11 +221,11 @@ static double excess(double h, void *params)
 
 double sus_exp_linear_limit(const sus_step_method *me, double h_max)
 {
-    if (!me->type->stability)
+    if (!me->type->desc.stability)
         return NAN;
     /* Scan for the first sign change of |R(-h)| - 1 (a fine geometric grid: a stability
      * interval is never narrower than a grid cell, 1% of h), then bracket it with Brent. */
-    double (*R)(double) = me->type->stability;
+    double (*R)(double) = me->type->desc.stability;
     gsl_function F = {excess, &R};
     double lo = 1e-3;
     if (excess(lo, &R) > 0.0)

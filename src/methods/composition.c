@@ -11,7 +11,7 @@ static int substep(const sus_model *m, double h, const double w[3], double x[3],
                    sus_stepper_stats *acc)
 {
     sus_stepper_stats st;
-    const int status = sus_step_midpoint->apply(m, h, w, x, lambda, &st);
+    const int status = sus_step_midpoint->step->apply(m, h, w, x, lambda, &st);
     acc->iterations += st.iterations;
     if (!(st.residual <= acc->residual)) { /* also takes a NaN residual */
         acc->residual = st.residual;

@@ -314,14 +314,3 @@ int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, c
     st->iterations += its;
     return rc;
 }
-
-int sus_step_implicit_solve(const sus_stepper_type *type, const sus_model *m, double eps,
-                          const double w[3], double w_next[3], sus_stepper_stats *st)
-{
-    double x[SUS_MAX_UNKNOWNS];
-    const int status =
-        sus_step_newton_solve_branch(type->residual, type->guess, type->unknowns, m, eps, w, x, st);
-    type->result(m, eps, w, x, w_next);
-    w_next[2] = 0.0;
-    return status;
-}

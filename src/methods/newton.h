@@ -19,9 +19,6 @@ extern "C" {
 int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
                         double *x, sus_stepper_stats *st);
 
-/* The starting point of Newton at eps (a stepper's guess hook); at eps = 0 it is the root. */
-typedef void (*sus_guess_fn)(const sus_model *m, double eps, const double w[2], double *x);
-
 /* The root the step defines: the branch continued in eps from the root at eps = 0 (guess(0)),
  * on which det J > 0 as at eps = 0 ((REGLOC): J is I_m there, or blocks of it). Stages of
  * adaptive length, each a Newton solve from the secant through the last two roots, accepted when
@@ -41,12 +38,6 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
  * stats.iterations counts every Newton iteration. */
 int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
                                  const double w[2], double *x, sus_stepper_stats *st);
-
-/* The common step of the implicit DSPs: the root of type->residual by
- * sus_step_newton_solve_branch from type->guess, w^{k+1} from type->result, and (w^{k+1})_3 = 0,
- * the second equation of (DSP). */
-int sus_step_implicit_solve(const sus_stepper_type *type, const sus_model *m, double eps,
-                          const double w[3], double w_next[3], sus_stepper_stats *st);
 
 /* dx = J^{-1} g and det J for n <= SUS_MAX_UNKNOWNS (J row-major, overwritten). Returns -1,
  * leaving dx unset, when J is singular to working precision: |det| at or below 4 n u times the sum

@@ -97,14 +97,15 @@ const char *sus_step_method_label(const sus_stepper_type *t, sus_recon recon, ch
 {
     if (!buf || len == 0)
         return NULL;
-    if (!t || !t->name || (t->follows_recon && ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT))) {
+    if (!t || !t->name ||
+        (t->desc.follows_recon && ((int)recon < 0 || (int)recon >= SUS_RECON_COUNT))) {
         buf[0] = '\0';
         return NULL;
     }
-    if (t->follows_recon)
+    if (t->desc.follows_recon)
         snprintf(buf, len, "%s + %s", t->name, SUS_RECON_NAMES[recon]);
-    else if (t->attitude != SUS_ATTITUDE_NONE)
-        snprintf(buf, len, "%s (%s)", t->name, sus_step_attitude_name(t->attitude));
+    else if (t->desc.attitude != SUS_ATTITUDE_NONE)
+        snprintf(buf, len, "%s (%s)", t->name, sus_step_attitude_name(t->desc.attitude));
     else
         snprintf(buf, len, "%s", t->name);
     return buf;
@@ -119,11 +120,12 @@ int sus_step_methods_write_tsv(FILE *fp)
     for (int i = 0; i < NMETHODS; i++) {
         const sus_step_method *me = &METHODS[i];
         const sus_stepper_type *t = me->type;
-        fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name, me->family,
-                t->order, t->lambda_order, t->implicit, t->unknowns, t->conserves_energy,
-                sus_step_attitude_name(t->attitude), t->follows_recon, t->substeps, t->stability != NULL,
-                SUS_RECON_NAMES[me->recon],
-                me->paper_ref ? me->paper_ref : "-", t->source, me->about);
+        fprintf(fp, "%s\t%s\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n", t->name,
+                me->family, t->desc.order, t->desc.lambda_order, t->desc.implicit,
+                (t->equation ? t->equation->unknowns : 0), t->desc.conserves_energy,
+                sus_step_attitude_name(t->desc.attitude), t->desc.follows_recon, t->desc.substeps,
+                t->desc.stability != NULL, SUS_RECON_NAMES[me->recon],
+                me->paper_ref ? me->paper_ref : "-", t->desc.source, me->about);
     }
     return ferror(fp) ? -1 : 0;
 }

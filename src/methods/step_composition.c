@@ -15,11 +15,12 @@
     { \
         return sus_step_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st); \
     } \
+    static const sus_step_ops ID##_step = {.apply = ID##_apply, .apply_full = ID##_apply_full}; \
     const sus_stepper_type sus_step_##ID##_type = { \
-        .name = NAME, .order = ORDER, .lambda_order = ORDER, .apply = ID##_apply, \
-        .apply_full = ID##_apply_full, \
-        .implicit = 1, .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .follows_recon = 1, \
-        .substeps = STAGES, .source = __FILE__};
+        .name = NAME, .step = &ID##_step, \
+        .desc = {.order = ORDER, .lambda_order = ORDER, .implicit = 1, .conserves_energy = 1, \
+                 .attitude = SUS_ATTITUDE_QUAT, .follows_recon = 1, .substeps = STAGES, \
+                 .source = __FILE__}};
 
 /* lambda_{k+1} = lambda(w^{k+1}) from (LagMult), as for the midpoint DSP: its order is p. Every
  * substep is a midpoint step, so E is conserved; STAGES = 2 half - 1 of the table (a unit test

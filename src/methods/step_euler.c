@@ -17,7 +17,10 @@ static int euler_apply(const sus_model *m, double eps, const double w[3], double
     return SUS_STEPPER_OK;
 }
 
+static const sus_step_ops EULER_STEP = {.apply = euler_apply};
+
 const sus_stepper_type sus_step_euler_type = {
-    .name = "euler", .order = 1, .lambda_order = 1, .apply = euler_apply,
-    .stability = sus_step_stab_euler, .follows_recon = 1, .substeps = 1, .source = __FILE__};
+    .name = "euler", .step = &EULER_STEP,
+    .desc = {.order = 1, .lambda_order = 1, .follows_recon = 1, .substeps = 1,
+             .stability = sus_step_stab_euler, .source = __FILE__}};
 const sus_stepper_type *const sus_step_euler = &sus_step_euler_type;

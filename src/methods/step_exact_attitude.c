@@ -294,11 +294,7 @@ static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *la
 
 static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order};
 
-const sus_stepper_type sus_step_exact_attitude_type = {.name = "exact-attitude",
-                                                       .order = 0,
-                                                       .lambda_order = 0,
-                                                       .conserves_energy = 1,
-                                                       .attitude = SUS_ATTITUDE_QUAT,
-                                                       .substeps = 1,
-                                                       .source = __FILE__,
-                                                       .tol = &EA_OPS};
+const sus_stepper_type sus_step_exact_attitude_type = {
+    .name = "exact-attitude", .tol = &EA_OPS,
+    .desc = {.conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
+             .source = __FILE__}};

@@ -12,6 +12,7 @@
  * the (2,2) Pade approximant of exp, |R(-h)| < 1 for every h > 0. Tableau: c = 1/2 -+ sqrt(3)/6,
  * A = [[1/4, 1/4 - sqrt(3)/6], [1/4 + sqrt(3)/6, 1/4]], b = (1/2, 1/2). */
 #include "newton.h"
+#include "implicit_step.h"
 #include "quaternion.h"
 
 #include <math.h>
@@ -62,8 +63,8 @@ static void gauss4_residual(const sus_model *m, double eps, const double w[2], c
 /* The stages from the explicit midpoint prediction to each node c_i eps. */
 static void gauss4_guess(const sus_model *m, double eps, const double w[2], double *x)
 {
-    sus_predict(m, C[0] * eps, w, x);
-    sus_predict(m, C[1] * eps, w, x + 2);
+    sus_step_predict(m, C[0] * eps, w, x);
+    sus_step_predict(m, C[1] * eps, w, x + 2);
 }
 
 static void gauss4_result(const sus_model *m, double eps, const double w[2], const double *x,
@@ -152,8 +153,12 @@ static int gauss4_apply_full(const sus_model *m, double eps, sus_recon recon, su
     return SUS_STEPPER_OK;
 }
 
+static const sus_step_equation GAUSS4_EQUATION = {
+    .unknowns = 4, .residual = gauss4_residual, .guess = gauss4_guess, .result = gauss4_result};
+static const sus_step_ops GAUSS4_STEP = {.apply = gauss4_apply, .apply_full = gauss4_apply_full};
+
 const sus_stepper_type sus_step_gauss4_type = {
-    .name = "gauss4", .order = 4, .lambda_order = 4, .apply = gauss4_apply, .apply_full = gauss4_apply_full,
-    .implicit = 1, .unknowns = 4, .residual = gauss4_residual, .guess = gauss4_guess, .result = gauss4_result,
-    .stability = gauss4_stability, .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
-    .source = __FILE__};
+    .name = "gauss4", .step = &GAUSS4_STEP, .equation = &GAUSS4_EQUATION,
+    .desc = {.order = 4, .lambda_order = 4, .implicit = 1, .conserves_energy = 1,
+             .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .stability = gauss4_stability,
+             .source = __FILE__}};

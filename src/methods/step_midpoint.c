@@ -4,7 +4,7 @@
  * and lambda_{k+1} = lambda(w^{k+1}) from (LagMult). The implicit equation
  *   G(x) = I_m (x - w^k) - eps (l1, l2) = 0
  * is solved by Newton from an explicit prediction. */
-#include "newton.h"
+#include "implicit_step.h"
 #include "stability_fn.h"
 #include "dsp.h"
 
@@ -31,19 +31,25 @@ static void mid_residual(const sus_model *m, double eps, const double w[2], cons
            + eps * (fabs(l1) + fabs(l2));
 }
 
+static const sus_step_equation MID_EQUATION = {.unknowns = 2,
+                                               .residual = mid_residual,
+                                               .guess = sus_step_predict,
+                                               .result = sus_step_result_is_x};
+
 static int midpoint_apply(const sus_model *m, double eps, const double w[3],
                           double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = sus_step_implicit_solve(&sus_step_midpoint_type, m, eps, w, w_next, st);
+    const int status = sus_step_implicit_solve(&MID_EQUATION, m, eps, w, w_next, st);
     *lambda_next = sus_lagmult(m, w_next);
     return status;
 }
 
 /* The midpoint rule conserves the quadratic invariant E of (ContDyn). */
+static const sus_step_ops MID_STEP = {.apply = midpoint_apply};
+
 const sus_stepper_type sus_step_midpoint_type = {
-    .name = "midpoint", .order = 2, .lambda_order = 2, .apply = midpoint_apply,
-    .implicit = 1, .unknowns = 2, .residual = mid_residual, .guess = sus_predict,
-    .result = sus_result_is_x,
-    .stability = sus_step_stab_midpoint, .conserves_energy = 1, .follows_recon = 1, .substeps = 1,
-    .source = __FILE__};
+    .name = "midpoint", .step = &MID_STEP, .equation = &MID_EQUATION,
+    .desc = {.order = 2, .lambda_order = 2, .implicit = 1, .conserves_energy = 1,
+             .follows_recon = 1, .substeps = 1, .stability = sus_step_stab_midpoint,
+             .source = __FILE__}};
 const sus_stepper_type *const sus_step_midpoint = &sus_step_midpoint_type;

@@ -169,25 +169,28 @@ double sus_step_taylor_stability(int p, double z)
     return r;
 }
 
-#define TAYLOR_STEPPER(P)                                                                                 \
-    static int taylor##P##_apply(const sus_model *m, double eps, const double w[3], double w_next[3],     \
-                                 double *lambda_next, sus_stepper_stats *st)                              \
-    {                                                                                                     \
-        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                       \
-    }                                                                                                     \
-    static int taylor##P##_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att, \
-                                      const double w[3], double w_next[3], double *lambda_next,           \
-                                      sus_stepper_stats *st)                                              \
-    {                                                                                                     \
-        (void)recon;                                                                                      \
-        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                             \
-    }                                                                                                     \
-    double sus_step_stab_taylor##P(double z) { return sus_step_taylor_stability(P, z); }                  \
-    const sus_stepper_type sus_step_taylor##P##_type = {                                                  \
-        .name = "taylor" #P, .order = P, .lambda_order = P, .apply = taylor##P##_apply,                   \
-        .apply_full = taylor##P##_apply_full, .stability = sus_step_stab_taylor##P,                       \
-        .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,         \
-        .apply_order = sus_step_taylor_apply_full, .source = __FILE__};
+#define TAYLOR_STEPPER(P)                                                                          \
+    static int taylor##P##_apply(const sus_model *m, double eps, const double w[3],                \
+                                 double w_next[3], double *lambda_next, sus_stepper_stats *st)     \
+    {                                                                                              \
+        return taylor_apply(P, m, eps, w, w_next, lambda_next, st);                                \
+    }                                                                                              \
+    static int taylor##P##_apply_full(const sus_model *m, double eps, sus_recon recon,             \
+                                      sus_attitude *att, const double w[3], double w_next[3],      \
+                                      double *lambda_next, sus_stepper_stats *st)                  \
+    {                                                                                              \
+        (void)recon;                                                                               \
+        return taylor_apply_full(P, m, eps, att, w, w_next, lambda_next, st);                      \
+    }                                                                                              \
+    double sus_step_stab_taylor##P(double z) { return sus_step_taylor_stability(P, z); }           \
+    static const sus_step_ops taylor##P##_step = {.apply = taylor##P##_apply,                      \
+                                                  .apply_full = taylor##P##_apply_full,            \
+                                                  .apply_order = sus_step_taylor_apply_full};      \
+    const sus_stepper_type sus_step_taylor##P##_type = {                                           \
+        .name = "taylor" #P, .step = &taylor##P##_step,                                            \
+        .desc = {.order = P, .lambda_order = P, .conserves_energy = 1,                             \
+                 .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                \
+                 .stability = sus_step_stab_taylor##P, .source = __FILE__}};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,
  * orders 6 to 20): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,

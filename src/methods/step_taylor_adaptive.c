@@ -358,11 +358,7 @@ static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], doub
 static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc, adaptive_step, adaptive_dense, adaptive_free,
                                          sus_step_taylor_adaptive_order};
 
-const sus_stepper_type sus_step_taylor_adaptive_type = {.name = "taylor-adaptive",
-                                                        .order = 0,
-                                                        .lambda_order = 0,
-                                                        .conserves_energy = 1,
-                                                        .attitude = SUS_ATTITUDE_QUAT,
-                                                        .substeps = 1,
-                                                        .source = __FILE__,
-                                                        .tol = &ADAPTIVE_OPS};
+const sus_stepper_type sus_step_taylor_adaptive_type = {
+    .name = "taylor-adaptive", .tol = &ADAPTIVE_OPS,
+    .desc = {.conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
+             .source = __FILE__}};

@@ -1,6 +1,6 @@
 /* The nonholonomic variational integrator of Section 5.5: (taudyn) for w^{k+1}, solved by
  * Newton from an explicit prediction, and (taualg) for lambda_{k+1}, both as printed. */
-#include "newton.h"
+#include "implicit_step.h"
 #include "dsp.h"
 
 #include <math.h>
@@ -54,18 +54,23 @@ static double taualg(const sus_model *m, const double x[2], const double w[2])
          - 0.5 * (x[1] * (I[0][0] * x[0] + I[0][1] * x[1]) + w[1] * (I[0][0] * w[0] + I[0][1] * w[1]));
 }
 
+static const sus_step_equation TAUDYN = {
+    .unknowns = 2, .residual = taudyn_residual, .guess = sus_step_predict,
+    .result = sus_step_result_is_x};
+
 static int variational_apply(const sus_model *m, double eps, const double w[3],
                              double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = sus_step_implicit_solve(&sus_step_variational_type, m, eps, w, w_next, st);
+    const int status = sus_step_implicit_solve(&TAUDYN, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
 
+static const sus_step_ops VARIATIONAL_STEP = {.apply = variational_apply};
+
 /* (taudyn) is not a linear one-step map of f: no stability function. */
 const sus_stepper_type sus_step_variational_type = {
-    .name = "variational", .order = 2, .lambda_order = -1, .apply = variational_apply,
-    .implicit = 1, .unknowns = 2, .residual = taudyn_residual, .guess = sus_predict,
-    .result = sus_result_is_x,
-    .follows_recon = 1, .substeps = 1, .source = __FILE__};
+    .name = "variational", .step = &VARIATIONAL_STEP, .equation = &TAUDYN,
+    .desc = {.order = 2, .lambda_order = -1, .implicit = 1, .follows_recon = 1, .substeps = 1,
+             .source = __FILE__}};
 const sus_stepper_type *const sus_step_variational = &sus_step_variational_type;

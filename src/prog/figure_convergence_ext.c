@@ -10,7 +10,7 @@
 /* The extensions, and the paper's methods that conserve E (the midpoint DSP) as the baseline. */
 static int extension_or_baseline(const sus_step_method *me)
 {
-    return me->paper_ref == NULL || me->type->conserves_energy;
+    return me->paper_ref == NULL || me->type->desc.conserves_energy;
 }
 
 static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)

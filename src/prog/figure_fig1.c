@@ -137,7 +137,7 @@ static int corrected_multiplier(const sus_model *m, long N, fig1 *f)
     for (long k = 0; k < N; k++) {
         double x[3], lam;
         sus_stepper_stats st;
-        if (sus_step_variational->apply(m, EPS, w, x, &lam, &st) != SUS_STEPPER_OK) {
+        if (sus_step_variational->step->apply(m, EPS, w, x, &lam, &st) != SUS_STEPPER_OK) {
             fprintf(stderr, "figure_fig1: a variational step failed at step %ld (t = %g)\n", k + 1,
                     (double)(k + 1) * EPS);
             return 3;

@@ -216,7 +216,8 @@ int main(int argc, char **argv)
         return 1;
     for (int i = 0; i < sus_step_method_count(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        if (me->type->conserves_energy && me->type->order > 2) /* high order, structure-preserving */
+        /* high order, structure-preserving */
+        if (me->type->desc.conserves_energy && me->type->desc.order > 2)
             ours(me);
     }
     peer(11);

@@ -191,7 +191,7 @@ static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, doub
         }
         double w3[3] = {x[0], x[1], 0.0}, wn[3], lam;
         sus_stepper_stats st;
-        if (P.st->apply(m, EPS_A, w3, wn, &lam, &st) != SUS_STEPPER_OK) {
+        if (P.st->step->apply(m, EPS_A, w3, wn, &lam, &st) != SUS_STEPPER_OK) {
             fprintf(stderr, "figure_perturbation: euler step %d failed at t = %g\n", k, EPS_A * k);
             return 3;
         }

@@ -136,7 +136,7 @@ static void more_methods(FILE *fp, int man)
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
         cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
-                 me->type->follows_recon ? "" : " (ignores --reconstruct)");
+                 me->type->desc.follows_recon ? "" : " (ignores --reconstruct)");
     }
 }
 
@@ -148,8 +148,8 @@ static void names_where(char *buf, size_t len, int follows, int which)
     buf[0] = '\0';
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        const int key = follows ? (int)me->recon : (int)me->type->attitude;
-        if (!me->type->follows_recon == !follows && key == which && n < len)
+        const int key = follows ? (int)me->recon : (int)me->type->desc.attitude;
+        if (!me->type->desc.follows_recon == !follows && key == which && n < len)
             n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "  ", me->type->name);
     }
 }
@@ -306,10 +306,10 @@ static void method_list(void)
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
         char order[16];
-        snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->order);
+        snprintf(order, sizeof order, me->type->tol ? "tol" : "%d", me->type->desc.order);
         char about[512];
         printf(fmt, me->type->name, me->family, order,
-               me->type->follows_recon ? SUS_RECON_NAMES[me->recon] : "own",
+               me->type->desc.follows_recon ? SUS_RECON_NAMES[me->recon] : "own",
                sus_paper_numbered(me->about, about, sizeof about));
     }
     cli_exit_stdout();
@@ -374,7 +374,7 @@ static int resolve_method(suslov_args *a, const given *g)
     }
     if (exact)
         cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
-    return !a->method->type->follows_recon;
+    return !a->method->type->desc.follows_recon;
 }
 
 /* --sweeps replaces the midpoint rule's Newton solve, so it needs that method. */
@@ -558,12 +558,12 @@ void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
     }
     if (a->method)
         fprintf(fp, "\n# method: %s (%s, order %d), ", a->method->type->name, a->method->family,
-                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->order);
-    if (a->method && a->method->type->follows_recon)
+                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->desc.order);
+    if (a->method && a->method->type->desc.follows_recon)
         fprintf(fp, "reconstruction %s\n", SUS_RECON_NAMES[a->recon]);
     else if (a->method) /* what --method list calls "own" */
         fprintf(fp, "attitude: own (%s; --reconstruct does not apply)\n",
-                sus_step_attitude_name(a->method->type->attitude));
+                sus_step_attitude_name(a->method->type->desc.attitude));
     else
         fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
     if (a->sweeps)

@@ -36,8 +36,8 @@ static void print_costs(const sus_exp_bench *b)
     for (int m = 0; m < c->n; m++) {
         const sus_step_method *me = sus_step_method_get(m);
         /* the default reconstruction, or the attitude the method carries itself */
-        const char *att = me->type->follows_recon ? SUS_RECON_NAMES[me->recon]
-                                                  : sus_step_attitude_name(me->type->attitude);
+        const char *att = me->type->desc.follows_recon ? SUS_RECON_NAMES[me->recon]
+                                                  : sus_step_attitude_name(me->type->desc.attitude);
         printf("  %-12s %10.1f %10.1f %-10s %9.2f %12.2f\n", me->type->name, c->ns_raw[m],
                c->ns_full[m], att, c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
     }

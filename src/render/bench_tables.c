@@ -44,7 +44,7 @@ static void csv_work_rows(FILE *fp, const sus_exp_bench *b)
  * it carries its own attitude. */
 static const char *whole_step_name(const sus_step_method *me, char *buf, size_t len)
 {
-    if (!me->type->follows_recon)
+    if (!me->type->desc.follows_recon)
         return sus_step_method_label(me->type, me->recon, buf, len);
     snprintf(buf, len, "%s+%s", me->type->name, SUS_RECON_NAMES[me->recon]);
     return buf;

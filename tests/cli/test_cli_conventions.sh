@@ -79,8 +79,10 @@ check "header: version, command line, method, eps, inertia, omega0, units before
            grep -q '^# omega0: 0.29999999999999999,-0.20000000000000001,0$' '$T/h.csv' && grep -q '^# units' '$T/h.csv' &&
            test \"\$(grep -v '^#' '$T/h.csv' | head -1 | cut -d, -f1-3)\" = k,t,omega1"
 # a method that carries its own attitude (--method list: reconstruct "own") says so in its header,
-# never a reconstruction it does not use; --help says "(ignores --reconstruct)" on its line and
-# lists it under no reconstruction (gauss4's attitude is its collocation's, as the Taylor series')
+# with the attitude form it declares (--help's --reconstruct block: "NAMES: none, their own FORM
+# attitude", from the method's self-description), never a reconstruction it does not use;
+# --help says "(ignores --reconstruct)" on its line and lists it under no reconstruction (gauss4's
+# attitude is its collocation's, as the Taylor series')
 "$S" --method list >"$T/list"
 "$S" --help >"$T/help"
 wrong=""
@@ -90,15 +92,27 @@ while IFS="$(printf '\t')" read -r m family order recon about; do
     line=$("$S" --method "$m" $args | grep '^# method: ')
     hl=$(grep "^ *$m " "$T/help" | head -1)
     if [ "$recon" = own ]; then
-        echo "$line" | grep -q ', attitude: own (quaternion; --reconstruct does not apply)$' || wrong="$wrong [$line]"
-        echo "$hl" | grep -q '(ignores --reconstruct)$' || wrong="$wrong [help: $hl]"
-        grep -E '^ +[a-z0-9, -]+: (cayley|cayley-mid|exp-mid)$' "$T/help" | grep -qw -- "$m" && wrong="$wrong [$m under a default]"
+        form=$(grep -E ': none, their own [a-z]+ attitude$' "$T/help" | grep -w -- "$m" |
+            sed -E 's/.*: none, their own ([a-z]+) attitude$/\1/' | head -1)
+        want="attitude: own (${form:-?}; --reconstruct does not apply)"
+        [ -n "$form" ] || wrong="$wrong [$m: --help declares no attitude form for it]"
+        echo "$line" | grep -qF ", $want" && [ "${line%"$want"}" != "$line" ] ||
+            wrong="$wrong [$m: expected '... $want', got '$line']"
+        echo "$hl" | grep -q '(ignores --reconstruct)$' ||
+            wrong="$wrong [$m: expected '(ignores --reconstruct)' ending its --help line, got '$hl']"
+        grep -E '^ +[a-z0-9, -]+: (cayley|cayley-mid|exp-mid)$' "$T/help" | grep -qw -- "$m" &&
+            wrong="$wrong [$m: listed under a default reconstruction in --help]"
     else
-        echo "$line" | grep -q ", reconstruction $recon\$" || wrong="$wrong [$line]"
+        echo "$line" | grep -q ", reconstruction $recon\$" ||
+            wrong="$wrong [$m: expected '..., reconstruction $recon', got '$line']"
     fi
 done <"$T/list"
-check "header and --help: own-attitude methods say 'attitude: own', the others their reconstruction${wrong:+; wrong:$wrong}" \
-    sh -c "test -z '$wrong' && grep -q '^ *gauss4 .*(ignores --reconstruct)\$' '$T/help' && grep -q '^gauss4.*own' '$T/list'"
+own_ok() {
+    test -z "$wrong" && grep -q '^ *gauss4 .*(ignores --reconstruct)$' "$T/help" &&
+        grep -q '^gauss4.*own' "$T/list"
+}
+check "header and --help: own-attitude methods say 'attitude: own' with their declared form, the others their reconstruction${wrong:+; wrong:$wrong}" \
+    own_ok
 "$S" --no-header --method euler --eps 0.1 --steps 1 | head -1 | cut -d, -f1-2 >"$T/nh"
 check "--no-header: the CSV header is the first line" test "$(cat "$T/nh")" = k,t
 "$S" --method euler --eps 0.1 --steps 1 "$(printf 'x\ny')" >/dev/null 2>&1

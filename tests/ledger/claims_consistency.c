@@ -172,7 +172,7 @@ void consistency_multiplier_claims(const claims_paper *p)
             const double eps = eps_of(j);
             double w[3] = {wk[0], wk[1], 0.0}, xn[3], lam, wm[2], we[2];
             sus_stepper_stats st;
-            if (sus_step_variational->apply(&p->m, eps, w, xn, &lam, &st) != SUS_STEPPER_OK)
+            if (sus_step_variational->step->apply(&p->m, eps, w, xn, &lam, &st) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double full = lam + (sus_c(&p->m, xn) - sus_c(&p->m, w)) / eps;
             sus_exact_omega(&p->ex, PAPER_TK[t] + eps, we);

@@ -38,7 +38,7 @@ static double stepper_loss(const sus_model *m, const sus_stepper_type *st, doubl
     double w[3] = {w0[0], w0[1], 0.0}, x[3], lam;
     sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) ||
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK || !isfinite(x[0]) ||
             !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
@@ -133,10 +133,10 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
     double lo = INFINITY, hi = 0.0, max_var = 0.0, max_mid = 0.0;
     sus_stepper_stats ss;
     for (int k = 1; k <= 60; k++) { /* eps = 1: t_k = k */
-        if (sus_step_midpoint->apply(m, 1.0, wm, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (sus_step_midpoint->step->apply(m, 1.0, wm, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("the midpoint run of the error ratio");
         wm[0] = x[0], wm[1] = x[1];
-        if (sus_step_variational->apply(m, 1.0, wv, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (sus_step_variational->step->apply(m, 1.0, wv, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("the variational run of the error ratio");
         wv[0] = x[0], wv[1] = x[1];
         sus_exact_omega(ex, (double)k, we);

@@ -57,8 +57,9 @@ static int trapezoidal_apply(const sus_model *m, double eps, const double w[3], 
     *st = (sus_stepper_stats){.iterations = it};
     return it < 200 ? SUS_STEPPER_OK : SUS_STEPPER_NO_CONVERGENCE;
 }
-const sus_stepper_type fig2_trapezoidal = {.name = "trapezoidal", .order = 2, .lambda_order = 2,
-                                                .apply = trapezoidal_apply};
+static const sus_step_ops trapezoidal_step = {.apply = trapezoidal_apply};
+const sus_stepper_type fig2_trapezoidal = {.name = "trapezoidal", .step = &trapezoidal_step,
+                                           .desc = {.order = 2, .lambda_order = 2}};
 
 typedef struct {
     double err;   /* |w_N - w(T)| */
@@ -73,7 +74,7 @@ static run_result run(const sus_model *m, const sus_exact *ex, const sus_stepper
            worst = 0.0;
     sus_stepper_stats ss;
     for (long k = 0; k < N; k++) {
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("a Figure 2 run");
         w[0] = x[0];
         w[1] = x[1];

@@ -38,7 +38,7 @@ static fig2_reading_run run_reading(const sus_model *m, const sus_exact *ex,
     sus_stepper_stats ss;
     sus_exact_limit(ex, winf);
     for (long k = 1; k <= T_OWN_LIMIT; k++) {
-        if (st->apply(m, 1.0, w, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (st->step->apply(m, 1.0, w, x, &lam, &ss) != SUS_STEPPER_OK)
             ledger_die("a Figure 2 reading run");
         w[0] = x[0];
         w[1] = x[1];

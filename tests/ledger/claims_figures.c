@@ -70,12 +70,13 @@ static int violating_step(const sus_model *m, double eps, const double w[3], dou
                           double *lambda_next, sus_stepper_stats *st)
 {
     const double w_in[3] = {w[0], w[1], 0.0};
-    const int status = sus_step_midpoint->apply(m, eps, w_in, w_next, lambda_next, st);
+    const int status = sus_step_midpoint->step->apply(m, eps, w_in, w_next, lambda_next, st);
     w_next[2] = VIOLATION;
     return status;
 }
+static const sus_step_ops violating_ops = {.apply = violating_step};
 static const sus_stepper_type violating_type = {
-    .name = "midpoint+violation", .order = 2, .lambda_order = 2, .apply = violating_step};
+    .name = "midpoint+violation", .step = &violating_ops, .desc = {.order = 2, .lambda_order = 2}};
 
 /* max over the recorded rows of |w3| and |mu|, when the series is the run it claims to be,
  * and its mu column agrees with the constraint recomputed here from R_k and w_k (to 1e-15: the

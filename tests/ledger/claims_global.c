@@ -117,7 +117,7 @@ static int error_curves(const body_target *t, const sus_stepper_type *st, sus_re
         ew[n] = hypot(l.w[0] - t->w_T[0], l.w[1] - t->w_T[1]);
         eR[n] = sus_so3_dist(t->R_T, l.R);
         n++;
-        const double floor = 100.0 * (double)N * st->substeps * DBL_EPSILON;
+        const double floor = 100.0 * (double)N * st->desc.substeps * DBL_EPSILON;
         if (ew[n - 1] < floor * size_w && eR[n - 1] < floor * SUS_EXP_SIZE_R)
             break; /* both at the round-off floor below */
     }
@@ -137,7 +137,7 @@ static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, c
     for (int j = 0; j < n; j++) {
         const double N = kT / h[j];
         const double floor =
-            fmax(SUS_EXP_FIT_FLOOR_REL * size, 100.0 * N * st->substeps * DBL_EPSILON * size);
+            fmax(SUS_EXP_FIT_FLOOR_REL * size, 100.0 * N * st->desc.substeps * DBL_EPSILON * size);
         cand[j] = err[j] > floor && err[j] < size;
         ncand += cand[j];
         above += !(err[j] < size);
@@ -146,7 +146,7 @@ static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, c
      * measure (a fit needs three points); a curve that stays large is no such case */
     *at_roundoff = n > 0 && ncand < 3 && above == 0;
     curve_fit f = {window_measure(h, err, cand, n), NAN};
-    if (st->apply_order) /* a series: a lower estimate whatever the window (see the top) */
+    if (st->step->apply_order) /* a series: a lower estimate whatever the window (see the top) */
         f.w.plateau = 0;
     f.margin = f.w.plateau ? WINDOW_ORDER_TOL - fabs(f.w.slope - p) : f.w.slope - 0.5 * p;
     return f;
@@ -222,7 +222,7 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
                          t[k].d->b.name);
                 continue;
             }
-            if (!q && p >= 10 && !me->type->apply_order && (isnan(f.w.slope) || !f.w.plateau)) {
+            if (!q && p >= 10 && !me->type->step->apply_order && (isnan(f.w.slope) || !f.w.plateau)) {
                 wf[q].skipped++;
                 continue; /* w reaches round-off before it has one slope: the SO(3) row */
             }
@@ -300,6 +300,6 @@ void global_order_claims_of(int i)
         return;
     }
     order_rows(te, me, eo, me->recon, 1);
-    if (!me->type->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
+    if (!me->type->step->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
         order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
 }

@@ -87,7 +87,7 @@ static double control_ratio(const claims_body *d, const sus_step_method *me, int
         sus_attitude_identity(&a2);
         if (sus_stepper_full(me->type, &d->m, eps, me->recon, &a1, w, wn, &lam, &ss) !=
                 SUS_STEPPER_OK ||
-            me->type->apply_order(p - 1, &d->m, eps, &a2, w, wc, &lam, &ss) != SUS_STEPPER_OK)
+            me->type->step->apply_order(p - 1, &d->m, eps, &a2, w, wc, &lam, &ss) != SUS_STEPPER_OK)
             return INFINITY; /* a failed step fails the line */
         em = fmax(em, hypot(wn[0] - we[0], wn[1] - we[1]));
         ec = fmax(ec, hypot(wc[0] - we[0], wc[1] - we[1]));
@@ -135,14 +135,14 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
     char id[96], what[400];
     last_row l;
     const int ok = run(m, ex, me->type, me->recon, 1e4, N, 100, &l) == 0;
-    const double yard = (double)N * me->type->substeps * (DBL_EPSILON / 2) * l.e0;
+    const double yard = (double)N * me->type->desc.substeps * (DBL_EPSILON / 2) * l.e0;
     snprintf(id, sizeof id, "highorder-energy-%s", me->type->name);
     snprintf(
         what, sizeof what,
         "$\\max |E - E_0|$ over %ld steps of $\\varepsilon = %g$ ($T = 10^4$), %s; bound $N s\\,u "
         "E_0 = %s$ ($s = %d$ substeps)",
-        N, 1e4 / (double)N, me->type->name, notation_g(yard, 2).s, me->type->substeps);
-    if (me->type->conserves_energy)
+        N, 1e4 / (double)N, me->type->name, notation_g(yard, 2).s, me->type->desc.substeps);
+    if (me->type->desc.conserves_energy)
         ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0,
                          LEDGER_EXTENSION);
     snprintf(id, sizeof id, "highorder-w3-%s", me->type->name);
@@ -251,7 +251,7 @@ void highorder_method_claims(const sus_model *m, const sus_exact *ex, int i)
     const expected_order *eo = expected_order_of(me->type->name);
     if (!eo || me->paper_ref)
         return; /* missing: claims_methods.c fails it; the paper's methods: claims_consistency.c */
-    if (me->type->apply_order) /* a truncated series: against its own truncation */
+    if (me->type->step->apply_order) /* a truncated series: against its own truncation */
         taylor_control(me, eo->p);
     long_run(m, ex, me);
 }

@@ -54,7 +54,7 @@ static double size_of(const claims_body *d, int q)
 static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q,
                             const double *err)
 {
-    const claims_rounding k = {t->implicit, t->conserves_energy && !t->implicit, t->substeps};
+    const claims_rounding k = {t->desc.implicit, t->desc.conserves_energy && !t->desc.implicit, t->desc.substeps};
     double floor[NE];
     claims_body_floors(d, &k, q < 2 ? q : CLAIMS_Q_R, floor);
     return order_of_curve(d->eps, d->ex.k, err, NE, size_of(d, q), floor);
@@ -168,9 +168,9 @@ static void worst_add(structure_worst *s, double value, double bound, const char
  * weight, four roundings per entry: 8 u N s eps |w|, plus 16 u for the last product. */
 double method_orth_bound(const sus_stepper_type *t, long steps, double eps, double size_w)
 {
-    if (t->attitude == SUS_ATTITUDE_QUAT)
+    if (t->desc.attitude == SUS_ATTITUDE_QUAT)
         return 1e-14;
-    return 16.0 * U + 8.0 * U * (double)steps * t->substeps * eps * size_w;
+    return 16.0 * U + 8.0 * U * (double)steps * t->desc.substeps * eps * size_w;
 }
 
 /* w3 = 0, |R^T R - I| and, where the method conserves it, E over STRUCT_STEPS steps on every body,
@@ -194,7 +194,7 @@ static void method_structure(const sus_step_method *me)
          * the size of E's terms (claims_energy_terms); an implicit root's rounding dx = J^-1 r
          * (J ~ I_m) moves E by <I_m w, dx> ~ <w, r>, r of size u |I_m| |w|: u e again, not
          * amplified by cond(I_m) */
-        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->substeps * c.eterms,
+        worst_add(&en, c.energy, 8.0 * U * (double)STRUCT_STEPS * t->desc.substeps * c.eterms,
                   d->b.name);
     }
     char id[96], q[640];
@@ -214,11 +214,11 @@ static void method_structure(const sus_step_method *me)
              "$\\max |R^\\top R - I|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, "
              "%s, $R$ %s, the worst of %d bodies, %s; round-off bound $%s$",
              STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
-             t->attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
+             t->desc.attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
                                               : "by compensated products",
              BODIES_COUNT, orth.body, notation_g(orth.bound, 2).s);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
-    if (!t->conserves_energy)
+    if (!t->desc.conserves_energy)
         return;
     snprintf(id, sizeof id, "method-energy-%s", me->type->name);
     snprintf(
@@ -226,7 +226,7 @@ static void method_structure(const sus_step_method *me)
         "$\\max |E - E_0|$ over %ld steps of $\\varepsilon k = %g\\,k_\\mathrm{paper}$, %s (%d "
         "substeps), the worst of %d bodies, %s; bound $8\\,u N s\\,e$, $e = \\max \\frac{1}{2} "
         "\\sum |\\omega_i I_{ij} \\omega_j|$ (the terms of $E$)",
-        STRUCT_STEPS, STRUCT_EPS, me->type->name, t->substeps, BODIES_COUNT, en.body);
+        STRUCT_STEPS, STRUCT_EPS, me->type->name, t->desc.substeps, BODIES_COUNT, en.body);
     /* the statement it tests: Figure 1(f)'s energy kept by the midpoint rule, on every body */
     ledger_add_bound(id, me->paper_ref ? "\\PaperRefOr{Fig1}, panel (f); \\eqref{DSP}" : ref, q,
                      en.value, en.bound, 0, truth);

@@ -119,9 +119,9 @@ static double lim_step(const sus_exact *bex, double tk, double eps, double *dx)
     sus_stepper_stats st;
     sus_exact_omega(bex, tk, wk);
     sus_exact_omega(bex, tk + eps, we);
-    if (sus_step_variational->apply(m, eps, wk, x, &lam, &st) != SUS_STEPPER_OK)
+    if (sus_step_variational->step->apply(m, eps, wk, x, &lam, &st) != SUS_STEPPER_OK)
         ledger_die("variational local step");
-    sus_step_variational->residual(m, eps, wk, x, g, J, &scale);
+    sus_step_variational->equation->residual(m, eps, wk, x, g, J, &scale);
     const double det = fabs(J[0] * J[3] - J[1] * J[2]);
     const double jinv = fmax(fabs(J[3]) + fabs(J[1]), fabs(J[2]) + fabs(J[0])) / det;
     *dx = jinv * (st.residual + 8.0 * SUS_U * scale);

@@ -81,7 +81,7 @@ static void plain_product_control(const claims_paper *p)
     sus_mat3_identity(Rn);
     for (long k = 0; k < PRESERVE_STEPS; k++) {
         const double xi[3] = {PRESERVE_EPS * w[0], PRESERVE_EPS * w[1], 0.0};
-        if (sus_step_rk4->apply(&p->m, PRESERVE_EPS, w, x, &lam, &sst) != SUS_STEPPER_OK)
+        if (sus_step_rk4->step->apply(&p->m, PRESERVE_EPS, w, x, &lam, &sst) != SUS_STEPPER_OK)
             ledger_die("rk4 step");
         sus_so3_cay(xi, C);
         sus_mat3_mul(P, Rn, C);

@@ -50,7 +50,7 @@ static void lambda_errors(const sus_model *m, const sus_exact *ex, const sus_ste
             sus_exact_omega(ex, TK5[t], wk);
             sus_exact_omega(ex, TK5[t] + eps_of(j), we);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (st->apply(m, eps_of(j), w, x, &lam, &ss) != SUS_STEPPER_OK)
+            if (st->step->apply(m, eps_of(j), w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("a step for Remark 5.5");
             if (nterms > 0 && sus_exp_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
                 ledger_die("the lambda shift");
@@ -73,7 +73,7 @@ static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_s
         sus_exact_omega(ex, TK5[t], wk);
         sus_exact_omega(ex, TK5[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK
             || sus_exp_series_step(m, st, wk, &a) != 0)
             ledger_die("the series of a step");
         sus_exp_series_flow(m, wk, &y);
@@ -270,7 +270,7 @@ static void vso3_sign_claims(const sus_model *m, const sus_exact *ex)
             sus_stepper_stats ss;
             sus_exact_omega(ex, TK5[t], wk);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (sus_step_variational->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
+            if (sus_step_variational->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double r = vso3_lambda(m, eps, wk, x) / lam;
             rv_lo = fmin(rv_lo, r);
@@ -310,7 +310,7 @@ static void corrected_cayinver_claim(const sus_model *m, const sus_exact *ex)
             sus_exact_omega(ex, TK5[t], wk);
             sus_exact_omega(ex, TK5[t] + eps[j], we);
             const double w[3] = {wk[0], wk[1], 0.0};
-            if (sus_step_variational->apply(m, eps[j], w, x, &lam, &ss) != SUS_STEPPER_OK)
+            if (sus_step_variational->step->apply(m, eps[j], w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double full = lam + (sus_c(m, x) - sus_c(m, wk)) / eps[j];
             err[j] = fmax(err[j], fabs(full - sus_lagmult(m, we)));

@@ -48,7 +48,7 @@ static void step(const sus_model *m, const sus_stepper_type *st, double eps, con
 {
     double w[3] = {x0[0], x0[1], 0.0}, wn[3], lam;
     sus_stepper_stats s;
-    if (st->apply(m, eps, w, wn, &lam, &s) != SUS_STEPPER_OK)
+    if (st->step->apply(m, eps, w, wn, &lam, &s) != SUS_STEPPER_OK)
         ledger_die("a step in section 6");
     x1[0] = wn[0];
     x1[1] = wn[1];

@@ -128,7 +128,7 @@ void stability_boundary_claims(int m)
      * in narrow bands around the poles z = 2/g_i of the negative weights, so the bisection below
      * and a first crossing measure different things; no claim is made (the map in
      * figures/stability shows where they work). */
-    if (!me->type->stability && me->type->substeps > 1)
+    if (!me->type->desc.stability && me->type->desc.substeps > 1)
         return;
     const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
     if (isfinite(predicted)) {
@@ -147,7 +147,7 @@ void stability_boundary_claims(int m)
              "%s has no linear stability limit (%s): the start $10^{-6}$ off the rotation still "
              "returns at $h = %g$ (the largest $h$ tested), on each of %d bodies (the least: %s)",
              st->name,
-             me->type->stability ? "$|R(-h)| \\le 1$ for all $h$ tested" : "no stability function",
+             me->type->desc.stability ? "$|R(-h)| \\le 1$ for all $h$ tested" : "no stability function",
              H_MAX, BODIES_COUNT, worst);
     ledger_add_none_found(id, "(extension)", q, measured, H_MAX, H_MAX, LEDGER_EXTENSION);
 }
@@ -185,7 +185,7 @@ void stability_solvable_claims(const sus_exact *paper, int m)
 {
     char id[64], q[640];
     const sus_step_method *me = sus_step_method_get(m);
-    if (!me->type->implicit)
+    if (!me->type->desc.implicit)
         return;
     sus_exp_stab_result failed;
     const double first = first_failure(paper, me->type, 12, 0.0, &failed);
@@ -214,7 +214,7 @@ void stability_fold_claims(const sus_exact *paper, int m)
     char id[64], q[640];
     const sus_step_method *me = sus_step_method_get(m);
     const expected_order *eo = expected_order_of(me->type->name);
-    if (!me->type->implicit || !eo || !eo->fold_on_map)
+    if (!me->type->desc.implicit || !eo || !eo->fold_on_map)
         return;
     sus_exp_stab_result failed = {0};
     double e_star = NAN, exponent = NAN;

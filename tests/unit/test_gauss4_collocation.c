@@ -99,7 +99,8 @@ static double worst_at(double eps, double *dR)
         sus_attitude att;
         sus_attitude_identity(&att);
         const sus_stepper_type *g = &sus_step_gauss4_type;
-        if (g->apply_full(&m, eps, SUS_RECON_CAYLEY, &att, w, wn, &lam, &st) != SUS_STEPPER_OK)
+        if (g->step->apply_full(&m, eps, SUS_RECON_CAYLEY, &att, w, wn, &lam, &st) !=
+            SUS_STEPPER_OK)
             return -1.0;
         sus_attitude_get(&att, R);
         collocation(b.I, eps, b.w0, we, qe);

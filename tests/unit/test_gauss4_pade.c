@@ -10,7 +10,7 @@ extern const sus_stepper_type sus_step_gauss4_type;
 
 int main(void)
 {
-    double (*R)(double) = sus_step_gauss4_type.stability;
+    double (*R)(double) = sus_step_gauss4_type.desc.stability;
     double worst = 0.0;
     const double z[6] = {-8.0, -3.0, -0.7, 0.4, 1.5, 2.5};
     for (int i = 0; i < 6; i++)

@@ -113,9 +113,11 @@ static int poison_apply(const sus_model *m, double eps, const double w[3], doubl
     return poison_full(m, eps, SUS_RECON_CAYLEY, &a, w, w_next, lambda_next, st);
 }
 
+static const sus_step_ops poison_ops = {.apply = poison_apply, .apply_full = poison_full};
 static const sus_stepper_type poison_stepper = {
-    .name = "poison", .order = 1, .lambda_order = 1, .apply = poison_apply, .apply_full = poison_full,
-    .attitude = SUS_ATTITUDE_MATRIX, .substeps = 1, .source = __FILE__};
+    .name = "poison", .step = &poison_ops,
+    .desc = {.order = 1, .lambda_order = 1, .attitude = SUS_ATTITUDE_MATRIX, .substeps = 1,
+             .source = __FILE__}};
 
 /* A non-finite field of the state at a step whose row is not written stops the run there. */
 static void blowup_checks(const sus_model *m)
@@ -149,8 +151,10 @@ static int count_apply(const sus_model *m, double eps, const double w[3], double
 
 static void newton_count_checks(const sus_model *m)
 {
-    const sus_stepper_type counting = {.name = "count", .order = 1, .lambda_order = 1, .apply = count_apply,
-                                       .substeps = 1, .source = __FILE__};
+    static const sus_step_ops count_ops = {.apply = count_apply};
+    const sus_stepper_type counting = {
+        .name = "count", .step = &count_ops,
+        .desc = {.order = 1, .lambda_order = 1, .substeps = 1, .source = __FILE__}};
     const sus_run_config cfg = {.model = m, .stepper = &counting, .recon = SUS_RECON_CAYLEY, .eps = 0.125,
                                 .steps = 7, .every = 1};
     const double w0[2] = {0.4, 0.5};
@@ -174,7 +178,8 @@ static void composition_count_checks(const body *bd, const sus_model *m)
     long sum = 0;
     double worst = -1.0, worst_scale = 0.0;
     for (int i = 0; i < sus_step_composition_stages(c); i++) {
-        sus_step_midpoint->apply(m, sus_step_composition_weight(c, i) * 0.25, u, x, &lam, &st);
+        sus_step_midpoint->step->apply(m, sus_step_composition_weight(c, i) * 0.25, u, x, &lam,
+                                       &st);
         sum += st.iterations;
         if (st.residual > worst)
             worst = st.residual, worst_scale = st.scale;

@@ -182,9 +182,9 @@ static void taylor_one_step(const sus_model *m, const sus_exact *ex, const char 
     for (int i = 0; i < 3; i++) {
         double w1[3], lam;
         sus_stepper_stats st;
-        const int rc = ty[i]->apply(m, h, w0, w1, &lam, &st);
+        const int rc = ty[i]->step->apply(m, h, w0, w1, &lam, &st);
         const double e = hypot(w1[0] - we[0], w1[1] - we[1]);
-        const double bound = A * (M * pow(x, ty[i]->order + 1) / (1.0 - x) + rounding);
+        const double bound = A * (M * pow(x, ty[i]->desc.order + 1) / (1.0 - x) + rounding);
         CHECK(rc == SUS_STEPPER_OK && e <= bound && w1[2] == 0.0, "%s: %s, one step h = %.3g (x = %.3g of "
               "pi / 4k) against the closed form: %.2g (<= %.2g), w3 = 0", name, ty[i]->name, h, x, e, bound);
     }
@@ -212,14 +212,14 @@ static void composition_energy(const sus_model *m, const sus_exact *ex, double s
     int ok = 1;
     for (int i = 0; i < sus_step_composition_stages(c); i++) {
         const double ge = sus_step_composition_weight(c, i) * eps;
-        ok &= sus_step_midpoint->apply(m, ge, w, x, &lam, &st) == SUS_STEPPER_OK;
+        ok &= sus_step_midpoint->step->apply(m, ge, w, x, &lam, &st) == SUS_STEPPER_OK;
         const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])}, n1 = fabs(mid[0]) + fabs(mid[1]);
         const double ca = fabs(m->b[0] * mid[0]) + fabs(m->b[1] * mid[1]);
         bound += n1 * (st.residual + 2 * U * (st.scale + fabs(ge) * n1 * ca))
                + 2 * U * (energy_terms(m, x) + energy_terms(m, w));
         w[0] = x[0], w[1] = x[1];
     }
-    ok &= sus_step_comp8_kl_type.apply(m, eps, w0, w1, &lam, &st) == SUS_STEPPER_OK;
+    ok &= sus_step_comp8_kl_type.step->apply(m, eps, w0, w1, &lam, &st) == SUS_STEPPER_OK;
     const double dE = fabs(sus_energy(m, w1) - sus_energy(m, w0));
     CHECK(ok && dE <= bound, "%s: comp8-kl, one step eps = %.3g (17 substeps): |E1 - E0| = %.2g (<= %.2g: "
           "the substeps' residuals and E's roundings)", name, eps, dE, bound);

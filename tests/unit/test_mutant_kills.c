@@ -254,7 +254,7 @@ static void scale_checks(int b, const sus_model *m)
             const double w[2] = {r * uniform(-1, 1), r * uniform(-1, 1)}, x[2] = {r * uniform(-1, 1),
                                                                                    r * uniform(-1, 1)};
             double g[2], J[4], sc;
-            st[k]->residual(m, eps, w, x, g, J, &sc);
+            st[k]->equation->residual(m, eps, w, x, g, J, &sc);
             worst = fmax(worst, rel(sc, terms_scale(m, st[k], eps, w, x)));
         }
         CHECK(worst <= 8 * TOL, "body %d, %s: the residual's scale is the sum of |terms| of G (%.2g)", b,

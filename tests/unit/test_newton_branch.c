@@ -18,6 +18,7 @@
  *     composition and the variational step at h = 100, six starts each). */
 #include "check_body.h"
 #include "exact.h"
+#include "implicit_step.h"
 #include "newton.h"
 #include "registry.h"
 #include "stability.h"
@@ -30,11 +31,11 @@ static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, 
                                 double *x)
 {
     enum { STAGES = 4000 };
-    st->guess(m, 0.0, w, x);
+    st->equation->guess(m, 0.0, w, x);
     for (int j = 1; j <= STAGES; j++) {
         sus_stepper_stats s;
-        if (sus_step_newton_solve(st->residual, st->unknowns, m, eps * j / STAGES, w, x, &s) !=
-                SUS_STEPPER_OK ||
+        if (sus_step_newton_solve(st->equation->residual, st->equation->unknowns, m,
+                                  eps * j / STAGES, w, x, &s) != SUS_STEPPER_OK ||
             !(s.det > 0.0))
             return -1;
     }
@@ -50,7 +51,7 @@ static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a,
     for (int k = 0; k < steps; k++) {
         double x[3], lam;
         sus_stepper_stats s;
-        st->apply(paper->model, h / paper->k, w, x, &lam, &s);
+        st->step->apply(paper->model, h / paper->k, w, x, &lam, &s);
         w[0] = x[0], w[1] = x[1];
     }
 }
@@ -64,13 +65,14 @@ static void branch_step(const sus_exact *paper, const char *name, double h, cons
     const double eps = h / paper->k;
     double x[SUS_MAX_UNKNOWNS], xu[SUS_MAX_UNKNOWNS], wn[3], g[SUS_MAX_UNKNOWNS], J[16], scale;
     sus_stepper_stats s;
-    st->guess(m, eps, w, x);
-    const int plain = sus_step_newton_solve(st->residual, st->unknowns, m, eps, w, x, &s);
+    st->equation->guess(m, eps, w, x);
+    const int plain =
+        sus_step_newton_solve(st->equation->residual, st->equation->unknowns, m, eps, w, x, &s);
     const int cont = uniform_continuation(st, m, eps, w, xu) == 0;
     const int off_branch =
         plain != SUS_STEPPER_OK || !(s.det > 0.0) || hypot(x[0] - xu[0], x[1] - xu[1]) > 1e-6;
-    const int rc = sus_step_implicit_solve(st, m, eps, w, wn, &s);
-    st->residual(m, eps, w, wn, g, J, &scale);
+    const int rc = sus_step_implicit_solve(st->equation, m, eps, w, wn, &s);
+    st->equation->residual(m, eps, w, wn, g, J, &scale);
     const double res = fmax(fabs(g[0]), fabs(g[1])), d = hypot(wn[0] - xu[0], wn[1] - xu[1]);
     CHECK(cont && (off_branch || !hard) && rc == SUS_STEPPER_OK &&
               res <= SUS_STEP_NEWTON_STAGNATION * scale && d <= 1e-12 * hypot(xu[0], xu[1]) && s.det > 0.0,
@@ -103,10 +105,10 @@ static void fast_path(void)
             for (int j = 0; j < 200; j++, n++) {
                 double x[2], wp[2], wn[3];
                 sus_stepper_stats s;
-                st->guess(&m, eps, w, x);
-                sus_step_newton_solve(st->residual, 2, &m, eps, w, x, &s);
-                st->result(&m, eps, w, x, wp);
-                sus_step_implicit_solve(st, &m, eps, w, wn, &s);
+                st->equation->guess(&m, eps, w, x);
+                sus_step_newton_solve(st->equation->residual, 2, &m, eps, w, x, &s);
+                st->equation->result(&m, eps, w, x, wp);
+                sus_step_implicit_solve(st->equation, &m, eps, w, wn, &s);
                 differ += wn[0] != wp[0] || wn[1] != wp[1];
                 w[0] = wn[0], w[1] = wn[1];
             }
@@ -127,8 +129,10 @@ static void fold(const sus_exact *paper)
     sus_stepper_stats s;
     map_state(paper, st, 29, 36, h, 2, w);
     const int found = sus_exp_fold(m, st, w, h / paper->k, &e_star, &exponent) == 0;
-    const int below = sus_step_newton_branch(st->residual, st->guess, 4, m, 0.99 * e_star, w, x, &s, &reg);
-    const int above = sus_step_newton_branch(st->residual, st->guess, 4, m, 1.01 * e_star, w, x, &s, &reg);
+    const int below = sus_step_newton_branch(st->equation->residual, st->equation->guess, 4, m,
+                                             0.99 * e_star, w, x, &s, &reg);
+    const int above = sus_step_newton_branch(st->equation->residual, st->equation->guess, 4, m,
+                                             1.01 * e_star, w, x, &s, &reg);
     CHECK(found && below == SUS_STEPPER_OK && above == SUS_STEPPER_SINGULAR && fabs(exponent - 0.5) <= 0.05,
           "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 e*: %d; at 1.01 e*: "
           "status %d, SINGULAR %d); det J ~ (e* - e)^%.4f (1/2)",
@@ -171,7 +175,7 @@ static void cycle_shortcut(const sus_exact *paper)
             for (long k = 0; k < N; k++) {
                 double x[3], lam;
                 sus_stepper_stats s;
-                st->apply(paper->model, eps, w, x, &lam, &s);
+                st->step->apply(paper->model, eps, w, x, &lam, &s);
                 w[0] = x[0], w[1] = x[1];
             }
             differ += r.final_err != hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);

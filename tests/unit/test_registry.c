@@ -23,7 +23,7 @@ static double energy_drift(const sus_model *m, const sus_stepper_type *st, doubl
     const double e0 = sus_energy(m, w);
     for (int k = 0; k < n; k++) {
         sus_stepper_stats ss;
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             return NAN;
         drift = fmax(drift, fabs(sus_energy(m, x) - e0));
         w[0] = x[0];
@@ -63,7 +63,7 @@ static double lambda_error(const sus_model *m, const sus_stepper_type *st, doubl
         sus_stepper_stats ss;
         sus_exact_omega(&ex, 2.5 * k, w);
         sus_exact_omega(&ex, 2.5 * k + eps, we);
-        if (st->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK)
             return NAN;
         e = fmax(e, fabs(lam - sus_lagmult(m, we)));
     }
@@ -84,9 +84,9 @@ static void check_lambda(const sus_model *m, const sus_stepper_type *st)
         const double e1 = lambda_error(m, st, EPS[i]), e2 = lambda_error(m, st, 0.5 * EPS[i]);
         if (!(e2 > floor))
             continue;
-        CHECK(st->lambda_order >= 1 ? e1 / e2 >= 3.0 : e1 / e2 < 2.0,
+        CHECK(st->desc.lambda_order >= 1 ? e1 / e2 >= 3.0 : e1 / e2 < 2.0,
               "%s: lambda_order = %d; local multiplier error %.2e at eps = %g, %.2e at %g (ratio %.2f)",
-              st->name, st->lambda_order, e1, EPS[i], e2, 0.5 * EPS[i], e1 / e2);
+              st->name, st->desc.lambda_order, e1, EPS[i], e2, 0.5 * EPS[i], e1 / e2);
         return;
     }
     printf("NOTE %s: local multiplier error at round-off for every eps <= 2: not judged\n", st->name);
@@ -95,28 +95,34 @@ static void check_lambda(const sus_model *m, const sus_stepper_type *st)
 static void check_type(const sus_model *m, const sus_stepper_type *st)
 {
     check_lambda(m, st);
-    const int n = st->unknowns, hooks = st->residual && st->guess && st->result;
-    CHECK(n >= 0 && n <= SUS_MAX_UNKNOWNS && (n == 0 || (hooks && st->implicit)) && (n > 0 || !hooks),
-          "%s: %d unknowns, implicit %d, equation hooks %s", st->name, n, st->implicit,
-          hooks ? "set" : "unset");
-    CHECK(st->source && access(st->source, R_OK) == 0 && strncmp(st->source, "src/", 4) == 0,
-          "%s: its source file %s exists", st->name, st->source ? st->source : "(null)");
-    CHECK(st->substeps >= 1 && (st->attitude == SUS_ATTITUDE_NONE) == (st->apply_full == NULL),
-          "%s: %d substeps; attitude form %d with%s apply_full", st->name, st->substeps, (int)st->attitude,
-          st->apply_full ? "" : "out");
+    const sus_step_equation *eq = st->equation;
+    const sus_stepper_desc *ds = &st->desc;
+    const int n = eq ? eq->unknowns : 0, hooks = eq && eq->residual && eq->guess && eq->result;
+    CHECK(!eq || (n >= 1 && n <= SUS_MAX_UNKNOWNS && hooks && ds->implicit),
+          "%s: equation %s, %d unknowns, implicit %d, hooks %s", st->name, eq ? "set" : "NULL", n,
+          ds->implicit, hooks ? "set" : "unset");
+    CHECK(ds->source && access(ds->source, R_OK) == 0 && strncmp(ds->source, "src/", 4) == 0,
+          "%s: its source file %s exists", st->name, ds->source ? ds->source : "(null)");
+    CHECK(st->step && st->step->apply && !st->tol && ds->substeps >= 1
+              && (ds->attitude == SUS_ATTITUDE_NONE) == (st->step->apply_full == NULL),
+          "%s: step interface with apply, no tolerance interface, %d substeps; attitude form %d "
+          "with%s apply_full",
+          st->name, ds->substeps, (int)ds->attitude, st->step && st->step->apply_full ? "" : "out");
     /* 200 steps of eps = 0.5: a method that conserves E drifts by round-off, at most a few u E per
      * substep (4 u E0 each, a worst case that never cancels); one that does not drifts by its
      * truncation error, many orders above that at this step. */
     const double e0 = sus_energy(m, W0);
-    const double drift = energy_drift(m, st, 0.5, 200), yard = 200.0 * st->substeps * 4.0 * SUS_U * e0;
-    CHECK(st->conserves_energy ? drift <= yard : drift > 100.0 * yard,
+    const double drift = energy_drift(m, st, 0.5, 200),
+                 yard = 200.0 * st->desc.substeps * 4.0 * SUS_U * e0;
+    CHECK(st->desc.conserves_energy ? drift <= yard : drift > 100.0 * yard,
           "%s: conserves_energy = %d; |E - E0| over 200 steps of eps = 0.5: %.2e (round-off yardstick %.1e)",
-          st->name, st->conserves_energy, drift, yard);
+          st->name, st->desc.conserves_energy, drift, yard);
     /* cayley against exp-mid differ at O(eps^2) per step; a method that ignores the request gives
      * the same R bit for bit. */
     const double d = recon_effect(m, st, 0.5);
-    CHECK(st->follows_recon ? d > 1e-6 : d == 0.0, "%s: follows_recon = %d; R after cayley vs exp-mid: %.2e",
-          st->name, st->follows_recon, d);
+    CHECK(st->desc.follows_recon ? d > 1e-6 : d == 0.0,
+          "%s: follows_recon = %d; R after cayley vs exp-mid: %.2e", st->name,
+          st->desc.follows_recon, d);
 }
 
 /* A method's label says what its type says of itself: the reconstruction only when it follows
@@ -132,8 +138,9 @@ static void check_labels(void)
                  {0, SUS_ATTITUDE_QUAT, "m (quaternion)"},
                  {0, SUS_ATTITUDE_MATRIX, "m (matrix)"}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        const sus_stepper_type t = {.name = "m", .follows_recon = cases[i].follows_recon,
-                                    .attitude = cases[i].attitude};
+        const sus_stepper_type t = {
+            .name = "m",
+            .desc = {.follows_recon = cases[i].follows_recon, .attitude = cases[i].attitude}};
         char label[64];
         sus_step_method_label(&t, SUS_RECON_EXP_MID, label, sizeof label);
         CHECK(strcmp(label, cases[i].expected) == 0,
@@ -163,8 +170,8 @@ int main(void)
                 {&sus_step_comp8_kl_type, &sus_step_comp_kahan_li8},
                 {&sus_step_comp10_ss_type, &sus_step_comp_sofroniou10}};
     for (size_t i = 0; i < sizeof comp / sizeof comp[0]; i++)
-        CHECK(comp[i].type->substeps == sus_step_composition_stages(comp[i].table),
-              "%s: %d substeps = %d stages", comp[i].type->name, comp[i].type->substeps,
+        CHECK(comp[i].type->desc.substeps == sus_step_composition_stages(comp[i].table),
+              "%s: %d substeps = %d stages", comp[i].type->name, comp[i].type->desc.substeps,
               sus_step_composition_stages(comp[i].table));
 
     /* build/methods.tsv: a header and one row per method, each found again by index. */
@@ -183,11 +190,16 @@ int main(void)
     }
     CHECK(ok && rows == sus_step_method_count_all(), "methods.tsv: a header and %d rows for %d methods", rows,
           sus_step_method_count_all());
-    /* The fixed-step methods first, each with a step of given eps; the tolerance-driven ones after. */
-    for (int i = 0; i < sus_step_method_count_all(); i++)
-        CHECK((i < sus_step_method_count()) == (sus_step_method_get(i)->type->tol == NULL),
-              "%s: listed with the %s methods", sus_step_method_get(i)->type->name,
-              sus_step_method_get(i)->type->tol ? "tolerance-driven" : "fixed-step");
+    /* The fixed-step methods first, each with a step of given eps; the tolerance-driven ones after;
+     * each has exactly one of the two interfaces. */
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
+        const sus_stepper_type *t = sus_step_method_get(i)->type;
+        CHECK((i < sus_step_method_count()) == (t->tol == NULL) &&
+                  (t->step == NULL) == (t->tol != NULL),
+              "%s: listed with the %s methods; step interface %s, tolerance interface %s", t->name,
+              t->tol ? "tolerance-driven" : "fixed-step", t->step ? "set" : "NULL",
+              t->tol ? "set" : "NULL");
+    }
     for (int i = 0; i < sus_step_method_count_all(); i++)
         CHECK(sus_step_method_index_of(sus_step_method_get(i)->type) == i, "%s found by its type",
               sus_step_method_get(i)->type->name);

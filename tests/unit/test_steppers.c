@@ -2,6 +2,7 @@
  * equations on the paper's body and on the seeded general bodies (tests/unit/bodies.h). */
 #include "check_body.h"
 #include "driver.h"
+#include "implicit_step.h"
 #include "newton.h"
 #include "mat3.h"
 #include "so3.h"
@@ -101,7 +102,7 @@ static double jacobian_column(const sus_stepper_type *st, const sus_model *m, do
                               const double *x, const double *J, int j, double h)
 {
     enum { NX = SUS_MAX_UNKNOWNS };
-    const int n = st->unknowns;
+    const int n = st->equation->unknowns;
     static const double k[4] = {-2.0, -1.0, 1.0, 2.0}, c[4] = {1.0, -8.0, 8.0, -1.0};
     double d[NX] = {0}, scale = 0.0, worst = 0.0;
     for (int s = 0; s < 4; s++) {
@@ -109,7 +110,7 @@ static double jacobian_column(const sus_stepper_type *st, const sus_model *m, do
         for (int i = 0; i < n; i++)
             xs[i] = x[i];
         xs[j] += k[s] * h;
-        st->residual(m, eps, w, xs, g, Jt, &sc);
+        st->equation->residual(m, eps, w, xs, g, Jt, &sc);
         scale = fmax(scale, sc);
         for (int i = 0; i < n; i++)
             d[i] += c[s] * g[i];
@@ -126,23 +127,23 @@ static void jacobians(const sus_model *m, const char *bname, body_scale bs)
     enum { NX = SUS_MAX_UNKNOWNS };
     for (int s = 0; s < sus_step_method_count(); s++) {
         const sus_stepper_type *st = sus_step_method_get(s)->type;
-        const int n = st->unknowns;
-        if (!st->residual)
+        if (!st->equation)
             continue;
+        const int n = st->equation->unknowns;
         double worst = 0.0;
         for (int k = 0; k < 30; k++) {
             const double a = 0.37 * k, eps = 0.05 * (1 + k % 7) * bs.time, r = bs.size;
             const double w[2] = {0.6 * r * cos(a), 0.5 * r * sin(a)},
                          w1[2] = {0.6 * r * cos(a + 0.1), 0.5 * r * sin(a + 0.1)};
             double x[NX], g[NX], J[NX * NX], sc, big = 0.0;
-            st->guess(m, eps, w, x);
+            st->equation->guess(m, eps, w, x);
             for (int i = 0; i < n; i++) {
                 x[i] += 0.1 * w1[i % 2]; /* off the root */
                 big = fmax(big, fabs(x[i]));
             }
             const double h = ldexp(1.0, ilogb(big) - 2); /* a power of two, |x| / 8 .. |x| / 4 */
             onto_grid(x, n, h);
-            st->residual(m, eps, w, x, g, J, &sc);
+            st->equation->residual(m, eps, w, x, g, J, &sc);
             for (int j = 0; j < n; j++)
                 worst = fmax(worst, jacobian_column(st, m, eps, w, x, J, j, h));
         }
@@ -160,18 +161,19 @@ static void newton_solves(const sus_model *m, const char *bname, const double w0
     enum { NX = SUS_MAX_UNKNOWNS };
     for (int s = 0; s < sus_step_method_count(); s++) {
         const sus_stepper_type *st = sus_step_method_get(s)->type;
-        if (!st->residual)
+        const sus_step_equation *eq = st->equation;
+        if (!eq)
             continue;
         const double w[3] = {w0[0], w0[1], 0.0};
         double x[NX], g[NX], J[NX * NX], sc, wn[3], wr[2], lam;
         sus_stepper_stats stats, ss;
-        const int status = st->apply(m, eps, w, wn, &lam, &stats);
-        st->guess(m, eps, w, x);
-        const int s2 = sus_step_newton_solve(st->residual, st->unknowns, m, eps, w, x, &ss);
-        st->residual(m, eps, w, x, g, J, &sc);
-        st->result(m, eps, w, x, wr);
+        const int status = st->step->apply(m, eps, w, wn, &lam, &stats);
+        eq->guess(m, eps, w, x);
+        const int s2 = sus_step_newton_solve(eq->residual, eq->unknowns, m, eps, w, x, &ss);
+        eq->residual(m, eps, w, x, g, J, &sc);
+        eq->result(m, eps, w, x, wr);
         double gmax = 0.0;
-        for (int i = 0; i < st->unknowns; i++)
+        for (int i = 0; i < eq->unknowns; i++)
             gmax = fmax(gmax, fabs(g[i]));
         CHECK(status == SUS_STEPPER_OK && s2 == SUS_STEPPER_OK && gmax <= 16 * SUS_U * sc &&
                   stats.iterations <= 4 && wn[2] == 0.0 && wr[0] == wn[0] && wr[1] == wn[1],
@@ -205,11 +207,11 @@ static void variational_is_vso3(const sus_model *m, const char *bname, const dou
         const double eps = (0.1 + 0.2 * n) * time, w[3] = {w0[0] - 0.03 * n, w0[1], 0.0};
         double x[3], lam, g[2], gd[2], J[4], sc, size, size_full;
         sus_stepper_stats stats;
-        if (sus_step_variational->apply(m, eps, w, x, &lam, &stats) != SUS_STEPPER_OK)
+        if (sus_step_variational->step->apply(m, eps, w, x, &lam, &stats) != SUS_STEPPER_OK)
             continue; /* a large step may have no solution: nothing to compare */
         ran++;
         const double raw = vso3(m, eps, w, x, 1, g, &size);
-        sus_step_variational->residual(m, eps, w, x, gd, J, &sc);
+        sus_step_variational->equation->residual(m, eps, w, x, gd, J, &sc);
         /* relative to the size of the terms summed (the residual's scale): two orders of summation */
         worst_dyn = fmax(worst_dyn, (fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1])) / (eps * sc));
         const double ta = taualg_terms(m, x, w);
@@ -251,7 +253,7 @@ static void midpoint_energy(const sus_model *m, const char *bname, const double 
     sus_stepper_stats st;
     int ok = 1;
     for (int k = 0; k < 100; k++) {
-        ok &= sus_step_midpoint->apply(m, eps, w, x, &lam, &st) == SUS_STEPPER_OK;
+        ok &= sus_step_midpoint->step->apply(m, eps, w, x, &lam, &st) == SUS_STEPPER_OK;
         const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
         const double ca = fabs(m->b[0] * mid[0]) + fabs(m->b[1] * mid[1]);
         const double n1 = fabs(mid[0]) + fabs(mid[1]), d = fabs(sus_energy(m, x) - sus_energy(m, w));
@@ -329,6 +331,19 @@ static void driver(const sus_model *m)
           "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUS_STEPPER_SINGULAR", stats.det);
 }
 
+/* The shared hooks of the implicit steps write NaN for a NULL input, nothing for a NULL output. */
+static void hooks_null(const sus_model *m)
+{
+    const double w0[2] = {0.4, 0.5};
+    double x[2] = {0, 0}, y[2] = {0, 0};
+    sus_step_predict(NULL, 0.1, w0, x);
+    sus_step_predict(m, 0.1, w0, NULL);
+    sus_step_result_is_x(m, 0.1, w0, NULL, y);
+    sus_step_result_is_x(m, 0.1, w0, x, NULL);
+    CHECK(isnan(x[0]) && isnan(x[1]) && isnan(y[0]) && isnan(y[1]),
+          "sus_step_predict(NULL model), sus_step_result_is_x(NULL x): NaN");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -347,8 +362,10 @@ int main(void)
         variational_is_vso3(&m, b.name, b.w0, bs.time);
         midpoint_energy(&m, b.name, b.w0, bs.time);
         unreduced_inverse(&m, b.name);
-        if (k == 0)
+        if (k == 0) {
             driver(&m);
+            hooks_null(&m);
+        }
     }
     return check_summary("test_steppers");
 }

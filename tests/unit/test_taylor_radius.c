@@ -39,12 +39,13 @@ static int sweep(const sus_stepper_type *st, const sus_model *m, const double w0
             EPS_MAX * pow(10.0, -5.0 * (double)(NGRID - 1 - i) / (NGRID - 1)); /* 1e-3 ... 100 */
         double x[3], lam, ref[2];
         sus_stepper_stats stats;
-        const int status = st->apply(m, eps, w, x, &lam, &stats);
+        const int status = st->step->apply(m, eps, w, x, &lam, &stats);
         if (status == SUS_STEPPER_DIVERGED)
             continue;
         sus_exact_omega(&ex, eps, ref);
         const double err = hypot(x[0] - ref[0], x[1] - ref[1]);
-        const double bound = (2.0 + kappa) * sus_step_taylor_tail_bound(st->order, m, eps, w0) + 1e-14 * a;
+        const double bound =
+            (2.0 + kappa) * sus_step_taylor_tail_bound(st->desc.order, m, eps, w0) + 1e-14 * a;
         *worst = fmax(*worst, err / bound);
         if (status != SUS_STEPPER_OK || !isfinite(bound) || !(err <= bound)) /* no proof, no answer */
             return -1;

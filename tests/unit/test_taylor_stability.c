@@ -38,9 +38,10 @@ int main(void)
     const sus_stepper_type *ty[4] = {&sus_step_taylor8_type, &sus_step_taylor10_type,
                                      &sus_step_taylor12_type, &sus_step_taylor16_type};
     for (int i = 0; i < 4; i++) {
-        const double w = ty[i]->stability ? worst_ratio(ty[i]->order, ty[i]->stability) : NAN;
+        const double w =
+            ty[i]->desc.stability ? worst_ratio(ty[i]->desc.order, ty[i]->desc.stability) : NAN;
         CHECK(w <= 1.0, "%s: R(z) is the truncated exponential of degree %d on [-8, 2] (error / 8 u e^|z| "
-              "%.2g, at most 1)", ty[i]->name, ty[i]->order, w);
+              "%.2g, at most 1)", ty[i]->name, ty[i]->desc.order, w);
     }
     double worst = 0.0;
     for (int p = 1; p <= 32; p++)

@@ -1,0 +1,49 @@
+#include "implicit_step.h"
+
+#include "newton.h"
+
+#include <math.h>
+
+int sus_step_implicit_solve(const sus_step_equation *eq, const sus_model *m, double eps,
+                            const double w[3], double w_next[3], sus_stepper_stats *st)
+{
+    double x[SUS_MAX_UNKNOWNS];
+    const int status =
+        sus_step_newton_solve_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, x, st);
+    eq->result(m, eps, w, x, w_next);
+    w_next[2] = 0.0;
+    return status;
+}
+
+void sus_step_predict(const sus_model *m, double eps, const double w[2], double x[2])
+{
+    double f[2], mid[2];
+    if (!x)
+        return;
+    if (!m || !w) {
+        x[0] = x[1] = NAN;
+        return;
+    }
+    sus_contdyn(m, w, f);
+    mid[0] = w[0] + 0.5 * eps * f[0];
+    mid[1] = w[1] + 0.5 * eps * f[1];
+    sus_contdyn(m, mid, f);
+    x[0] = w[0] + eps * f[0];
+    x[1] = w[1] + eps * f[1];
+}
+
+void sus_step_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,
+                          double w_next[2])
+{
+    (void)m;
+    (void)eps;
+    (void)w;
+    if (!w_next)
+        return;
+    if (!x) {
+        w_next[0] = w_next[1] = NAN;
+        return;
+    }
+    w_next[0] = x[0];
+    w_next[1] = x[1];
+}
