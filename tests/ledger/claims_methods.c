@@ -54,7 +54,8 @@ static double size_of(const claims_body *d, int q)
 static curve_order order_on(const claims_body *d, const sus_stepper_type *t, int q,
                             const double *err)
 {
-    const claims_rounding k = {t->desc.implicit, t->desc.conserves_energy && !t->desc.implicit, t->desc.substeps};
+    const claims_rounding k = {t->desc.implicit, t->desc.conserves_energy && !t->desc.implicit,
+                               t->desc.substeps};
     double floor[NE];
     claims_body_floors(d, &k, q < 2 ? q : CLAIMS_Q_R, floor);
     return order_of_curve(d->eps, d->ex.k, err, NE, size_of(d, q), floor);

@@ -62,11 +62,11 @@ static double c_of_t(const sus_exact *bex, double t)
     return bex->model->I[2][0] * w[0] + bex->model->I[2][1] * w[1];
 }
 
-/* O_0 = I31 w1' + I32 w2' = dc(w(t))/dt (docs/explanation/conventions.md), by a central difference on the closed form and
- * never from (LagMult): the expected value must not contain the term under test. Each c(w(t)) is
- * good to delta = 32 u |I3.|_1 W (s, exp, tanh and the triangular solve: about ten roundings,
- * each at most W = lim_w_major, doubled); the quotient errs by c3 h^2 / 6 (truncation) + delta / h
- * (round-off), least at h^3 = 3 delta / c3. Returns O_0 and its error bound in *err. */
+/* O_0 = I31 w1' + I32 w2' = dc(w(t))/dt (docs/explanation/conventions.md), by a central difference on the
+ * closed form and never from (LagMult): the expected value must not contain the term under test. Each c(w(t))
+ * is good to delta = 32 u |I3.|_1 W (s, exp, tanh and the triangular solve: about ten roundings, each at most
+ * W = lim_w_major, doubled); the quotient errs by c3 h^2 / 6 (truncation) + delta / h (round-off), least at
+ * h^3 = 3 delta / c3. Returns O_0 and its error bound in *err. */
 static double o0_closed_form(const sus_exact *bex, double c3, double W, double t, double *err)
 {
     const double delta = 32.0 * SUS_U * (fabs(bex->model->I[2][0]) + fabs(bex->model->I[2][1])) * W;

@@ -177,9 +177,9 @@ static double first_failure(const sus_exact *paper, const sus_stepper_type *st, 
 
 /* Solvability on the ledger's map (12 angles): every implicit step is asserted solvable on its
  * branch far beyond the paper's eps = 1 (h = 0.145): from h = 1, 7x the paper's step, at least.
- * Where docs/explanation/where-methods-fail.md states that no run fails up to the largest h tested (expected_orders.c:
- * solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000 itself fails it).
- * The steps solve for the branch themselves (newton.h), so a failure here is the step equation's:
+ * Where docs/explanation/where-methods-fail.md states that no run fails up to the largest h tested
+ * (expected_orders.c: solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000 itself
+ * fails it). The steps solve for the branch themselves (newton.h), so a failure here is the step equation's:
  * a fold, or a continuation that cannot follow it. */
 void stability_solvable_claims(const sus_exact *paper, int m)
 {
