@@ -25,6 +25,18 @@ double sus_exact_tail_bound(const sus_exact *ex, double t);
  * w0, NaN for a NULL or refused ex or a budget that is not a positive number. */
 double sus_exact_tail_time(const sus_exact *ex, double budget);
 
+/* Bounds that follow the direction w - w_inf takes, for a caller near w_inf (taylor-adaptive's
+ * jump, step_taylor_adaptive.c) where |L^{-1}|_F can overstate it by up to sqrt(cond(I_m)). With
+ * u - u_inf = r R(beta) (sigma sech a, tanh a - 1) (exact.h: cos psi = sigma sech a, sin psi =
+ * tanh a) and t1, t2 = L^{-T} R(beta) e1, e2 (t1 the ellipse's tangent at w_inf),
+ *     |w - w_inf| <= r (sech a |t1| + (1 - tanh a) |t2|),
+ * and integrating over a from a(t) (dt = da / k): int sech = 2 atan(e^{-a}), int (1 - tanh) =
+ * ln(1 + e^{-2a}). *dev gets the first's largest value from t on (1 - tanh decreases; sech
+ * decreases for a >= 0 and is at most 1), *integral the second; both exceed the truth by a
+ * fraction of order e^{-a} only. 0 for a motion that stays at w0. Returns 0, or -1 with NaN for a
+ * NULL or refused ex. */
+int sus_exact_tail_bounds(const sus_exact *ex, double t, double *dev, double *integral);
+
 #ifdef __cplusplus
 }
 #endif

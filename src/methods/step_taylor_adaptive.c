@@ -41,21 +41,38 @@
  * tol escapes only when w lands exactly on c(w) = 0 in floating point. At that balance the step
  * h = beta_p / k is the controller's fixed point, err = SAFETY^{p+1} tol, and the deviation's own
  * series, dev (hk)^n / n!, gives err = dev beta_p^{p+1} / (p! p): dev = 0.29 tol at p = 6 down to
- * 0.07 tol at p = 20. So the run settles:
- *   once w is within dev of w_inf on the g < 0 half, with dev max(1, sqrt 2 / k') <= SETTLE tol
- *   and k' = min(-g(w), k) (g is linear: to first order k' bounds the rate on the way from w to
- *   w_inf), w is set to w_inf and the rest of the run is one step (the quaternion's series for a
- *   constant w, exp(h w^/2), summed in closed form). To first order in dev the exact flow from w
- *   stays within dev of w_inf (|c| shrinks at a rate >= k'), and R' = R w^ driven by w instead of
- *   w_inf moves R by at most sqrt 2 int |w - w_inf| dt <= sqrt 2 dev / k' (the Frobenius norm of
- *   w^ is sqrt 2 |w|): the step's local error is within SETTLE tol in both, the promise every
- *   other step keeps. SETTLE = 1/2 lies above the balance above, so a stiff run settles instead
- *   of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf, times the rounding of E that w_inf
- *   inherits (up to cond(I_m)), settles at any tol: there c(w) is rounding noise, which would
- *   otherwise drive the stiff series. */
+ * 0.07 tol at p = 20.
+ *
+ * The tail. Every start on the ellipse but -w_inf flows to w_inf, and the closed form (exact.h)
+ * from the current w bounds, along the direction w - w_inf takes (exact_tail.h's
+ * sus_exact_tail_bounds), both dev, the largest |w(s) - w_inf| from here on, and the integral of
+ * |w - w_inf| from here on. Replacing the rest of the motion by the steady rotation moves w by at
+ * most dev (plus the floor below: the rounding of the w_inf found through E(w_0)) and R by at most
+ * sqrt 2 times that integral (R' = R w^ driven by w_inf instead of w: the difference D obeys
+ * D' = D w^ + R_inf (w - w_inf)^, whose homogeneous flow keeps norms, and the Frobenius norm of
+ * v^ is sqrt 2 |v|). So once both are within tol, on the g < 0 half (from the other the whole
+ * transient lies ahead), w is set to w_inf and the rest of the run is one step, the quaternion's
+ * series for a constant w, exp(h w_inf^/2), summed in closed form: its error is within tol, the
+ * promise of every other step, proved rather than estimated, and the cost of a run stops growing
+ * with t_end. Near w_inf the bounds exceed the truth by a fraction ~ e^{-a} ~ dev / r (exact.h's
+ * r), so at the stiff balance above (dev <= 0.29 tol, and the integral about dev / k) the run jumps
+ * instead of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf, times the rounding of E that
+ * w_inf inherits (up to cond(I_m)), settles at any tol: there c(w) is rounding noise, which would
+ * otherwise drive the stiff series.
+ *
+ * Conditioning. The jump turns R by the angle (T - t*) |w_inf| (T = t_end, t* the jump's start),
+ * formed in double: T - t* carries a rounding of T, |w_inf| and its direction about 3 rho u (rho
+ * >= 1 the size of E's terms over E, which w_inf inherits) and the half angle's products a few u
+ * more, so R(T) is off by up to about 16 rho u T |w_inf| (dist = sqrt 2 times the angle's error)
+ * whatever tol is. Any method is: the field is homogeneous of degree 2, so a relative change e of
+ * w_0's scale is one of the time (w_l(t) = l w(l t), R_l(t) = R(l t)) and moves R(T) by sqrt 2 e T
+ * |w_inf|; with e = u, the rounding of w_0 itself, that is u T |w_inf|, the problem's own
+ * conditioning, not the jump's (tests/unit/test_taylor_tail.c measures both at T = 1e4 and 1e6). */
 #include "taylor.h"
 #include "taylor_series.h"
 
+#include "exact.h"
+#include "exact_tail.h"
 #include "quaternion.h"
 #include "reconstruct.h"
 
@@ -73,10 +90,7 @@
  * the estimate, not this, decides the accuracy). */
 #define RADIUS_FRACTION 0.99
 #define ORDER_SHIFT 2.0
-/* Settling (see the top): half of tol, above the stiff balance (at most 0.29 tol) and with room
- * for the second-order terms the first-order bound leaves out; the floor is a few roundings of a
- * state of size |w_inf|. */
-#define SETTLE 0.5
+/* The tail (see the top): the floor is a few roundings of a state of size |w_inf|. */
 #define SETTLE_FLOOR 8.0
 
 struct sus_tol_work {
@@ -244,15 +258,30 @@ static void accept(sus_tol_work *wk, double h, double err, double t_end, double 
     wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
 }
 
-/* Has w settled on w_inf (see the top of the file)? */
+/* The error of the tail jump from w (see the top of the file): w stays within dev of the closed
+ * form's w_inf, and w_inf is the one found through E0 to the floor; R within sqrt 2 times the
+ * integral of |w - w_inf| (exact_tail.h's bounds along the direction w - w_inf takes).
+ * INFINITY where the closed form refuses w. */
+static double tail_error(const sus_tol_work *wk, const double w[2])
+{
+    sus_exact ex;
+    double dev, integral;
+    if (sus_exact_init(&ex, wk->m, w) != 0 || sus_exact_tail_bounds(&ex, 0.0, &dev, &integral) != 0)
+        return INFINITY;
+    const double e = fmax(dev + wk->floor, 1.4142135623730951 * integral);
+    return isnan(e) ? INFINITY : e;
+}
+
+/* Does the run jump its tail from w (see the top of the file)? On the g < 0 half only: from the
+ * other the whole transient lies ahead. dev > tol cannot pass (the closed form's dev is at least
+ * |w - w_inf|), so the closed form is set up for the last steps only. */
 static int settles(const sus_tol_work *wk, const double w[2])
 {
     if (!(wk->k_inf > 0.0)) return 0;
     const double dev = hypot(w[0] - wk->w_inf[0], w[1] - wk->w_inf[1]);
     if (dev <= wk->floor) return 1;
-    const double kw = -rate(wk->m, w);
-    if (!(kw > 0.0)) return 0;
-    return dev * fmax(1.0, 1.4142135623730951 / fmin(kw, wk->k_inf)) <= SETTLE * wk->tol;
+    if (!(rate(wk->m, w) < 0.0) || !(dev <= wk->tol)) return 0;
+    return tail_error(wk, w) <= wk->tol;
 }
 
 /* exp(h (0, w)/2) for a constant w = (w1, w2, 0): the quaternion series of a steady rotation,
