@@ -91,12 +91,12 @@ ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
 # The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is
 # compiled with only its own and the lower folders on the include path, so an include of a
 # higher layer does not build; each library layer is one archive, libsus_LAYER.a.
-LIB_LAYERS := util core methods exp render prog
+LIB_LAYERS := util core methods lab render prog
 inc_util    := -Isrc/util
 inc_core    := $(inc_util) -Isrc/core
 inc_methods := $(inc_core) -Isrc/methods
-inc_exp     := $(inc_methods) -Isrc/exp
-inc_render  := $(inc_exp) -Isrc/render
+inc_lab     := $(inc_methods) -Isrc/lab
+inc_render  := $(inc_lab) -Isrc/render
 inc_prog    := $(inc_render) -Isrc/prog
 inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP

@@ -59,7 +59,7 @@ import time
 # Every object is built with array bounds checked: an index one past an array (a mutated size or
 # index) then stops the test that reaches it, instead of landing silently in a neighbour.
 BOUNDS = "-fsanitize=bounds -fno-sanitize-recover=bounds"
-LAYERS = ("util", "core", "methods", "exp", "render", "prog")  # src/ folders, lowest first
+LAYERS = ("util", "core", "methods", "lab", "render", "prog")  # src/ folders, lowest first
 # The library files in priority order (the campaign may be cut short: the first ones matter most).
 FILES = ["src/core/model.c", "src/core/model.h", "src/core/so3.c", "src/core/quaternion.c",
          "src/core/reconstruct.c", "src/core/exact.c", "src/core/refattitude.c",

@@ -49,7 +49,7 @@ typedef struct {
 /* Returns 0 to go on, non-zero to stop the run (e.g. a write error). */
 typedef int (*sus_emit_fn)(void *ctx, const sus_row *row);
 
-/* What every run function (sus_run, sus_run_tol, sus_run_exact, sus_exp_series_run) returns:
+/* What every run function (sus_run, sus_run_tol, sus_run_exact, sus_lab_series_run) returns:
  * one convention, with "emit asked to stop" distinct from every failure. */
 typedef enum {
     SUS_RUN_STOPPED = -1,          /* emit returned non-zero (e.g. a write error) */

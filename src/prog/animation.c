@@ -527,13 +527,13 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir, int mo
     sus_mat3_identity(I3);
     sus_refatt_init(&ra, fr->ex, 0.0, I3);
     fr->strip = owned.strip = malloc(6 * (size_t)fr->W * fr->H * sizeof(uint32_t));
-    progress_start("animation", "frame", fr->nframes, modes);
+    suslov_progress_start("animation", "frame", fr->nframes, modes);
     for (int f = 0; f < fr->nframes; f++) {
-        progress_tick(f, NULL);
+        suslov_progress_tick(f, NULL);
         if (draw_frame(fr, &ra, f, figdir, &video) != 0)
             return -1;
     }
-    progress_end();
+    suslov_progress_end();
     close_video(video, mp4);
     if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, figdir) != 0)
         return -1;
@@ -544,7 +544,7 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir, int mo
 
 int main(int argc, char **argv)
 {
-    const int modes = progress_modes(&argc, argv);
+    const int modes = suslov_progress_modes(&argc, argv);
     if (argc != 4) {
         fprintf(stderr, "usage: animation [--quiet] CONFIG FIGDIR DATADIR\n");
         return 2;

@@ -12,13 +12,13 @@
  * (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the end (6 unknowns), and, for the
  * w accuracies only, (w1, w2) alone (2 unknowns; our Taylor methods get the same choice,
  * "(w only)"). Every run of a configuration starts from the same state, its step size included
- * (src/exp/peers.c), and the error credited to a point is the one its timed runs end with. The
+ * (src/lab/peers.c), and the error credited to a point is the one its timed runs end with. The
  * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.
- * The reduced problem (src/exp/reduced.h: q alone along the closed-form w, 4 unknowns) goes to
+ * The reduced problem (src/lab/reduced.h: q alone along the closed-form w, 4 unknowns) goes to
  * rk8pd and rkck (driver or evolve loop, abs = rel or abs alone, initial step 1e-2 or 1) and to
  * Boost's rkf78 (abs = rel or abs alone). The attitude targets compare our fastest method with the
  * best peer on each problem; the w race is information only (the closed form gives w).
- * The phases are in src/exp/bench*.c, the report, tables and figures in src/render/bench*.c.
+ * The phases are in src/lab/bench*.c, the report, tables and figures in src/render/bench*.c.
  * The figures are drawn from DATADIR/bench.csv once it is written; `bench --plot FIGDIR DATADIR`
  * draws them again from a run's data alone (make figures does, from the recorded run). */
 #define _POSIX_C_SOURCE 200809L
@@ -49,7 +49,7 @@ enum { WITH_ODEINT = 1 };
 /* ---- the Boost.Odeint peers (C++, src/prog/bench_odeint.cpp) ---- */
 
 typedef struct {
-    const sus_exp_bench_problem *pb;
+    const sus_lab_bench_problem *pb;
     suslov_odeint *o;
     size_t dim;
     double T;
@@ -60,7 +60,7 @@ typedef struct {
 static void odeint_fn(void *vctx)
 {
     odeint_run *r = vctx;
-    sus_exp_peer_initial(r->dim, r->pb->ex.w0, r->y);
+    sus_lab_peer_initial(r->dim, r->pb->ex.w0, r->y);
     r->steps = suslov_odeint_run(r->o, r->T, r->y);
 }
 
@@ -70,7 +70,7 @@ static int odeint_result(const void *vctx, double w[2], double R[3][3])
     /* the reduced problem is given w(t): its w is the closed form's */
     memcpy(w, r->dim == 4 ? r->pb->w_T : r->y, 2 * sizeof(double));
     if (r->dim != 2)
-        sus_exp_peer_attitude(r->dim, r->y, R);
+        sus_lab_peer_attitude(r->dim, r->y, R);
     return 1;
 }
 
@@ -81,35 +81,35 @@ static void odeint_release(void *vctx)
     free(r);
 }
 
-static const sus_exp_bench_run_ops ODEINT_OPS = {odeint_fn, odeint_result, odeint_release};
+static const sus_lab_bench_run_ops ODEINT_OPS = {odeint_fn, odeint_result, odeint_release};
 
 /* A Boost peer's series: stepper on formulation dim, or (dim 4) rkf78 on the reduced problem
  * with rel = rel_factor tol (1: abs = rel; 0: absolute error alone). */
-static void sweep_odeint(sus_exp_bench *b, int stepper, size_t dim, double rel_factor)
+static void sweep_odeint(sus_lab_bench *b, int stepper, size_t dim, double rel_factor)
 {
-    sus_exp_bench_series *s = sus_exp_bench_new_series(b);
+    sus_lab_bench_series *s = sus_lab_bench_new_series(b);
     snprintf(s->name, sizeof s->name, "Boost %s %s%s",
              stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer",
-             sus_exp_bench_dim_name(dim),
+             sus_lab_bench_dim_name(dim),
              dim != 4 ? "" : rel_factor > 0.0 ? " abs=rel" : " abs");
     s->w_only = dim == 2;
     s->reduced = dim == 4;
     s->dim = dim;
     s->rel = rel_factor;
     for (int j = 0;
-         j < SUS_EXP_BENCH_MAXPTS && SUS_EXP_BENCH_PEER_TOL(j) >= SUS_EXP_BENCH_PEER_TOL_MIN; j++) {
-        const double tol = SUS_EXP_BENCH_PEER_TOL(j);
-        odeint_run *r = sus_exp_bench_calloc(1, sizeof *r);
+         j < SUS_LAB_BENCH_MAXPTS && SUS_LAB_BENCH_PEER_TOL(j) >= SUS_LAB_BENCH_PEER_TOL_MIN; j++) {
+        const double tol = SUS_LAB_BENCH_PEER_TOL(j);
+        odeint_run *r = sus_lab_bench_calloc(1, sizeof *r);
         *r = (odeint_run){&b->pb,
                           dim == 4 ? suslov_odeint_open_reduced(&b->pb.red, tol, rel_factor * tol)
                                    : suslov_odeint_open(stepper, (int)dim, tol, &b->pb.model),
                           dim,
-                          SUS_EXP_BENCH_T_END,
+                          SUS_LAB_BENCH_T_END,
                           {0},
                           0};
         if (!r->o)
-            sus_exp_bench_die("Boost.Odeint allocation failed");
-        if (!sus_exp_bench_record(b, s, tol, &ODEINT_OPS, r)) {
+            sus_lab_bench_die("Boost.Odeint allocation failed");
+        if (!sus_lab_bench_record(b, s, tol, &ODEINT_OPS, r)) {
             odeint_release(r);
             continue;
         }
@@ -118,7 +118,7 @@ static void sweep_odeint(sus_exp_bench *b, int stepper, size_t dim, double rel_f
 }
 
 /* On the full problem rkf78 and Bulirsch-Stoer; on the reduced one rkf78 under either control. */
-static void more_peers(sus_exp_bench *b, size_t dim, void *ctx)
+static void more_peers(sus_lab_bench *b, size_t dim, void *ctx)
 {
     (void)ctx;
     for (int k = 0; k < 2; k++)
@@ -144,20 +144,20 @@ static void progress(const char *what)
 
 /* The measurements, phase by phase, with the seconds each took into t_phase[0..4]. Returns the
  * number of points whose timed runs' errors differ from the recorded ones. */
-static int measure(sus_exp_bench *b, double t_phase[5])
+static int measure(sus_lab_bench *b, double t_phase[5])
 {
     t_phase[0] = sus_sys_now();
-    sus_exp_bench_sweep_all(b, more_peers, NULL);
+    sus_lab_bench_sweep_all(b, more_peers, NULL);
     t_phase[1] = sus_sys_now();
-    const int differ = sus_exp_bench_time_points(b);
+    const int differ = sus_lab_bench_time_points(b);
     t_phase[2] = sus_sys_now();
-    sus_exp_bench_envelopes(b);
-    sus_exp_bench_measure_step_costs(b);
-    sus_exp_bench_measure_tol_costs(b);
+    sus_lab_bench_envelopes(b);
+    sus_lab_bench_measure_step_costs(b);
+    sus_lab_bench_measure_tol_costs(b);
     t_phase[3] = sus_sys_now();
-    sus_exp_bench_progress(b, "long runs");
-    sus_exp_bench_long_runs(b);
-    sus_exp_bench_equal_error_runs(b);
+    sus_lab_bench_progress(b, "long runs");
+    sus_lab_bench_long_runs(b);
+    sus_lab_bench_equal_error_runs(b);
     t_phase[4] = sus_sys_now();
     if (progress_tty)
         fprintf(stderr, "\r%70s\r", "");
@@ -173,11 +173,11 @@ static const char *suslov_path(const char *argv0, char *buf, size_t len)
 }
 
 /* The re-runs with suslov, reported; returns 1 when a row was not reproduced. */
-static int check(const sus_exp_bench *b, const char *argv0)
+static int check(const sus_lab_bench *b, const char *argv0)
 {
     char suslov[4096];
-    sus_exp_bench_reproduced rep;
-    sus_exp_bench_check_reproduce(b, suslov_path(argv0, suslov, sizeof suslov), &rep);
+    sus_lab_bench_reproduced rep;
+    sus_lab_bench_check_reproduce(b, suslov_path(argv0, suslov, sizeof suslov), &rep);
     sus_plot_bench_reproduced(b, &rep, suslov);
     return rep.ok != rep.tried;
 }
@@ -185,11 +185,11 @@ static int check(const sus_exp_bench *b, const char *argv0)
 /* FIGDIR's figures drawn from DATADIR/bench.csv. Returns 0, or 1 with a message on stderr. */
 static int plot(const char *figdir, const char *datadir)
 {
-    sus_exp_bench b;
-    if (sus_exp_bench_load(&b, datadir) != 0)
+    sus_lab_bench b;
+    if (sus_lab_bench_load(&b, datadir) != 0)
         return 1;
     const int failed = sus_plot_bench_figures(&b, figdir) != 0;
-    sus_exp_bench_free(&b);
+    sus_lab_bench_free(&b);
     return failed;
 }
 
@@ -197,8 +197,8 @@ static int plot(const char *figdir, const char *datadir)
 static int bench(const char *argv0, const char *figdir, const char *datadir)
 {
     progress_tty = isatty(2);
-    sus_exp_bench b;
-    if (sus_exp_bench_init(&b, progress_tty ? progress : NULL) != 0)
+    sus_lab_bench b;
+    if (sus_lab_bench_init(&b, progress_tty ? progress : NULL) != 0)
         return 1;
     double t_phase[6];
     const int differ = measure(&b, t_phase);
@@ -220,7 +220,7 @@ static int bench(const char *argv0, const char *figdir, const char *datadir)
         fprintf(stderr,
                 "bench: a CHECK FAILED (see its line in the output above); nothing written\n");
     const int unwritten = failed || sus_plot_bench_tables(&b, datadir) != 0;
-    sus_exp_bench_free(&b);
+    sus_lab_bench_free(&b);
     return unwritten || plot(figdir, datadir);
 }
 

@@ -1,4 +1,4 @@
-/* A count read exactly from its text, in the grammar of every number (cli_number): a double
+/* A count read exactly from its text, in the grammar of every number (suslov_cli_number): a double
  * would round --steps 2.0000000000000001 to 2 and 9007199254740993e0 to 9007199254740992. The
  * text's value is kept as a digit string and an exponent, M base^e, and judged whole and in range
  * before any arithmetic, so no rounding can happen. */
@@ -94,13 +94,13 @@ static long decimal_count(const char *opt, const char *s, const exact_text *x)
     const long e = x->point_shift + x->exp, n = sig_digits(x);
     unsigned long long m;
     if (e < 0)
-        cli_die("%s: %s is not a whole number", opt, cli_quote(s));
+        suslov_cli_die("%s: %s is not a whole number", opt, suslov_cli_quote(s));
     if (n + e > 19 || mantissa(x, x->last, 19, &m) != 0) /* 10^19 > 2^63 - 1 */
-        cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
+        suslov_cli_die("%s: %s is out of range (at most %ld)", opt, suslov_cli_quote(s), LONG_MAX);
     for (long i = 0; i < e; i++)
         m *= 10u; /* at most 19 digits: below 2^64 */
     if (m > (unsigned long long)LONG_MAX)
-        cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
+        suslov_cli_die("%s: %s is out of range (at most %ld)", opt, suslov_cli_quote(s), LONG_MAX);
     return (long)m;
 }
 
@@ -113,23 +113,23 @@ static long hex_count(const char *opt, const char *s, const exact_text *x)
     const int top = digit_value(*x->first);
     const int top_bits = top >= 8 ? 4 : top >= 4 ? 3 : top >= 2 ? 2 : 1;
     if (b < 0)
-        cli_die("%s: %s is not a whole number", opt, cli_quote(s));
+        suslov_cli_die("%s: %s is not a whole number", opt, suslov_cli_quote(s));
     /* bits of the value: those of M, less the t zero bits, plus b */
     if (4 * (sig_digits(x) - 1) + top_bits - t + b > 63)
-        cli_die("%s: %s is out of range (at most %ld)", opt, cli_quote(s), LONG_MAX);
+        suslov_cli_die("%s: %s is out of range (at most %ld)", opt, suslov_cli_quote(s), LONG_MAX);
     unsigned long long p; /* M without its last digit: at most 16 hex digits, by the check above */
     mantissa(x, x->last - 1, 16, &p);
     return (long)((p << (4 - t) | (unsigned long long)(h >> t)) << b);
 }
 
-long cli_count(const char *opt, const char *s)
+long suslov_cli_count(const char *opt, const char *s)
 {
     exact_text x;
     if (scan(s, &x) != 0) {
-        cli_number(opt, s); /* its message: not a number, not finite, ... */
-        cli_die("%s: %s is not a whole number", opt, cli_quote(s));
+        suslov_cli_number(opt, s); /* its message: not a number, not finite, ... */
+        suslov_cli_die("%s: %s is not a whole number", opt, suslov_cli_quote(s));
     }
     if (!x.first || x.neg)
-        cli_die("%s must be positive, got %s", opt, cli_quote(s));
+        suslov_cli_die("%s must be positive, got %s", opt, suslov_cli_quote(s));
     return x.hex ? hex_count(opt, s, &x) : decimal_count(opt, s, &x);
 }

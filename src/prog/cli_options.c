@@ -44,17 +44,17 @@ static void say(const char *kind, const char *fmt, va_list ap, const char *suffi
     fprintf(stderr, "%s\n", suffix);
 }
 
-const char *cli_quote_n(const char *s, size_t n)
+const char *suslov_cli_quote_n(const char *s, size_t n)
 {
-    return sus_sys_echo_ring(s, n, CLI_ECHO_MAX, '\'');
+    return sus_sys_echo_ring(s, n, SUSLOV_CLI_ECHO_MAX, '\'');
 }
 
-const char *cli_quote(const char *s)
+const char *suslov_cli_quote(const char *s)
 {
-    return cli_quote_n(s, strlen(s));
+    return suslov_cli_quote_n(s, strlen(s));
 }
 
-void cli_error(const char *fmt, ...)
+void suslov_cli_error(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -62,7 +62,7 @@ void cli_error(const char *fmt, ...)
     va_end(ap);
 }
 
-void cli_warn(const char *fmt, ...)
+void suslov_cli_warn(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -70,7 +70,7 @@ void cli_warn(const char *fmt, ...)
     va_end(ap);
 }
 
-void cli_die(const char *fmt, ...)
+void suslov_cli_die(const char *fmt, ...)
 {
     char suffix[64];
     snprintf(suffix, sizeof suffix, " (see %s --help)", prog);
@@ -81,11 +81,11 @@ void cli_die(const char *fmt, ...)
     exit(EXIT_BAD_INPUT);
 }
 
-void cli_exit_stdout(void)
+void suslov_cli_exit_stdout(void)
 {
     const int failed = (fflush(stdout) != 0) | ferror(stdout); /* both, whichever fails */
     if (failed) {
-        cli_error("writing stdout failed: %s", strerror(errno));
+        suslov_cli_error("writing stdout failed: %s", strerror(errno));
         exit(1);
     }
     exit(0);
@@ -95,49 +95,49 @@ void cli_exit_stdout(void)
 
 /* A subnormal is accepted by strtod with ERANGE but has lost precision, and no quantity here
  * is meaningful at that size. */
-double cli_number(const char *opt, const char *s)
+double suslov_cli_number(const char *opt, const char *s)
 {
     char *end;
     errno = 0;
     const double v = strtod(s, &end);
     if (end == s || *end != '\0' || isspace((unsigned char)*s))
-        cli_die("%s: %s is not a number", opt, cli_quote(s));
+        suslov_cli_die("%s: %s is not a number", opt, suslov_cli_quote(s));
     if (!isfinite(v))
-        cli_die("%s: %s is not a finite number (largest %.17g)", opt, cli_quote(s), DBL_MAX);
+        suslov_cli_die("%s: %s is not a finite number (largest %.17g)", opt, suslov_cli_quote(s), DBL_MAX);
     if (errno == ERANGE || fpclassify(v) == FP_SUBNORMAL)
-        cli_die("%s: %s is too small: it underflows to a subnormal number or zero "
-                "(smallest normal %.17g)", opt, cli_quote(s), DBL_MIN);
+        suslov_cli_die("%s: %s is too small: it underflows to a subnormal number or zero "
+                "(smallest normal %.17g)", opt, suslov_cli_quote(s), DBL_MIN);
     return v;
 }
 
-void cli_list(const char *opt, const char *s, double *out, int n)
+void suslov_cli_list(const char *opt, const char *s, double *out, int n)
 {
     char buf[1024];
     if (strlen(s) >= sizeof buf)
-        cli_die("%s: list too long", opt);
+        suslov_cli_die("%s: list too long", opt);
     int i = 0;
     for (const char *p = s;; i++) {
         const char *comma = strchr(p, ',');
         const size_t len = comma ? (size_t)(comma - p) : strlen(p);
         if (i == n)
-            cli_die("%s takes %d comma-separated numbers, got more in %s", opt, n, cli_quote(s));
+            suslov_cli_die("%s takes %d comma-separated numbers, got more in %s", opt, n, suslov_cli_quote(s));
         if (len == 0)
-            cli_die("%s: field %d of %s is empty", opt, i + 1, cli_quote(s));
+            suslov_cli_die("%s: field %d of %s is empty", opt, i + 1, suslov_cli_quote(s));
         memcpy(buf, p, len);
         buf[len] = '\0';
-        out[i] = cli_number(opt, buf);
+        out[i] = suslov_cli_number(opt, buf);
         if (!comma)
             break;
         p = comma + 1;
     }
     if (i + 1 != n)
-        cli_die("%s takes %d comma-separated numbers, got %d in %s", opt, n, i + 1, cli_quote(s));
+        suslov_cli_die("%s takes %d comma-separated numbers, got %d in %s", opt, n, i + 1, suslov_cli_quote(s));
 }
 
 /* ---- parsing ---- */
 
 /* The option whose name is the first len characters of s. */
-static int find(const cli_spec *spec, const char *s, size_t len)
+static int find(const suslov_cli_spec *spec, const char *s, size_t len)
 {
     for (int i = 0; i < spec->nopts; i++)
         if (strlen(spec->opts[i].name) == len && strncmp(spec->opts[i].name, s, len) == 0)
@@ -145,7 +145,7 @@ static int find(const cli_spec *spec, const char *s, size_t len)
     return -1;
 }
 
-void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
+void suslov_cli_parse(const suslov_cli_spec *spec, int argc, char **argv, void *cfg)
 {
     char seen[64] = {0};
     prog = spec->prog;
@@ -153,29 +153,29 @@ void cli_parse(const cli_spec *spec, int argc, char **argv, void *cfg)
         const char *arg = argv[i], *eq = strchr(arg, '='), *val = NULL;
         if (strcmp(arg, "--") == 0) {
             if (i + 1 < argc)
-                cli_die("unexpected argument %s (%s takes no operands)", cli_quote(argv[i + 1]), prog);
+                suslov_cli_die("unexpected argument %s (%s takes no operands)", suslov_cli_quote(argv[i + 1]), prog);
             break;
         }
         if (strncmp(arg, "--", 2) != 0)
-            cli_die("unexpected argument %s", cli_quote(arg));
+            suslov_cli_die("unexpected argument %s", suslov_cli_quote(arg));
         const size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
         const int k = find(spec, arg, len);
         if (k < 0)
-            cli_die("unknown option %s", cli_quote_n(arg, len));
-        const cli_option *o = &spec->opts[k];
+            suslov_cli_die("unknown option %s", suslov_cli_quote_n(arg, len));
+        const suslov_cli_option *o = &spec->opts[k];
         if (!o->arg && eq)
-            cli_die("%s takes no value", o->name);
+            suslov_cli_die("%s takes no value", o->name);
         if (o->arg && !eq && i + 1 >= argc)
-            cli_die("%s needs a value (%s)", o->name, o->arg);
+            suslov_cli_die("%s needs a value (%s)", o->name, o->arg);
         if (o->arg)
             val = eq ? eq + 1 : argv[++i];
         if (k < (int)sizeof seen && seen[k]++)
-            cli_die("%s is given twice", o->name);
+            suslov_cli_die("%s is given twice", o->name);
         o->set(cfg, o, val);
     }
 }
 
-int cli_peek(const cli_spec *spec, int argc, char **argv, const char *name, const char **val)
+int suslov_cli_peek(const suslov_cli_spec *spec, int argc, char **argv, const char *name, const char **val)
 {
     int count = 0;
     *val = NULL;
@@ -218,7 +218,7 @@ static void help_lines(FILE *fp, const char *text, const char *first, const char
 
 static void roff_text(FILE *fp, const char *s, int len);
 
-void cli_line(FILE *fp, int man, const char *fmt, ...)
+void suslov_cli_line(FILE *fp, int man, const char *fmt, ...)
 {
     char buf[1024];
     va_list ap;
@@ -234,12 +234,12 @@ void cli_line(FILE *fp, int man, const char *fmt, ...)
     fputc('\n', fp);
 }
 
-void cli_help(const cli_spec *spec, FILE *fp)
+void suslov_cli_help(const suslov_cli_spec *spec, FILE *fp)
 {
     fprintf(fp, "usage: %s\n\n", spec->synopsis);
     fprintf(fp, "%s\n\n", numbered(spec->description));
     for (int i = 0; i < spec->nopts; i++) {
-        const cli_option *o = &spec->opts[i];
+        const suslov_cli_option *o = &spec->opts[i];
         char head[64];
         snprintf(head, sizeof head, "  %s%s%s", o->name, o->arg ? " " : "", o->arg ? o->arg : "");
         fprintf(fp, "%-22s", head);
@@ -278,7 +278,7 @@ static int indent_of(const char *line)
     return strncmp(line, "    ", 4) == 0 ? 4 : strncmp(line, "  ", 2) == 0 ? 2 : 0;
 }
 
-/* Section text in roff (cli_section): prose filled, an empty line a new paragraph (.PP), lines
+/* Section text in roff (suslov_cli_section): prose filled, an empty line a new paragraph (.PP), lines
  * indented by two kept as they are (.nf, indented), and a line followed by lines indented by four
  * a tag (.TP) and its description, filled under it. */
 static void roff_body(FILE *fp, const char *text)
@@ -315,7 +315,7 @@ static void roff_body(FILE *fp, const char *text)
         fputs(".fi\n.RE\n", fp);
 }
 
-void cli_man(const cli_spec *spec, const char *version, FILE *fp)
+void suslov_cli_man(const suslov_cli_spec *spec, const char *version, FILE *fp)
 {
     fprintf(fp, ".TH SUSLOV 1 \"\" \"%s %s\" \"User Commands\"\n.SH NAME\n%s \\- ", spec->prog, version,
             spec->prog);
@@ -326,7 +326,7 @@ void cli_man(const cli_spec *spec, const char *version, FILE *fp)
     roff_body(fp, spec->description);
     fputs(".SH OPTIONS\n", fp);
     for (int i = 0; i < spec->nopts; i++) {
-        const cli_option *o = &spec->opts[i];
+        const suslov_cli_option *o = &spec->opts[i];
         fputs(o->arg ? ".TP\n.BI \"" : ".TP\n.B ", fp); /* the name bold, its argument italic */
         roff_text(fp, o->name, (int)strlen(o->name));
         if (o->arg) {

@@ -12,15 +12,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUS_EXP_FIG1_EPS
-#define T_END SUS_EXP_FIG1_T_END
-#define EVERY SUS_EXP_FIG1_EVERY
+#define EPS SUS_LAB_FIG1_EPS
+#define T_END SUS_LAB_FIG1_T_END
+#define EVERY SUS_LAB_FIG1_EVERY
 #define MARK_EVERY 50  /* markers: every 50th kept row = every 0.5 time units */
 #define ROWS 4 /* (a)-(f) as the paper's Figure 1, then (g), (h): the corrected multiplier */
 #define HEIGHT 680.0
 
 typedef struct {
-    sus_exp_series ex, mid, var;
+    sus_lab_series ex, mid, var;
     double *dE_mid, *dE_var, *mu_mid, *mu_var;
     /* (taualg) with the (3,3) entry of (cayinver) corrected: + (c(w^{k+1}) - c(w^k)) / eps, and the
      * distances of both multipliers from the exact lambda */
@@ -232,15 +232,15 @@ static void caption(const fig1 *f, const sus_exact *ex, long N, char *cap, size_
         "max |w_mid - w_var| = %.2g over the run, against max |lambda_mid - lambda_var| = %.3g.\n"
         "Data: data/fig1.csv (every %dth step).\n",
         T_END, N, T_END, ex->k,
-        sus_exp_series_maxdiff(&f->ex, &f->var, offsetof(sus_exp_series, lambda)),
-        fmax(sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, mu)),
-             sus_exp_series_maxdrift(&f->var, offsetof(sus_exp_series, mu))),
-        sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, energy)),
-        sus_exp_series_maxdrift(&f->var, offsetof(sus_exp_series, energy)), max_of(f->err_corr, n),
+        sus_lab_series_maxdiff(&f->ex, &f->var, offsetof(sus_lab_series, lambda)),
+        fmax(sus_lab_series_maxdrift(&f->mid, offsetof(sus_lab_series, mu)),
+             sus_lab_series_maxdrift(&f->var, offsetof(sus_lab_series, mu))),
+        sus_lab_series_maxdrift(&f->mid, offsetof(sus_lab_series, energy)),
+        sus_lab_series_maxdrift(&f->var, offsetof(sus_lab_series, energy)), max_of(f->err_corr, n),
         max_of(f->err_var, n),
-        fmax(sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, w1)),
-             sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, w2))),
-        sus_exp_series_maxdiff(&f->mid, &f->var, offsetof(sus_exp_series, lambda)), EVERY);
+        fmax(sus_lab_series_maxdiff(&f->mid, &f->var, offsetof(sus_lab_series, w1)),
+             sus_lab_series_maxdiff(&f->mid, &f->var, offsetof(sus_lab_series, w2))),
+        sus_lab_series_maxdiff(&f->mid, &f->var, offsetof(sus_lab_series, lambda)), EVERY);
 }
 
 int main(int argc, char **argv)
@@ -251,15 +251,15 @@ int main(int argc, char **argv)
     if (setup != 0)
         return setup;
     fig1 f;
-    const long N = sus_exp_experiment_steps(T_END, EPS);
+    const long N = sus_lab_experiment_steps(T_END, EPS);
     const int run = sus_plot_fig_run_pair("fig1", &m, EPS, N, EVERY, &f.mid, &f.var);
     if (run != 0)
         return run;
-    if (sus_exp_series_init(&f.ex, N, EVERY)) {
+    if (sus_lab_series_init(&f.ex, N, EVERY)) {
         fprintf(stderr, "figure_fig1: out of memory\n");
         return 1;
     }
-    sus_exp_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
+    sus_lab_series_exact(&f.ex, &ex, EPS * EVERY, f.mid.n);
     const int der = derived(&m, N, &f);
     if (der != 0)
         return der;

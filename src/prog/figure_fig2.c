@@ -11,12 +11,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUS_EXP_FIG2_EPS
-#define T_END SUS_EXP_FIG2_T_END
+#define EPS SUS_LAB_FIG2_EPS
+#define T_END SUS_LAB_FIG2_T_END
 #define FINE 0.05     /* the reference line is drawn on this finer grid */
 
 typedef struct {
-    sus_exp_series mid, var, ex;   /* ex on the fine grid */
+    sus_lab_series mid, var, ex;   /* ex on the fine grid */
     double *dist[3];              /* |w - w_inf| for exact (fine), midpoint, variational */
     double *mu[2];
     double winf[2];
@@ -106,10 +106,10 @@ static int distances(fig2 *f)
 static int write_data(const fig2 *f, const sus_exact *ex, long N, const char *datadir)
 {
     char path[4096];
-    sus_exp_series exs;
-    if (sus_exp_series_init(&exs, N, 1))
+    sus_lab_series exs;
+    if (sus_lab_series_init(&exs, N, 1))
         return 1;
-    sus_exp_series_exact(&exs, ex, EPS, f->mid.n);
+    sus_lab_series_exact(&exs, ex, EPS, f->mid.n);
     const double *cols[] = {f->mid.t,      exs.w1,          exs.w2,       exs.lambda,
                             exs.energy,    f->mid.w1,       f->mid.w2,    f->mid.w3,
                             f->mid.lambda, f->mid.energy,   f->mid.mu,    f->var.w1,
@@ -149,7 +149,7 @@ static void caption(const fig2 *f, long N, char *cap, size_t len)
         "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
         "Data: data/fig2.csv (every step).\n",
         T_END, N, f->winf[0], f->winf[1],
-        sus_exp_series_maxdrift(&f->mid, offsetof(sus_exp_series, energy)), f->dist[1][last],
+        sus_lab_series_maxdrift(&f->mid, offsetof(sus_lab_series, energy)), f->dist[1][last],
         f->var.energy[0] - f->var.energy[last],
         100.0 * (f->var.energy[0] - f->var.energy[last]) / f->var.energy[0], f->dist[2][last]);
 }
@@ -163,15 +163,15 @@ int main(int argc, char **argv)
         return setup;
     fig2 f;
     sus_exact_limit(&ex, f.winf);
-    const long N = sus_exp_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
+    const long N = sus_lab_experiment_steps(T_END, EPS), NF = (long)llround(T_END / FINE);
     const int run = sus_plot_fig_run_pair("fig2", &m, EPS, N, 1, &f.mid, &f.var);
     if (run != 0)
         return run;
-    if (sus_exp_series_init(&f.ex, NF, 1)) {
+    if (sus_lab_series_init(&f.ex, NF, 1)) {
         fprintf(stderr, "figure_fig2: out of memory\n");
         return 1;
     }
-    sus_exp_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
+    sus_lab_series_exact(&f.ex, &ex, FINE, (size_t)NF + 1);
     if (distances(&f) != 0 || write_data(&f, &ex, N, argv[2]) != 0)
         return 1;
     char cap[4096];

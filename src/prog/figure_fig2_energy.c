@@ -14,10 +14,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define EPS SUS_EXP_FIG2_EPS
-#define T_END SUS_EXP_FIG2_T_END
+#define EPS SUS_LAB_FIG2_EPS
+#define T_END SUS_LAB_FIG2_T_END
 #define N_STEPS 200   /* T_END / EPS, checked in main */
-#define NSWEEP SUS_EXP_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
+#define NSWEEP SUS_LAB_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
 #define FIG_W 530.0
 #define FIG_H 380.0
 #define NCURVE 6      /* Newton, n = 1, 2, 3, 5, variational */
@@ -106,9 +106,9 @@ static int run_curves(const sus_model *m, readings *r)
     double E[N_STEPS + 1], wN[2];
     for (int c = 0; c < NCURVE; c++) {
         if (curve_sweeps[c] > 0) {
-            sus_exp_midpoint_sweeps_run(m, EPS, curve_sweeps[c], SUS_PAPER_OMEGA0, N_STEPS, E, wN);
+            sus_lab_midpoint_sweeps_run(m, EPS, curve_sweeps[c], SUS_PAPER_OMEGA0, N_STEPS, E, wN);
         } else {
-            sus_exp_series s;
+            sus_lab_series s;
             sus_run_report rep;
             const sus_run_config cfg = {
                 m,
@@ -117,14 +117,14 @@ static int run_curves(const sus_model *m, readings *r)
                 EPS,
                 N_STEPS,
                 1};
-            if (sus_exp_series_init(&s, N_STEPS, 1) ||
-                sus_exp_series_run(&s, &cfg, SUS_PAPER_OMEGA0, &rep)) {
+            if (sus_lab_series_init(&s, N_STEPS, 1) ||
+                sus_lab_series_run(&s, &cfg, SUS_PAPER_OMEGA0, &rep)) {
                 fprintf(stderr, "figure_fig2_energy: run failed\n");
                 return 3;
             }
             for (int k = 0; k <= N_STEPS; k++)
                 E[k] = s.energy[k];
-            sus_exp_series_free(&s);
+            sus_lab_series_free(&s);
         }
         for (int k = 0; k <= N_STEPS; k++) {
             r->dE[c][k] = E[k] - E[0];
@@ -142,8 +142,8 @@ int main(int argc, char **argv)
     if (setup != 0)
         return setup;
     char path[4096];
-    if (sus_exp_experiment_steps(T_END, EPS) != N_STEPS) {
-        fprintf(stderr, "figure_fig2_energy: N_STEPS does not match src/exp/experiments.h\n");
+    if (sus_lab_experiment_steps(T_END, EPS) != N_STEPS) {
+        fprintf(stderr, "figure_fig2_energy: N_STEPS does not match src/lab/experiments.h\n");
         return 1;
     }
     readings *r = calloc(1, sizeof *r);
@@ -158,7 +158,7 @@ int main(int argc, char **argv)
     r->newton_final = r->adE[0][N_STEPS];
     for (int i = 0; i < NSWEEP; i++) {
         r->n[i] = i + 1;
-        sus_exp_midpoint_sweeps_run(&m, EPS, i + 1, SUS_PAPER_OMEGA0, N_STEPS, E, wN);
+        sus_lab_midpoint_sweeps_run(&m, EPS, i + 1, SUS_PAPER_OMEGA0, N_STEPS, E, wN);
         r->final_dE[i] = E[N_STEPS] - E[0];
         r->final_adE[i] = fabs(r->final_dE[i]);
     }

@@ -10,14 +10,14 @@
 #include <math.h>
 #include <stdio.h>
 
-#define T_END SUS_EXP_INERTIA_T_END
-#define DT SUS_EXP_INERTIA_DT
+#define T_END SUS_LAB_INERTIA_T_END
+#define DT SUS_LAB_INERTIA_DT
 #define NPTS 1201     /* T_END / DT + 1, checked in main */
 #define FIG_W 530.0
 #define FIG_H 340.0
 
 typedef struct {
-    sus_exp_series row, col;
+    sus_lab_series row, col;
     double dist[NPTS];
     double k_row, k_col;
 } inertia_fig;
@@ -85,11 +85,11 @@ int main(int argc, char **argv)
     double Icol[9];
     sus_model mr, mc;
     sus_exact er, ec;
-    if (sus_exp_experiment_steps(T_END, DT) + 1 != NPTS) {
-        fprintf(stderr, "figure_inertia: NPTS does not match src/exp/experiments.h\n");
+    if (sus_lab_experiment_steps(T_END, DT) + 1 != NPTS) {
+        fprintf(stderr, "figure_inertia: NPTS does not match src/lab/experiments.h\n");
         return 1;
     }
-    sus_exp_inertia_column_swap(SUS_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
+    sus_lab_inertia_column_swap(SUS_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
     if (sus_model_init(&mr, SUS_PAPER_INERTIA, err, sizeof err) ||
         sus_model_init(&mc, Icol, err, sizeof err)) {
         fprintf(stderr, "figure_inertia: an inertia tensor is rejected: %s\n", err);
@@ -99,10 +99,10 @@ int main(int argc, char **argv)
     sus_exact_init(&ec, &mc, SUS_PAPER_OMEGA0);
     f.k_row = er.k;
     f.k_col = ec.k;
-    if (sus_exp_series_init(&f.row, NPTS - 1, 1) || sus_exp_series_init(&f.col, NPTS - 1, 1))
+    if (sus_lab_series_init(&f.row, NPTS - 1, 1) || sus_lab_series_init(&f.col, NPTS - 1, 1))
         return 1;
-    sus_exp_series_exact(&f.row, &er, DT, NPTS);
-    sus_exp_series_exact(&f.col, &ec, DT, NPTS);
+    sus_lab_series_exact(&f.row, &er, DT, NPTS);
+    sus_lab_series_exact(&f.col, &ec, DT, NPTS);
     for (size_t i = 0; i < f.row.n; i++)
         f.dist[i] = hypot(f.row.w1[i] - f.col.w1[i], f.row.w2[i] - f.col.w2[i]);
     const double *cols[] = {f.row.t, f.row.w1, f.row.w2, f.row.lambda, f.col.w1, f.col.w2, f.col.lambda};

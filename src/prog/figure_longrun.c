@@ -96,15 +96,15 @@ static void ours(const sus_step_method *me)
 
 static void peer(size_t dim)
 {
-    gsl_odeiv2_system sys = {dim == 11 ? sus_exp_peer_rhs_wR : sus_exp_peer_rhs_wq, NULL, dim, &model};
+    gsl_odeiv2_system sys = {dim == 11 ? sus_lab_peer_rhs_wR : sus_lab_peer_rhs_wq, NULL, dim, &model};
     double y[11], R[3][3], tol = 1e-3;
     for (; tol >= 1e-14; tol /= 10.0) { /* the loosest tolerance reaching LEVEL at t = 50 */
         gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
         double t = 0.0;
-        sus_exp_peer_initial(dim, ex.w0, y);
+        sus_lab_peer_initial(dim, ex.w0, y);
         const int st = gsl_odeiv2_driver_apply(d, &t, T_MATCH, y);
         gsl_odeiv2_driver_free(d);
-        sus_exp_peer_attitude(dim, y, R);
+        sus_lab_peer_attitude(dim, y, R);
         if (st == GSL_SUCCESS && sus_so3_dist(R50, R) <= LEVEL)
             break;
     }
@@ -115,11 +115,11 @@ static void peer(size_t dim)
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
     double t = 0.0;
     const double e0 = sus_energy(&model, ex.w0);
-    sus_exp_peer_initial(dim, ex.w0, y);
+    sus_lab_peer_initial(dim, ex.w0, y);
     for (int k = 0; k <= NS; k++) {
         if (k > 0 && gsl_odeiv2_driver_apply(d, &t, T_LONG * k / NS, y) != GSL_SUCCESS)
             break;
-        sus_exp_peer_attitude(dim, y, R);
+        sus_lab_peer_attitude(dim, y, R);
         const double q2 = y[2] * y[2] + y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
         const double nq = dim == 6 ? fabs(sqrt(q2) - 1.0) : 0.0;
         c->t[k] = t;

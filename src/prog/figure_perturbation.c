@@ -1,6 +1,6 @@
 /* Section 6 drawn: a method's steps are the period map of an eps-periodic perturbation of
  * (ContDyn) (TheoPer). (a)-(b) the solution of x' = h(x) + eps^p d (rk8pd through the Newton
- * inversion of the blend, src/exp/perturbation.h) passes through explicit Euler's points at eps = 4;
+ * inversion of the blend, src/lab/perturbation.h) passes through explicit Euler's points at eps = 4;
  * (c) sup |eps^p d| against eps for every method of the registry; (d) the attitude part of the
  * perturbation on SO(3) (Per11) for the midpoint DSP with each reconstruction.
  * Usage: figure_perturbation FIGDIR DATADIR */
@@ -29,8 +29,8 @@
 #define NE_SO3 10     /* eps = 2 .. 2^-8 (claims_section6.c) */
 #define TOL 1e-14
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
-#define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
-#define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
+#define FLOOR_G SUS_LAB_PERTURB_FLOOR_G
+#define FLOOR_ATT SUS_LAB_PERTURB_FLOOR_ATT
 /* panel (c)'s reference slopes, a decade of eps long, in the lower left, which no curve reaches:
  * below the low-order curves and left of the high-order ones (the axis is extended down to them) */
 #define SLOPE_XA 2e-3
@@ -165,8 +165,8 @@ static void draw(cairo_t *cr, void *vctx)
  * between the period map and the Euler step in *gap. Returns 0, or 3 when a solve fails. */
 static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, double *gap)
 {
-    sus_exp_perturb P;
-    if (sus_exp_perturb_init(&P, m, sus_step_euler, EPS_A) != 0)
+    sus_lab_perturb P;
+    if (sus_lab_perturb_init(&P, m, sus_step_euler, EPS_A) != 0)
         die("singular inertia", 1);
     double x[2] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}, seg[NSUB + 1][2];
     *gap = 0.0;
@@ -174,12 +174,12 @@ static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, doub
     f->wk[0][0] = x[0];
     f->wk[0][1] = x[1];
     for (int k = 0; k < NSTEP_A; k++) {
-        if (sus_exp_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_EXP_PERTURB_OK) {
+        if (sus_lab_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_LAB_PERTURB_OK) {
             char eq2[32];
             fprintf(stderr,
                     "figure_perturbation: %s failed on period %d, t in [%g, %g], Newton residual %.3g\n",
                     sus_paper_name("Eq2", eq2, sizeof eq2), k,
-                    EPS_A * k, EPS_A * (k + 1), P.sus_exp_newton_res);
+                    EPS_A * k, EPS_A * (k + 1), P.sus_lab_newton_res);
             return 3;
         }
         for (int i = (k ? 1 : 0); i <= NSUB; i++) {
@@ -215,14 +215,14 @@ static void sizes(pert_fig *f, const sus_model *m, const sus_exact *ex)
     for (int i = 0; i < f->nm; i++) {
         f->names[i] = sus_step_method_get(i)->type->name;
         for (int j = 0; j < NE; j++) {
-            sus_exp_perturb Q;
+            sus_lab_perturb Q;
             double s = 0.0;
-            if (sus_exp_perturb_init(&Q, m, sus_step_method_get(i)->type, f->eps[j]) != 0)
+            if (sus_lab_perturb_init(&Q, m, sus_step_method_get(i)->type, f->eps[j]) != 0)
                 die("singular inertia", 1);
             for (int t = 0; t < 3; t++) {
                 double x0[2], v;
                 sus_exact_omega(ex, TK[t], x0);
-                if (sus_exp_perturb_sup_reduced(&Q, x0, 64, &v) != SUS_EXP_PERTURB_OK)
+                if (sus_lab_perturb_sup_reduced(&Q, x0, 64, &v) != SUS_LAB_PERTURB_OK)
                     die("a perturbation size failed", 3);
                 s = fmax(s, v);
             }
@@ -239,15 +239,15 @@ static void attitude_sizes(pert_fig *f, const sus_model *m, const sus_exact *ex)
             f->att[r][j] = NAN;
             if (j >= NE_SO3)
                 continue;
-            sus_exp_perturb Q;
+            sus_lab_perturb Q;
             double s = 0.0;
-            if (sus_exp_perturb_init(&Q, m, sus_step_midpoint, f->eps[j]) != 0)
+            if (sus_lab_perturb_init(&Q, m, sus_step_midpoint, f->eps[j]) != 0)
                 die("singular inertia", 1);
             for (int t = 0; t < 2; t++) {
                 double x0[2], a, g;
                 sus_exact_omega(ex, TK[t], x0);
-                if (sus_exp_perturb_sup_so3(&Q, (sus_recon)r, x0, 32, SUS_EXP_PERTURB_ATT_TOL, &a, &g) !=
-                    SUS_EXP_PERTURB_OK)
+                if (sus_lab_perturb_sup_so3(&Q, (sus_recon)r, x0, 32, SUS_LAB_PERTURB_ATT_TOL, &a, &g) !=
+                    SUS_LAB_PERTURB_OK)
                     die("an attitude blend failed", 3);
                 s = fmax(s, a);
             }
@@ -312,7 +312,7 @@ int main(int argc, char **argv)
     char cap[2048];
     snprintf(cap, sizeof cap,
              "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, "
-             "src/exp/perturbation.c).\n"
+             "src/lab/perturbation.c).\n"
              "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
              "backward from the\n"
              "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect "

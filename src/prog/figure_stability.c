@@ -18,7 +18,7 @@
 typedef struct {
     double hs[NH];
     int nm;                    /* every method of the registry, in its order */
-    sus_exp_stab_result (*res)[NH * NANGLE];
+    sus_lab_stab_result (*res)[NH * NANGLE];
     double *limit;
 } stab_fig;
 
@@ -30,16 +30,16 @@ typedef struct {
 #define STRIP_H 14.0
 static double fig_height(int nm) { return STRIP_H + PANEL_H * ((nm + 1) / 2); }
 
-static const double CLASS_RGB[SUS_EXP_STAB_NCLASS][3] = {
+static const double CLASS_RGB[SUS_LAB_STAB_NCLASS][3] = {
     {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
 
 static void draw(cairo_t *cr, void *vctx)
 {
     const stab_fig *f = vctx;
     const double W = 600, H = fig_height(f->nm), step = pow(10.0, 0.1);
-    sus_plot_style leg[SUS_EXP_STAB_NCLASS];
-    for (int c = 0; c < SUS_EXP_STAB_NCLASS; c++) { /* a horizontal legend in the strip */
-        leg[c] = sus_plot_style_of(CLASS_RGB[c], 0, 0, SUS_PLOT_DOT, 7, SUS_EXP_STAB_NAMES[c]);
+    sus_plot_style leg[SUS_LAB_STAB_NCLASS];
+    for (int c = 0; c < SUS_LAB_STAB_NCLASS; c++) { /* a horizontal legend in the strip */
+        leg[c] = sus_plot_style_of(CLASS_RGB[c], 0, 0, SUS_PLOT_DOT, 7, SUS_LAB_STAB_NAMES[c]);
         sus_plot_axes la;
         sus_plot_axes_init(&la, cr, 40 + 112 * c, 0, 110, 20, 0, 1, 0, 1, 0, 0);
         sus_plot_legend(&la, &leg[c], 1, 0);
@@ -89,11 +89,11 @@ static int write_csv(const stab_fig *f, const char *dir)
     for (int m = 0; m < f->nm; m++)
         for (int i = 0; i < NH; i++)
             for (int a = 0; a < NANGLE; a++) {
-                const sus_exp_stab_result *r = &f->res[m][i * NANGLE + a];
+                const sus_lab_stab_result *r = &f->res[m][i * NANGLE + a];
                 fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", sus_step_method_get(m)->type->name, f->hs[i],
-                        (2.0 * 3.14159265358979323846 * a / NANGLE + SUS_EXP_STAB_ANGLE0) * 180.0 /
+                        (2.0 * 3.14159265358979323846 * a / NANGLE + SUS_LAB_STAB_ANGLE0) * 180.0 /
                             3.14159265358979323846,
-                        r->cls, SUS_EXP_STAB_NAMES[r->cls], r->step, r->final_err);
+                        r->cls, SUS_LAB_STAB_NAMES[r->cls], r->step, r->final_err);
             }
     if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
         fprintf(stderr, "figure_stability: %s\n", err);
@@ -112,7 +112,7 @@ static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t
     snprintf(
         cap, caplen,
         "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
-        "src/exp/stability.h).\n"
+        "src/lab/stability.h).\n"
         "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
         "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
         "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run "
@@ -140,7 +140,7 @@ static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t
         "equation meets a fold of its branch on one start (regularity lost): two roots meet and vanish\n"
         "(claims ledger, stability-fold-gauss4).\n"
         "Data: data/stability.csv.\n",
-        paper->k, NH, SUS_EXP_STAB_BRANCH_H, limits);
+        paper->k, NH, SUS_LAB_STAB_BRANCH_H, limits);
 }
 
 /* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h, with
@@ -152,31 +152,31 @@ static int run_maps(stab_fig *f, const sus_exact *paper, int modes)
     long per_method = 0, done = 0;
     for (int i = 0; i < NH; i++) {
         f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
-        per_method += NANGLE * sus_exp_stability_steps(f->hs[i]);
+        per_method += NANGLE * sus_lab_stability_steps(f->hs[i]);
     }
-    progress_start("figure_stability", NULL, per_method * f->nm, modes);
+    suslov_progress_start("figure_stability", NULL, per_method * f->nm, modes);
     int unclassified = 0;
     for (int m = 0; m < f->nm; m++) {
         const sus_stepper_type *st = sus_step_method_get(m)->type;
         for (int i = 0; i < NH; i++) { /* one h at a time, for the progress: the same runs */
-            progress_tick(done, "method %d of %d (%s)", m + 1, f->nm, st->name);
-            sus_exp_stability_map(paper, st, &f->hs[i], 1, NANGLE, &f->res[m][i * NANGLE]);
-            done += NANGLE * sus_exp_stability_steps(f->hs[i]);
+            suslov_progress_tick(done, "method %d of %d (%s)", m + 1, f->nm, st->name);
+            sus_lab_stability_map(paper, st, &f->hs[i], 1, NANGLE, &f->res[m][i * NANGLE]);
+            done += NANGLE * sus_lab_stability_steps(f->hs[i]);
         }
-        f->limit[m] = sus_exp_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
+        f->limit[m] = sus_lab_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
         for (int j = 0; j < NH * NANGLE; j++) {
-            const sus_exp_stab_result *r = &f->res[m][j];
-            unclassified += r->cls < SUS_EXP_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
+            const sus_lab_stab_result *r = &f->res[m][j];
+            unclassified += r->cls < SUS_LAB_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
         }
     }
-    progress_end();
+    suslov_progress_end();
     return unclassified;
 }
 
 /* --quiet: no progress line */
 int main(int argc, char **argv)
 {
-    const int modes = progress_modes(&argc, argv);
+    const int modes = suslov_progress_modes(&argc, argv);
     sus_model model;
     sus_exact paper;
     const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);

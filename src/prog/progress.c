@@ -27,7 +27,7 @@ static int env_set(const char *name)
     return v && *v;
 }
 
-int progress_modes(int *argc, char **argv)
+int suslov_progress_modes(int *argc, char **argv)
 {
     int quiet = 0, n = 1;
     for (int i = 1; i < *argc; i++)
@@ -40,7 +40,7 @@ int progress_modes(int *argc, char **argv)
     return quiet ? 0 : PROGRESS_TERMINAL | PROGRESS_LOG;
 }
 
-void progress_start(const char *who, const char *unit, long total, int modes)
+void suslov_progress_start(const char *who, const char *unit, long total, int modes)
 {
     const char *term = getenv("TERM");
     const int tty = isatty(STDERR_FILENO);
@@ -68,7 +68,7 @@ static void clear_line(void)
         fputs("\r\033[K", stderr);
 }
 
-void progress_end(void)
+void suslov_progress_end(void)
 {
     if (pr.shown && !pr.log)
         clear_line();
@@ -128,7 +128,7 @@ static size_t format_line(char *line, size_t len, long done, double dt, const ch
     return n;
 }
 
-void progress_tick(long done, const char *detail, ...)
+void suslov_progress_tick(long done, const char *detail, ...)
 {
     if (!pr.on)
         return;

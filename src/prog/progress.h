@@ -17,15 +17,15 @@ enum {
 
 /* The modes a program allows: none when its arguments hold --quiet, which is taken out of them
  * (*argc and argv shortened), else both. */
-int progress_modes(int *argc, char **argv);
+int suslov_progress_modes(int *argc, char **argv);
 /* who: the line's first word (the program). unit: what total counts, printed as "UNIT k of N"
  * with a rate in UNITs/s; NULL prints the fraction done only (work counted in uneven units).
  * total <= 0: unknown, so no fraction and no estimate. */
-void progress_start(const char *who, const char *unit, long total, int modes);
+void suslov_progress_start(const char *who, const char *unit, long total, int modes);
 /* done of total so far; detail (printf format, may be NULL) is formatted only when a line is
  * due, so a call is cheap otherwise. */
-void progress_tick(long done, const char *detail, ...) __attribute__((format(printf, 2, 3)));
+void suslov_progress_tick(long done, const char *detail, ...) __attribute__((format(printf, 2, 3)));
 /* The end of the run: the terminal's line erased (a log's lines stay). */
-void progress_end(void);
+void suslov_progress_end(void);
 
 #endif

@@ -56,7 +56,7 @@ static int take_row(void *vctx, const sus_row *r)
 {
     csv_ctx *ctx = vctx;
     if ((ctx->calls++ & ctx->tick_mask) == 0)
-        progress_tick(r->k, "t = %.6g", r->t);
+        suslov_progress_tick(r->k, "t = %.6g", r->t);
     if (!isfinite(sus_energy(ctx->m, r->w))) {
         ctx->blowup = 1;
         ctx->blow_k = r->k;
@@ -182,11 +182,11 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
     *ctx = (csv_ctx){.fp = fp, .m = &a->model, .every = a->every, .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
     /* Progress only where a person watches stderr and the rows do not scroll over it. */
-    progress_start("suslov", "step", a->steps,
+    suslov_progress_start("suslov", "step", a->steps,
                    !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0);
     int rc = exact ? sus_run_exact(&cfg, a->w0, take_row, ctx, report)
                    : sus_run(&cfg, a->w0, take_row, ctx, report);
-    progress_end();
+    suslov_progress_end();
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
         rc = SUS_RUN_BLOWUP;
         report->step = ctx->blow_k;
@@ -202,7 +202,7 @@ static int write_failed(sus_sys_atomic_file *af, const char *output)
 {
     const int saved = errno;
     sus_sys_atomic_file_abort(af);
-    cli_error("writing %s failed: %s", output && strcmp(output, "-") ? output : "stdout", strerror(saved));
+    suslov_cli_error("writing %s failed: %s", output && strcmp(output, "-") ? output : "stdout", strerror(saved));
     return EXIT_WRITE;
 }
 
@@ -216,7 +216,7 @@ static int solver_failed(sus_sys_atomic_file *af, const suslov_args *a, int rc,
     failure_message(msg, sizeof msg, a->stepper ? a->stepper->name : "exact", rc, rep);
     if (!af->in_place) {
         sus_sys_atomic_file_abort(af);
-        cli_error("%s; --output %s %s", msg, cli_quote(a->output),
+        suslov_cli_error("%s; --output %s %s", msg, suslov_cli_quote(a->output),
                   af->existed ? "is left as it was" : "was not created");
         return EXIT_SOLVER;
     }
@@ -224,10 +224,10 @@ static int solver_failed(sus_sys_atomic_file *af, const suslov_args *a, int rc,
                              msg) < 0)
         return write_failed(af, a->output);
     if (sus_sys_atomic_file_commit(af, err, sizeof err) != 0) {
-        cli_error("%s", err);
+        suslov_cli_error("%s", err);
         return EXIT_WRITE;
     }
-    cli_error("%s", msg);
+    suslov_cli_error("%s", msg);
     return EXIT_SOLVER;
 }
 
@@ -235,7 +235,7 @@ int main(int argc, char **argv)
 {
     suslov_args a;
     char err[1024];
-    suslov_cli_parse(&a, argc, argv);
+    suslov_args_parse(&a, argc, argv);
     gsl_set_error_handler_off();
     sus_sys_atomic_file af;
     if (sus_sys_atomic_file_open(&af, a.output, err, sizeof err) != 0) {
@@ -243,14 +243,14 @@ int main(int argc, char **argv)
          * a read-only filesystem, which root's access() checks cannot foresee) is bad input, as
          * the checks before; anything else (no space, no inode, I/O) is an output error. */
         if (errno == EACCES || errno == EPERM || errno == EROFS)
-            cli_die("--output: %s", err);
-        cli_error("--output: %s", err);
+            suslov_cli_die("--output: %s", err);
+        suslov_cli_error("--output: %s", err);
         return EXIT_WRITE;
     }
     static char buf[1 << 16];
     setvbuf(af.fp, buf, _IOFBF, sizeof buf);
     if (a.header)
-        suslov_cli_header(&a, argc, argv, af.fp);
+        suslov_args_header(&a, argc, argv, af.fp);
     fputs("k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n", af.fp);
     sus_run_report report;
     csv_ctx ctx;
@@ -260,7 +260,7 @@ int main(int argc, char **argv)
     if (rc != SUS_RUN_OK)
         return solver_failed(&af, &a, rc, &report);
     if (sus_sys_atomic_file_commit(&af, err, sizeof err) != 0) {
-        cli_error("%s", err);
+        suslov_cli_error("%s", err);
         return EXIT_WRITE;
     }
     return 0;

@@ -36,94 +36,94 @@ typedef struct {
     long sweeps;
 } given;
 
-static const cli_spec SPEC;
+static const suslov_cli_spec SPEC;
 
 /* ---- handlers: one per option ---- */
 
-static void set_method(void *g, const cli_option *o, const char *v)
+static void set_method(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)o, ((given *)g)->method = v;
 }
-static void set_eps(void *g, const cli_option *o, const char *v)
+static void set_eps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->eps = cli_number(o->name, v);
+    ((given *)g)->eps = suslov_cli_number(o->name, v);
 }
-static void set_steps(void *g, const cli_option *o, const char *v)
+static void set_steps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->steps = cli_count(o->name, v);
+    ((given *)g)->steps = suslov_cli_count(o->name, v);
 }
-static void set_time(void *g, const cli_option *o, const char *v)
+static void set_time(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->T = cli_number(o->name, v);
+    ((given *)g)->T = suslov_cli_number(o->name, v);
 }
-static void set_omega0(void *g, const cli_option *o, const char *v)
+static void set_omega0(void *g, const suslov_cli_option *o, const char *v)
 {
-    cli_list(o->name, v, ((given *)g)->w0, 2);
+    suslov_cli_list(o->name, v, ((given *)g)->w0, 2);
     ((given *)g)->omega0_given = 1;
 }
-static void set_inertia(void *g, const cli_option *o, const char *v)
+static void set_inertia(void *g, const suslov_cli_option *o, const char *v)
 {
-    cli_list(o->name, v, ((given *)g)->inertia, 9);
+    suslov_cli_list(o->name, v, ((given *)g)->inertia, 9);
     ((given *)g)->inertia_given = 1;
 }
-static void set_recon(void *g, const cli_option *o, const char *v)
+static void set_recon(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)o, ((given *)g)->recon = v;
 }
-static void set_every(void *g, const cli_option *o, const char *v)
+static void set_every(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->every = cli_count(o->name, v);
+    ((given *)g)->every = suslov_cli_count(o->name, v);
     ((given *)g)->every_given = 1;
 }
-static void set_tol(void *g, const cli_option *o, const char *v)
+static void set_tol(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->tol = cli_number(o->name, v);
+    ((given *)g)->tol = suslov_cli_number(o->name, v);
 }
-static void set_every_time(void *g, const cli_option *o, const char *v)
+static void set_every_time(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->every_time = cli_number(o->name, v);
+    ((given *)g)->every_time = suslov_cli_number(o->name, v);
 }
-static void set_sweeps(void *g, const cli_option *o, const char *v)
+static void set_sweeps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->sweeps = cli_count(o->name, v);
+    ((given *)g)->sweeps = suslov_cli_count(o->name, v);
 }
-static void set_output(void *g, const cli_option *o, const char *v)
+static void set_output(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)o, ((given *)g)->output = v;
 }
-static void set_quiet(void *g, const cli_option *o, const char *v)
+static void set_quiet(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)o, (void)v, ((given *)g)->quiet = 1;
 }
 
-static void set_header(void *vg, const cli_option *o, const char *v)
+static void set_header(void *vg, const suslov_cli_option *o, const char *v)
 {
     given *g = vg;
     (void)v;
     if (g->header_given++)
-        cli_die("--header and --no-header are both given");
+        suslov_cli_die("--header and --no-header are both given");
     g->header = strcmp(o->name, "--header") == 0;
 }
 
-static void show_help(void *g, const cli_option *o, const char *v)
+static void show_help(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)g, (void)o, (void)v;
-    cli_help(&SPEC, stdout);
-    cli_exit_stdout();
+    suslov_cli_help(&SPEC, stdout);
+    suslov_cli_exit_stdout();
 }
 
-static void show_man(void *g, const cli_option *o, const char *v)
+static void show_man(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)g, (void)o, (void)v;
-    cli_man(&SPEC, SUSLOV_VERSION, stdout);
-    cli_exit_stdout();
+    suslov_cli_man(&SPEC, SUSLOV_VERSION, stdout);
+    suslov_cli_exit_stdout();
 }
 
-static void show_version(void *g, const cli_option *o, const char *v)
+static void show_version(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)g, (void)o, (void)v;
     printf("suslov %s\n", SUSLOV_VERSION);
-    cli_exit_stdout();
+    suslov_cli_exit_stdout();
 }
 
 /* ---- lists under --method and --reconstruct ---- */
@@ -132,10 +132,10 @@ static void show_version(void *g, const cli_option *o, const char *v)
  * so no list of names is kept here. */
 static void more_methods(FILE *fp, int man)
 {
-    cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
+    suslov_cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
-        cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
+        suslov_cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
                  me->type->desc.follows_recon ? "" : " (ignores --reconstruct)");
     }
 }
@@ -158,20 +158,20 @@ static void more_recons(FILE *fp, int man)
 {
     char names[512];
     for (int r = 0; r < SUS_RECON_COUNT; r++)
-        cli_line(fp, man, "%-12s %s", SUS_RECON_NAMES[r], SUS_RECON_ABOUT[r]);
-    cli_line(fp, man, "default, the method's own:");
+        suslov_cli_line(fp, man, "%-12s %s", SUS_RECON_NAMES[r], SUS_RECON_ABOUT[r]);
+    suslov_cli_line(fp, man, "default, the method's own:");
     for (int r = 0; r < SUS_RECON_COUNT; r++)
         if (names_where(names, sizeof names, 1, r), names[0])
-            cli_line(fp, man, "%s: %s", names, SUS_RECON_NAMES[r]);
+            suslov_cli_line(fp, man, "%s: %s", names, SUS_RECON_NAMES[r]);
     for (int f = SUS_ATTITUDE_NONE; f <= SUS_ATTITUDE_QUAT; f++)
         if (names_where(names, sizeof names, 0, f), names[0])
-            cli_line(fp, man, "%s: none, their own %s attitude", names,
+            suslov_cli_line(fp, man, "%s: none, their own %s attitude", names,
                      sus_step_attitude_name((sus_attitude_form)f));
 }
 
 /* ---- the table ---- */
 
-static const cli_option OPTIONS[] = {
+static const suslov_cli_option OPTIONS[] = {
     {"--method", "M", "the method (required); `--method list`, given alone (no other option),\n"
                       "prints name, family, order, default reconstruction and description (a\n"
                       "table on a terminal, TSV otherwise)", set_method, more_methods},
@@ -218,7 +218,7 @@ static const cli_option OPTIONS[] = {
 
 /* Section text (cli_options.h): prose is filled; a line indented by two spaces is kept as it is;
  * a line followed by lines indented by four is a tag and its description. */
-static const cli_section SECTIONS[] = {
+static const suslov_cli_section SECTIONS[] = {
     {"OUTPUT",
      "Unless --no-header, #-comment lines first (version, command line, method, eps, steps,\n"
      "inertia, w0, units), then the CSV header\n"
@@ -287,7 +287,7 @@ static const cli_section SECTIONS[] = {
      "  suslov --method list"},
 };
 
-static const cli_spec SPEC = {
+static const suslov_cli_spec SPEC = {
     "suslov", "integrate the Suslov problem with the methods of Jimenez & Scheurle",
     "suslov --method M (--eps H (--steps N | --time T) | --tol TOL --time T) [OPTION]...",
     "Integrates the Suslov problem (Jimenez & Scheurle, Section 5) and writes CSV.",
@@ -312,7 +312,7 @@ static void method_list(void)
                me->type->desc.follows_recon ? SUS_RECON_NAMES[me->recon] : "own",
                sus_paper_numbered(me->about, about, sizeof about));
     }
-    cli_exit_stdout();
+    suslov_cli_exit_stdout();
 }
 
 /* ---- checks that need several options ---- */
@@ -337,16 +337,16 @@ static long steps_for_time(double T, double eps)
     char lo[64], hi[64];
     if (!(n >= 1.0)) {
         time_choice(hi, sizeof hi, 1.0, eps);
-        cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
+        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
                 T, eps, n, hi);
     }
     if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
-        cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n, LONG_MAX);
+        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n, LONG_MAX);
     if (fabs(n * eps - T) > 2.0 * DBL_EPSILON * T) {
         const double f = floor(T / eps);
         time_choice(lo, sizeof lo, f, eps);
         time_choice(hi, sizeof hi, f + 1.0, eps);
-        cli_die("--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
+        suslov_cli_die("--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
                 f >= 1.0 ? lo : "", f >= 1.0 ? " or " : "", hi);
     }
     return (long)n;
@@ -360,7 +360,7 @@ static int resolve_method(suslov_args *a, const given *g)
     const int exact = strcmp(g->method, "exact") == 0;
     a->method = exact ? NULL : sus_step_method_by_name(g->method);
     if (!exact && !a->method)
-        cli_die("unknown method %s (exact, %s; or list)", cli_quote(g->method),
+        suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
                 sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
@@ -370,10 +370,10 @@ static int resolve_method(suslov_args *a, const given *g)
         for (int r = 0; r < SUS_RECON_COUNT; r++)
             len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
                                     SUS_RECON_NAMES[r]);
-        cli_die("unknown reconstruction %s (%s)", cli_quote(g->recon), names);
+        suslov_cli_die("unknown reconstruction %s (%s)", suslov_cli_quote(g->recon), names);
     }
     if (exact)
-        cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
+        suslov_cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
     return !a->method->type->desc.follows_recon;
 }
 
@@ -384,11 +384,11 @@ static void check_sweeps(suslov_args *a, const given *g)
     if (!g->sweeps)
         return;
     if (!a->method || a->method->type != sus_step_midpoint)
-        cli_die("--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
-    if (g->sweeps > SUS_EXP_MAX_SWEEPS)
-        cli_die("--sweeps must be at most %d, got %ld", SUS_EXP_MAX_SWEEPS, g->sweeps);
+        suslov_cli_die("--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
+    if (g->sweeps > SUS_LAB_MAX_SWEEPS)
+        suslov_cli_die("--sweeps must be at most %d, got %ld", SUS_LAB_MAX_SWEEPS, g->sweeps);
     a->sweeps = (int)g->sweeps;
-    a->stepper = sus_exp_midpoint_sweeps_type(a->sweeps);
+    a->stepper = sus_lab_midpoint_sweeps_type(a->sweeps);
 }
 
 /* A tolerance-driven method: --tol and --time, no fixed step. The smallest TOL is one rounding
@@ -396,20 +396,20 @@ static void check_sweeps(suslov_args *a, const given *g)
 static void check_tol_run(suslov_args *a, const given *g)
 {
     if (isnan(g->tol))
-        cli_die("--method %s chooses its steps from --tol, which is required", g->method);
+        suslov_cli_die("--method %s chooses its steps from --tol, which is required", g->method);
     if (!(g->tol >= DBL_EPSILON && g->tol < 1.0))
-        cli_die("--tol must be in [2^-52, 1), got %.17g", g->tol);
+        suslov_cli_die("--tol must be in [2^-52, 1), got %.17g", g->tol);
     if (!isnan(g->eps) || g->steps > 0)
-        cli_die("--tol chooses the steps: give --time, not --eps or --steps");
+        suslov_cli_die("--tol chooses the steps: give --time, not --eps or --steps");
     if (g->every_given)
-        cli_die("--every counts fixed steps; with --tol rows come at each step or by --every-time");
+        suslov_cli_die("--every counts fixed steps; with --tol rows come at each step or by --every-time");
     if (isnan(g->T) || !(g->T > 0.0))
-        cli_die("--tol needs a final time --time T > 0");
+        suslov_cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
-        cli_die("--every-time must be positive, got %.17g", g->every_time);
+        suslov_cli_die("--every-time must be positive, got %.17g", g->every_time);
     /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
     if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
-        cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld", g->T, g->every_time,
+        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld", g->T, g->every_time,
                 g->T / g->every_time, LONG_MAX);
     a->tol = g->tol;
     a->t_end = g->T;
@@ -419,19 +419,19 @@ static void check_tol_run(suslov_args *a, const given *g)
 static void check_fixed_steps(suslov_args *a, const given *g)
 {
     if (!isnan(g->tol) || !isnan(g->every_time))
-        cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
+        suslov_cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
                 isnan(g->tol) ? "--every-time" : "--tol");
     if (isnan(g->eps))
-        cli_die("--eps is required");
+        suslov_cli_die("--eps is required");
     if (!(g->eps > 0.0))
-        cli_die("--eps must be positive, got %.17g", g->eps);
+        suslov_cli_die("--eps must be positive, got %.17g", g->eps);
     if ((g->steps > 0) == !isnan(g->T))
-        cli_die("give exactly one of --steps and --time");
+        suslov_cli_die("give exactly one of --steps and --time");
     a->eps = g->eps;
     a->steps = isnan(g->T) ? g->steps : steps_for_time(g->T, g->eps);
     /* Every t_k = k eps <= N eps must be a finite number. */
     if (!isfinite((double)a->steps * a->eps))
-        cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
+        suslov_cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
     a->t_end = (double)a->steps * a->eps;
 }
 
@@ -448,7 +448,7 @@ static void check_start(const suslov_args *a, const given *g)
         return;
     const char *opts =
         g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
-    cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, g->w0[0], g->w0[1],
+    suslov_cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, g->w0[0], g->w0[1],
             g->inertia_given ? "this" : "the paper's (default)");
 }
 
@@ -456,7 +456,7 @@ static void check_run(suslov_args *a, const given *g)
 {
     char err[1024];
     if (!g->method)
-        cli_die("--method is required");
+        suslov_cli_die("--method is required");
     if (strcmp(g->method, "list") == 0)
         method_list();
     const sus_step_method *me = sus_step_method_by_name(g->method);
@@ -466,34 +466,34 @@ static void check_run(suslov_args *a, const given *g)
         check_fixed_steps(a, g);
     char bad[512];
     if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
-        cli_die("%s", bad);
+        suslov_cli_die("%s", bad);
     if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0) {
         char said[sizeof err]; /* the model cites the paper by labels; the reader gets numbers */
-        cli_die("--inertia: %s", sus_paper_numbered(err, said, sizeof said));
+        suslov_cli_die("--inertia: %s", sus_paper_numbered(err, said, sizeof said));
     }
     check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
-        cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
+        suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
                 "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
     if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
-        cli_die("--output: %s", err);
+        suslov_cli_die("--output: %s", err);
     if (ignored)
-        cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
+        suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
 }
 
-void suslov_cli_parse(suslov_args *a, int argc, char **argv)
+void suslov_args_parse(suslov_args *a, int argc, char **argv)
 {
     given g = {.eps = NAN, .T = NAN, .tol = NAN, .every_time = NAN, .every = 1, .header = 1,
                .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
     /* before any handler: another option's check or action (--help) would come first */
     const char *method;
-    if (cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method && strcmp(method, "list") == 0)
-        cli_die("--method list takes no other options");
-    cli_parse(&SPEC, argc, argv, &g);
+    if (suslov_cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method && strcmp(method, "list") == 0)
+        suslov_cli_die("--method list takes no other options");
+    suslov_cli_parse(&SPEC, argc, argv, &g);
     memset(a, 0, sizeof *a);
     check_run(a, &g);
     a->output = g.output;
@@ -549,7 +549,7 @@ static void put_arg(FILE *fp, const char *s)
     fputc('\'', fp);
 }
 
-void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp)
+void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp)
 {
     fprintf(fp, "# suslov %s\n# command:", SUSLOV_VERSION);
     for (int i = 0; i < argc; i++) {

@@ -28,9 +28,9 @@ typedef struct {
 
 /* Parses and checks everything that can be checked before the run (bad input: one line, exit
  * 2); --help, --version, --man and --method list print and exit 0 (1 if stdout fails). */
-void suslov_cli_parse(suslov_args *a, int argc, char **argv);
+void suslov_args_parse(suslov_args *a, int argc, char **argv);
 /* The #-comment lines before the CSV header: version, command line, method, eps, body, w0,
  * units. */
-void suslov_cli_header(const suslov_args *a, int argc, char **argv, FILE *fp);
+void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp);
 
 #endif

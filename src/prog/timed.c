@@ -103,9 +103,9 @@ static int wait_for(pid_t pid, double t0, double last)
             return -1;
         const double dt = sus_sys_now() - t0;
         if (last > 0.0 && dt >= last)
-            progress_tick((long)(1000.0 * dt), "longer than the last run (%.0f s)", last);
+            suslov_progress_tick((long)(1000.0 * dt), "longer than the last run (%.0f s)", last);
         else
-            progress_tick((long)(1000.0 * dt), "%s", "");
+            suslov_progress_tick((long)(1000.0 * dt), "%s", "");
         const struct timespec tenth = {0, 100000000L};
         nanosleep(&tenth, NULL);
     }
@@ -128,7 +128,7 @@ int main(int argc, char **argv)
     }
     const char *timefile = argv[i];
     const double last = last_seconds(timefile);
-    progress_start(name ? name : "", NULL, (long)(1000.0 * last),
+    suslov_progress_start(name ? name : "", NULL, (long)(1000.0 * last),
                    name ? PROGRESS_TERMINAL | PROGRESS_LOG : 0);
     const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++)
@@ -137,7 +137,7 @@ int main(int argc, char **argv)
     const pid_t pid = start(argv + i + 1, output);
     child = pid;
     const int status = pid < 0 ? -1 : wait_for(pid, t0, last);
-    progress_end();
+    suslov_progress_end();
     const int rc = status < 0            ? 127
                    : WIFEXITED(status) ? WEXITSTATUS(status)
                                        : 128 + WTERMSIG(status);

@@ -44,7 +44,7 @@ const char *wasm_recon_name(int i) { return i >= 0 && i < SUS_RECON_COUNT ? SUS_
 void wasm_inertia_column(void)
 {
     double I[9];
-    sus_exp_inertia_column_swap(input + 2, I);
+    sus_lab_inertia_column_swap(input + 2, I);
     memcpy(input + 2, I, sizeof I);
 }
 
@@ -184,10 +184,10 @@ int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
  * (-1: the midpoint method's own). Same returns as wasm_run. */
 int wasm_sweeps(int n, int recon, double eps, double nsteps, double nevery)
 {
-    const sus_stepper_type *type = sus_exp_midpoint_sweeps_type(n);
+    const sus_stepper_type *type = sus_lab_midpoint_sweeps_type(n);
     if (!type)
         return n < 1 ? say(2, "--sweeps must be positive, got %.0f", n, 0)
-                     : say(2, "--sweeps must be at most %.0f, got %.0f", SUS_EXP_MAX_SWEEPS, n);
+                     : say(2, "--sweeps must be at most %.0f, got %.0f", SUS_LAB_MAX_SWEEPS, n);
     sus_recon own = SUS_RECON_CAYLEY;
     for (int i = 0; i < sus_step_method_count(); i++)
         if (sus_step_method_get(i)->type == sus_step_midpoint)
@@ -220,7 +220,7 @@ int wasm_exact_omega(double eps, double nsteps, double nevery)
 }
 
 /* The convergence page's fit: the page writes n <= FIT_MAX steps eps_i at fit_in[i] and their
- * errors at fit_in[FIT_MAX + i], and sus_exp_fit_order (orderfit.c, the ledger's fit) fits
+ * errors at fit_in[FIT_MAX + i], and sus_lab_fit_order (orderfit.c, the ledger's fit) fits
  * the points with eps <= eps_max above the round-off floor 1000 u size. Returns slope,
  * intercept, points used, the eps range fitted and the floor (slope NaN when no fit). */
 enum { FIT_MAX = 64 };
@@ -230,10 +230,10 @@ double *wasm_fit_input(void) { return fit_in; }
 double *wasm_fit(int n, double eps_max, double size)
 {
     static double out[6];
-    sus_exp_order_fit f;
-    const double round_off = SUS_EXP_FIT_FLOOR_REL * size;
+    sus_lab_order_fit f;
+    const double round_off = SUS_LAB_FIT_FLOOR_REL * size;
     const int ok =
-        n >= 0 && n <= FIT_MAX && sus_exp_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
+        n >= 0 && n <= FIT_MAX && sus_lab_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
     out[0] = ok ? f.slope : NAN;
     out[1] = ok ? f.intercept : NAN;
     out[2] = ok ? f.used : 0;

@@ -7,7 +7,7 @@
 
 /* Series i's colour: ours take hues around the wheel, peers grey (on the reduced problem a
  * bluer grey). */
-static void series_colour(const sus_exp_bench *b, int i, double rgb[3])
+static void series_colour(const sus_lab_bench *b, int i, double rgb[3])
 {
     if (!b->S[i]->ours) {
         rgb[0] = rgb[1] = rgb[2] = 0.62;
@@ -42,13 +42,13 @@ static void series_colour(const sus_exp_bench *b, int i, double rgb[3])
 
 /* The styles of the series: ours with markers in turn, peers as grey dots without a label (on the
  * reduced problem, dashed). */
-static void wp_styles(const sus_exp_bench *b, sus_plot_style *st, double (*rgb)[3])
+static void wp_styles(const sus_lab_bench *b, sus_plot_style *st, double (*rgb)[3])
 {
     static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
                               SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
     int k = 0;
     for (int i = 0; i < b->nseries; i++) {
-        const sus_exp_bench_series *s = b->S[i];
+        const sus_lab_bench_series *s = b->S[i];
         series_colour(b, i, rgb[i]);
         st[i] = sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, s->reduced,
                                   s->ours ? mk[k++ % 6] : SUS_PLOT_DOT, s->ours ? 3.5 : 2.0,
@@ -66,13 +66,13 @@ static sus_plot_style envelope_style(int reduced)
 
 /* Whether panel p draws series s: (a) the w error, not of the reduced problem (given w); (b) the
  * attitude error, not of w alone. */
-static int in_panel(const sus_exp_bench_series *s, int p)
+static int in_panel(const sus_lab_bench_series *s, int p)
 {
     return p ? !s->w_only : !s->reduced;
 }
 
 /* Panel p: (a) the w error, (b) the attitude error. */
-static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_style *st)
+static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_style *st)
 {
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < b->nseries; i++) {
@@ -92,7 +92,7 @@ static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_
                    p ? "(b)" : "(a)");
     for (int pass = 0; pass < 2; pass++) /* peers first, underneath */
         for (int i = 0; i < b->nseries; i++) {
-            const sus_exp_bench_series *s = b->S[i];
+            const sus_lab_bench_series *s = b->S[i];
             if (s->ours != pass || !in_panel(s, p))
                 continue;
             sus_plot_series(&ax, s->sec, p ? s->err_R : s->err_w, (size_t)s->n, 1, &st[i]);
@@ -102,8 +102,8 @@ static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_
     sus_plot_series(&ax, b->env[p].sec, b->env[p].err, (size_t)b->env[p].n, 1, &es);
     if (p)
         sus_plot_series(&ax, b->env[2].sec, b->env[2].err, (size_t)b->env[2].n, 1, &er);
-    for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++) { /* the target accuracies */
-        const double yy[2] = {SUS_EXP_BENCH_LEVELS[l], SUS_EXP_BENCH_LEVELS[l]},
+    for (int l = 0; l < SUS_LAB_BENCH_NLEVELS; l++) { /* the target accuracies */
+        const double yy[2] = {SUS_LAB_BENCH_LEVELS[l], SUS_LAB_BENCH_LEVELS[l]},
                      xx[2] = {ax.x0, ax.x1};
         const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_GREY, 0.3, 2, SUS_PLOT_NONE, 0, NULL);
         sus_plot_series(&ax, xx, yy, 2, 1, &ls);
@@ -112,10 +112,10 @@ static void wp_panel(cairo_t *cr, const sus_exp_bench *b, int p, const sus_plot_
 
 static void draw_wp(cairo_t *cr, void *vctx)
 {
-    const sus_exp_bench *b = vctx;
-    sus_plot_style *st = sus_exp_bench_calloc((size_t)b->nseries, sizeof *st);
-    sus_plot_style *ours = sus_exp_bench_calloc((size_t)b->nseries + 2, sizeof *ours);
-    double(*rgb)[3] = sus_exp_bench_calloc((size_t)b->nseries, sizeof *rgb);
+    const sus_lab_bench *b = vctx;
+    sus_plot_style *st = sus_lab_bench_calloc((size_t)b->nseries, sizeof *st);
+    sus_plot_style *ours = sus_lab_bench_calloc((size_t)b->nseries + 2, sizeof *ours);
+    double(*rgb)[3] = sus_lab_bench_calloc((size_t)b->nseries, sizeof *rgb);
     wp_styles(b, st, rgb);
     for (int p = 0; p < 2; p++)
         wp_panel(cr, b, p, st);
@@ -137,11 +137,11 @@ static void draw_wp(cairo_t *cr, void *vctx)
 
 #define COST_H 280.0
 
-static double cost_width(const sus_exp_bench *b) { return 90.0 + 46.0 * (b->cost.n + 2); }
+static double cost_width(const sus_lab_bench *b) { return 90.0 + 46.0 * (b->cost.n + 2); }
 
 /* Bar i of nb: the w-step (v1, light) and the whole step (v2, dark; ours only), its name below
  * at 45 degrees and its value above. */
-static void cost_bar(const sus_exp_bench *b, const sus_plot_axes *ax, int i, double v1, double v2)
+static void cost_bar(const sus_lab_bench *b, const sus_plot_axes *ax, int i, double v1, double v2)
 {
     cairo_t *cr = ax->cr;
     const int n = b->cost.n;
@@ -172,12 +172,12 @@ static void cost_bar(const sus_exp_bench *b, const sus_plot_axes *ax, int i, dou
 
 static void draw_cost(cairo_t *cr, void *vctx)
 {
-    const sus_exp_bench *b = vctx;
+    const sus_lab_bench *b = vctx;
     const int nb = b->cost.n + 2;
     const double W = cost_width(b), H = COST_H;
     sus_plot_text(cr, W / 2, 14, "Cost of one step (median ns; lower is better)", 11, 0.5, 0.5, 1);
-    double *v1 = sus_exp_bench_calloc((size_t)nb, sizeof *v1),
-           *v2 = sus_exp_bench_calloc((size_t)nb, sizeof *v2);
+    double *v1 = sus_lab_bench_calloc((size_t)nb, sizeof *v1),
+           *v2 = sus_lab_bench_calloc((size_t)nb, sizeof *v2);
     for (int m = 0; m < b->cost.n; m++) {
         v1[m] = b->cost.ns_raw[m];
         v2[m] = b->cost.ns_full[m];
@@ -205,7 +205,7 @@ static void draw_cost(cairo_t *cr, void *vctx)
     free(v2);
 }
 
-int sus_plot_bench_figures(const sus_exp_bench *b, const char *figdir)
+int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir)
 {
     char err[256], path[4096];
     snprintf(path, sizeof path, "%s/work_precision", figdir);

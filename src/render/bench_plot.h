@@ -2,7 +2,7 @@
  * t = 50, our methods in colour over the peers in grey, the peers' lower envelopes in black, solid
  * on the full problem and dashed on the reduced one, the target levels dotted) and step_cost (the
  * cost of one step of every method, GSL's rk4 and the closed form). Drawn from what
- * sus_exp_bench_load reads back of a run (bench_load.h). */
+ * sus_lab_bench_load reads back of a run (bench_load.h). */
 #ifndef SUS_PLOT_BENCH_PLOT_H
 #define SUS_PLOT_BENCH_PLOT_H
 
@@ -10,6 +10,6 @@
 
 /* FIGDIR/work_precision.{pdf,png} and FIGDIR/step_cost.{pdf,png}. Returns 0, or -1 with a
  * message on stderr. */
-int sus_plot_bench_figures(const sus_exp_bench *b, const char *figdir);
+int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir);
 
 #endif

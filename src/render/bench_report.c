@@ -6,11 +6,11 @@
 
 #include <stdio.h>
 
-#define ROUNDS SUS_EXP_BENCH_ROUNDS
-#define COST_STEPS SUS_EXP_BENCH_COST_STEPS
-#define LEVELS SUS_EXP_BENCH_LEVELS
+#define ROUNDS SUS_LAB_BENCH_ROUNDS
+#define COST_STEPS SUS_LAB_BENCH_COST_STEPS
+#define LEVELS SUS_LAB_BENCH_LEVELS
 
-void sus_plot_bench_header(const sus_exp_bench *b, int differ, int with_odeint)
+void sus_plot_bench_header(const sus_lab_bench *b, int differ, int with_odeint)
 {
     printf("Benchmark (T = %g, w(0) = (0.4, 0.5), the paper's body). Times are the CPU time of "
            "the bench's thread.\n"
@@ -18,18 +18,18 @@ void sus_plot_bench_header(const sus_exp_bench *b, int differ, int with_odeint)
            "min and max in bench.csv.\n"
            "On a shared machine, compare the ratios measured in this same run rather than "
            "absolute times.\n",
-           SUS_EXP_BENCH_T_END, SUS_EXP_BENCH_WP_ROUNDS, SUS_EXP_BENCH_BATCH_SECONDS);
+           SUS_LAB_BENCH_T_END, SUS_LAB_BENCH_WP_ROUNDS, SUS_LAB_BENCH_BATCH_SECONDS);
     if (!with_odeint)
         printf("(built without Boost.Odeint: `make bench` builds the bench with it)\n");
     printf("  %s %d of %d timed points end their timed runs with the error recorded for them\n\n",
            differ ? "CHECK FAILED:" : "CHECK ok:", b->npoints - differ, b->npoints);
 }
 
-static void print_costs(const sus_exp_bench *b)
+static void print_costs(const sus_lab_bench *b)
 {
-    const sus_exp_bench_costs *c = &b->cost;
+    const sus_lab_bench_costs *c = &b->cost;
     printf("Per-step cost (ns, median of %d interleaved rounds of %ld steps; eps = %g):\n", ROUNDS,
-           COST_STEPS, SUS_EXP_BENCH_T_END / (double)COST_STEPS);
+           COST_STEPS, SUS_LAB_BENCH_T_END / (double)COST_STEPS);
     const int irk4 = sus_step_method_index_of(sus_step_rk4);
     printf("  %-12s %10s %18s %12s %12s\n", "method", "w-step", "whole step (recon)", "Newton/step",
            "x our rk4");
@@ -49,12 +49,12 @@ static void print_costs(const sus_exp_bench *b)
 }
 
 /* The driver's overhead on the own-attitude methods and on the tolerance-driven runs. */
-static void print_overheads(const sus_exp_bench *b)
+static void print_overheads(const sus_lab_bench *b)
 {
-    const sus_exp_bench_costs *c = &b->cost;
+    const sus_lab_bench_costs *c = &b->cost;
     for (int m = 0; m < c->n; m++) {
         const sus_step_method *me = sus_step_method_get(m);
-        if (!sus_exp_bench_own_attitude(me))
+        if (!sus_lab_bench_own_attitude(me))
             continue;
         const double over = c->ns_full_min[m] / c->ns_direct[m] - 1.0;
         printf(
@@ -70,17 +70,17 @@ static void print_overheads(const sus_exp_bench *b)
     }
 }
 
-static void print_step_targets(const sus_exp_bench *b)
+static void print_step_targets(const sus_lab_bench *b)
 {
-    const double speedup = sus_exp_bench_rk4_speedup(b);
+    const double speedup = sus_lab_bench_rk4_speedup(b);
     printf("  %s our rk4 step is >= 5x faster than GSL rk4 through "
            "gsl_odeiv2_driver_apply_fixed_step: %.1fx\n",
            speedup >= 5 ? "PASS" : "MISS", speedup);
     for (int m = 0; m < b->cost.n; m++) {
         const sus_step_method *me = sus_step_method_get(m);
-        if (!sus_exp_bench_implicit_target(me))
+        if (!sus_lab_bench_implicit_target(me))
             continue;
-        const double r = sus_exp_bench_implicit_ratio(b, m);
+        const double r = sus_lab_bench_implicit_ratio(b, m);
         printf("  %s an implicit %s step costs <= 3x our rk4 step: %.2fx (%.2f Newton iterations "
                "per step)\n",
                r <= 3 ? "PASS" : "MISS", me->type->name, r, b->cost.newton[m]);
@@ -88,7 +88,7 @@ static void print_step_targets(const sus_exp_bench *b)
     print_overheads(b);
 }
 
-static void print_floor(int l, const sus_exp_bench_level *v)
+static void print_floor(int l, const sus_lab_bench_level *v)
 {
     if (isinf(v->floor))
         printf("  MISS attitude accuracy %.0e: no floor (none of our explicit methods reaches "
@@ -102,58 +102,58 @@ static void print_floor(int l, const sus_exp_bench_level *v)
 }
 
 /* The line's head: PASS or MISS against a target, "info" for a comparison without one. */
-static const char *verdict(const sus_exp_bench_level *v)
+static const char *verdict(const sus_lab_bench_level *v)
 {
     return isnan(v->target) ? "info" : v->pass ? "PASS" : "MISS";
 }
 
-static const char *const WHAT[SUS_EXP_BENCH_NCOMP] = {
+static const char *const WHAT[SUS_LAB_BENCH_NCOMP] = {
     "attitude", "attitude (reduced problem)", "w"};
-static const char *const AGAINST[SUS_EXP_BENCH_NCOMP] = {
+static const char *const AGAINST[SUS_LAB_BENCH_NCOMP] = {
     "best peer on the full problem", "best peer on the reduced problem", "best peer"};
 
-static void print_level(const sus_exp_bench *b, sus_exp_bench_comparison c, int l)
+static void print_level(const sus_lab_bench *b, sus_lab_bench_comparison c, int l)
 {
-    const sus_exp_bench_level v = sus_exp_bench_level_verdict(b, c, l);
+    const sus_lab_bench_level v = sus_lab_bench_level_verdict(b, c, l);
     if (v.ours.series < 0) {
         printf("  %s %s accuracy %.0e at t = 50: none of our structure-preserving methods "
                "reaches it\n",
                isnan(v.target) ? "info" : "MISS", WHAT[c], LEVELS[l]);
         return;
     }
-    const sus_exp_bench_series *os = b->S[v.ours.series];
-    if (c == SUS_EXP_BENCH_ATT_FULL)
+    const sus_lab_bench_series *os = b->S[v.ours.series];
+    if (c == SUS_LAB_BENCH_ATT_FULL)
         print_floor(l, &v);
     printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) ", verdict(&v), WHAT[c],
-           LEVELS[l], v.ours.sec, os->name, sus_exp_bench_param_name(os), os->param[v.ours.point]);
+           LEVELS[l], v.ours.sec, os->name, sus_lab_bench_param_name(os), os->param[v.ours.point]);
     if (v.peer.series < 0) {
         printf("; no peer configuration reaches it\n");
         return;
     }
-    const sus_exp_bench_series *ps = b->S[v.peer.series];
+    const sus_lab_bench_series *ps = b->S[v.peer.series];
     printf("vs %s %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c],
            v.peer.sec, ps->name, ps->param[v.peer.point],
-           c != SUS_EXP_BENCH_W_INFO ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point], v.ratio);
+           c != SUS_LAB_BENCH_W_INFO ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point], v.ratio);
     if (isnan(v.target))
         printf(" (no target: the closed form gives w(t) in %.3g ns)\n", b->cost.ns_exact);
     else
         printf(" (target %gx)\n", v.target);
 }
 
-void sus_plot_bench_costs_and_targets(const sus_exp_bench *b)
+void sus_plot_bench_costs_and_targets(const sus_lab_bench *b)
 {
     print_costs(b);
     printf("Targets:\n");
     print_step_targets(b);
-    for (int c = 0; c < SUS_EXP_BENCH_NCOMP; c++)
-        for (int l = 0; l < SUS_EXP_BENCH_NLEVELS; l++)
-            print_level(b, (sus_exp_bench_comparison)c, l);
+    for (int c = 0; c < SUS_LAB_BENCH_NCOMP; c++)
+        for (int l = 0; l < SUS_LAB_BENCH_NLEVELS; l++)
+            print_level(b, (sus_lab_bench_comparison)c, l);
 }
 
-void sus_plot_bench_long_runs(const sus_exp_bench *b)
+void sus_plot_bench_long_runs(const sus_lab_bench *b)
 {
     for (int i = 0; i < b->nlr; i++) {
-        const sus_exp_bench_longrun *L = &b->LR[i];
+        const sus_lab_bench_longrun *L = &b->LR[i];
         if (L->ours) {
             const int ok = L->orth <= 1e-13 && L->energy <= 1e-13 && L->w3 == 0.0;
             printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g "
@@ -177,59 +177,59 @@ static void print_long_peer(const char *name, double tol, double sec, double err
 }
 
 /* Each of ours at T = 1e4 (information), then the target: the best of them. */
-void sus_plot_bench_equal_error(const sus_exp_bench *b)
+void sus_plot_bench_equal_error(const sus_lab_bench *b)
 {
     for (int k = 0; k < b->neq; k++) {
-        const sus_exp_bench_equal_error *e = &b->EQ[k];
-        const sus_exp_bench_series *s = b->S[e->series];
+        const sus_lab_bench_equal_error *e = &b->EQ[k];
+        const sus_lab_bench_series *s = b->S[e->series];
         printf("  info T = 1e4, attitude error <= %g: %s (%s %.4g) %.3g s, error %.2g; ",
-               SUS_EXP_BENCH_LONG_LEVEL, s->name, sus_exp_bench_param_name(s), s->param[e->point],
+               SUS_LAB_BENCH_LONG_LEVEL, s->name, sus_lab_bench_param_name(s), s->param[e->point],
                e->sec, e->err);
         print_long_peer("GSL rk8pd (w,q)", e->peer_tol, e->peer_sec, e->peer_err, e->sec);
         printf("; ");
         print_long_peer("GSL rk8pd reduced (q)", e->red_tol, e->red_sec, e->red_err, e->sec);
         printf("\n");
     }
-    const int best = sus_exp_bench_best_equal_error(b);
+    const int best = sus_lab_bench_best_equal_error(b);
     if (best < 0) {
         printf("  MISS T = 1e4 at equal error: none of our explicit own-attitude methods reaches "
                "attitude %g there\n",
-               SUS_EXP_BENCH_LONG_LEVEL);
+               SUS_LAB_BENCH_LONG_LEVEL);
         return;
     }
-    const sus_exp_bench_equal_error *e = &b->EQ[best];
+    const sus_lab_bench_equal_error *e = &b->EQ[best];
     const double ratio = e->peer_sec / e->sec;
     if (isinf(ratio))
         printf("  PASS T = 1e4 at equal error (attitude <= %g): ours %s %.3g s; no rk8pd (w,q) "
                "tolerance down to 1e-15 reaches it\n",
-               SUS_EXP_BENCH_LONG_LEVEL, b->S[e->series]->name, e->sec);
+               SUS_LAB_BENCH_LONG_LEVEL, b->S[e->series]->name, e->sec);
     else
         printf("  %s T = 1e4 at equal error (attitude <= %g): ours %s is %.2fx faster than GSL "
                "rk8pd (w,q) (target %gx)\n",
-               ratio >= SUS_EXP_BENCH_LONG_TARGET ? "PASS" : "MISS", SUS_EXP_BENCH_LONG_LEVEL,
-               b->S[e->series]->name, ratio, SUS_EXP_BENCH_LONG_TARGET);
+               ratio >= SUS_LAB_BENCH_LONG_TARGET ? "PASS" : "MISS", SUS_LAB_BENCH_LONG_LEVEL,
+               b->S[e->series]->name, ratio, SUS_LAB_BENCH_LONG_TARGET);
 }
 
-void sus_plot_bench_growth(const sus_exp_bench *b)
+void sus_plot_bench_growth(const sus_lab_bench *b)
 {
-    const sus_exp_bench_growth *g = &b->growth;
+    const sus_lab_bench_growth *g = &b->growth;
     if (g->series < 0)
         return;
-    const sus_exp_bench_series *s = b->S[g->series];
-    const double r = sus_exp_bench_growth_ratio(b);
+    const sus_lab_bench_series *s = b->S[g->series];
+    const double r = sus_lab_bench_growth_ratio(b);
     printf("  %s cost at T = 1e6 <= %gx the cost at T = 1e4: %s (%s %.4g) %.3g s against "
            "%.3g s: %.2fx\n",
-           r <= SUS_EXP_BENCH_GROWTH_TARGET ? "PASS" : "MISS", SUS_EXP_BENCH_GROWTH_TARGET, s->name,
-           sus_exp_bench_param_name(s), s->param[g->point], g->sec, g->sec_long, r);
+           r <= SUS_LAB_BENCH_GROWTH_TARGET ? "PASS" : "MISS", SUS_LAB_BENCH_GROWTH_TARGET, s->name,
+           sus_lab_bench_param_name(s), s->param[g->point], g->sec, g->sec_long, r);
 }
 
-void sus_plot_bench_reproduced(const sus_exp_bench *b, const sus_exp_bench_reproduced *r,
+void sus_plot_bench_reproduced(const sus_lab_bench *b, const sus_lab_bench_reproduced *r,
                                const char *suslov)
 {
     for (int k = 0; k < r->nfailed; k++) {
-        const sus_exp_bench_series *s = b->S[r->failed[k].series];
+        const sus_lab_bench_series *s = b->S[r->failed[k].series];
         printf("  row not reproduced by suslov: %s %s %.17g to T = %g\n", s->name,
-               sus_exp_bench_param_name(s), s->param[r->failed[k].point], r->failed[k].T);
+               sus_lab_bench_param_name(s), s->param[r->failed[k].point], r->failed[k].T);
     }
     printf("  %s %d of %d \"ours\" rows re-run with %s give the same results (suslov_args in "
            "bench.csv, longruns.tsv)\n",

@@ -9,26 +9,26 @@
 
 #include <stdio.h>
 
-#define NLEVELS SUS_EXP_BENCH_NLEVELS
-#define LEVELS SUS_EXP_BENCH_LEVELS
+#define NLEVELS SUS_LAB_BENCH_NLEVELS
+#define LEVELS SUS_LAB_BENCH_LEVELS
 
 /* ---- bench.csv ---- */
 
 /* What a work row's run solves: w and the attitude, the attitude given w(t), or w alone. */
-static const char *solves(const sus_exp_bench_series *s)
+static const char *solves(const sus_lab_bench_series *s)
 {
     return s->w_only ? "w" : s->reduced ? "R given w(t)" : "w+R";
 }
 
-static void csv_work_rows(FILE *fp, const sus_exp_bench *b)
+static void csv_work_rows(FILE *fp, const sus_lab_bench *b)
 {
     char args[256];
     for (int i = 0; i < b->nseries; i++) {
-        const sus_exp_bench_series *s = b->S[i];
+        const sus_lab_bench_series *s = b->S[i];
         for (int j = 0; j < s->n; j++) {
             args[0] = '\0';
             if (s->ours)
-                sus_exp_bench_suslov_args(s, j, args, sizeof args);
+                sus_lab_bench_suslov_args(s, j, args, sizeof args);
             char eR[32] = ""; /* empty for a w-only row: no attitude */
             if (!s->w_only)
                 snprintf(eR, sizeof eR, "%.6g", s->err_R[j]);
@@ -50,7 +50,7 @@ static const char *whole_step_name(const sus_step_method *me, char *buf, size_t 
     return buf;
 }
 
-static void csv_step_rows(FILE *fp, const sus_exp_bench_costs *c)
+static void csv_step_rows(FILE *fp, const sus_lab_bench_costs *c)
 {
     char whole[96];
     for (int m = 0; m < c->n; m++) {
@@ -66,7 +66,7 @@ static void csv_step_rows(FILE *fp, const sus_exp_bench_costs *c)
             c->ns_exact_one_exp);
 }
 
-static void write_csv(FILE *fp, const sus_exp_bench *b)
+static void write_csv(FILE *fp, const sus_lab_bench *b)
 {
     /* the method field is quoted: peer names such as "GSL rk8pd (w,q)" hold a comma */
     fprintf(
@@ -77,7 +77,7 @@ static void write_csv(FILE *fp, const sus_exp_bench *b)
     csv_step_rows(fp, &b->cost);
     for (int i = 0; i < b->nlr; i++)
         fprintf(fp, "longrun,\"%s\",%s,w+R,,%g,,%.3g,%.3g,,,,,,\n", b->LR[i].name,
-                b->LR[i].ours ? "ours" : "peer", SUS_EXP_BENCH_T_LONG, b->LR[i].energy,
+                b->LR[i].ours ? "ours" : "peer", SUS_LAB_BENCH_T_LONG, b->LR[i].energy,
                 b->LR[i].orth);
 }
 
@@ -98,12 +98,12 @@ static void tex_ratio(FILE *fp, const char *name, const char *suffix, double r, 
 
 /* Two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict. The
  * w ratios are information (no target, no verdict). */
-static void tex_levels(FILE *fp, const sus_exp_bench *b)
+static void tex_levels(FILE *fp, const sus_lab_bench *b)
 {
     for (int l = 0; l < NLEVELS; l++) {
-        const sus_exp_bench_level vR = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_FULL, l),
-                                  vD = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_REDUCED, l),
-                                  vw = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_W_INFO, l);
+        const sus_lab_bench_level vR = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_FULL, l),
+                                  vD = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_REDUCED, l),
+                                  vw = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, l);
         tex_ratio(fp, "BenchRatioR", LVL[l], vR.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], pass_word(vR.pass));
         tex_ratio(fp, "BenchRatioRed", LVL[l], vD.ratio, 2);
@@ -111,27 +111,27 @@ static void tex_levels(FILE *fp, const sus_exp_bench *b)
         tex_ratio(fp, "BenchRatioW", LVL[l], vw.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", LVL[l], vR.target);
     }
-    fprintf(fp, "\\newcommand{\\BenchTargetRed}{%.2g}\n", SUS_EXP_BENCH_REDUCED_TARGET);
+    fprintf(fp, "\\newcommand{\\BenchTargetRed}{%.2g}\n", SUS_LAB_BENCH_REDUCED_TARGET);
 }
 
 /* The runs to T = 1e4 at equal error and to T = 1e6: the targets' ratios and verdicts. */
-static void tex_long(FILE *fp, const sus_exp_bench *b)
+static void tex_long(FILE *fp, const sus_lab_bench *b)
 {
-    const int k = sus_exp_bench_best_equal_error(b);
+    const int k = sus_lab_bench_best_equal_error(b);
     const double r = k < 0 ? 0.0 : b->EQ[k].peer_sec / b->EQ[k].sec,
-                 g = sus_exp_bench_growth_ratio(b);
+                 g = sus_lab_bench_growth_ratio(b);
     tex_ratio(fp, "BenchLongRatio", "", r, 1);
-    fprintf(fp, "\\newcommand{\\BenchPassLong}{%s}\n", pass_word(r >= SUS_EXP_BENCH_LONG_TARGET));
-    fprintf(fp, "\\newcommand{\\BenchLongTarget}{%g}\n", SUS_EXP_BENCH_LONG_TARGET);
+    fprintf(fp, "\\newcommand{\\BenchPassLong}{%s}\n", pass_word(r >= SUS_LAB_BENCH_LONG_TARGET));
+    fprintf(fp, "\\newcommand{\\BenchLongTarget}{%g}\n", SUS_LAB_BENCH_LONG_TARGET);
     fprintf(fp, "\\newcommand{\\BenchGrowthRatio}{%.2f}\n\\newcommand{\\BenchPassGrowth}{%s}\n", g,
-            pass_word(g <= SUS_EXP_BENCH_GROWTH_TARGET));
-    fprintf(fp, "\\newcommand{\\BenchGrowthTarget}{%g}\n", SUS_EXP_BENCH_GROWTH_TARGET);
+            pass_word(g <= SUS_LAB_BENCH_GROWTH_TARGET));
+    fprintf(fp, "\\newcommand{\\BenchGrowthTarget}{%g}\n", SUS_LAB_BENCH_GROWTH_TARGET);
 }
 
-static void write_tex(FILE *fp, const sus_exp_bench *b)
+static void write_tex(FILE *fp, const sus_lab_bench *b)
 {
-    const sus_exp_bench_costs *c = &b->cost;
-    const double speedup = sus_exp_bench_rk4_speedup(b);
+    const sus_lab_bench_costs *c = &b->cost;
+    const double speedup = sus_lab_bench_rk4_speedup(b);
     const int irk4 = sus_step_method_index_of(sus_step_rk4),
               imid = sus_step_method_index_of(sus_step_midpoint),
               ivar = sus_step_method_index_of(sus_step_variational);
@@ -145,7 +145,7 @@ static void write_tex(FILE *fp, const sus_exp_bench *b)
         c->ns_raw[irk4], c->ns_gsl_rk4, speedup, c->ns_raw[imid] / c->ns_raw[irk4],
         c->ns_raw[ivar] / c->ns_raw[irk4], c->ns_exact, c->newton[imid], c->newton[ivar]);
     fprintf(fp, "\\newcommand{\\BenchPassRkSpeedup}{%s}\n\\newcommand{\\BenchPassImplicit}{%s}\n",
-            pass_word(speedup >= 5), pass_word(sus_exp_bench_implicit_pass(b)));
+            pass_word(speedup >= 5), pass_word(sus_lab_bench_implicit_pass(b)));
     tex_levels(fp, b);
     tex_long(fp, b);
 }
@@ -153,22 +153,22 @@ static void write_tex(FILE *fp, const sus_exp_bench *b)
 /* ---- what_to_use.tsv: at each level the fastest of ours and of the peers, from their timed
  * runs, with the suslov arguments that reproduce ours ---- */
 
-static void write_what_to_use(FILE *fp, const sus_exp_bench *b)
+static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
 {
     char args[256];
     fprintf(fp, "quantity\tlevel\tours\tours_seconds\tpeer\tpeer_tol\tpeer_seconds\tratio\ttarget\t"
                 "verdict\tsuslov_args\n");
-    for (int c = 0; c < SUS_EXP_BENCH_NCOMP; c++)
+    for (int c = 0; c < SUS_LAB_BENCH_NCOMP; c++)
         for (int l = 0; l < NLEVELS; l++) {
-            const sus_exp_bench_level v =
-                sus_exp_bench_level_verdict(b, (sus_exp_bench_comparison)c, l);
+            const sus_lab_bench_level v =
+                sus_lab_bench_level_verdict(b, (sus_lab_bench_comparison)c, l);
             if (v.ours.series < 0)
                 continue;
-            const sus_exp_bench_series *os = b->S[v.ours.series];
-            const sus_exp_bench_series *ps = v.peer.series < 0 ? NULL : b->S[v.peer.series];
-            sus_exp_bench_suslov_args(os, v.ours.point, args, sizeof args);
+            const sus_lab_bench_series *os = b->S[v.ours.series];
+            const sus_lab_bench_series *ps = v.peer.series < 0 ? NULL : b->S[v.peer.series];
+            sus_lab_bench_suslov_args(os, v.ours.point, args, sizeof args);
             fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.3g\t%g\t%s\t%s\n",
-                    sus_exp_bench_comparison_name((sus_exp_bench_comparison)c), LEVELS[l],
+                    sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l],
                     os->name, v.ours.sec, ps ? ps->name : "none reaches it",
                     ps ? ps->param[v.peer.point] : NAN, ps ? v.peer.sec : NAN, v.ratio, v.target,
                     isnan(v.target) ? "info" : pass_word(v.pass), args);
@@ -177,48 +177,48 @@ static void write_what_to_use(FILE *fp, const sus_exp_bench *b)
 
 /* ---- longruns.tsv: the runs to T = 1e4 at equal error, and to T = 1e6 ---- */
 
-static void long_row(FILE *fp, const sus_exp_bench *b, const sus_exp_bench_equal_error *e,
+static void long_row(FILE *fp, const sus_lab_bench *b, const sus_lab_bench_equal_error *e,
                      int best)
 {
     char args[256], target[16] = ""; /* the best row's target; the others are information */
-    const sus_exp_bench_series *s = b->S[e->series];
+    const sus_lab_bench_series *s = b->S[e->series];
     const double r = e->peer_sec / e->sec;
-    sus_exp_bench_suslov_args_to(s, e->point, SUS_EXP_BENCH_T_LONG, args, sizeof args);
+    sus_lab_bench_suslov_args_to(s, e->point, SUS_LAB_BENCH_T_LONG, args, sizeof args);
     if (best)
-        snprintf(target, sizeof target, "%g", SUS_EXP_BENCH_LONG_TARGET);
+        snprintf(target, sizeof target, "%g", SUS_LAB_BENCH_LONG_TARGET);
     fprintf(fp, "equal-error\t%s\t%s\t%.4g\t%g\t%.4g\t%.3g\tGSL rk8pd (w,q) driver h0 0.001"
                 "\t%.2g\t%.4g\t%.3g\t%.3g\t%s\t%s\t%.2g\t%.4g\t%.3g\t%.3g\t%s\n",
-            s->name, sus_exp_bench_param_name(s), s->param[e->point], SUS_EXP_BENCH_T_LONG, e->sec,
+            s->name, sus_lab_bench_param_name(s), s->param[e->point], SUS_LAB_BENCH_T_LONG, e->sec,
             e->err, e->peer_tol, e->peer_sec, e->peer_err, r,
-            target, best ? pass_word(r >= SUS_EXP_BENCH_LONG_TARGET) : "info",
+            target, best ? pass_word(r >= SUS_LAB_BENCH_LONG_TARGET) : "info",
             e->red_tol, e->red_sec, e->red_err, e->red_sec / e->sec, args);
 }
 
-static void write_long_runs(FILE *fp, const sus_exp_bench *b)
+static void write_long_runs(FILE *fp, const sus_lab_bench *b)
 {
     char args[256];
     fprintf(fp, "row\tours\tparameter_name\tparameter\tT\tseconds\tattitude_error\tpeer\tpeer_tol\t"
                 "peer_seconds\tpeer_error\tratio\ttarget\tverdict\treduced_tol\treduced_seconds\t"
                 "reduced_error\treduced_ratio\tsuslov_args\n");
-    const int best = sus_exp_bench_best_equal_error(b);
+    const int best = sus_lab_bench_best_equal_error(b);
     for (int k = 0; k < b->neq; k++)
         long_row(fp, b, &b->EQ[k], k == best);
-    const sus_exp_bench_growth *g = &b->growth;
+    const sus_lab_bench_growth *g = &b->growth;
     if (g->series < 0)
         return;
-    const sus_exp_bench_series *s = b->S[g->series];
-    const double r = sus_exp_bench_growth_ratio(b);
-    sus_exp_bench_suslov_args_to(s, g->point, SUS_EXP_BENCH_T_GROWTH, args, sizeof args);
+    const sus_lab_bench_series *s = b->S[g->series];
+    const double r = sus_lab_bench_growth_ratio(b);
+    sus_lab_bench_suslov_args_to(s, g->point, SUS_LAB_BENCH_T_GROWTH, args, sizeof args);
     fprintf(fp, "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run to T = %g\t\t%.4g\t\t%.3g\t%g\t%s"
                 "\t\t\t\t\t%s\n",
-            s->name, sus_exp_bench_param_name(s), s->param[g->point], SUS_EXP_BENCH_T_GROWTH,
-            g->sec, SUS_EXP_BENCH_T_LONG, g->sec_long, r, SUS_EXP_BENCH_GROWTH_TARGET,
-            pass_word(r <= SUS_EXP_BENCH_GROWTH_TARGET), args);
+            s->name, sus_lab_bench_param_name(s), s->param[g->point], SUS_LAB_BENCH_T_GROWTH,
+            g->sec, SUS_LAB_BENCH_T_LONG, g->sec_long, r, SUS_LAB_BENCH_GROWTH_TARGET,
+            pass_word(r <= SUS_LAB_BENCH_GROWTH_TARGET), args);
 }
 
 /* DIR/NAME.EXT written by write(fp, b), all or nothing. */
 static int write_file(const char *dir, const char *name, const char *ext,
-                      void (*write)(FILE *, const sus_exp_bench *), const sus_exp_bench *b)
+                      void (*write)(FILE *, const sus_lab_bench *), const sus_lab_bench *b)
 {
     char err[256], path[4096];
     sus_sys_atomic_file af;
@@ -235,7 +235,7 @@ static int write_file(const char *dir, const char *name, const char *ext,
     return 0;
 }
 
-int sus_plot_bench_tables(const sus_exp_bench *b, const char *datadir)
+int sus_plot_bench_tables(const sus_lab_bench *b, const char *datadir)
 {
     if (write_file(datadir, "bench", "csv", write_csv, b) != 0 ||
         write_file(datadir, "bench", "tex", write_tex, b) != 0 ||

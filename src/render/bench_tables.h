@@ -11,6 +11,6 @@
 
 /* DATADIR/bench.csv, bench.tex, what_to_use.tsv and longruns.tsv. Returns 0, or -1 with a
  * message on stderr. */
-int sus_plot_bench_tables(const sus_exp_bench *b, const char *datadir);
+int sus_plot_bench_tables(const sus_lab_bench *b, const char *datadir);
 
 #endif

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NJ SUS_EXP_CONV_NJ
+#define NJ SUS_LAB_CONV_NJ
 static const double TK[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define T_GLOBAL 10.0
 /* Three rows of panels at the page's figure scale; the caption says what is local and global. */
@@ -35,7 +35,7 @@ static sus_plot_style method_style(int m, int dashed, int with_label)
 enum { LOC_W, GLOB_W, LOC_SO3, GLOB_SO3, LOC_LAMBDA, GLOB_LAMBDA };
 static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
 {
-    const sus_exp_conv_method *c = &f->c.m[m];
+    const sus_lab_conv_method *c = &f->c.m[m];
     switch (what) {
     case LOC_W: return c->loc_w;
     case GLOB_W: return c->glob_w;
@@ -49,8 +49,8 @@ static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
 /* The least-squares slope of one curve over the ledger's window, as the legend prints it. */
 static void slope_text(const double *eps, const double *err, int nj, double size, char *out, size_t len)
 {
-    sus_exp_order_fit fit;
-    if (sus_exp_fit_order(eps, err, nj, SUS_EXP_FIT_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * size, &fit) != 0)
+    sus_lab_order_fit fit;
+    if (sus_lab_fit_order(eps, err, nj, SUS_LAB_FIT_EPS_MAX, SUS_LAB_FIT_FLOOR_REL * size, &fit) != 0)
         snprintf(out, len, "none");
     else
         snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
@@ -197,7 +197,7 @@ static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
     char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (labels && leg) {
-        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_EXP_SIZE_R, 1, labels, leg);
+        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_LAB_SIZE_R, 1, labels, leg);
         if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
             sus_plot_legend_packed(cr, 64.0, 0.0, leg + n - 2, 2, 2);
         else
@@ -215,17 +215,17 @@ static void draw(cairo_t *cr, void *vctx)
     panel(
         cr, 0, f, LOC_W,
         "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(a)", SUS_EXP_SIZE_W);
-    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", SUS_EXP_SIZE_W);
+        "(a)", SUS_LAB_SIZE_W);
+    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", SUS_LAB_SIZE_W);
     panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)",
-          "(c)", SUS_EXP_SIZE_R);
-    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", SUS_EXP_SIZE_R);
+          "(c)", SUS_LAB_SIZE_R);
+    panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", SUS_LAB_SIZE_R);
     panel(
         cr, 4, f, LOC_LAMBDA,
         "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(e)", SUS_EXP_SIZE_LAMBDA);
+        "(e)", SUS_LAB_SIZE_LAMBDA);
     panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)",
-          SUS_EXP_SIZE_LAMBDA);
+          SUS_LAB_SIZE_LAMBDA);
 }
 
 /* DATADIR/NAME.csv: eps and, per selected method, its error curves (w, lambda, and SO(3) per
@@ -247,7 +247,7 @@ static int write_data(const sus_plot_conv_fig *f, const char *datadir)
         if (!f->spec->select(sus_step_method_get(k)))
             continue;
         const char *name = sus_step_method_get(k)->type->name;
-        const sus_exp_conv_method *c = &f->c.m[k];
+        const sus_lab_conv_method *c = &f->c.m[k];
         cols[nc++] = c->loc_w;
         cols[nc++] = c->loc_lambda;
         len += (size_t)sprintf(header + len, ",local_w_%s,local_lambda_%s", name, name);
@@ -278,7 +278,7 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     if (setup != 0)
         return setup;
     sus_plot_conv_fig *f = malloc(sizeof *f);
-    if (!f || sus_exp_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
+    if (!f || sus_lab_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
         return 1;
     f->spec = spec;
     for (f->j0 = 0; f->j0 < NJ && f->c.eps[f->j0] > spec->eps_plot_max; f->j0++)

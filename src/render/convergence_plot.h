@@ -10,7 +10,7 @@
 typedef struct sus_plot_conv_figure_spec sus_plot_conv_figure_spec;
 
 typedef struct {
-    sus_exp_convergence c;
+    sus_lab_convergence c;
     const sus_plot_conv_figure_spec *spec;
     int j0;         /* first sweep point drawn: eps[j0] <= spec->eps_plot_max */
     double o0max;   /* max |O_0| over the t_k: the variational multiplier's plateau */

@@ -15,6 +15,6 @@ int sus_plot_fig_setup_paper(int argc, const char *name, sus_model *m, sus_exact
  * integrator into var, N steps of eps with the Cayley reconstruction, a row every `every` steps.
  * Returns 0, or the exit status after a one-line message: 1 out of memory, 3 a failed step. */
 int sus_plot_fig_run_pair(const char *name, const sus_model *m, double eps, long N, int every,
-                          sus_exp_series *mid, sus_exp_series *var);
+                          sus_lab_series *mid, sus_lab_series *var);
 
 #endif

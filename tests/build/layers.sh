@@ -5,7 +5,7 @@
 # upward include also fails to build; this check says which line is wrong, and finds cycles,
 # which the compiler's include guards hide. Last line "layers: N passed, N failed".
 set -u
-LAYERS="util core methods exp render prog"
+LAYERS="util core methods lab render prog"
 cd "$(dirname "$0")/../.." || exit 2
 awk -v layers="$LAYERS" '
 BEGIN {

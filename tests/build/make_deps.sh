@@ -39,7 +39,7 @@ else
         if [ "$got" = "$want" ]; then ok; else bad "touch $file redraws '$got', expected '$want'"; fi
     done <<'EOF'
 src/core/model.h|ALL
-src/exp/midpoint_sweeps.c|figure_fig2_energy
+src/lab/midpoint_sweeps.c|figure_fig2_energy
 src/render/scene.c|animation
 data/animation.cfg|animation
 tests/ledger/claims.c|

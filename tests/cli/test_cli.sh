@@ -195,7 +195,7 @@ fi
 # and --output FILE is all or nothing: a new FILE is not created, an existing one is left as it
 # was (even with --no-header, where nothing could mark it incomplete), in both temporary modes.
 # The 2-stage Gauss step from W0 meets a fold of its branch (no root beyond it) at h = eps k ~ 3.6
-# (the stability map, src/exp/stability.h): eps = 1000 is far beyond.
+# (the stability map, src/lab/stability.h): eps = 1000 is far beyond.
 W0=0.27619224,-0.63956748
 "$S" --no-header --method gauss4 --eps 1000 --steps 10 --omega0 $W0 >"$T/fail.csv" 2>"$T/err"; rc=$?
 check "solver failure: exit 3 and the message names step 1, t = 1000 and the residual ($(cat "$T/err"))" \
@@ -219,7 +219,7 @@ done
 
 # a late solver failure, as a property (no step number pinned), on stdout: from the stability
 # map's start at 290.6 degrees the 2-stage Gauss step's branch meets a fold, the later the larger
-# eps (the map, src/exp/stability.h), so runs at eps = 700..1700 fail at some step S. Each failure
+# eps (the map, src/lab/stability.h), so runs at eps = 700..1700 fail at some step S. Each failure
 # must exit 3 with one line naming "gauss4 step S (t = S eps)", and the file must hold every row
 # before S, complete: k = 0..S-1 with --every 1; with --every 7 the rows 0, 7, 14, ... below S
 # and the last good step S-1.

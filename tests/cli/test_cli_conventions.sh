@@ -147,7 +147,7 @@ check "a byte that is not UTF-8: escaped as \\xff in the header and the error li
     sh -c "grep -q \"^# command: .*--output \\\$'.*x\\\\\\\\xffy'\\\$\" '$T/$(printf 'x\377y')' && grep -qF 'x\\xffy' '$T/err' && iconv -f UTF-8 -t UTF-8 '$T/err' >/dev/null"
 
 # rows left on stdout after exit 3 say so in a last comment line (not with --no-header: bare CSV)
-# (the 2-stage Gauss step from this w0 meets a fold of its branch at h ~ 3.6: src/exp/stability.h)
+# (the 2-stage Gauss step from this w0 meets a fold of its branch at h ~ 3.6: src/lab/stability.h)
 "$S" --method gauss4 --eps 1000 --steps 10 --omega0 0.27619224,-0.63956748 >"$T/fail.csv" 2>/dev/null; rc=$?
 check "after exit 3 the last line of stdout is '# incomplete: ...' naming the failure" \
     sh -c "test $rc = 3 && tail -1 '$T/fail.csv' | grep -q '^# incomplete: .*gauss4 step 1 (t = 1000) failed'"

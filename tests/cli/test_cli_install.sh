@@ -28,7 +28,7 @@ inst=$(cd "$P/include/suslov" && ls | tr '\n' ' ')
 check "include/suslov holds the public headers only ($inst)" \
     test "$inst" = "driver.h exact.h exact_run.h model.h reconstruct.h registry.h stepper.h suslov.h "
 nolink=""
-for h in "$P"/include/suslov/*.h src/util/*.h src/core/*.h src/methods/*.h src/exp/*.h; do
+for h in "$P"/include/suslov/*.h src/util/*.h src/core/*.h src/methods/*.h src/lab/*.h; do
     case $h in */suslov.h) continue ;; esac # it only includes the others
     grep -q 'extern "C"' "$h" || nolink="$nolink $h"
 done

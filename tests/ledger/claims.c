@@ -117,7 +117,7 @@ static void prepare(void)
     ledger_number("EnergyZero", sus_energy(&P.m, SUS_PAPER_OMEGA0));
     ledger_number("SteadyOmegaOne", winf[0]);
     ledger_number("SteadyOmegaTwo", winf[1]);
-    if (sus_exp_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
+    if (sus_lab_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
         ledger_die("the convergence sweep");
     for (int k = 0; k < BODIES_COUNT; k++)
         claims_body_get(k);
@@ -191,7 +191,7 @@ int main(int argc, char **argv)
     prepare();
     ledger_run_tasks(tasks, section_tasks(tasks, 512), jobs);
     reference_claims();
-    sus_exp_convergence_free(&P.conv);
+    sus_lab_convergence_free(&P.conv);
     const int failed = ledger_finish(tsv_path);
     write_methods(tsv_path);
     return failed != 0;

@@ -251,8 +251,8 @@ static void body_errors(const tol_method *tm, const claims_body *d, tol_summary 
         }
     }
     for (int q = 0; q < 2; q++) {
-        sus_exp_order_fit fit = {.slope = NAN};
-        if (sus_exp_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0) fit.slope = NAN;
+        sus_lab_order_fit fit = {.slope = NAN};
+        if (sus_lab_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0) fit.slope = NAN;
         const double rate = q == 1 ? d->size_w / d->ex.k : INFINITY; /* w: only its upper bound */
         summary_add(&s[q], b->name, rate, fit.slope, ratio[q], per_step[q], n[q]);
         if (rate < RATE_RATIO_MIN)

@@ -88,7 +88,7 @@ double claims_body_size(const claims_body *d, int q)
  *      lambda_min) times the implicit residual's terms.
  *   R: 1 (the entries of a rotation) plus eps times w's (through the attitude step's angle). */
 static double yardstick(const claims_body *d, const claims_rounding *k, int q,
-                        const sus_exp_local_ref *ref)
+                        const sus_lab_local_ref *ref)
 {
     const sus_model *m = &d->m;
     const double (*I)[3] = m->I, *w = ref->w_exact, eps = ref->eps;
@@ -124,7 +124,7 @@ void claims_body_floors(const claims_body *d, const claims_rounding *k, int q,
         for (int t = 0; t < CLAIMS_NTK; t++)
             y = fmax(y, yardstick(d, k, q, &d->ref[j][t]));
         floor[j] =
-            fmax(SUS_EXP_FIT_FLOOR_REL * claims_body_size(d, q), 100.0 * SUS_U * k->substeps * y);
+            fmax(SUS_LAB_FIT_FLOOR_REL * claims_body_size(d, q), 100.0 * SUS_U * k->substeps * y);
     }
 }
 
@@ -139,7 +139,7 @@ static void body_init(int k, claims_body *d)
     for (int j = 0; j < CLAIMS_NE; j++) {
         d->eps[j] = EPS_K_MAX / d->ex.k * exp2(-0.25 * j);
         for (int t = 0; t < CLAIMS_NTK; t++)
-            sus_exp_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
+            sus_lab_local_ref_init(&d->ref[j][t], &d->ex, TK_RATE[t] / d->ex.k, d->eps[j]);
     }
     body_sizes(d);
 }

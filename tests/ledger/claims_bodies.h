@@ -23,7 +23,7 @@ typedef struct {
     body b;
     sus_model m;
     sus_exact ex;                                 /* refers to m: never copied */
-    sus_exp_local_ref ref[CLAIMS_NE][CLAIMS_NTK]; /* ref[j][t]: eps[j] from start t */
+    sus_lab_local_ref ref[CLAIMS_NE][CLAIMS_NTK]; /* ref[j][t]: eps[j] from start t */
     double eps[CLAIMS_NE];
     double size_w, size_lambda;                   /* |w| and |lambda| along the motion */
 } claims_body;

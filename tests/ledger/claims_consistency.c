@@ -23,11 +23,11 @@
 
 #define NJ 11 /* the paper's window: eps = 2^-j, j = 0 .. 10, for the experiments in this file */
 
-#define FIT_EPS_MAX SUS_EXP_FIT_EPS_MAX
-#define FIT_FLOOR_REL SUS_EXP_FIT_FLOOR_REL
-#define SIZE_W SUS_EXP_SIZE_W
-#define SIZE_LAMBDA SUS_EXP_SIZE_LAMBDA
-#define SIZE_R SUS_EXP_SIZE_R
+#define FIT_EPS_MAX SUS_LAB_FIT_EPS_MAX
+#define FIT_FLOOR_REL SUS_LAB_FIT_FLOOR_REL
+#define SIZE_W SUS_LAB_SIZE_W
+#define SIZE_LAMBDA SUS_LAB_SIZE_LAMBDA
+#define SIZE_R SUS_LAB_SIZE_R
 /* An order is an integer; a tenth of the gap between consecutive orders tells p from p +- 1
  * unambiguously and leaves room for the O(k eps) bend over the window. */
 #define ORDER_TOL 0.1
@@ -45,11 +45,11 @@ static double fit_on(const double *eps, const double *err, int n, int local, dou
                      double eps_max)
 {
     const double floor = FIT_FLOOR_REL * size;
-    sus_exp_order_fit f;
+    sus_lab_order_fit f;
     for (int j = 0; j < n; j++)
         if (size == SIZE_R && eps[j] <= eps_max && err[j] > floor)
             ledger_keep_min(local ? CLAIMS_MIN_SO3_LOCAL : CLAIMS_MIN_SO3_GLOBAL, err[j]);
-    if (sus_exp_fit_order(eps, err, n, eps_max, floor, &f) != 0)
+    if (sus_lab_fit_order(eps, err, n, eps_max, floor, &f) != 0)
         return NAN;
     return f.slope - (local ? 1.0 : 0.0);
 }
@@ -92,13 +92,13 @@ static const expected_order *expected(const sus_stepper_type *st)
 static double min_nan(double a, double b) { return isnan(a) || isnan(b) ? NAN : fmin(a, b); }
 
 /* p and s of one of the paper's methods; returns p. */
-static double reduced_orders(const sus_step_method *me, const sus_exp_convergence *conv, int s,
+static double reduced_orders(const sus_step_method *me, const sus_lab_convergence *conv, int s,
                              const expected_order *eo)
 {
     char id[64], what[256];
     const sus_stepper_type *st = me->type;
-    const sus_exp_conv_method *cm = &conv->m[s];
-    const double p = fit_on(conv->eps, cm->loc_w, SUS_EXP_CONV_NJ, 1, SIZE_W, FIT_EPS_MAX);
+    const sus_lab_conv_method *cm = &conv->m[s];
+    const double p = fit_on(conv->eps, cm->loc_w, SUS_LAB_CONV_NJ, 1, SIZE_W, FIT_EPS_MAX);
     snprintf(id, sizeof id, "reduced-order-%s", st->name);
     snprintf(what, sizeof what,
              "$p$: local slope of $|\\omega(t_k+\\varepsilon) - \\omega^{k+1}|$ minus 1, %s",
@@ -111,7 +111,7 @@ static double reduced_orders(const sus_step_method *me, const sus_exp_convergenc
                  "minus 1, %s",
                  st->name);
         order_line(id, eo->ref, what,
-                   fit_on(conv->eps, cm->loc_lambda, SUS_EXP_CONV_NJ, 1, SIZE_LAMBDA, FIT_EPS_MAX),
+                   fit_on(conv->eps, cm->loc_lambda, SUS_LAB_CONV_NJ, 1, SIZE_LAMBDA, FIT_EPS_MAX),
                    eo->s, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
     }
     return p;
@@ -124,7 +124,7 @@ void consistency_local_claims(const claims_paper *pp)
     for (int s = 0; s < pp->conv.nmethod; s++) {
         const sus_step_method *me = sus_step_method_get(s);
         const sus_stepper_type *st = me->type;
-        const sus_exp_conv_method *cm = &pp->conv.m[s];
+        const sus_lab_conv_method *cm = &pp->conv.m[s];
         const expected_order *eo = expected(st);
         if (!eo || !me->paper_ref)
             continue; /* missing: recorded as a failure; an extension: claims_methods.c */
@@ -133,7 +133,7 @@ void consistency_local_claims(const claims_paper *pp)
             /* Proposition 5.1: the unreduced order is min(r, l), r from (MetMat) on SO(3), l = p.
              */
             const double rr =
-                fit_on(pp->conv.eps, cm->loc_so3[r], SUS_EXP_CONV_NJ, 1, SIZE_R, FIT_EPS_MAX);
+                fit_on(pp->conv.eps, cm->loc_so3[r], SUS_LAB_CONV_NJ, 1, SIZE_R, FIT_EPS_MAX);
             const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
             snprintf(id, sizeof id, "unreduced-order-%s-%s", SUS_RECON_NAMES[r], st->name);
             snprintf(what, sizeof what,
@@ -240,7 +240,7 @@ void consistency_global_claims(const claims_paper *pp)
     for (int s = 0; s < pp->conv.nmethod; s++) {
         const sus_step_method *me = sus_step_method_get(s);
         const sus_stepper_type *st = me->type;
-        const sus_exp_conv_method *cm = &pp->conv.m[s];
+        const sus_lab_conv_method *cm = &pp->conv.m[s];
         const expected_order *eo = expected_order_of(st->name);
         if (!eo || !me->paper_ref)
             continue; /* local_claims has recorded the failure; an extension: claims_methods.c */
@@ -248,7 +248,7 @@ void consistency_global_claims(const claims_paper *pp)
         snprintf(what, sizeof what, "slope of the global error $|\\omega(10) - \\omega_N|$, %s",
                  st->name);
         order_line(id, eo->ref, what,
-                   fit_on(pp->conv.glob_eps, cm->glob_w, SUS_EXP_CONV_NJ, 0, SIZE_W, FIT_EPS_MAX),
+                   fit_on(pp->conv.glob_eps, cm->glob_w, SUS_LAB_CONV_NJ, 0, SIZE_W, FIT_EPS_MAX),
                    eo->p, me->paper_ref ? LEDGER_REPRODUCED : LEDGER_EXTENSION);
         for (int r = 0; r < SUS_RECON_COUNT; r++) {
             snprintf(id, sizeof id, "global-so3-order-%s-%s", SUS_RECON_NAMES[r], st->name);
@@ -257,7 +257,7 @@ void consistency_global_claims(const claims_paper *pp)
                      "reconstruction %s, %s",
                      SUS_RECON_NAMES[r], st->name);
             order_line(id, "\\PaperRefOr{TeoL}, extension", what,
-                       fit_on(pp->conv.glob_eps, cm->glob_so3[r], SUS_EXP_CONV_NJ, 0, SIZE_R,
+                       fit_on(pp->conv.glob_eps, cm->glob_so3[r], SUS_LAB_CONV_NJ, 0, SIZE_R,
                               FIT_EPS_MAX),
                        eo->so3[r], LEDGER_EXTENSION);
         }
@@ -280,8 +280,8 @@ static void unreduced_errors(const claims_paper *p, sus_unreduced *u, double ev[
         sus_exact_omega(&p->ex, PAPER_TK[t], wk);
         sus_so3_hat(wk, W);
         for (int j = 0; j < NJ; j++) {
-            sus_exp_local_ref ref;
-            sus_exp_local_ref_init(&ref, &p->ex, PAPER_TK[t], eps_of(j));
+            sus_lab_local_ref ref;
+            sus_lab_local_ref_init(&ref, &p->ex, PAPER_TK[t], eps_of(j));
             double R[3][3], V[3][3], Rx[3][3], Vx[3][3], We[3][3], xi[3], D[3][3];
             sus_mat3_copy(R, Rk);
             sus_mat3_mul(V, Rk, W);

@@ -241,9 +241,9 @@ static void subspace_claims(void) {
         a.skew = 1;
         skew = fmax(skew, fabs(root_xi3(&a)));
     }
-    sus_exp_order_fit fit;
+    sus_lab_order_fit fit;
     const double slope =
-        sus_exp_fit_order(eps, viol, NJ, SUS_EXP_FIT_EPS_MAX, 1e-13, &fit) == 0 ? fit.slope : NAN;
+        sus_lab_fit_order(eps, viol, NJ, SUS_LAB_FIT_EPS_MAX, 1e-13, &fit) == 0 ? fit.slope : NAN;
     ledger_number("SecFiveFourViolationEpsQuarter", viol[2]);
     /* a violation a million times round-off at eps = 1/4 cannot be a rounding artefact */
     ledger_add_bound("sec54-not-preserved", "\\PaperRefOr{dreps}",

@@ -88,9 +88,9 @@ static void distfinal_start(const sus_exact *ex, double tk, double scale, distfi
 static double slope_of(const double *err)
 {
     double e[NJ];
-    sus_exp_order_fit f;
+    sus_lab_order_fit f;
     for (int j = 0; j < NJ; j++) e[j] = ldexp(1.0, -j);
-    return sus_exp_fit_order(e, err, NJ, DF_EPS_MAX, SUS_EXP_FIT_FLOOR_REL * SUS_EXP_SIZE_R, &f) ==
+    return sus_lab_fit_order(e, err, NJ, DF_EPS_MAX, SUS_LAB_FIT_FLOOR_REL * SUS_LAB_SIZE_R, &f) ==
                    0
                ? f.slope
                : NAN;

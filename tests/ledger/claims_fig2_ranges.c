@@ -47,12 +47,12 @@ static double stepper_loss(const sus_model *m, const sus_stepper_type *st, doubl
     return sus_energy(m, w0) - sus_energy(m, w);
 }
 
-/* The same for n fixed-point sweeps (src/exp/midpoint_sweeps.c), without storing the energies. */
+/* The same for n fixed-point sweeps (src/lab/midpoint_sweeps.c), without storing the energies. */
 static double sweeps_loss(const sus_model *m, int n, double eps, long N, const double w0[2])
 {
     double w[2] = {w0[0], w0[1]}, x[2];
     for (long k = 0; k < N; k++) {
-        sus_exp_midpoint_sweeps(m, eps, n, w, x);
+        sus_lab_midpoint_sweeps(m, eps, n, w, x);
         if (!isfinite(x[0]) || !isfinite(x[1]))
             return NAN;
         w[0] = x[0];
@@ -91,10 +91,10 @@ static void energy_range_claims(const sus_model *m)
     double var_loss[NEPS];
     long steps[NEPS];
     for (int j = 0; j < NEPS; j++) {
-        steps[j] = lround(SUS_EXP_FIG2_T_END / grid_eps(j));
+        steps[j] = lround(SUS_LAB_FIG2_T_END / grid_eps(j));
         var_loss[j] = stepper_loss(m, sus_step_variational, grid_eps(j), steps[j], w0);
     }
-    for (int reading = -1; reading <= SUS_EXP_FIG2_NSWEEP; reading++) {
+    for (int reading = -1; reading <= SUS_LAB_FIG2_NSWEEP; reading++) {
         double upto = 0.0, first_faster = INFINITY;
         int faster = 0, failed = 0, ended = 0;
         for (int j = 0; j < NEPS; j++) {
@@ -120,7 +120,7 @@ static void energy_range_claims(const sus_model *m)
             "reading loses no more energy over $[0, 200]$ than the variational one; more at %d of "
             "21 $\\varepsilon$%s, failed at %d",
             name, faster, from, failed);
-        ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_EXP_FIG2_EPS, 1,
+        ledger_add_bound(id, REF_FIG2D "; reading, extension", q, upto, SUS_LAB_FIG2_EPS, 1,
                          LEDGER_EXTENSION);
     }
 }

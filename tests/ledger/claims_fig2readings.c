@@ -103,7 +103,7 @@ void fig2readings_claims(const sus_model *m)
     double row[9], col[9], sym[9];
     for (int i = 0; i < 9; i++)
         row[i] = m->I[i / 3][i % 3];
-    sus_exp_inertia_column_swap(row, col);
+    sus_lab_inertia_column_swap(row, col);
     for (int i = 0; i < 9; i++)
         sym[i] = 0.5 * (m->I[i / 3][i % 3] + m->I[i % 3][i / 3]);
     reading("Row", "row", row);

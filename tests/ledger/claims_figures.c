@@ -19,15 +19,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define FIELD(f) offsetof(sus_exp_series, f)
+#define FIELD(f) offsetof(sus_lab_series, f)
 
-static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *st, double eps,
+static void run(sus_lab_series *s, const sus_model *m, const sus_stepper_type *st, double eps,
                 long N, long every)
 {
     sus_run_report rep;
     const sus_run_config cfg = {m, st, SUS_RECON_CAYLEY, eps, N, every};
-    if (sus_exp_series_init(s, N, every) != 0 ||
-        sus_exp_series_run(s, &cfg, SUS_PAPER_OMEGA0, &rep) != 0) {
+    if (sus_lab_series_init(s, N, every) != 0 ||
+        sus_lab_series_run(s, &cfg, SUS_PAPER_OMEGA0, &rep) != 0) {
         fprintf(stderr, "claims: %s run at eps = %g failed\n", st->name, eps);
         exit(2);
     }
@@ -36,7 +36,7 @@ static void run(sus_exp_series *s, const sus_model *m, const sus_stepper_type *s
 /* Is the series the run it claims to be? N/every + 1 rows (the last one at t = N eps), row 0 at
  * w(0), the energy column E(w_k) of its own w, and w_k nowhere zero (the solution tends to a
  * steady rotation of the initial energy, |w| ~ 0.64). A zeroed or truncated series fails. */
-static int series_is_run(const sus_exp_series *s, const sus_model *m, double eps, long N,
+static int series_is_run(const sus_lab_series *s, const sus_model *m, double eps, long N,
                          long every)
 {
     if (s->n != (size_t)(N / every + 1) || s->t[0] != 0.0 ||
@@ -83,7 +83,7 @@ static const sus_stepper_type violating_type = {
  * same products, which another FMA contraction could change by a few u |w| ~ 1e-16); NaN
  * otherwise, so the claim fails. */
 typedef struct {
-    const sus_exp_series *s;
+    const sus_lab_series *s;
     size_t i;
     double worst, mismatch;
 } recheck_ctx;
@@ -101,7 +101,7 @@ static int recheck(void *vctx, const sus_row *row)
     return 0;
 }
 
-static double constraint_of(const sus_exp_series *s, const sus_model *m, const sus_stepper_type *st,
+static double constraint_of(const sus_lab_series *s, const sus_model *m, const sus_stepper_type *st,
                             double eps, long N, long every)
 {
     if (!series_is_run(s, m, eps, N, every))
@@ -112,15 +112,15 @@ static double constraint_of(const sus_exp_series *s, const sus_model *m, const s
     if (sus_run(&cfg, SUS_PAPER_OMEGA0, recheck, &c, &rep) != 0 || c.i != s->n ||
         !(c.mismatch <= 1e-15))
         return NAN;
-    return fmax(c.worst, fmax(sus_exp_series_maxdrift(s, FIELD(w3)) + fabs(s->w3[0]),
-                              sus_exp_series_maxdrift(s, FIELD(mu)) + fabs(s->mu[0])));
+    return fmax(c.worst, fmax(sus_lab_series_maxdrift(s, FIELD(w3)) + fabs(s->w3[0]),
+                              sus_lab_series_maxdrift(s, FIELD(mu)) + fabs(s->mu[0])));
 }
 
 /* The constraint claim of a figure panel (e): both runs, each checked as above, plus the
  * positive control on the same eps and steps: w3 = 1e-9 injected each step must be measured
  * as 1e-9 (vee(R^T R w^)_3 = w3 (1 + O(|R^T R - I|)), so within 10%). */
 static void constraint_claims(const char *fig, const char *ref, const sus_model *m,
-                              const sus_exp_series *mid, const sus_exp_series *var, double eps,
+                              const sus_lab_series *mid, const sus_lab_series *var, double eps,
                               long N, long every)
 {
     char id[64], what[400];
@@ -135,14 +135,14 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
              eps, N);
     /* w3 is imposed; the unreduced constraint costs a few u |w| (see constraint-preserved-*) */
     ledger_add(id, ref, what, c, 0.0, 1e-14, LEDGER_REPRODUCED);
-    sus_exp_series v;
+    sus_lab_series v;
     sus_run_report rep;
     const sus_run_config cfg = {m, &violating_type, SUS_RECON_CAYLEY, eps, N, every};
     double seen = NAN;
-    if (sus_exp_series_init(&v, N, every) == 0 &&
-        sus_exp_series_run(&v, &cfg, SUS_PAPER_OMEGA0, &rep) == 0) {
+    if (sus_lab_series_init(&v, N, every) == 0 &&
+        sus_lab_series_run(&v, &cfg, SUS_PAPER_OMEGA0, &rep) == 0) {
         seen = constraint_of(&v, m, &violating_type, eps, N, every);
-        sus_exp_series_free(&v);
+        sus_lab_series_free(&v);
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
     snprintf(what, sizeof what,
@@ -154,13 +154,13 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
 
 static void figure1(const sus_model *m, const sus_exact *ex)
 {
-    sus_exp_series mid, var;
-    const double eps = SUS_EXP_FIG1_EPS;
-    const long N = sus_exp_experiment_steps(SUS_EXP_FIG1_T_END, eps), every = SUS_EXP_FIG1_EVERY;
+    sus_lab_series mid, var;
+    const double eps = SUS_LAB_FIG1_EPS;
+    const long N = sus_lab_experiment_steps(SUS_LAB_FIG1_T_END, eps), every = SUS_LAB_FIG1_EVERY;
     run(&mid, m, sus_step_midpoint, eps, N, every);
     run(&var, m, sus_step_variational, eps, N, every);
-    const double dw = fmax(sus_exp_series_maxdiff(&mid, &var, FIELD(w1)),
-                           sus_exp_series_maxdiff(&mid, &var, FIELD(w2)));
+    const double dw = fmax(sus_lab_series_maxdiff(&mid, &var, FIELD(w1)),
+                           sus_lab_series_maxdiff(&mid, &var, FIELD(w2)));
     /* A difference invisible in panels (a)-(b): the smallest plotted range (w2: 0.50 .. 0.68)
      * spans ~400 pixels at 150 dpi, so 1e-4 is a fraction of a pixel. */
     ledger_add(
@@ -200,14 +200,14 @@ static void figure1(const sus_model *m, const sus_exact *ex)
     ledger_add("fig1-energy-midpoint", "\\PaperRefOr{Fig1}, panel (f)",
                "$\\max_k |E_k - E_0|$ of the midpoint rule, $\\varepsilon = 10^{-3}$: conserved to "
                "round-off (it conserves $E$ exactly)",
-        sus_exp_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
+        sus_lab_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
     ledger_add_bound(
         "fig1-energy-variational", "\\PaperRefOr{Fig1}, panel (f); extension",
         "$\\max_k |E_k - E_0|$ of the variational integrator, $\\varepsilon = 10^{-3}$: at "
         "least $10^{-12}$, i.e. not round-off ($O(\\varepsilon^2)$ drift)",
-        sus_exp_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
-    sus_exp_series_free(&mid);
-    sus_exp_series_free(&var);
+        sus_lab_series_maxdrift(&var, FIELD(energy)), 1e-12, 1, LEDGER_EXTENSION);
+    sus_lab_series_free(&mid);
+    sus_lab_series_free(&var);
 }
 
 /* The readings of Figure 2(d) say what they are: one fixed-point sweep of the midpoint rule's
@@ -219,7 +219,7 @@ static void sweeps_are_explicit_methods(const sus_model *m, double eps, long N, 
 {
     for (int n = 1; E && n <= 2; n++) {
         double w[2] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}, wN[2], d = 0.0;
-        sus_exp_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
+        sus_lab_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
         for (long k = 0; k <= N; k++) {
             d = fmax(d, fabs(E[k] - sus_energy(m, w)));
             double f[2], y[2] = {w[0], w[1]};
@@ -246,8 +246,8 @@ static void sweeps_are_explicit_methods(const sus_model *m, double eps, long N, 
 
 /* "works quite well if the step size is relatively big": the variational error relative to
  * |w0|, against the midpoint rule's, over the Figure 2 run. */
-static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
-                                 const sus_exp_series *var)
+static void fig2_accuracy_claims(const sus_exact *ex, const sus_lab_series *mid,
+                                 const sus_lab_series *var)
 {
     double err_var = 0.0, err_mid = 0.0;
     for (size_t i = 0; i < mid->n; i++) {
@@ -271,7 +271,7 @@ static void fig2_accuracy_claims(const sus_exact *ex, const sus_exp_series *mid,
 }
 
 /* The caption: midpoint shows a fast decay of energy, the variational integrator is better. */
-static void fig2_energy_claims(const sus_exp_series *mid, double loss_mid, double loss_var)
+static void fig2_energy_claims(const sus_lab_series *mid, double loss_mid, double loss_var)
 {
     ledger_add_bound(
         "fig2-energy-midpoint", REF_FIG2D "; " REF_SEC56,
@@ -288,7 +288,7 @@ static void fig2_energy_claims(const sus_exp_series *mid, double loss_mid, doubl
     ledger_add("fig2-energy-midpoint-conserved", "(extension)",
                "$\\max_k |E_k - E_0|$ of the midpoint rule at $\\varepsilon = 1$ over 200 steps: "
                "round-off, the implicit midpoint rule conserves $E$",
-               sus_exp_series_maxdrift(mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
+               sus_lab_series_maxdrift(mid, FIELD(energy)), 0.0, 1e-14, LEDGER_EXTENSION);
 }
 
 /* Every reading of the midpoint rule's implicit equation tried (figures/fig2_energy). */
@@ -297,12 +297,12 @@ static void fig2_readings_claims(const sus_model *m, double eps, long N, double 
 {
     double worst_loss = loss_mid, *E = malloc((size_t)(N + 1) * sizeof *E), wN[2];
     int gaining = 0;
-    for (int n = 1; E && n <= SUS_EXP_FIG2_NSWEEP; n++) {
-        sus_exp_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
+    for (int n = 1; E && n <= SUS_LAB_FIG2_NSWEEP; n++) {
+        sus_lab_midpoint_sweeps_run(m, eps, n, SUS_PAPER_OMEGA0, N, E, wN);
         worst_loss = fmax(worst_loss, E[0] - E[N]);
         gaining += E[N] > E[0];
     }
-    ledger_number("FigTwoSweepsTried", SUS_EXP_FIG2_NSWEEP);
+    ledger_number("FigTwoSweepsTried", SUS_LAB_FIG2_NSWEEP);
     ledger_number("FigTwoSweepsGaining",
                   gaining); /* readings that end with more energy than they began */
     sweeps_are_explicit_methods(m, eps, N, E);
@@ -318,8 +318,8 @@ static void fig2_readings_claims(const sus_model *m, double eps, long N, double 
 
 /* Where each run ends: the midpoint rule at the exact steady rotation, the variational integrator
  * at a steady rotation of the energy it has lost. */
-static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid,
-                              const sus_exp_series *var)
+static void fig2_limit_claims(const sus_exact *ex, const sus_lab_series *mid,
+                              const sus_lab_series *var)
 {
     const size_t last = mid->n - 1;
     const double E0 = mid->energy[0];
@@ -355,9 +355,9 @@ static void fig2_limit_claims(const sus_exact *ex, const sus_exp_series *mid,
 
 static void figure2(const sus_model *m, const sus_exact *ex)
 {
-    sus_exp_series mid, var;
-    const double eps = SUS_EXP_FIG2_EPS;
-    const long N = sus_exp_experiment_steps(SUS_EXP_FIG2_T_END, eps);
+    sus_lab_series mid, var;
+    const double eps = SUS_LAB_FIG2_EPS;
+    const long N = sus_lab_experiment_steps(SUS_LAB_FIG2_T_END, eps);
     run(&mid, m, sus_step_midpoint, eps, N, 1);
     run(&var, m, sus_step_variational, eps, N, 1);
     const size_t last = mid.n - 1;
@@ -369,8 +369,8 @@ static void figure2(const sus_model *m, const sus_exact *ex)
     fig2_accuracy_claims(ex, &mid, &var);
     ledger_number("FigTwoVarEnergyLossPercent", 100.0 * loss_var / E0);
     fig2_limit_claims(ex, &mid, &var);
-    sus_exp_series_free(&mid);
-    sus_exp_series_free(&var);
+    sus_lab_series_free(&mid);
+    sus_lab_series_free(&var);
 }
 
 /* The printed I has I23 = 0.2 but I32 = 0.1. The dynamics use the third row; a symmetric
@@ -380,7 +380,7 @@ static void inertia_ambiguity(const sus_model *m)
     double Irow[9], Icol[9];
     for (int i = 0; i < 9; i++)
         Irow[i] = m->I[i / 3][i % 3];
-    sus_exp_inertia_column_swap(Irow, Icol);
+    sus_lab_inertia_column_swap(Irow, Icol);
     sus_model mc;
     sus_exact er, ec;
     char err[128];
@@ -389,11 +389,11 @@ static void inertia_ambiguity(const sus_model *m)
     sus_exact_init(&er, m, SUS_PAPER_OMEGA0);
     sus_exact_init(&ec, &mc, SUS_PAPER_OMEGA0);
     double d = 0.0;
-    const long n = sus_exp_experiment_steps(SUS_EXP_INERTIA_T_END, SUS_EXP_INERTIA_DT);
+    const long n = sus_lab_experiment_steps(SUS_LAB_INERTIA_T_END, SUS_LAB_INERTIA_DT);
     for (long i = 0; i <= n; i++) { /* the grid src/prog/figure_inertia.c draws */
         double a[2], b[2];
-        sus_exact_omega(&er, SUS_EXP_INERTIA_DT * (double)i, a);
-        sus_exact_omega(&ec, SUS_EXP_INERTIA_DT * (double)i, b);
+        sus_exact_omega(&er, SUS_LAB_INERTIA_DT * (double)i, a);
+        sus_exact_omega(&ec, SUS_LAB_INERTIA_DT * (double)i, b);
         d = fmax(d, hypot(a[0] - b[0], a[1] - b[1]));
     }
     ledger_add_bound(

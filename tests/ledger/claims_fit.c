@@ -56,22 +56,22 @@ int claims_order_or_floor(const char *id, const char *ref, const char *what, con
                           const double *err, const double *need, int n, double floor_c,
                           int floor_pow, double shift, double expected, ledger_assert truth)
 {
-    sus_exp_order_fit f;
+    sus_lab_order_fit f;
     char q[640];
-    double e[MAXN], emax = SUS_EXP_FIT_EPS_MAX, big = 0.0;
+    double e[MAXN], emax = SUS_LAB_FIT_EPS_MAX, big = 0.0;
     if (n > MAXN)
         n = MAXN;
     for (int j = 0; j < n; j++) {
         e[j] = err[j] > floor_c / pow(eps[j], floor_pow) ? err[j] : 0.0;
         big = fmax(big, eps[j]);
     }
-    int ok = sus_exp_fit_order(eps, e, n, emax, 0.0, &f) == 0;
+    int ok = sus_lab_fit_order(eps, e, n, emax, 0.0, &f) == 0;
     if (!ok) {
         emax = big;
-        ok = sus_exp_fit_order(eps, e, n, emax, 0.0, &f) == 0;
+        ok = sus_lab_fit_order(eps, e, n, emax, 0.0, &f) == 0;
     }
     if (ok) {
-        const int wide = emax > SUS_EXP_FIT_EPS_MAX;
+        const int wide = emax > SUS_LAB_FIT_EPS_MAX;
         snprintf(q, sizeof q, "%s; fit $\\varepsilon \\in [%s, %s]$, %d points%s", what,
                  notation_g(f.eps_lo, 3).s, notation_g(f.eps_hi, 3).s, f.used,
                  wide ? " (window widened: round-off below)" : "");

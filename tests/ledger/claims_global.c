@@ -118,7 +118,7 @@ static int error_curves(const body_target *t, const sus_stepper_type *st, sus_re
         eR[n] = sus_so3_dist(t->R_T, l.R);
         n++;
         const double floor = 100.0 * (double)N * st->desc.substeps * DBL_EPSILON;
-        if (ew[n - 1] < floor * size_w && eR[n - 1] < floor * SUS_EXP_SIZE_R)
+        if (ew[n - 1] < floor * size_w && eR[n - 1] < floor * SUS_LAB_SIZE_R)
             break; /* both at the round-off floor below */
     }
     return n;
@@ -137,7 +137,7 @@ static curve_fit fit_curve(const sus_stepper_type *st, int p, const double *h, c
     for (int j = 0; j < n; j++) {
         const double N = kT / h[j];
         const double floor =
-            fmax(SUS_EXP_FIT_FLOOR_REL * size, 100.0 * N * st->desc.substeps * DBL_EPSILON * size);
+            fmax(SUS_LAB_FIT_FLOOR_REL * size, 100.0 * N * st->desc.substeps * DBL_EPSILON * size);
         cand[j] = err[j] > floor && err[j] < size;
         ncand += cand[j];
         above += !(err[j] < size);
@@ -214,7 +214,7 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
             const int p = q ? eo->so3[recon] : eo->p;
             int at_roundoff;
             const curve_fit f =
-                fit_curve(me->type, p, h, q ? eR : ew, n, q ? SUS_EXP_SIZE_R : t[k].d->size_w,
+                fit_curve(me->type, p, h, q ? eR : ew, n, q ? SUS_LAB_SIZE_R : t[k].d->size_w,
                           t[k].d->ex.k * t[k].T, &at_roundoff);
             if (at_roundoff) {
                 const size_t len = strlen(wf[q].roundoff);

@@ -69,8 +69,8 @@ static void local_curves(const sus_step_method *me, const claims_body *d, double
         for (int q = 0; q < NQ; q++)
             err[q][j] = 0.0;
         for (int t = 0; t < NTK; t++) {
-            sus_exp_local_err e;
-            if (sus_exp_local_errors(&d->m, me->type, &d->ref[j][t], &e) != SUS_STEPPER_OK) {
+            sus_lab_local_err e;
+            if (sus_lab_local_errors(&d->m, me->type, &d->ref[j][t], &e) != SUS_STEPPER_OK) {
                 for (int q = 0; q < NQ; q++)
                     err[q][j] = NAN;
                 break;

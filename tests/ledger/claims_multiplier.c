@@ -110,7 +110,7 @@ static double lim_w_major(const sus_exact *bex)
 }
 
 /* One variational step of eps from w(tk): y = lambda(tk+eps) - lambda_{k+1} (as
- * sus_exp_local_errors forms it), and the bound on the Newton root's rounding from its residual,
+ * sus_lab_local_errors forms it), and the bound on the Newton root's rounding from its residual,
  * |dx|_inf <= |J^-1|_inf (|G(x)| + 8 u scale) (8 u scale: the rounding of G's own evaluation). */
 static double lim_step(const sus_exact *bex, double tk, double eps, double *dx)
 {

@@ -12,8 +12,8 @@
 /* The least-squares slope over eps[lo .. hi], or NaN. */
 static double slope_over(const double *eps, const double *err, int lo, int hi)
 {
-    sus_exp_order_fit f;
-    if (hi - lo < 2 || sus_exp_fit_order(eps + lo, err + lo, hi - lo + 1, INFINITY, 0.0, &f) != 0)
+    sus_lab_order_fit f;
+    if (hi - lo < 2 || sus_lab_fit_order(eps + lo, err + lo, hi - lo + 1, INFINITY, 0.0, &f) != 0)
         return NAN;
     return f.slope;
 }

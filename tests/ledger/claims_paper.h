@@ -12,7 +12,7 @@
 typedef struct {
     sus_model m;
     sus_exact ex;
-    sus_exp_convergence conv;
+    sus_lab_convergence conv;
 } claims_paper;
 
 /* The starts t_k of the local errors, in the transient (the motion settles on the steady

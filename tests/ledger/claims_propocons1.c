@@ -39,7 +39,7 @@ typedef struct {
 /* One step of the integrator from the exact state at start t (R(t_k), V = R w^) over ref's eps: the
  * errors of R, of xi = vee(R^T V) and of lambda(xi) against the exact solution at t_k + eps. */
 static void step_errors(const integrator *it, const claims_body *d, sus_unreduced *u,
-                        const double Rk[3][3], const sus_exp_local_ref *ref, double e[3])
+                        const double Rk[3][3], const sus_lab_local_ref *ref, double e[3])
 {
     double W[3][3], R[3][3], V[3][3], Rx[3][3], xi[3];
     sus_so3_hat(ref->w_k, W);

@@ -211,7 +211,7 @@ static qreal sec6_dlambda(const qmodel *q, const double Iinv[3][3], int p, const
     qflow_series(q, x1, QN, &fb);
     for (int i = 0; i <= NSAMP; i++) {
         double dchi;
-        const double chi = sus_exp_perturb_chi((double)i / NSAMP, &dchi);
+        const double chi = sus_lab_perturb_chi((double)i / NSAMP, &dchi);
         const qreal t = eps * i / NSAMP, ch = chi, dch = (qreal)dchi / eps;
         qreal A[2], B[2], hA[2], hB[2], X[2], Xd[2], hX[2], g[2];
         qseries_eval(&fa, t, A);
@@ -238,14 +238,14 @@ static double qfit(const double *eps, const double *err, double floor_c, int flo
                    double *last)
 {
     double e[NJ];
-    sus_exp_order_fit f;
+    sus_lab_order_fit f;
     *last = NAN;
     for (int j = 0; j < NJ; j++) {
         e[j] = err[j] > floor_c / pow(eps[j], floor_pow) ? err[j] : 0.0;
         if (j > 0 && e[j] > 0.0 && e[j - 1] > 0.0)
             *last = log2(e[j - 1] / e[j]) / log2(eps[j - 1] / eps[j]);
     }
-    return sus_exp_fit_order(eps, e, NJ, SUS_EXP_FIT_EPS_MAX, 0.0, &f) == 0 ? f.slope : NAN;
+    return sus_lab_fit_order(eps, e, NJ, SUS_LAB_FIT_EPS_MAX, 0.0, &f) == 0 ? f.slope : NAN;
 }
 
 /* "RemarkFiveFiveFormulaRkFourQuadLast": a number for the text, named after the line's id */
@@ -297,7 +297,7 @@ static void remark_line(const qmodel *q, const sus_exact *ex, int p, const char 
         "|\\lambda|$",
         p + 1, name, notation_g(err[NJ - 1], 2).s);
     double last;
-    const double s = qfit(eps, err, 1000.0 * QU * SUS_EXP_SIZE_LAMBDA, 0, &last) - 1.0;
+    const double s = qfit(eps, err, 1000.0 * QU * SUS_LAB_SIZE_LAMBDA, 0, &last) - 1.0;
     last_number(id, last - 1.0);
     ledger_add(id,
                truth == LEDGER_EXTENSION ? "\\PaperRefOr{RemarkLambda}, extension: control"
@@ -333,7 +333,7 @@ static void sec6_line(const qmodel *q, const sus_model *m, const sus_exact *ex, 
         NSAMP + 1, name, notation_g(err[NJ - 1], 2).s);
     /* the floor of perturbation.h's FLOOR_G with binary128's u */
     double last;
-    const double s = qfit(eps, err, 1000.0 * QU * SUS_EXP_SIZE_W * 3.0, 1, &last);
+    const double s = qfit(eps, err, 1000.0 * QU * SUS_LAB_SIZE_W * 3.0, 1, &last);
     last_number(id, last);
     ledger_add(id,
                truth == LEDGER_EXTENSION ? "\\PaperRefOr{PerTh}, appendix; extension: control"

@@ -1,5 +1,5 @@
 /* Remark 5.5 (RemarkLambda) measured. The local error expansion of each method is derived from
- * f = (ContDyn) as a power series (src/exp/lambda_shift.h) and checked against the steps
+ * f = (ContDyn) as a power series (src/lab/lambda_shift.h) and checked against the steps
  * themselves; the shift l_lambda built from its first one or two terms is applied to
  * lambda(w^{k+1}), and the multiplier order s is fitted from one step from exact data (Definition
  * RedConsis).
@@ -30,7 +30,7 @@
 static const double TK5[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK5 5
 /* lambda's round-off: u times its size, a thousand times over (orderfit.h) */
-#define FLOOR_LAMBDA (1000.0 * U * SUS_EXP_SIZE_LAMBDA)
+#define FLOOR_LAMBDA (1000.0 * U * SUS_LAB_SIZE_LAMBDA)
 
 /* Section 5.6's label of the midpoint DSP, as the paper prints it. */
 #define SEC56_LABEL "\\PaperRefOr{nolabel:subsection-5.6} text, ``order (2,1)''"
@@ -52,7 +52,7 @@ static void lambda_errors(const sus_model *m, const sus_exact *ex, const sus_ste
             const double w[3] = {wk[0], wk[1], 0.0};
             if (st->step->apply(m, eps_of(j), w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("a step for Remark 5.5");
-            if (nterms > 0 && sus_exp_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
+            if (nterms > 0 && sus_lab_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
                 ledger_die("the lambda shift");
             err[j] = fmax(err[j], fabs(sus_lagmult(m, x) + l - sus_lagmult(m, we)));
         }
@@ -68,17 +68,17 @@ static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_s
     double dev = 0.0, low = 0.0, lead = 0.0;
     for (int t = 0; t < NTK5; t++) {
         double wk[2], we[2], x[3], lam, sx[2], sy[2];
-        sus_exp_wseries a, y;
+        sus_lab_wseries a, y;
         sus_stepper_stats ss;
         sus_exact_omega(ex, TK5[t], wk);
         sus_exact_omega(ex, TK5[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
         if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK
-            || sus_exp_series_step(m, st, wk, &a) != 0)
+            || sus_lab_series_step(m, st, wk, &a) != 0)
             ledger_die("the series of a step");
-        sus_exp_series_flow(m, wk, &y);
-        sus_exp_series_eval(&a, eps, sx);
-        sus_exp_series_eval(&y, eps, sy);
+        sus_lab_series_flow(m, wk, &y);
+        sus_lab_series_eval(&a, eps, sx);
+        sus_lab_series_eval(&y, eps, sy);
         dev =
             fmax(dev, fmax(hypot(sx[0] - x[0], sx[1] - x[1]), hypot(sy[0] - we[0], sy[1] - we[1])));
         for (int j = 0; j <= p + 1; j++) {
@@ -107,12 +107,12 @@ static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_s
  * errors rise above round-off there (as claims_order_or_floor) */
 static double fit_s(const double *eps, const double *err)
 {
-    sus_exp_order_fit f;
+    sus_lab_order_fit f;
     double e[NJ5];
     for (int j = 0; j < NJ5; j++)
         e[j] = err[j] > FLOOR_LAMBDA ? err[j] : 0.0;
-    if (sus_exp_fit_order(eps, e, NJ5, SUS_EXP_FIT_EPS_MAX, 0.0, &f) == 0
-        || sus_exp_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
+    if (sus_lab_fit_order(eps, e, NJ5, SUS_LAB_FIT_EPS_MAX, 0.0, &f) == 0
+        || sus_lab_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
         return f.slope - 1.0;
     return NAN;
 }
@@ -316,8 +316,8 @@ static void corrected_cayinver_claim(const sus_model *m, const sus_exact *ex)
             err[j] = fmax(err[j], fabs(full - sus_lagmult(m, we)));
         }
     }
-    sus_exp_order_fit f;
-    if (sus_exp_fit_order(eps, err, NJ5, SUS_EXP_FIT_EPS_MAX, FLOOR_LAMBDA, &f) != 0)
+    sus_lab_order_fit f;
+    if (sus_lab_fit_order(eps, err, NJ5, SUS_LAB_FIT_EPS_MAX, FLOOR_LAMBDA, &f) != 0)
         f.slope = NAN;
     ledger_add(
         "cayinver-corrected-s",

@@ -1,4 +1,4 @@
-/* Section 6 as constructions that can be measured (src/exp/perturbation.h), for every method of the
+/* Section 6 as constructions that can be measured (src/lab/perturbation.h), for every method of the
  * registry:
  *   (TheoPer) the period map of x' = h(x) + eps^p d, integrated by rk8pd through the Newton
  *            inversion of the blend, equals the method's step; sup |eps^p d| has slope p;
@@ -33,9 +33,9 @@ static const double TK6[] = {0.0, 3.0, 7.0};
 #define NTK6 3
 
 /* the round-off floors, with their reasons (perturbation.h) */
-#define FLOOR_G SUS_EXP_PERTURB_FLOOR_G
-#define FLOOR_ATT SUS_EXP_PERTURB_FLOOR_ATT
-#define ATT_TOL SUS_EXP_PERTURB_ATT_TOL
+#define FLOOR_G SUS_LAB_PERTURB_FLOOR_G
+#define FLOOR_ATT SUS_LAB_PERTURB_FLOOR_ATT
+#define ATT_TOL SUS_LAB_PERTURB_ATT_TOL
 
 static double norm2(const double a[2], const double b[2])
 {
@@ -63,11 +63,11 @@ typedef struct {
 
 /* (Eq2) and (PerFin2) from one start x0 at eps[j]: the multiplier shift, the constraint, and
  * (at eps = 1, 1/4, 1/16) the period map against the step. */
-static void reduced_start(const sus_model *m, const sus_stepper_type *st, sus_exp_perturb *P, int j,
+static void reduced_start(const sus_model *m, const sus_stepper_type *st, sus_lab_perturb *P, int j,
                           const double x0[2], reduced_data *d)
 {
     double xi[3], mx3, mdl, x1[2];
-    if (sus_exp_perturb_perfin2(P, x0, ODE_TOL, xi, &mx3, &mdl) != SUS_EXP_PERTURB_OK)
+    if (sus_lab_perturb_perfin2(P, x0, ODE_TOL, xi, &mx3, &mdl) != SUS_LAB_PERTURB_OK)
         ledger_die("(PerFin2) period map");
     d->dlam[j] = fmax(d->dlam[j], mdl);
     d->xi3 = fmax(d->xi3, mx3);
@@ -77,9 +77,9 @@ static void reduced_start(const sus_model *m, const sus_stepper_type *st, sus_ex
         return;
     double xe[2], F[2];
     sus_exact e0;
-    if (sus_exp_perturb_period_map(P, x0, ODE_TOL, xe) != SUS_EXP_PERTURB_OK)
+    if (sus_lab_perturb_period_map(P, x0, ODE_TOL, xe) != SUS_LAB_PERTURB_OK)
         ledger_die("(Eq2) period map");
-    d->its += P->sus_exp_newton_its;
+    d->its += P->sus_lab_newton_its;
     d->evals += P->field_evals;
     d->emb = fmax(d->emb, norm2(xe, x1));
     sus_exact_init(&e0, m, x0);
@@ -93,13 +93,13 @@ static void reduced_runs(const sus_model *m, const sus_exact *ex, const sus_step
     *d = (reduced_data){.emb_local = INFINITY};
     for (int j = 0; j < NJ6; j++) {
         d->eps[j] = ldexp(1.0, 1 - j);
-        sus_exp_perturb P;
-        if (sus_exp_perturb_init(&P, m, st, d->eps[j]) != 0)
+        sus_lab_perturb P;
+        if (sus_lab_perturb_init(&P, m, st, d->eps[j]) != 0)
             ledger_die("perturbation init");
         for (int t = 0; t < NTK6; t++) {
             double x0[2], s;
             sus_exact_omega(ex, TK6[t], x0);
-            if (sus_exp_perturb_sup_reduced(&P, x0, 2 * NSAMP, &s) != SUS_EXP_PERTURB_OK)
+            if (sus_lab_perturb_sup_reduced(&P, x0, 2 * NSAMP, &s) != SUS_LAB_PERTURB_OK)
                 ledger_die("perturbation size");
             d->sup_g[j] = fmax(d->sup_g[j], s);
             /* what theory puts a lower estimate on: the perturbation moves the flow by the local
@@ -171,7 +171,7 @@ static void reduced_lines(const sus_step_method *me, const expected_order *eo,
     /* the multiplier moves by grad lambda . (eps^p d): |grad lambda| ~ 2 |lambda| / |w| */
     double lneed[NJ6];
     for (int j = 0; j < NJ6; j++)
-        lneed[j] = d->loc[j] * 2.0 * SUS_EXP_SIZE_LAMBDA / SUS_EXP_SIZE_W;
+        lneed[j] = d->loc[j] * 2.0 * SUS_LAB_SIZE_LAMBDA / SUS_LAB_SIZE_W;
     snprintf(ref, sizeof ref, "\\PaperRefOr{PerTh}, appendix%s", ext);
     unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->dlam, lneed, 10, FLOOR_G, 1, 0.0,
                                          eo->p, truth);
@@ -194,15 +194,15 @@ static void per11_lines(const sus_model *m, const sus_exact *ex, const sus_step_
     for (int r = 0; r < SUS_RECON_COUNT; r++) {
         double att[NJ_SO3] = {0}, all[NJ_SO3] = {0};
         for (int j = 0; j < NJ_SO3; j++) {
-            sus_exp_perturb P;
-            if (sus_exp_perturb_init(&P, m, st, d->eps[j]) != 0)
+            sus_lab_perturb P;
+            if (sus_lab_perturb_init(&P, m, st, d->eps[j]) != 0)
                 ledger_die("perturbation init");
             for (int t = 0; t < NTK6 - 1; t++) {
                 double x0[2], a, g;
                 sus_exact_omega(ex, TK6[t], x0);
                 const sus_recon rk = (sus_recon)r;
-                if (sus_exp_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) !=
-                    SUS_EXP_PERTURB_OK)
+                if (sus_lab_perturb_sup_so3(&P, rk, x0, NSAMP, ATT_TOL, &a, &g) !=
+                    SUS_LAB_PERTURB_OK)
                     ledger_die("(Per11) attitude blend");
                 att[j] = fmax(att[j], a);
                 all[j] = fmax(all[j], fmax(a, g));

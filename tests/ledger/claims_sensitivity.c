@@ -1,5 +1,5 @@
-/* The sensitivity of Figure 2's statements (src/exp/sensitivity.h) on every body of
- * tests/unit/bodies.h (BODIES_COUNT of them, through claims_bodies.h) from SUS_EXP_SENS_NSTATE
+/* The sensitivity of Figure 2's statements (src/lab/sensitivity.h) on every body of
+ * tests/unit/bodies.h (BODIES_COUNT of them, through claims_bodies.h) from SUS_LAB_SENS_NSTATE
  * initial states each. A statement holds for one case and step when the same reading as the
  * Figure 2 lines of the ledger says so (claims_figures.c, claims_fig2readings.c): the
  * variational energy change smaller than the midpoint rule's; its error at t_fast, and its
@@ -18,7 +18,7 @@
 #include <string.h>
 
 #define NEPS 7 /* eps = 2^(i - 3): 2^-3 .. 2^3 */
-#define NCASE (BODIES_COUNT * SUS_EXP_SENS_NSTATE)
+#define NCASE (BODIES_COUNT * SUS_LAB_SENS_NSTATE)
 #define MUCH 0.1 /* "much": a tenth, as the Figure 2 lines read it */
 #define CONSTRAINT_TOL 1e-14 /* fig2-constraint's round-off bound */
 #define PAPER_EPS_INDEX 3 /* eps = 1, the largest step the paper uses */
@@ -32,7 +32,7 @@ static double eps_of(int i)
 typedef struct {
     sus_model m;
     sus_exact ex; /* from the case's own w0: refers to m, never copied */
-    sus_exp_sens_run mid[NEPS], var[NEPS];
+    sus_lab_sens_run mid[NEPS], var[NEPS];
     double fail_mid, fail_var;
 } sens_case;
 
@@ -52,21 +52,21 @@ typedef struct {
 static void run_case(sens_case *c, const claims_body *cb, int s, double k_paper)
 {
     double w0[2];
-    sus_exp_sens_state(&cb->ex, s, w0);
+    sus_lab_sens_state(&cb->ex, s, w0);
     c->m = cb->m;
     sus_exact_init(&c->ex, &c->m, w0);
     const double scale = k_paper / c->ex.k;
     for (int i = 0; i < NEPS; i++) {
-        sus_exp_sens_run_one(&c->ex, sus_step_midpoint, eps_of(i) * scale, &c->mid[i]);
-        sus_exp_sens_run_one(&c->ex, sus_step_variational, eps_of(i) * scale, &c->var[i]);
+        sus_lab_sens_run_one(&c->ex, sus_step_midpoint, eps_of(i) * scale, &c->mid[i]);
+        sus_lab_sens_run_one(&c->ex, sus_step_variational, eps_of(i) * scale, &c->var[i]);
     }
-    c->fail_mid = sus_exp_sens_first_failure(&c->ex, sus_step_midpoint, scale) / scale;
-    c->fail_var = sus_exp_sens_first_failure(&c->ex, sus_step_variational, scale) / scale;
+    c->fail_mid = sus_lab_sens_first_failure(&c->ex, sus_step_midpoint, scale) / scale;
+    c->fail_var = sus_lab_sens_first_failure(&c->ex, sus_step_variational, scale) / scale;
 }
 
 static void fold_case(const sens_case *c, int i, sens_row *r)
 {
-    const sus_exp_sens_run *a = &c->mid[i], *b = &c->var[i];
+    const sus_lab_sens_run *a = &c->mid[i], *b = &c->var[i];
     r->failed_mid += a->failed;
     r->failed_var += b->failed;
     if (a->failed || b->failed) return;
@@ -180,7 +180,7 @@ static double regularity(int var)
     double worst = INFINITY;
     for (int c = 0; c < NCASE; c++)
         for (int i = 0; i <= PAPER_EPS_INDEX; i++) {
-            const sus_exp_sens_run *r = var ? &cases[c].var[i] : &cases[c].mid[i];
+            const sus_lab_sens_run *r = var ? &cases[c].var[i] : &cases[c].mid[i];
             worst = fmin(worst, r->failed ? -1.0 : r->det_min);
         }
     return worst;
@@ -196,7 +196,7 @@ static void regularity_lines(void)
              "min over every step of the runs (%d bodies, %d starts each, $\\varepsilon$ from "
              "$2^{-3}$ to 1) of $\\det J / \\det I_m$, $J$ the block of \\eqref{REGLOC}, midpoint "
              "DSP: the step is defined (regular) where the paper steps; $\\ge 1000\\,u$",
-             BODIES_COUNT, SUS_EXP_SENS_NSTATE);
+             BODIES_COUNT, SUS_LAB_SENS_NSTATE);
     ledger_add_bound("regloc-regular-midpoint", "\\eqref{REGLOC}", q, regularity(0), bound, 1,
                      LEDGER_REPRODUCED);
     ledger_add_bound(
@@ -225,7 +225,7 @@ static void numbers(const sens_row *rows)
     }
     ledger_number("SensCases", NCASE);
     ledger_number("SensBodies", BODIES_COUNT);
-    ledger_number("SensStates", SUS_EXP_SENS_NSTATE);
+    ledger_number("SensStates", SUS_LAB_SENS_NSTATE);
     ledger_number("SensRuns", n);
     ledger_number("SensEnergyHolds", energy);
     ledger_number("SensFasterHolds", faster);
@@ -280,8 +280,8 @@ void sensitivity_claims(const char *tsv)
 {
     sens_row rows[NEPS];
     for (int b = 0; b < BODIES_COUNT; b++)
-        for (int s = 0; s < SUS_EXP_SENS_NSTATE; s++)
-            run_case(&cases[b * SUS_EXP_SENS_NSTATE + s], claims_body_get(b), s,
+        for (int s = 0; s < SUS_LAB_SENS_NSTATE; s++)
+            run_case(&cases[b * SUS_LAB_SENS_NSTATE + s], claims_body_get(b), s,
                      claims_body_get(0)->ex.k);
     for (int i = 0; i < NEPS; i++) rows[i] = row_of(i);
     write_table(tsv, rows);
@@ -302,7 +302,7 @@ void sensitivity_claims(const char *tsv)
         "cases (of %d: %d bodies, %d starts each, $\\varepsilon$ from $2^{-3}$ to $2^3$, both runs "
         "defined) where the variational $|E_N - E_0|$ is below the midpoint rule's: theory gives "
         "none",
-        n, BODIES_COUNT, SUS_EXP_SENS_NSTATE);
+        n, BODIES_COUNT, SUS_LAB_SENS_NSTATE);
     ledger_add("fig2-sensitivity-energy", "\\PaperRefOr{Fig2}, extension", q, energy, 0.0, 0.5,
                LEDGER_EXTENSION);
 }

@@ -1,4 +1,4 @@
-/* Stability boundaries (src/exp/stability.h, figures/stability): the measured linear stability
+/* Stability boundaries (src/lab/stability.h, figures/stability): the measured linear stability
  * limit of each method at the attracting steady rotation against the one derived from
  * psi' = k cos psi, and where the implicit steps stop being solvable. */
 #include "claims_stability.h"
@@ -68,7 +68,7 @@ static double limit_over_bodies(const sus_stepper_type *st, double expect, char 
     for (int k = 0; k < BODIES_COUNT; k++) {
         const claims_body *d = claims_body_get(k);
         int radius_bound;
-        const double h = sus_exp_stability_limit(&d->ex, st, 0.1, H_MAX, &radius_bound);
+        const double h = sus_lab_stability_limit(&d->ex, st, 0.1, H_MAX, &radius_bound);
         if (radius_bound && h < expect) { /* named: its steps stop at the radius before the limit */
             const size_t n = strlen(bound);
             snprintf(bound + n, blen - n, "%s%s ($h \\le %.3g$)", n ? ", " : "", d->b.name, h);
@@ -130,7 +130,7 @@ void stability_boundary_claims(int m)
      * figures/stability shows where they work). */
     if (!me->type->desc.stability && me->type->desc.substeps > 1)
         return;
-    const double predicted = sus_exp_linear_limit(me, H_MAX), theory = theory_limit(me);
+    const double predicted = sus_lab_linear_limit(me, H_MAX), theory = theory_limit(me);
     if (isfinite(predicted)) {
         limit_lines(me, predicted, theory);
         return;
@@ -157,17 +157,17 @@ void stability_boundary_claims(int m)
  * root on its branch (a fold) or its solve fails (stability.h), INFINITY when none; the failed
  * run's result in *failed. */
 static double first_failure(const sus_exact *paper, const sus_stepper_type *st, int nangle,
-                            double h_from, sus_exp_stab_result *failed)
+                            double h_from, sus_lab_stab_result *failed)
 {
     enum { NHS = 26, NA_MAX = 36 };
     for (int i = 0; i < NHS; i++) {
         const double h = pow(10.0, -2.0 + 0.2 * i);
-        sus_exp_stab_result res[NA_MAX];
+        sus_lab_stab_result res[NA_MAX];
         if (h < h_from * (1.0 - 1e-9))
             continue;
-        sus_exp_stability_map(paper, st, &h, 1, nangle, res);
+        sus_lab_stability_map(paper, st, &h, 1, nangle, res);
         for (int a = 0; a < nangle; a++)
-            if (res[a].cls == SUS_EXP_STAB_SOLVER || res[a].cls == SUS_EXP_STAB_REGULARITY) {
+            if (res[a].cls == SUS_LAB_STAB_SOLVER || res[a].cls == SUS_LAB_STAB_REGULARITY) {
                 *failed = res[a];
                 return h;
             }
@@ -187,7 +187,7 @@ void stability_solvable_claims(const sus_exact *paper, int m)
     const sus_step_method *me = sus_step_method_get(m);
     if (!me->type->desc.implicit)
         return;
-    sus_exp_stab_result failed;
+    sus_lab_stab_result failed;
     const double first = first_failure(paper, me->type, 12, 0.0, &failed);
     const expected_order *eo = expected_order_of(me->type->name);
     const int none_stated = eo && isinf(eo->solvable_h);
@@ -216,11 +216,11 @@ void stability_fold_claims(const sus_exact *paper, int m)
     const expected_order *eo = expected_order_of(me->type->name);
     if (!me->type->desc.implicit || !eo || !eo->fold_on_map)
         return;
-    sus_exp_stab_result failed = {0};
+    sus_lab_stab_result failed = {0};
     double e_star = NAN, exponent = NAN;
     const double h = first_failure(paper, me->type, 36, 1.0, &failed);
-    if (isfinite(h) && failed.cls == SUS_EXP_STAB_REGULARITY)
-        sus_exp_fold(paper->model, me->type, failed.w_fail, h / paper->k, &e_star, &exponent);
+    if (isfinite(h) && failed.cls == SUS_LAB_STAB_REGULARITY)
+        sus_lab_fold(paper->model, me->type, failed.w_fail, h / paper->k, &e_star, &exponent);
     snprintf(id, sizeof id, "stability-fold-%s", me->type->name);
     snprintf(q, sizeof q,
              "exponent of $|\\det J|$ of the %s step equation against the distance "

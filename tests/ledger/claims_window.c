@@ -52,8 +52,8 @@ window_slope window_measure(const double *eps, const double *err, const int *can
             ;
         len = hi - lo + 1;
     }
-    sus_exp_order_fit f;
-    if (len >= 3 && sus_exp_fit_order(eps + lo, err + lo, len, INFINITY, 0.0, &f) == 0) {
+    sus_lab_order_fit f;
+    if (len >= 3 && sus_lab_fit_order(eps + lo, err + lo, len, INFINITY, 0.0, &f) == 0) {
         w.slope = f.slope;
         w.used = f.used;
         w.eps_lo = f.eps_lo;

@@ -1,8 +1,8 @@
 /* The bench's bookkeeping, on a bench filled by hand (no timing): which peer each comparison
- * takes (src/exp/bench_floor.c: the full problem's peers for the attitude target, the reduced
+ * takes (src/lab/bench_floor.c: the full problem's peers for the attitude target, the reduced
  * problem's for the other, never a peer given w(t) for the w race, never a w-only one for the
  * attitude), and the data file the figures are drawn from (src/render/bench_tables.c writes
- * bench.csv, src/exp/bench_load.c reads it back: the same series, points and step costs). */
+ * bench.csv, src/lab/bench_load.c reads it back: the same series, points and step costs). */
 #define _POSIX_C_SOURCE 200809L
 #include "bench.h"
 #include "bench_floor.h"
@@ -16,10 +16,10 @@
 #include <unistd.h>
 
 /* A series of one point: error e_w and e_R (INFINITY: none) in sec seconds. */
-static sus_exp_bench_series *one_point(sus_exp_bench *b, const char *name, int ours, int w_only,
+static sus_lab_bench_series *one_point(sus_lab_bench *b, const char *name, int ours, int w_only,
                                        int reduced, double e_w, double e_R, double sec)
 {
-    sus_exp_bench_series *s = sus_exp_bench_new_series(b);
+    sus_lab_bench_series *s = sus_lab_bench_new_series(b);
     snprintf(s->name, sizeof s->name, "%s", name);
     s->ours = ours;
     s->preserves = ours;
@@ -38,15 +38,15 @@ static sus_exp_bench_series *one_point(sus_exp_bench *b, const char *name, int o
 }
 
 /* Per-step costs for every registered method (the tables name some by type). */
-static void fill_costs(sus_exp_bench *b)
+static void fill_costs(sus_lab_bench *b)
 {
     const int n = sus_step_method_count();
-    sus_exp_bench_costs *c = &b->cost;
+    sus_lab_bench_costs *c = &b->cost;
     c->n = n;
-    c->name = sus_exp_bench_calloc((size_t)n, sizeof *c->name);
-    c->ns_raw = sus_exp_bench_calloc((size_t)n, sizeof(double));
-    c->ns_full = sus_exp_bench_calloc((size_t)n, sizeof(double));
-    c->newton = sus_exp_bench_calloc((size_t)n, sizeof(double));
+    c->name = sus_lab_bench_calloc((size_t)n, sizeof *c->name);
+    c->ns_raw = sus_lab_bench_calloc((size_t)n, sizeof(double));
+    c->ns_full = sus_lab_bench_calloc((size_t)n, sizeof(double));
+    c->newton = sus_lab_bench_calloc((size_t)n, sizeof(double));
     for (int m = 0; m < n; m++) {
         snprintf(c->name[m], sizeof c->name[m], "%s", sus_step_method_get(m)->type->name);
         c->ns_raw[m] = 10.0 + m;
@@ -58,29 +58,29 @@ static void fill_costs(sus_exp_bench *b)
 }
 
 /* ours 1 us; a full-problem peer 3 us; a reduced-problem peer 0.4 us; a w-only peer 0.5 us. */
-static void fill(sus_exp_bench *b)
+static void fill(sus_lab_bench *b)
 {
-    *b = (sus_exp_bench){.growth = {.series = -1, .point = -1, .eq = -1}};
-    sus_exp_bench_init(b, NULL);
+    *b = (sus_lab_bench){.growth = {.series = -1, .point = -1, .eq = -1}};
+    sus_lab_bench_init(b, NULL);
     one_point(b, "ours", 1, 0, 0, 1e-5, 1e-5, 1e-6);
     one_point(b, "full peer", 0, 0, 0, 1e-5, 1e-5, 3e-6);
     one_point(b, "reduced peer", 0, 0, 1, 0.0, 1e-5, 0.4e-6);
     one_point(b, "w peer", 0, 1, 0, 1e-5, INFINITY, 0.5e-6);
-    b->growth = (sus_exp_bench_growth){.series = -1, .point = -1, .eq = -1};
+    b->growth = (sus_lab_bench_growth){.series = -1, .point = -1, .eq = -1};
     fill_costs(b);
-    sus_exp_bench_envelopes(b);
+    sus_lab_bench_envelopes(b);
 }
 
-static void check_verdicts(const sus_exp_bench *b)
+static void check_verdicts(const sus_lab_bench *b)
 {
-    const sus_exp_bench_level f = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_FULL, 0),
-                              r = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_ATT_REDUCED, 0),
-                              w = sus_exp_bench_level_verdict(b, SUS_EXP_BENCH_W_INFO, 0);
+    const sus_lab_bench_level f = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_FULL, 0),
+                              r = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_REDUCED, 0),
+                              w = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, 0);
     CHECK(f.ours.series == 0 && f.peer.series == 1 && f.ratio == 3e-6 / 1e-6 && f.pass,
           "attitude, full problem: ours against the full problem's peer (series %d, ratio %g, "
           "target %g)", f.peer.series, f.ratio, f.target);
     CHECK(r.peer.series == 2 && r.ratio == 0.4e-6 / 1e-6 && !r.pass &&
-              r.target == SUS_EXP_BENCH_REDUCED_TARGET,
+              r.target == SUS_LAB_BENCH_REDUCED_TARGET,
           "attitude, reduced problem: against the peer given w(t) (series %d, ratio %g, target %g)",
           r.peer.series, r.ratio, r.target);
     CHECK(w.peer.series == 3 && isnan(w.target),
@@ -91,7 +91,7 @@ static void check_verdicts(const sus_exp_bench *b)
           "the attitude envelopes: the full problem's peers, and apart the reduced one's");
 }
 
-static int same_series(const sus_exp_bench_series *a, const sus_exp_bench_series *b)
+static int same_series(const sus_lab_bench_series *a, const sus_lab_bench_series *b)
 {
     const double rel = 1e-5; /* bench.csv prints errors and seconds to 6 digits */
     return strcmp(a->name, b->name) == 0 && a->ours == b->ours && a->w_only == b->w_only &&
@@ -102,16 +102,16 @@ static int same_series(const sus_exp_bench_series *a, const sus_exp_bench_series
                                : fabs(a->err_R[0] - b->err_R[0]) <= rel * a->err_R[0]);
 }
 
-static void check_round_trip(const sus_exp_bench *b)
+static void check_round_trip(const sus_lab_bench *b)
 {
     char dir[] = "/tmp/test_bench.XXXXXX", path[64];
     if (!mkdtemp(dir)) {
         CHECK(0, "a scratch directory");
         return;
     }
-    sus_exp_bench c;
+    sus_lab_bench c;
     const int wrote = sus_plot_bench_tables(b, dir) == 0;
-    const int read = wrote && sus_exp_bench_load(&c, dir) == 0;
+    const int read = wrote && sus_lab_bench_load(&c, dir) == 0;
     CHECK(read, "bench.csv written and read back");
     if (read) {
         int same = c.nseries == b->nseries;
@@ -124,7 +124,7 @@ static void check_round_trip(const sus_exp_bench *b)
                    c.cost.ns_raw[m] == b->cost.ns_raw[m] && c.cost.ns_full[m] == b->cost.ns_full[m];
         CHECK(same, "the same per-step costs, in the registry's order");
         CHECK(c.env[2].n == 1, "the envelopes again from what was read");
-        sus_exp_bench_free(&c);
+        sus_lab_bench_free(&c);
     }
     /* a file that is not the bench's: refused, with a message */
     snprintf(path, sizeof path, "%s/bench.csv", dir);
@@ -133,7 +133,7 @@ static void check_round_trip(const sus_exp_bench *b)
         fputs("section,method\nwork,x\n", fp);
         fclose(fp);
     }
-    CHECK(sus_exp_bench_load(&c, dir) != 0, "a bench.csv that is not the bench's is refused");
+    CHECK(sus_lab_bench_load(&c, dir) != 0, "a bench.csv that is not the bench's is refused");
     static const char *const files[] = {"bench.csv", "bench.tex", "what_to_use.tsv",
                                         "longruns.tsv"};
     for (int k = 0; k < 4; k++) {
@@ -145,10 +145,10 @@ static void check_round_trip(const sus_exp_bench *b)
 
 int main(void)
 {
-    sus_exp_bench b;
+    sus_lab_bench b;
     fill(&b);
     check_verdicts(&b);
     check_round_trip(&b);
-    sus_exp_bench_free(&b);
+    sus_lab_bench_free(&b);
     return check_summary("test_bench");
 }

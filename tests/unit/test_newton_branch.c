@@ -46,7 +46,7 @@ static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, 
 static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a, int na, double h, int steps,
                       double w[3])
 {
-    sus_exp_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / na + SUS_EXP_STAB_ANGLE0, w);
+    sus_lab_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / na + SUS_LAB_STAB_ANGLE0, w);
     w[2] = 0.0;
     for (int k = 0; k < steps; k++) {
         double x[3], lam;
@@ -128,7 +128,7 @@ static void fold(const sus_exact *paper)
     double w[3], e_star = NAN, exponent = NAN, x[SUS_MAX_UNKNOWNS], reg;
     sus_stepper_stats s;
     map_state(paper, st, 29, 36, h, 2, w);
-    const int found = sus_exp_fold(m, st, w, h / paper->k, &e_star, &exponent) == 0;
+    const int found = sus_lab_fold(m, st, w, h / paper->k, &e_star, &exponent) == 0;
     const int below = sus_step_newton_branch(st->equation->residual, st->equation->guess, 4, m,
                                              0.99 * e_star, w, x, &s, &reg);
     const int above = sus_step_newton_branch(st->equation->residual, st->equation->guess, 4, m,
@@ -144,16 +144,16 @@ static void unsolvable(const sus_exact *paper)
 {
     const double w0[2] = {1e150, 1e100};
     sus_exact ex;
-    sus_exp_stab_result r;
+    sus_lab_stab_result r;
     sus_exact_init(&ex, paper->model, w0);
-    sus_exp_stability_run(&ex, sus_step_method_by_name("variational")->type, 1e-150, 5, 0, &r);
-    CHECK(r.cls == SUS_EXP_STAB_SOLVER && r.step == 1,
+    sus_lab_stability_run(&ex, sus_step_method_by_name("variational")->type, 1e-150, 5, 0, &r);
+    CHECK(r.cls == SUS_LAB_STAB_SOLVER && r.step == 1,
           "variational from |w| = 1e150: the map's class %s at step "
           "%ld (solver failure at 1)",
-          SUS_EXP_STAB_NAMES[r.cls], r.step);
+          SUS_LAB_STAB_NAMES[r.cls], r.step);
 }
 
-/* The whole run by hand against sus_exp_stability_run's, which skips cycles. */
+/* The whole run by hand against sus_lab_stability_run's, which skips cycles. */
 static void cycle_shortcut(const sus_exact *paper)
 {
     const char *names[3] = {"midpoint", "comp4-s5", "variational"};
@@ -162,16 +162,16 @@ static void cycle_shortcut(const sus_exact *paper)
     for (int i = 0; i < 3; i++) {
         const sus_stepper_type *st = sus_step_method_by_name(names[i])->type;
         const double eps = hs[i] / paper->k;
-        const long N = sus_exp_stability_steps(hs[i]);
+        const long N = sus_lab_stability_steps(hs[i]);
         for (int a = 0; a < 36; a += 6, n++) {
             double w[3], winf[2];
             sus_exact ex;
-            sus_exp_stab_result r;
-            sus_exp_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / 36 + SUS_EXP_STAB_ANGLE0, w);
+            sus_lab_stab_result r;
+            sus_lab_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / 36 + SUS_LAB_STAB_ANGLE0, w);
             w[2] = 0.0;
             sus_exact_init(&ex, paper->model, w);
             sus_exact_limit(&ex, winf);
-            sus_exp_stability_run(&ex, st, eps, N, 0, &r);
+            sus_lab_stability_run(&ex, st, eps, N, 0, &r);
             for (long k = 0; k < N; k++) {
                 double x[3], lam;
                 sus_stepper_stats s;

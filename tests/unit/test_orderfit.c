@@ -1,4 +1,4 @@
-/* sus_exp_fit_order (orderfit.c) against GSL's gsl_fit_linear, which it writes out for the
+/* sus_lab_fit_order (orderfit.c) against GSL's gsl_fit_linear, which it writes out for the
  * browser's build: the same slope and intercept bit for bit on random point sets (the same
  * operations in the same order), and the slope of exact power laws. */
 #include "check.h"
@@ -22,8 +22,8 @@ int main(void)
             x[i] = log(eps[i]);
             y[i] = log(err[i]);
         }
-        sus_exp_order_fit f;
-        if (sus_exp_fit_order(eps, err, n, INFINITY, 0.0, &f) != 0) {
+        sus_lab_order_fit f;
+        if (sus_lab_fit_order(eps, err, n, INFINITY, 0.0, &f) != 0) {
             differ++;
             continue;
         }
@@ -42,8 +42,8 @@ int main(void)
             eps[j] = ldexp(1.0, -j);
             err[j] = 3.0 * pow(eps[j], p);
         }
-        sus_exp_order_fit f;
-        const int bad = sus_exp_fit_order(eps, err, 11, INFINITY, 0.0, &f);
+        sus_lab_order_fit f;
+        const int bad = sus_lab_fit_order(eps, err, 11, INFINITY, 0.0, &f);
         worst = fmax(worst, bad ? INFINITY : fabs(f.slope - p));
     }
     CHECK(worst <= 1e-13, "err = 3 eps^p, p = 1..10: fitted slope within 1e-13 of p; worst %.2e", worst);

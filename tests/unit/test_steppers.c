@@ -312,7 +312,7 @@ static void driver(const sus_model *m)
           "driver: N = 1003, K = 100 gives %ld rows (0, 100, ..., 1000, 1003), R_0 = I", cc.rows);
 
     /* A failing step is reported with its index and time, never accepted: the 2-stage Gauss
-     * step from this w0 meets a fold of its branch at h = eps k ~ 3.6 (src/exp/stability.h). */
+     * step from this w0 meets a fold of its branch at h = eps k ~ 3.6 (src/lab/stability.h). */
     const double w_fold[2] = {0.27619224, -0.63956748};
     const sus_run_config bad = {m, sus_step_method_by_name("gauss4")->type, SUS_RECON_CAYLEY, 1000.0, 10, 1};
     count_ctx cb = {0, -1, 1.0};

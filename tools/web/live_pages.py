@@ -77,7 +77,7 @@ def convergence_page(site):
         "&omega;(T)| against the exact solution is plotted. The fitted order is the least-squares "
         "slope of log error against log &epsilon; over the points above the round-off floor "
         "(error &gt; 10<sup>3</sup> u |&omega;(T)|, u = 2<sup>&minus;53</sup>; at least three), "
-        "computed by the ledger's own fit, <code>src/exp/orderfit.c</code>, in the WebAssembly "
+        "computed by the ledger's own fit, <code>src/lab/orderfit.c</code>, in the WebAssembly "
         "module.</p>",
         form([method_select("m", "method", "rk4"), field("epsmax", "&epsilon; max", "0.25", 6),
               field("halvings", "halvings", "8", 4), field("T", "T", "10", 5), body_fields()]),

@@ -1,6 +1,6 @@
 // Convergence, live: a method's global error at T against the exact solution for
 // eps = eps_max 2^-j, and the least-squares slope of log error on log eps (the fitted order), by
-// the ledger's own fit (src/exp/orderfit.c in the WebAssembly module), above its round-off floor
+// the ledger's own fit (src/lab/orderfit.c in the WebAssembly module), above its round-off floor
 // 1000 u |w(T)|.
 'use strict';
 (function() {
