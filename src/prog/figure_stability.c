@@ -1,16 +1,21 @@
 /* Where each integrator stops working: a map over the dimensionless step h = eps k and the
  * initial angle on the energy ellipse, coloured by the class of the run (stability.h), with
- * the linear stability limits drawn on top. Usage: figure_stability [--quiet] FIGDIR DATADIR */
+ * the linear stability limits drawn on top. Usage: figure_stability [--quiet] [--jobs N] FIGDIR
+ * DATADIR. The runs are split across N processes (SUSLOV_JOBS, else every core, by default): the
+ * outputs are the same bytes for any N (stability_maps.h). */
 #include "atomic_file.h"
 #include "fig_output.h"
 #include "fig_setup.h"
 #include "plot.h"
 #include "progress.h"
 #include "stability.h"
+#include "stability_maps.h"
+#include "workpool.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define NH 31      /* h = 10^(-3 + 0.2 i) */
 #define NANGLE 36  /* every 10 degrees */
@@ -143,40 +148,89 @@ static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t
         paper->k, NH, SUS_LAB_STAB_BRANCH_H, limits);
 }
 
-/* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h, with
- * its progress (the work counted in steps: a run's cost follows its step count, from 40000 at the
- * smallest h to 50 in the middle). Returns the number of runs that ended with a non-finite error
- * but no failure class. */
-static int run_maps(stab_fig *f, const sus_exact *paper, int modes)
+typedef struct {
+    const stab_fig *f;
+    long done;
+} progress_ctx;
+
+/* A row came back (from whichever process ran it): its runs' steps counted done. */
+static void row_done(int m, int i, void *vctx)
 {
-    long per_method = 0, done = 0;
+    progress_ctx *c = vctx;
+    c->done += NANGLE * sus_lab_stability_steps(c->f->hs[i]);
+    suslov_progress_tick(c->done, "%s at h = %.3g", sus_step_method_get(m)->type->name, c->f->hs[i]);
+}
+
+/* Every method's map over NH steps and NANGLE starts, its rows split across `jobs` processes, and
+ * its linear limit at the largest h, with the progress (the work counted in steps: a run's cost
+ * follows its step count, from 40000 at the smallest h to 50 in the middle). Returns the number of
+ * runs that ended with a non-finite error but no failure class, or -1 when the processes failed. */
+static int run_maps(stab_fig *f, const sus_exact *paper, int modes, int jobs)
+{
+    long per_method = 0;
     for (int i = 0; i < NH; i++) {
         f->hs[i] = pow(10.0, -3.0 + 0.2 * i);
         per_method += NANGLE * sus_lab_stability_steps(f->hs[i]);
     }
+    progress_ctx pc = {f, 0};
+    const sus_lab_stab_maps maps = {paper, f->hs, NH, NANGLE, jobs, row_done, &pc};
+    char err[256];
     suslov_progress_start("figure_stability", NULL, per_method * f->nm, modes);
+    const int rc = sus_lab_stability_maps(&maps, &f->res[0][0], err, sizeof err);
+    suslov_progress_end();
+    if (rc != 0) {
+        fprintf(stderr, "figure_stability: %s\n", err);
+        return -1;
+    }
     int unclassified = 0;
     for (int m = 0; m < f->nm; m++) {
-        const sus_stepper_type *st = sus_step_method_get(m)->type;
-        for (int i = 0; i < NH; i++) { /* one h at a time, for the progress: the same runs */
-            suslov_progress_tick(done, "method %d of %d (%s)", m + 1, f->nm, st->name);
-            sus_lab_stability_map(paper, st, &f->hs[i], 1, NANGLE, &f->res[m][i * NANGLE]);
-            done += NANGLE * sus_lab_stability_steps(f->hs[i]);
-        }
         f->limit[m] = sus_lab_linear_limit(sus_step_method_get(m), f->hs[NH - 1]);
         for (int j = 0; j < NH * NANGLE; j++) {
             const sus_lab_stab_result *r = &f->res[m][j];
             unclassified += r->cls < SUS_LAB_STAB_WRONG_LIMIT + 1 && !isfinite(r->final_err);
         }
     }
-    suslov_progress_end();
     return unclassified;
 }
 
-/* --quiet: no progress line */
+/* A number of processes, 1 to 256, read from text; -1 when it is none. */
+static int jobs_of(const char *text)
+{
+    char *end = NULL;
+    const long n = text ? strtol(text, &end, 10) : 0;
+    return end && end != text && !*end && n >= 1 && n <= 256 ? (int)n : -1;
+}
+
+/* The processes the runs are split across: --jobs N (taken out of argv), else SUSLOV_JOBS, else
+ * every core. Returns 0, or 2 after one line on stderr for a value that is not 1 to 256. */
+static int jobs_option(int *argc, char **argv, int *jobs)
+{
+    const char *env = getenv("SUSLOV_JOBS");
+    *jobs = env ? jobs_of(env) : sus_sys_pool_cores();
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--jobs") != 0)
+            continue;
+        *jobs = jobs_of(i + 1 < *argc ? argv[i + 1] : NULL);
+        for (int j = i; j + 2 <= *argc; j++)
+            argv[j] = argv[j + 2];
+        *argc -= i + 1 < *argc ? 2 : 1;
+        break;
+    }
+    if (*jobs < 1) {
+        fprintf(stderr, "figure_stability: --jobs and SUSLOV_JOBS want a whole number of "
+                        "processes, 1 to 256\n");
+        return 2;
+    }
+    return 0;
+}
+
+/* --quiet: no progress line; --jobs N: N processes (default SUSLOV_JOBS, else every core) */
 int main(int argc, char **argv)
 {
     const int modes = suslov_progress_modes(&argc, argv);
+    int jobs;
+    if (jobs_option(&argc, argv, &jobs) != 0)
+        return 2;
     sus_model model;
     sus_exact paper;
     const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);
@@ -190,7 +244,9 @@ int main(int argc, char **argv)
     f->limit = calloc((size_t)f->nm, sizeof *f->limit);
     if (!f->res || !f->limit)
         return 1;
-    const int unclassified = run_maps(f, &paper, modes);
+    const int unclassified = run_maps(f, &paper, modes, jobs);
+    if (unclassified < 0)
+        return 1;
     if (unclassified) {
         fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
                 unclassified);
