@@ -13,8 +13,10 @@ static double row_cost(const sus_lab_stab_maps *s, int job)
     const sus_stepper_type *st = sus_step_method_get(job / s->nh)->type;
     const double h = s->hs[job % s->nh];
     double c = (double)sus_lab_stability_steps(h) * (st->desc.substeps > 0 ? st->desc.substeps : 1);
-    if (st->desc.implicit) c *= 10.0;
-    if (st->equation && h >= SUS_LAB_STAB_BRANCH_H) c *= 2.0;
+    if (st->desc.implicit)
+        c *= 10.0;
+    if (st->equation && h >= SUS_LAB_STAB_BRANCH_H)
+        c *= 2.0;
     return c;
 }
 
@@ -40,7 +42,8 @@ static void run_row(int job, void *result, void *vctx)
 static void row_done(int job, void *vctx)
 {
     const sus_lab_stab_maps *s = vctx;
-    if (s->done) s->done(job / s->nh, job % s->nh, s->ctx);
+    if (s->done)
+        s->done(job / s->nh, job % s->nh, s->ctx);
 }
 
 int sus_lab_stability_maps(const sus_lab_stab_maps *s, sus_lab_stab_result *results, char *err,
@@ -54,12 +57,15 @@ int sus_lab_stability_maps(const sus_lab_stab_maps *s, sus_lab_stab_result *resu
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    for (int j = 0; j < njobs; j++) c[j] = (costed){row_cost(s, j), j};
+    for (int j = 0; j < njobs; j++)
+        c[j] = (costed){row_cost(s, j), j};
     qsort(c, (size_t)njobs, sizeof *c, by_cost);
-    for (int j = 0; j < njobs; j++) order[j] = c[j].job;
+    for (int j = 0; j < njobs; j++)
+        order[j] = c[j].job;
     free(c);
-    const sus_sys_pool pool = {njobs,      order,   (size_t)s->nangle * sizeof *results, results,
-                               s->workers, run_row, row_done,                            (void *)s};
+    const sus_sys_pool pool = {njobs,    order,      (size_t)s->nangle * sizeof *results,
+                               results,  s->workers, run_row,
+                               row_done, (void *)s};
     const int rc = sus_sys_pool_run(&pool, err, errlen);
     free(order);
     return rc;

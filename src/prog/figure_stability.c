@@ -182,7 +182,8 @@ static void row_done(int m, int i, void *vctx)
 {
     progress_ctx *c = vctx;
     c->done += NANGLE * sus_lab_stability_steps(c->f->hs[i]);
-    suslov_progress_tick(c->done, "%s at h = %.3g", sus_step_method_get(m)->type->name, c->f->hs[i]);
+    suslov_progress_tick(c->done, "%s at h = %.3g", sus_step_method_get(m)->type->name,
+                         c->f->hs[i]);
 }
 
 /* Every method's map over NH steps and NANGLE starts, its rows split across `jobs` processes, and

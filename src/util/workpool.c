@@ -24,10 +24,7 @@ int sus_sys_pool_cores(void)
     return n < 1 ? 1 : n > MAX_WORKERS ? MAX_WORKERS : (int)n;
 }
 
-static int job_at(const sus_sys_pool *p, int k)
-{
-    return p->order ? p->order[k] : k;
-}
+static int job_at(const sus_sys_pool *p, int k) { return p->order ? p->order[k] : k; }
 
 /* ---- both sides: whole reads and writes on a pipe ---- */
 
@@ -37,8 +34,10 @@ static int read_full(int fd, void *buf, size_t n)
     size_t got = 0;
     while (got < n) {
         const ssize_t r = read(fd, (char *)buf + got, n - got);
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) return r == 0 && got == 0 ? 0 : -1;
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0)
+            return r == 0 && got == 0 ? 0 : -1;
         got += (size_t)r;
     }
     return 1;
@@ -49,8 +48,10 @@ static int write_full(int fd, const void *buf, size_t n)
     size_t put = 0;
     while (put < n) {
         const ssize_t w = write(fd, (const char *)buf + put, n - put);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) return -1;
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            return -1;
         put += (size_t)w;
     }
     return 0;
@@ -58,7 +59,8 @@ static int write_full(int fd, const void *buf, size_t n)
 
 static void close_fd(int *fd)
 {
-    if (*fd >= 0) close(*fd);
+    if (*fd >= 0)
+        close(*fd);
     *fd = -1;
 }
 
@@ -70,8 +72,10 @@ static void default_handlers(void)
 {
     for (int s = 1; s < 32; s++) {
         struct sigaction old;
-        if (s == SIGKILL || s == SIGSTOP || sigaction(s, NULL, &old) != 0) continue;
-        if (old.sa_handler != SIG_DFL && old.sa_handler != SIG_IGN) signal(s, SIG_DFL);
+        if (s == SIGKILL || s == SIGSTOP || sigaction(s, NULL, &old) != 0)
+            continue;
+        if (old.sa_handler != SIG_DFL && old.sa_handler != SIG_IGN)
+            signal(s, SIG_DFL);
     }
 }
 
@@ -80,12 +84,15 @@ static void worker_main(const sus_sys_pool *p, int cmd, int res)
     void *buf = malloc(p->size ? p->size : 1);
     int job;
     default_handlers();
-    if (!buf) _exit(1);
+    if (!buf)
+        _exit(1);
     while (read_full(cmd, &job, sizeof job) == 1) {
-        if (job < 0 || job >= p->njobs) _exit(1);
+        if (job < 0 || job >= p->njobs)
+            _exit(1);
         memset(buf, 0, p->size); /* a struct's padding too: the same bytes as in the parent */
         p->run(job, buf, p->ctx);
-        if (write_full(res, &job, sizeof job) != 0 || write_full(res, buf, p->size) != 0) _exit(1);
+        if (write_full(res, &job, sizeof job) != 0 || write_full(res, buf, p->size) != 0)
+            _exit(1);
     }
     _exit(0);
 }
@@ -109,7 +116,8 @@ static void stop_all(worker *w, int n)
 static int start_worker(const sus_sys_pool *p, worker *w, int i)
 {
     int cmd[2], res[2];
-    if (pipe(cmd) != 0) return -1;
+    if (pipe(cmd) != 0)
+        return -1;
     if (pipe(res) != 0) {
         close(cmd[0]), close(cmd[1]);
         return -1;
@@ -117,7 +125,8 @@ static int start_worker(const sus_sys_pool *p, worker *w, int i)
     fflush(NULL); /* nothing buffered is written twice */
     const pid_t pid = fork();
     if (pid == 0) {
-        for (int j = 0; j < i; j++) close(w[j].cmd), close(w[j].res);
+        for (int j = 0; j < i; j++)
+            close(w[j].cmd), close(w[j].res);
         close(cmd[1]), close(res[0]);
         worker_main(p, cmd[0], res[1]);
     }
@@ -149,7 +158,8 @@ static int take_in(const sus_sys_pool *p, worker *wk)
         read_full(wk->res, (char *)p->results + (size_t)job * p->size, p->size) != 1)
         return -1;
     wk->job = -1;
-    if (p->done) p->done(job, p->ctx);
+    if (p->done)
+        p->done(job, p->ctx);
     return 0;
 }
 
@@ -160,13 +170,17 @@ static int collect(const sus_sys_pool *p, worker *w, int n, int *next, int *fail
     struct pollfd fds[MAX_WORKERS];
     int idx[MAX_WORKERS], m = 0, took = 0;
     for (int i = 0; i < n; i++)
-        if (w[i].job >= 0) fds[m] = (struct pollfd){.fd = w[i].res, .events = POLLIN}, idx[m++] = i;
-    if (poll(fds, (nfds_t)m, -1) < 0) return errno == EINTR ? 0 : -1;
+        if (w[i].job >= 0)
+            fds[m] = (struct pollfd){.fd = w[i].res, .events = POLLIN}, idx[m++] = i;
+    if (poll(fds, (nfds_t)m, -1) < 0)
+        return errno == EINTR ? 0 : -1;
     for (int k = 0; k < m; k++) {
-        if (!fds[k].revents) continue;
+        if (!fds[k].revents)
+            continue;
         worker *wk = &w[idx[k]];
         *failed = idx[k];
-        if (take_in(p, wk) != 0 || hand_out(p, wk, next) != 0) return -1;
+        if (take_in(p, wk) != 0 || hand_out(p, wk, next) != 0)
+            return -1;
         took++;
     }
     *failed = -1;
@@ -193,7 +207,8 @@ static int run_here(const sus_sys_pool *p)
     for (int k = 0; k < p->njobs; k++) {
         const int job = job_at(p, k);
         p->run(job, (char *)p->results + (size_t)job * p->size, p->ctx);
-        if (p->done) p->done(job, p->ctx);
+        if (p->done)
+            p->done(job, p->ctx);
     }
     return 0;
 }
@@ -212,8 +227,10 @@ static int fail(worker *w, int n, char *err, size_t errlen, const char *what, in
 int sus_sys_pool_run(const sus_sys_pool *p, char *err, size_t errlen)
 {
     int n = p->workers < p->njobs ? p->workers : p->njobs;
-    if (n > MAX_WORKERS) n = MAX_WORKERS;
-    if (n <= 1) return run_here(p);
+    if (n > MAX_WORKERS)
+        n = MAX_WORKERS;
+    if (n <= 1)
+        return run_here(p);
     worker w[MAX_WORKERS];
     int next = 0, done = 0, failed = -1;
     struct sigaction ign = {.sa_handler = SIG_IGN}, old_pipe;

@@ -28,10 +28,11 @@ typedef void (*sus_sys_done_fn)(int job, void *ctx);
 
 typedef struct {
     int njobs;
-    const int *order;  /* the jobs in the order to hand them out (a permutation), or NULL: 0, 1, ... */
-    size_t size;       /* bytes of one result */
-    void *results;     /* njobs * size bytes: job j's result at j * size */
-    int workers;       /* processes; <= 1 runs every job in this process, in `order` */
+    const int
+        *order;    /* the jobs in the order to hand them out (a permutation), or NULL: 0, 1, ... */
+    size_t size;   /* bytes of one result */
+    void *results; /* njobs * size bytes: job j's result at j * size */
+    int workers;   /* processes; <= 1 runs every job in this process, in `order` */
     sus_sys_job_fn run;
     sus_sys_done_fn done; /* or NULL */
     void *ctx;

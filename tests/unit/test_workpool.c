@@ -35,7 +35,8 @@ static void job(int j, void *result, void *vctx)
     double *r = result, s = 0.0;
     if (j == c->die_at && getpid() != c->parent)
         _exit(7);
-    for (int k = 1; k <= 1000; k++) s += sin(j * 0.37 + k) / k;
+    for (int k = 1; k <= 1000; k++)
+        s += sin(j * 0.37 + k) / k;
     r[0] = s, r[1] = exp(-j * 0.1), r[2] = j;
 }
 
@@ -51,12 +52,14 @@ static int run(int workers, int reversed, double r[NJOBS][3], int *bad_calls)
 {
     int order[NJOBS];
     pool_ctx c = {.parent = getpid(), .die_at = -1};
-    for (int j = 0; j < NJOBS; j++) order[j] = reversed ? NJOBS - 1 - j : j;
+    for (int j = 0; j < NJOBS; j++)
+        order[j] = reversed ? NJOBS - 1 - j : j;
     const sus_sys_pool p = {NJOBS, order, sizeof r[0], r, workers, job, done, &c};
     char err[256];
     const int rc = sus_sys_pool_run(&p, err, sizeof err);
     *bad_calls = 0;
-    for (int j = 0; j < NJOBS; j++) *bad_calls += c.calls[j] != 1;
+    for (int j = 0; j < NJOBS; j++)
+        *bad_calls += c.calls[j] != 1;
     return rc;
 }
 
@@ -114,8 +117,10 @@ static void maps_same(void)
     enum { NH = 3, NA = 4 };
     const double hs[NH] = {0.01, 1.0, 100.0};
     const int nm = sus_step_method_count(), n = nm * NH * NA;
-    sus_lab_stab_result *one = calloc((size_t)n, sizeof *one), *two = calloc((size_t)n, sizeof *one),
-                        *three = calloc((size_t)n, sizeof *one), *direct = calloc((size_t)n, sizeof *one);
+    sus_lab_stab_result *one = calloc((size_t)n, sizeof *one),
+                        *two = calloc((size_t)n, sizeof *one),
+                        *three = calloc((size_t)n, sizeof *one),
+                        *direct = calloc((size_t)n, sizeof *one);
     if (!one || !two || !three || !direct) {
         CHECK(0, "out of memory");
         return;
@@ -134,7 +139,8 @@ static void maps_same(void)
     CHECK(rc == 0 && same_results(one, two, n) && same_results(one, three, n) &&
               same_results(one, direct, n),
           "the stability map of %d methods, h = 0.01, 1, 100, %d starts: one process, two, three, "
-          "and the rows by hand are the same bytes (rc %d)", nm, NA, rc);
+          "and the rows by hand are the same bytes (rc %d)",
+          nm, NA, rc);
     free(one), free(two), free(three), free(direct);
 }
 
