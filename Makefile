@@ -229,8 +229,11 @@ $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 # checked through a stamp, as the check profile's are, so that `make -q figures` answers 0 when
 # every figure is up to date (an always-run prerequisite would make it answer 1 for ever). The
 # last line says what was written and where; not under -q, where a recipe would make `figures`
-# out of date for ever.
-figures: $(FIGS:%=figures/%.pdf) animation $(BENCH_FIGS)
+# out of date for ever. The two long ones come first, so that under make -j the short ones fill
+# the cores beside them instead of leaving one of them to run alone at the end (figure_stability
+# splits its own runs across the cores: figure_stability --jobs N, SUSLOV_JOBS).
+figures: figures/stability.pdf animation $(filter-out figures/stability.pdf,$(FIGS:%=figures/%.pdf)) \
+         $(BENCH_FIGS)
 ifeq ($(findstring q,$(firstword -$(MAKEFLAGS))),)
 	@echo "figures: $(words $(FIGS)) figures in figures/ (NAME.pdf, a NAME.png preview, the caption" \
 	    "NAME.txt) with their data in data/NAME.csv; the bench's two from its recorded run" \

@@ -50,9 +50,19 @@ static int step_class(const sus_model *m, const sus_stepper_type *st, double eps
     return -1;
 }
 
-/* A run whose state repeats bit for bit within SUS_LAB_STAB_CYCLE steps (a cycle of the step map,
- * which is deterministic) repeats for ever: its remaining steps are skipped and w_N is read off
- * the cycle; nothing they could meet is missed. */
+/* Where a run stops before its N steps, and why its result cannot differ from the full run's.
+ * A run's result is fixed by the first step whose class (step_class) is not -1, else by w_N.
+ *   - A failure (blow-up, solver, regularity) ends the run at its step: by definition the class is
+ *     that of the first failing step, and no later step is looked at.
+ *   - A state that repeats bit for bit, w_k = w_{k-p} with p <= SUS_LAB_STAB_CYCLE (a converged
+ *     steady rotation is p = 1, a round-off cycle about it p > 1). The step and step_class are
+ *     functions of (m, eps, w) alone: a fixed step keeps no state between calls, and the build
+ *     rounds the same bits the same way (no fused multiply-add, no threads). So w_{k+j} =
+ *     w_{k-p+j} for every j: the steps k+1 .. N only revisit states k-p .. k-1, each of which
+ *     already stepped with class -1 (no failure can come), and w_N = w_{k-p+(N-k) mod p}.
+ * Nothing earlier: GOOD and WRONG_LIMIT are read from w_N, and the map records |w_N - w_inf| to
+ * six digits; a run that still moves can change them, so a bound that decides the class alone
+ * (a contraction towards a limit, an energy that has left the ellipse) is no licence to stop. */
 #define SUS_LAB_STAB_CYCLE 8
 
 /* The period p <= SUS_LAB_STAB_CYCLE with w = ring[(k - p) % CYCLE], or 0. */
