@@ -49,13 +49,13 @@ scratch=$(mktemp -d)
 stab=""
 s0=$(date +%s.%N)
 "$B/figure_stability" "$scratch" "$scratch" >/dev/null 2>&1 && stab=$(secs "$s0" "$(date +%s.%N)")
+# one program, run by xargs: sh -c's $0 is the scratch directory, $1 the program
+# shellcheck disable=SC2016
+run_one='case $1 in */animation) exec "$1" data/animation.cfg "$0" "$0" ;; *) exec "$1" "$0" "$0" ;; esac'
 f0=$(date +%s.%N)
 for f in "$B/figure_stability" "$B/animation" "$B"/figure_*; do
     [ -f "$f" ] && [ -x "$f" ] && echo "$f"
-done | awk '!seen[$0]++' | xargs -d '\n' -P 2 -n 1 sh -c 'case $1 in
-    */animation) exec "$1" data/animation.cfg "$0" "$0" ;;
-    *) exec "$1" "$0" "$0" ;;
-    esac' "$scratch" >/dev/null 2>&1
+done | awk '!seen[$0]++' | xargs -d '\n' -P 2 -n 1 sh -c "$run_one" "$scratch" >/dev/null 2>&1
 f1=$(date +%s.%N)
 rm -rf "$scratch"
 awk -v c="$(secs "$c0" "$c1")" -v f="$(secs "$f0" "$f1")" -v s="${stab:-nan}" -v n="$(nproc)" 'BEGIN {
