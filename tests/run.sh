@@ -92,7 +92,7 @@ if [ "$mode" != ledger ]; then
     st_begin "CLI tests" "$(ls tests/cli/test_*.sh | wc -l)"
     for c in tests/cli/test_*.sh; do run "$(basename "$c" .sh)" sh "$c" "$B"; done
     st_end "CLI tests" "$(echo $st_names | wc -w) scripts"
-    st_begin "build checks" 8
+    st_begin "build checks" 9
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
@@ -101,6 +101,8 @@ if [ "$mode" != ledger ]; then
     run eqmap sh tools/eqmap.sh check
     run doc_links sh tests/build/doc_links.sh
     run doc_facts sh tests/build/doc_facts.sh
+    # the steps of docs/howto/add-a-method.md, taken in a scratch copy of the tree and build
+    run scaffold_method sh tests/build/scaffold_method.sh "$B"
     st_end "build checks" "$(echo $st_names | tr ' ' ',' | sed 's/,/, /g')"
 fi
 if [ "$mode" != test ]; then
