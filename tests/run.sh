@@ -96,6 +96,7 @@ if [ "$mode" != ledger ]; then
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
+    run format sh tests/build/format.sh
     run mutants_fresh sh tests/build/mutants_fresh.sh
     run history sh tests/build/history.sh
     run eqmap sh tools/eqmap.sh check
