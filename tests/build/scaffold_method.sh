@@ -54,7 +54,7 @@ awk -v dir="$S/steps" '
     code && /^ *```$/ { code = 0; close(dir "/" step); close(dir "/" step ".how"); next }
     code { print substr($0, ind + 1) >>(dir "/" step) }
     END { for (k = 1; k <= last; k++) if (!seen[k]) bad("step " k " has no block")
-          print last >(dir "/count"); exit err }' "$GUIDE" || finish
+          print last >(dir "/count"); exit err }' "$GUIDE" || { fail=$((fail + 1)); finish; }
 n=$(cat "$S/steps/count")
 check "$GUIDE lists numbered steps ($n)" test "$n" -ge 1
 
@@ -85,6 +85,23 @@ list_add() {
         { print }
         END { exit !done }' "$1" >"$S/list.tmp" && mv "$S/list.tmp" "$1"
 }
+# The guide formats with clang-format 14 (tests/build/format.sh's version); without it, a stand-in
+# that changes nothing takes its place and the formatting is not checked.
+cf=""
+for c in clang-format-14 clang-format; do
+    command -v "$c" >/dev/null 2>&1 && "$c" --version | grep -q 'version 14\.' && { cf=$c; break; }
+done
+if [ "$cf" != clang-format ]; then
+    mkdir -p "$S/bin"
+    if [ -n "$cf" ]; then
+        printf '#!/bin/sh\nexec %s "$@"\n' "$cf" >"$S/bin/clang-format"
+    else
+        echo "SKIP scaffold_method: clang-format 14 is not installed: the steps' files not formatted"
+        printf '#!/bin/sh\nexit 0\n' >"$S/bin/clang-format"
+    fi
+    chmod +x "$S/bin/clang-format"
+    PATH="$S/bin:$PATH"
+fi
 # run FILE: the commands of FILE, quiet unless they fail
 run_block() { sh -e "$1" >run.log 2>&1 || { sed 's/^/    /' run.log; return 1; }; }
 k=1
@@ -104,6 +121,13 @@ while [ "$k" -le "$n" ]; do
     k=$((k + 1))
 done
 [ "$fail" = 0 ] || finish
+
+# The C files the steps wrote are as the formatter leaves them.
+if [ -n "$cf" ]; then
+    for f in $(awk '($1 == "new" || $1 == "list") && $2 ~ /\.[ch]$/ { print $2 }' steps/*.how); do
+        check "$f is as clang-format leaves it" "$cf" --dry-run -Werror "$f"
+    done 2>/dev/null
+fi
 
 # The method the steps add: the name in the new stepper type.
 name=$(sed -n 's/^ *\.name = "\([^"]*\)".*/\1/p' $(awk '$1 == "new" { print $2 }' steps/*.how) |

@@ -134,7 +134,8 @@ static void prepare(void)
     ledger_number("EnergyZero", sus_energy(&P.m, SUS_PAPER_OMEGA0));
     ledger_number("SteadyOmegaOne", winf[0]);
     ledger_number("SteadyOmegaTwo", winf[1]);
-    if (only < 0 && sus_lab_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
+    if (only < 0 &&
+        sus_lab_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
         ledger_die("the convergence sweep");
     for (int k = 0; k < BODIES_COUNT; k++)
         claims_body_get(k);

@@ -58,10 +58,10 @@ static const double T0_PAPER[NT] = {3.0, 7.0, 12.0}; /* starts in the transient,
 typedef struct {
     body b;
     sus_model m;
-    double s;                   /* the body's own time (check_body_time) */
-    double rate_s;              /* max(k, |w|) s: the fastest rate of the motion, of w or of R */
-    double size_w, cond;        /* the largest |w| at 0 and the starts; cond(I_m) */
-    double w[NT][3];            /* w(t0) */
+    double s;            /* the body's own time (check_body_time) */
+    double rate_s;       /* max(k, |w|) s: the fastest rate of the motion, of w or of R */
+    double size_w, cond; /* the largest |w| at 0 and the starts; cond(I_m) */
+    double w[NT][3];     /* w(t0) */
     double w_exact[NT][NEPS][2];
     double Phi[NT][NEPS][3][3]; /* R(t0)^{-1} R(t0 + eps_j) */
 } body_ref;
@@ -119,8 +119,8 @@ static double step_error(const sus_stepper_type *st, const body_ref *r, int rc, 
     sus_quat_to_attitude(q, &att);
     sus_attitude_get(&att, R0);
     const double eps = eps_paper(j) * r->s;
-    if (sus_stepper_full(st, &r->m, eps, (sus_recon)rc, &att, r->w[i], wn, &lam, &ss)
-        != SUS_STEPPER_OK)
+    if (sus_stepper_full(st, &r->m, eps, (sus_recon)rc, &att, r->w[i], wn, &lam, &ss) !=
+        SUS_STEPPER_OK)
         return *dw = NAN;
     sus_attitude_get(&att, R);
     sus_mat3_mul(want, R0, r->Phi[i][j]);
@@ -168,11 +168,11 @@ static reading read_order(const double e[NEPS], double floor, double reach)
 
 /* What the readings of one quantity over the bodies came to. */
 typedef struct {
-    int n[3];             /* bodies per tier */
-    int bad;              /* readings off their expectation */
-    double worst;         /* the asymptotic slope farthest from q */
-    double least;         /* the smallest lower estimate */
-    const char *where;    /* the body of the first bad reading */
+    int n[3];          /* bodies per tier */
+    int bad;           /* readings off their expectation */
+    double worst;      /* the asymptotic slope farthest from q */
+    double least;      /* the smallest lower estimate */
+    const char *where; /* the body of the first bad reading */
 } tally;
 
 static void tally_add(tally *t, reading rd, int q, const char *bname)
@@ -191,13 +191,14 @@ static void tally_add(tally *t, reading rd, int q, const char *bname)
         t->where = bname;
 }
 
-static void tally_check(const tally *t, const char *method, const char *what, int q, const char *ref)
+static void tally_check(const tally *t, const char *method, const char *what, int q,
+                        const char *ref)
 {
     CHECK(t->bad == 0 && t->n[1] + t->n[2] > 0,
           "%s, %s: local order expected %d (%s): within %.1f on %d bodies (farthest %.2f), >= "
           "%d/2 on %d (least %.2f), at round-off on %d; %d off%s%s",
-          method, what, q, ref, SLOPE_TOL, t->n[2], t->worst, q, t->n[1], t->least, t->n[0],
-          t->bad, t->bad ? ", first on " : "", t->bad ? t->where : "");
+          method, what, q, ref, SLOPE_TOL, t->n[2], t->worst, q, t->n[1], t->least, t->n[0], t->bad,
+          t->bad ? ", first on " : "", t->bad ? t->where : "");
 }
 
 static void check_method(const sus_stepper_type *st, const body_ref *refs, int nb)
