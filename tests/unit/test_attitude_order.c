@@ -19,11 +19,13 @@
  * that distance) a geometric majorant of the series moves the halving's slope by at most
  * log2((1 - 1/8) / (1 - 1/4)) = 0.22: there the slope is asserted within SLOPE_TOL of q. Where
  * only larger steps stand above the floor (a high order, or a stiff body whose attitude turns
- * little in its own time), the slope is a lower estimate, asserted >= q / 2 as the ledger does;
- * a body whose errors are at round-off at every step is not judged, and each line says on how
- * many bodies each reading was made. The SO(3) order is TeoL's min(r, p): the attitude's measured
- * r, and p as theory states it. Every expected order is the theory's (tests/ledger/
- * expected_orders.c), never the stepper's own description. */
+ * little in its own time), the slope is a lower estimate, asserted >= q / 2 as the ledger does:
+ * that cannot tell q from q - 1 (the ledger's long-run lines can), but a mutant that breaks
+ * consistency (order 0) or a symmetric method's symmetry (order 1) falls below q / 2 wherever
+ * q >= 3. A body whose errors are at round-off at every step is not judged, and each line says on
+ * how many bodies each reading was made; a line with no reading at all fails. The SO(3) order is
+ * TeoL's min(r, p): the attitude's measured r, and p as theory states it. Every expected order is
+ * the theory's (tests/ledger/ expected_orders.c), never the stepper's own description. */
 #include "check_body.h"
 #include "expected_orders.h"
 #include "mat3.h"
@@ -194,11 +196,17 @@ static void tally_add(tally *t, reading rd, int q, const char *bname)
 static void tally_check(const tally *t, const char *method, const char *what, int q,
                         const char *ref)
 {
+    char asym[64] = "", low[64] = "", off[64] = "";
+    if (t->n[2])
+        snprintf(asym, sizeof asym, " (farthest %.2f, within %.1f)", t->worst, SLOPE_TOL);
+    if (t->n[1])
+        snprintf(low, sizeof low, " (least %.2f, >= %d/2)", t->least, q);
+    if (t->bad)
+        snprintf(off, sizeof off, "; %d off, first on %s", t->bad, t->where);
     CHECK(t->bad == 0 && t->n[1] + t->n[2] > 0,
-          "%s, %s: local order expected %d (%s): within %.1f on %d bodies (farthest %.2f), >= "
-          "%d/2 on %d (least %.2f), at round-off on %d; %d off%s%s",
-          method, what, q, ref, SLOPE_TOL, t->n[2], t->worst, q, t->n[1], t->least, t->n[0], t->bad,
-          t->bad ? ", first on " : "", t->bad ? t->where : "");
+          "%s, %s: local order %d expected (%s): asymptotic on %d bodies%s, a lower estimate on "
+          "%d%s, at round-off on %d%s",
+          method, what, q, ref, t->n[2], asym, t->n[1], low, t->n[0], off);
 }
 
 static void check_method(const sus_stepper_type *st, const body_ref *refs, int nb)
