@@ -158,12 +158,13 @@ grep '^FAIL' fresh.log
 
 # Each mutant the steps add to tests/build/mutants dies in the attitude-order test: applied (its
 # text occurs once: mutants_fresh), built, run, and the file put back as it was.
+# Its fields are separated by " | " (tools/mutants.sh): here by tabs.
 : >mutants.add
 for f in $(awk '$1 == "append" && $2 == "tests/build/mutants" { print FILENAME }' steps/*.how); do
-    grep -v '^#' "${f%.how}" >>mutants.add
+    awk -F' [|] ' '!/^#/ && NF >= 4 { print $1 "\t" $2 "\t" $3 "\t" $4 }' "${f%.how}" >>mutants.add
 done
-while IFS='|' read -r file from to why <&3; do
-    file=$(echo $file) from=${from# } from=${from% } to=${to# } to=${to% }
+tab=$(printf '\t')
+while IFS=$tab read -r file from to why <&3; do
     cp -p "$file" mutant.orig
     awk -v a="$from" -v b="$to" '{ i = index($0, a) }
         i { $0 = substr($0, 1, i - 1) b substr($0, i + length(a)) } { print }' mutant.orig >"$file"
@@ -171,7 +172,7 @@ while IFS='|' read -r file from to why <&3; do
     make -s build/test_attitude_order >/dev/null 2>&1 && ! build/test_attitude_order >/dev/null &&
         rc=0
     check "the mutant '$to' of $file ($why) dies in test_attitude_order" test $rc = 0
-    cp -p mutant.orig "$file"
+    cp mutant.orig "$file" # a new time: make builds the file again
 done 3<mutants.add
 make -s build/test_attitude_order >/dev/null 2>&1
 
