@@ -92,10 +92,11 @@ if [ "$mode" != ledger ]; then
     st_begin "CLI tests" "$(ls tests/cli/test_*.sh | wc -l)"
     for c in tests/cli/test_*.sh; do run "$(basename "$c" .sh)" sh "$c" "$B"; done
     st_end "CLI tests" "$(echo $st_names | wc -w) scripts"
-    st_begin "build checks" 8
+    st_begin "build checks" 9
     run make_deps sh tests/build/make_deps.sh "$B"
     run layers sh tests/build/layers.sh
     run style sh tests/build/style.sh
+    run format sh tests/build/format.sh
     run mutants_fresh sh tests/build/mutants_fresh.sh
     run history sh tests/build/history.sh
     run eqmap sh tools/eqmap.sh check

@@ -4,7 +4,7 @@
 # Usage: deps.sh [PROFILE], PROFILE one of
 #   check    the C compiler $CC (gcc, or clang for CC=clang), a C++ compiler (the install test
 #            builds a C++ program against the library), make, pkg-config, GSL, Cairo, OSMesa,
-#            a font (make check)
+#            a font, clang-format 14 (make check)
 #   figures  check + ffmpeg (make figures: the animation's video)
 #   paper    figures + TeX Live (make paper; the default). make paper quotes the recorded
 #            bench run (data/bench-recorded/) and runs no bench
@@ -34,6 +34,8 @@ if ! have "$cxx"; then
     case $(basename "$cxx") in clang++*) missing="$missing clang" ;; *) missing="$missing g++" ;; esac
 fi
 have make || missing="$missing make"
+# make test's format check runs Debian 12's clang-format (tests/build/format.sh)
+have clang-format-14 || missing="$missing clang-format-14"
 have pkg-config || missing="$missing pkg-config"
 # pkg-config module:Debian package
 for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev; do

@@ -15,10 +15,7 @@ int sus_args_model_ready(const sus_model *m)
     return sus_model_init(&ref, I, NULL, 0) == 0 && memcmp(&ref, m, sizeof ref) == 0;
 }
 
-int sus_args_finite2(const double w[2])
-{
-    return w && isfinite(w[0]) && isfinite(w[1]);
-}
+int sus_args_finite2(const double w[2]) { return w && isfinite(w[0]) && isfinite(w[1]); }
 
 /* The pointers and the model every run needs. */
 static const char *common(const void *cfg, const sus_model *model, const double w0[2],

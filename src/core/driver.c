@@ -8,8 +8,8 @@ int sus_row_finite(const sus_row *r)
 {
     if (!r)
         return 0;
-    int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2])
-          && isfinite(r->lambda);
+    int ok = isfinite(r->t) && isfinite(r->w[0]) && isfinite(r->w[1]) && isfinite(r->w[2]) &&
+             isfinite(r->lambda);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             ok = ok && isfinite(r->R[i][j]);
@@ -30,7 +30,8 @@ static int state_finite(const double w[3], double lambda, const sus_attitude *a)
 {
     int ok = isfinite(w[0]) && isfinite(w[1]) && isfinite(w[2]) && isfinite(lambda);
     if (a->r_stale)
-        return ok && isfinite(a->q[0]) && isfinite(a->q[1]) && isfinite(a->q[2]) && isfinite(a->q[3]);
+        return ok && isfinite(a->q[0]) && isfinite(a->q[1]) && isfinite(a->q[2]) &&
+               isfinite(a->q[3]);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             ok = ok && isfinite(a->hi[i][j]);
@@ -38,7 +39,7 @@ static int state_finite(const double w[3], double lambda, const sus_attitude *a)
 }
 
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
-               sus_run_report *report)
+            sus_run_report *report)
 {
     const char *bad = sus_args_run(cfg, w0, emit, report, 1);
     if (bad)
@@ -56,8 +57,8 @@ int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, voi
     for (long k = 0; k < cfg->steps; k++) {
         double w_next[3], lambda;
         sus_stepper_stats st;
-        const int status = sus_stepper_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att, row.w,
-                                            w_next, &lambda, &st);
+        const int status = sus_stepper_full(cfg->stepper, cfg->model, cfg->eps, cfg->recon, &att,
+                                            row.w, w_next, &lambda, &st);
         report->sus_newton_iterations += st.iterations;
         if (st.iterations > report->max_iterations)
             report->max_iterations = st.iterations;

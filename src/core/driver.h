@@ -16,9 +16,9 @@ typedef struct {
     const sus_model *model;
     const sus_stepper_type *stepper;
     sus_recon recon;
-    double eps;   /* the time step */
-    long steps;   /* N */
-    long every;   /* K: rows for k = 0, K, 2K, ... and always k = N */
+    double eps; /* the time step */
+    long steps; /* N */
+    long every; /* K: rows for k = 0, K, 2K, ... and always k = N */
 } sus_run_config;
 
 /* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
@@ -52,11 +52,11 @@ typedef int (*sus_emit_fn)(void *ctx, const sus_row *row);
 /* What every run function (sus_run, sus_run_tol, sus_run_exact, sus_lab_series_run) returns:
  * one convention, with "emit asked to stop" distinct from every failure. */
 typedef enum {
-    SUS_RUN_STOPPED = -1,          /* emit returned non-zero (e.g. a write error) */
+    SUS_RUN_STOPPED = -1, /* emit returned non-zero (e.g. a write error) */
     SUS_RUN_OK = 0,
-    SUS_RUN_STEP_FAILED = 1,       /* a step's solver failed: report->status, ->stats */
-    SUS_RUN_BLOWUP = 2,            /* w, lambda or R became non-finite at report->step */
-    SUS_RUN_BAD_ARGUMENT = 3       /* refused before row 0: report->message says which argument */
+    SUS_RUN_STEP_FAILED = 1, /* a step's solver failed: report->status, ->stats */
+    SUS_RUN_BLOWUP = 2,      /* w, lambda or R became non-finite at report->step */
+    SUS_RUN_BAD_ARGUMENT = 3 /* refused before row 0: report->message says which argument */
 } sus_run_status;
 
 typedef struct {
@@ -64,8 +64,8 @@ typedef struct {
     long step;               /* index k+1 of the step that failed (the row k for the exact run) */
     double t;                /* its time t_{k+1} */
     sus_stepper_stats stats; /* of the failed step */
-    long sus_newton_iterations;  /* total over the run */
-    int max_iterations;      /* per step */
+    long sus_newton_iterations; /* total over the run */
+    int max_iterations;         /* per step */
     /* SUS_RUN_BAD_ARGUMENT: which argument is wrong and why, one line (a static string); NULL
      * for every other outcome. */
     const char *message;
@@ -91,7 +91,7 @@ int sus_row_finite(const sus_row *r);
  * Returns a sus_run_status: SUS_RUN_OK, _STEP_FAILED or _BLOWUP (see report), _STOPPED, or
  * _BAD_ARGUMENT (above). A row that is not finite is never emitted: the run stops with _BLOWUP. */
 int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
-               sus_run_report *report);
+            sus_run_report *report);
 /* The same for a tolerance-driven stepper (sus_run refuses one with SUS_RUN_BAD_ARGUMENT, as it
  * has no tolerance): report->step is the step that failed, report->t the time it started from.
  * It refuses with SUS_RUN_BAD_ARGUMENT (above) a stepper without tol (a fixed-step method) or

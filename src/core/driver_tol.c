@@ -17,11 +17,13 @@ typedef struct {
     double h_last; /* the last accepted step */
 } tol_run;
 
-static int fail(tol_run *r, sus_run_report *report, int rc, long step, double t, const sus_stepper_stats *st)
+static int fail(tol_run *r, sus_run_report *report, int rc, long step, double t,
+                const sus_stepper_stats *st)
 {
     report->step = step;
     report->t = t;
-    if (st) report->stats = *st;
+    if (st)
+        report->stats = *st;
     r->ops->free(r->wk);
     return rc;
 }
@@ -31,7 +33,8 @@ static int emit_row(tol_run *r, sus_row *row, const sus_attitude *att, sus_emit_
                     sus_run_report *report)
 {
     sus_attitude_get(att, row->R);
-    if (!sus_row_finite(row)) return fail(r, report, SUS_RUN_BLOWUP, row->k, row->t, NULL);
+    if (!sus_row_finite(row))
+        return fail(r, report, SUS_RUN_BLOWUP, row->k, row->t, NULL);
     if (emit(ctx, row)) {
         r->ops->free(r->wk);
         return SUS_RUN_STOPPED;
@@ -52,7 +55,8 @@ static int dense_rows(tol_run *r, double t0, sus_emit_fn emit, void *ctx, sus_ru
         sus_attitude a = r->att;
         r->ops->dense(r->wk, tj - t0, d.w, &d.lambda, &a);
         const int rc = emit_row(r, &d, &a, emit, ctx, report);
-        if (rc != SUS_RUN_OK) return rc;
+        if (rc != SUS_RUN_OK)
+            return rc;
     }
     return SUS_RUN_OK;
 }
@@ -63,7 +67,8 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
     const char *bad = sus_args_tol(cfg, w0, emit, report);
     if (bad)
         return sus_args_refuse(report, bad);
-    tol_run r = {.cfg = cfg, .ops = cfg->stepper->tol, .row = {.w = {w0[0], w0[1], 0.0}}, .next_out = 1};
+    tol_run r = {
+        .cfg = cfg, .ops = cfg->stepper->tol, .row = {.w = {w0[0], w0[1], 0.0}}, .next_out = 1};
     *report = (sus_run_report){.status = SUS_STEPPER_OK};
     r.row.lambda = sus_lagmult(cfg->model, r.row.w);
     sus_attitude_identity(&r.att);
@@ -75,23 +80,28 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
     while (rc == SUS_RUN_OK && r.row.t < cfg->t_end) {
         const double t0 = r.row.t;
         sus_stepper_stats st = {.det = r.h_last};
-        if (cfg->max_steps > 0 && r.row.k >= cfg->max_steps) { /* the budget is spent short of t_end */
+        /* the budget is spent short of t_end */
+        if (cfg->max_steps > 0 && r.row.k >= cfg->max_steps) {
             report->status = SUS_STEPPER_STEP_LIMIT;
             return fail(&r, report, SUS_RUN_STEP_FAILED, r.row.k + 1, t0, &st);
         }
-        const int status = r.ops->step(r.wk, cfg->t_end, &r.row.t, r.row.w, &r.row.lambda, &r.att, &st);
+        const int status =
+            r.ops->step(r.wk, cfg->t_end, &r.row.t, r.row.w, &r.row.lambda, &r.att, &st);
         report->sus_newton_iterations += st.iterations; /* here: the rejected tries */
-        if (st.iterations > report->max_iterations) report->max_iterations = st.iterations;
+        if (st.iterations > report->max_iterations)
+            report->max_iterations = st.iterations;
         if (status != SUS_STEPPER_OK) {
             report->status = status;
             return fail(&r, report, SUS_RUN_STEP_FAILED, r.row.k + 1, t0, &st);
         }
         r.row.k++;
         r.h_last = r.row.t - t0;
-        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK) return rc;
+        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK)
+            return rc;
         if (cfg->every_time <= 0.0 || r.row.t >= cfg->t_end)
             rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);
     }
-    if (rc == SUS_RUN_OK) r.ops->free(r.wk);
+    if (rc == SUS_RUN_OK)
+        r.ops->free(r.wk);
     return rc;
 }

@@ -12,7 +12,7 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
         *ex = (sus_exact){.model = NULL, .r = NAN, .k = NAN, .w0 = {NAN, NAN}};
         return -1;
     }
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     ex->model = m;
     ex->w0[0] = w0[0];
     ex->w0[1] = w0[1];
@@ -41,7 +41,7 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     ex->sb = v2 / vn;
     const double C = (ex->cb * u1 + ex->sb * u2) / ex->r;
     const double S = (ex->cb * u2 - ex->sb * u1) / ex->r;
-    if (C == 0.0) {  /* an equilibrium: c(w0) = 0 */
+    if (C == 0.0) { /* an equilibrium: c(w0) = 0 */
         ex->fixed = 1;
         return 0;
     }

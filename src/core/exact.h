@@ -26,12 +26,12 @@ extern "C" {
 
 typedef struct {
     const sus_model *model;
-    double l11, l21, l22;  /* Cholesky factor of I_m */
-    double r;              /* |u| = sqrt(2E) */
-    double cb, sb;         /* (cos beta, sin beta) */
-    double k;              /* rate of approach to the steady rotation */
+    double l11, l21, l22; /* Cholesky factor of I_m */
+    double r;             /* |u| = sqrt(2E) */
+    double cb, sb;        /* (cos beta, sin beta) */
+    double k;             /* rate of approach to the steady rotation */
     double sigma, s0;
-    int fixed;             /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0) */
+    int fixed; /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0) */
     double w0[2];
 } sus_exact;
 

@@ -19,10 +19,10 @@ extern "C" {
 #endif
 
 typedef struct {
-    double M[2][2];  /* w = c + M (sech s, tanh s) */
-    double c[2];     /* 0, or w0 for a motion that stays at w0 (exact.h's fixed): then M = 0 */
-    double s0, ks;   /* s = s0 + ks t, ks = sigma k */
-    double winf[2];  /* w(t -> infinity), sus_exact_limit */
+    double M[2][2]; /* w = c + M (sech s, tanh s) */
+    double c[2];    /* 0, or w0 for a motion that stays at w0 (exact.h's fixed): then M = 0 */
+    double s0, ks;  /* s = s0 + ks t, ks = sigma k */
+    double winf[2]; /* w(t -> infinity), sus_exact_limit */
 } sus_exact_fast;
 
 /* From a closed form that sus_exact_init accepted; returns 0, or -1 (f then gives NaN) when ex or

@@ -17,8 +17,8 @@ double sus_exact_reference_steps(const sus_model *m, const double w0[2], double 
     return (double)(fminl(T, ra.t_s) / ra.h);
 }
 
-int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
-                     void *ctx, sus_run_report *report)
+int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
+                  sus_run_report *report)
 {
     const char *bad = sus_args_run(cfg, w0, emit, report, 0);
     if (bad)

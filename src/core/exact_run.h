@@ -22,8 +22,8 @@ extern "C" {
  * before the run. */
 double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T);
 
-int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
-                     void *ctx, sus_run_report *report);
+int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
+                  sus_run_report *report);
 
 #ifdef __cplusplus
 }

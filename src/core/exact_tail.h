@@ -2,7 +2,8 @@
  * a bound of the integral of |w - w_inf| from t to infinity. It bounds what replacing w by w_inf
  * from t on does to the attitude: two solutions of R' = R w^ from the same R(t), one along w and
  * one along w_inf, differ at any later time by at most that integral (their difference obeys
- * D' = D w^ + R_inf (w - w_inf)^, and the flow of D' = D w^ keeps norms; in quaternions, half of it).
+ * D' = D w^ + R_inf (w - w_inf)^, and the flow of D' = D w^ keeps norms; in quaternions, half of
+ * it).
  *
  * Derivation. With a = sigma s = sigma s0 + k t (exact.h), (cos psi, sin psi) = (sigma sech a,
  * tanh a) and the steady rotation is (0, 1); the distance between them is

@@ -12,7 +12,7 @@ typedef struct {
 
 static void exact_l_init(exact_l *e, const sus_model *m, const double w0[2])
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     e->l11 = sqrtl(I[0][0]);
     e->l21 = I[1][0] / e->l11;
     e->l22 = sqrtl(I[1][1] - e->l21 * e->l21);

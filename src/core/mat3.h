@@ -73,9 +73,9 @@ static inline double sus_mat3_dist(const double A[3][3], const double B[3][3])
 
 static inline double sus_mat3_det(const double A[3][3])
 {
-    return A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1])
-         - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0])
-         + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    return A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+           A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+           A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
 }
 
 /* Ainv = A^{-1} by cofactors; returns -1 (Ainv untouched) when det A is 0 or not a number. */

@@ -9,7 +9,8 @@ const double SUS_PAPER_OMEGA0[2] = {0.4, 0.5};
 /* ||M||_2, the larger singular value of the 2x2 matrix [[a, b], [c, d]] in closed form,
  * (hypot(a + d, c - b) + hypot(a - d, c + b)) / 2: no entry is squared, so it overflows only where
  * the norm itself is near the largest double; rounded up by a few ulps (each hypot is within an
- * ulp, the sums within u (|a| + |d|) <= 2 u ||M||), so that the bound stays a bound after rounding. */
+ * ulp, the sums within u (|a| + |d|) <= 2 u ||M||), so that the bound stays a bound after rounding.
+ */
 static double norm2x2(const double M[2][2])
 {
     const double a = M[0][0], b = M[0][1], c = M[1][0], d = M[1][1];
@@ -59,8 +60,9 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
     }
     m->det_m = sus_cross_diff(I[0], I[4], I[1], I[3]);
     if (!(I[0] > 0.0) || !(m->det_m > 0.0)) {
-        snprintf(err, errlen, "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)",
-                 I[0], I[4], I[1]);
+        snprintf(err, errlen,
+                 "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[0], I[4],
+                 I[1]);
         return -1;
     }
     m->b[0] = I[6];
@@ -86,7 +88,7 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
         J[0][0] = J[0][1] = J[1][0] = J[1][1] = NAN;
         return;
     }
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double d = m->det_m, c = sus_c(m, w);
     const double p = I[1][1] * w[1] + I[0][1] * w[0];
     const double q = I[1][0] * w[1] + I[0][0] * w[0];
@@ -101,7 +103,8 @@ double sus_energy(const sus_model *m, const double w[2])
 {
     if (!m || !w)
         return NAN;
-    const double (*I)[3] = m->I;
-    return 0.5 * (w[0] * (I[0][0] * w[0] + I[0][1] * w[1])
-                  + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]));
+    const double(*I)[3] = m->I;
+    const double e2 =
+        w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
+    return 0.5 * e2;
 }

@@ -87,10 +87,9 @@ static inline double sus_lagmult(const sus_model *m, const double w[2])
 {
     if (!m || !w)
         return NAN;
-    const double (*I)[3] = m->I;
-    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1])
-         - w[1] * (I[0][0] * w[0] + I[0][1] * w[1])
-         + sus_lagmult_o0(m, w);
+    const double(*I)[3] = m->I;
+    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1]) - w[1] * (I[0][0] * w[0] + I[0][1] * w[1]) +
+           sus_lagmult_o0(m, w);
 }
 double sus_energy(const sus_model *m, const double w[2]);
 

@@ -27,8 +27,8 @@ static inline void sus_quat_mul(double p[4], const double a[4], const double b[4
     p[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
 }
 
-/* The unit quaternion of a rotation R (Shepperd's method: the largest of 1 + tr R, 1 + 2 R_ii - tr R
- * under the square root, so no cancellation), sign fixed by q0 >= 0. */
+/* The unit quaternion of a rotation R (Shepperd's method: the largest of 1 + tr R, 1 + 2 R_ii - tr
+ * R under the square root, so no cancellation), sign fixed by q0 >= 0. */
 void sus_quat_from_rotation(const double R[3][3], double q[4]);
 
 /* R(q/|q|). */

@@ -16,10 +16,7 @@ static void nan_fill(double M[3][3])
             M[i][j] = NAN;
 }
 
-static int bad_kind(sus_recon kind)
-{
-    return (int)kind < 0 || (int)kind >= SUS_RECON_COUNT;
-}
+static int bad_kind(sus_recon kind) { return (int)kind < 0 || (int)kind >= SUS_RECON_COUNT; }
 
 void sus_attitude_identity(sus_attitude *a)
 {
@@ -72,7 +69,7 @@ void sus_quat_to_attitude(const double q[4], sus_attitude *a)
 
 /* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
 void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
-                        const double w_next[3])
+                     const double w_next[3])
 {
     double xi[3], D[3][3];
     if (!a)
@@ -93,7 +90,7 @@ void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w
 
 /* (algo), step 3, on a quaternion of R_k (reconstruct.h). */
 void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double w[3],
-                             const double w_next[3])
+                          const double w_next[3])
 {
     double xi[3], dq[4], p[4];
     if (!q)

@@ -28,7 +28,7 @@ extern const char *const SUS_RECON_NAMES[SUS_RECON_COUNT];
 extern const char *const SUS_RECON_ABOUT[SUS_RECON_COUNT];
 
 typedef struct {
-    double hi[3][3], lo[3][3];  /* R = hi + lo */
+    double hi[3][3], lo[3][3]; /* R = hi + lo */
     /* A unit quaternion of R, valid when has_q: methods that carry the attitude as a quaternion
      * (quaternion.h) keep it here so that it is not recovered from R at every step. The matrix
      * reconstructions clear has_q. */
@@ -53,12 +53,12 @@ void sus_attitude_get(const sus_attitude *a, double R[3][3]);
 
 /* (algo), step 3: advances a from R_k to R_{k+1}. */
 void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
-                        const double w_next[3]);
+                     const double w_next[3]);
 /* The same map on a quaternion q of R_k: q <- q (x) dq with dq the quaternion of cay(xi^)
  * ((1, xi/2) normalised) or of exp(xi^) ((cos |xi|/2, sin(|xi|/2) xi/|xi|)). Methods that
  * carry their attitude as a quaternion through many substeps use it (src/methods/composition.c). */
 void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double w[3],
-                             const double w_next[3]);
+                          const double w_next[3]);
 /* R <- R (I + D), accumulated with the compensated sum above: D = tau(xi) - I, small. */
 void sus_attitude_increment(sus_attitude *a, const double D[3][3]);
 /* 0 with *kind set, or -1 for an unknown name or a NULL argument. */

@@ -20,7 +20,7 @@ static long double cross_diff(double a, double b, double c, double d)
  * so a near-singular I_m costs no digits here. */
 static void chol_init(sus_refatt_chol *c, const sus_model *m)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const long double det = cross_diff(I[0][0], I[1][1], I[1][0], I[1][0]), sd = sqrtl(det);
     c->l11 = sqrtl(I[0][0]);
     c->l21 = I[1][0] / c->l11;
@@ -48,7 +48,8 @@ static void u_of_w(const sus_refatt_chol *c, const double w[2], long double u[2]
  * cancellation however near-singular I_m is. With it, the Cauchy-product recursion of the
  * quaternion kinematics q' = 1/2 q (x) (0, w), w = L^{-T} u. Coefficients are scaled,
  * U_n = u_n h^n. */
-static void precise_step(const sus_refatt_chol *co, long double h, long double u[2], long double q[4])
+static void precise_step(const sus_refatt_chol *co, long double h, long double u[2],
+                         long double q[4])
 {
     enum { P = SUS_REFATT_ORDER };
     long double U[P + 1][2], W[P + 1][2], Q[P + 1][4], C[P + 1];
@@ -89,9 +90,10 @@ static void rotation_of(const long double q[4], double R[3][3])
 {
     const long double nq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
     const long double s = q[0], x = q[1], y = q[2], z = q[3];
-    const long double Rl[3][3] = {{s * s + x * x - y * y - z * z, 2 * (x * y - s * z), 2 * (x * z + s * y)},
-                                  {2 * (x * y + s * z), s * s - x * x + y * y - z * z, 2 * (y * z - s * x)},
-                                  {2 * (x * z - s * y), 2 * (y * z + s * x), s * s - x * x - y * y + z * z}};
+    const long double Rl[3][3] = {
+        {s * s + x * x - y * y - z * z, 2 * (x * y - s * z), 2 * (x * z + s * y)},
+        {2 * (x * y + s * z), s * s - x * x + y * y - z * z, 2 * (y * z - s * x)},
+        {2 * (x * z - s * y), 2 * (y * z + s * x), s * s - x * x - y * y + z * z}};
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             R[i][j] = (double)(Rl[i][j] / nq);
@@ -103,19 +105,18 @@ static void no_answer(double R[3][3])
     rotation_of(q, R);
 }
 
-/* The proved step (refattitude.h). On the disc |t - t0| <= rho about any real t0, s = s0 + sigma k t
- * (exact.h) has |Im s| <= Y = k rho, and for s = a + iy with |y| <= Y < pi/2
- *     |sech s|^2 = 1 / (sinh^2 a + cos^2 y) <= 1 / cos^2 Y,
- *     |tanh s|^2 = (sinh^2 a + sin^2 y) / (sinh^2 a + cos^2 y) <= max(1, tan^2 Y),
- * so u = r Rot(beta) sigma (sech s, tanh s) has |u| <= r g(Y), g(Y)^2 = 1 / cos^2 Y + max(1, tan^2 Y),
- * and w = L^{-T} u has |w| <= M = |L^{-1}|_F r g(Y). Cauchy's estimate: the n-th Taylor coefficient
- * of u about t0 is at most r g / rho^n. And q(t0 + z) = q(t0) (x) V(z) with V' = 1/2 V (x) (0, w):
- * right multiplication by (0, a + ib), a and b real, has norm <= |a| + |b| <= sqrt2 |w| on complex
- * quaternions, so |V| <= exp(M rho / sqrt2) on the disc and the n-th coefficient of q is at most
- * |q(t0)| exp(M rho / sqrt2) / rho^n. With x = h / rho <= 1/2, the tails past order P are at most
- * 2 x^(P+1) times r g and |q(t0)| exp(M rho / sqrt2). The step is x rho with the largest x that
- * keeps both below REFATT_TAIL relative to |u| = r and |q|. At a steady rotation (ex->fixed) w is
- * the constant w0: g = 1 and M = |w0|. */
+/* The proved step (refattitude.h). On the disc |t - t0| <= rho about any real t0, s = s0 + sigma k
+ * t (exact.h) has |Im s| <= Y = k rho, and for s = a + iy with |y| <= Y < pi/2 |sech s|^2 = 1 /
+ * (sinh^2 a + cos^2 y) <= 1 / cos^2 Y, |tanh s|^2 = (sinh^2 a + sin^2 y) / (sinh^2 a + cos^2 y) <=
+ * max(1, tan^2 Y), so u = r Rot(beta) sigma (sech s, tanh s) has |u| <= r g(Y), g(Y)^2 = 1 / cos^2
+ * Y + max(1, tan^2 Y), and w = L^{-T} u has |w| <= M = |L^{-1}|_F r g(Y). Cauchy's estimate: the
+ * n-th Taylor coefficient of u about t0 is at most r g / rho^n. And q(t0 + z) = q(t0) (x) V(z) with
+ * V' = 1/2 V (x) (0, w): right multiplication by (0, a + ib), a and b real, has norm <= |a| + |b|
+ * <= sqrt2 |w| on complex quaternions, so |V| <= exp(M rho / sqrt2) on the disc and the n-th
+ * coefficient of q is at most |q(t0)| exp(M rho / sqrt2) / rho^n. With x = h / rho <= 1/2, the
+ * tails past order P are at most 2 x^(P+1) times r g and |q(t0)| exp(M rho / sqrt2). The step is x
+ * rho with the largest x that keeps both below REFATT_TAIL relative to |u| = r and |q|. At a steady
+ * rotation (ex->fixed) w is the constant w0: g = 1 and M = |w0|. */
 #define REFATT_TAIL 0x1p-64 /* one rounding of a long double */
 
 static double step_on_disc(double rho, double M, double g)
@@ -142,24 +143,26 @@ long double sus_refatt_step(const sus_exact *ex)
     /* candidates: rho = 2^j sqrt2 / scale (the exponential's scale) and Y = k rho on a grid of
      * (0, pi/2) (the strip's); each is kept only where its Y is inside the strip */
     for (int i = 0; i < 48 + 63; i++) {
-        const double rho = i < 48 ? ldexp(sqrt(2.0) / scale, i - 24) : half_pi * (i - 47) / 64.0 / k;
+        const double rho =
+            i < 48 ? ldexp(sqrt(2.0) / scale, i - 24) : half_pi * (i - 47) / 64.0 / k;
         const double Y = k * rho;
         if (!(Y < half_pi) || !(rho > 0.0))
             continue;
-        const double c = cos(Y), t = tan(Y), g = ex->fixed ? 1.0 : sqrt(1.0 / (c * c) + fmax(1.0, t * t));
+        const double c = cos(Y), t = tan(Y),
+                     g = ex->fixed ? 1.0 : sqrt(1.0 / (c * c) + fmax(1.0, t * t));
         best = fmax(best, step_on_disc(rho, scale * g, g));
     }
     return best;
 }
 
-/* The steady tail. With a = sigma s = sigma s0 + k t (exact.h), (cos psi, sin psi) - (0, 1) has norm
- * at most sech a + (1 - tanh a) <= 2 sech a <= 4 e^{-a} for a >= 0, and w = L^{-T} u, |u| = r, so
- * |w(t) - w*| <= 4 |L^{-1}|_F r e^{-a}. Two solutions of q' = 1/2 q (x) (0, w) from the same q(t_s)
- * differ by at most half the integral of |w - w*| (their propagators are unit quaternions), which
- * is <= 2 |L^{-1}|_F r e^{-a_s} / k. Setting that to REFATT_TAIL gives a_s; past t_s the attitude
- * is the steady rotation's, q(t) = q(t_s) (x) (cos(theta/2), sin(theta/2) w* / |w*|), theta =
- * (t - t_s) |w*|, in closed form. A motion that starts at a steady rotation (ex->fixed) is in
- * its tail from the start. */
+/* The steady tail. With a = sigma s = sigma s0 + k t (exact.h), (cos psi, sin psi) - (0, 1) has
+ * norm at most sech a + (1 - tanh a) <= 2 sech a <= 4 e^{-a} for a >= 0, and w = L^{-T} u, |u| = r,
+ * so |w(t) - w*| <= 4 |L^{-1}|_F r e^{-a}. Two solutions of q' = 1/2 q (x) (0, w) from the same
+ * q(t_s) differ by at most half the integral of |w - w*| (their propagators are unit quaternions),
+ * which is <= 2 |L^{-1}|_F r e^{-a_s} / k. Setting that to REFATT_TAIL gives a_s; past t_s the
+ * attitude is the steady rotation's, q(t) = q(t_s) (x) (cos(theta/2), sin(theta/2) w* / |w*|),
+ * theta = (t - t_s) |w*|, in closed form. A motion that starts at a steady rotation (ex->fixed) is
+ * in its tail from the start. */
 static double steady_time(const sus_exact *ex)
 {
     if (ex->fixed)
@@ -191,18 +194,18 @@ static quad quad_sqrt(quad x)
 
 /* w*: psi -> pi/2 in exact.h puts it along +J b, J b = (-b2, b1) (L^{-T} J L^{-1} = J / |L|), on
  * the energy of w0: |w*| = |b| sqrt(<I_m w0, w0> / <I_m Jb, Jb>). Products of doubles are exact in
- * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*| needs
- * no more than long double: an error in it does not grow with t. */
+ * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*|
+ * needs no more than long double: an error in it does not grow with t. */
 static void steady_rotation(sus_refatt *ra)
 {
     const sus_exact *ex = ra->ex;
-    const double (*I)[3] = ex->model->I, *b = ex->model->b;
+    const double(*I)[3] = ex->model->I, *b = ex->model->b;
     const double *d = ex->fixed ? ex->w0 : (const double[2]){-b[1], b[0]};
     const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
     quad speed = quad_sqrt(nd);
     if (!ex->fixed) {
-        const quad w0 = ex->w0[0], w1 = ex->w0[1], e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 +
-                                                          I[1][1] * w1 * w1;
+        const quad w0 = ex->w0[0], w1 = ex->w0[1],
+                   e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 + I[1][1] * w1 * w1;
         const quad ed = I[0][0] * (quad)d[0] * d[0] + 2 * I[1][0] * (quad)d[0] * d[1] +
                         I[1][1] * (quad)d[1] * d[1];
         speed = quad_sqrt(e0 * nd / ed);
@@ -332,7 +335,8 @@ void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3])
     tail_at(ra, t1, R);
 }
 
-void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3])
+void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2],
+                        double R[3][3])
 {
     sus_exact ex;
     sus_refatt ra;

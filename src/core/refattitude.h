@@ -41,7 +41,7 @@ typedef struct {
 typedef struct {
     const sus_exact *ex;
     sus_refatt_chol chol;
-    long double h;          /* the proved step, sus_refatt_step */
+    long double h; /* the proved step, sus_refatt_step */
     double t;
     long double u[2], q[4]; /* u = L^T w(t) and the attitude as a quaternion (not normalised) */
     double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */
@@ -70,7 +70,8 @@ void sus_refatt_advance(sus_refatt *ra, double t1, double R[3][3]);
 void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3]);
 
 /* w(T) and R(T) from w(0) = w0, R(0) = I. */
-void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2], double R[3][3]);
+void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2],
+                        double R[3][3]);
 
 /* R(t0)^{-1} R(t1): the exact increment over one step, from the identity. */
 void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3]);

@@ -4,9 +4,15 @@
 /* (Isom): w -> w^, so that w^ v = w x v. */
 void sus_so3_hat(const double w[3], double W[3][3])
 {
-    W[0][0] = 0.0;   W[0][1] = -w[2]; W[0][2] = w[1];
-    W[1][0] = w[2];  W[1][1] = 0.0;   W[1][2] = -w[0];
-    W[2][0] = -w[1]; W[2][1] = w[0];  W[2][2] = 0.0;
+    W[0][0] = 0.0;
+    W[0][1] = -w[2];
+    W[0][2] = w[1];
+    W[1][0] = w[2];
+    W[1][1] = 0.0;
+    W[1][2] = -w[0];
+    W[2][0] = -w[1];
+    W[2][1] = w[0];
+    W[2][2] = 0.0;
 }
 
 /* Inverse of (Isom) on the skew part, so a matrix that is skew only up to round-off
@@ -76,16 +82,23 @@ void sus_so3_dcay_inv(const double w[3], double D[3][3])
 void sus_so3_cayinver_printed(double eps, const double w[2], double D[3][3])
 {
     const double e2 = 0.25 * eps * eps, e1 = 0.5 * eps;
-    D[0][0] = 1.0 + e2 * w[0] * w[0]; D[0][1] = e2 * w[0] * w[1];       D[0][2] = -e1 * w[1];
-    D[1][0] = e2 * w[0] * w[1];       D[1][1] = 1.0 + e2 * w[1] * w[1]; D[1][2] = e1 * w[0];
-    D[2][0] = e1 * w[1];              D[2][1] = -e1 * w[0];             D[2][2] = 0.0;
+    D[0][0] = 1.0 + e2 * w[0] * w[0];
+    D[0][1] = e2 * w[0] * w[1];
+    D[0][2] = -e1 * w[1];
+    D[1][0] = e2 * w[0] * w[1];
+    D[1][1] = 1.0 + e2 * w[1] * w[1];
+    D[1][2] = e1 * w[0];
+    D[2][0] = e1 * w[1];
+    D[2][1] = -e1 * w[0];
+    D[2][2] = 0.0;
 }
 
 /* Rodrigues' formula without its leading I: exp(w^) - I = a w^ + b w^2 with a = sin t / t and
  * b = (1 - cos t)/t^2 = (sin(t/2)/(t/2))^2 / 2, t = |w|. The half-angle form has no cancellation,
  * so a and b keep full relative accuracy at every angle (1 - cos t loses them all near t = 0),
  * and the result, small for small w, can be accumulated against I like the Cayley increment.
- * sinc t = sin t / t comes from so3_trig.c, not the C library, so that every build gets the same bits. */
+ * sinc t = sin t / t comes from so3_trig.c, not the C library, so that every build gets the same
+ * bits. */
 void sus_so3_exp_minus_identity(const double w[3], double D[3][3])
 {
     double W[3][3], W2[3][3];

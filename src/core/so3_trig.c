@@ -28,12 +28,14 @@ static const double TWO_OVER_PI = 0x1.45f306dc9c883p-1;
 
 /* The Taylor coefficients (-1)^k / (2k+1)! (sin r / r) and (-1)^k / (2k)! (cos r), each the
  * correctly rounded quotient of two exact doubles (every factorial here is below 2^53). */
+/* clang-format off */
 static const double SINC_C[9] = {1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0,
                                  -1.0 / 39916800.0, 1.0 / 6227020800.0, -1.0 / 1307674368000.0,
                                  1.0 / 355687428096000.0};
 static const double COS_C[10] = {1.0, -1.0 / 2.0, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0,
                                  -1.0 / 3628800.0, 1.0 / 479001600.0, -1.0 / 87178291200.0,
                                  1.0 / 20922789888000.0, -1.0 / 6402373705728000.0};
+/* clang-format on */
 
 /* sum_k c[k] z^k by Horner's rule, highest term first. */
 static double horner(const double *c, int n, double z)
@@ -65,7 +67,8 @@ void sus_so3_sincos(double t, double *s, double *c)
 
 double sus_so3_sinc(double t)
 {
-    if (fabs(t) <= 0.78539816339744828) /* pi/4 rounded down: no reduction, full relative accuracy */
+    /* pi/4 rounded down: no reduction, full relative accuracy */
+    if (fabs(t) <= 0.78539816339744828)
         return sinc_poly(t * t);
     double s, c;
     sus_so3_sincos(t, &s, &c);

@@ -11,9 +11,9 @@ int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps,
     if (!stats)
         return SUS_STEPPER_BAD_ARGUMENT;
     /* Cheap checks only: the driver calls this every step (and checked the model once). */
-    if (!st || st->tol || !st->step || !(st->step->apply || st->step->apply_full) || !m
-        || !isfinite(eps) || (int)recon < 0 || (int)recon >= SUS_RECON_COUNT || !att || !w_next
-        || !lambda_next || !sus_args_finite2(w)) {
+    if (!st || st->tol || !st->step || !(st->step->apply || st->step->apply_full) || !m ||
+        !isfinite(eps) || (int)recon < 0 || (int)recon >= SUS_RECON_COUNT || !att || !w_next ||
+        !lambda_next || !sus_args_finite2(w)) {
         *stats = (sus_stepper_stats){.last_residual = NAN};
         return SUS_STEPPER_BAD_ARGUMENT;
     }

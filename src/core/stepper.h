@@ -33,10 +33,10 @@ enum {
 };
 
 typedef struct {
-    int iterations;   /* Newton iterations (0 for explicit steps) */
-    double residual;  /* final |G|_inf of the implicit equation */
-    double scale;     /* sum of |terms| of G: the round-off yardstick for residual */
-    double det;       /* determinant of the n x n Jacobian of G; for n = 2 the (REGLOC) block */
+    int iterations;  /* Newton iterations (0 for explicit steps) */
+    double residual; /* final |G|_inf of the implicit equation */
+    double scale;    /* sum of |terms| of G: the round-off yardstick for residual */
+    double det;      /* determinant of the n x n Jacobian of G; for n = 2 the (REGLOC) block */
     /* The last finite |G|_inf the solve reached (NAN if none): what a failure can name when the
      * final residual is not a finite number (the iteration overflowed). */
     double last_residual;
@@ -72,7 +72,7 @@ typedef int (*sus_apply_order_fn)(int p, const sus_model *m, double eps, sus_att
                                   sus_stepper_stats *st);
 
 typedef struct {
-    sus_apply_fn apply;           /* the w-step: always set */
+    sus_apply_fn apply; /* the w-step: always set */
     /* Optional: when set, the driver calls it instead of apply followed by sus_reconstruct. */
     sus_apply_full_fn apply_full;
     sus_apply_order_fn apply_order; /* optional: NULL if the method is not parametrised by p */
@@ -92,11 +92,12 @@ typedef struct {
      * t_end when it reaches it): a step whose own error estimate exceeds tol is retried with a
      * smaller one. Returns SUS_STEPPER_OK (stats.iterations: the rejected tries) or
      * SUS_STEPPER_REJECTED (see above), leaving the state as it was. */
-    int (*step)(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda, sus_attitude *att,
-                sus_stepper_stats *st);
+    int (*step)(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
+                sus_attitude *att, sus_stepper_stats *st);
     /* Dense output: the state at tau after the start of the last accepted step, 0 <= tau <= its
      * length, from that step's own series and with the same structure as the steps keep. */
-    void (*dense)(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att);
+    void (*dense)(const sus_tol_work *wk, double tau, double w[3], double *lambda,
+                  sus_attitude *att);
     void (*free)(sus_tol_work *wk);
     int (*order)(double tol); /* the order it uses at tol */
 } sus_tol_ops;
@@ -110,8 +111,8 @@ typedef struct {
 /* An implicit DSP's step equation G(x) = 0 in its n unknowns x (equation->unknowns), given
  * w = w^k: the residual g[n], its Jacobian J[n*n] in x (row-major; for x = w^{k+1} the upper-left
  * block of (REGLOC)), and scale = sum of |terms| of G, the yardstick for its round-off. */
-typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2],
-                                   const double *x, double *g, double *J, double *scale);
+typedef void (*sus_residual_fn)(const sus_model *m, double eps, const double w[2], const double *x,
+                                double *g, double *J, double *scale);
 /* The starting point of Newton at eps; at eps = 0 it is the root. */
 typedef void (*sus_guess_fn)(const sus_model *m, double eps, const double w[2], double *x);
 /* w^{k+1} from the root x. */
@@ -128,13 +129,13 @@ typedef struct {
 /* ---- the self-description ---- */
 
 typedef struct {
-    int order;         /* p: local w error O(eps^{p+1}); 0 for a tolerance-driven method */
-    int lambda_order;  /* s, or -1 where the paper proves the multiplier inconsistent */
-    int implicit;      /* 1 when a step solves an equation (its own, or in its substeps) */
-    int conserves_energy;         /* E = 1/2 <I_m w, w> exact up to round-off */
-    sus_attitude_form attitude;   /* what apply_full (or the tolerance step) carries */
-    int follows_recon;            /* 1 when the requested reconstruction is used */
-    int substeps;                 /* base steps per step: the round-off accumulates per substep */
+    int order;                  /* p: local w error O(eps^{p+1}); 0 for a tolerance-driven method */
+    int lambda_order;           /* s, or -1 where the paper proves the multiplier inconsistent */
+    int implicit;               /* 1 when a step solves an equation (its own, or in its substeps) */
+    int conserves_energy;       /* E = 1/2 <I_m w, w> exact up to round-off */
+    sus_attitude_form attitude; /* what apply_full (or the tolerance step) carries */
+    int follows_recon;          /* 1 when the requested reconstruction is used */
+    int substeps;               /* base steps per step: the round-off accumulates per substep */
     /* Order fitting: 1 when the error constants grow with the order (a series truncated within
      * its radius), so that a slope over a few octaves of eps can fall a whole order short of p. */
     int pre_asymptotic;
@@ -142,7 +143,7 @@ typedef struct {
      * transverse eigenvalue at the attracting rotation is real, -k); NULL when the step has none
      * (not a linear one-step map of f, or no single limit). */
     double (*stability)(double z);
-    const char *source;           /* the file that defines the step (__FILE__) */
+    const char *source; /* the file that defines the step (__FILE__) */
 } sus_stepper_desc;
 
 typedef struct {

@@ -53,14 +53,15 @@ static void field(const sus_unreduced *u, const double R[3][3], const double V[3
 
 /* The tables (Hairer, Norsett, Wanner, Solving ODEs I, Sect. II.1). */
 const sus_butcher SUS_BUTCHER_RK4 = {
-    "rk4", 4, 4, {{0}, {0.5}, {0, 0.5}, {0, 0, 1}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, {0, 0.5, 0.5, 1}};
+    "rk4",           4, 4, {{0}, {0.5}, {0, 0.5}, {0, 0, 1}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6},
+    {0, 0.5, 0.5, 1}};
 const sus_butcher SUS_BUTCHER_KUTTA3 = {
     "kutta3", 3, 3, {{0}, {0.5}, {-1, 2}}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {0, 0.5, 1}};
 const sus_butcher SUS_BUTCHER_HEUN2 = {"heun2", 2, 2, {{0}, {1}}, {0.5, 0.5}, {0, 1}};
 
 /* (LdAeqs) stepped by an explicit Runge-Kutta table on (R, V). */
 void sus_unreduced_rk(const sus_unreduced *u, const sus_butcher *tab, double eps, double R[3][3],
-                         double V[3][3])
+                      double V[3][3])
 {
     double kR[4][3][3], kV[4][3][3], Rs[3][3], Vs[3][3];
     for (int s = 0; s < tab->stages; s++) {
@@ -95,7 +96,7 @@ void sus_unreduced_rk4(const sus_unreduced *u, double eps, double R[3][3], doubl
 
 /* (LdAeqs) with the table on xi and the first-order reconstruction R_{k+1} = R_k cay(eps xi_k^). */
 void sus_unreduced_rk_cayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
-                                double R[3][3], double V[3][3])
+                             double R[3][3], double V[3][3])
 {
     double xi[3], k[4][3], C[3][3], Rn[3][3], X[3][3];
     sus_unreduced_xi(R, V, xi);
@@ -127,7 +128,7 @@ void sus_unreduced_rk_cayley(const sus_unreduced *u, const sus_butcher *tab, dou
  * w = vee(R^T V)); the new velocity is its left-trivialization xi_{k+1} = vee(R~^T V~) of that
  * step, the attitude the first-order R_{k+1} = R_k cay(eps xi_k^), V_{k+1} = R_{k+1} xi_{k+1}^. */
 void sus_unreduced_rk_recayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
-                                  double R[3][3], double V[3][3])
+                               double R[3][3], double V[3][3])
 {
     double xi0[3], xi[3], Rt[3][3], Vt[3][3], C[3][3], Rn[3][3], X[3][3];
     sus_unreduced_xi(R, V, xi0);

@@ -34,18 +34,18 @@ extern const sus_butcher SUS_BUTCHER_RK4, SUS_BUTCHER_KUTTA3, SUS_BUTCHER_HEUN2;
 
 /* One step of the table on (R, V): r = l = the table's order (Definition UnredConsis). */
 void sus_unreduced_rk(const sus_unreduced *u, const sus_butcher *tab, double eps, double R[3][3],
-                         double V[3][3]);
+                      double V[3][3]);
 void sus_unreduced_rk4(const sus_unreduced *u, double eps, double R[3][3], double V[3][3]);
 /* An integrator with r != l: the table on the left-trivialized velocity xi = vee(R^T V) of
  * (LdAeqs), I xi' = (I xi) x xi + lambda(xi) e3 (l = the table's order), with the first-order
  * reconstruction R_{k+1} = R_k cay(eps xi_k^) (r = 1, TeoL), and V_{k+1} = R_{k+1} xi_{k+1}^. */
 void sus_unreduced_rk_cayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
-                                double R[3][3], double V[3][3]);
+                             double R[3][3], double V[3][3]);
 /* r = 1, l = the table's order, with the velocity from (R, V): the table on (R, V) as
  * sus_unreduced_rk (its velocity stages read R), xi_{k+1} = vee(R~^T V~) of that step, then
  * R_{k+1} = R_k cay(eps xi_k^) and V_{k+1} = R_{k+1} xi_{k+1}^. */
 void sus_unreduced_rk_recayley(const sus_unreduced *u, const sus_butcher *tab, double eps,
-                                  double R[3][3], double V[3][3]);
+                               double R[3][3], double V[3][3]);
 /* The left-trivialized velocity xi = vee(R^T V) (the reduced variable of PropoCons1). */
 void sus_unreduced_xi(const double R[3][3], const double V[3][3], double xi[3]);
 

@@ -143,7 +143,7 @@ typedef struct {
 /* The cost of ours from T = 1e4 to T = 1e6: the fastest at T = 1e4 and equal error, at the same
  * step or TOL, run to T_GROWTH (series = -1 when none ran). */
 typedef struct {
-    int series, point, eq; /* eq: its row of b->EQ */
+    int series, point, eq;             /* eq: its row of b->EQ */
     double sec, sec_long, R_end[3][3]; /* to T_GROWTH and, timed beside it, to T_LONG */
 } sus_lab_bench_growth;
 

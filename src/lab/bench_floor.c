@@ -108,8 +108,8 @@ const char *sus_lab_bench_comparison_name(sus_lab_bench_comparison c)
                                             : "omega";
 }
 
-sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b,
-                                                sus_lab_bench_comparison c, int l)
+sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b, sus_lab_bench_comparison c,
+                                                int l)
 {
     const double level = SUS_LAB_BENCH_LEVELS[l];
     const int which = c != SUS_LAB_BENCH_W_INFO;
@@ -118,7 +118,8 @@ sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b,
         sus_lab_bench_fastest(b, level, which,
                               c == SUS_LAB_BENCH_ATT_REDUCED ? sus_lab_bench_is_reduced_peer
                                                              : sus_lab_bench_is_peer),
-        INFINITY, 0.0,
+        INFINITY,
+        0.0,
         c == SUS_LAB_BENCH_ATT_FULL      ? SUS_LAB_BENCH_LEVEL_TARGET[l]
         : c == SUS_LAB_BENCH_ATT_REDUCED ? SUS_LAB_BENCH_REDUCED_TARGET
                                          : NAN,

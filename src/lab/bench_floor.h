@@ -52,8 +52,8 @@ typedef struct {
     double target; /* NAN: information only */
     int pass;      /* ratio >= target */
 } sus_lab_bench_level;
-sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b,
-                                                sus_lab_bench_comparison c, int l);
+sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b, sus_lab_bench_comparison c,
+                                                int l);
 /* "attitude", "attitude-reduced" or "omega": the comparison's name in the data files. */
 const char *sus_lab_bench_comparison_name(sus_lab_bench_comparison c);
 

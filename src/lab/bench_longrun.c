@@ -222,9 +222,13 @@ static int equal_error_row(const sus_lab_bench *b, int i, sus_lab_bench_peer_run
     const sus_lab_bench_series *s = b->S[i];
     const double peer_tol = e->peer_tol, peer_err = e->peer_err, red_tol = e->red_tol,
                  red_err = e->red_err;
-    *e = (sus_lab_bench_equal_error){.series = i, .peer_sec = INFINITY, .red_sec = INFINITY,
-                                     .peer_tol = peer_tol, .peer_err = peer_err,
-                                     .red_tol = red_tol, .red_err = red_err};
+    *e = (sus_lab_bench_equal_error){.series = i,
+                                     .peer_sec = INFINITY,
+                                     .red_sec = INFINITY,
+                                     .peer_tol = peer_tol,
+                                     .peer_err = peer_err,
+                                     .red_tol = red_tol,
+                                     .red_err = red_err};
     if ((e->point = point_at_level(b, s, e)) < 0)
         return -1;
     sus_lab_bench_tol_run tr;

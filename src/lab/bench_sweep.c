@@ -158,7 +158,10 @@ static void sweep_gsl_control(sus_lab_bench *b, const gsl_odeiv2_step_type *type
     sus_lab_bench_series *s = sus_lab_bench_new_series(b);
     snprintf(s->name, sizeof s->name, "GSL %s %s %s%s h0 %g", type->name,
              sus_lab_bench_dim_name(dim), api == SUS_LAB_PEER_DRIVER ? "driver" : "evolve",
-             dim != 4 ? "" : rel_factor > 0.0 ? " abs=rel" : " abs", hstart);
+             dim != 4           ? ""
+             : rel_factor > 0.0 ? " abs=rel"
+                                : " abs",
+             hstart);
     s->w_only = dim == 2;
     s->reduced = dim == 4;
     s->type = type;

@@ -19,7 +19,7 @@ void sus_lab_local_ref_init(sus_lab_local_ref *ref, const sus_exact *ex, double 
 }
 
 int sus_lab_local_errors(const sus_model *m, const sus_stepper_type *stepper,
-                        const sus_lab_local_ref *ref, sus_lab_local_err *err)
+                         const sus_lab_local_ref *ref, sus_lab_local_err *err)
 {
     double w_next[3], lambda, R_next[3][3];
     const int status = stepper->step->apply(m, ref->eps, ref->w_k, w_next, &lambda, &err->stats);
@@ -48,9 +48,8 @@ int sus_lab_local_errors(const sus_model *m, const sus_stepper_type *stepper,
     return status;
 }
 
-int sus_lab_global_errors(const sus_exact *ex, const sus_stepper_type *stepper,
-                         sus_recon recon, double T, long N, const double R_ref[3][3],
-                         sus_lab_global_err *err)
+int sus_lab_global_errors(const sus_exact *ex, const sus_stepper_type *stepper, sus_recon recon,
+                          double T, long N, const double R_ref[3][3], sus_lab_global_err *err)
 {
     /* every = N: the driver hands over rows 0 and N only */
     const sus_run_config cfg = {ex->model, stepper, recon, T / (double)N, N, N};

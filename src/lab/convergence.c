@@ -29,7 +29,8 @@ static void local_errors(sus_lab_convergence *c, const sus_exact *ex, const doub
             double M[3][3];
             sus_lab_local_ref_init(&ref, ex, tk[t], c->eps[j]);
             sus_mat3_identity(M);
-            sus_magnus4(ex, tk[t], tk[t] + c->eps[j], (long)ceil(c->eps[j] * MAGNUS_SUBSTEPS_PER_UNIT), M);
+            sus_magnus4(ex, tk[t], tk[t] + c->eps[j],
+                        (long)ceil(c->eps[j] * MAGNUS_SUBSTEPS_PER_UNIT), M);
             c->ref_local_err = fmax(c->ref_local_err, sus_so3_dist(ref.Phi, M));
             for (int m = 0; m < c->nmethod; m++) {
                 const sus_stepper_type *st = sus_step_method_get(m)->type;
@@ -77,7 +78,7 @@ static void global_errors(sus_lab_convergence *c, const sus_exact *ex, double T)
 }
 
 int sus_lab_convergence_run(sus_lab_convergence *c, const sus_exact *ex, const double *tk, int ntk,
-                           double T)
+                            double T)
 {
     memset(c, 0, sizeof *c);
     c->nmethod = sus_step_method_count();

@@ -31,19 +31,20 @@ typedef struct {
 
 typedef struct {
     double eps[SUS_LAB_CONV_NJ];
-    double glob_eps[SUS_LAB_CONV_NJ]; /* the step T/N actually used for the global errors, N = round(T/eps) */
+    double glob_eps[SUS_LAB_CONV_NJ]; /* the step T/N actually used for the global errors, N =
+                                         round(T/eps) */
     int nmethod;
-    sus_lab_conv_method *m;   /* [nmethod], in the order of the registry (src/methods/registry.h) */
-    double R_T[3][3];        /* reference R(T) */
-    double ref_local_err;    /* max |Phi_ref - Phi_magnus4| over the local increments */
-    double ref_global_err;   /* |R_ref(T) - R_magnus4(T)| */
+    sus_lab_conv_method *m; /* [nmethod], in the order of the registry (src/methods/registry.h) */
+    double R_T[3][3];       /* reference R(T) */
+    double ref_local_err;   /* max |Phi_ref - Phi_magnus4| over the local increments */
+    double ref_global_err;  /* |R_ref(T) - R_magnus4(T)| */
 } sus_lab_convergence;
 
 /* Runs every registered method. A step that fails (an implicit step at a large eps) leaves NaN
  * at that point, which the order fit refuses inside its window. Returns 0, or -1 (with a message
  * on stderr) when memory runs out; free with sus_lab_convergence_free either way. */
 int sus_lab_convergence_run(sus_lab_convergence *c, const sus_exact *ex, const double *tk, int ntk,
-                           double T);
+                            double T);
 void sus_lab_convergence_free(sus_lab_convergence *c);
 
 #ifdef __cplusplus

@@ -65,7 +65,7 @@ void sus_lab_series_flow(const sus_model *m, const double w[2], sus_lab_wseries 
 /* y <y, I_m y> on series (the eps^2/4 terms of (taudyn)) */
 static void quartic_series(const sus_model *m, const sus_lab_wseries *y, sus_lab_wseries *q)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     ser p0, p1, a, b, s;
     for (int n = 0; n < N; n++) {
         p0[n] = I[0][0] * y->c[0][n] + I[0][1] * y->c[1][n];
@@ -126,10 +126,11 @@ static void variational_series(const sus_model *m, const double w[2], sus_lab_ws
 {
     /* (taudyn): I_m (x - w) + eps/2 T(x, w) + eps^2/4 (q(x) - q(w)) = 0 with
      * T = (x2 c(x) + w2 c(w), -x1 c(x) - w1 c(w)), solved as x = w - I_m^{-1}(...) */
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double cw = sus_c(m, w);
     double qw[2];
-    const double sw = w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
+    const double sw =
+        w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
     qw[0] = w[0] * sw;
     qw[1] = w[1] * sw;
     constant(s, w);
@@ -173,7 +174,7 @@ static const struct {
 /* (Discretization), and (taudyn) for the variational step: the series in eps of one step of the
  * method from w (lambda_shift.h). */
 int sus_lab_series_step(const sus_model *m, const sus_stepper_type *st, const double w[2],
-                       sus_lab_wseries *s)
+                        sus_lab_wseries *s)
 {
     for (size_t i = 0; i < sizeof SERIES / sizeof SERIES[0]; i++)
         if (SERIES[i].type == st) {
@@ -206,8 +207,8 @@ void sus_lab_lagmult_grad(const sus_model *m, const double w[2], double g[2])
 }
 
 /* (RemarkLambda): l_lambda = -grad lambda(w^{k+1}) . sum_{j=p+1}^{p+nterms} e_j(w^k) eps^j. */
-int sus_lab_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms, double eps,
-                        const double w[2], const double x[2], double *l_lambda)
+int sus_lab_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms,
+                         double eps, const double w[2], const double x[2], double *l_lambda)
 {
     sus_lab_wseries a, y;
     double g[2], d[2] = {0.0, 0.0};

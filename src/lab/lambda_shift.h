@@ -19,7 +19,7 @@
 extern "C" {
 #endif
 
-#define SUS_LAB_SERIES_N 12  /* coefficients of eps^0 .. eps^11 */
+#define SUS_LAB_SERIES_N 12 /* coefficients of eps^0 .. eps^11 */
 
 typedef struct {
     double c[2][SUS_LAB_SERIES_N];
@@ -30,15 +30,15 @@ void sus_lab_series_flow(const sus_model *m, const double w[2], sus_lab_wseries 
 /* Taylor coefficients in eps of one step of st (euler, midpoint, rk4, variational: the steps whose
  * series is derived). Returns 0, or -1 for another step. */
 int sus_lab_series_step(const sus_model *m, const sus_stepper_type *st, const double w[2],
-                       sus_lab_wseries *s);
+                        sus_lab_wseries *s);
 /* sum_j s_j eps^j */
 void sus_lab_series_eval(const sus_lab_wseries *s, double eps, double out[2]);
 /* grad lambda(w) of (LagMult) (a quadratic form: central differences are exact up to round-off). */
 void sus_lab_lagmult_grad(const sus_model *m, const double w[2], double g[2]);
 /* l_lambda of RemarkLambda from the local error coefficients e_{p+1} .. e_{p+nterms} at w = w^k,
  * the gradient at x = w^{k+1}. Returns 0, or -1 for a method without a series. */
-int sus_lab_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms, double eps,
-                        const double w[2], const double x[2], double *l_lambda);
+int sus_lab_lambda_shift(const sus_model *m, const sus_stepper_type *st, int p, int nterms,
+                         double eps, const double w[2], const double x[2], double *l_lambda);
 
 #ifdef __cplusplus
 }

@@ -7,14 +7,14 @@ void sus_lab_midpoint_sweeps(const sus_model *m, double eps, int n, const double
     for (int j = 0; j < n; j++) {
         const double mid[2] = {0.5 * (w[0] + x[0]), 0.5 * (w[1] + x[1])};
         double f[2];
-        sus_contdyn(m, mid, f);  /* I_m^{-1} (l1, l2) at the midpoint */
+        sus_contdyn(m, mid, f); /* I_m^{-1} (l1, l2) at the midpoint */
         x[0] = w[0] + eps * f[0];
         x[1] = w[1] + eps * f[1];
     }
 }
 
 void sus_lab_midpoint_sweeps_run(const sus_model *m, double eps, int n, const double w0[2], long N,
-                                double *energy, double wN[2])
+                                 double *energy, double wN[2])
 {
     double w[2] = {w0[0], w0[1]};
     energy[0] = sus_energy(m, w);
@@ -48,10 +48,13 @@ static int sweeps_apply(int n, const sus_model *m, double eps, const double w[3]
         return sweeps_apply(n, m, eps, w, w_next, lambda_next, st);                                \
     }                                                                                              \
     static const sus_step_ops step_##n = {.apply = apply_##n};                                     \
-    static const sus_stepper_type sweeps_##n = {                                                   \
-        .name = "midpoint-sweeps" #n, .step = &step_##n,                                           \
-        .desc = {.order = (n) < 2 ? (n) : 2, .lambda_order = (n) < 2 ? (n) : 2,                    \
-                 .follows_recon = 1, .substeps = 1, .source = __FILE__}};
+    static const sus_stepper_type sweeps_##n = {.name = "midpoint-sweeps" #n,                      \
+                                                .step = &step_##n,                                 \
+                                                .desc = {.order = (n) < 2 ? (n) : 2,               \
+                                                         .lambda_order = (n) < 2 ? (n) : 2,        \
+                                                         .follows_recon = 1,                       \
+                                                         .substeps = 1,                            \
+                                                         .source = __FILE__}};
 SWEEPS_TYPE(1)
 SWEEPS_TYPE(2)
 SWEEPS_TYPE(3)

@@ -20,7 +20,7 @@ void sus_lab_midpoint_sweeps(const sus_model *m, double eps, int n, const double
 
 /* N steps from w0; energy[k] = E(w_k) for k = 0..N (caller's array, N+1 long), and w_N. */
 void sus_lab_midpoint_sweeps_run(const sus_model *m, double eps, int n, const double w0[2], long N,
-                                double *energy, double wN[2]);
+                                 double *energy, double wN[2]);
 
 /* The reading as a stepper for the driver (the suslov command's --sweeps, the browser's page):
  * w^{k+1} from n sweeps, lambda_{k+1} = lambda(w^{k+1}) from (LagMult) as the midpoint DSP

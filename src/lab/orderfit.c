@@ -4,11 +4,11 @@
 
 #define ORDERFIT_MAXPTS 64
 
-/* The least-squares line y = a + b x through m points: b = cov(x, y) / var(x), a = mean y - b mean x,
- * with the means and the centred second moments accumulated as running means (each update
- * adds (v - mean) / (i + 1)), the order of operations of GSL's gsl_fit_linear, so that the
- * ledger's slopes keep their bits. Written here, not linked from GSL, because the browser's
- * WebAssembly build of this file (the convergence page) has no GSL. */
+/* The least-squares line y = a + b x through m points: b = cov(x, y) / var(x), a = mean y - b mean
+ * x, with the means and the centred second moments accumulated as running means (each update adds
+ * (v - mean) / (i + 1)), the order of operations of GSL's gsl_fit_linear, so that the ledger's
+ * slopes keep their bits. Written here, not linked from GSL, because the browser's WebAssembly
+ * build of this file (the convergence page) has no GSL. */
 static void line_fit(const double *x, const double *y, int m, double *a, double *b)
 {
     double mx = 0.0, my = 0.0, sxx = 0.0, sxy = 0.0;
@@ -26,7 +26,7 @@ static void line_fit(const double *x, const double *y, int m, double *a, double 
 }
 
 int sus_lab_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
-                     sus_lab_order_fit *fit)
+                      sus_lab_order_fit *fit)
 {
     double x[ORDERFIT_MAXPTS], y[ORDERFIT_MAXPTS];
     int m = 0;

@@ -24,14 +24,14 @@ extern "C" {
 
 typedef struct {
     double slope, intercept;
-    int used;               /* points in the fit */
-    double eps_lo, eps_hi;  /* the eps range actually fitted */
+    int used;              /* points in the fit */
+    double eps_lo, eps_hi; /* the eps range actually fitted */
 } sus_lab_order_fit;
 
 /* Fits the points with eps <= eps_max and floor < err. Returns 0, or -1 when fewer than
  * three points qualify or a point inside the window is not finite (no honest slope then). */
 int sus_lab_fit_order(const double *eps, const double *err, int n, double eps_max, double floor,
-                     sus_lab_order_fit *fit);
+                      sus_lab_order_fit *fit);
 
 #ifdef __cplusplus
 }

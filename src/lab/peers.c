@@ -78,14 +78,14 @@ static int peer_alloc(sus_lab_peer *p)
     return -1;
 }
 
-int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type, size_t dim,
-                     sus_lab_peer_api api, double tol, double hstart)
+int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type,
+                      size_t dim, sus_lab_peer_api api, double tol, double hstart)
 {
     *p = (sus_lab_peer){
         .type = type, .api = api, .dim = dim, .tol = tol, .rel = tol, .hstart = hstart};
-    int (*rhs)(double, const double[], double[], void *) = dim == 11 ? sus_lab_peer_rhs_wR
-                                                         : dim == 6  ? sus_lab_peer_rhs_wq
-                                                                     : sus_lab_peer_rhs_w;
+    int (*rhs)(double, const double[], double[], void *) = dim == 11  ? sus_lab_peer_rhs_wR
+                                                           : dim == 6 ? sus_lab_peer_rhs_wq
+                                                                      : sus_lab_peer_rhs_w;
     p->sys = (gsl_odeiv2_system){rhs, NULL, dim, (void *)m};
     return peer_alloc(p);
 }
@@ -108,8 +108,8 @@ static int evolve_run(sus_lab_peer *p, double T, double *y, long *steps)
     int status = GSL_SUCCESS;
     while (t < T && status == GSL_SUCCESS)
         status = p->e->count < SUS_LAB_PEER_MAX_STEPS
-                   ? gsl_odeiv2_evolve_apply(p->e, p->c, p->s, &p->sys, &t, T, &h, y)
-                   : GSL_EMAXITER;
+                     ? gsl_odeiv2_evolve_apply(p->e, p->c, p->s, &p->sys, &t, T, &h, y)
+                     : GSL_EMAXITER;
     *steps = (long)p->e->count;
     return status;
 }

@@ -39,8 +39,8 @@ typedef struct {
     size_t dim;
     double tol, rel, hstart; /* abs tolerance tol, rel tolerance rel (GSL's y control) */
     gsl_odeiv2_system sys;
-    gsl_odeiv2_driver *d;                     /* the driver API */
-    gsl_odeiv2_step *s;                       /* the evolve API */
+    gsl_odeiv2_driver *d; /* the driver API */
+    gsl_odeiv2_step *s;   /* the evolve API */
     gsl_odeiv2_control *c;
     gsl_odeiv2_evolve *e;
 } sus_lab_peer;
@@ -50,8 +50,8 @@ typedef struct {
 #define SUS_LAB_PEER_MAX_STEPS 200000UL
 
 /* Returns 0, or -1 when GSL cannot allocate. abs = rel = tol. */
-int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type, size_t dim,
-                     sus_lab_peer_api api, double tol, double hstart);
+int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type,
+                      size_t dim, sus_lab_peer_api api, double tol, double hstart);
 /* The reduced problem along r (which must outlive p), abs tolerance tol and rel tolerance rel. */
 int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_lab_reduced *r,
                               const gsl_odeiv2_step_type *type, sus_lab_peer_api api, double tol,

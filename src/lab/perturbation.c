@@ -9,7 +9,8 @@
 #include <math.h>
 #include <string.h>
 
-int sus_lab_perturb_init(sus_lab_perturb *P, const sus_model *m, const sus_stepper_type *st, double eps)
+int sus_lab_perturb_init(sus_lab_perturb *P, const sus_model *m, const sus_stepper_type *st,
+                         double eps)
 {
     memset(P, 0, sizeof *P);
     P->m = m;
@@ -43,8 +44,8 @@ static void flow(const sus_model *m, double t, const double x[2], double y[2])
 }
 
 /* (TheoPer): the blend of the forward flow from x0 and the backward flow from x1 = phi(eps, x0). */
-void sus_lab_perturb_curve(const sus_lab_perturb *P, double t, const double x0[2], const double x1[2],
-                          double X[2], double Xdot[2])
+void sus_lab_perturb_curve(const sus_lab_perturb *P, double t, const double x0[2],
+                           const double x1[2], double X[2], double Xdot[2])
 {
     double dchi, A[2], B[2], fA[2], fB[2];
     const double chi = sus_lab_perturb_chi(t / P->eps, &dchi);
@@ -88,9 +89,10 @@ static int blend_residual(const sus_lab_perturb *P, double t, const double x0[2]
 #define NEWTON_TOL_U 64.0
 #define SUS_STEP_NEWTON_MAXIT 12
 
-/* (PerTh), through (Per1): eps^p d(eps, t/eps, x) = X'(t; x0) - h(x) with x0 from x = X(t; x0) by Newton; the
- * Jacobian dX/dx0 (close to dF(t)/dx0) by central differences. */
-int sus_lab_perturb_field(sus_lab_perturb *P, double t, const double x[2], double g[2], double x0_out[2])
+/* (PerTh), through (Per1): eps^p d(eps, t/eps, x) = X'(t; x0) - h(x) with x0 from x = X(t; x0) by
+ * Newton; the Jacobian dX/dx0 (close to dF(t)/dx0) by central differences. */
+int sus_lab_perturb_field(sus_lab_perturb *P, double t, const double x[2], double g[2],
+                          double x0_out[2])
 {
     const double eps = P->eps, tau = t - eps * floor(t / eps);
     double dchi, x0[2], r[2], Xdot[2], f[2];
@@ -107,7 +109,7 @@ int sus_lab_perturb_field(sus_lab_perturb *P, double t, const double x[2], doubl
         }
         return SUS_LAB_PERTURB_OK;
     }
-    flow(P->m, -tau, x, x0);  /* exact when the perturbation is 0 */
+    flow(P->m, -tau, x, x0); /* exact when the perturbation is 0 */
     const double scale = fabs(x[0]) + fabs(x[1]), tol = NEWTON_TOL_U * SUS_U * scale;
     int it, s;
     double res = INFINITY;
@@ -175,7 +177,8 @@ static int eq2_rhs(double t, const double y[], double dydt[], void *params)
 
 static int integrate(gsl_odeiv2_system *sys, ode_ctx *c, double eps, double tol, double *y)
 {
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 0.05 * eps, tol, tol);
+    gsl_odeiv2_driver *d =
+        gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_rk8pd, 0.05 * eps, tol, tol);
     if (!d)
         return SUS_LAB_PERTURB_ODE_FAILED;
     double t = 0.0;
@@ -200,7 +203,8 @@ int sus_lab_perturb_period_map(sus_lab_perturb *P, const double x0[2], double to
 }
 
 /* (TheoPer): the perturbed solution over one period from x0 (perturbation.h). */
-int sus_lab_perturb_trajectory(sus_lab_perturb *P, const double x0[2], double tol, int n, double (*x)[2])
+int sus_lab_perturb_trajectory(sus_lab_perturb *P, const double x0[2], double tol, int n,
+                               double (*x)[2])
 {
     ode_ctx c = {P, SUS_LAB_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {eq2_rhs, NULL, 2, &c};
@@ -229,7 +233,7 @@ static int perfin2_rhs(double t, const double y[], double dydt[], void *params)
 {
     ode_ctx *c = params;
     const sus_lab_perturb *P = c->P;
-    const double (*I)[3] = P->m->I;
+    const double(*I)[3] = P->m->I;
     double g[2], Iw[3], q[3];
     const int s = sus_lab_perturb_field(c->P, t, y, g, NULL);
     if (s != SUS_LAB_PERTURB_OK) {
@@ -250,7 +254,7 @@ static int perfin2_rhs(double t, const double y[], double dydt[], void *params)
 }
 
 int sus_lab_perturb_perfin2(sus_lab_perturb *P, const double x0[2], double tol, double xi_end[3],
-                           double *max_xi3, double *max_dlambda)
+                            double *max_xi3, double *max_dlambda)
 {
     ode_ctx c = {P, SUS_LAB_PERTURB_OK, 0.0, 0.0};
     gsl_odeiv2_system sys = {perfin2_rhs, NULL, 3, &c};
@@ -304,7 +308,7 @@ static void so3_log(const double Q[3][3], double v[3])
 }
 
 #define SUP_MAXN 64
-#define NFD 5  /* the stencil -2, -1, 0, 1, 2 (times the step hd) */
+#define NFD 5 /* the stencil -2, -1, 0, 1, 2 (times the step hd) */
 
 /* Attitudes along the exact flow from (R0, x) at the times t[i] (monotone), into R[i]. */
 static int attitudes(const sus_model *m, const double R0[3][3], const double x[2], double t0,
@@ -340,7 +344,7 @@ static void sample_times(double eps, int n, double hd, double *tA, double *tB)
         for (int k = 0; k < NFD; k++) {
             const double t = eps * (a + (1.0 - 2.0 * a) * i / n) + (k - 2) * hd;
             tA[i * NFD + k] = t;
-            tB[np - 1 - (i * NFD + k)] = t - eps;  /* descending: integrated backward from 0 */
+            tB[np - 1 - (i * NFD + k)] = t - eps; /* descending: integrated backward from 0 */
         }
 }
 
@@ -361,8 +365,8 @@ static int method_step(const sus_lab_perturb *P, sus_recon recon, const double x
 }
 
 /* The blend R_A exp(chi log(R_A^T R_B)) at the NFD stencil times of sample i, into Rk. */
-static void blend(double eps, const double *tA, double (*RA)[3][3], double (*RB)[3][3],
-                  int i, int np, double Rk[NFD][3][3])
+static void blend(double eps, const double *tA, double (*RA)[3][3], double (*RB)[3][3], int i,
+                  int np, double Rk[NFD][3][3])
 {
     for (int k = 0; k < NFD; k++) {
         const int ia = i * NFD + k, ib = np - 1 - ia;
@@ -405,8 +409,8 @@ static void perturbation_at(const sus_lab_perturb *P, double t, const double x0[
  * (I, x0) and the exact one backward from the method's (R1, x1); its perturbation is
  * vee(R^T R') - w, with R' from a fourth-order central difference. Only the times where chi
  * is not flat are sampled: elsewhere R is an exact trajectory and the perturbation 0. */
-int sus_lab_perturb_sup_so3(sus_lab_perturb *P, sus_recon recon, const double x0[2], int n, double tol,
-                           double *sup_att, double *sup_g)
+int sus_lab_perturb_sup_so3(sus_lab_perturb *P, sus_recon recon, const double x0[2], int n,
+                            double tol, double *sup_att, double *sup_g)
 {
     double tA[(SUP_MAXN + 1) * NFD], tB[(SUP_MAXN + 1) * NFD];
     double RA[(SUP_MAXN + 1) * NFD][3][3], RB[(SUP_MAXN + 1) * NFD][3][3];

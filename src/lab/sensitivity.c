@@ -47,7 +47,8 @@ static double record(const sus_exact *ex, const sus_model *m, double t, double t
     sus_exact_omega(ex, t, we);
     const double err = hypot(w[0] - we[0], w[1] - we[1]);
     r->err_max = fmax(r->err_max, err / hypot(ex->w0[0], ex->w0[1]));
-    if (t >= t_fast && isnan(r->err_fast)) r->err_fast = err;
+    if (t >= t_fast && isnan(r->err_fast))
+        r->err_fast = err;
     r->energy_max = fmax(r->energy_max, fabs(sus_energy(m, w) - e0) / e0);
     return err;
 }
@@ -62,11 +63,13 @@ static int continued_root(const sus_model *m, const sus_stepper_type *st, double
     const int n = st->equation->unknowns;
     double a[SUS_MAX_UNKNOWNS], b[SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS];
     st->equation->guess(m, 0.0, w, b);
-    for (int i = 0; i < n; i++) a[i] = b[i];
+    for (int i = 0; i < n; i++)
+        a[i] = b[i];
     for (int j = 1; j <= SENS_CONT; j++) {
         sus_stepper_stats s;
         const double e = eps * j / SENS_CONT;
-        for (int i = 0; i < n; i++) g[i] = 2.0 * b[i] - a[i];
+        for (int i = 0; i < n; i++)
+            g[i] = 2.0 * b[i] - a[i];
         if (sus_step_newton_solve(st->equation->residual, n, m, e, w, g, &s) != SUS_STEPPER_OK ||
             !(s.det > 0.0))
             return -1;
@@ -86,12 +89,15 @@ static int continued_root(const sus_model *m, const sus_stepper_type *st, double
 static int step_failed(int status, const double w[3], const double x[3], const sus_stepper_stats *s,
                        const sus_model *m, const sus_stepper_type *st, double eps, double *det_min)
 {
-    if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1])) return 1;
-    if (!st->equation) return 0;
+    if (status != SUS_STEPPER_OK || !isfinite(x[0]) || !isfinite(x[1]))
+        return 1;
+    if (!st->equation)
+        return 0;
     const double ratio = s->det / m->det_m;
     *det_min = fmin(*det_min, ratio);
     double xc[2];
-    if (!(ratio > 0.0) || continued_root(m, st, eps, w, xc) != 0) return 1;
+    if (!(ratio > 0.0) || continued_root(m, st, eps, w, xc) != 0)
+        return 1;
     return hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + hypot(w[0], w[1]));
 }
 
@@ -136,7 +142,8 @@ double sus_lab_sens_first_failure(const sus_exact *ex, const sus_stepper_type *s
         sus_lab_sens_run r;
         const double eps = exp2(0.25 * j) * scale;
         sus_lab_sens_run_one(ex, st, eps, &r);
-        if (r.failed) return eps;
+        if (r.failed)
+            return eps;
     }
     return INFINITY;
 }

@@ -30,19 +30,19 @@ extern "C" {
 #define SUS_LAB_SENS_FAIL_MAX_EXP 12
 
 typedef struct {
-    int failed; /* a solve failed, a value stopped being finite, the block lost its sign,
-                 * or the root is not the one continued from eps = 0: the run stops there
-                 * and only t_fail, det_min and steps are set */
-    double t_fail; /* the time of the step that failed */
-    long steps; /* N: the run ends at N eps, at least one step and k T rounded to steps */
-    double err_max; /* max_k |w_k - w(t_k)| / |w0| */
-    double err_fast; /* |w_k - w(t_k)| at the first t_k >= t_fast */
-    double limit; /* |w_N - w_inf| */
-    double denergy; /* (E_N - E_0) / E_0 */
+    int failed;        /* a solve failed, a value stopped being finite, the block lost its sign,
+                        * or the root is not the one continued from eps = 0: the run stops there
+                        * and only t_fail, det_min and steps are set */
+    double t_fail;     /* the time of the step that failed */
+    long steps;        /* N: the run ends at N eps, at least one step and k T rounded to steps */
+    double err_max;    /* max_k |w_k - w(t_k)| / |w0| */
+    double err_fast;   /* |w_k - w(t_k)| at the first t_k >= t_fast */
+    double limit;      /* |w_N - w_inf| */
+    double denergy;    /* (E_N - E_0) / E_0 */
     double energy_max; /* max_k |E_k - E_0| / E_0 */
     double constraint; /* max_k |<e3, vee(R_k^T R_k w^_k)>| */
-    double det_min; /* min over the steps of det J / det I_m (1 for an explicit step) */
-    double w_end[2]; /* w_N */
+    double det_min;    /* min over the steps of det J / det I_m (1 for an explicit step) */
+    double w_end[2];   /* w_N */
 } sus_lab_sens_run;
 
 /* Initial state s (0 .. SUS_LAB_SENS_NSTATE - 1) of the body whose exact solution from its own

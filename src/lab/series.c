@@ -13,7 +13,8 @@ int sus_lab_series_init(sus_lab_series *s, long steps, long every)
     s->n = 0;
     s->cap = (size_t)(steps / every) + 2;
     double *block = malloc(SERIES_FIELDS * s->cap * sizeof(double));
-    double **fields[SERIES_FIELDS] = {&s->t, &s->w1, &s->w2, &s->w3, &s->lambda, &s->energy, &s->mu};
+    double **fields[SERIES_FIELDS] = {&s->t,      &s->w1,     &s->w2, &s->w3,
+                                      &s->lambda, &s->energy, &s->mu};
     for (int i = 0; i < SERIES_FIELDS; i++)
         *fields[i] = block ? block + (size_t)i * s->cap : NULL;
     return block ? 0 : -1;
@@ -54,7 +55,7 @@ static int record(void *vctx, const sus_row *row)
 }
 
 int sus_lab_series_run(sus_lab_series *s, const sus_run_config *cfg, const double w0[2],
-                      sus_run_report *report)
+                       sus_run_report *report)
 {
     rec_ctx c = {s, cfg->model};
     s->n = 0;

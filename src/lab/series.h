@@ -16,7 +16,7 @@ extern "C" {
 typedef struct {
     size_t n, cap;
     double *t, *w1, *w2, *w3, *lambda, *energy;
-    double *mu;  /* <e3, vee(R_k^T R_k w^_k)>: the unreduced constraint of step 6 of (algo) */
+    double *mu; /* <e3, vee(R_k^T R_k w^_k)>: the unreduced constraint of step 6 of (algo) */
 } sus_lab_series;
 
 /* Room for the rows of a run of `steps` steps written every `every` steps. Returns 0 or -1. */
@@ -24,7 +24,7 @@ int sus_lab_series_init(sus_lab_series *s, long steps, long every);
 void sus_lab_series_free(sus_lab_series *s);
 /* As sus_run, recording the rows. */
 int sus_lab_series_run(sus_lab_series *s, const sus_run_config *cfg, const double w0[2],
-                      sus_run_report *report);
+                       sus_run_report *report);
 /* The closed form at t_i = i dt, i = 0 .. n-1 (at most the capacity; mu = 0). */
 void sus_lab_series_exact(sus_lab_series *s, const sus_exact *ex, double dt, size_t n);
 

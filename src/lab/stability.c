@@ -14,8 +14,8 @@ const char *const SUS_LAB_STAB_NAMES[SUS_LAB_STAB_NCLASS] = {"good", "wrong limi
 /* The physical branch: the root continued in eps from 0 (where it is the trivial one) to eps,
  * newton.h's continuation. Returns SUS_STEPPER_OK with w^{k+1} of that root in x, or the
  * continuation's failure: SUS_STEPPER_SINGULAR at a fold. */
-static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
-                         double x[2])
+static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps,
+                         const double w[2], double x[2])
 {
     double root[SUS_MAX_UNKNOWNS], reg;
     sus_stepper_stats s;
@@ -29,7 +29,8 @@ static int continue_root(const sus_model *m, const sus_stepper_type *st, double 
 
 /* The class a step w -> x (status, stats s) ends the run with, or -1 when the run goes on. */
 static int step_class(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
-                      const double x[2], int status, const sus_stepper_stats *s, double r0, int check_branch)
+                      const double x[2], int status, const sus_stepper_stats *s, double r0,
+                      int check_branch)
 {
     if (status == SUS_STEPPER_SINGULAR ||
         (st->equation && status == SUS_STEPPER_OK && !(s->det > 0.0)))
@@ -66,7 +67,7 @@ static int period(const double ring[][2], long k, const double w[2])
 }
 
 void sus_lab_stability_run(const sus_exact *ex, const sus_stepper_type *st, double eps, long N,
-                          int check_branch, sus_lab_stab_result *res)
+                           int check_branch, sus_lab_stab_result *res)
 {
     const sus_model *m = ex->model;
     double w[3] = {ex->w0[0], ex->w0[1], 0.0}, ring[SUS_LAB_STAB_CYCLE][2], winf[2];
@@ -93,21 +94,24 @@ void sus_lab_stability_run(const sus_exact *ex, const sus_stepper_type *st, doub
     res->step = 0;
     res->w_fail[0] = w[0], res->w_fail[1] = w[1];
     res->final_err = hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
-    res->cls = res->final_err <= SUS_LAB_STAB_GOOD_TOL ? SUS_LAB_STAB_GOOD : SUS_LAB_STAB_WRONG_LIMIT;
+    res->cls =
+        res->final_err <= SUS_LAB_STAB_GOOD_TOL ? SUS_LAB_STAB_GOOD : SUS_LAB_STAB_WRONG_LIMIT;
 }
 
 /* Does the branch from w reach e? */
-static int reaches(const sus_model *m, const sus_stepper_type *st, const double w[2], double e, double *root)
+static int reaches(const sus_model *m, const sus_stepper_type *st, const double w[2], double e,
+                   double *root)
 {
     double reg;
     sus_stepper_stats s;
     const sus_step_equation *eq = st->equation;
-    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, &reg)
-        == SUS_STEPPER_OK;
+    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, &reg) ==
+           SUS_STEPPER_OK;
 }
 
 /* |det J| of the step equation at its branch root for step e. */
-static double branch_det(const sus_model *m, const sus_stepper_type *st, const double w[2], double e)
+static double branch_det(const sus_model *m, const sus_stepper_type *st, const double w[2],
+                         double e)
 {
     double root[SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS],
         dx[SUS_MAX_UNKNOWNS], det = NAN, scale;
@@ -121,7 +125,8 @@ static double branch_det(const sus_model *m, const sus_stepper_type *st, const d
 int sus_lab_fold(const sus_model *m, const sus_stepper_type *st, const double w[2], double eps,
                  double *e_star, double *exponent)
 {
-    double root[SUS_MAX_UNKNOWNS], lo = 0.0, hi = eps, s[SUS_LAB_FOLD_POINTS], d[SUS_LAB_FOLD_POINTS];
+    double root[SUS_MAX_UNKNOWNS], lo = 0.0, hi = eps, s[SUS_LAB_FOLD_POINTS],
+                                   d[SUS_LAB_FOLD_POINTS];
     if (!st->equation || reaches(m, st, w, eps, root))
         return -1;
     while (fabs(hi - lo) > SUS_LAB_FOLD_BISECT * fabs(eps)) {
@@ -137,7 +142,8 @@ int sus_lab_fold(const sus_model *m, const sus_stepper_type *st, const double w[
         d[j] = branch_det(m, st, w, lo - copysign(s[j], lo));
     }
     sus_lab_order_fit f;
-    if (sus_lab_fit_order(s, d, SUS_LAB_FOLD_POINTS, INFINITY, 0.0, &f) != 0 || f.used != SUS_LAB_FOLD_POINTS)
+    if (sus_lab_fit_order(s, d, SUS_LAB_FOLD_POINTS, INFINITY, 0.0, &f) != 0 ||
+        f.used != SUS_LAB_FOLD_POINTS)
         return -1;
     *exponent = f.slope;
     return 0;
@@ -154,7 +160,8 @@ void sus_lab_ellipse_point(const sus_exact *ref, double theta, double w[2])
  * does, 0 when it does not, 2 when a step is refused as beyond its series' proved radius. */
 static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
 {
-    const double theta = atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
+    const double theta =
+        atan2(ex->sb, ex->cb) + 0.5 * 3.14159265358979323846 + 1e-6; /* psi = pi/2 + 1e-6 */
     double w[3] = {0.0, 0.0, 0.0};
     sus_lab_ellipse_point(ex, theta, w);
     const double c0 = fabs(sus_c(ex->model, w)), eps = h / ex->k;
@@ -172,8 +179,8 @@ static int returns(const sus_exact *ex, const sus_stepper_type *st, double h)
     return fabs(sus_c(ex->model, w)) < c0;
 }
 
-double sus_lab_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
-                               int *radius_bound)
+double sus_lab_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo,
+                               double hi, int *radius_bound)
 {
     int at_hi = returns(ex, st, hi);
     *radius_bound = 0;
@@ -198,17 +205,18 @@ long sus_lab_stability_steps(double h)
     return (long)fmin(40000.0, fmax(40.0 / h, 10.0 * h) + 50.0);
 }
 
-void sus_lab_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs, int nh,
-                          int nangle, sus_lab_stab_result *results)
+void sus_lab_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs,
+                           int nh, int nangle, sus_lab_stab_result *results)
 {
     for (int i = 0; i < nh; i++)
         for (int a = 0; a < nangle; a++) {
             double w0[2];
             sus_exact ex;
-            sus_lab_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / nangle + SUS_LAB_STAB_ANGLE0, w0);
+            sus_lab_ellipse_point(
+                paper, 2.0 * 3.14159265358979323846 * a / nangle + SUS_LAB_STAB_ANGLE0, w0);
             sus_exact_init(&ex, paper->model, w0);
             sus_lab_stability_run(&ex, st, hs[i] / paper->k, sus_lab_stability_steps(hs[i]),
-                                 hs[i] >= SUS_LAB_STAB_BRANCH_H, &results[i * nangle + a]);
+                                  hs[i] >= SUS_LAB_STAB_BRANCH_H, &results[i * nangle + a]);
         }
 }
 

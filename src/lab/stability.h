@@ -45,7 +45,7 @@ typedef struct {
 } sus_lab_stab_result;
 
 void sus_lab_stability_run(const sus_exact *ex, const sus_stepper_type *st, double eps, long N,
-                          int check_branch, sus_lab_stab_result *res);
+                           int check_branch, sus_lab_stab_result *res);
 
 /* The point of the energy ellipse of the paper's w(0) at angle theta in the Cholesky
  * coordinates of exact.h (theta = psi + beta), and the rate k there (the same all round). */
@@ -57,19 +57,20 @@ void sus_lab_ellipse_point(const sus_exact *ref, double theta, double w[2]);
  * returns at hi, NAN when it does not even return at lo. *radius_bound: 1 when what ends the
  * returns there is a step refused as beyond its series' proved radius (a Taylor step), not an
  * instability: the linear limit lies beyond the steps the method takes from there. */
-double sus_lab_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo, double hi,
-                               int *radius_bound);
+double sus_lab_stability_limit(const sus_exact *ex, const sus_stepper_type *st, double lo,
+                               double hi, int *radius_bound);
 
 /* The run length for step h: long enough for the exact motion (k t = 40) and for a method
  * whose contraction per step is only 1 - O(1/h) (the A-stable midpoint rule at large h). */
 long sus_lab_stability_steps(double h);
 
-/* The map: classes[i * nangle + a] for h = hs[i] and w0 at angle 2 pi a / nangle + SUS_LAB_STAB_ANGLE0
- * on the paper's energy ellipse; the branch check runs for h >= SUS_LAB_STAB_BRANCH_H. */
+/* The map: classes[i * nangle + a] for h = hs[i] and w0 at angle 2 pi a / nangle +
+ * SUS_LAB_STAB_ANGLE0 on the paper's energy ellipse; the branch check runs for h >=
+ * SUS_LAB_STAB_BRANCH_H. */
 #define SUS_LAB_STAB_ANGLE0 0.01
 #define SUS_LAB_STAB_BRANCH_H 0.05
-void sus_lab_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs, int nh,
-                          int nangle, sus_lab_stab_result *results);
+void sus_lab_stability_map(const sus_exact *paper, const sus_stepper_type *st, const double *hs,
+                           int nh, int nangle, sus_lab_stab_result *results);
 
 /* Where the step equation's branch from w has a fold, for a step eps the continuation does not
  * reach: e_star, the largest step it reaches (bisection to SUS_LAB_FOLD_BISECT of eps), and the

@@ -24,9 +24,9 @@ static int substep(const sus_model *m, double h, const double w[3], double x[3],
 
 /* The s substeps; with q (the attitude as a quaternion) the reconstruction recon follows every
  * substep, (algo) step 3 over that substep. */
-static int run_substeps(const sus_step_composition *c, const sus_model *m, double eps, sus_recon recon,
-                        double q[4], const double w[3], double w_next[3], double *lambda_next,
-                        sus_stepper_stats *st)
+static int run_substeps(const sus_step_composition *c, const sus_model *m, double eps,
+                        sus_recon recon, double q[4], const double w[3], double w_next[3],
+                        double *lambda_next, sus_stepper_stats *st)
 {
     double u[3] = {w[0], w[1], w[2]};
     *st = (sus_stepper_stats){0};
@@ -46,15 +46,15 @@ static int run_substeps(const sus_step_composition *c, const sus_model *m, doubl
 }
 
 int sus_step_composition_apply(const sus_step_composition *c, const sus_model *m, double eps,
-                             const double w[3], double w_next[3], double *lambda_next,
-                             sus_stepper_stats *st)
+                               const double w[3], double w_next[3], double *lambda_next,
+                               sus_stepper_stats *st)
 {
     return run_substeps(c, m, eps, SUS_RECON_CAYLEY, NULL, w, w_next, lambda_next, st);
 }
 
 int sus_step_composition_apply_full(const sus_step_composition *c, const sus_model *m, double eps,
-                                  sus_recon recon, sus_attitude *att, const double w[3],
-                                  double w_next[3], double *lambda_next, sus_stepper_stats *st)
+                                    sus_recon recon, sus_attitude *att, const double w[3],
+                                    double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
     double q[4];
     /* The attitude goes through the substeps as a quaternion and is written back as R(q/|q|):

@@ -15,14 +15,17 @@ extern "C" {
 #endif
 
 typedef struct {
-    const char *name;    /* e.g. "Kahan-Li s=9" */
-    const char *source;  /* where the weights were taken from */
-    int order;           /* the order the source states (the ledger measures it) */
-    int half;            /* m: the weights g_1..g_m, the middle one last; s = 2m - 1 stages */
+    const char *name;   /* e.g. "Kahan-Li s=9" */
+    const char *source; /* where the weights were taken from */
+    int order;          /* the order the source states (the ledger measures it) */
+    int half;           /* m: the weights g_1..g_m, the middle one last; s = 2m - 1 stages */
     const double *g;
 } sus_step_composition;
 
-static inline int sus_step_composition_stages(const sus_step_composition *c) { return 2 * c->half - 1; }
+static inline int sus_step_composition_stages(const sus_step_composition *c)
+{
+    return 2 * c->half - 1;
+}
 /* g_i for i = 0..s-1 from the half-sequence. */
 static inline double sus_step_composition_weight(const sus_step_composition *c, int i)
 {
@@ -32,21 +35,21 @@ static inline double sus_step_composition_weight(const sus_step_composition *c, 
 
 /* The w-step of the composition (no attitude): s midpoint substeps. */
 int sus_step_composition_apply(const sus_step_composition *c, const sus_model *m, double eps,
-                             const double w[3], double w_next[3], double *lambda_next,
-                             sus_stepper_stats *st);
+                               const double w[3], double w_next[3], double *lambda_next,
+                               sus_stepper_stats *st);
 /* The whole step of (w, R): every midpoint substep is followed by the reconstruction recon over
  * that substep, so that the composed map is the composition of the symmetric pair. */
 int sus_step_composition_apply_full(const sus_step_composition *c, const sus_model *m, double eps,
-                                  sus_recon recon, sus_attitude *att, const double w[3],
-                                  double w_next[3], double *lambda_next, sus_stepper_stats *st);
+                                    sus_recon recon, sus_attitude *att, const double w[3],
+                                    double w_next[3], double *lambda_next, sus_stepper_stats *st);
 
 /* The steppers (src/methods/step_composition.c): the midpoint DSP composed with each table. */
-extern const sus_stepper_type sus_step_comp4_s5_type, sus_step_comp6_kl_type, sus_step_comp8_kl_type,
-    sus_step_comp10_ss_type;
+extern const sus_stepper_type sus_step_comp4_s5_type, sus_step_comp6_kl_type,
+    sus_step_comp8_kl_type, sus_step_comp10_ss_type;
 
 /* The tables (src/methods/composition_coeffs.c). */
-extern const sus_step_composition sus_step_comp_suzuki4, sus_step_comp_kahan_li6, sus_step_comp_kahan_li8,
-    sus_step_comp_sofroniou10;
+extern const sus_step_composition sus_step_comp_suzuki4, sus_step_comp_kahan_li6,
+    sus_step_comp_kahan_li8, sus_step_comp_sofroniou10;
 
 #ifdef __cplusplus
 }

@@ -137,9 +137,9 @@ static int decide(newton_state *s, double *x, int n, sus_stepper_stats *st)
     if (st->residual < s->best.residual)
         keep(&s->best, x, n, st->residual, st->scale);
     /* Stagnation at the round-off floor: near a large or ill-conditioned Jacobian |G| cannot fall
-     * below ~ |J| ulp(x) times a few, which may sit above SUS_STEP_NEWTON_RTOL * scale. When an iteration
-     * no longer halves |G| and |G| is within SUS_STEP_NEWTON_STAGNATION * scale, the best iterate is the
-     * root to working precision. */
+     * below ~ |J| ulp(x) times a few, which may sit above SUS_STEP_NEWTON_RTOL * scale. When an
+     * iteration no longer halves |G| and |G| is within SUS_STEP_NEWTON_STAGNATION * scale, the best
+     * iterate is the root to working precision. */
     if (st->residual > SUS_STEP_NEWTON_RTOL * st->scale &&
         st->residual <= SUS_STEP_NEWTON_STAGNATION * st->scale && st->residual > 0.5 * s->prev) {
         restore(&s->best, x, n, st);
@@ -165,7 +165,8 @@ static int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps
                         double *x, sus_stepper_stats *st, int maxit)
 {
     double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS];
-    newton_state s = {.prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY, .maxit = maxit};
+    newton_state s = {
+        .prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY, .maxit = maxit};
     keep(&s.best, x, n, INFINITY, 0.0);
     st->iterations = 0;
     st->det = NAN;
@@ -195,8 +196,8 @@ static int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps
     }
 }
 
-int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-                        double *x, sus_stepper_stats *st)
+int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,
+                          const double w[2], double *x, sus_stepper_stats *st)
 {
     return newton_solve(G, n, m, eps, w, x, st, SUS_STEP_NEWTON_MAXIT);
 }
@@ -204,11 +205,11 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
 /* ---- the branch: continuation in eps from the root at eps = 0 ---- */
 
 /* |det J| / |J|_F^2 (n = 2) or |det J|^(2/n) / |J|_F^2: how far J is from singular, scale-free. */
-static double regularity(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-                         const double *x)
+static double regularity(sus_residual_fn G, int n, const sus_model *m, double eps,
+                         const double w[2], const double *x)
 {
-    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS], det, sc,
-        f2 = 0.0;
+    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS], det,
+        sc, f2 = 0.0;
     G(m, eps, w, x, g, J, &sc);
     for (int i = 0; i < n * n; i++)
         f2 += J[i] * J[i];
@@ -221,7 +222,7 @@ static double regularity(sus_residual_fn G, int n, const sus_model *m, double ep
  * near-singular I_m stretches the ellipse by cond(I_m)^(1/2), and the roots with it. */
 static double unknowns_scale(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double tr = 0.5 * (I[0][0] + I[1][1]), dif = 0.5 * (I[0][0] - I[1][1]);
     const double lmax = tr + hypot(dif, I[0][1]), lmin = m->det_m / lmax; /* I_m symmetric, > 0 */
     const double reach = sqrt(2.0 * sus_energy(m, w) / lmin);
@@ -242,8 +243,8 @@ static double moved_by(const double *a, const double *b, int n)
  * is I_m or blocks of it) no farther than BRANCH_JUMP times the unknowns' scale from xp: a root
  * reached that way is the one the prediction follows, not one of the others (they lie that far
  * away). */
-static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const double w[2], double *xp,
-                 sus_stepper_stats *st, int *its)
+static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const double w[2],
+                 double *xp, sus_stepper_stats *st, int *its)
 {
     double x[SUS_MAX_UNKNOWNS];
     const double size = unknowns_scale(m, w);
@@ -259,8 +260,9 @@ static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const d
     return 0;
 }
 
-int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
-                           const double w[2], double *x, sus_stepper_stats *st, double *reg_min)
+int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                           double eps, const double w[2], double *x, sus_stepper_stats *st,
+                           double *reg_min)
 {
     double prev[SUS_MAX_UNKNOWNS], cur[SUS_MAX_UNKNOWNS], xp[SUS_MAX_UNKNOWNS];
     double e = 0.0, e_prev = 0.0, de = eps / BRANCH_FIRST, reg_last = 1.0;
@@ -292,7 +294,8 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
         }
         for (int i = 0; i < n; i++)
             prev[i] = cur[i], cur[i] = xp[i];
-        e_prev = e, e = en, de *= st->iterations <= BRANCH_EASY_ITS ? BRANCH_GROW_EASY : BRANCH_GROW;
+        e_prev = e, e = en,
+        de *= st->iterations <= BRANCH_EASY_ITS ? BRANCH_GROW_EASY : BRANCH_GROW;
         reg_last = regularity(G, n, m, e, w, cur) / reg0;
         *reg_min = fmin(*reg_min, reg_last);
     }
@@ -302,8 +305,8 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
     return SUS_STEPPER_OK;
 }
 
-int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
-                                 const double w[2], double *x, sus_stepper_stats *st)
+int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                                 double eps, const double w[2], double *x, sus_stepper_stats *st)
 {
     int its = 0;
     guess(m, eps, w, x);

@@ -11,13 +11,13 @@ extern "C" {
 #endif
 
 /* Iterates from the initial guess in x[n], n <= SUS_MAX_UNKNOWNS. Returns SUS_STEPPER_OK when
- * |G|_inf falls to SUS_STEP_NEWTON_RTOL * scale and one more (polishing) correction has been applied, or
- * when a correction falls below the spacing of doubles at x, or when the iteration stagnates at a
- * residual within SUS_STEP_NEWTON_STAGNATION * scale (round-off amplified by the Jacobian);
- * SUS_STEPPER_SINGULAR when the Jacobian (for n = 2 the (REGLOC) block) is singular to working
- * precision; SUS_STEPPER_NO_CONVERGENCE after SUS_STEP_NEWTON_MAXIT steps. */
-int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-                        double *x, sus_stepper_stats *st);
+ * |G|_inf falls to SUS_STEP_NEWTON_RTOL * scale and one more (polishing) correction has been
+ * applied, or when a correction falls below the spacing of doubles at x, or when the iteration
+ * stagnates at a residual within SUS_STEP_NEWTON_STAGNATION * scale (round-off amplified by the
+ * Jacobian); SUS_STEPPER_SINGULAR when the Jacobian (for n = 2 the (REGLOC) block) is singular to
+ * working precision; SUS_STEPPER_NO_CONVERGENCE after SUS_STEP_NEWTON_MAXIT steps. */
+int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,
+                          const double w[2], double *x, sus_stepper_stats *st);
 
 /* The root the step defines: the branch continued in eps from the root at eps = 0 (guess(0)),
  * on which det J > 0 as at eps = 0 ((REGLOC): J is I_m there, or blocks of it). Stages of
@@ -28,16 +28,17 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
  * SUS_STEPPER_SINGULAR when the stages shrink to nothing where r had fallen to BRANCH_FOLD (a
  * fold: the branch turns back, and beyond it the step has no root on the branch);
  * SUS_STEPPER_NO_CONVERGENCE otherwise. *reg_min: the least r over the accepted stages. */
-int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
-                           const double w[2], double *x, sus_stepper_stats *st, double *reg_min);
+int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                           double eps, const double w[2], double *x, sus_stepper_stats *st,
+                           double *reg_min);
 
 /* Newton from guess(eps), taken when it holds as a stage of the continuation below would (a quick
  * convergence near the prediction, det J > 0); else the branch by continuation
  * (sus_step_newton_branch). So where the prediction is good (small eps) the step is Newton from it,
  * as it always was, and elsewhere the continued root, not whichever root Newton wandered to.
  * stats.iterations counts every Newton iteration. */
-int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m, double eps,
-                                 const double w[2], double *x, sus_stepper_stats *st);
+int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                                 double eps, const double w[2], double *x, sus_stepper_stats *st);
 
 /* dx = J^{-1} g and det J for n <= SUS_MAX_UNKNOWNS (J row-major, overwritten). Returns -1,
  * leaving dx unset, when J is singular to working precision: |det| at or below 4 n u times the sum

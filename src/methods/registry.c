@@ -6,38 +6,43 @@
 /* One line per method: its stepper type (sus_step_ID_type, defined in its stepper file), a display
  * family, the \label of the statement it tests (NULL for an extension), its default
  * reconstruction, and one line for --help. Everything else a consumer needs is in the type. */
-#define SUS_STEP_METHODS(M) \
-    M(euler, "paper DSP", "Discretization", CAYLEY, "(Discretization) with l = I_m f(w^k): explicit Euler") \
-    M(midpoint, "paper DSP", "Discretization", CAYLEY, \
-      "(Discretization) with the midpoint l1, l2 (Figures 1-2)") \
-    M(rk4, "paper DSP", "Discretization", CAYLEY, \
-      "(Discretization) with the classical Runge-Kutta increment") \
-    M(variational, "variational", "PropoFinal", CAYLEY, "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}") \
-    M(comp4_s5, "composition", NULL, EXP_MID, "midpoint DSP composed, Suzuki s=5, order 4") \
-    M(comp6_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=9, order 6") \
-    M(comp8_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=17, order 8") \
-    M(comp10_ss, "composition", NULL, EXP_MID, "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10") \
-    M(taylor8, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(8)) \
-    M(taylor10, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(10)) \
-    M(taylor12, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(12)) \
-    M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16)) \
-    M(gauss4, "collocation", NULL, EXP_MID, "2-stage Gauss-Legendre collocation, order 4, conserves E")
+#define SUS_STEP_METHODS(M)                                                                        \
+    M(euler, "paper DSP", "Discretization", CAYLEY,                                                \
+      "(Discretization) with l = I_m f(w^k): explicit Euler")                                      \
+    M(midpoint, "paper DSP", "Discretization", CAYLEY,                                             \
+      "(Discretization) with the midpoint l1, l2 (Figures 1-2)")                                   \
+    M(rk4, "paper DSP", "Discretization", CAYLEY,                                                  \
+      "(Discretization) with the classical Runge-Kutta increment")                                 \
+    M(variational, "variational", "PropoFinal", CAYLEY,                                            \
+      "(taudyn) for w^{k+1}, (taualg) for lambda_{k+1}")                                           \
+    M(comp4_s5, "composition", NULL, EXP_MID, "midpoint DSP composed, Suzuki s=5, order 4")        \
+    M(comp6_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=9, order 6")      \
+    M(comp8_kl, "composition", NULL, EXP_MID, "midpoint DSP composed, Kahan-Li s=17, order 8")     \
+    M(comp10_ss, "composition", NULL, EXP_MID,                                                     \
+      "midpoint DSP composed, Sofroniou-Spaletta s=35, order 10")                                  \
+    M(taylor8, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(8))                                           \
+    M(taylor10, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(10))                                         \
+    M(taylor12, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(12))                                         \
+    M(taylor16, "taylor", NULL, EXP_MID, TAYLOR_ABOUT(16))                                         \
+    M(gauss4, "collocation", NULL, EXP_MID,                                                        \
+      "2-stage Gauss-Legendre collocation, order 4, conserves E")
 
 /* Tolerance-driven methods (stepper.h, sus_tol_ops): after the fixed-step ones, outside
  * sus_step_method_count(), so that the sweeps over eps do not meet them. */
-#define SUS_STEP_TOL_METHODS(M) \
-    M(taylor_adaptive, "taylor", NULL, EXP_MID, \
-      "Taylor series, order and steps from --tol, rows by dense output (--every-time)") \
-    M(exact_attitude, "closed form", NULL, EXP_MID, \
-      "w from the closed form, attitude series with steps from --tol, the steady tail in one step")
+#define SUS_STEP_TOL_METHODS(M)                                                                    \
+    M(taylor_adaptive, "taylor", NULL, EXP_MID,                                                    \
+      "Taylor series, order and steps from --tol, rows by dense output (--every-time)")            \
+    M(exact_attitude, "closed form", NULL, EXP_MID,                                                \
+      "w from the closed form, attitude series with steps from --tol, the steady tail in one "     \
+      "step")
 
-#define TAYLOR_ABOUT(P) \
-    "Taylor series of order " #P ", quaternion attitude series, E restored"
+#define TAYLOR_ABOUT(P) "Taylor series of order " #P ", quaternion attitude series, E restored"
 
 #define DECLARE(ID, FAMILY, REF, RECON, ABOUT) extern const sus_stepper_type sus_step_##ID##_type;
 SUS_STEP_METHODS(DECLARE)
 SUS_STEP_TOL_METHODS(DECLARE)
-#define ENTRY(ID, FAMILY, REF, RECON, ABOUT) {&sus_step_##ID##_type, FAMILY, REF, SUS_RECON_##RECON, ABOUT},
+#define ENTRY(ID, FAMILY, REF, RECON, ABOUT)                                                       \
+    {&sus_step_##ID##_type, FAMILY, REF, SUS_RECON_##RECON, ABOUT},
 #define ONE(ID, FAMILY, REF, RECON, ABOUT) +1
 static const sus_step_method METHODS[] = {SUS_STEP_METHODS(ENTRY) SUS_STEP_TOL_METHODS(ENTRY)};
 enum { NFIXED = 0 SUS_STEP_METHODS(ONE) };
@@ -83,7 +88,8 @@ const char *sus_step_method_names(char *buf, unsigned long len, const char *sep)
         sep = "";
     buf[0] = '\0';
     for (int i = 0; i < NMETHODS && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? sep : "", METHODS[i].type->name);
+        used +=
+            (size_t)snprintf(buf + used, len - used, "%s%s", i ? sep : "", METHODS[i].type->name);
     return buf;
 }
 
@@ -115,8 +121,9 @@ int sus_step_methods_write_tsv(FILE *fp)
 {
     if (!fp)
         return -1;
-    fprintf(fp, "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
-                "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
+    fprintf(fp,
+            "name\tfamily\torder\tlambda_order\timplicit\tunknowns\tconserves_energy\tattitude\t"
+            "follows_recon\tsubsteps\tstability\trecon\tpaper_ref\tsource\tabout\n");
     for (int i = 0; i < NMETHODS; i++) {
         const sus_step_method *me = &METHODS[i];
         const sus_stepper_type *t = me->type;

@@ -1,26 +1,33 @@
 /* The composition methods as steppers: the midpoint DSP (Discretization) composed with the
- * weights of src/methods/composition_coeffs.c (the engine is src/methods/composition.c). One stepper per
- * table; apply is the w-step, apply_full advances (w, R) with the reconstruction after every substep. */
+ * weights of src/methods/composition_coeffs.c (the engine is src/methods/composition.c). One
+ * stepper per table; apply is the w-step, apply_full advances (w, R) with the reconstruction after
+ * every substep. */
 #include "composition.h"
 
-#define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE) \
-    static int ID##_apply(const sus_model *m, double eps, const double w[3], double w_next[3], \
-                          double *lambda_next, sus_stepper_stats *st) \
-    { \
-        return sus_step_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st); \
-    } \
+#define COMPOSITION_STEPPER(ID, NAME, ORDER, STAGES, TABLE)                                        \
+    static int ID##_apply(const sus_model *m, double eps, const double w[3], double w_next[3],     \
+                          double *lambda_next, sus_stepper_stats *st)                              \
+    {                                                                                              \
+        return sus_step_composition_apply(&TABLE, m, eps, w, w_next, lambda_next, st);             \
+    }                                                                                              \
     static int ID##_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att, \
-                               const double w[3], double w_next[3], double *lambda_next, \
-                               sus_stepper_stats *st) \
-    { \
-        return sus_step_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, st); \
-    } \
-    static const sus_step_ops ID##_step = {.apply = ID##_apply, .apply_full = ID##_apply_full}; \
-    const sus_stepper_type sus_step_##ID##_type = { \
-        .name = NAME, .step = &ID##_step, \
-        .desc = {.order = ORDER, .lambda_order = ORDER, .implicit = 1, .conserves_energy = 1, \
-                 .attitude = SUS_ATTITUDE_QUAT, .follows_recon = 1, .substeps = STAGES, \
-                 .source = __FILE__}};
+                               const double w[3], double w_next[3], double *lambda_next,           \
+                               sus_stepper_stats *st)                                              \
+    {                                                                                              \
+        return sus_step_composition_apply_full(&TABLE, m, eps, recon, att, w, w_next, lambda_next, \
+                                               st);                                                \
+    }                                                                                              \
+    static const sus_step_ops ID##_step = {.apply = ID##_apply, .apply_full = ID##_apply_full};    \
+    const sus_stepper_type sus_step_##ID##_type = {.name = NAME,                                   \
+                                                   .step = &ID##_step,                             \
+                                                   .desc = {.order = ORDER,                        \
+                                                            .lambda_order = ORDER,                 \
+                                                            .implicit = 1,                         \
+                                                            .conserves_energy = 1,                 \
+                                                            .attitude = SUS_ATTITUDE_QUAT,         \
+                                                            .follows_recon = 1,                    \
+                                                            .substeps = STAGES,                    \
+                                                            .source = __FILE__}};
 
 /* lambda_{k+1} = lambda(w^{k+1}) from (LagMult), as for the midpoint DSP: its order is p. Every
  * substep is a midpoint step, so E is conserved; STAGES = 2 half - 1 of the table (a unit test

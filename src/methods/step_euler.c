@@ -1,4 +1,5 @@
-/* Explicit Euler as a general DSP (Discretization): l = I_m f(w^k), lambda_{k+1} = lambda(w^{k+1}). */
+/* Explicit Euler as a general DSP (Discretization): l = I_m f(w^k), lambda_{k+1} = lambda(w^{k+1}).
+ */
 #include "stability_fn.h"
 #include "stepper.h"
 #include "dsp.h"
@@ -19,8 +20,12 @@ static int euler_apply(const sus_model *m, double eps, const double w[3], double
 
 static const sus_step_ops EULER_STEP = {.apply = euler_apply};
 
-const sus_stepper_type sus_step_euler_type = {
-    .name = "euler", .step = &EULER_STEP,
-    .desc = {.order = 1, .lambda_order = 1, .follows_recon = 1, .substeps = 1,
-             .stability = sus_step_stab_euler, .source = __FILE__}};
+const sus_stepper_type sus_step_euler_type = {.name = "euler",
+                                              .step = &EULER_STEP,
+                                              .desc = {.order = 1,
+                                                       .lambda_order = 1,
+                                                       .follows_recon = 1,
+                                                       .substeps = 1,
+                                                       .stability = sus_step_stab_euler,
+                                                       .source = __FILE__}};
 const sus_stepper_type *const sus_step_euler = &sus_step_euler_type;

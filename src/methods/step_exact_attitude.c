@@ -10,8 +10,8 @@
  * most the sum of the local errors of the steps taken so far, plus the tail's (below). The steps
  * share a budget: each accepted step's local error estimate is at most rate h, rate = (budget -
  * spent) / (t_stop - t), so the estimates summed never exceed the budget: tolq for a run that ends
- * before the tail, tolq / 2 for one that reaches it, the tail taking the other half. t_stop is t_end
- * or the start of the tail, where the integration stops exactly.
+ * before the tail, tolq / 2 for one that reaches it, the tail taking the other half. t_stop is
+ * t_end or the start of the tail, where the integration stops exactly.
  *
  * The tail. w(t) -> w_inf at the rate k. Once half the closed-form bound of the integral of
  * |w - w_inf| from t on (exact_tail.h; half: the quaternion's share) is at most tolq / 2, one step
@@ -30,21 +30,21 @@
  * sum through d (the degree-(d-1) sum locally extrapolated) is off by the terms past d. Over a step
  * s H they fall, from one degree to the next, by at most a s with a = H max(1 / rho, |w|_max /
  * (2 (d + 2))): the nearest singularity's ratio, and the rotation's, whose terms go like x^n / n!,
- * x = h |w| / 2. Projected from each of the last three terms (a conjugate pair of singularities makes
- * single terms dip, so one alone can mislead), the terms past d sum to at most
- *     est(s) = s^{d+1} B / (1 - a s),   B = max(|Q_d| a, |Q_{d-1}| a^2, |Q_{d-2}| a^3),
- * with h folded into the coefficients (X_n = x_n H^n, so the step s H has X_n s^n). The step takes
- * the largest s <= 1 with a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms)
- * and 2 B s^d <= rate H, so that est(s) <= rate s H: one series a step, never a retry.
+ * x = h |w| / 2. Projected from each of the last three terms (a conjugate pair of singularities
+ * makes single terms dip, so one alone can mislead), the terms past d sum to at most est(s) =
+ * s^{d+1} B / (1 - a s),   B = max(|Q_d| a, |Q_{d-1}| a^2, |Q_{d-2}| a^3), with h folded into the
+ * coefficients (X_n = x_n H^n, so the step s H has X_n s^n). The step takes the largest s <= 1 with
+ * a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms) and 2 B s^d <= rate H, so
+ * that est(s) <= rate s H: one series a step, never a retry.
  *
  * The degree, by TOL (DEGREES): the one with the least measured time to t = 50 over the paper's,
  * the general and the stiff bodies of tests/unit/bodies.h (geometric mean of time over the best
  * degree's), decade by decade; within two degrees of it the time changes little. A Magnus6 step
- * (Blanes, Casas & Ros; three Gauss nodes) on the same closed-form w was measured beside these: with
- * an error estimate worth the name (step doubling: two halves against one whole step) a pair of
- * half steps costs as much as a Taylor step of low degree and advances less far than a step of the
- * best degree, so the Taylor series was the cheaper at every tolerance on the general bodies; it is
- * not part of the method.
+ * (Blanes, Casas & Ros; three Gauss nodes) on the same closed-form w was measured beside these:
+ * with an error estimate worth the name (step doubling: two halves against one whole step) a pair
+ * of half steps costs as much as a Taylor step of low degree and advances less far than a step of
+ * the best degree, so the Taylor series was the cheaper at every tolerance on the general bodies;
+ * it is not part of the method.
  *
  * R stays in SO(3) to round-off: q is normalised at every step and R built from it. w is the
  * closed form at every step's end (|E - E0| a few u: w = L^{-T} u with |u| = r), w3 = 0. */
@@ -89,10 +89,10 @@ struct sus_tol_work {
 
 /* ---- the degree by TOL ---- */
 
-#define SERIES(N)                                                                                           \
-    static void series##N(const sus_model *m, double h, const double w[2], taylor_series *ts)               \
-    {                                                                                                       \
-        series(m, N, h, w, 1, ts);                                                                          \
+#define SERIES(N)                                                                                  \
+    static void series##N(const sus_model *m, double h, const double w[2], taylor_series *ts)      \
+    {                                                                                              \
+        series(m, N, h, w, 1, ts);                                                                 \
     }
 SERIES(11)
 SERIES(13)
@@ -104,7 +104,10 @@ static const struct {
     double tol_min;
     degree d;
 } DEGREES[] = {
-    {3.2e-4, {11, series11}}, {3.2e-6, {13, series13}}, {3.2e-10, {15, series15}}, {0.0, {17, series17}},
+    {3.2e-4, {11, series11}},
+    {3.2e-6, {13, series13}},
+    {3.2e-10, {15, series15}},
+    {0.0, {17, series17}},
 };
 
 static const degree *degree_for(double tol)
@@ -115,10 +118,7 @@ static const degree *degree_for(double tol)
     return &DEGREES[i].d;
 }
 
-int sus_step_exact_attitude_order(double tol)
-{
-    return degree_for(tol)->order;
-}
+int sus_step_exact_attitude_order(double tol) { return degree_for(tol)->order; }
 
 /* ---- one step ---- */
 
@@ -176,14 +176,15 @@ static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int
 /* A step of at most left from (t, w, q) whose estimate is at most rate h (top of the file): the
  * series over H, the step s H, q's rows rescaled to it (dense output reads them), q advanced.
  * Returns 0, or -1 for a series that overflowed (nothing advanced). */
-static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2], double q[4],
-                       double *h, double *est)
+static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2],
+                       double q[4], double *h, double *est)
 {
     const int d = wk->deg->order;
     const double rho = radius(wk, t), H = fmin(left, RADIUS_SHARE * rho);
     wk->deg->series_of(wk->m, H, w, &wk->ts);
     const double a = decay_per_degree(wk, H, rho, d);
-    const double q2 = quat_row(&wk->ts, d - 2), q1 = quat_row(&wk->ts, d - 1), q0 = quat_row(&wk->ts, d);
+    const double q2 = quat_row(&wk->ts, d - 2), q1 = quat_row(&wk->ts, d - 1),
+                 q0 = quat_row(&wk->ts, d);
     const double B = fmax(q0 * a, fmax(q1 * a * a, q2 * a * a * a)); /* the envelope at d + 1 */
     double s = fmin(1.0, 0.5 / a);
     if (s * q0 > 0.5 * q1) /* the last two terms halve too */
@@ -217,8 +218,8 @@ static void tail_rotate(const sus_tol_work *wk, double tau, double q[4])
 }
 
 /* w and lambda at t from the closed form, and the attitude from q. */
-static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3], double *lambda,
-                     sus_attitude *att)
+static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3],
+                     double *lambda, sus_attitude *att)
 {
     sus_exact_fast_omega(&wk->f, t, w);
     w[2] = 0.0;
@@ -246,13 +247,10 @@ static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2]
     return wk;
 }
 
-static void ea_free(sus_tol_work *wk)
-{
-    free(wk);
-}
+static void ea_free(sus_tol_work *wk) { free(wk); }
 
-static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda, sus_attitude *att,
-                   sus_stepper_stats *st)
+static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
+                   sus_attitude *att, sus_stepper_stats *st)
 {
     double q[4], h = t_end - *t, est = 0.0, rate = 0.0, stop = t_end;
     int failed = 0;
@@ -268,7 +266,8 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
         stop = stop_of(wk, t_end);
         failed = taylor_step(wk, *t, stop - *t, rate, w, q, &h, &est);
     }
-    *st = (sus_stepper_stats){.residual = DIST_PER_Q * est, .scale = DIST_PER_Q * rate * h, .det = h};
+    *st =
+        (sus_stepper_stats){.residual = DIST_PER_Q * est, .scale = DIST_PER_Q * rate * h, .det = h};
     if (failed || !(*t + h > *t))
         return SUS_STEPPER_REJECTED;
     wk->spent += est;
@@ -281,7 +280,8 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
 
 /* The state at tau into the last step: the steady rotation, or the step's Taylor polynomial at
  * tau / h; w and lambda from the closed form. */
-static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
+static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda,
+                     sus_attitude *att)
 {
     double q[4];
     memcpy(q, wk->q0, sizeof q);
@@ -292,9 +292,11 @@ static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *la
     state_at(wk, wk->t0 + tau, q, w, lambda, att);
 }
 
-static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order};
+static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free,
+                                   sus_step_exact_attitude_order};
 
 const sus_stepper_type sus_step_exact_attitude_type = {
-    .name = "exact-attitude", .tol = &EA_OPS,
-    .desc = {.conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
-             .source = __FILE__}};
+    .name = "exact-attitude",
+    .tol = &EA_OPS,
+    .desc = {
+        .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .source = __FILE__}};

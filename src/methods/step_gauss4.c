@@ -38,7 +38,7 @@ static void l_of(const sus_model *m, const double W[2], double l[2], double dl[2
 static void gauss4_residual(const sus_model *m, double eps, const double w[2], const double *x,
                             double *g, double *J, double *scale)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     double l[2][2], dl[2][2][2];
     l_of(m, x, l[0], dl[0]);
     l_of(m, x + 2, l[1], dl[1]);
@@ -54,9 +54,12 @@ static void gauss4_residual(const sus_model *m, double eps, const double w[2], c
         for (int a = 0; a < 2; a++)
             for (int j = 0; j < 2; j++)
                 for (int k = 0; k < 2; k++)
-                    J[(2 * i + a) * 4 + 2 * j + k] = (i == j ? I[a][k] : 0.0) - eps * A[i][j] * dl[j][a][k];
+                    J[(2 * i + a) * 4 + 2 * j + k] =
+                        (i == j ? I[a][k] : 0.0) - eps * A[i][j] * dl[j][a][k];
+        /* clang-format off */
         *scale += sI * (fabs(W[0]) + fabs(W[1]) + fabs(w[0]) + fabs(w[1]))
                 + eps * (fabs(A[i][0]) + fabs(A[i][1])) * sl;
+        /* clang-format on */
     }
 }
 
@@ -85,10 +88,11 @@ static double gauss4_stability(double z)
 
 /* The stages x = (W_1, W_2) on the branch continued from eps = 0 (newton.h), w^{k+1} and
  * lambda_{k+1} from them. */
-static int gauss4_stages(const sus_model *m, double eps, const double w[3], double x[4], double w_next[3],
-                         double *lambda_next, sus_stepper_stats *st)
+static int gauss4_stages(const sus_model *m, double eps, const double w[3], double x[4],
+                         double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = sus_step_newton_solve_branch(gauss4_residual, gauss4_guess, 4, m, eps, w, x, st);
+    const int status =
+        sus_step_newton_solve_branch(gauss4_residual, gauss4_guess, 4, m, eps, w, x, st);
     gauss4_result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
     *lambda_next = sus_lagmult(m, w_next);
@@ -139,7 +143,8 @@ static int attitude_step(double eps, const double x[4], double q[4])
 /* The whole step: w by the collocation above, the attitude by the same collocation (whatever
  * reconstruction is asked for: it is the method's own). */
 static int gauss4_apply_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
-                             const double w[3], double w_next[3], double *lambda_next, sus_stepper_stats *st)
+                             const double w[3], double w_next[3], double *lambda_next,
+                             sus_stepper_stats *st)
 {
     (void)recon;
     double x[4], q[4];
@@ -157,8 +162,14 @@ static const sus_step_equation GAUSS4_EQUATION = {
     .unknowns = 4, .residual = gauss4_residual, .guess = gauss4_guess, .result = gauss4_result};
 static const sus_step_ops GAUSS4_STEP = {.apply = gauss4_apply, .apply_full = gauss4_apply_full};
 
-const sus_stepper_type sus_step_gauss4_type = {
-    .name = "gauss4", .step = &GAUSS4_STEP, .equation = &GAUSS4_EQUATION,
-    .desc = {.order = 4, .lambda_order = 4, .implicit = 1, .conserves_energy = 1,
-             .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .stability = gauss4_stability,
-             .source = __FILE__}};
+const sus_stepper_type sus_step_gauss4_type = {.name = "gauss4",
+                                               .step = &GAUSS4_STEP,
+                                               .equation = &GAUSS4_EQUATION,
+                                               .desc = {.order = 4,
+                                                        .lambda_order = 4,
+                                                        .implicit = 1,
+                                                        .conserves_energy = 1,
+                                                        .attitude = SUS_ATTITUDE_QUAT,
+                                                        .substeps = 1,
+                                                        .stability = gauss4_stability,
+                                                        .source = __FILE__}};

@@ -14,7 +14,7 @@
 static void mid_residual(const sus_model *m, double eps, const double w[2], const double *x,
                          double *g, double *J, double *scale)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
     const double c = sus_c(m, mid);
     const double l1 = -mid[1] * c, l2 = mid[0] * c;
@@ -27,8 +27,8 @@ static void mid_residual(const sus_model *m, double eps, const double w[2], cons
     J[2] = I[1][0] - 0.5 * eps * (c + mid[0] * b[0]);
     J[3] = I[1][1] - 0.5 * eps * mid[0] * b[1];
     const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
-    *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx
-           + eps * (fabs(l1) + fabs(l2));
+    *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx +
+             eps * (fabs(l1) + fabs(l2));
 }
 
 static const sus_step_equation MID_EQUATION = {.unknowns = 2,
@@ -36,8 +36,8 @@ static const sus_step_equation MID_EQUATION = {.unknowns = 2,
                                                .guess = sus_step_predict,
                                                .result = sus_step_result_is_x};
 
-static int midpoint_apply(const sus_model *m, double eps, const double w[3],
-                          double w_next[3], double *lambda_next, sus_stepper_stats *st)
+static int midpoint_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                          double *lambda_next, sus_stepper_stats *st)
 {
     const int status = sus_step_implicit_solve(&MID_EQUATION, m, eps, w, w_next, st);
     *lambda_next = sus_lagmult(m, w_next);
@@ -47,9 +47,15 @@ static int midpoint_apply(const sus_model *m, double eps, const double w[3],
 /* The midpoint rule conserves the quadratic invariant E of (ContDyn). */
 static const sus_step_ops MID_STEP = {.apply = midpoint_apply};
 
-const sus_stepper_type sus_step_midpoint_type = {
-    .name = "midpoint", .step = &MID_STEP, .equation = &MID_EQUATION,
-    .desc = {.order = 2, .lambda_order = 2, .implicit = 1, .conserves_energy = 1,
-             .follows_recon = 1, .substeps = 1, .stability = sus_step_stab_midpoint,
-             .source = __FILE__}};
+const sus_stepper_type sus_step_midpoint_type = {.name = "midpoint",
+                                                 .step = &MID_STEP,
+                                                 .equation = &MID_EQUATION,
+                                                 .desc = {.order = 2,
+                                                          .lambda_order = 2,
+                                                          .implicit = 1,
+                                                          .conserves_energy = 1,
+                                                          .follows_recon = 1,
+                                                          .substeps = 1,
+                                                          .stability = sus_step_stab_midpoint,
+                                                          .source = __FILE__}};
 const sus_stepper_type *const sus_step_midpoint = &sus_step_midpoint_type;

@@ -29,8 +29,12 @@ static int rk4_apply(const sus_model *m, double eps, const double w[3], double w
 
 static const sus_step_ops RK4_STEP = {.apply = rk4_apply};
 
-const sus_stepper_type sus_step_rk4_type = {
-    .name = "rk4", .step = &RK4_STEP,
-    .desc = {.order = 4, .lambda_order = 4, .follows_recon = 1, .substeps = 1,
-             .stability = sus_step_stab_rk4, .source = __FILE__}};
+const sus_stepper_type sus_step_rk4_type = {.name = "rk4",
+                                            .step = &RK4_STEP,
+                                            .desc = {.order = 4,
+                                                     .lambda_order = 4,
+                                                     .follows_recon = 1,
+                                                     .substeps = 1,
+                                                     .stability = sus_step_stab_rk4,
+                                                     .source = __FILE__}};
 const sus_stepper_type *const sus_step_rk4 = &sus_step_rk4_type;

@@ -11,8 +11,9 @@
  * q' = 1/2 q (x) (0, w) (equivalent to R' = R w^, the reconstruction equation of (algo) in
  * continuous time), whose coefficients come from a second Cauchy product with those of w:
  *   Q_{n+1} = h/(2(n+1)) sum_{j<=n} Q_j (x) (0, W_{n-j}).
- * The attitude is carried as a unit quaternion: q_{k+1} = q_k (x) dq, R_{k+1} = R(q_{k+1}/|q_{k+1}|)
- * (quaternion.h), so R is orthogonal to one rounding at every step, however long the run.
+ * The attitude is carried as a unit quaternion: q_{k+1} = q_k (x) dq, R_{k+1} =
+ * R(q_{k+1}/|q_{k+1}|) (quaternion.h), so R is orthogonal to one rounding at every step, however
+ * long the run.
  *
  * Structure: w3 = 0 exactly (only w1, w2 are computed). E = 1/2 <I_m w, w> is restored after
  * each step by scaling w^{k+1} onto the energy of w^k (E is homogeneous of degree 2, so the
@@ -44,8 +45,8 @@ typedef struct {
 static taylor_majorant majorant_of(const sus_model *m, const double w[2])
 {
     const double c = fabs(sus_c(m, w));
-    const double nAw = hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
-                             m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
+    const double nAw =
+        hypot(m->fA[0][0] * w[0] + m->fA[0][1] * w[1], m->fA[1][0] * w[0] + m->fA[1][1] * w[1]);
     taylor_majorant mj = {m->norm_b * m->norm_fA, 0.0, 0.0, c * nAw};
     if (mj.K > 0.0) {
         mj.z0 = (c * m->norm_fA + m->norm_b * nAw) / (2.0 * mj.K);
@@ -58,9 +59,10 @@ static double majorant_radius(const taylor_majorant *mj)
 {
     if (!(mj->F > 0.0) || !(mj->K > 0.0))
         return INFINITY; /* an equilibrium (or b = 0): the series is the constant w */
-    const double rho = mj->beta > 0.0 ? log1p(2.0 * mj->beta * (mj->z0 + mj->beta) * mj->K / mj->F)
-                                            / (2.0 * mj->beta * mj->K)
-                                      : 1.0 / (mj->K * mj->z0);
+    const double rho =
+        mj->beta > 0.0
+            ? log1p(2.0 * mj->beta * (mj->z0 + mj->beta) * mj->K / mj->F) / (2.0 * mj->beta * mj->K)
+            : 1.0 / (mj->K * mj->z0);
     return rho * (1.0 - 1e-12); /* rounded down: a bound after rounding */
 }
 
@@ -104,8 +106,8 @@ double sus_step_taylor_tail_bound(int p, const sus_model *m, double h, const dou
 /* A step outside the proved radius is refused, not summed: its sum, scaled onto the energy
  * ellipse, would be a finite but possibly meaningless w^{k+1}. stats: the step over the radius
  * (an upper bound of it below 1 from the cheap test) and |w|_2. */
-static inline __attribute__((always_inline)) int diverged(const sus_model *m, double h, const double w[2],
-                                                          sus_stepper_stats *st)
+static inline __attribute__((always_inline)) int diverged(const sus_model *m, double h,
+                                                          const double w[2], sus_stepper_stats *st)
 {
     const double a = sqrt(w[0] * w[0] + w[1] * w[1]);
     *st = (sus_stepper_stats){.residual = m->norm_b * m->norm_fA * a * fabs(h), .scale = a};
@@ -115,9 +117,10 @@ static inline __attribute__((always_inline)) int diverged(const sus_model *m, do
     return !(st->residual < 1.0);
 }
 
-static inline __attribute__((always_inline)) int taylor_apply(const int p, const sus_model *m, double eps,
-                                                                const double w[3], double w_next[3],
-                                                                double *lambda_next, sus_stepper_stats *st)
+static inline __attribute__((always_inline)) int taylor_apply(const int p, const sus_model *m,
+                                                              double eps, const double w[3],
+                                                              double w_next[3], double *lambda_next,
+                                                              sus_stepper_stats *st)
 {
     taylor_series t;
     if (diverged(m, eps, w, st))
@@ -128,11 +131,9 @@ static inline __attribute__((always_inline)) int taylor_apply(const int p, const
     return SUS_STEPPER_OK;
 }
 
-static inline __attribute__((always_inline)) int taylor_apply_full(const int p, const sus_model *m,
-                                                                     double eps, sus_attitude *att,
-                                                                     const double w[3],
-                                                                     double w_next[3], double *lambda_next,
-                                                                     sus_stepper_stats *st)
+static inline __attribute__((always_inline)) int
+taylor_apply_full(const int p, const sus_model *m, double eps, sus_attitude *att, const double w[3],
+                  double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
     taylor_series t;
     if (diverged(m, eps, w, st))
@@ -151,8 +152,8 @@ static inline __attribute__((always_inline)) int taylor_apply_full(const int p, 
 /* The step with p known only at run time (not on any hot path: the registered steppers below use
  * the inlined forms with p constant). */
 int sus_step_taylor_apply_full(int p, const sus_model *m, double eps, sus_attitude *att,
-                             const double w[3], double w_next[3], double *lambda_next,
-                             sus_stepper_stats *st)
+                               const double w[3], double w_next[3], double *lambda_next,
+                               sus_stepper_stats *st)
 {
     return taylor_apply_full(p, m, eps, att, w, w_next, lambda_next, st);
 }
@@ -187,10 +188,16 @@ double sus_step_taylor_stability(int p, double z)
                                                   .apply_full = taylor##P##_apply_full,            \
                                                   .apply_order = sus_step_taylor_apply_full};      \
     const sus_stepper_type sus_step_taylor##P##_type = {                                           \
-        .name = "taylor" #P, .step = &taylor##P##_step,                                            \
-        .desc = {.order = P, .lambda_order = P, .conserves_energy = 1,                             \
-                 .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .pre_asymptotic = 1,                \
-                 .stability = sus_step_stab_taylor##P, .source = __FILE__}};
+        .name = "taylor" #P,                                                                       \
+        .step = &taylor##P##_step,                                                                 \
+        .desc = {.order = P,                                                                       \
+                 .lambda_order = P,                                                                \
+                 .conserves_energy = 1,                                                            \
+                 .attitude = SUS_ATTITUDE_QUAT,                                                    \
+                 .substeps = 1,                                                                    \
+                 .pre_asymptotic = 1,                                                              \
+                 .stability = sus_step_stab_taylor##P,                                             \
+                 .source = __FILE__}};
 
 /* Which order is cheapest depends on the accuracy (measured at t = 50 over every N from 2 to 40,
  * orders 6 to 20): order 8 or 10 at attitude 1e-4..1e-6 and for w alone,

@@ -97,13 +97,13 @@ struct sus_tol_work {
     const sus_model *m;
     double tol, e0; /* the tolerance and E(w_0), the energy every step restores */
     const struct adaptive_order *order;
-    double h_next; /* the next step to try (0: none yet) */
-    double h; /* the last accepted step */
-    double q0[4]; /* the attitude quaternion at its start */
-    taylor_series t; /* its series, for dense output */
+    double h_next;          /* the next step to try (0: none yet) */
+    double h;               /* the last accepted step */
+    double q0[4];           /* the attitude quaternion at its start */
+    taylor_series t;        /* its series, for dense output */
     double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
     double floor; /* w within this of w_inf settles at any tol: the rounding of w_inf itself */
-    int settled; /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
+    int settled;  /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
 };
 
 /* max(|a|_inf, |b|_inf) of two pairs; NaN if any entry is NaN. */
@@ -125,7 +125,8 @@ static double estimate(const taylor_series *t, int p)
 {
     const v2d z = {0.0, 0.0};
     const double ew = group_estimate(pair_norm(t->W[p - 1], z), pair_norm(t->W[p], z));
-    const double eq = group_estimate(pair_norm(t->P[p - 1], t->M[p - 1]), pair_norm(t->P[p], t->M[p]));
+    const double eq =
+        group_estimate(pair_norm(t->P[p - 1], t->M[p - 1]), pair_norm(t->P[p], t->M[p]));
     return (ew >= eq || isnan(ew)) ? ew : eq;
 }
 
@@ -136,16 +137,16 @@ typedef struct adaptive_order {
     void (*sums)(const sus_tol_work *wk, double w_next[3], double dq[4]);
 } adaptive_order;
 
-#define ADAPTIVE_ORDER(N)                                                                                    \
-    static double try##N(sus_tol_work *wk, double h, const double w[2])                                      \
-    {                                                                                                        \
-        series(wk->m, N, h, w, 1, &wk->t);                                                                   \
-        return estimate(&wk->t, N);                                                                          \
-    }                                                                                                        \
-    static void sums##N(const sus_tol_work *wk, double w_next[3], double dq[4])                              \
-    {                                                                                                        \
-        dq_from(&wk->t, N, dq);                                                                              \
-        w_next_from(wk->m, N, &wk->t, wk->e0, w_next);                                                       \
+#define ADAPTIVE_ORDER(N)                                                                          \
+    static double try##N(sus_tol_work *wk, double h, const double w[2])                            \
+    {                                                                                              \
+        series(wk->m, N, h, w, 1, &wk->t);                                                         \
+        return estimate(&wk->t, N);                                                                \
+    }                                                                                              \
+    static void sums##N(const sus_tol_work *wk, double w_next[3], double dq[4])                    \
+    {                                                                                              \
+        dq_from(&wk->t, N, dq);                                                                    \
+        w_next_from(wk->m, N, &wk->t, wk->e0, w_next);                                             \
     }
 ADAPTIVE_ORDER(6)
 ADAPTIVE_ORDER(8)
@@ -155,9 +156,9 @@ ADAPTIVE_ORDER(14)
 ADAPTIVE_ORDER(16)
 ADAPTIVE_ORDER(18)
 ADAPTIVE_ORDER(20)
-#define ENTRY(N)                                                                                             \
-    {                                                                                                        \
-        N, try##N, sums##N                                                                                   \
+#define ENTRY(N)                                                                                   \
+    {                                                                                              \
+        N, try##N, sums##N                                                                         \
     }
 static const adaptive_order ADAPTIVE_ORDERS[] = {ENTRY(6),  ENTRY(8),  ENTRY(10), ENTRY(12),
                                                  ENTRY(14), ENTRY(16), ENTRY(18), ENTRY(20)};
@@ -167,19 +168,18 @@ static const adaptive_order *order_for(double tol)
 {
     const double want = -0.5 * log(tol) + 1.0 + ORDER_SHIFT;
     for (int i = 0; i < NORDERS; i++)
-        if (ADAPTIVE_ORDERS[i].p >= want) return &ADAPTIVE_ORDERS[i];
+        if (ADAPTIVE_ORDERS[i].p >= want)
+            return &ADAPTIVE_ORDERS[i];
     return &ADAPTIVE_ORDERS[NORDERS - 1];
 }
 
-int sus_step_taylor_adaptive_order(double tol)
-{
-    return order_for(tol)->p;
-}
+int sus_step_taylor_adaptive_order(double tol) { return order_for(tol)->p; }
 
 /* g(w) = c(fA w): c' = g(w) c along (ContDyn), and g is linear in w. */
 static double rate(const sus_model *m, const double w[2])
 {
-    const double u0 = m->fA[0][0] * w[0] + m->fA[0][1] * w[1], u1 = m->fA[1][0] * w[0] + m->fA[1][1] * w[1];
+    const double u0 = m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
+                 u1 = m->fA[1][0] * w[0] + m->fA[1][1] * w[1];
     return m->b[0] * u0 + m->b[1] * u1;
 }
 
@@ -187,7 +187,7 @@ static double rate(const sus_model *m, const double w[2])
  * rounding exceeds u (up to cond(I_m) for a w along I_m's soft direction). */
 static double energy_terms_ratio(const sus_model *m, const double w[2], double e)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double t =
         0.5 * (fabs(I[0][0]) * w[0] * w[0] + (fabs(I[0][1]) + fabs(I[1][0])) * fabs(w[0] * w[1]) +
                fabs(I[1][1]) * w[1] * w[1]);
@@ -203,7 +203,8 @@ static void steady_rotation(sus_tol_work *wk, const double w0[2])
 {
     const sus_model *m = wk->m;
     const double d[2] = {-m->b[1], m->b[0]}, ed = sus_energy(m, d);
-    if (!(ed > 0.0) || !(wk->e0 > 0.0)) return;
+    if (!(ed > 0.0) || !(wk->e0 > 0.0))
+        return;
     const double s = rate(m, d) > 0.0 ? -sqrt(wk->e0 / ed) : sqrt(wk->e0 / ed);
     wk->w_inf[0] = s * d[0];
     wk->w_inf[1] = s * d[1];
@@ -216,21 +217,20 @@ static void steady_rotation(sus_tol_work *wk, const double w0[2])
 static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double w0[2])
 {
     sus_tol_work *wk = malloc(sizeof *wk);
-    if (!wk) return NULL;
+    if (!wk)
+        return NULL;
     *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
     steady_rotation(wk, w0);
     return wk;
 }
 
-static void adaptive_free(sus_tol_work *wk)
-{
-    free(wk);
-}
+static void adaptive_free(sus_tol_work *wk) { free(wk); }
 
 /* The step to try first: the longest the proved radius allows within [t, t_end]. */
 static double first_try(const sus_tol_work *wk, const double w[2], double left)
 {
-    const double h = wk->h_next > 0.0 ? wk->h_next : RADIUS_FRACTION * sus_step_taylor_radius(wk->m, w);
+    const double h =
+        wk->h_next > 0.0 ? wk->h_next : RADIUS_FRACTION * sus_step_taylor_radius(wk->m, w);
     return fmin(h, left);
 }
 
@@ -238,7 +238,8 @@ static double first_try(const sus_tol_work *wk, const double w[2], double left)
 static double within_radius(const sus_model *m, const double w[2], double h)
 {
     const double kh = m->norm_b * m->norm_fA * h; /* K |w| h < 1, squared: no hypot on every step */
-    if (kh * kh * (w[0] * w[0] + w[1] * w[1]) < 1.0) return h;
+    if (kh * kh * (w[0] * w[0] + w[1] * w[1]) < 1.0)
+        return h;
     return fmin(h, RADIUS_FRACTION * sus_step_taylor_radius(m, w));
 }
 
@@ -277,10 +278,13 @@ static double tail_error(const sus_tol_work *wk, const double w[2])
  * |w - w_inf|), so the closed form is set up for the last steps only. */
 static int settles(const sus_tol_work *wk, const double w[2])
 {
-    if (!(wk->k_inf > 0.0)) return 0;
+    if (!(wk->k_inf > 0.0))
+        return 0;
     const double dev = hypot(w[0] - wk->w_inf[0], w[1] - wk->w_inf[1]);
-    if (dev <= wk->floor) return 1;
-    if (!(rate(wk->m, w) < 0.0) || !(dev <= wk->tol)) return 0;
+    if (dev <= wk->floor)
+        return 1;
+    if (!(rate(wk->m, w) < 0.0) || !(dev <= wk->tol))
+        return 0;
     return tail_error(wk, w) <= wk->tol;
 }
 
@@ -338,14 +342,16 @@ static double rescaled_try(sus_tol_work *wk, int p, double s)
 static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                          sus_attitude *att, sus_stepper_stats *st)
 {
-    if (settles(wk, w)) return settled_step(wk, t_end, t, w, lambda, att, st);
+    if (settles(wk, w))
+        return settled_step(wk, t_end, t, w, lambda, att, st);
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));
     double err = wk->order->try_step(wk, h, w);
     int tries = 0;
     while (!(err <= wk->tol)) { /* NaN is rejected too */
         if (++tries == MAX_TRIES || !(*t + h > *t)) {
-            *st = (sus_stepper_stats){.iterations = tries, .residual = err, .scale = wk->tol, .det = h};
+            *st = (sus_stepper_stats){
+                .iterations = tries, .residual = err, .scale = wk->tol, .det = h};
             return SUS_STEPPER_REJECTED;
         }
         const double s = fmax(SHRINK_MIN, fmin(SAFETY, SAFETY * pow(wk->tol / err, 1.0 / (p + 1))));
@@ -360,7 +366,8 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
 
 /* The state at tau into the last step: the step's own polynomials at theta = tau / h (the
  * coefficients are scaled by h^n), w restored onto E(w_0), the quaternion normalised. */
-static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda, sus_attitude *att)
+static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda,
+                           sus_attitude *att)
 {
     if (wk->settled) {
         settled_attitude(wk, tau, att);
@@ -384,10 +391,11 @@ static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], doub
     sus_quat_to_attitude(q, att);
 }
 
-static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc, adaptive_step, adaptive_dense, adaptive_free,
-                                         sus_step_taylor_adaptive_order};
+static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc, adaptive_step, adaptive_dense,
+                                         adaptive_free, sus_step_taylor_adaptive_order};
 
 const sus_stepper_type sus_step_taylor_adaptive_type = {
-    .name = "taylor-adaptive", .tol = &ADAPTIVE_OPS,
-    .desc = {.conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1,
-             .source = __FILE__}};
+    .name = "taylor-adaptive",
+    .tol = &ADAPTIVE_OPS,
+    .desc = {
+        .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .source = __FILE__}};

@@ -18,7 +18,7 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
 static void taudyn_residual(const sus_model *m, double eps, const double w[2], const double *x,
                             double *g, double *J, double *scale)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double *b = m->b;
     const double cx = sus_c(m, x), cw = sus_c(m, w);
     double qx[2], qw[2];
@@ -41,25 +41,28 @@ static void taudyn_residual(const sus_model *m, double eps, const double w[2], c
     J[3] = I[1][1] - h * x[0] * b[1] + h2 * (s + x[1] * a1);
 
     const double sx = fabs(x[0]) + fabs(x[1]) + fabs(w[0]) + fabs(w[1]);
-    *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx
-           + h * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw))
-           + h2 * (fabs(qx[0]) + fabs(qw[0]) + fabs(qx[1]) + fabs(qw[1]));
+    *scale = (fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1])) * sx +
+             h * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
+             h2 * (fabs(qx[0]) + fabs(qw[0]) + fabs(qx[1]) + fabs(qw[1]));
 }
 
 /* (taualg): the multiplier after the rescaling lambda -> -lambda / eps^2. */
 static double taualg(const sus_model *m, const double x[2], const double w[2])
 {
-    const double (*I)[3] = m->I;
-    return 0.5 * (x[0] * (I[1][0] * x[0] + I[1][1] * x[1]) + w[0] * (I[1][0] * w[0] + I[1][1] * w[1]))
-         - 0.5 * (x[1] * (I[0][0] * x[0] + I[0][1] * x[1]) + w[1] * (I[0][0] * w[0] + I[0][1] * w[1]));
+    const double(*I)[3] = m->I;
+    return 0.5 * (x[0] * (I[1][0] * x[0] + I[1][1] * x[1]) +
+                  w[0] * (I[1][0] * w[0] + I[1][1] * w[1])) -
+           0.5 * (x[1] * (I[0][0] * x[0] + I[0][1] * x[1]) +
+                  w[1] * (I[0][0] * w[0] + I[0][1] * w[1]));
 }
 
-static const sus_step_equation TAUDYN = {
-    .unknowns = 2, .residual = taudyn_residual, .guess = sus_step_predict,
-    .result = sus_step_result_is_x};
+static const sus_step_equation TAUDYN = {.unknowns = 2,
+                                         .residual = taudyn_residual,
+                                         .guess = sus_step_predict,
+                                         .result = sus_step_result_is_x};
 
-static int variational_apply(const sus_model *m, double eps, const double w[3],
-                             double w_next[3], double *lambda_next, sus_stepper_stats *st)
+static int variational_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
+                             double *lambda_next, sus_stepper_stats *st)
 {
     const int status = sus_step_implicit_solve(&TAUDYN, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
@@ -69,8 +72,13 @@ static int variational_apply(const sus_model *m, double eps, const double w[3],
 static const sus_step_ops VARIATIONAL_STEP = {.apply = variational_apply};
 
 /* (taudyn) is not a linear one-step map of f: no stability function. */
-const sus_stepper_type sus_step_variational_type = {
-    .name = "variational", .step = &VARIATIONAL_STEP, .equation = &TAUDYN,
-    .desc = {.order = 2, .lambda_order = -1, .implicit = 1, .follows_recon = 1, .substeps = 1,
-             .source = __FILE__}};
+const sus_stepper_type sus_step_variational_type = {.name = "variational",
+                                                    .step = &VARIATIONAL_STEP,
+                                                    .equation = &TAUDYN,
+                                                    .desc = {.order = 2,
+                                                             .lambda_order = -1,
+                                                             .implicit = 1,
+                                                             .follows_recon = 1,
+                                                             .substeps = 1,
+                                                             .source = __FILE__}};
 const sus_stepper_type *const sus_step_variational = &sus_step_variational_type;

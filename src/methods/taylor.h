@@ -14,8 +14,8 @@ extern "C" {
 /* The step of (w, R) of order p <= SUS_STEP_TAYLOR_MAX_ORDER: the w-step with E restored onto
  * E(w^k), and R_{k+1} = R_k R(q(eps)) from the quaternion series. */
 int sus_step_taylor_apply_full(int p, const sus_model *m, double eps, sus_attitude *att,
-                             const double w[3], double w_next[3], double *lambda_next,
-                             sus_stepper_stats *st);
+                               const double w[3], double w_next[3], double *lambda_next,
+                               sus_stepper_stats *st);
 
 /* The radius the Taylor series of w and of the attitude increment from w are proved to converge
  * in (a majorant from the series' first coefficient, step_taylor.c); INFINITY at an equilibrium.
@@ -27,8 +27,8 @@ double sus_step_taylor_radius(const sus_model *m, const double w[2]);
 double sus_step_taylor_tail_bound(int p, const sus_model *m, double h, const double w[2]);
 
 double sus_step_taylor_stability(int p, double z);
-double sus_step_stab_taylor8(double z), sus_step_stab_taylor10(double z), sus_step_stab_taylor12(double z),
-    sus_step_stab_taylor16(double z);
+double sus_step_stab_taylor8(double z), sus_step_stab_taylor10(double z),
+    sus_step_stab_taylor12(double z), sus_step_stab_taylor16(double z);
 
 /* The tolerance-driven Taylor method (step_taylor_adaptive.c; stepper.h, sus_tol_ops) and the
  * order it uses at a tolerance. */

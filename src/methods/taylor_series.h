@@ -20,9 +20,9 @@ extern "C" {
 typedef double v2d __attribute__((vector_size(16)));
 
 typedef struct {
-    v2d W[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (w1, w2) coefficients, scaled: W_n = w_n h^n */
-    v2d P[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (q0, q3) coefficients of the attitude increment */
-    v2d M[SUS_STEP_TAYLOR_MAX_ORDER + 1];  /* (q1, q2) */
+    v2d W[SUS_STEP_TAYLOR_MAX_ORDER + 1]; /* (w1, w2) coefficients, scaled: W_n = w_n h^n */
+    v2d P[SUS_STEP_TAYLOR_MAX_ORDER + 1]; /* (q0, q3) coefficients of the attitude increment */
+    v2d M[SUS_STEP_TAYLOR_MAX_ORDER + 1]; /* (q1, q2) */
 } taylor_series;
 
 /* (a, b) -> (-b, a). */
@@ -44,8 +44,8 @@ static inline v2d rot90(v2d v) { return (v2d){-v[1], v[0]}; }
  * 1..p trips cost a mispredicted exit branch each (cachegrind, taylor12: 22 mispredictions and 3260
  * instructions a step rolled, 0.2 and 2430 unrolled). */
 static inline __attribute__((always_inline)) void series(const sus_model *m, const int p,
-                                                         const double h, const double w[2], const int with_q,
-                                                         taylor_series *t)
+                                                         const double h, const double w[2],
+                                                         const int with_q, taylor_series *t)
 {
     double C[SUS_STEP_TAYLOR_MAX_ORDER + 1];
     v2d U[SUS_STEP_TAYLOR_MAX_ORDER + 1];
@@ -55,7 +55,8 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
     t->M[0] = (v2d){0.0, 0.0};
     C[0] = m->b[0] * w[0] + m->b[1] * w[1];
     U[0] = a0 * w[0] + a1 * w[1];
-    const v2d l0 = C[0] * a0 + m->b[0] * U[0], l1 = C[0] * a1 + m->b[1] * U[0]; /* the columns of L */
+    const v2d l0 = C[0] * a0 + m->b[0] * U[0],
+              l1 = C[0] * a1 + m->b[1] * U[0]; /* the columns of L */
 #pragma GCC unroll 32 /* p is a constant here: no loop branches, coefficients in registers */
     for (int n = 0; n < p; n++) {
         const v2d Wn = t->W[n];
@@ -67,7 +68,8 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
 #pragma GCC unroll 32
             for (int j = 1; j < n; j++)
                 s += C[j] * U[n - j];
-            /* + c_0 U_n + c_n U_0; f L is formed off the chain, so W_n meets one multiply and two adds */
+            /* + c_0 U_n + c_n U_0; f L is formed off the chain, so W_n meets one multiply and two
+             * adds */
             t->W[n + 1] = f * s + (Wn[0] * (f * l0) + Wn[1] * (f * l1));
         }
         const v2d Wn1 = t->W[n + 1];
@@ -77,7 +79,8 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
             continue;
         v2d xp = {0.0, 0.0}, yp = {0.0, 0.0}, xm = {0.0, 0.0}, ym = {0.0, 0.0};
 #pragma GCC unroll 32
-        for (int j = n; j >= 1; j--) { /* j = n (newest Q) ... j = 1; the exact zeros P_1, M_0 left out */
+        for (int j = n; j >= 1;
+             j--) { /* j = n (newest Q) ... j = 1; the exact zeros P_1, M_0 left out */
             const v2d Wk = t->W[n - j];
             if (j >= 2) {
                 xp += Wk[0] * t->P[j];
@@ -129,8 +132,8 @@ static inline void taylor_energy_onto(const sus_model *m, const double e0, doubl
 /* w^{k+1} = w^k + sum_{n>=1} W_n, then scaled onto the energy e0 (E(w^k) for the fixed-step
  * methods, which keep no state; E(w_0) for the adaptive one). */
 static inline __attribute__((always_inline)) void w_next_from(const sus_model *m, const int p,
-                                                              const taylor_series *t, const double e0,
-                                                              double w_next[3])
+                                                              const taylor_series *t,
+                                                              const double e0, double w_next[3])
 {
     const v2d d = tail_sum(t->W, p);
     w_next[0] = t->W[0][0] + d[0];
@@ -140,7 +143,8 @@ static inline __attribute__((always_inline)) void w_next_from(const sus_model *m
 }
 
 /* The attitude increment over the whole step, dq = (q0, q1, q2, q3) = sum_{n<=p} Q_n. */
-static inline __attribute__((always_inline)) void dq_from(const taylor_series *t, const int p, double dq[4])
+static inline __attribute__((always_inline)) void dq_from(const taylor_series *t, const int p,
+                                                          double dq[4])
 {
     const v2d P = tail_sum(t->P, p), M = tail_sum(t->M, p);
     dq[0] = 1.0 + P[0];

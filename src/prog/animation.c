@@ -38,8 +38,8 @@
 
 /* ---- what must not outlive the program: the ffmpeg child and the temporary files ---- */
 
-static volatile pid_t video_pid = -1;      /* the running ffmpeg, or -1 */
-static char video_tmp[4200];                /* the video ffmpeg writes, renamed on success */
+static volatile pid_t video_pid = -1; /* the running ffmpeg, or -1 */
+static char video_tmp[4200];          /* the video ffmpeg writes, renamed on success */
 
 /* Async-signal-safe: kill(), waitpid(), unlink(). SIGKILL, not SIGTERM: on SIGTERM ffmpeg
  * finishes its output file, which could then appear after the unlink. */
@@ -100,9 +100,9 @@ static FILE *start_video(int W, int H, int fps, const char *out)
         dup2(fd[0], 0);
         close(fd[0]);
         close(fd[1]);
-        execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pixel_format", "bgra",
-               "-video_size", size, "-framerate", rate, "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-               out, (char *)NULL);
+        execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pixel_format",
+               "bgra", "-video_size", size, "-framerate", rate, "-i", "-", "-c:v", "libx264",
+               "-pix_fmt", "yuv420p", out, (char *)NULL);
         _exit(127);
     }
     close(fd[0]);
@@ -153,12 +153,18 @@ static int read_config(const char *path, anim_config *c)
             fclose(fp);
             return -1;
         }
-        if (strcmp(key, "width") == 0) c->width = (int)v;
-        else if (strcmp(key, "height") == 0) c->height = (int)v;
-        else if (strcmp(key, "fps") == 0) c->fps = (int)v;
-        else if (strcmp(key, "seconds") == 0) c->seconds = v;
-        else if (strcmp(key, "t_end") == 0) c->t_end = v;
-        else if (strcmp(key, "eps") == 0) c->eps = v;
+        if (strcmp(key, "width") == 0)
+            c->width = (int)v;
+        else if (strcmp(key, "height") == 0)
+            c->height = (int)v;
+        else if (strcmp(key, "fps") == 0)
+            c->fps = (int)v;
+        else if (strcmp(key, "seconds") == 0)
+            c->seconds = v;
+        else if (strcmp(key, "t_end") == 0)
+            c->t_end = v;
+        else if (strcmp(key, "eps") == 0)
+            c->eps = v;
         else {
             fprintf(stderr, "animation: %s:%d: unknown key '%s'\n", path, lineno, key);
             fclose(fp);
@@ -170,7 +176,8 @@ static int read_config(const char *path, anim_config *c)
         c->height % 2 || c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) ||
         !(c->eps > 0)) {
         fprintf(stderr,
-                "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive times)\n",
+                "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive "
+                "times)\n",
                 path);
         return -1;
     }
@@ -180,7 +187,7 @@ static int read_config(const char *path, anim_config *c)
 /* ---- the three motions ---- */
 
 typedef struct {
-    long n;          /* rows 0..n */
+    long n; /* rows 0..n */
     sus_row *rows;
 } dsp_track;
 
@@ -208,7 +215,8 @@ static void dsp_state(const dsp_track *t, double eps, double time, double R[3][3
     memcpy(w, r->w, 3 * sizeof(double));
 }
 
-static int write_attitude_csv(const char *path, const dsp_track *t, const char *const *names, int nm)
+static int write_attitude_csv(const char *path, const dsp_track *t, const char *const *names,
+                              int nm)
 {
     char err[256];
     sus_sys_atomic_file af;
@@ -235,7 +243,8 @@ static int write_attitude_csv(const char *path, const dsp_track *t, const char *
 
 /* ---- frames ---- */
 
-static const char *const LABELS[3] = {"exact", "midpoint, \xce\xb5 = 1", "variational, \xce\xb5 = 1"};
+static const char *const LABELS[3] = {"exact", "midpoint, \xce\xb5 = 1",
+                                      "variational, \xce\xb5 = 1"};
 
 /* The key to what each body carries, in two columns of up to three rows along the bottom from x0:
  * a swatch of the scene's own colour (a stroke for an arrow, a square for the box), and what it
@@ -266,7 +275,8 @@ static void draw_key(cairo_t *cr, double x0, int H, double fs)
             col1 = te.x_advance;
     }
     for (int i = 0; i < N; i++) {
-        const double x = x0 + (KEY[i].col ? col1 + 4.0 * fs : 0.0), y = H - (2.6 - KEY[i].row) * 1.5 * fs;
+        const double x = x0 + (KEY[i].col ? col1 + 4.0 * fs : 0.0),
+                     y = H - (2.6 - KEY[i].row) * 1.5 * fs;
         cairo_set_source_rgb(cr, KEY[i].rgb[0], KEY[i].rgb[1], KEY[i].rgb[2]);
         if (KEY[i].square) {
             cairo_rectangle(cr, x + 0.3 * fs, y - 0.8 * fs, 0.8 * fs, 0.8 * fs);
@@ -359,7 +369,8 @@ static int run_integrators(const anim_config *cfg, const sus_model *model, const
         const sus_run_config rc = {model, st[m], SUS_RECON_CAYLEY, cfg->eps, N, 1};
         sus_run_report rep;
         if (!track[m].rows || sus_run(&rc, ex->w0, store, &track[m], &rep) != 0) {
-            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", NAMES[m], rep.step, rep.t);
+            fprintf(stderr, "animation: %s failed at step %ld (t = %g)\n", NAMES[m], rep.step,
+                    rep.t);
             return -1;
         }
     }
@@ -438,7 +449,8 @@ static int draw_frame(frames *fr, sus_refatt *ra, int f, const char *figdir, FIL
         fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
     }
     while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9)
-        memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px, (size_t)W * H * sizeof(uint32_t));
+        memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px,
+               (size_t)W * H * sizeof(uint32_t));
     return 0;
 }
 
@@ -486,27 +498,34 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
     char cap[2048];
     snprintf(
         cap, sizeof cap,
-        "Attitude animation. Regenerate: make animation (or make figures); settings in data/animation.cfg.\n"
-        "Three copies of the body: the exact motion (R from the reference attitude along the closed-form w), "
+        "Attitude animation. Regenerate: make animation (or make figures); settings in "
+        "data/animation.cfg.\n"
+        "Three copies of the body: the exact motion (R from the reference attitude along the "
+        "closed-form w), "
         "the midpoint rule\n"
         "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) "
         "((algo)),\n"
-        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows the step's "
+        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows "
+        "the step's "
         "own\n"
-        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as `suslov` "
+        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as "
+        "`suslov` "
         "prints it\n"
-        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric part of "
+        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric "
+        "part of "
         "I;\n"
-        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its fading trail,\n"
+        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its "
+        "fading trail,\n"
         "orange arrow: w in space, R w. The distance of (MetMat) to the exact attitude at t = %g: "
         "midpoint %.3f,\n"
         "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
         "figures/attitude.mp4.\n"
         "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-        cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps, STRIP[0] * cfg->t_end,
-        STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end, STRIP[4] * cfg->t_end,
-        STRIP[5] * cfg->t_end);
-    if (sus_plot_fig_write_text(sus_plot_fig_path(path, sizeof path, figdir, "attitude", "txt"), cap) != 0)
+        cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps,
+        STRIP[0] * cfg->t_end, STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end,
+        STRIP[4] * cfg->t_end, STRIP[5] * cfg->t_end);
+    if (sus_plot_fig_write_text(sus_plot_fig_path(path, sizeof path, figdir, "attitude", "txt"),
+                                cap) != 0)
         return -1;
     return 0;
 }
@@ -566,10 +585,14 @@ int main(int argc, char **argv)
     dsp_track track[2];
     if (run_integrators(&cfg, &model, &ex, track) != 0)
         return 3;
-    if (write_attitude_csv(sus_plot_fig_path(path, sizeof path, datadir, "attitude", "csv"), track, NAMES,
-                           2) != 0)
+    if (write_attitude_csv(sus_plot_fig_path(path, sizeof path, datadir, "attitude", "csv"), track,
+                           NAMES, 2) != 0)
         return 1;
-    frames fr = {.cfg = &cfg, .ex = &ex, .track = track, .W = cfg.width, .H = cfg.height,
+    frames fr = {.cfg = &cfg,
+                 .ex = &ex,
+                 .track = track,
+                 .W = cfg.width,
+                 .H = cfg.height,
                  .nframes = (int)lround(cfg.fps * cfg.seconds)};
     sus_plot_gl_context *gl = owned.gl = sus_plot_gl_context_create(fr.W, fr.H);
     if (!gl || sus_plot_scene_init(&fr.sc, &model, fr.W / 3, fr.H) != 0) {

@@ -91,7 +91,9 @@ static void sweep_odeint(sus_lab_bench *b, int stepper, size_t dim, double rel_f
     snprintf(s->name, sizeof s->name, "Boost %s %s%s",
              stepper == SUSLOV_ODEINT_RKF78 ? "rkf78" : "bulirsch-stoer",
              sus_lab_bench_dim_name(dim),
-             dim != 4 ? "" : rel_factor > 0.0 ? " abs=rel" : " abs");
+             dim != 4           ? ""
+             : rel_factor > 0.0 ? " abs=rel"
+                                : " abs");
     s->w_only = dim == 2;
     s->reduced = dim == 4;
     s->dim = dim;

@@ -1,6 +1,7 @@
 // Boost.Odeint peers for make bench (see bench_odeint.h). The right-hand sides are the same
-// (ContDyn) as everywhere (model.h), with R' = R w^ or q' = 1/2 q (x) (0, w) for the attitude (none for w
-// alone); the reduced problem's is q' = 1/2 q (x) (0, w(t)) with w(t) from reduced.h, as GSL's.
+// (ContDyn) as everywhere (model.h), with R' = R w^ or q' = 1/2 q (x) (0, w) for the attitude (none
+// for w alone); the reduced problem's is q' = 1/2 q (x) (0, w(t)) with w(t) from reduced.h, as
+// GSL's.
 #include "bench_odeint.h"
 
 extern "C" {
@@ -20,7 +21,8 @@ extern "C" {
 
 namespace odeint = boost::numeric::odeint;
 
-namespace {
+namespace
+{
 
 template <std::size_t N> struct rhs {
     const sus_model *m;
@@ -73,7 +75,8 @@ template <std::size_t N> struct rkf78 final : base {
         std::array<double, N> s;
         for (std::size_t i = 0; i < N; i++)
             s[i] = y[i];
-        auto st = odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<std::array<double, N>>());
+        auto st = odeint::make_controlled(tol, tol,
+                                          odeint::runge_kutta_fehlberg78<std::array<double, N>>());
         const long n = (long)odeint::integrate_adaptive(st, f, s, 0.0, T, 1e-3);
         for (std::size_t i = 0; i < N; i++)
             y[i] = s[i];
@@ -151,7 +154,10 @@ extern "C" suslov_odeint *suslov_odeint_open_reduced(const sus_lab_reduced *r, d
     return o;
 }
 
-extern "C" long suslov_odeint_run(suslov_odeint *o, double T, double *y) { return o->impl->run(T, y); }
+extern "C" long suslov_odeint_run(suslov_odeint *o, double T, double *y)
+{
+    return o->impl->run(T, y);
+}
 
 extern "C" void suslov_odeint_close(suslov_odeint *o)
 {

@@ -24,10 +24,7 @@ static int is_digit(char c, int hex)
     return (c >= '0' && c <= '9') || (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')));
 }
 
-static int digit_value(char c)
-{
-    return c <= '9' ? c - '0' : (c | 0x20) - 'a' + 10;
-}
+static int digit_value(char c) { return c <= '9' ? c - '0' : (c | 0x20) - 'a' + 10; }
 
 /* [+-]? digits [. digits] ([eE] [+-]? digits)?, or 0x hexdigits [. hexdigits] ([pP] [+-]? digits)?,
  * with at least one mantissa digit. Returns 0 when s is of that form, whole. */

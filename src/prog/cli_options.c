@@ -49,10 +49,7 @@ const char *suslov_cli_quote_n(const char *s, size_t n)
     return sus_sys_echo_ring(s, n, SUSLOV_CLI_ECHO_MAX, '\'');
 }
 
-const char *suslov_cli_quote(const char *s)
-{
-    return suslov_cli_quote_n(s, strlen(s));
-}
+const char *suslov_cli_quote(const char *s) { return suslov_cli_quote_n(s, strlen(s)); }
 
 void suslov_cli_error(const char *fmt, ...)
 {
@@ -103,10 +100,12 @@ double suslov_cli_number(const char *opt, const char *s)
     if (end == s || *end != '\0' || isspace((unsigned char)*s))
         suslov_cli_die("%s: %s is not a number", opt, suslov_cli_quote(s));
     if (!isfinite(v))
-        suslov_cli_die("%s: %s is not a finite number (largest %.17g)", opt, suslov_cli_quote(s), DBL_MAX);
+        suslov_cli_die("%s: %s is not a finite number (largest %.17g)", opt, suslov_cli_quote(s),
+                       DBL_MAX);
     if (errno == ERANGE || fpclassify(v) == FP_SUBNORMAL)
         suslov_cli_die("%s: %s is too small: it underflows to a subnormal number or zero "
-                "(smallest normal %.17g)", opt, suslov_cli_quote(s), DBL_MIN);
+                       "(smallest normal %.17g)",
+                       opt, suslov_cli_quote(s), DBL_MIN);
     return v;
 }
 
@@ -120,7 +119,8 @@ void suslov_cli_list(const char *opt, const char *s, double *out, int n)
         const char *comma = strchr(p, ',');
         const size_t len = comma ? (size_t)(comma - p) : strlen(p);
         if (i == n)
-            suslov_cli_die("%s takes %d comma-separated numbers, got more in %s", opt, n, suslov_cli_quote(s));
+            suslov_cli_die("%s takes %d comma-separated numbers, got more in %s", opt, n,
+                           suslov_cli_quote(s));
         if (len == 0)
             suslov_cli_die("%s: field %d of %s is empty", opt, i + 1, suslov_cli_quote(s));
         memcpy(buf, p, len);
@@ -131,7 +131,8 @@ void suslov_cli_list(const char *opt, const char *s, double *out, int n)
         p = comma + 1;
     }
     if (i + 1 != n)
-        suslov_cli_die("%s takes %d comma-separated numbers, got %d in %s", opt, n, i + 1, suslov_cli_quote(s));
+        suslov_cli_die("%s takes %d comma-separated numbers, got %d in %s", opt, n, i + 1,
+                       suslov_cli_quote(s));
 }
 
 /* ---- parsing ---- */
@@ -153,7 +154,8 @@ void suslov_cli_parse(const suslov_cli_spec *spec, int argc, char **argv, void *
         const char *arg = argv[i], *eq = strchr(arg, '='), *val = NULL;
         if (strcmp(arg, "--") == 0) {
             if (i + 1 < argc)
-                suslov_cli_die("unexpected argument %s (%s takes no operands)", suslov_cli_quote(argv[i + 1]), prog);
+                suslov_cli_die("unexpected argument %s (%s takes no operands)",
+                               suslov_cli_quote(argv[i + 1]), prog);
             break;
         }
         if (strncmp(arg, "--", 2) != 0)
@@ -175,7 +177,8 @@ void suslov_cli_parse(const suslov_cli_spec *spec, int argc, char **argv, void *
     }
 }
 
-int suslov_cli_peek(const suslov_cli_spec *spec, int argc, char **argv, const char *name, const char **val)
+int suslov_cli_peek(const suslov_cli_spec *spec, int argc, char **argv, const char *name,
+                    const char **val)
 {
     int count = 0;
     *val = NULL;
@@ -278,9 +281,9 @@ static int indent_of(const char *line)
     return strncmp(line, "    ", 4) == 0 ? 4 : strncmp(line, "  ", 2) == 0 ? 2 : 0;
 }
 
-/* Section text in roff (suslov_cli_section): prose filled, an empty line a new paragraph (.PP), lines
- * indented by two kept as they are (.nf, indented), and a line followed by lines indented by four
- * a tag (.TP) and its description, filled under it. */
+/* Section text in roff (suslov_cli_section): prose filled, an empty line a new paragraph (.PP),
+ * lines indented by two kept as they are (.nf, indented), and a line followed by lines indented by
+ * four a tag (.TP) and its description, filled under it. */
 static void roff_body(FILE *fp, const char *text)
 {
     enum { PROSE, KEPT, LIST } mode = PROSE;
@@ -317,8 +320,8 @@ static void roff_body(FILE *fp, const char *text)
 
 void suslov_cli_man(const suslov_cli_spec *spec, const char *version, FILE *fp)
 {
-    fprintf(fp, ".TH SUSLOV 1 \"\" \"%s %s\" \"User Commands\"\n.SH NAME\n%s \\- ", spec->prog, version,
-            spec->prog);
+    fprintf(fp, ".TH SUSLOV 1 \"\" \"%s %s\" \"User Commands\"\n.SH NAME\n%s \\- ", spec->prog,
+            version, spec->prog);
     roff_body(fp, spec->summary);
     fputs(".SH SYNOPSIS\n", fp);
     roff_body(fp, spec->synopsis);

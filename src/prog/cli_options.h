@@ -8,9 +8,9 @@
 
 typedef struct suslov_cli_option suslov_cli_option;
 struct suslov_cli_option {
-    const char *name;  /* "--eps" */
-    const char *arg;   /* "H", or NULL for a flag */
-    const char *help;  /* lines of at most 76 columns separated by '\n' */
+    const char *name; /* "--eps" */
+    const char *arg;  /* "H", or NULL for a flag */
+    const char *help; /* lines of at most 76 columns separated by '\n' */
     void (*set)(void *cfg, const suslov_cli_option *opt, const char *val);
     /* Optional: further lines written after the help (lists taken from a registry); each line
      * goes through suslov_cli_line so that it reaches --help and the manual page alike. */
@@ -41,7 +41,8 @@ void suslov_cli_parse(const suslov_cli_spec *spec, int argc, char **argv, void *
 /* Walks argv as suslov_cli_parse does, calling no handler: returns the number of options given (an
  * operand or an unknown option counts as one), and sets *val to the value of option `name` (NULL
  * when it is absent or has none), so that a caller can see one option before any handler runs. */
-int suslov_cli_peek(const suslov_cli_spec *spec, int argc, char **argv, const char *name, const char **val);
+int suslov_cli_peek(const suslov_cli_spec *spec, int argc, char **argv, const char *name,
+                    const char **val);
 void suslov_cli_help(const suslov_cli_spec *spec, FILE *fp);
 /* The manual page in roff (man(7)); version goes into its header line. */
 void suslov_cli_man(const suslov_cli_spec *spec, const char *version, FILE *fp);
@@ -52,8 +53,8 @@ void suslov_cli_line(FILE *fp, int man, const char *fmt, ...) __attribute__((for
 void suslov_cli_exit_stdout(void) __attribute__((noreturn));
 
 /* A user's argument (its first n bytes) as a message quotes it: 'TEXT', or, beyond
- * SUSLOV_CLI_ECHO_MAX characters, 'FIRST...' (N characters), so that the reason after it always fits
- * the line. The text lives in echo.h's ring of buffers used in turn: one message may quote up
+ * SUSLOV_CLI_ECHO_MAX characters, 'FIRST...' (N characters), so that the reason after it always
+ * fits the line. The text lives in echo.h's ring of buffers used in turn: one message may quote up
  * to SUS_SYS_ECHO_RING arguments. */
 #define SUSLOV_CLI_ECHO_MAX 40
 const char *suslov_cli_quote_n(const char *s, size_t n);

@@ -70,10 +70,7 @@ static int take_row(void *vctx, const sus_row *row)
     return 0;
 }
 
-static const double *colour(int i)
-{
-    return SUS_PLOT_PALETTE[i % SUS_PLOT_PALETTE_N];
-}
+static const double *colour(int i) { return SUS_PLOT_PALETTE[i % SUS_PLOT_PALETTE_N]; }
 
 static void draw(cairo_t *cr, void *vctx)
 {
@@ -91,12 +88,14 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_axes_cell(&ax, cr, W, H, 1, 2, 0, 0, T_END, lo, hi, 0, 1);
     sus_plot_frame(&ax, "t (start of the step)", "step h", "(a)");
     for (int i = 0; i < NTOL; i++) {
-        snprintf(lab[i], sizeof lab[i], "TOL %.0e (order %d, %ld steps)", TOLS[i], f->order[i], f->s[i].n);
+        snprintf(lab[i], sizeof lab[i], "TOL %.0e (order %d, %ld steps)", TOLS[i], f->order[i],
+                 f->s[i].n);
         st[i] = sus_plot_style_of(colour(i), 1.2, 0, SUS_PLOT_CIRCLE + i, 3.0, lab[i]);
         sus_plot_series(&ax, f->s[i].t, f->s[i].h, (size_t)f->s[i].n, 1, &st[i]);
         sus_plot_markers(&ax, f->s[i].t, f->s[i].h, (size_t)f->s[i].n, 1, &st[i]);
     }
-    st[NTOL] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, "proved radius of the series");
+    st[NTOL] =
+        sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, "proved radius of the series");
     sus_plot_series(&ax, f->s[0].t, f->s[0].radius, (size_t)f->s[0].n, 1, &st[NTOL]);
     sus_plot_legend(&ax, st, NTOL + 1, 2);
     lo = INFINITY, hi = -INFINITY;
@@ -124,13 +123,16 @@ static int measure(const sus_model *m, const sus_stepper_type *type, int i, adap
     f->s[i] = (steps_ctx){.m = m};
     f->order[i] = type->tol->order(TOLS[i]);
     const sus_tol_config every_step = {m, type, TOLS[i], T_END, 0.0, 0};
-    if (sus_run_tol(&every_step, SUS_PAPER_OMEGA0, take_step, &f->s[i], &rep) != SUS_RUN_OK) return -1;
+    if (sus_run_tol(&every_step, SUS_PAPER_OMEGA0, take_step, &f->s[i], &rep) != SUS_RUN_OK)
+        return -1;
     rows_ctx *r = &f->r[i];
     r->n = 0;
     sus_exact_init(&r->ex, m, SUS_PAPER_OMEGA0);
     sus_refatt_init(&r->ref, &r->ex, 0.0, I3);
     const sus_tol_config rows = {m, type, TOLS[i], T_END, DT_ROWS, 0};
-    return sus_run_tol(&rows, SUS_PAPER_OMEGA0, take_row, r, &rep) == SUS_RUN_OK && r->n == NROWS ? 0 : -1;
+    return sus_run_tol(&rows, SUS_PAPER_OMEGA0, take_row, r, &rep) == SUS_RUN_OK && r->n == NROWS
+               ? 0
+               : -1;
 }
 
 int main(int argc, char **argv)
@@ -148,7 +150,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "figure_adaptive_steps: the paper's body or the method: %s\n", err);
         return 1;
     }
-    double tol_col[NTOL * MAXSTEPS], t_col[NTOL * MAXSTEPS], h_col[NTOL * MAXSTEPS], r_col[NTOL * MAXSTEPS];
+    double tol_col[NTOL * MAXSTEPS], t_col[NTOL * MAXSTEPS], h_col[NTOL * MAXSTEPS],
+        r_col[NTOL * MAXSTEPS];
     size_t n = 0;
     for (int i = 0; i < NTOL; i++) {
         if (measure(&m, me->type, i, &f) != 0) {
@@ -163,22 +166,26 @@ int main(int argc, char **argv)
         }
     }
     const double *cols[] = {tol_col, t_col, h_col, r_col};
-    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "adaptive_steps", "csv"),
-                               "tol,t_start,h,proved_radius", 4, cols, n, 1) != 0)
+    if (sus_plot_fig_write_csv(
+            sus_plot_fig_path(path, sizeof path, argv[2], "adaptive_steps", "csv"),
+            "tol,t_start,h,proved_radius", 4, cols, n, 1) != 0)
         return 1;
-    snprintf(
-        cap, sizeof cap,
-        "The tolerance-driven Taylor method. Regenerate: make figures (src/prog/figure_adaptive_steps.c).\n"
-        "taylor-adaptive (suslov --method taylor-adaptive --tol TOL --time 50) on the paper's body, w(0) = "
-        "(0.4, 0.5).\n"
-        "(a) the length of each accepted step against its start (the last one ends at t = 50), for TOL = "
-        "%.0e, %.0e, %.0e (orders %d, %d, "
-        "%d), and the\n"
-        "radius its series is proved to converge in (dashed grey; no step may exceed it).\n"
-        "(b) the attitude error dist(R, R_ref) of rows every 0.5 time units (dense output from each step's "
-        "series)\n"
-        "against the long-double reference; dotted: TOL.\n"
-        "Data: data/adaptive_steps.csv (the steps).\n",
-        TOLS[0], TOLS[1], TOLS[2], f.order[0], f.order[1], f.order[2]);
+    snprintf(cap, sizeof cap,
+             "The tolerance-driven Taylor method. Regenerate: make figures "
+             "(src/prog/figure_adaptive_steps.c).\n"
+             "taylor-adaptive (suslov --method taylor-adaptive --tol TOL --time 50) on the paper's "
+             "body, w(0) = "
+             "(0.4, 0.5).\n"
+             "(a) the length of each accepted step against its start (the last one ends at t = "
+             "50), for TOL = "
+             "%.0e, %.0e, %.0e (orders %d, %d, "
+             "%d), and the\n"
+             "radius its series is proved to converge in (dashed grey; no step may exceed it).\n"
+             "(b) the attitude error dist(R, R_ref) of rows every 0.5 time units (dense output "
+             "from each step's "
+             "series)\n"
+             "against the long-double reference; dotted: TOL.\n"
+             "Data: data/adaptive_steps.csv (the steps).\n",
+             TOLS[0], TOLS[1], TOLS[2], f.order[0], f.order[1], f.order[2]);
     return sus_plot_fig_write_figure(argv[1], "adaptive_steps", 560, 300, draw, &f, cap) != 0;
 }

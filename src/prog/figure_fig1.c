@@ -15,8 +15,8 @@
 #define EPS SUS_LAB_FIG1_EPS
 #define T_END SUS_LAB_FIG1_T_END
 #define EVERY SUS_LAB_FIG1_EVERY
-#define MARK_EVERY 50  /* markers: every 50th kept row = every 0.5 time units */
-#define ROWS 4 /* (a)-(f) as the paper's Figure 1, then (g), (h): the corrected multiplier */
+#define MARK_EVERY 50 /* markers: every 50th kept row = every 0.5 time units */
+#define ROWS 4        /* (a)-(f) as the paper's Figure 1, then (g), (h): the corrected multiplier */
 #define HEIGHT 680.0
 
 typedef struct {
@@ -71,10 +71,14 @@ static void draw(cairo_t *cr, void *vctx)
     const double W = 540, H = HEIGHT;
     const size_t n = f->ex.n;
     const sus_plot_style ref = sus_plot_style_of(SUS_PLOT_RED, 1.2, 0, SUS_PLOT_NONE, 0, "exact");
-    const sus_plot_style mid = sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.6, "midpoint");
-    const sus_plot_style var = sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_DOT, 2.6, "variational");
-    const sus_plot_style midl = sus_plot_style_of(SUS_PLOT_BLUE, 1.0, 0, SUS_PLOT_NONE, 0, "midpoint");
-    const sus_plot_style varl = sus_plot_style_of(SUS_PLOT_GREEN, 1.0, 0, SUS_PLOT_NONE, 0, "variational");
+    const sus_plot_style mid =
+        sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.6, "midpoint");
+    const sus_plot_style var =
+        sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_DOT, 2.6, "variational");
+    const sus_plot_style midl =
+        sus_plot_style_of(SUS_PLOT_BLUE, 1.0, 0, SUS_PLOT_NONE, 0, "midpoint");
+    const sus_plot_style varl =
+        sus_plot_style_of(SUS_PLOT_GREEN, 1.0, 0, SUS_PLOT_NONE, 0, "variational");
     struct {
         const double *yref, *y;
         const sus_plot_style *st;
@@ -101,10 +105,10 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_axes ax;
     sus_plot_axes_cell(&ax, cr, W, H, ROWS, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
     sus_plot_frame(&ax, "t",
-               "|\xe2\x9f\xa8"
-               "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
-               "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
-               "(e)");
+                   "|\xe2\x9f\xa8"
+                   "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
+                   "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
+                   "(e)");
     sus_plot_markers(&ax, f->mid.t, f->mu_mid, n, MARK_EVERY / 5, &mid);
     sus_plot_markers(&ax, f->var.t, f->mu_var, n, MARK_EVERY / 5, &var);
     const sus_plot_style lege[2] = {mid, var};

@@ -1,5 +1,6 @@
 /* Figure 2 of the paper: the midpoint DSP and the variational integrator at eps = 1 against the
- * exact solution, plus (f) the distance to the exact steady rotation. Usage: figure_fig2 FIGDIR DATADIR */
+ * exact solution, plus (f) the distance to the exact steady rotation. Usage: figure_fig2 FIGDIR
+ * DATADIR */
 #include "experiments.h"
 #include "fig_output.h"
 #include "fig_setup.h"
@@ -13,11 +14,11 @@
 
 #define EPS SUS_LAB_FIG2_EPS
 #define T_END SUS_LAB_FIG2_T_END
-#define FINE 0.05     /* the reference line is drawn on this finer grid */
+#define FINE 0.05 /* the reference line is drawn on this finer grid */
 
 typedef struct {
-    sus_lab_series mid, var, ex;   /* ex on the fine grid */
-    double *dist[3];              /* |w - w_inf| for exact (fine), midpoint, variational */
+    sus_lab_series mid, var, ex; /* ex on the fine grid */
+    double *dist[3];             /* |w - w_inf| for exact (fine), midpoint, variational */
     double *mu[2];
     double winf[2];
 } fig2;
@@ -27,8 +28,10 @@ static void draw(cairo_t *cr, void *vctx)
     const fig2 *f = vctx;
     const double W = 540, H = 660;
     const sus_plot_style ref = sus_plot_style_of(SUS_PLOT_RED, 1.2, 0, SUS_PLOT_NONE, 0, "exact");
-    const sus_plot_style mid = sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_CIRCLE, 3.2, "midpoint");
-    const sus_plot_style var = sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.4, "variational");
+    const sus_plot_style mid =
+        sus_plot_style_of(SUS_PLOT_GREEN, 0, 0, SUS_PLOT_CIRCLE, 3.2, "midpoint");
+    const sus_plot_style var =
+        sus_plot_style_of(SUS_PLOT_BLUE, 0, 0, SUS_PLOT_DOT, 2.4, "variational");
     const sus_plot_style leg[3] = {ref, mid, var};
     struct {
         const double *yref, *ym, *yv;
@@ -60,10 +63,10 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_axes ax;
     sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 4, 0.0, T_END, 1e-19, 1e-14, 0, 1);
     sus_plot_frame(&ax, "t",
-               "|\xe2\x9f\xa8"
-               "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
-               "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
-               letters[4]);
+                   "|\xe2\x9f\xa8"
+                   "e\xe2\x82\x83, (R\xe2\x82\x96\xe1\xb5\x80 R\xe2\x82\x96 "
+                   "\xcf\x89\xcc\x82\xe2\x82\x96)\xcb\x87\xe2\x9f\xa9|",
+                   letters[4]);
     sus_plot_markers(&ax, f->mid.t, f->mu[0], f->mid.n, 1, &mid);
     sus_plot_markers(&ax, f->var.t, f->mu[1], f->var.n, 1, &var);
     sus_plot_legend(&ax, leg + 1, 2, 1);
@@ -71,8 +74,9 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_extend(&lo, &hi, f->dist[1], f->mid.n, 1, 1);
     sus_plot_extend(&lo, &hi, f->dist[2], f->var.n, 1, 1);
     sus_plot_axes_cell(&ax, cr, W, H, 3, 2, 5, 0.0, T_END, fmax(lo, 1e-17), hi, 0, 1);
-    sus_plot_frame(&ax, "t", "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
-               letters[5]);
+    sus_plot_frame(&ax, "t",
+                   "|\xcf\x89\xe2\x82\x96 \xe2\x88\x92 \xcf\x89\xe2\x88\x9e| (exact limit)",
+                   letters[5]);
     sus_plot_markers(&ax, f->mid.t, f->dist[1], f->mid.n, 1, &mid);
     sus_plot_markers(&ax, f->var.t, f->dist[2], f->var.n, 1, &var);
     sus_plot_series(&ax, f->ex.t, f->dist[0], f->ex.n, 1, &ref);
@@ -110,11 +114,10 @@ static int write_data(const fig2 *f, const sus_exact *ex, long N, const char *da
     if (sus_lab_series_init(&exs, N, 1))
         return 1;
     sus_lab_series_exact(&exs, ex, EPS, f->mid.n);
-    const double *cols[] = {f->mid.t,      exs.w1,          exs.w2,       exs.lambda,
-                            exs.energy,    f->mid.w1,       f->mid.w2,    f->mid.w3,
-                            f->mid.lambda, f->mid.energy,   f->mid.mu,    f->var.w1,
-                            f->var.w2,     f->var.w3,       f->var.lambda, f->var.energy,
-                            f->var.mu};
+    const double *cols[] = {f->mid.t,      exs.w1,    exs.w2,    exs.lambda,    exs.energy,
+                            f->mid.w1,     f->mid.w2, f->mid.w3, f->mid.lambda, f->mid.energy,
+                            f->mid.mu,     f->var.w1, f->var.w2, f->var.w3,     f->var.lambda,
+                            f->var.energy, f->var.mu};
     return sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "fig2", "csv"),
                                   "t,omega1_exact,omega2_exact,lambda_exact,energy_exact,"
                                   "omega1_mid,omega2_mid,omega3_mid,lambda_mid,energy_mid,mu_mid,"

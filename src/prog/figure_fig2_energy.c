@@ -16,11 +16,11 @@
 
 #define EPS SUS_LAB_FIG2_EPS
 #define T_END SUS_LAB_FIG2_T_END
-#define N_STEPS 200   /* T_END / EPS, checked in main */
+#define N_STEPS 200                /* T_END / EPS, checked in main */
 #define NSWEEP SUS_LAB_FIG2_NSWEEP /* panel (d): n = 1 .. NSWEEP */
 #define FIG_W 530.0
 #define FIG_H 380.0
-#define NCURVE 6      /* Newton, n = 1, 2, 3, 5, variational */
+#define NCURVE 6 /* Newton, n = 1, 2, 3, 5, variational */
 
 static const int curve_sweeps[NCURVE] = {0, 1, 2, 3, 5, -1}; /* 0 = Newton, -1 = variational */
 
@@ -68,11 +68,12 @@ static void draw(cairo_t *cr, void *vctx)
 
     /* (c) |E_N - E_0| against the number of sweeps; the variational value as a line */
     sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0.5, NSWEEP + 0.5, 1e-12, 1e-1, 0, 1);
-    sus_plot_frame(&ax, "fixed-point sweeps n", "|E\xe2\x82\x99 \xe2\x88\x92 E\xe2\x82\x80| at t = 200",
-                   "(c)");
+    sus_plot_frame(&ax, "fixed-point sweeps n",
+                   "|E\xe2\x82\x99 \xe2\x88\x92 E\xe2\x82\x80| at t = 200", "(c)");
     const sus_plot_style decay =
         sus_plot_style_of(SUS_PLOT_PURPLE, 0, 0, SUS_PLOT_DOT, 5, "energy lost (decay)");
-    const sus_plot_style grow = sus_plot_style_of(SUS_PLOT_ORANGE, 0, 0, SUS_PLOT_SQUARE, 5, "energy gained");
+    const sus_plot_style grow =
+        sus_plot_style_of(SUS_PLOT_ORANGE, 0, 0, SUS_PLOT_SQUARE, 5, "energy gained");
     double xd[NSWEEP], yd[NSWEEP], xg[NSWEEP], yg[NSWEEP];
     int nd = 0, ng = 0;
     for (int i = 0; i < NSWEEP; i++) {
@@ -93,7 +94,8 @@ static void draw(cairo_t *cr, void *vctx)
     const sus_plot_style legc[3] = {decay, grow, varl};
     sus_plot_legend(&ax, legc, 3, 2); /* lower left: the variational line runs along the top */
 
-    /* the key of (a) and (b) in the fourth cell: the measured numbers are in the caption and the text */
+    /* the key of (a) and (b) in the fourth cell: the measured numbers are in the caption and the
+     * text */
     double x, y, w, h;
     sus_plot_cell(W, H, 2, 2, 3, &x, &y, &w, &h);
     sus_plot_axes_init(&ax, cr, x - 30, y, w, h, 0, 1, 0, 1, 0, 0);
@@ -164,26 +166,30 @@ int main(int argc, char **argv)
     }
     r->var_final = fabs(r->var_final);
     const double *cols[] = {r->t, r->dE[0], r->dE[1], r->dE[2], r->dE[3], r->dE[4], r->dE[5]};
-    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "fig2_energy", "csv"),
-                      "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_"
-                      "sweeps5,dE_variational",
-                      7, cols, N_STEPS + 1, 1) != 0)
+    if (sus_plot_fig_write_csv(
+            sus_plot_fig_path(path, sizeof path, argv[2], "fig2_energy", "csv"),
+            "t,dE_midpoint_newton,dE_sweeps1_euler,dE_sweeps2_explicit_midpoint,dE_sweeps3,dE_"
+            "sweeps5,dE_variational",
+            7, cols, N_STEPS + 1, 1) != 0)
         return 1;
     char cap[2048];
     snprintf(
         cap, sizeof cap,
-        "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the fig2-energy lines "
+        "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the "
+        "fig2-energy lines "
         "of\n"
         "the claims ledger). Regenerate: make figures (src/prog/figure_fig2_energy.c).\n"
         "Run: eps = 1, t in [0, %g], inertia as printed, w(0) = (0.4, 0.5). The implicit equation\n"
         "(Discretization) with the midpoint l1, l2 is solved (i) by Newton to round-off, (ii) by n "
         "fixed-point\n"
-        "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = w^k (n = 1 is explicit Euler, n = 2 the explicit\n"
+        "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = w^k (n = 1 is explicit Euler, n = 2 the "
+        "explicit\n"
         "midpoint rule); the variational integrator (taudyn) is solved by Newton.\n"
         "(a) E_k - E_0; (b) |E_k - E_0|, log scale; (c) |E_N - E_0| at t = %g against n, with the "
         "variational\n"
         "loss as a dashed line; (d) the key of (a) and (b).\n"
-        "Measured: Newton |dE| = %.2g; variational loses %.4g; n = 1 gains %.4g; n = 2 loses %.4g; n = 3 %s "
+        "Measured: Newton |dE| = %.2g; variational loses %.4g; n = 1 gains %.4g; n = 2 loses %.4g; "
+        "n = 3 %s "
         "%.3g.\n"
         "No reading loses energy faster than the variational integrator.\n"
         "Data: data/fig2_energy.csv.\n",

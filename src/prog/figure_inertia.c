@@ -12,7 +12,7 @@
 
 #define T_END SUS_LAB_INERTIA_T_END
 #define DT SUS_LAB_INERTIA_DT
-#define NPTS 1201     /* T_END / DT + 1, checked in main */
+#define NPTS 1201 /* T_END / DT + 1, checked in main */
 #define FIG_W 530.0
 #define FIG_H 340.0
 
@@ -26,14 +26,15 @@ static void draw(cairo_t *cr, void *vctx)
 {
     const inertia_fig *f = vctx;
     const double W = FIG_W, H = FIG_H;
-    const sus_plot_style r1 = sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0,
-                                        "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
-    const sus_plot_style r2 =
-        sus_plot_style_of(SUS_PLOT_RED, 1.4, 1, SUS_PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third row");
+    const sus_plot_style r1 =
+        sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0,
+                          "\xcf\x89\xe2\x82\x81, third row (0.2, 0.1) as printed");
+    const sus_plot_style r2 = sus_plot_style_of(SUS_PLOT_RED, 1.4, 1, SUS_PLOT_NONE, 0,
+                                                "\xcf\x89\xe2\x82\x82, third row");
     const sus_plot_style c1 = sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 0, SUS_PLOT_NONE, 0,
                                                 "\xcf\x89\xe2\x82\x81, third column (0.2, 0.2)");
-    const sus_plot_style c2 =
-        sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 1, SUS_PLOT_NONE, 0, "\xcf\x89\xe2\x82\x82, third column");
+    const sus_plot_style c2 = sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 1, SUS_PLOT_NONE, 0,
+                                                "\xcf\x89\xe2\x82\x82, third column");
     sus_plot_axes ax;
     double lo = INFINITY, hi = -INFINITY;
     sus_plot_extend(&lo, &hi, f->row.w1, f->row.n, 1, 0);
@@ -52,8 +53,10 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_extend(&lo, &hi, f->col.lambda, f->col.n, 1, 0);
     sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 1, 0, T_END, lo, hi, 0, 0);
     sus_plot_frame(&ax, "t", "\xce\xbb (exact)", "(b)");
-    const sus_plot_style lr = sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0, "third row");
-    const sus_plot_style lc = sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 0, SUS_PLOT_NONE, 0, "third column");
+    const sus_plot_style lr =
+        sus_plot_style_of(SUS_PLOT_RED, 1.4, 0, SUS_PLOT_NONE, 0, "third row");
+    const sus_plot_style lc =
+        sus_plot_style_of(SUS_PLOT_BLUE, 1.4, 0, SUS_PLOT_NONE, 0, "third column");
     sus_plot_series(&ax, f->row.t, f->row.lambda, f->row.n, 1, &lr);
     sus_plot_series(&ax, f->col.t, f->col.lambda, f->col.n, 1, &lc);
     const sus_plot_style legb[2] = {lr, lc};
@@ -105,10 +108,12 @@ int main(int argc, char **argv)
     sus_lab_series_exact(&f.col, &ec, DT, NPTS);
     for (size_t i = 0; i < f.row.n; i++)
         f.dist[i] = hypot(f.row.w1[i] - f.col.w1[i], f.row.w2[i] - f.col.w2[i]);
-    const double *cols[] = {f.row.t, f.row.w1, f.row.w2, f.row.lambda, f.col.w1, f.col.w2, f.col.lambda};
-    if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, argv[2], "inertia", "csv"),
-                      "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n,
-                      1) != 0)
+    const double *cols[] = {f.row.t,  f.row.w1, f.row.w2,    f.row.lambda,
+                            f.col.w1, f.col.w2, f.col.lambda};
+    if (sus_plot_fig_write_csv(
+            sus_plot_fig_path(path, sizeof path, argv[2], "inertia", "csv"),
+            "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n,
+            1) != 0)
         return 1;
     double maxd = 0.0;
     for (size_t i = 0; i < f.row.n; i++)
@@ -117,17 +122,20 @@ int main(int argc, char **argv)
     sus_exact_limit(&er, lr);
     sus_exact_limit(&ec, lc);
     char cap[2048];
-    snprintf(cap, sizeof cap,
-             "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
-             "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
-             "(RGB2), (ContDyn)\n"
-             "and (LagMult) use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); "
-             "a symmetric body with the\n"
-             "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t in "
-             "[0, %g].\n"
-             "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row - w_col|, at most %.3f. Steady rotations:\n"
-             "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
-             "Data: data/inertia.csv.\n",
-             T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
+    snprintf(
+        cap, sizeof cap,
+        "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
+        "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
+        "(RGB2), (ContDyn)\n"
+        "and (LagMult) use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); "
+        "a symmetric body with the\n"
+        "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t "
+        "in "
+        "[0, %g].\n"
+        "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row - w_col|, at most %.3f. Steady "
+        "rotations:\n"
+        "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
+        "Data: data/inertia.csv.\n",
+        T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
     return sus_plot_fig_write_figure(argv[1], "inertia", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

@@ -25,7 +25,8 @@
 #define T_MATCH 50.0
 #define LEVEL 1e-10
 #define NS 500
-/* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block. */
+/* Portrait: at the page's figure scale the text prints at 7 pt and the width fits the text block.
+ */
 #define LR_W 530.0
 #define LR_PANEL_H 220.0
 #define LR_LEGEND_Y (22.0 + LR_PANEL_H + 40.0)
@@ -89,17 +90,20 @@ static void ours(const sus_step_method *me)
     c->param = eps;
     const long steps = lround(T_LONG / eps);
     sampler s = {c, sus_energy(&model, ex.w0), 0};
-    const sus_run_config cfg = {&model, me->type, me->recon, T_LONG / (double)steps, steps, steps / NS};
+    const sus_run_config cfg = {&model, me->type,  me->recon, T_LONG / (double)steps,
+                                steps,  steps / NS};
     sus_run_report rep;
     sus_run(&cfg, ex.w0, sample, &s, &rep);
 }
 
 static void peer(size_t dim)
 {
-    gsl_odeiv2_system sys = {dim == 11 ? sus_lab_peer_rhs_wR : sus_lab_peer_rhs_wq, NULL, dim, &model};
+    gsl_odeiv2_system sys = {dim == 11 ? sus_lab_peer_rhs_wR : sus_lab_peer_rhs_wq, NULL, dim,
+                             &model};
     double y[11], R[3][3], tol = 1e-3;
     for (; tol >= 1e-14; tol /= 10.0) { /* the loosest tolerance reaching LEVEL at t = 50 */
-        gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
+        gsl_odeiv2_driver *d =
+            gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
         double t = 0.0;
         sus_lab_peer_initial(dim, ex.w0, y);
         const int st = gsl_odeiv2_driver_apply(d, &t, T_MATCH, y);
@@ -109,10 +113,11 @@ static void peer(size_t dim)
             break;
     }
     curve *c = &C[nc++];
-    snprintf(c->name, sizeof c->name, "GSL rk8pd on %s, tol %.0e%s", dim == 11 ? "(w, R)" : "(w, q)", tol,
-             dim == 11 ? "" : " (||q| - 1|)");
+    snprintf(c->name, sizeof c->name, "GSL rk8pd on %s, tol %.0e%s",
+             dim == 11 ? "(w, R)" : "(w, q)", tol, dim == 11 ? "" : " (||q| - 1|)");
     c->param = tol;
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
+    gsl_odeiv2_driver *d =
+        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, tol, tol);
     double t = 0.0;
     const double e0 = sus_energy(&model, ex.w0);
     sus_lab_peer_initial(dim, ex.w0, y);
@@ -138,16 +143,16 @@ static void draw(cairo_t *cr, void *vctx)
     for (int i = 0; i < nc; i++)
         st[i] = C[i].ours ? sus_plot_style_of(SUS_PLOT_PALETTE[k++ % SUS_PLOT_PALETTE_N], 1.1, 0,
                                               SUS_PLOT_NONE, 0, C[i].name)
-                          : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0, C[i].name);
+                          : sus_plot_style_of(SUS_PLOT_GREY, 1.6, i % 2 ? 2 : 1, SUS_PLOT_NONE, 0,
+                                              C[i].name);
     for (int p = 0; p < 2; p++) {
         sus_plot_axes ax;
-        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG, 1e-17, 1e-4,
-                           1, 1);
+        sus_plot_axes_init(&ax, cr, 58 + p * (W / 2), 22, W / 2 - 75, LR_PANEL_H, 1.0, T_LONG,
+                           1e-17, 1e-4, 1, 1);
         const char *ylabel = p ? "|E \xe2\x88\x92 E\xe2\x82\x80|"
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
-        sus_plot_frame(&ax, "t", ylabel,
-                   p ? "(b)" : "(a)");
+        sus_plot_frame(&ax, "t", ylabel, p ? "(b)" : "(a)");
         for (int i = 0; i < nc; i++)
             sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
@@ -172,26 +177,28 @@ static int write_data(const char *datadir)
         }
     const double *cols[] = {idx, t, o, e};
     char path[4096];
-    const int rc = sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "longrun", "csv"),
-                                 "curve,t,orth_defect,energy_error", 4, cols, n, 1);
+    const int rc =
+        sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "longrun", "csv"),
+                               "curve,t,orth_defect,energy_error", 4, cols, n, 1);
     free(buf);
     return rc != 0;
 }
 
 static void caption(char *cap, size_t size)
 {
-    int len = snprintf(cap, size,
-                       "Structure over a long run, T = 1e4. Regenerate: make figures "
-                       "(src/prog/figure_longrun.c).\n"
-                       "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches "
-                       "attitude error 1e-10\n"
-                       "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd "
-                       "on (w, q) the\n"
-                       "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn "
-                       "instead); (b) |E - E0|.\n"
-                       "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute "
-                       "it, the peers\n"
-                       "integrate w1, w2 only. Curves (data/longrun.csv, column curve):\n");
+    int len = snprintf(
+        cap, size,
+        "Structure over a long run, T = 1e4. Regenerate: make figures "
+        "(src/prog/figure_longrun.c).\n"
+        "Each method runs at the step (ours) or tolerance (GSL rk8pd, abs = rel) that reaches "
+        "attitude error 1e-10\n"
+        "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd "
+        "on (w, q) the\n"
+        "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn "
+        "instead); (b) |E - E0|.\n"
+        "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute "
+        "it, the peers\n"
+        "integrate w1, w2 only. Curves (data/longrun.csv, column curve):\n");
     for (int i = 0; i < nc && len < (int)size; i++) {
         double mo = 0.0, me = 0.0;
         for (int k = 0; k <= NS; k++) {
@@ -199,8 +206,8 @@ static void caption(char *cap, size_t size)
             me = fmax(me, C[i].energy[k]);
         }
         len += snprintf(cap + len, size - (size_t)len,
-                        "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i,
-                        C[i].name, mo, me, C[i].ours ? (C[i].w3max == 0.0 ? ", w3 = 0" : ", w3 NOT 0") : "");
+                        "  %d: %s: max |R^T R - I| %.2g, max |E - E0| %.2g%s\n", i, C[i].name, mo,
+                        me, C[i].ours ? (C[i].w3max == 0.0 ? ", w3 = 0" : ", w3 NOT 0") : "");
     }
 }
 
@@ -226,7 +233,8 @@ int main(int argc, char **argv)
         return 1;
     char cap[8192];
     caption(cap, sizeof cap);
-    const double h = LR_LEGEND_Y + 11.0 * ((nc + 1) / 2) + 20.0; /* two legend columns of 11-unit rows */
+    const double h =
+        LR_LEGEND_Y + 11.0 * ((nc + 1) / 2) + 20.0; /* two legend columns of 11-unit rows */
     const int rc = sus_plot_fig_write_figure(argv[1], "longrun", LR_W, h, draw, NULL, cap) != 0;
     free(C);
     return rc;

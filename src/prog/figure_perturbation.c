@@ -1,7 +1,7 @@
 /* Section 6 drawn: a method's steps are the period map of an eps-periodic perturbation of
  * (ContDyn) (TheoPer). (a)-(b) the solution of x' = h(x) + eps^p d (rk8pd through the Newton
- * inversion of the blend, src/lab/perturbation.h) passes through explicit Euler's points at eps = 4;
- * (c) sup |eps^p d| against eps for every method of the registry; (d) the attitude part of the
+ * inversion of the blend, src/lab/perturbation.h) passes through explicit Euler's points at eps =
+ * 4; (c) sup |eps^p d| against eps for every method of the registry; (d) the attitude part of the
  * perturbation on SO(3) (Per11) for the midpoint DSP with each reconstruction.
  * Usage: figure_perturbation FIGDIR DATADIR */
 #include "exact.h"
@@ -21,12 +21,14 @@
 #define FIG_W 560.0 /* panel (c) as wide as its two-column legend */
 #define FIG_H 480.0
 #define LEGEND_COLS 2 /* panel (c)'s legend, above its lines */
-#define EPS_A 4.0     /* explicit Euler at h = eps k = 0.58: its steps visibly leave the exact curve */
+#define EPS_A                                                                                      \
+    4.0 /* explicit Euler at h = eps k = 0.58: its steps visibly leave the exact curve             \
+         */
 #define NSTEP_A 10
-#define NSUB 40       /* samples per period */
+#define NSUB 40 /* samples per period */
 #define NPA (NSTEP_A * NSUB + 1)
-#define NE 12         /* eps = 2 .. 2^-10 */
-#define NE_SO3 10     /* eps = 2 .. 2^-8 (claims_section6.c) */
+#define NE 12     /* eps = 2 .. 2^-10 */
+#define NE_SO3 10 /* eps = 2 .. 2^-8 (claims_section6.c) */
 #define TOL 1e-14
 /* points below the ledger's round-off floors (perturbation.h) are not drawn */
 #define FLOOR_G SUS_LAB_PERTURB_FLOOR_G
@@ -41,9 +43,9 @@
 typedef struct {
     double t[NPA], w[NPA][2], ex[NPA][2];
     double tk[NSTEP_A + 1], wk[NSTEP_A + 1][2];
-    int nm;               /* every registered method, */
-    const char **names;   /* their names */
-    double (*g)[NE];      /* and their sizes, allocated once */
+    int nm;             /* every registered method, */
+    const char **names; /* their names */
+    double (*g)[NE];    /* and their sizes, allocated once */
     double eps[NE];
     double att[SUS_RECON_COUNT][NE];
 } pert_fig;
@@ -99,7 +101,8 @@ static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
     for (int a = 0; a < nl; a++)
         for (int b = nl - 1; b > a; b--)
             if (sus_plot_hidden_under(&ax, f->eps, f->g[shown[a]], f->g[shown[b]], NE, 1.5)) {
-                snprintf(under[a], sizeof under[a], "%s (on %s)", f->names[shown[a]], f->names[shown[b]]);
+                snprintf(under[a], sizeof under[a], "%s (on %s)", f->names[shown[a]],
+                         f->names[shown[b]]);
                 leg[a].label = under[a];
                 sus_plot_markers(&ax, f->eps, f->g[shown[a]], NE, 1, &leg[a]);
                 break;
@@ -131,7 +134,8 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_extend(&lo, &hi, e, NPA, 1, 0);
         sus_plot_axes ax;
         sus_plot_axes_cell(&ax, cr, W, H, 2, 2, c, 0, f->t[NPA - 1], lo, hi, 0, 0);
-        sus_plot_frame(&ax, "t", c ? "\xcf\x89\xe2\x82\x82" : "\xcf\x89\xe2\x82\x81", c ? "(b)" : "(a)");
+        sus_plot_frame(&ax, "t", c ? "\xcf\x89\xe2\x82\x82" : "\xcf\x89\xe2\x82\x81",
+                       c ? "(b)" : "(a)");
         sus_plot_series(&ax, f->t, e, NPA, 1, &se);
         sus_plot_series(&ax, f->t, x, NPA, 1, &sp);
         sus_plot_markers(&ax, f->tk, xk, NSTEP_A + 1, 1, &sk);
@@ -148,12 +152,12 @@ static void draw(cairo_t *cr, void *vctx)
             sus_plot_extend(&lo, &hi, f->att[r], NE_SO3, 1, 1);
         sus_plot_axes ax;
         sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 3, f->eps[NE_SO3 - 1], f->eps[0], lo, hi, 1, 1);
-        sus_plot_frame(&ax, "\xce\xb5", "sup |(R\xe1\xb5\x80R\xe2\x80\xb2)\xcb\x87 \xe2\x88\x92 \xcf\x89|",
-                       "(d)");
+        sus_plot_frame(&ax, "\xce\xb5",
+                       "sup |(R\xe1\xb5\x80R\xe2\x80\xb2)\xcb\x87 \xe2\x88\x92 \xcf\x89|", "(d)");
         sus_plot_style leg[SUS_RECON_COUNT];
         for (int r = 0; r < SUS_RECON_COUNT; r++) {
-            leg[r] =
-                sus_plot_style_of(colour(r + 3), 1.0, r == 2, SUS_PLOT_CIRCLE + r, 4.0, SUS_RECON_NAMES[r]);
+            leg[r] = sus_plot_style_of(colour(r + 3), 1.0, r == 2, SUS_PLOT_CIRCLE + r, 4.0,
+                                       SUS_RECON_NAMES[r]);
             sus_plot_series(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
             sus_plot_markers(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
         }
@@ -177,9 +181,10 @@ static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, doub
         if (sus_lab_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_LAB_PERTURB_OK) {
             char eq2[32];
             fprintf(stderr,
-                    "figure_perturbation: %s failed on period %d, t in [%g, %g], Newton residual %.3g\n",
-                    sus_paper_name("Eq2", eq2, sizeof eq2), k,
-                    EPS_A * k, EPS_A * (k + 1), P.sus_lab_newton_res);
+                    "figure_perturbation: %s failed on period %d, t in [%g, %g], Newton residual "
+                    "%.3g\n",
+                    sus_paper_name("Eq2", eq2, sizeof eq2), k, EPS_A * k, EPS_A * (k + 1),
+                    P.sus_lab_newton_res);
             return 3;
         }
         for (int i = (k ? 1 : 0); i <= NSUB; i++) {
@@ -246,8 +251,8 @@ static void attitude_sizes(pert_fig *f, const sus_model *m, const sus_exact *ex)
             for (int t = 0; t < 2; t++) {
                 double x0[2], a, g;
                 sus_exact_omega(ex, TK[t], x0);
-                if (sus_lab_perturb_sup_so3(&Q, (sus_recon)r, x0, 32, SUS_LAB_PERTURB_ATT_TOL, &a, &g) !=
-                    SUS_LAB_PERTURB_OK)
+                if (sus_lab_perturb_sup_so3(&Q, (sus_recon)r, x0, 32, SUS_LAB_PERTURB_ATT_TOL, &a,
+                                            &g) != SUS_LAB_PERTURB_OK)
                     die("an attitude blend failed", 3);
                 s = fmax(s, a);
             }
@@ -269,7 +274,8 @@ static int write_data(const pert_fig *f, const char *datadir)
     }
     const double *cols[] = {tcol, c1, c2, e1, e2};
     if (sus_plot_fig_write_csv(sus_plot_fig_path(path, sizeof path, datadir, "perturbation", "csv"),
-                      "t,omega1_perturbed,omega2_perturbed,omega1_exact,omega2_exact", 5, cols, NPA, 1) != 0)
+                               "t,omega1_perturbed,omega2_perturbed,omega1_exact,omega2_exact", 5,
+                               cols, NPA, 1) != 0)
         return 1;
     char header[8192];
     const double *scols[1 + f->nm + SUS_RECON_COUNT];
@@ -310,27 +316,32 @@ int main(int argc, char **argv)
     if (write_data(&f, argv[2]) != 0)
         return 1;
     char cap[2048];
-    snprintf(cap, sizeof cap,
-             "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, "
-             "src/lab/perturbation.c).\n"
-             "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
-             "backward from the\n"
-             "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its defect "
-             "against (ContDyn),\n"
-             "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by "
-             "rk8pd (tol 1e-14)\n"
-             "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap "
-             "%.1e); dashed:\n"
-             "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method of the "
-             "registry;\n"
-             "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and "
-             "methods with fewer\n"
-             "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
-             "attitude\n"
-             "part of the perturbation on SO(3) (geodesic blend, Per11): sup |vee(R^T R') - w|, the body "
-             "angular\nvelocity of the blended attitude R(t) against the curve's w, midpoint DSP: order 1 "
-             "with cayley, 2 with\nthe symmetric reconstructions. Data: data/perturbation.csv, "
-             "data/perturbation_sizes.csv.\n",
-             NSTEP_A, EPS_A, gap, FLOOR_G);
+    snprintf(
+        cap, sizeof cap,
+        "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, "
+        "src/lab/perturbation.c).\n"
+        "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
+        "backward from the\n"
+        "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its "
+        "defect "
+        "against (ContDyn),\n"
+        "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by "
+        "rk8pd (tol 1e-14)\n"
+        "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap "
+        "%.1e); dashed:\n"
+        "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method "
+        "of the "
+        "registry;\n"
+        "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and "
+        "methods with fewer\n"
+        "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
+        "attitude\n"
+        "part of the perturbation on SO(3) (geodesic blend, Per11): sup |vee(R^T R') - w|, the "
+        "body "
+        "angular\nvelocity of the blended attitude R(t) against the curve's w, midpoint DSP: order "
+        "1 "
+        "with cayley, 2 with\nthe symmetric reconstructions. Data: data/perturbation.csv, "
+        "data/perturbation_sizes.csv.\n",
+        NSTEP_A, EPS_A, gap, FLOOR_G);
     return sus_plot_fig_write_figure(argv[1], "perturbation", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

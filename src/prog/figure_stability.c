@@ -12,12 +12,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define NH 31      /* h = 10^(-3 + 0.2 i) */
-#define NANGLE 36  /* every 10 degrees */
+#define NH 31     /* h = 10^(-3 + 0.2 i) */
+#define NANGLE 36 /* every 10 degrees */
 
 typedef struct {
     double hs[NH];
-    int nm;                    /* every method of the registry, in its order */
+    int nm; /* every method of the registry, in its order */
     sus_lab_stab_result (*res)[NH * NANGLE];
     double *limit;
 } stab_fig;
@@ -30,8 +30,11 @@ typedef struct {
 #define STRIP_H 14.0
 static double fig_height(int nm) { return STRIP_H + PANEL_H * ((nm + 1) / 2); }
 
-static const double CLASS_RGB[SUS_LAB_STAB_NCLASS][3] = {
-    {0.62, 0.85, 0.60}, {0.98, 0.75, 0.35}, {0.85, 0.20, 0.15}, {0.55, 0.30, 0.75}, {0.20, 0.20, 0.20}};
+static const double CLASS_RGB[SUS_LAB_STAB_NCLASS][3] = {{0.62, 0.85, 0.60},
+                                                         {0.98, 0.75, 0.35},
+                                                         {0.85, 0.20, 0.15},
+                                                         {0.55, 0.30, 0.75},
+                                                         {0.20, 0.20, 0.20}};
 
 static void draw(cairo_t *cr, void *vctx)
 {
@@ -49,8 +52,8 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_axes ax;
         char letter[8];
         snprintf(letter, sizeof letter, "(%c)", 'a' + m % 26);
-        sus_plot_axes_cell(&ax, cr, W, H - STRIP_H, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1], 0.0,
-                           360.0, 1, 0);
+        sus_plot_axes_cell(&ax, cr, W, H - STRIP_H, (f->nm + 1) / 2, 2, m, f->hs[0], f->hs[NH - 1],
+                           0.0, 360.0, 1, 0);
         ax.x0 = f->hs[0] / step;
         ax.x1 = f->hs[NH - 1] * step;
         ax.y0 = 0.0;
@@ -58,13 +61,14 @@ static void draw(cairo_t *cr, void *vctx)
         for (int i = 0; i < NH; i++)
             for (int a = 0; a < NANGLE; a++)
                 sus_plot_rect(&ax, f->hs[i] / step, f->hs[i] * step, 10.0 * a, 10.0 * (a + 1),
-                          CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
+                              CLASS_RGB[f->res[m][i * NANGLE + a].cls]);
         char title[96];
         snprintf(title, sizeof title, "h = \xce\xb5k   (%s)", sus_step_method_get(m)->type->name);
         sus_plot_frame(&ax, title, "\xce\xb8\xe2\x82\x80 (degrees)", letter);
         if (isfinite(f->limit[m])) {
             const double lx[2] = {f->limit[m], f->limit[m]}, ly[2] = {0.0, 360.0};
-            const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 1, SUS_PLOT_NONE, 0, NULL);
+            const sus_plot_style ls =
+                sus_plot_style_of(SUS_PLOT_BLACK, 1.4, 1, SUS_PLOT_NONE, 0, NULL);
             sus_plot_series(&ax, lx, ly, 2, 1, &ls);
             char lab[64];
             snprintf(lab, sizeof lab, "linear limit h = %.4g", f->limit[m]);
@@ -80,8 +84,8 @@ static int write_csv(const stab_fig *f, const char *dir)
 {
     char err[256], path[4096];
     sus_sys_atomic_file af;
-    if (sus_sys_atomic_file_open(&af, sus_plot_fig_path(path, sizeof path, dir, "stability", "csv"), err,
-                                 sizeof err) != 0) {
+    if (sus_sys_atomic_file_open(&af, sus_plot_fig_path(path, sizeof path, dir, "stability", "csv"),
+                                 err, sizeof err) != 0) {
         fprintf(stderr, "figure_stability: %s\n", err);
         return 1;
     }
@@ -90,7 +94,8 @@ static int write_csv(const stab_fig *f, const char *dir)
         for (int i = 0; i < NH; i++)
             for (int a = 0; a < NANGLE; a++) {
                 const sus_lab_stab_result *r = &f->res[m][i * NANGLE + a];
-                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", sus_step_method_get(m)->type->name, f->hs[i],
+                fprintf(af.fp, "%s,%.6g,%.4g,%d,%s,%ld,%.6g\n", sus_step_method_get(m)->type->name,
+                        f->hs[i],
                         (2.0 * 3.14159265358979323846 * a / NANGLE + SUS_LAB_STAB_ANGLE0) * 180.0 /
                             3.14159265358979323846,
                         r->cls, SUS_LAB_STAB_NAMES[r->cls], r->step, r->final_err);
@@ -109,38 +114,57 @@ static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t
     for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
         len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
                         sus_step_method_get(m)->type->name, f->limit[m]);
-    snprintf(
-        cap, caplen,
-        "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
-        "src/lab/stability.h).\n"
-        "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f the rate of\n"
-        "approach to the steady rotation for the paper's energy; w0 runs round that energy ellipse (theta0,\n"
-        "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; each run "
-        "lasts\n"
-        "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against continuation in eps\n"
-        "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong limit = bounded,\n"
-        "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = the step's solve fails other than at a\n"
-        "fold, or a Taylor step lies beyond its series' radius of convergence; regularity lost = the branch\n"
-        "of the step equation continued from eps = 0 meets a fold (no root on it beyond), or the (REGLOC)\n"
-        "block is singular or has changed sign. Each implicit step solves for that branch: Newton from its\n"
-        "explicit prediction where that lands near it, continuation in eps elsewhere.\n"
-        "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the eigenvalue -k, so\n"
-        "an explicit method is linearly stable only below the first h with |R(-h)| = 1 (dashed lines; "
-        "checked\n"
-        "against bisection in the claims ledger). These limits, per method (inf: none up to h = 1000; nan: "
-        "no\n"
-        "linear stability function): %s. Far from the rotation the nonlinear transient blows up earlier (h ~ "
-        "1 for Euler).\n"
-        "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule is A-stable and\n"
-        "conserves E, and its step equation keeps its branch: every run is good. The variational step has\n"
-        "no linear limit either (its linearisation at the rotation has spectral radius < 1 for all h\n"
-        "tested), and its step equation keeps its branch too, but its energy loss moves its limit by more\n"
-        "than 1%% from h ~ 0.5 on (wrong limit). The compositions solve every step too, but from h ~ 4 on\n"
-        "they end elsewhere (wrong limit; bounded, as each midpoint substep conserves E). gauss4's step\n"
-        "equation meets a fold of its branch on one start (regularity lost): two roots meet and vanish\n"
-        "(claims ledger, stability-fold-gauss4).\n"
-        "Data: data/stability.csv.\n",
-        paper->k, NH, SUS_LAB_STAB_BRANCH_H, limits);
+    snprintf(cap, caplen,
+             "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
+             "src/lab/stability.h).\n"
+             "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = "
+             "%.4f the rate of\n"
+             "approach to the steady rotation for the paper's energy; w0 runs round that energy "
+             "ellipse (theta0,\n"
+             "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; "
+             "each run "
+             "lasts\n"
+             "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against "
+             "continuation in eps\n"
+             "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong "
+             "limit = bounded,\n"
+             "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = the step's solve fails "
+             "other than at a\n"
+             "fold, or a Taylor step lies beyond its series' radius of convergence; regularity "
+             "lost = the branch\n"
+             "of the step equation continued from eps = 0 meets a fold (no root on it beyond), or "
+             "the (REGLOC)\n"
+             "block is singular or has changed sign. Each implicit step solves for that branch: "
+             "Newton from its\n"
+             "explicit prediction where that lands near it, continuation in eps elsewhere.\n"
+             "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the "
+             "eigenvalue -k, so\n"
+             "an explicit method is linearly stable only below the first h with |R(-h)| = 1 "
+             "(dashed lines; "
+             "checked\n"
+             "against bisection in the claims ledger). These limits, per method (inf: none up to h "
+             "= 1000; nan: "
+             "no\n"
+             "linear stability function): %s. Far from the rotation the nonlinear transient blows "
+             "up earlier (h ~ "
+             "1 for Euler).\n"
+             "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule "
+             "is A-stable and\n"
+             "conserves E, and its step equation keeps its branch: every run is good. The "
+             "variational step has\n"
+             "no linear limit either (its linearisation at the rotation has spectral radius < 1 "
+             "for all h\n"
+             "tested), and its step equation keeps its branch too, but its energy loss moves its "
+             "limit by more\n"
+             "than 1%% from h ~ 0.5 on (wrong limit). The compositions solve every step too, but "
+             "from h ~ 4 on\n"
+             "they end elsewhere (wrong limit; bounded, as each midpoint substep conserves E). "
+             "gauss4's step\n"
+             "equation meets a fold of its branch on one start (regularity lost): two roots meet "
+             "and vanish\n"
+             "(claims ledger, stability-fold-gauss4).\n"
+             "Data: data/stability.csv.\n",
+             paper->k, NH, SUS_LAB_STAB_BRANCH_H, limits);
 }
 
 /* Every method's map over NH steps and NANGLE starts, and its linear limit at the largest h, with
@@ -192,7 +216,8 @@ int main(int argc, char **argv)
         return 1;
     const int unclassified = run_maps(f, &paper, modes);
     if (unclassified) {
-        fprintf(stderr, "figure_stability: %d runs ended with a non-finite error but no failure class\n",
+        fprintf(stderr,
+                "figure_stability: %d runs ended with a non-finite error but no failure class\n",
                 unclassified);
         return 1;
     }
@@ -200,5 +225,6 @@ int main(int argc, char **argv)
         return 1;
     char cap[4096];
     caption(f, &paper, cap, sizeof cap);
-    return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) != 0;
+    return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) !=
+           0;
 }

@@ -26,23 +26,23 @@ typedef struct {
     FILE *fp;
     const sus_model *m;
     long every, steps;
-    long next;            /* the next row to write: 0, K, 2K, ..., N (no division per step) */
-    unsigned tick_mask;   /* check the clock when (calls & mask) == 0 */
+    long next;          /* the next row to write: 0, K, 2K, ..., N (no division per step) */
+    unsigned tick_mask; /* check the clock when (calls & mask) == 0 */
     unsigned long calls;
-    int blowup;           /* the energy overflowed at row blow_k (w finite but |w| > ~1e154) */
+    int blowup; /* the energy overflowed at row blow_k (w finite but |w| > ~1e154) */
     long blow_k;
     double blow_t;
-    int all;              /* write every row handed over (a tolerance-driven run's rows) */
-    int renumber;         /* k := the row's index (--every-time: t = k DT), not the driver's step */
-    long row;             /* rows written so far, when renumbering */
-    int have_pending;     /* `pending` is the last good row and was not written */
+    int all;          /* write every row handed over (a tolerance-driven run's rows) */
+    int renumber;     /* k := the row's index (--every-time: t = k DT), not the driver's step */
+    long row;         /* rows written so far, when renumbering */
+    int have_pending; /* `pending` is the last good row and was not written */
     sus_row pending;
 } csv_ctx;
 
 static int print_row(csv_ctx *ctx, const sus_row *r)
 {
-    fprintf(ctx->fp, "%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", r->k, r->t, r->w[0], r->w[1], r->w[2],
-            r->lambda, sus_energy(ctx->m, r->w));
+    fprintf(ctx->fp, "%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", r->k, r->t, r->w[0], r->w[1],
+            r->w[2], r->lambda, sus_energy(ctx->m, r->w));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             fprintf(ctx->fp, ",%.17g", r->R[i][j]);
@@ -91,57 +91,68 @@ static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
     if (isfinite(st->residual) && isfinite(st->scale))
         snprintf(res, sizeof res, "residual %.3g (scale %.3g)", st->residual, st->scale);
     else if (isfinite(st->residual))
-        snprintf(res, sizeof res, "residual %.3g, but its scale (the sum of |terms| of G) is not a finite "
-                 "number", st->residual);
+        snprintf(res, sizeof res,
+                 "residual %.3g, but its scale (the sum of |terms| of G) is not a finite "
+                 "number",
+                 st->residual);
     else if (isfinite(st->last_residual))
-        snprintf(res, sizeof res, "the residual is not a finite number; the last finite residual was %.3g",
+        snprintf(res, sizeof res,
+                 "the residual is not a finite number; the last finite residual was %.3g",
                  st->last_residual);
     else
-        snprintf(res, sizeof res, "the residual is not a finite number already at the starting guess");
+        snprintf(res, sizeof res,
+                 "the residual is not a finite number already at the starting guess");
     if (isfinite(st->det))
         snprintf(det, sizeof det, ", Jacobian determinant %.3g", st->det);
     const int finite = isfinite(st->residual) && isfinite(st->scale);
     char regloc[200];
     const char *why =
         rep->status == SUS_STEPPER_SINGULAR
-            ? sus_paper_numbered("the step equation's root, continued from eps = 0, meets a fold where the "
-                                 "Jacobian of (REGLOC) vanishes: no root on that branch for this step",
-                                 regloc, sizeof regloc)
-        : finite ? "Newton did not converge, from the prediction nor along the continuation from eps = 0"
-                 : "Newton's iteration overflowed";
-    snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations", rep->step, rep->t,
-             why, res, det, st->iterations);
+            ? sus_paper_numbered(
+                  "the step equation's root, continued from eps = 0, meets a fold where the "
+                  "Jacobian of (REGLOC) vanishes: no root on that branch for this step",
+                  regloc, sizeof regloc)
+        : finite
+            ? "Newton did not converge, from the prediction nor along the continuation from eps = 0"
+            : "Newton's iteration overflowed";
+    snprintf(msg, len, "step %ld (t = %.17g) failed: %s; %s%s, after %d Newton iterations",
+             rep->step, rep->t, why, res, det, st->iterations);
 }
 
 /* One line naming the step and t; a NaN or infinity is described, never printed. */
-static void failure_message(char *msg, size_t len, const char *name, int rc, const sus_run_report *rep)
+static void failure_message(char *msg, size_t len, const char *name, int rc,
+                            const sus_run_report *rep)
 {
     const sus_stepper_stats *st = &rep->stats;
     const int n = snprintf(msg, len, "%s ", name);
     msg += n;
     len -= (size_t)n;
     if (rc == SUS_RUN_BLOWUP)
-        snprintf(msg, len,
-                 "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
-                 rep->step, rep->t);
+        snprintf(
+            msg, len,
+            "blow-up at step %ld (t = %.17g): w, lambda, R or the energy is not a finite number",
+            rep->step, rep->t);
     else if (rep->status == SUS_STEPPER_REJECTED && !isfinite(st->residual))
-        snprintf(msg, len,
-                 "step %ld (t = %.17g) failed: its error estimate was not a finite number (the series "
-                 "overflowed) after %d tries (last step tried %.3g)",
-                 rep->step, rep->t, st->iterations, st->det);
+        snprintf(
+            msg, len,
+            "step %ld (t = %.17g) failed: its error estimate was not a finite number (the series "
+            "overflowed) after %d tries (last step tried %.3g)",
+            rep->step, rep->t, st->iterations, st->det);
     else if (rep->status == SUS_STEPPER_REJECTED)
-        snprintf(msg, len,
-                 "step %ld (t = %.17g) failed: its error estimate %.3g stayed above --tol %.3g after %d "
-                 "tries (last step tried %.3g)",
-                 rep->step, rep->t, st->residual, st->scale, st->iterations, st->det);
+        snprintf(
+            msg, len,
+            "step %ld (t = %.17g) failed: its error estimate %.3g stayed above --tol %.3g after %d "
+            "tries (last step tried %.3g)",
+            rep->step, rep->t, st->residual, st->scale, st->iterations, st->det);
     else if (rep->status == SUS_STEPPER_STEP_LIMIT)
-        snprintf(msg, len,
-                 "stopped before step %ld at t = %.17g: a --tol run takes at most %ld steps (the last "
-                 "was %.3g long; a shorter --time or smaller --omega0 needs fewer)",
-                 rep->step, rep->t, SUSLOV_TOL_MAX_STEPS, st->det);
+        snprintf(
+            msg, len,
+            "stopped before step %ld at t = %.17g: a --tol run takes at most %ld steps (the last "
+            "was %.3g long; a shorter --time or smaller --omega0 needs fewer)",
+            rep->step, rep->t, SUSLOV_TOL_MAX_STEPS, st->det);
     else if (rep->status == SUS_STEPPER_NO_MEMORY)
-        snprintf(msg, len, "step %ld (t = %.17g) failed: out of memory for the method's workspace", rep->step,
-                 rep->t);
+        snprintf(msg, len, "step %ld (t = %.17g) failed: out of memory for the method's workspace",
+                 rep->step, rep->t);
     else if (rep->status == SUS_STEPPER_DIVERGED)
         snprintf(msg, len,
                  "step %ld (t = %.17g) failed: the Taylor series diverges or is not proved to "
@@ -156,10 +167,10 @@ static void failure_message(char *msg, size_t len, const char *name, int rc, con
 /* A tolerance-driven run: the driver hands over exactly the rows to write. */
 static int run_tol(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
 {
-    const sus_tol_config cfg = {&a->model, a->method->type, a->tol, a->t_end, a->every_time,
-                                SUSLOV_TOL_MAX_STEPS};
-    *ctx = (csv_ctx){.fp = fp, .m = &a->model, .all = 1, .renumber = a->every_time > 0.0,
-                     .tick_mask = ~0u};
+    const sus_tol_config cfg = {&a->model, a->method->type, a->tol,
+                                a->t_end,  a->every_time,   SUSLOV_TOL_MAX_STEPS};
+    *ctx = (csv_ctx){
+        .fp = fp, .m = &a->model, .all = 1, .renumber = a->every_time > 0.0, .tick_mask = ~0u};
     const int rc = sus_run_tol(&cfg, a->w0, take_row, ctx, report);
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
         report->step = ctx->blow_k;
@@ -177,13 +188,17 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
     /* The exact run computes only the rows it writes (each may cost a stretch of the reference
      * integration), so it gets its K; the integrators step every k anyway and hand every row
      * to take_row. */
-    const sus_run_config cfg = {&a->model, a->stepper, a->recon, a->eps, a->steps,
-                                   exact ? a->every : 1};
-    *ctx = (csv_ctx){.fp = fp, .m = &a->model, .every = a->every, .steps = a->steps,
+    const sus_run_config cfg = {&a->model, a->stepper, a->recon,
+                                a->eps,    a->steps,   exact ? a->every : 1};
+    *ctx = (csv_ctx){.fp = fp,
+                     .m = &a->model,
+                     .every = a->every,
+                     .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
     /* Progress only where a person watches stderr and the rows do not scroll over it. */
-    suslov_progress_start("suslov", "step", a->steps,
-                   !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0);
+    suslov_progress_start(
+        "suslov", "step", a->steps,
+        !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0);
     int rc = exact ? sus_run_exact(&cfg, a->w0, take_row, ctx, report)
                    : sus_run(&cfg, a->w0, take_row, ctx, report);
     suslov_progress_end();
@@ -193,7 +208,8 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
         report->t = ctx->blow_t;
     }
     /* A failure: the last good row goes out as it would at the end of a normal run. */
-    if (rc != SUS_RUN_OK && rc != SUS_RUN_STOPPED && ctx->have_pending && print_row(ctx, &ctx->pending))
+    if (rc != SUS_RUN_OK && rc != SUS_RUN_STOPPED && ctx->have_pending &&
+        print_row(ctx, &ctx->pending))
         rc = SUS_RUN_STOPPED;
     return rc;
 }
@@ -202,7 +218,8 @@ static int write_failed(sus_sys_atomic_file *af, const char *output)
 {
     const int saved = errno;
     sus_sys_atomic_file_abort(af);
-    suslov_cli_error("writing %s failed: %s", output && strcmp(output, "-") ? output : "stdout", strerror(saved));
+    suslov_cli_error("writing %s failed: %s", output && strcmp(output, "-") ? output : "stdout",
+                     strerror(saved));
     return EXIT_WRITE;
 }
 
@@ -217,11 +234,11 @@ static int solver_failed(sus_sys_atomic_file *af, const suslov_args *a, int rc,
     if (!af->in_place) {
         sus_sys_atomic_file_abort(af);
         suslov_cli_error("%s; --output %s %s", msg, suslov_cli_quote(a->output),
-                  af->existed ? "is left as it was" : "was not created");
+                         af->existed ? "is left as it was" : "was not created");
         return EXIT_SOLVER;
     }
-    if (a->header && fprintf(af->fp, "# incomplete: the run stopped with exit status 3: %s\n",
-                             msg) < 0)
+    if (a->header &&
+        fprintf(af->fp, "# incomplete: the run stopped with exit status 3: %s\n", msg) < 0)
         return write_failed(af, a->output);
     if (sus_sys_atomic_file_commit(af, err, sizeof err) != 0) {
         suslov_cli_error("%s", err);

@@ -132,11 +132,12 @@ static void show_version(void *g, const suslov_cli_option *o, const char *v)
  * so no list of names is kept here. */
 static void more_methods(FILE *fp, int man)
 {
-    suslov_cli_line(fp, man, "%-12s %s", "exact", "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
+    suslov_cli_line(fp, man, "%-12s %s", "exact",
+                    "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
         suslov_cli_line(fp, man, "%-15s %s%s", me->type->name, me->about,
-                 me->type->desc.follows_recon ? "" : " (ignores --reconstruct)");
+                        me->type->desc.follows_recon ? "" : " (ignores --reconstruct)");
     }
 }
 
@@ -166,52 +167,71 @@ static void more_recons(FILE *fp, int man)
     for (int f = SUS_ATTITUDE_NONE; f <= SUS_ATTITUDE_QUAT; f++)
         if (names_where(names, sizeof names, 0, f), names[0])
             suslov_cli_line(fp, man, "%s: none, their own %s attitude", names,
-                     sus_step_attitude_name((sus_attitude_form)f));
+                            sus_step_attitude_name((sus_attitude_form)f));
 }
 
 /* ---- the table ---- */
 
 static const suslov_cli_option OPTIONS[] = {
-    {"--method", "M", "the method (required); `--method list`, given alone (no other option),\n"
-                      "prints name, family, order, default reconstruction and description (a\n"
-                      "table on a terminal, TSV otherwise)", set_method, more_methods},
+    {"--method", "M",
+     "the method (required); `--method list`, given alone (no other option),\n"
+     "prints name, family, order, default reconstruction and description (a\n"
+     "table on a terminal, TSV otherwise)",
+     set_method, more_methods},
     {"--eps", "H", "time step, H > 0", set_eps, NULL},
-    {"--steps", "N", "number of steps, 1 <= N <= 2^63 - 1, read exactly as written: 1e6 and\n"
-                     "0x10 are whole numbers, 2.0000000000000001 is refused (as for --every,\n"
-                     "--sweeps)", set_steps, NULL},
-    {"--time", "T", "final time instead of --steps: T/H must be a whole number N (to 4\n"
-                    "rounding units of T), else it is refused with the nearest valid T", set_time, NULL},
-    {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0, NULL},
-    {"--inertia", "I11,...,I33", "inertia tensor by rows, as printed in the paper (only I_m and the\n"
-                                 "third row enter); I_m must be symmetric positive definite, its\n"
-                                 "determinant resolved and the coefficients of (ContDyn) and\n"
-                                 "(LagMult) finite in double precision (else refused, saying which);\n"
-                                 "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1", set_inertia, NULL},
-    {"--reconstruct", "R", "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
-                           "method that carries its own attitude (it is ignored there):", set_recon,
-     more_recons},
-    {"--sweeps", "N", "with --method midpoint: solve its implicit equation by N fixed-point\n"
-                      "sweeps instead of Newton, 1 <= N <= 8 (Figure 2's readings: 1 is explicit\n"
-                      "Euler, 2 the explicit midpoint rule)", set_sweeps, NULL},
+    {"--steps", "N",
+     "number of steps, 1 <= N <= 2^63 - 1, read exactly as written: 1e6 and\n"
+     "0x10 are whole numbers, 2.0000000000000001 is refused (as for --every,\n"
+     "--sweeps)",
+     set_steps, NULL},
+    {"--time", "T",
+     "final time instead of --steps: T/H must be a whole number N (to 4\n"
+     "rounding units of T), else it is refused with the nearest valid T",
+     set_time, NULL},
+    {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0,
+     NULL},
+    {"--inertia", "I11,...,I33",
+     "inertia tensor by rows, as printed in the paper (only I_m and the\n"
+     "third row enter); I_m must be symmetric positive definite, its\n"
+     "determinant resolved and the coefficients of (ContDyn) and\n"
+     "(LagMult) finite in double precision (else refused, saying which);\n"
+     "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1",
+     set_inertia, NULL},
+    {"--reconstruct", "R",
+     "how R_{k+1} is built from R_k; an error with exact, a warning with a\n"
+     "method that carries its own attitude (it is ignored there):",
+     set_recon, more_recons},
+    {"--sweeps", "N",
+     "with --method midpoint: solve its implicit equation by N fixed-point\n"
+     "sweeps instead of Newton, 1 <= N <= 8 (Figure 2's readings: 1 is explicit\n"
+     "Euler, 2 the explicit midpoint rule)",
+     set_sweeps, NULL},
     {"--every", "K", "write step 0, every K-th step and the last step; default 1", set_every, NULL},
-    {"--tol", "TOL", "error tolerance of a step, 2^-52 <= TOL < 1, for a tolerance-driven\n"
-                     "method (taylor-adaptive), which then chooses its order and steps; with\n"
-                     "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
-                     "after 10^6 steps short of T", set_tol, NULL},
-    {"--every-time", "DT", "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
-                           "method's dense output, k numbering them (default: the end of every\n"
-                           "accepted step, k counting the steps); T/DT <= 2^63 - 1, and a time\n"
-                           "within 4 rounding units of T is T",
+    {"--tol", "TOL",
+     "error tolerance of a step, 2^-52 <= TOL < 1, for a tolerance-driven\n"
+     "method (taylor-adaptive), which then chooses its order and steps; with\n"
+     "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
+     "after 10^6 steps short of T",
+     set_tol, NULL},
+    {"--every-time", "DT",
+     "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
+     "method's dense output, k numbering them (default: the end of every\n"
+     "accepted step, k counting the steps); T/DT <= 2^63 - 1, and a time\n"
+     "within 4 rounding units of T is T",
      set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},
-    {"--header", NULL, "write #-comment lines before the CSV header (the default): version,\n"
-                       "command line, method, eps, steps, body, w0 and units", set_header, NULL},
+    {"--header", NULL,
+     "write #-comment lines before the CSV header (the default): version,\n"
+     "command line, method, eps, steps, body, w0 and units",
+     set_header, NULL},
     {"--no-header", NULL, "bare CSV: no comment lines at all", set_header, NULL},
-    {"--quiet", NULL, "no progress line (shown on a terminal stderr when a run takes > 1 s;\n"
-                      "without escape sequences under TERM=dumb or NO_COLOR; never with\n"
-                      "NO_PROGRESS)", set_quiet, NULL},
-    {"--version", NULL, "print the version (the git commit built from, or unknown) and exit", show_version,
-     NULL},
+    {"--quiet", NULL,
+     "no progress line (shown on a terminal stderr when a run takes > 1 s;\n"
+     "without escape sequences under TERM=dumb or NO_COLOR; never with\n"
+     "NO_PROGRESS)",
+     set_quiet, NULL},
+    {"--version", NULL, "print the version (the git commit built from, or unknown) and exit",
+     show_version, NULL},
     {"--help", NULL, "print this text and exit", show_help, NULL},
     {"--man", NULL, "print this text as a manual page (roff) and exit", show_man, NULL},
 };
@@ -288,10 +308,14 @@ static const suslov_cli_section SECTIONS[] = {
 };
 
 static const suslov_cli_spec SPEC = {
-    "suslov", "integrate the Suslov problem with the methods of Jimenez & Scheurle",
+    "suslov",
+    "integrate the Suslov problem with the methods of Jimenez & Scheurle",
     "suslov --method M (--eps H (--steps N | --time T) | --tol TOL --time T) [OPTION]...",
     "Integrates the Suslov problem (Jimenez & Scheurle, Section 5) and writes CSV.",
-    OPTIONS, (int)(sizeof OPTIONS / sizeof OPTIONS[0]), SECTIONS, (int)(sizeof SECTIONS / sizeof SECTIONS[0]),
+    OPTIONS,
+    (int)(sizeof OPTIONS / sizeof OPTIONS[0]),
+    SECTIONS,
+    (int)(sizeof SECTIONS / sizeof SECTIONS[0]),
 };
 
 /* ---- --method list ---- */
@@ -337,17 +361,20 @@ static long steps_for_time(double T, double eps)
     char lo[64], hi[64];
     if (!(n >= 1.0)) {
         time_choice(hi, sizeof hi, 1.0, eps);
-        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
-                T, eps, n, hi);
+        suslov_cli_die(
+            "--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
+            T, eps, n, hi);
     }
     if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
-        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n, LONG_MAX);
+        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n,
+                       LONG_MAX);
     if (fabs(n * eps - T) > 2.0 * DBL_EPSILON * T) {
         const double f = floor(T / eps);
         time_choice(lo, sizeof lo, f, eps);
         time_choice(hi, sizeof hi, f + 1.0, eps);
-        suslov_cli_die("--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
-                f >= 1.0 ? lo : "", f >= 1.0 ? " or " : "", hi);
+        suslov_cli_die(
+            "--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
+            f >= 1.0 ? lo : "", f >= 1.0 ? " or " : "", hi);
     }
     return (long)n;
 }
@@ -361,7 +388,7 @@ static int resolve_method(suslov_args *a, const given *g)
     a->method = exact ? NULL : sus_step_method_by_name(g->method);
     if (!exact && !a->method)
         suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
-                sus_step_method_names(names, sizeof names, ", "));
+                       sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
         return 0;
@@ -373,7 +400,8 @@ static int resolve_method(suslov_args *a, const given *g)
         suslov_cli_die("unknown reconstruction %s (%s)", suslov_cli_quote(g->recon), names);
     }
     if (exact)
-        suslov_cli_die("--reconstruct does not apply to --method exact (its R is the reference attitude)");
+        suslov_cli_die(
+            "--reconstruct does not apply to --method exact (its R is the reference attitude)");
     return !a->method->type->desc.follows_recon;
 }
 
@@ -384,7 +412,8 @@ static void check_sweeps(suslov_args *a, const given *g)
     if (!g->sweeps)
         return;
     if (!a->method || a->method->type != sus_step_midpoint)
-        suslov_cli_die("--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
+        suslov_cli_die(
+            "--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
     if (g->sweeps > SUS_LAB_MAX_SWEEPS)
         suslov_cli_die("--sweeps must be at most %d, got %ld", SUS_LAB_MAX_SWEEPS, g->sweeps);
     a->sweeps = (int)g->sweeps;
@@ -402,15 +431,16 @@ static void check_tol_run(suslov_args *a, const given *g)
     if (!isnan(g->eps) || g->steps > 0)
         suslov_cli_die("--tol chooses the steps: give --time, not --eps or --steps");
     if (g->every_given)
-        suslov_cli_die("--every counts fixed steps; with --tol rows come at each step or by --every-time");
+        suslov_cli_die(
+            "--every counts fixed steps; with --tol rows come at each step or by --every-time");
     if (isnan(g->T) || !(g->T > 0.0))
         suslov_cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
         suslov_cli_die("--every-time must be positive, got %.17g", g->every_time);
     /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
     if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
-        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld", g->T, g->every_time,
-                g->T / g->every_time, LONG_MAX);
+        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld",
+                       g->T, g->every_time, g->T / g->every_time, LONG_MAX);
     a->tol = g->tol;
     a->t_end = g->T;
     a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;
@@ -420,7 +450,7 @@ static void check_fixed_steps(suslov_args *a, const given *g)
 {
     if (!isnan(g->tol) || !isnan(g->every_time))
         suslov_cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
-                isnan(g->tol) ? "--every-time" : "--tol");
+                       isnan(g->tol) ? "--every-time" : "--tol");
     if (isnan(g->eps))
         suslov_cli_die("--eps is required");
     if (!(g->eps > 0.0))
@@ -431,7 +461,8 @@ static void check_fixed_steps(suslov_args *a, const given *g)
     a->steps = isnan(g->T) ? g->steps : steps_for_time(g->T, g->eps);
     /* Every t_k = k eps <= N eps must be a finite number. */
     if (!isfinite((double)a->steps * a->eps))
-        suslov_cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps, a->eps);
+        suslov_cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps,
+                       a->eps);
     a->t_end = (double)a->steps * a->eps;
 }
 
@@ -448,8 +479,8 @@ static void check_start(const suslov_args *a, const given *g)
         return;
     const char *opts =
         g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
-    suslov_cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, g->w0[0], g->w0[1],
-            g->inertia_given ? "this" : "the paper's (default)");
+    suslov_cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what,
+                   g->w0[0], g->w0[1], g->inertia_given ? "this" : "the paper's (default)");
 }
 
 static void check_run(suslov_args *a, const given *g)
@@ -476,22 +507,31 @@ static void check_run(suslov_args *a, const given *g)
     check_sweeps(a, g);
     const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
-        suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly that the reference "
-                "attitude needs %.3g Taylor steps (at most %.0e)", cost, EXACT_MAX_REFERENCE_STEPS);
+        suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly "
+                       "that the reference "
+                       "attitude needs %.3g Taylor steps (at most %.0e)",
+                       cost, EXACT_MAX_REFERENCE_STEPS);
     if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
         suslov_cli_die("--output: %s", err);
     if (ignored)
-        suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon, a->method->type->name);
+        suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon,
+                        a->method->type->name);
 }
 
 void suslov_args_parse(suslov_args *a, int argc, char **argv)
 {
-    given g = {.eps = NAN, .T = NAN, .tol = NAN, .every_time = NAN, .every = 1, .header = 1,
+    given g = {.eps = NAN,
+               .T = NAN,
+               .tol = NAN,
+               .every_time = NAN,
+               .every = 1,
+               .header = 1,
                .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
     /* before any handler: another option's check or action (--help) would come first */
     const char *method;
-    if (suslov_cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method && strcmp(method, "list") == 0)
+    if (suslov_cli_peek(&SPEC, argc, argv, "--method", &method) > 1 && method &&
+        strcmp(method, "list") == 0)
         suslov_cli_die("--method list takes no other options");
     suslov_cli_parse(&SPEC, argc, argv, &g);
     memset(a, 0, sizeof *a);
@@ -526,7 +566,8 @@ static int quotable(const char *s, size_t n)
 static void put_arg(FILE *fp, const char *s)
 {
     const size_t n = strlen(s);
-    static const char BARE[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-";
+    static const char BARE[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-";
     if (n && strspn(s, BARE) == n) {
         fputs(s, fp);
         return;
@@ -576,12 +617,14 @@ void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp)
                                     : "0: a row at each accepted step, k counting them",
                 a->t_end);
     else
-        fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps, a->every,
-                a->t_end);
+        fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps,
+                a->every, a->t_end);
     fputs("# inertia (rows of I):", fp);
     for (int i = 0; i < 9; i++)
         fprintf(fp, "%s%.17g", i ? "," : " ", a->inertia[i]);
     fprintf(fp, "\n# omega0: %.17g,%.17g,0\n", a->w0[0], a->w0[1]);
-    fputs("# units: those of the paper's data: t in time units, omega in radians per time unit, lambda\n"
-          "# in units of I omega^2, energy = <I_m w, w>/2 in units of I omega^2\n", fp);
+    fputs("# units: those of the paper's data: t in time units, omega in radians per time unit, "
+          "lambda\n"
+          "# in units of I omega^2, energy = <I_m w, w>/2 in units of I omega^2\n",
+          fp);
 }

@@ -9,14 +9,15 @@
 #include <stdio.h>
 
 typedef struct {
-    const sus_step_method *method; /* NULL for exact */
+    const sus_step_method *method;   /* NULL for exact */
     const sus_stepper_type *stepper; /* the step the run takes: the method's, or --sweeps' */
-    int sweeps;                  /* --sweeps N, or 0 */
+    int sweeps;                      /* --sweeps N, or 0 */
     sus_recon recon;
-    const char *output;          /* NULL or "-" for stdout */
+    const char *output; /* NULL or "-" for stdout */
     double eps;
     long steps, every;
-    double tol, t_end, every_time; /* tol > 0: a tolerance-driven run (t_end: the final time of any run) */
+    double tol, t_end,
+        every_time; /* tol > 0: a tolerance-driven run (t_end: the final time of any run) */
     double w0[2], inertia[9];
     int quiet, header;
     sus_model model;

@@ -129,7 +129,7 @@ int main(int argc, char **argv)
     const char *timefile = argv[i];
     const double last = last_seconds(timefile);
     suslov_progress_start(name ? name : "", NULL, (long)(1000.0 * last),
-                   name ? PROGRESS_TERMINAL | PROGRESS_LOG : 0);
+                          name ? PROGRESS_TERMINAL | PROGRESS_LOG : 0);
     const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++)
         signal(sigs[k], pass_on);
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
     child = pid;
     const int status = pid < 0 ? -1 : wait_for(pid, t0, last);
     suslov_progress_end();
-    const int rc = status < 0            ? 127
+    const int rc = status < 0          ? 127
                    : WIFEXITED(status) ? WEXITSTATUS(status)
                                        : 128 + WTERMSIG(status);
     if (record(timefile, sus_sys_now() - t0, rc != 0) != 0)

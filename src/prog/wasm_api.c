@@ -37,7 +37,10 @@ const char *wasm_method_name(int i) { return sus_step_method_get(i)->type->name;
 const char *wasm_method_about(int i) { return sus_step_method_get(i)->about; }
 int wasm_method_recon(int i) { return (int)sus_step_method_get(i)->recon; }
 int wasm_recon_count(void) { return SUS_RECON_COUNT; }
-const char *wasm_recon_name(int i) { return i >= 0 && i < SUS_RECON_COUNT ? SUS_RECON_NAMES[i] : ""; }
+const char *wasm_recon_name(int i)
+{
+    return i >= 0 && i < SUS_RECON_COUNT ? SUS_RECON_NAMES[i] : "";
+}
 
 /* The other reading of the printed inertia (experiments.h): the input body's third row replaced
  * by its third column. */
@@ -120,9 +123,11 @@ static int setup(double eps, double nsteps, double nevery)
     if (!(eps > 0.0))
         return say(2, "--eps must be positive, got %.17g", eps, 0);
     if (!(nsteps >= 1.0 && nevery >= 1.0) || nsteps != floor(nsteps) || nevery != floor(nevery))
-        return say(2, "--steps and --every must be positive integers, got %.17g and %.17g", nsteps, nevery);
+        return say(2, "--steps and --every must be positive integers, got %.17g and %.17g", nsteps,
+                   nevery);
     if (nsteps / nevery + 2.0 > MAX_ROWS)
-        return say(2, "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
+        return say(2,
+                   "--steps/--every: %.0f rows to keep, more than the page's %.0f (raise --every)",
                    floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
     if (!isfinite(nsteps * eps))
         return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
@@ -141,15 +146,18 @@ static int failed(int rc, const sus_run_report *rep)
     if (rc == SUS_RUN_OK)
         return 0;
     if (rc == SUS_RUN_BLOWUP)
-        return say(3, "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
-                   (double)rep->step, rep->t);
-    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge", (double)rep->step,
-               rep->t);
+        return say(
+            3,
+            "blow-up at step %.0f (t = %.17g): w, lambda, R or the energy is not a finite number",
+            (double)rep->step, rep->t);
+    return say(3, "step %.0f (t = %.17g) failed: the step's solver did not converge",
+               (double)rep->step, rep->t);
 }
 
 /* A run of stepper `type` (NULL: the exact solution) with reconstruction rk, step eps, N steps,
  * rows every K-th step. */
-static int run_stepper(const sus_stepper_type *type, sus_recon rk, double eps, double nsteps, double nevery)
+static int run_stepper(const sus_stepper_type *type, sus_recon rk, double eps, double nsteps,
+                       double nevery)
 {
     const int rc = setup(eps, nsteps, nevery);
     if (rc)
@@ -157,7 +165,8 @@ static int run_stepper(const sus_stepper_type *type, sus_recon rk, double eps, d
     const sus_run_config cfg = {row_model, type, rk, eps, (long)nsteps, (long)nevery};
     sus_run_report rep;
     const double w0[2] = {input[0], input[1]};
-    return failed(type ? sus_run(&cfg, w0, take, NULL, &rep) : sus_run_exact(&cfg, w0, take, NULL, &rep),
+    return failed(type ? sus_run(&cfg, w0, take, NULL, &rep)
+                       : sus_run_exact(&cfg, w0, take, NULL, &rep),
                   &rep);
 }
 
@@ -175,8 +184,8 @@ int wasm_run(int method, int recon, double eps, double nsteps, double nevery)
     if (method < -1 || method >= sus_step_method_count())
         return say(2, "unknown method", 0, 0);
     const sus_step_method *me = method >= 0 ? sus_step_method_get(method) : NULL;
-    return run_stepper(me ? me->type : NULL, recon_or(recon, me ? me->recon : SUS_RECON_CAYLEY), eps, nsteps,
-                       nevery);
+    return run_stepper(me ? me->type : NULL, recon_or(recon, me ? me->recon : SUS_RECON_CAYLEY),
+                       eps, nsteps, nevery);
 }
 
 /* Figure 2's other readings of the midpoint rule, as suslov --method midpoint --sweeps n
@@ -232,8 +241,8 @@ double *wasm_fit(int n, double eps_max, double size)
     static double out[6];
     sus_lab_order_fit f;
     const double round_off = SUS_LAB_FIT_FLOOR_REL * size;
-    const int ok =
-        n >= 0 && n <= FIT_MAX && sus_lab_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
+    const int ok = n >= 0 && n <= FIT_MAX &&
+                   sus_lab_fit_order(fit_in, fit_in + FIT_MAX, n, eps_max, round_off, &f) == 0;
     out[0] = ok ? f.slope : NAN;
     out[1] = ok ? f.intercept : NAN;
     out[2] = ok ? f.used : 0;

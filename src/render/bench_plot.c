@@ -66,10 +66,7 @@ static sus_plot_style envelope_style(int reduced)
 
 /* Whether panel p draws series s: (a) the w error, not of the reduced problem (given w); (b) the
  * attitude error, not of w alone. */
-static int in_panel(const sus_lab_bench_series *s, int p)
-{
-    return p ? !s->w_only : !s->reduced;
-}
+static int in_panel(const sus_lab_bench_series *s, int p) { return p ? !s->w_only : !s->reduced; }
 
 /* Panel p: (a) the w error, (b) the attitude error. */
 static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_style *st)
@@ -156,9 +153,7 @@ static void cost_bar(const sus_lab_bench *b, const sus_plot_axes *ax, int i, dou
         cairo_rectangle(cr, bx + 0.52 * bw, ax->y + ax->h - h2, 0.36 * bw, h2);
         cairo_fill(cr);
     }
-    const char *name = i < n    ? b->cost.name[i]
-                       : i == n ? "GSL rk4"
-                                : "exact \xcf\x89(t)";
+    const char *name = i < n ? b->cost.name[i] : i == n ? "GSL rk4" : "exact \xcf\x89(t)";
     cairo_save(cr);
     cairo_translate(cr, bx + 0.5 * bw, ax->y + ax->h + 5);
     cairo_rotate(cr, 0.7853981633974483); /* 45 degrees */

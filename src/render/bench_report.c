@@ -36,8 +36,9 @@ static void print_costs(const sus_lab_bench *b)
     for (int m = 0; m < c->n; m++) {
         const sus_step_method *me = sus_step_method_get(m);
         /* the default reconstruction, or the attitude the method carries itself */
-        const char *att = me->type->desc.follows_recon ? SUS_RECON_NAMES[me->recon]
-                                                  : sus_step_attitude_name(me->type->desc.attitude);
+        const char *att = me->type->desc.follows_recon
+                              ? SUS_RECON_NAMES[me->recon]
+                              : sus_step_attitude_name(me->type->desc.attitude);
         printf("  %-12s %10.1f %10.1f %-10s %9.2f %12.2f\n", me->type->name, c->ns_raw[m],
                c->ns_full[m], att, c->newton[m], c->ns_raw[m] / c->ns_raw[irk4]);
     }
@@ -97,8 +98,8 @@ static void print_floor(int l, const sus_lab_bench_level *v)
     else
         printf("  %s attitude accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s "
                "(fewest steps x cost per step): %.2fx\n",
-               v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", LEVELS[l], v->ours.sec,
-               v->floor, v->ours.sec / v->floor);
+               v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", LEVELS[l], v->ours.sec, v->floor,
+               v->ours.sec / v->floor);
 }
 
 /* The line's head: PASS or MISS against a target, "info" for a comparison without one. */
@@ -107,8 +108,8 @@ static const char *verdict(const sus_lab_bench_level *v)
     return isnan(v->target) ? "info" : v->pass ? "PASS" : "MISS";
 }
 
-static const char *const WHAT[SUS_LAB_BENCH_NCOMP] = {
-    "attitude", "attitude (reduced problem)", "w"};
+static const char *const WHAT[SUS_LAB_BENCH_NCOMP] = {"attitude", "attitude (reduced problem)",
+                                                      "w"};
 static const char *const AGAINST[SUS_LAB_BENCH_NCOMP] = {
     "best peer on the full problem", "best peer on the reduced problem", "best peer"};
 
@@ -131,8 +132,8 @@ static void print_level(const sus_lab_bench *b, sus_lab_bench_comparison c, int 
         return;
     }
     const sus_lab_bench_series *ps = b->S[v.peer.series];
-    printf("vs %s %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c],
-           v.peer.sec, ps->name, ps->param[v.peer.point],
+    printf("vs %s %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c], v.peer.sec,
+           ps->name, ps->param[v.peer.point],
            c != SUS_LAB_BENCH_W_INFO ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point], v.ratio);
     if (isnan(v.target))
         printf(" (no target: the closed form gives w(t) in %.3g ns)\n", b->cost.ns_exact);

@@ -33,9 +33,8 @@ static void csv_work_rows(FILE *fp, const sus_lab_bench *b)
             if (!s->w_only)
                 snprintf(eR, sizeof eR, "%.6g", s->err_R[j]);
             fprintf(fp, "work,\"%s\",%s,%s,%s,%.17g,%ld,%.6g,%s,%.6g,%.6g,%.6g,,,%s\n", s->name,
-                    s->ours ? "ours" : "peer", solves(s), s->preserves ? "yes" : "no",
-                    s->param[j], s->steps[j], s->err_w[j], eR, s->sec[j], s->smin[j], s->smax[j],
-                    args);
+                    s->ours ? "ours" : "peer", solves(s), s->preserves ? "yes" : "no", s->param[j],
+                    s->steps[j], s->err_w[j], eR, s->sec[j], s->smin[j], s->smax[j], args);
         }
     }
 }
@@ -69,10 +68,8 @@ static void csv_step_rows(FILE *fp, const sus_lab_bench_costs *c)
 static void write_csv(FILE *fp, const sus_lab_bench *b)
 {
     /* the method field is quoted: peer names such as "GSL rk8pd (w,q)" hold a comma */
-    fprintf(
-        fp,
-        "section,method,kind,solves,preserves,parameter,steps,omega_error,attitude_error,"
-        "seconds_median,seconds_min,seconds_max,ns_per_step,newton_per_step,suslov_args\n");
+    fprintf(fp, "section,method,kind,solves,preserves,parameter,steps,omega_error,attitude_error,"
+                "seconds_median,seconds_min,seconds_max,ns_per_step,newton_per_step,suslov_args\n");
     csv_work_rows(fp, b);
     csv_step_rows(fp, &b->cost);
     for (int i = 0; i < b->nlr; i++)
@@ -168,8 +165,8 @@ static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
             const sus_lab_bench_series *ps = v.peer.series < 0 ? NULL : b->S[v.peer.series];
             sus_lab_bench_suslov_args(os, v.ours.point, args, sizeof args);
             fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.3g\t%g\t%s\t%s\n",
-                    sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l],
-                    os->name, v.ours.sec, ps ? ps->name : "none reaches it",
+                    sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l], os->name,
+                    v.ours.sec, ps ? ps->name : "none reaches it",
                     ps ? ps->param[v.peer.point] : NAN, ps ? v.peer.sec : NAN, v.ratio, v.target,
                     isnan(v.target) ? "info" : pass_word(v.pass), args);
         }
@@ -177,8 +174,7 @@ static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
 
 /* ---- longruns.tsv: the runs to T = 1e4 at equal error, and to T = 1e6 ---- */
 
-static void long_row(FILE *fp, const sus_lab_bench *b, const sus_lab_bench_equal_error *e,
-                     int best)
+static void long_row(FILE *fp, const sus_lab_bench *b, const sus_lab_bench_equal_error *e, int best)
 {
     char args[256], target[16] = ""; /* the best row's target; the others are information */
     const sus_lab_bench_series *s = b->S[e->series];
@@ -186,12 +182,13 @@ static void long_row(FILE *fp, const sus_lab_bench *b, const sus_lab_bench_equal
     sus_lab_bench_suslov_args_to(s, e->point, SUS_LAB_BENCH_T_LONG, args, sizeof args);
     if (best)
         snprintf(target, sizeof target, "%g", SUS_LAB_BENCH_LONG_TARGET);
-    fprintf(fp, "equal-error\t%s\t%s\t%.4g\t%g\t%.4g\t%.3g\tGSL rk8pd (w,q) driver h0 0.001"
-                "\t%.2g\t%.4g\t%.3g\t%.3g\t%s\t%s\t%.2g\t%.4g\t%.3g\t%.3g\t%s\n",
+    fprintf(fp,
+            "equal-error\t%s\t%s\t%.4g\t%g\t%.4g\t%.3g\tGSL rk8pd (w,q) driver h0 0.001"
+            "\t%.2g\t%.4g\t%.3g\t%.3g\t%s\t%s\t%.2g\t%.4g\t%.3g\t%.3g\t%s\n",
             s->name, sus_lab_bench_param_name(s), s->param[e->point], SUS_LAB_BENCH_T_LONG, e->sec,
-            e->err, e->peer_tol, e->peer_sec, e->peer_err, r,
-            target, best ? pass_word(r >= SUS_LAB_BENCH_LONG_TARGET) : "info",
-            e->red_tol, e->red_sec, e->red_err, e->red_sec / e->sec, args);
+            e->err, e->peer_tol, e->peer_sec, e->peer_err, r, target,
+            best ? pass_word(r >= SUS_LAB_BENCH_LONG_TARGET) : "info", e->red_tol, e->red_sec,
+            e->red_err, e->red_sec / e->sec, args);
 }
 
 static void write_long_runs(FILE *fp, const sus_lab_bench *b)
@@ -209,8 +206,9 @@ static void write_long_runs(FILE *fp, const sus_lab_bench *b)
     const sus_lab_bench_series *s = b->S[g->series];
     const double r = sus_lab_bench_growth_ratio(b);
     sus_lab_bench_suslov_args_to(s, g->point, SUS_LAB_BENCH_T_GROWTH, args, sizeof args);
-    fprintf(fp, "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run to T = %g\t\t%.4g\t\t%.3g\t%g\t%s"
-                "\t\t\t\t\t%s\n",
+    fprintf(fp,
+            "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run to T = %g\t\t%.4g\t\t%.3g\t%g\t%s"
+            "\t\t\t\t\t%s\n",
             s->name, sus_lab_bench_param_name(s), s->param[g->point], SUS_LAB_BENCH_T_GROWTH,
             g->sec, SUS_LAB_BENCH_T_LONG, g->sec_long, r, SUS_LAB_BENCH_GROWTH_TARGET,
             pass_word(r <= SUS_LAB_BENCH_GROWTH_TARGET), args);

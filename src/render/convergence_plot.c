@@ -27,8 +27,8 @@ static sus_plot_style method_style(int m, int dashed, int with_label)
     static const int mk[] = {SUS_PLOT_SQUARE, SUS_PLOT_CIRCLE, SUS_PLOT_TRIANGLE, SUS_PLOT_DIAMOND,
                              SUS_PLOT_CROSS};
     const int nmk = (int)(sizeof mk / sizeof mk[0]);
-    return sus_plot_style_of(SUS_PLOT_PALETTE[m % SUS_PLOT_PALETTE_N], 1.0, dashed, mk[m % nmk], 4.2,
-                         with_label ? sus_step_method_get(m)->type->name : NULL);
+    return sus_plot_style_of(SUS_PLOT_PALETTE[m % SUS_PLOT_PALETTE_N], 1.0, dashed, mk[m % nmk],
+                             4.2, with_label ? sus_step_method_get(m)->type->name : NULL);
 }
 
 /* The error curve `what` of method m; so3 curves pick reconstruction r. */
@@ -37,20 +37,22 @@ static const double *curve(const sus_plot_conv_fig *f, int m, int what, int r)
 {
     const sus_lab_conv_method *c = &f->c.m[m];
     switch (what) {
-    case LOC_W: return c->loc_w;
-    case GLOB_W: return c->glob_w;
-    case LOC_SO3: return c->loc_so3[r];
-    case GLOB_SO3: return c->glob_so3[r];
-    case LOC_LAMBDA: return c->loc_lambda;
-    default: return c->glob_lambda;
+        case LOC_W: return c->loc_w;
+        case GLOB_W: return c->glob_w;
+        case LOC_SO3: return c->loc_so3[r];
+        case GLOB_SO3: return c->glob_so3[r];
+        case LOC_LAMBDA: return c->loc_lambda;
+        default: return c->glob_lambda;
     }
 }
 
 /* The least-squares slope of one curve over the ledger's window, as the legend prints it. */
-static void slope_text(const double *eps, const double *err, int nj, double size, char *out, size_t len)
+static void slope_text(const double *eps, const double *err, int nj, double size, char *out,
+                       size_t len)
 {
     sus_lab_order_fit fit;
-    if (sus_lab_fit_order(eps, err, nj, SUS_LAB_FIT_EPS_MAX, SUS_LAB_FIT_FLOOR_REL * size, &fit) != 0)
+    if (sus_lab_fit_order(eps, err, nj, SUS_LAB_FIT_EPS_MAX, SUS_LAB_FIT_FLOOR_REL * size, &fit) !=
+        0)
         snprintf(out, len, "none");
     else
         snprintf(out, len, "%.2f", fabs(fit.slope) < 0.005 ? 0.0 : fit.slope);
@@ -86,11 +88,12 @@ static double panel_strip(const sus_plot_conv_fig *f)
     return fmax(0.0, sus_plot_legend_height(drawn_methods(f)) - 30.0);
 }
 
-/* The axes of panel idx. Its y-range is its data's, widened by a factor Y_MARGIN each way so that no
- * marker is cut by the frame, and no more: no legend is drawn inside a panel, so none needs room. */
+/* The axes of panel idx. Its y-range is its data's, widened by a factor Y_MARGIN each way so that
+ * no marker is cut by the frame, and no more: no legend is drawn inside a panel, so none needs
+ * room. */
 #define Y_MARGIN 2.0
-static void panel_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int idx, double lo,
-                       double hi)
+static void panel_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *f, int idx,
+                       double lo, double hi)
 {
     const double x0 = f->c.eps[NJ - 1], x1 = f->c.eps[f->j0], strip = panel_strip(f);
     if (strip <= 0.0) {
@@ -107,10 +110,10 @@ static void panel_axes(sus_plot_axes *ax, cairo_t *cr, const sus_plot_conv_fig *
 }
 
 /* The legend of panel `what`: one entry per curve (with its fitted slopes when the figure says so),
- * then, with keys, on SO(3) the two reconstructions' line styles. labels holds the texts (nmethod + 2
- * of them). Returns the number of entries. */
-static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps, int nj, double size,
-                        int keys, char (*labels)[96], sus_plot_style *leg)
+ * then, with keys, on SO(3) the two reconstructions' line styles. labels holds the texts (nmethod +
+ * 2 of them). Returns the number of entries. */
+static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps, int nj,
+                        double size, int keys, char (*labels)[96], sus_plot_style *leg)
 {
     const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0;
     int nleg = 0;
@@ -136,7 +139,8 @@ static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps,
     }
     if (so3 && keys) {
         snprintf(labels[nm], sizeof labels[nm], "solid: %s", SUS_RECON_NAMES[f->spec->solid]);
-        snprintf(labels[nm + 1], sizeof labels[nm + 1], "dashed: %s", SUS_RECON_NAMES[f->spec->dashed]);
+        snprintf(labels[nm + 1], sizeof labels[nm + 1], "dashed: %s",
+                 SUS_RECON_NAMES[f->spec->dashed]);
         leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 0, SUS_PLOT_NONE, 0, labels[nm]);
         leg[nleg++] = sus_plot_style_of(SUS_PLOT_GREY, 1.0, 1, SUS_PLOT_NONE, 0, labels[nm + 1]);
     }
@@ -148,10 +152,11 @@ static int panel_legend(const sus_plot_conv_fig *f, int what, const double *eps,
 static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, const char *ylabel,
                   const char *letter, double size)
 {
-    const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0, nj = NJ - f->j0;
+    const int nm = f->c.nmethod, so3 = what == LOC_SO3 || what == GLOB_SO3, j0 = f->j0,
+              nj = NJ - f->j0;
     const int global = what == GLOB_W || what == GLOB_SO3 || what == GLOB_LAMBDA;
     const double *eps = (global ? f->c.glob_eps : f->c.eps) + j0;
-    char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
+    char(*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (!labels || !leg) {
         free(labels);
@@ -184,7 +189,8 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
     }
     if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS) { /* its bottom 4 points over the frame */
         sus_plot_axes la;
-        sus_plot_axes_init(&la, cr, ax.x, ax.y - sus_plot_legend_height(nleg) - 8.0, 1, 1, 0, 1, 0, 1, 0, 0);
+        sus_plot_axes_init(&la, cr, ax.x, ax.y - sus_plot_legend_height(nleg) - 8.0, 1, 1, 0, 1, 0,
+                           1, 0, 0);
         sus_plot_legend(&la, leg, nleg, 0);
     }
     free(labels);
@@ -194,10 +200,11 @@ static void panel(cairo_t *cr, int idx, const sus_plot_conv_fig *f, int what, co
 static void draw_strip(cairo_t *cr, const sus_plot_conv_fig *f)
 {
     const int nm = f->c.nmethod;
-    char (*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
+    char(*labels)[96] = calloc((size_t)nm + 2, sizeof *labels);
     sus_plot_style *leg = calloc((size_t)nm + 3, sizeof *leg);
     if (labels && leg) {
-        const int n = panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_LAB_SIZE_R, 1, labels, leg);
+        const int n =
+            panel_legend(f, LOC_SO3, f->c.eps + f->j0, NJ - f->j0, SUS_LAB_SIZE_R, 1, labels, leg);
         if (f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS)
             sus_plot_legend_packed(cr, 64.0, 0.0, leg + n - 2, 2, 2);
         else
@@ -212,18 +219,20 @@ static void draw(cairo_t *cr, void *vctx)
     const sus_plot_conv_fig *f = vctx;
     draw_strip(cr, f);
     cairo_translate(cr, 0.0, strip_height(f));
-    panel(
-        cr, 0, f, LOC_W,
-        "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(a)", SUS_LAB_SIZE_W);
-    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)", SUS_LAB_SIZE_W);
-    panel(cr, 2, f, LOC_SO3, "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)",
-          "(c)", SUS_LAB_SIZE_R);
+    panel(cr, 0, f, LOC_W,
+          "local |\xcf\x89(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 "
+          "\xcf\x89\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
+          "(a)", SUS_LAB_SIZE_W);
+    panel(cr, 1, f, GLOB_W, "global |\xcf\x89(10) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|", "(b)",
+          SUS_LAB_SIZE_W);
+    panel(cr, 2, f, LOC_SO3,
+          "local dist(R(t\xe2\x82\x96+\xce\xb5), R\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81)", "(c)",
+          SUS_LAB_SIZE_R);
     panel(cr, 3, f, GLOB_SO3, "global dist(R(10), R\xe2\x82\x99)", "(d)", SUS_LAB_SIZE_R);
-    panel(
-        cr, 4, f, LOC_LAMBDA,
-        "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 \xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
-        "(e)", SUS_LAB_SIZE_LAMBDA);
+    panel(cr, 4, f, LOC_LAMBDA,
+          "local |\xce\xbb(t\xe2\x82\x96+\xce\xb5) \xe2\x88\x92 "
+          "\xce\xbb\xe2\x82\x96\xe2\x82\x8a\xe2\x82\x81|",
+          "(e)", SUS_LAB_SIZE_LAMBDA);
     panel(cr, 5, f, GLOB_LAMBDA, "global |\xce\xbb(10) \xe2\x88\x92 \xce\xbb\xe2\x82\x99|", "(f)",
           SUS_LAB_SIZE_LAMBDA);
 }
@@ -278,7 +287,8 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
     if (setup != 0)
         return setup;
     sus_plot_conv_fig *f = malloc(sizeof *f);
-    if (!f || sus_lab_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
+    if (!f ||
+        sus_lab_convergence_run(&f->c, &ex, TK, (int)(sizeof TK / sizeof TK[0]), T_GLOBAL) != 0)
         return 1;
     f->spec = spec;
     for (f->j0 = 0; f->j0 < NJ && f->c.eps[f->j0] > spec->eps_plot_max; f->j0++)
@@ -293,6 +303,7 @@ int sus_plot_conv_figure_main(int argc, char **argv, const sus_plot_conv_figure_
         return 1;
     char cap[4096];
     spec->caption(cap, sizeof cap, f);
-    const double height = f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS ? CONV_H : CONV_H + strip_height(f);
+    const double height =
+        f->spec->legend == SUS_PLOT_CONV_LEGEND_PANELS ? CONV_H : CONV_H + strip_height(f);
     return sus_plot_fig_write_figure(argv[1], spec->name, CONV_W, height, draw, f, cap) != 0;
 }

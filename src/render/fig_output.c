@@ -19,8 +19,8 @@ static int finish(sus_sys_atomic_file *af, const char *path)
     return 0;
 }
 
-int sus_plot_fig_write_csv(const char *path, const char *header, int ncols, const double *const *cols,
-                  size_t nrows, size_t every)
+int sus_plot_fig_write_csv(const char *path, const char *header, int ncols,
+                           const double *const *cols, size_t nrows, size_t every)
 {
     char err[512];
     sus_sys_atomic_file af;
@@ -36,7 +36,8 @@ int sus_plot_fig_write_csv(const char *path, const char *header, int ncols, cons
 }
 
 /* A caption cites the paper by its labels, as the code does; the reader gets the published numbers
- * (paper_ref.h), each at most 2.5 times as long as its "(LABEL)" ("(TeoL)" -> "Proposition 5.1"). */
+ * (paper_ref.h), each at most 2.5 times as long as its "(LABEL)" ("(TeoL)" -> "Proposition 5.1").
+ */
 int sus_plot_fig_write_text(const char *path, const char *text)
 {
     char err[512];
@@ -53,14 +54,15 @@ int sus_plot_fig_write_text(const char *path, const char *text)
     return finish(&af, path);
 }
 
-const char *sus_plot_fig_path(char *buf, size_t len, const char *dir, const char *name, const char *ext)
+const char *sus_plot_fig_path(char *buf, size_t len, const char *dir, const char *name,
+                              const char *ext)
 {
     snprintf(buf, len, "%s/%s.%s", dir, name, ext);
     return buf;
 }
 
 int sus_plot_fig_write_figure(const char *dir, const char *name, double width, double height,
-                     void (*draw)(cairo_t *, void *), void *ctx, const char *caption)
+                              void (*draw)(cairo_t *, void *), void *ctx, const char *caption)
 {
     char base[4096], err[512];
     snprintf(base, sizeof base, "%s/%s", dir, name);

@@ -19,7 +19,8 @@ sus_plot_gl_context *sus_plot_gl_context_create(int width, int height)
     c->pixels = calloc((size_t)width * (size_t)height, sizeof *c->pixels);
     /* depthBits = 24: with 0 there is no depth buffer and the depth test silently passes */
     c->ctx = OSMesaCreateContextExt(OSMESA_BGRA, 24, 0, 0, NULL);
-    if (!c->pixels || !c->ctx || !OSMesaMakeCurrent(c->ctx, c->pixels, GL_UNSIGNED_BYTE, width, height)) {
+    if (!c->pixels || !c->ctx ||
+        !OSMesaMakeCurrent(c->ctx, c->pixels, GL_UNSIGNED_BYTE, width, height)) {
         sus_plot_gl_context_destroy(c);
         return NULL;
     }
@@ -27,10 +28,7 @@ sus_plot_gl_context *sus_plot_gl_context_create(int width, int height)
     return c;
 }
 
-uint32_t *sus_plot_gl_context_pixels(sus_plot_gl_context *c)
-{
-    return c->pixels;
-}
+uint32_t *sus_plot_gl_context_pixels(sus_plot_gl_context *c) { return c->pixels; }
 
 void sus_plot_gl_context_destroy(sus_plot_gl_context *c)
 {

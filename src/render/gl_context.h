@@ -10,8 +10,8 @@ typedef struct sus_plot_gl_context sus_plot_gl_context;
 
 /* A width x height context with a 24-bit depth buffer, made current; NULL on failure. */
 sus_plot_gl_context *sus_plot_gl_context_create(int width, int height);
-uint32_t *
-sus_plot_gl_context_pixels(sus_plot_gl_context *c); /* width * height BGRA words, row 0 at the top */
+uint32_t *sus_plot_gl_context_pixels(
+    sus_plot_gl_context *c); /* width * height BGRA words, row 0 at the top */
 void sus_plot_gl_context_destroy(sus_plot_gl_context *c);
 
 #endif

@@ -6,7 +6,8 @@
 const sus_paper_label *sus_paper_label_find(const char *label, size_t n)
 {
     for (int i = 0; i < SUS_PAPER_NLABELS; i++)
-        if (strlen(SUS_PAPER_LABELS[i].label) == n && memcmp(SUS_PAPER_LABELS[i].label, label, n) == 0)
+        if (strlen(SUS_PAPER_LABELS[i].label) == n &&
+            memcmp(SUS_PAPER_LABELS[i].label, label, n) == 0)
             return &SUS_PAPER_LABELS[i];
     return NULL;
 }

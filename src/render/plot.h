@@ -20,10 +20,10 @@
 
 typedef struct {
     cairo_t *cr;
-    double x, y, w, h;      /* plot area on the page, points */
-    double x0, x1, y0, y1;  /* data range */
+    double x, y, w, h;     /* plot area on the page, points */
+    double x0, x1, y0, y1; /* data range */
     int xlog, ylog;
-    int no_xticks;  /* categories on x (a bar chart): no numeric ticks */
+    int no_xticks; /* categories on x (a bar chart): no numeric ticks */
 } sus_plot_axes;
 
 enum {
@@ -53,10 +53,11 @@ extern const double SUS_PLOT_RED[3], SUS_PLOT_BLUE[3], SUS_PLOT_GREEN[3], SUS_PL
  * grey); markers tell the rest apart. Curve i takes SUS_PLOT_PALETTE[i % SUS_PLOT_PALETTE_N]. */
 #define SUS_PLOT_PALETTE_N 12
 extern const double SUS_PLOT_PALETTE[SUS_PLOT_PALETTE_N][3];
-sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker, double size,
-                         const char *label);
+sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker,
+                                 double size, const char *label);
 
-/* Grows [*lo, *hi] to hold the finite values (positive ones only when log) of v[0], v[stride],... */
+/* Grows [*lo, *hi] to hold the finite values (positive ones only when log) of v[0], v[stride],...
+ */
 void sus_plot_extend(double *lo, double *hi, const double *v, size_t n, size_t stride, int log);
 /* Pads a linear range by 5% (and widens an empty one), or a log range to whole decades. */
 void sus_plot_pad(double *lo, double *hi, int log);
@@ -64,43 +65,48 @@ void sus_plot_pad(double *lo, double *hi, int log);
 /* The plot area of panel idx (row-major) in a rows x cols grid on a page of width x height
  * points, with room left for tick labels, axis labels, panel letters and a title line. */
 void sus_plot_cell(double width, double height, int rows, int cols, int idx, double *x, double *y,
-               double *w, double *h);
+                   double *w, double *h);
 /* Sets up the panel at grid cell idx with the data ranges padded by sus_plot_pad. */
-void sus_plot_axes_cell(sus_plot_axes *ax, cairo_t *cr, double width, double height, int rows, int cols,
-                    int idx, double x0, double x1, double y0, double y1, int xlog, int ylog);
+void sus_plot_axes_cell(sus_plot_axes *ax, cairo_t *cr, double width, double height, int rows,
+                        int cols, int idx, double x0, double x1, double y0, double y1, int xlog,
+                        int ylog);
 
 void sus_plot_axes_init(sus_plot_axes *ax, cairo_t *cr, double x, double y, double w, double h,
-                    double x0, double x1, double y0, double y1, int xlog, int ylog);
+                        double x0, double x1, double y0, double y1, int xlog, int ylog);
 /* Frame, ticks, tick labels, axis labels and the panel letter "(a)" at the top left. */
-void sus_plot_frame(const sus_plot_axes *ax, const char *xlabel, const char *ylabel, const char *letter);
-void sus_plot_series(const sus_plot_axes *ax, const double *x, const double *y, size_t n, size_t stride,
-                 const sus_plot_style *st);
+void sus_plot_frame(const sus_plot_axes *ax, const char *xlabel, const char *ylabel,
+                    const char *letter);
+void sus_plot_series(const sus_plot_axes *ax, const double *x, const double *y, size_t n,
+                     size_t stride, const sus_plot_style *st);
 /* Markers only, at every `every`-th point (so 10^5 points do not become a smear). */
-void sus_plot_markers(const sus_plot_axes *ax, const double *x, const double *y, size_t n, size_t every,
-                  const sus_plot_style *st);
+void sus_plot_markers(const sus_plot_axes *ax, const double *x, const double *y, size_t n,
+                      size_t every, const sus_plot_style *st);
 /* A filled rectangle [x0, x1] x [y0, y1] in data coordinates (a cell of a map), clipped. */
-void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, double y1, const double rgb[3]);
+void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, double y1,
+                   const double rgb[3]);
 /* A legend box: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right, 4 middle-left,
  * 5 middle-right. */
 void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, int corner);
 /* The legend of a figure in two columns below its panels, each half of width w from x, top at y:
  * a portrait page has room for one long legend only side by side. */
-void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const sus_plot_style *st, int n);
+void sus_plot_legend_columns(cairo_t *cr, double x, double y, double w, const sus_plot_style *st,
+                             int n);
 /* A legend in ncol boxes side by side from (x, y), filled column by column, each as wide as its
  * labels; and the height of a legend of `rows` lines. */
-void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_style *st, int n, int ncol);
+void sus_plot_legend_packed(cairo_t *cr, double x, double y, const sus_plot_style *st, int n,
+                            int ncol);
 double sus_plot_legend_height(int rows);
 /* The width of a legend box of these entries, as sus_plot_legend draws it. */
 double sus_plot_legend_width(cairo_t *cr, const sus_plot_style *st, int n);
 /* Whether the curve (x, ya), drawn first, hides under (x, yb): every point of it that the axes show
  * lies within tol points of yb's on the page. */
-int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya, const double *yb,
-                          size_t n, double tol);
+int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya,
+                          const double *yb, size_t n, double tol);
 /* A dashed grey segment of slope `slope` in log-log axes from xa to (xb, yb), labelled at xa. */
 void sus_plot_slope(const sus_plot_axes *ax, double xa, double xb, double yb, double slope,
                     const char *label);
 void sus_plot_text(cairo_t *cr, double x, double y, const char *text, double size, double halign,
-               double valign, int bold);
+                   double valign, int bold);
 
 /* Renders draw(cr, ctx) on a width x height point page into base.pdf and base.png. Returns 0,
  * or -1 with a one-line reason. The PDF carries a fixed creation date so that it is
@@ -108,6 +114,6 @@ void sus_plot_text(cairo_t *cr, double x, double y, const char *text, double siz
 /* An image surface as a PNG file, through the atomic file (src/util/atomic_file.h). */
 int sus_plot_write_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen);
 int sus_plot_write(const char *base, double width, double height, void (*draw)(cairo_t *, void *),
-               void *ctx, char *err, size_t errlen);
+                   void *ctx, char *err, size_t errlen);
 
 #endif

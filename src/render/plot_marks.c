@@ -33,34 +33,29 @@ void sus_plot_marker_path(cairo_t *cr, int shape, double x, double y, double s)
     const double r = 0.5 * s;
     cairo_new_sub_path(cr);
     switch (shape) {
-    case SUS_PLOT_DOT:
-    case SUS_PLOT_CIRCLE:
-        cairo_arc(cr, x, y, r, 0.0, 2.0 * SUS_PLOT_PI);
-        break;
-    case SUS_PLOT_SQUARE:
-        cairo_rectangle(cr, x - r, y - r, s, s);
-        break;
-    case SUS_PLOT_TRIANGLE:
-        cairo_move_to(cr, x, y - 1.15 * r);
-        cairo_line_to(cr, x + r, y + 0.75 * r);
-        cairo_line_to(cr, x - r, y + 0.75 * r);
-        cairo_close_path(cr);
-        break;
-    case SUS_PLOT_DIAMOND:
-        cairo_move_to(cr, x, y - 1.2 * r);
-        cairo_line_to(cr, x + r, y);
-        cairo_line_to(cr, x, y + 1.2 * r);
-        cairo_line_to(cr, x - r, y);
-        cairo_close_path(cr);
-        break;
-    case SUS_PLOT_CROSS:
-        cairo_move_to(cr, x - r, y - r);
-        cairo_line_to(cr, x + r, y + r);
-        cairo_move_to(cr, x - r, y + r);
-        cairo_line_to(cr, x + r, y - r);
-        break;
-    default:
-        break;
+        case SUS_PLOT_DOT:
+        case SUS_PLOT_CIRCLE: cairo_arc(cr, x, y, r, 0.0, 2.0 * SUS_PLOT_PI); break;
+        case SUS_PLOT_SQUARE: cairo_rectangle(cr, x - r, y - r, s, s); break;
+        case SUS_PLOT_TRIANGLE:
+            cairo_move_to(cr, x, y - 1.15 * r);
+            cairo_line_to(cr, x + r, y + 0.75 * r);
+            cairo_line_to(cr, x - r, y + 0.75 * r);
+            cairo_close_path(cr);
+            break;
+        case SUS_PLOT_DIAMOND:
+            cairo_move_to(cr, x, y - 1.2 * r);
+            cairo_line_to(cr, x + r, y);
+            cairo_line_to(cr, x, y + 1.2 * r);
+            cairo_line_to(cr, x - r, y);
+            cairo_close_path(cr);
+            break;
+        case SUS_PLOT_CROSS:
+            cairo_move_to(cr, x - r, y - r);
+            cairo_line_to(cr, x + r, y + r);
+            cairo_move_to(cr, x - r, y + r);
+            cairo_line_to(cr, x + r, y - r);
+            break;
+        default: break;
     }
 }
 

@@ -96,16 +96,17 @@ int sus_plot_scene_init(sus_plot_scene *s, const sus_model *mdl, int vw, int vh)
     gsl_matrix_free(V);
     gsl_matrix_free(S);
     const double eye[3] = {5.95, 4.55, 4.0},
-                 up[3] = {0.0, 0.0,
-                          1.0}; /* far enough that a 1/3-wide viewport holds the body and its arrows */
+                 up[3] = {
+                     0.0, 0.0,
+                     1.0}; /* far enough that a 1/3-wide viewport holds the body and its arrows */
     perspective(s->proj, 38.0, (double)vw / (double)vh, 0.5, 20.0);
     s->line_scale = vh > 360 ? vh / 360.0 : 1.0;
     look_at(s->view, eye, up);
     return 0;
 }
 
-int sus_plot_scene_project(const sus_plot_scene *s, const double R[3][3], const double p[3], int x0, int y0,
-                           int vw, int vh, int H, double *px, double *py)
+int sus_plot_scene_project(const sus_plot_scene *s, const double R[3][3], const double p[3], int x0,
+                           int y0, int vw, int vh, int H, double *px, double *py)
 {
     double q[3], a[4], b[4], clip[4];
     sus_mat3_vec(q, R, p);
@@ -136,7 +137,8 @@ void sus_plot_scene_body_push_trail(sus_plot_scene_body *b)
 
 static void box(void)
 {
-    static const double n[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const double n[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     glBegin(GL_QUADS);
     for (int f = 0; f < 6; f++) {
         const int a = f / 2, b = (a + 1) % 3, c = (a + 2) % 3;
@@ -262,8 +264,8 @@ static void draw_body(const sus_plot_scene *s, const double m[16])
     glDisable(GL_LIGHTING);
 }
 
-void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, int x0, int y0, int vw,
-                         int vh, int only_e3_tip)
+void sus_plot_scene_draw(const sus_plot_scene *s, const sus_plot_scene_body *b, int x0, int y0,
+                         int vw, int vh, int only_e3_tip)
 {
     double m[16];
     glViewport(x0, y0, vw, vh);

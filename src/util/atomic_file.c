@@ -15,10 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-void sus_sys_atomic_file_remove_temporaries(void)
-{
-    sus_sys_cleanup_remove_all();
-}
+void sus_sys_atomic_file_remove_temporaries(void) { sus_sys_cleanup_remove_all(); }
 
 /* A path as a message shows it (echo.h): at most PATH_ECHO_MAX characters, so that the two a
  * message may name and its reason fit the 1024 bytes callers give it. */
@@ -28,13 +25,11 @@ static const char *shown(const char *path)
     return sus_sys_echo_ring(path, strlen(path), PATH_ECHO_MAX, 0);
 }
 
-static int is_stdout(const char *path)
-{
-    return path == NULL || strcmp(path, "-") == 0;
-}
+static int is_stdout(const char *path) { return path == NULL || strcmp(path, "-") == 0; }
 
 /* A one-line reason in err; returns -1. */
-static int fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int fail(char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 static int fail(char *err, size_t errlen, const char *fmt, ...)
 {
     va_list ap;
@@ -56,7 +51,8 @@ static int resolve_target(const char *path, char *out, size_t len, char *err, si
     return fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
 }
 /* The target's name and the temporary's must fit the directory's limits. */
-static int check_names(const char *path, const char *target, const char *dir, char *err, size_t errlen)
+static int check_names(const char *path, const char *target, const char *dir, char *err,
+                       size_t errlen)
 {
     const char *base = strrchr(target, '/') ? strrchr(target, '/') + 1 : target;
     const long name_max = pathconf(dir, _PC_NAME_MAX);
@@ -65,7 +61,8 @@ static int check_names(const char *path, const char *target, const char *dir, ch
     if (name_max > 0 && strlen(base) > (size_t)name_max)
         return fail(err, errlen, "cannot write %s: its name is longer than the directory allows",
                     shown(path));
-    if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX || tmp_len >= sizeof((sus_sys_atomic_file *)0)->tmp)
+    if (strlen(target) >= PATH_MAX || tmp_len >= PATH_MAX ||
+        tmp_len >= sizeof((sus_sys_atomic_file *)0)->tmp)
         return fail(err, errlen, "cannot write %s: the path (or its temporary in %s) is too long",
                     shown(path), shown(dir));
     return 0;
@@ -75,21 +72,27 @@ static int check_names(const char *path, const char *target, const char *dir, ch
  * would fail with EBUSY after the run; it is refused rather than written in place, which would
  * break all-or-nothing), not a read-only one (as cp without -f), and in a sticky directory only
  * as the owner of the file or of the directory (else the rename fails). */
-static int check_replace(const char *path, const char *target, const struct stat *fsb, const char *dir,
-                         char *err, size_t errlen)
+static int check_replace(const char *path, const char *target, const struct stat *fsb,
+                         const char *dir, char *err, size_t errlen)
 {
     struct stat dsb;
     if (sus_sys_is_mount_root(target, dir))
-        return fail(err, errlen, "cannot replace %s: it is a mount point (a bind-mounted file), "
+        return fail(err, errlen,
+                    "cannot replace %s: it is a mount point (a bind-mounted file), "
                     "which no rename can replace; to write it in place, redirect stdout: "
-                    "--output - > FILE", shown(path));
+                    "--output - > FILE",
+                    shown(path));
     if (access(target, W_OK) != 0)
-        return fail(err, errlen, "%s is read-only (%s): not replaced; remove it or make it writable first",
+        return fail(err, errlen,
+                    "%s is read-only (%s): not replaced; remove it or make it writable first",
                     shown(path), strerror(errno));
     const uid_t me = geteuid();
-    if (stat(dir, &dsb) == 0 && (dsb.st_mode & S_ISVTX) && me != 0 && me != fsb->st_uid && me != dsb.st_uid)
-        return fail(err, errlen, "cannot replace %s: directory %s is sticky and neither it nor the file is "
-                    "yours, so the rename would be refused", shown(path), shown(dir));
+    if (stat(dir, &dsb) == 0 && (dsb.st_mode & S_ISVTX) && me != 0 && me != fsb->st_uid &&
+        me != dsb.st_uid)
+        return fail(err, errlen,
+                    "cannot replace %s: directory %s is sticky and neither it nor the file is "
+                    "yours, so the rename would be refused",
+                    shown(path), shown(dir));
     return 0;
 }
 
@@ -105,7 +108,8 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
     if (fd >= 0) {
         const int fl = fcntl(fd, F_GETFL);
         if (fl < 0 || (fl & O_ACCMODE) == O_RDONLY)
-            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing", shown(path));
+            return fail(err, errlen, "cannot write %s: its descriptor is not open for writing",
+                        shown(path));
         return 0;
     }
     if (resolve_target(path, target, sizeof target, err, errlen) != 0)
@@ -121,7 +125,8 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
                    : fail(err, errlen, "cannot write %s: %s", shown(path), strerror(errno));
     sus_sys_dir_of(target, dir, sizeof dir);
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        return fail(err, errlen, "cannot write %s: directory %s does not exist", shown(path), shown(dir));
+        return fail(err, errlen, "cannot write %s: directory %s does not exist", shown(path),
+                    shown(dir));
     /* The file is created and renamed in its directory: that needs write and search. */
     if (access(dir, W_OK | X_OK) != 0) {
         snprintf(err, errlen, "cannot write %s: directory %s: %s", shown(path), shown(dir),
@@ -130,11 +135,13 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
     }
     if (check_names(path, target, dir, err, errlen) != 0)
         return -1;
-    return exists && stat(target, &sb) == 0 ? check_replace(path, target, &sb, dir, err, errlen) : 0;
+    return exists && stat(target, &sb) == 0 ? check_replace(path, target, &sb, dir, err, errlen)
+                                            : 0;
 }
 
 /* stdout, a descriptor, a device or a pipe: written where it is. */
-static int open_in_place(sus_sys_atomic_file *af, const char *path, int fd, char *err, size_t errlen)
+static int open_in_place(sus_sys_atomic_file *af, const char *path, int fd, char *err,
+                         size_t errlen)
 {
     af->in_place = 1;
     af->target[0] = '\0';
@@ -203,7 +210,8 @@ int sus_sys_atomic_file_open(sus_sys_atomic_file *af, const char *path, char *er
         fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
     af->unnamed = fd >= 0;
     if (fd < 0 && (fd = open_named(af, dir)) < 0) {
-        snprintf(err, errlen, "cannot create a temporary file next to %s: %s", shown(path), strerror(errno));
+        snprintf(err, errlen, "cannot create a temporary file next to %s: %s", shown(path),
+                 strerror(errno));
         return -1;
     }
     /* fchmod ignores the umask: an existing file keeps exactly its mode. */

@@ -36,13 +36,13 @@ extern "C" {
 
 typedef struct {
     FILE *fp;
-    const char *path;     /* as given, NULL for stdout */
-    char target[4096];    /* the file replaced on commit: path, or the end of its chain of links */
-    char tmp[4096];       /* named temporary path, empty when unnamed or writing directly */
-    int unnamed;          /* 1: an O_TMPFILE file, named only on commit */
-    int in_place;         /* 1: stdout, a descriptor, a device or a pipe: never renamed */
-    int existed;          /* 1: the target existed when opened (an abort leaves it as it was) */
-    int slot;             /* its entry in the signal-cleanup table, or -1 */
+    const char *path;  /* as given, NULL for stdout */
+    char target[4096]; /* the file replaced on commit: path, or the end of its chain of links */
+    char tmp[4096];    /* named temporary path, empty when unnamed or writing directly */
+    int unnamed;       /* 1: an O_TMPFILE file, named only on commit */
+    int in_place;      /* 1: stdout, a descriptor, a device or a pipe: never renamed */
+    int existed;       /* 1: the target existed when opened (an abort leaves it as it was) */
+    int slot;          /* its entry in the signal-cleanup table, or -1 */
 } sus_sys_atomic_file;
 
 /* Checks, without creating anything, every condition of a later commit that can be checked

@@ -3,10 +3,7 @@
 #include <errno.h>
 #include <stdio.h>
 
-static int continuation(unsigned char c)
-{
-    return (c & 0xC0) == 0x80;
-}
+static int continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
 
 char *sus_sys_echo(char *buf, size_t len, const char *s, size_t n, size_t max, char quote)
 {

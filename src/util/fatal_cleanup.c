@@ -11,10 +11,11 @@ enum { SLOTS = 8 };
 /* Every catchable signal whose default action ends the process (besides the real-time ones,
  * added in a loop). The synchronous ones (a fault in the program) are handled but blocked only
  * around mkstemp: a fault while blocked would kill without the handler. */
-static const int ASYNC_SIGNALS[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2,   SIGPIPE, SIGALRM,
-                                    SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO, SIGPWR,
+static const int ASYNC_SIGNALS[] = {
+    SIGHUP,    SIGINT,  SIGQUIT, SIGABRT,   SIGUSR1, SIGUSR2, SIGPIPE, SIGALRM,
+    SIGTERM,   SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO,   SIGPWR,
 #ifdef SIGSTKFLT
-                                    SIGSTKFLT,
+    SIGSTKFLT,
 #endif
 };
 static const int SYNC_SIGNALS[] = {SIGILL, SIGTRAP, SIGBUS, SIGFPE, SIGSEGV, SIGSYS};

@@ -55,8 +55,8 @@ static int hop(char *cur, size_t len)
         return 0;
     link[n] = '\0';
     sus_sys_dir_of(cur, dir, sizeof dir);
-    const int w = link[0] == '/' ? snprintf(cur, len, "%s", link)
-                                 : snprintf(cur, len, "%s/%s", dir, link);
+    const int w =
+        link[0] == '/' ? snprintf(cur, len, "%s", link) : snprintf(cur, len, "%s/%s", dir, link);
     if (w < 0 || (size_t)w >= len) {
         errno = ENAMETOOLONG;
         return -1;

@@ -64,45 +64,85 @@ static void add(const char *s)
     }
 }
 
-static const char *const METHODS[] = {"exact", "euler", "midpoint", "rk4", "variational", "comp4-s5",
-                                      "taylor12", "RK4", "rk4 ", "", "exact\n", "leapfrog", "-"};
+static const char *const METHODS[] = {"exact",    "euler",    "midpoint", "rk4",  "variational",
+                                      "comp4-s5", "taylor12", "RK4",      "rk4 ", "",
+                                      "exact\n",  "leapfrog", "-"};
 static const char *const RECONS[] = {"cayley", "cayley-mid", "exp-mid", "exp", "", "cayley\t"};
 static const char *const NUMBERS[] = {
-    "0.1", "1", "0.5", "1e-3", "2", "0.25", "1000", "1e7", "1e308", "1.7976931348623157e308", "-1", "0",
-    "-0", "nan", "inf", "-inf", "1e-320", "4.9e-324", "0x1p-1022", "2.2250738585072014e-308", "1e400",
-    "0.1x", "", "  1", " ", "+1", "1e", "e5", "0x10", "1,5", "3", "17", "100", "-1e308", "1e-300", "4,5",
-    "1e300", "1e155", "1e19", "1e150"};
-static const char *const INTEGERS[] = {
-    "2.0000000000000001", "9007199254740993e0", "0x1.8p1", "0x1.8p0", "1.5e1", "1e-400", "1e400", ".5e1",
-    "1", "2", "3", "7", "10", "100", "1000", "0", "-1", "2.5", "9223372036854775807", "9223372036854775808",
-    "-9223372036854775808", "1e3", "", " 5", "5 ", "0x10", "007", "4611686018427387904", "1e19",
-    "9.2233720368547758e18", "9.2233720368547748e18", "1e6", "2e0", "1.5e1", "-0", "inf", "nan", "0x1p63"};
-static const char *const HOSTILE[] = {"\n", "a\nb", "\x1b[31mred", "%s%n%x%d", "\t", "\r", "\x7f", "--",
-                                      "-", "=", "--eps=", "\xff\xfe", "\xc3\xa9", ",", ",,", "1,,2", ",1,2,"};
-static const char *const OPTIONS[] = {"--method", "--eps", "--steps", "--time", "--omega0", "--inertia",
-                                      "--reconstruct", "--every", "--output", "--quiet", "--help", "--frob",
-                                      "-h", "--EPS", "--steps=", "--header", "--no-header", "--version",
-                                      "--man", "--"};
+    "0.1",   "1",      "0.5",      "1e-3",      "2",
+    "0.25",  "1000",   "1e7",      "1e308",     "1.7976931348623157e308",
+    "-1",    "0",      "-0",       "nan",       "inf",
+    "-inf",  "1e-320", "4.9e-324", "0x1p-1022", "2.2250738585072014e-308",
+    "1e400", "0.1x",   "",         "  1",       " ",
+    "+1",    "1e",     "e5",       "0x10",      "1,5",
+    "3",     "17",     "100",      "-1e308",    "1e-300",
+    "4,5",   "1e300",  "1e155",    "1e19",      "1e150"};
+static const char *const INTEGERS[] = {"2.0000000000000001",
+                                       "9007199254740993e0",
+                                       "0x1.8p1",
+                                       "0x1.8p0",
+                                       "1.5e1",
+                                       "1e-400",
+                                       "1e400",
+                                       ".5e1",
+                                       "1",
+                                       "2",
+                                       "3",
+                                       "7",
+                                       "10",
+                                       "100",
+                                       "1000",
+                                       "0",
+                                       "-1",
+                                       "2.5",
+                                       "9223372036854775807",
+                                       "9223372036854775808",
+                                       "-9223372036854775808",
+                                       "1e3",
+                                       "",
+                                       " 5",
+                                       "5 ",
+                                       "0x10",
+                                       "007",
+                                       "4611686018427387904",
+                                       "1e19",
+                                       "9.2233720368547758e18",
+                                       "9.2233720368547748e18",
+                                       "1e6",
+                                       "2e0",
+                                       "1.5e1",
+                                       "-0",
+                                       "inf",
+                                       "nan",
+                                       "0x1p63"};
+static const char *const HOSTILE[] = {
+    "\n", "a\nb",   "\x1b[31mred", "%s%n%x%d", "\t", "\r", "\x7f", "--",   "-",
+    "=",  "--eps=", "\xff\xfe",    "\xc3\xa9", ",",  ",,", "1,,2", ",1,2,"};
+static const char *const OPTIONS[] = {
+    "--method", "--eps",    "--steps",     "--time",    "--omega0", "--inertia", "--reconstruct",
+    "--every",  "--output", "--quiet",     "--help",    "--frob",   "-h",        "--EPS",
+    "--steps=", "--header", "--no-header", "--version", "--man",    "--"};
 #define X50 "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx"
 #define LONG250 X50 X50 X50 X50 X50
 #define LONG256 X50 X50 X50 X50 X50 "xxxxxx"
-static const char *const OUTPUTS[] = {"out.csv", "keep.csv", "sub/x.csv", "missing/x.csv", "", "sub",
-                                      "/dev/null", "link.csv", "dangling.csv", ".", "sub/", "ro/x.csv",
-                                      "-", "/dev/stdout", "/dev/fd/1", "st/other.csv", "st/new.csv",
-                                      "rofile.csv", LONG250, LONG256, "\xff\xfe.csv", "a\nb'\\.csv"};
+static const char *const OUTPUTS[] = {
+    "out.csv",      "keep.csv",   "sub/x.csv",  "missing/x.csv", "",
+    "sub",          "/dev/null",  "link.csv",   "dangling.csv",  ".",
+    "sub/",         "ro/x.csv",   "-",          "/dev/stdout",   "/dev/fd/1",
+    "st/other.csv", "st/new.csv", "rofile.csv", LONG250,         LONG256,
+    "\xff\xfe.csv", "a\nb'\\.csv"};
 
 static void random_number(char *buf, size_t len)
 {
     switch (pick(4)) {
-    case 0:
-        snprintf(buf, len, "%.17g", (double)(int64_t)rnd() * 1e-18 * (double)(1 + pick(1000)));
-        break;
-    case 1: { /* a random exponent from 1e-330 to 1e330 */
-        snprintf(buf, len, "%de%d", pick(19) - 9, pick(661) - 330);
-        break;
-    }
-    default:
-        snprintf(buf, len, "%s", PICK(NUMBERS));
+        case 0:
+            snprintf(buf, len, "%.17g", (double)(int64_t)rnd() * 1e-18 * (double)(1 + pick(1000)));
+            break;
+        case 1: { /* a random exponent from 1e-330 to 1e330 */
+            snprintf(buf, len, "%de%d", pick(19) - 9, pick(661) - 330);
+            break;
+        }
+        default: snprintf(buf, len, "%s", PICK(NUMBERS));
     }
 }
 
@@ -139,7 +179,8 @@ static void random_value(const char *opt, char *buf, size_t len)
     else if (!strcmp(opt, "--reconstruct"))
         snprintf(buf, len, "%s", PICK(RECONS));
     else if (!strcmp(opt, "--steps") || !strcmp(opt, "--every"))
-        pick(2) ? snprintf(buf, len, "%d", 1 + pick(2000)) : snprintf(buf, len, "%s", PICK(INTEGERS));
+        pick(2) ? snprintf(buf, len, "%d", 1 + pick(2000))
+                : snprintf(buf, len, "%s", PICK(INTEGERS));
     else if (!strcmp(opt, "--omega0"))
         random_list(buf, len, 2);
     else if (!strcmp(opt, "--inertia"))
@@ -154,9 +195,9 @@ static void add_option(const char *opt)
 {
     char val[ARGLEN - 64];
     random_value(opt, val, sizeof val);
-    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--help") || !strcmp(opt, "-h") || !strcmp(opt, "--header") ||
-        !strcmp(opt, "--no-header") || !strcmp(opt, "--version") || !strcmp(opt, "--man") ||
-        !strcmp(opt, "--")) {
+    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--help") || !strcmp(opt, "-h") ||
+        !strcmp(opt, "--header") || !strcmp(opt, "--no-header") || !strcmp(opt, "--version") ||
+        !strcmp(opt, "--man") || !strcmp(opt, "--")) {
         add(opt);
     } else if (pick(6) == 0) { /* --opt=value */
         char both[ARGLEN];
@@ -179,7 +220,8 @@ static void generate(void)
         add("--method");
         add(pick(3) ? PICK(METHODS) : "rk4");
         add("--eps");
-        snprintf(v, sizeof v, "%.6g", pick(2) ? 0.001 * (1 + pick(1000)) : (double)(1 + pick(3000)));
+        snprintf(v, sizeof v, "%.6g",
+                 pick(2) ? 0.001 * (1 + pick(1000)) : (double)(1 + pick(3000)));
         add(v);
         if (pick(5)) {
             add("--steps");
@@ -225,7 +267,8 @@ static void write_file(const char *name, const char *text, mode_t mode)
 static void reset_workdir(void)
 {
     char cmd[4096];
-    snprintf(cmd, sizeof cmd, "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir,
+    snprintf(cmd, sizeof cmd,
+             "chmod -R u+w '%s' 2>/dev/null; rm -rf '%s'/* '%s'/.[!.]* 2>/dev/null", workdir,
              workdir, workdir);
     if (system(cmd) != 0) { /* rm may report nothing to remove */
     }
@@ -267,7 +310,8 @@ static void snapshot(char *out, size_t len)
             struct stat sb;
             uint64_t h = 1469598103934665603ULL;
             snprintf(p, sizeof p, "%s/%s", dpath, names[i]->d_name);
-            if (lstat(p, &sb) == 0 && strcmp(names[i]->d_name, ".") && strcmp(names[i]->d_name, "..")) {
+            if (lstat(p, &sb) == 0 && strcmp(names[i]->d_name, ".") &&
+                strcmp(names[i]->d_name, "..")) {
                 char buf[65536];
                 ssize_t r = 0;
                 if (S_ISLNK(sb.st_mode)) {
@@ -282,9 +326,10 @@ static void snapshot(char *out, size_t len)
                     if (fd >= 0)
                         close(fd);
                 }
-                used += (size_t)snprintf(out + used, used < len ? len - used : 0, "%s%s/%s %o %lld %016llx\n",
-                                         dirs[d], "", names[i]->d_name, (unsigned)sb.st_mode,
-                                         (long long)sb.st_size, (unsigned long long)h);
+                used += (size_t)snprintf(out + used, used < len ? len - used : 0,
+                                         "%s%s/%s %o %lld %016llx\n", dirs[d], "", names[i]->d_name,
+                                         (unsigned)sb.st_mode, (long long)sb.st_size,
+                                         (unsigned long long)h);
             }
             free(names[i]);
         }
@@ -357,7 +402,8 @@ static int utf8_ok(const char *s)
     return 1;
 }
 
-static const char HEADER[] = "k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n";
+static const char HEADER[] =
+    "k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R33\n";
 
 /* Rows complete (16 fields, newline-terminated) and finite. Reads at most 4 MB. */
 static int rows_ok(const char *path, char *why, size_t len)
@@ -397,7 +443,7 @@ static int rows_ok(const char *path, char *why, size_t len)
 /* ---- one run ---- */
 
 static const char *suslov_bin;
-static long by_status[5]; /* runs that ended 0, 2, 3, stopped after run_limit, killed */
+static long by_status[5];      /* runs that ended 0, 2, 3, stopped after run_limit, killed */
 static double run_limit = 3.0; /* seconds before a run is stopped with SIGTERM */
 
 static void print_args(FILE *fp)
@@ -491,21 +537,22 @@ static int wait_run(pid_t pid, const run_mode *rm, int *stopped, int *sent)
 }
 
 /* The promises on a finished run's status, stderr, stdout and files. */
-static int judge(int code, const char *before, const char *first, long errlines, long outlines, char *why,
-                 size_t len)
+static int judge(int code, const char *before, const char *first, long errlines, long outlines,
+                 char *why, size_t len)
 {
     char after[65536];
     if (code != 0 && code != 1 && code != 2 && code != 3) {
         snprintf(why, len, "exit status %d; stderr: %.300s", code, first);
         return 0;
     }
-    if (code == 0 && errlines != 0 && (errlines != 1 || strncmp(first, "suslov: warning: ", 17) != 0)) {
+    if (code == 0 && errlines != 0 &&
+        (errlines != 1 || strncmp(first, "suslov: warning: ", 17) != 0)) {
         snprintf(why, len, "exit 0 with %ld stderr lines: %.300s", errlines, first);
         return 0;
     }
     if (code != 0 && (errlines != 1 || strncmp(first, "suslov: error: ", 15) != 0)) {
-        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s", code,
-                 errlines, first);
+        snprintf(why, len, "exit %d with %ld stderr lines (want one 'suslov: error:' line): %.300s",
+                 code, errlines, first);
         return 0;
     }
     if (code == 1 && !strstr(first, "writing stdout failed")) { /* only stdout can fail here */
@@ -514,13 +561,14 @@ static int judge(int code, const char *before, const char *first, long errlines,
     }
     snapshot(after, sizeof after);
     if (code == 2 && (outlines != 0 || strcmp(before, after) != 0)) {
-        snprintf(why, len, "exit 2 but something was written (stdout %ld lines; files %s)", outlines,
-                 strcmp(before, after) ? "changed" : "unchanged");
+        snprintf(why, len, "exit 2 but something was written (stdout %ld lines; files %s)",
+                 outlines, strcmp(before, after) ? "changed" : "unchanged");
         return 0;
     }
     if (code == 3 && strcmp(before, after) != 0) {
-        snprintf(why, len, "exit 3 but files in the work directory changed (a failed run writes "
-                           "no file)");
+        snprintf(why, len,
+                 "exit 3 but files in the work directory changed (a failed run writes "
+                 "no file)");
         return 0;
     }
     return !((code == 0 || code == 3) && !output_ok(code, why, len));
@@ -559,7 +607,8 @@ static int run_case(const run_mode *rm, char *why, size_t len)
     by_status[stopped ? 3 : code == 0 ? 0 : code == 2 ? 1 : 2]++;
     if (stopped) {
         if (code != 128 + SIGTERM)
-            snprintf(why, len, "stopped with SIGTERM after %.0f s, status %d (want 143)", run_limit, code);
+            snprintf(why, len, "stopped with SIGTERM after %.0f s, status %d (want 143)", run_limit,
+                     code);
         return code == 128 + SIGTERM;
     }
     return judge(code, before, first, errlines, outlines, why, len);
@@ -582,7 +631,8 @@ static int output_ok(int code, char *why, size_t len)
                 !strcmp(args[i], "--method=list");
     }
     char path[8192];
-    const int to_stdout = !o || !strcmp(o, "-") || !strcmp(o, "/dev/stdout") || !strcmp(o, "/dev/fd/1");
+    const int to_stdout =
+        !o || !strcmp(o, "-") || !strcmp(o, "/dev/stdout") || !strcmp(o, "/dev/fd/1");
     if (text || (o && !strcmp(o, "/dev/null")) || (code == 3 && !to_stdout))
         return 1;
     if (to_stdout)
@@ -661,10 +711,11 @@ int main(int argc, char **argv)
         chmod(workdir, 0777);
         chmod(capdir, 0777);
     }
-    printf("fuzz: %s\n", root ? "some runs as the user nobody (permission cases)"
-                                : "SKIP runs as nobody: the fuzzer is not root, or nobody cannot run suslov");
-    printf("fuzz: seed %llu, %.0f s, %s (replay: fuzz %s %.0f %llu)\n", (unsigned long long)seed, seconds,
-           suslov_bin, argv[1], seconds, (unsigned long long)seed);
+    printf("fuzz: %s\n",
+           root ? "some runs as the user nobody (permission cases)"
+                : "SKIP runs as nobody: the fuzzer is not root, or nobody cannot run suslov");
+    printf("fuzz: seed %llu, %.0f s, %s (replay: fuzz %s %.0f %llu)\n", (unsigned long long)seed,
+           seconds, suslov_bin, argv[1], seconds, (unsigned long long)seed);
     fflush(stdout);
     rng_state = seed ? seed : 1;
     long pass = 0, fail = 0;
@@ -675,9 +726,10 @@ int main(int argc, char **argv)
         run_mode rm = {.no_tmpfile = pick(4) == 0, .as_nobody = root && pick(5) == 0};
         /* every catchable signal whose default ends the process; SIGKILL only with O_TMPFILE:
          * the named fallback cannot clean up after it */
-        static const int sigs[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2, SIGPIPE, SIGALRM,
-                                   SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO, SIGPWR, SIGSYS,
-                                   SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, 34, 64, SIGKILL};
+        static const int sigs[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGABRT, SIGUSR1, SIGUSR2,
+                                   SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM,
+                                   SIGPROF, SIGIO,   SIGPWR,  SIGSYS,  SIGSEGV, SIGBUS,
+                                   SIGFPE,  SIGILL,  SIGTRAP, 34,      64,      SIGKILL};
         const int nsigs = (int)(sizeof sigs / sizeof sigs[0]);
         rm.kill_sig = pick(10) == 0 ? sigs[pick(rm.no_tmpfile ? nsigs - 1 : nsigs)] : 0;
         rm.kill_after = 0.0005 * pick(60);
@@ -686,7 +738,8 @@ int main(int argc, char **argv)
         } else {
             fail++;
             if (fail <= 30) {
-                printf("FAIL case %ld%s%s: %s; argv:", id, rm.no_tmpfile ? " (SUSLOV_NO_O_TMPFILE=1)" : "",
+                printf("FAIL case %ld%s%s: %s; argv:", id,
+                       rm.no_tmpfile ? " (SUSLOV_NO_O_TMPFILE=1)" : "",
                        rm.as_nobody ? " (as nobody)" : "", why);
                 print_args(stdout);
                 fflush(stdout);
@@ -697,10 +750,10 @@ int main(int argc, char **argv)
     snprintf(cmd, sizeof cmd, "chmod -R u+w '%s'; rm -rf '%s' '%s'", workdir, workdir, capdir);
     if (system(cmd) != 0)
         fprintf(stderr, "fuzz: could not remove %s\n", workdir);
-    printf(
-        "fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; killed by a "
-        "random signal mid-run: %ld\n",
-        by_status[0], by_status[1], by_status[2], run_limit, by_status[3], by_status[4]);
+    printf("fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; "
+           "killed by a "
+           "random signal mid-run: %ld\n",
+           by_status[0], by_status[1], by_status[2], run_limit, by_status[3], by_status[4]);
     printf("fuzz: %ld passed, %ld failed\n", pass, fail);
     return fail != 0;
 }

@@ -116,10 +116,12 @@ static int track(void *vctx, const sus_row *r)
         c->turn += (r->t - c->t) * fmax(hypot(c->w[0], c->w[1]), hypot(r->w[0], r->w[1]));
     c->t = r->t;
     c->steps = r->k;
-    for (int i = 0; i < 3; i++) c->w[i] = r->w[i];
+    for (int i = 0; i < 3; i++)
+        c->w[i] = r->w[i];
     double R[3][3]; /* a local copy: GCC's -fsanitize build misjudges the size of r->R */
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) c->R[i][j] = R[i][j] = r->R[i][j];
+        for (int j = 0; j < 3; j++)
+            c->R[i][j] = R[i][j] = r->R[i][j];
     c->w3 = fmax(c->w3, fabs(r->w[2]));
     c->orth = fmax(c->orth, sus_so3_orth_defect(R));
     c->energy = fmax(c->energy, fabs(sus_energy(c->m, r->w) - c->e0));
@@ -186,7 +188,7 @@ typedef struct {
     double slope, slope_min, ratio_lo,
         ratio_hi; /* over bodies: steepest and shallowest slope, err/TOL, err/(N TOL) */
     char slope_body[16], lo_body[16], hi_body[16]; /* copies: each body is gone after its turn */
-    char slow[160];           /* bodies whose attitude turns slower than w settles, with |w| / k */
+    char slow[160]; /* bodies whose attitude turns slower than w settles, with |w| / k */
     int points, fitted;
     int bodies,
         in_theory; /* bodies fitted; of them, slopes inside the one-order theory [SLOPE_P6, 1] */
@@ -209,7 +211,8 @@ static void summary_add(tol_summary *s, const char *name, double rate, double sl
     }
     if (!s->slope_body[0] || !(slope <= s->slope))
         s->slope = slope, snprintf(s->slope_body, sizeof s->slope_body, "%s", name);
-    if (!(slope >= s->slope_min) || s->slope_min == 0.0) s->slope_min = slope;
+    if (!(slope >= s->slope_min) || s->slope_min == 0.0)
+        s->slope_min = slope;
     s->bodies++;
     s->in_theory += slope >= SLOPE_P6 && slope <= 1.0;
     for (int j = 0; j < n; j++) {
@@ -252,7 +255,8 @@ static void body_errors(const tol_method *tm, const claims_body *d, tol_summary 
     }
     for (int q = 0; q < 2; q++) {
         sus_lab_order_fit fit = {.slope = NAN};
-        if (sus_lab_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0) fit.slope = NAN;
+        if (sus_lab_fit_order(tols[q], e[q], n[q], 1.0, 0.0, &fit) != 0)
+            fit.slope = NAN;
         const double rate = q == 1 ? d->size_w / d->ex.k : INFINITY; /* w: only its upper bound */
         summary_add(&s[q], b->name, rate, fit.slope, ratio[q], per_step[q], n[q]);
         if (rate < RATE_RATIO_MIN)
@@ -299,16 +303,15 @@ static void local_claims(const tol_method *tm)
              s[1].bodies, BODIES_COUNT, SLOPE_MID - SLOPE_HALF, SLOPE_MID - SLOPE_HALF,
              SLOPE_MID + SLOPE_HALF, slow);
     snprintf(id, sizeof id, "%s-tol-slope-R-min", key);
-    ledger_add_bound(id, "(extension)", text, s[1].slope_min, SLOPE_MID - SLOPE_HALF,
-                     1, LEDGER_EXTENSION);
+    ledger_add_bound(id, "(extension)", text, s[1].slope_min, SLOPE_MID - SLOPE_HALF, 1,
+                     LEDGER_EXTENSION);
     snprintf(text, sizeof text,
              "smallest $\\mathrm{dist}(R, R_\\mathrm{ref})/\\mathrm{TOL}$ at " T50 ", " TOLS
              " above "
              "$100\\,N u$, %s, %d of %d bodies (%s): $\\ge %g$ (within two decades below TOL); %s",
              name, s[1].bodies, BODIES_COUNT, s[1].lo_body, RATIO_LO, slow);
     snprintf(id, sizeof id, "%s-tol-ratio-lo-R", key);
-    ledger_add_bound(id, "(extension)", text, s[1].ratio_lo, RATIO_LO, 1,
-                     LEDGER_EXTENSION);
+    ledger_add_bound(id, "(extension)", text, s[1].ratio_lo, RATIO_LO, 1, LEDGER_EXTENSION);
     static const char *const what[2] = {"$|\\omega - \\omega_\\mathrm{ref}|$",
                                         "$\\mathrm{dist}(R, R_\\mathrm{ref})$"},
                              *const wr[2] = {"w", "R"};

@@ -35,10 +35,10 @@ static void body_sizes(claims_body *d)
 
 double claims_energy_terms(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double a0 = fabs(w[0]), a1 = fabs(w[1]);
-    return 0.5 * (a0 * (fabs(I[0][0]) * a0 + fabs(I[0][1]) * a1)
-                  + a1 * (fabs(I[1][0]) * a0 + fabs(I[1][1]) * a1));
+    return 0.5 * (a0 * (fabs(I[0][0]) * a0 + fabs(I[0][1]) * a1) +
+                  a1 * (fabs(I[1][0]) * a0 + fabs(I[1][1]) * a1));
 }
 
 /* The size of E(w)'s terms over |grad E| = |I_m w|: how far from w the rounding of E puts the
@@ -46,9 +46,9 @@ double claims_energy_terms(const sus_model *m, const double w[2])
  * by this much: |w| on a round body, up to cond(I_m) |w| where w lies along I_m's soft axis. */
 static double energy_rounding(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
-    return 2.0 * claims_energy_terms(m, w)
-         / hypot(I[0][0] * w[0] + I[0][1] * w[1], I[1][0] * w[0] + I[1][1] * w[1]);
+    const double(*I)[3] = m->I;
+    return 2.0 * claims_energy_terms(m, w) /
+           hypot(I[0][0] * w[0] + I[0][1] * w[1], I[1][0] * w[0] + I[1][1] * w[1]);
 }
 
 /* The rounding of (LagMult) at w, in units of u: Q's four products, and O_0 = c(w) ow / |I_m|
@@ -58,10 +58,10 @@ static double energy_rounding(const sus_model *m, const double w[2])
  * (b ow + c(w) o0c) / |I_m|) in g. */
 static double lagmult_terms(const sus_model *m, const double w[2], double g[2])
 {
-    const double (*I)[3] = m->I, *b = m->b, *o = m->o0c;
+    const double(*I)[3] = m->I, *b = m->b, *o = m->o0c;
     const double a0 = fabs(w[0]), a1 = fabs(w[1]);
-    const double q = a0 * (fabs(I[1][0]) * a0 + fabs(I[1][1]) * a1)
-                   + a1 * (fabs(I[0][0]) * a0 + fabs(I[0][1]) * a1);
+    const double q = a0 * (fabs(I[1][0]) * a0 + fabs(I[1][1]) * a1) +
+                     a1 * (fabs(I[0][0]) * a0 + fabs(I[0][1]) * a1);
     const double c = b[0] * w[0] + b[1] * w[1], ow = o[0] * w[0] + o[1] * w[1];
     const double tc = fabs(b[0]) * a0 + fabs(b[1]) * a1, tow = fabs(o[0]) * a0 + fabs(o[1]) * a1;
     g[0] = 2.0 * I[1][0] * w[0] + (I[1][1] - I[0][0]) * w[1] + (b[0] * ow + c * o[0]) / m->det_m;
@@ -91,7 +91,7 @@ static double yardstick(const claims_body *d, const claims_rounding *k, int q,
                         const sus_lab_local_ref *ref)
 {
     const sus_model *m = &d->m;
-    const double (*I)[3] = m->I, *w = ref->w_exact, eps = ref->eps;
+    const double(*I)[3] = m->I, *w = ref->w_exact, eps = ref->eps;
     const double nw = hypot(w[0], w[1]),
                  im = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
     const double lmax = 0.5 * (I[0][0] + I[1][1]) + hypot(0.5 * (I[0][0] - I[1][1]), I[0][1]);

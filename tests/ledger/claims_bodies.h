@@ -25,7 +25,7 @@ typedef struct {
     sus_exact ex;                                 /* refers to m: never copied */
     sus_lab_local_ref ref[CLAIMS_NE][CLAIMS_NTK]; /* ref[j][t]: eps[j] from start t */
     double eps[CLAIMS_NE];
-    double size_w, size_lambda;                   /* |w| and |lambda| along the motion */
+    double size_w, size_lambda; /* |w| and |lambda| along the motion */
 } claims_body;
 
 /* Body k of BODIES_COUNT, the paper's first. */
@@ -40,7 +40,7 @@ double claims_energy_terms(const sus_model *m, const double w[2]);
  * so by projecting). */
 typedef struct {
     int implicit, projects;
-    int substeps;   /* base steps per step, each rounding its own terms */
+    int substeps; /* base steps per step, each rounding its own terms */
 } claims_rounding;
 
 /* The size of quantity q on body d (an error as large is no expansion in eps), and the round-off

@@ -33,8 +33,9 @@
 #define ORDER_TOL 0.1
 
 /* The window and the floor of every order line of this file, as its quantity states them. */
-#define WINDOW_TEXT                                                                               \
-    "fit over $\\varepsilon \\in [2^{-10}, 2^{-2}]$, errors above $1000\\,u \\times \\mathrm{size}$"
+#define WINDOW_TEXT                                                                                \
+    "fit over $\\varepsilon \\in [2^{-10}, 2^{-2}]$, errors above $1000\\,u \\times "              \
+    "\\mathrm{size}$"
 
 static double eps_of(int j) { return ldexp(1.0, -j); }
 
@@ -256,10 +257,10 @@ void consistency_global_claims(const claims_paper *pp)
                      "slope of the distance \\eqref{MetMat} $\\mathrm{dist}(R(10), R_N)$, "
                      "reconstruction %s, %s",
                      SUS_RECON_NAMES[r], st->name);
-            order_line(id, "\\PaperRefOr{TeoL}, extension", what,
-                       fit_on(pp->conv.glob_eps, cm->glob_so3[r], SUS_LAB_CONV_NJ, 0, SIZE_R,
-                              FIT_EPS_MAX),
-                       eo->so3[r], LEDGER_EXTENSION);
+            order_line(
+                id, "\\PaperRefOr{TeoL}, extension", what,
+                fit_on(pp->conv.glob_eps, cm->glob_so3[r], SUS_LAB_CONV_NJ, 0, SIZE_R, FIT_EPS_MAX),
+                eo->so3[r], LEDGER_EXTENSION);
         }
     }
 }
@@ -268,8 +269,8 @@ void consistency_global_claims(const claims_paper *pp)
 
 /* The local errors of RK4 on (LdAeqs) from exact data at t_k: of V, R, xi = vee(R^T V) and
  * lambda(xi), the largest over t_k. */
-static void unreduced_errors(const claims_paper *p, sus_unreduced *u, double ev[NJ],
-                             double exi[NJ], double eR[NJ], double el[NJ])
+static void unreduced_errors(const claims_paper *p, sus_unreduced *u, double ev[NJ], double exi[NJ],
+                             double eR[NJ], double el[NJ])
 {
     for (int t = 0; t < PAPER_NTK; t++) {
         double Rk[3][3], I3[3][3], wk[3] = {0.0, 0.0, 0.0}, W[3][3];

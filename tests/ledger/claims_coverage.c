@@ -18,24 +18,28 @@
 /* A body with no symmetry and no zero entry, for the action test beside the paper's. */
 static const double GENERAL_BODY[3][3] = {{2.0, 0.3, -0.4}, {0.3, 1.5, 0.25}, {-0.4, 0.25, 1.2}};
 
-static void random_vec(gsl_rng *r, double scale, double v[3]) {
+static void random_vec(gsl_rng *r, double scale, double v[3])
+{
     for (int i = 0; i < 3; i++)
         v[i] = scale * (2.0 * gsl_rng_uniform(r) - 1.0);
 }
 
-static double dot3(const double a[3], const double b[3]) {
+static double dot3(const double a[3], const double b[3])
+{
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 /* (M)^* applied to a covector: the transpose. */
-static void apply_dual(const double M[3][3], const double p[3], double out[3]) {
+static void apply_dual(const double M[3][3], const double p[3], double out[3])
+{
     for (int i = 0; i < 3; i++)
         out[i] = M[0][i] * p[0] + M[1][i] * p[1] + M[2][i] * p[2];
 }
 
 /* ---- (Isom), (Killing): the bracket is the cross product, the Killing form the dot product ----
  */
-static void killing_claims(gsl_rng *r) {
+static void killing_claims(gsl_rng *r)
+{
     double bracket = 0.0, trace = 0.0, transpose = 0.0, invariant = 0.0;
     for (int n = 0; n < NSAMPLE; n++) {
         double x[3], y[3], a[3], X[3][3], Y[3][3], XY[3][3], YX[3][3], R[3][3], xy[3], Rx[3], Ry[3];
@@ -85,7 +89,8 @@ static void killing_claims(gsl_rng *r) {
 }
 
 /* ---- CoroRetr: Ad*_{tau(x)} (dtau^{-1}_x)^* = (dtau^{-1}_{-x})^* for tau = cay ---- */
-static double corollary_identity(gsl_rng *r) {
+static double corollary_identity(gsl_rng *r)
+{
     double worst = 0.0;
     for (int n = 0; n < NSAMPLE; n++) {
         double x[3], mx[3], R[3][3], D[3][3], Dm[3][3], DR[3][3];
@@ -106,7 +111,8 @@ static double corollary_identity(gsl_rng *r) {
 /* The reduced action l~(xi_{k-1}) + l~(xi_k) with l~(xi) = eps <I xi, xi>/2, as a function of
  * g_k = cay(eps a) cay(s eta) between g_{k-1} = I and g_{k+1} = cay(eps a) cay(eps b). */
 static double action(const double I[3][3], double eps, const double a[3], const double b[3],
-                     const double se[3]) {
+                     const double se[3])
+{
     double Ga[3][3], Gb[3][3], S[3][3], Gk[3][3], G1[3][3], W[3][3], xi[3], v[3], sum = 0.0;
     double ea[3] = {eps * a[0], eps * a[1], eps * a[2]},
            eb[3] = {eps * b[0], eps * b[1], eps * b[2]};
@@ -163,7 +169,8 @@ static void corollary_covectors(const double I[3][3], double eps, const double a
     }
 }
 
-static void corollary_claims(gsl_rng *r, const sus_model *m) {
+static void corollary_claims(gsl_rng *r, const sus_model *m)
+{
     ledger_add(
         "cor44-identity-cayley", "\\PaperRefOr{CoroRetr}, proof",
         "max over 64 $x$ of $|\\mathrm{dcay}^{-1}_x \\mathrm{cay}(x) - \\mathrm{dcay}^{-1}_{-x}|$: "
@@ -208,14 +215,16 @@ typedef struct {
 } phi_args;
 
 /* phi_d(cay(eps xi)) as a function of xi_3: the constraint w_3 on a finite difference of W. */
-static double phi_of_xi3(double x3, void *p) {
+static double phi_of_xi3(double x3, void *p)
+{
     const phi_args *a = p;
     double x[3] = {a->eps * a->x1, a->eps * a->x2, a->eps * x3}, D[3][3];
     sus_so3_cay_minus_identity(x, D);
     return (a->skew ? 0.5 * (D[1][0] - D[0][1]) : D[1][0]) / a->eps;
 }
 
-static double root_xi3(phi_args *a) {
+static double root_xi3(phi_args *a)
+{
     gsl_function F = {phi_of_xi3, a};
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     double root = NAN;
@@ -231,7 +240,8 @@ static double root_xi3(phi_args *a) {
     return root;
 }
 
-static void subspace_claims(void) {
+static void subspace_claims(void)
+{
     enum { NJ = 11 };
     double eps[NJ], viol[NJ], skew = 0.0;
     for (int j = 0; j < NJ; j++) {
@@ -269,7 +279,8 @@ static void subspace_claims(void) {
         skew, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 
-void coverage_claims(const sus_model *m) {
+void coverage_claims(const sus_model *m)
+{
     gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
     if (!r)
         ledger_die("gsl_rng_alloc");

@@ -40,7 +40,8 @@ typedef struct {
 static void axpy3(double C[3][3], const double A[3][3], double s, const double B[3][3])
 {
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) C[i][j] = A[i][j] + s * B[i][j];
+        for (int j = 0; j < 3; j++)
+            C[i][j] = A[i][j] + s * B[i][j];
 }
 
 /* |I - (R + eps X) C R^T| with C = I - eps W + eps^2 W^2 / 2, the truncated cay(eps w^)^T. */
@@ -68,7 +69,7 @@ static void distfinal_start(const sus_exact *ex, double tk, double scale, distfi
     sus_refatt_advance(&ra, tk, Rk);
     sus_exact_omega(ex, tk, w);
     sus_so3_hat(w, W);
-    sus_mat3_mul(RW, Rk, W); /* restored: (Ad_R w^) R = R w^ */
+    sus_mat3_mul(RW, Rk, W);     /* restored: (Ad_R w^) R = R w^ */
     sus_mat3_mul_bt(Ad, RW, Rk); /* printed: Ad_R w^ = R w^ R^T */
     for (int j = 0; j < NJ; j++) {
         const double eps = ldexp(1.0, -j) * scale;
@@ -89,7 +90,8 @@ static double slope_of(const double *err)
 {
     double e[NJ];
     sus_lab_order_fit f;
-    for (int j = 0; j < NJ; j++) e[j] = ldexp(1.0, -j);
+    for (int j = 0; j < NJ; j++)
+        e[j] = ldexp(1.0, -j);
     return sus_lab_fit_order(e, err, NJ, DF_EPS_MAX, SUS_LAB_FIT_FLOOR_REL * SUS_LAB_SIZE_R, &f) ==
                    0
                ? f.slope
@@ -110,10 +112,7 @@ static void distfinal_line(const char *id, const char *ref, const char *what, co
 }
 
 /* s = max(|w|, k) along the body's motion (claims_bodies.h's size_w bounds |w|). */
-static double body_scale(const claims_body *cb)
-{
-    return fmax(cb->size_w, cb->ex.k);
-}
+static double body_scale(const claims_body *cb) { return fmax(cb->size_w, cb->ex.k); }
 
 void distfinal_claims(void)
 {

@@ -26,7 +26,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#define NEPS 21                         /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
+#define NEPS 21   /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
 #define MUCH 10.0 /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
 
 static double grid_eps(int j) { return 0.25 * pow(2.0, 0.25 * j); }
@@ -164,8 +164,8 @@ static void ratio_over_t_claims(const sus_model *m, const sus_exact *ex)
              "$|\\omega_\\mathrm{mid} - \\omega|$ at $\\varepsilon = 1$ ($%s$ over $%s$); ``much "
              "faster'' needs $\\le 1/10$",
              notation_g(max_var, 3).s, notation_g(max_mid, 3).s);
-    ledger_add_bound("fig2-converges-faster-max-ratio", REF_FIG2_CONCLUSIONS, q,
-                     max_var / max_mid, 1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound("fig2-converges-faster-max-ratio", REF_FIG2_CONCLUSIONS, q, max_var / max_mid,
+                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
 }
 
 void fig2_range_claims(const sus_model *m, const sus_exact *ex)

@@ -58,8 +58,8 @@ static int trapezoidal_apply(const sus_model *m, double eps, const double w[3], 
     return it < 200 ? SUS_STEPPER_OK : SUS_STEPPER_NO_CONVERGENCE;
 }
 static const sus_step_ops trapezoidal_step = {.apply = trapezoidal_apply};
-const sus_stepper_type fig2_trapezoidal = {.name = "trapezoidal", .step = &trapezoidal_step,
-                                           .desc = {.order = 2, .lambda_order = 2}};
+const sus_stepper_type fig2_trapezoidal = {
+    .name = "trapezoidal", .step = &trapezoidal_step, .desc = {.order = 2, .lambda_order = 2}};
 
 typedef struct {
     double err;   /* |w_N - w(T)| */
@@ -171,12 +171,12 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
         "to $\\omega_\\infty$ as in \\texttt{fig2-longterm}, so another ratio of two tiny "
         "numbers; ``much more accurate'' needs $\\le 1/10$",
         notation_g(v200.err, 2).s, notation_g(m200.err, 2).s);
-    ledger_add_bound("fig2-longterm-200", REF_FIG2_CONCLUSIONS, q, v200.err / m200.err,
-                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound("fig2-longterm-200", REF_FIG2_CONCLUSIONS, q, v200.err / m200.err, 1.0 / MUCH,
+                     0, LEDGER_NOT_REPRODUCED);
     snprintf(q, sizeof q, "the same at $t = 10^4$, $\\varepsilon = 1$ ($%s$ against $%s$)",
              notation_g(v1e4.err, 2).s, notation_g(m1e4.err, 2).s);
-    ledger_add_bound("fig2-longterm-1e4", REF_FIG2_CONCLUSIONS, q, v1e4.err / m1e4.err,
-                     1.0 / MUCH, 0, LEDGER_NOT_REPRODUCED);
+    ledger_add_bound("fig2-longterm-1e4", REF_FIG2_CONCLUSIONS, q, v1e4.err / m1e4.err, 1.0 / MUCH,
+                     0, LEDGER_NOT_REPRODUCED);
 
     swap_claims(v10, m10, v200, m200, hypot(ex->w0[0], ex->w0[1]));
     /* the trapezoidal reading of "the midpoint rule" */

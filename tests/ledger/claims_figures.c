@@ -200,7 +200,7 @@ static void figure1(const sus_model *m, const sus_exact *ex)
     ledger_add("fig1-energy-midpoint", "\\PaperRefOr{Fig1}, panel (f)",
                "$\\max_k |E_k - E_0|$ of the midpoint rule, $\\varepsilon = 10^{-3}$: conserved to "
                "round-off (it conserves $E$ exactly)",
-        sus_lab_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
+               sus_lab_series_maxdrift(&mid, FIELD(energy)), 0.0, 1e-13, LEDGER_REPRODUCED);
     ledger_add_bound(
         "fig1-energy-variational", "\\PaperRefOr{Fig1}, panel (f); extension",
         "$\\max_k |E_k - E_0|$ of the variational integrator, $\\varepsilon = 10^{-3}$: at "
@@ -350,7 +350,7 @@ static void fig2_limit_claims(const sus_exact *ex, const sus_lab_series *mid,
     ledger_add("fig2-limit-variational", "(extension)",
                "$|\\omega_\\mathrm{var}(200) - \\omega_\\infty|$ against $|\\omega_\\infty| (1 - "
                "\\sqrt{E_N / E_0})$: a steady rotation at the wrong energy",
-        lim_var, predicted, 1e-9, LEDGER_EXTENSION);
+               lim_var, predicted, 1e-9, LEDGER_EXTENSION);
 }
 
 static void figure2(const sus_model *m, const sus_exact *ex)

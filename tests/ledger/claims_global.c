@@ -59,7 +59,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#define T_EXTENSION 50.0 /* t_paper of the extensions (claims_highorder.c) */
+#define T_EXTENSION 50.0     /* t_paper of the extensions (claims_highorder.c) */
 #define T_PAPER_METHODS 10.0 /* t_paper of the paper's methods (claims.c's global lines) */
 #define MAXN 80
 #define N_EXTENSION 100000L
@@ -222,7 +222,8 @@ static void order_rows(const body_target *t, const sus_step_method *me, const ex
                          t[k].d->b.name);
                 continue;
             }
-            if (!q && p >= 10 && !me->type->step->apply_order && (isnan(f.w.slope) || !f.w.plateau)) {
+            if (!q && p >= 10 && !me->type->step->apply_order &&
+                (isnan(f.w.slope) || !f.w.plateau)) {
                 wf[q].skipped++;
                 continue; /* w reaches round-off before it has one slope: the SO(3) row */
             }
@@ -300,6 +301,7 @@ void global_order_claims_of(int i)
         return;
     }
     order_rows(te, me, eo, me->recon, 1);
-    if (!me->type->step->apply_order) /* the paper's retraction, symmetrised, beside the exponential */
+    /* the paper's retraction, symmetrised, beside the exponential */
+    if (!me->type->step->apply_order)
         order_rows(te, me, eo, SUS_RECON_CAYLEY_MID, 0);
 }

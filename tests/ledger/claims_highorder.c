@@ -50,8 +50,7 @@ static int keep_row(void *vctx, const sus_row *row)
 }
 
 /* Runs a method over [0, T] with N steps, every row tracked every `every` steps. */
-static int run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st,
-               sus_recon recon,
+static int run(const sus_model *m, const sus_exact *ex, const sus_stepper_type *st, sus_recon recon,
                double T, long N, long every, last_row *out)
 {
     *out = (last_row){.e0 = sus_energy(m, ex->w0), .m = m};
@@ -174,12 +173,12 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
 static const struct {
     const char *method;
     long steps;
-    int attitude;      /* 1: R(50) is the target, 0: w(50) */
+    int attitude; /* 1: R(50) is the target, 0: w(50) */
     double level;
 } RECOMMENDED[] = {
-    {"taylor8", 17, 1, 1e-4}, {"taylor10", 18, 1, 1e-6}, {"taylor12", 20, 1, 1e-8},
-    {"taylor12", 29, 1, 1e-10}, {"taylor16", 27, 1, 1e-12},
-    {"taylor8", 9, 0, 1e-6}, {"taylor8", 15, 0, 1e-8}, /* 1e-4: the 1e-6 setting, tested at 1e-6 */
+    {"taylor8", 17, 1, 1e-4},   {"taylor10", 18, 1, 1e-6},  {"taylor12", 20, 1, 1e-8},
+    {"taylor12", 29, 1, 1e-10}, {"taylor16", 27, 1, 1e-12}, {"taylor8", 9, 0, 1e-6},
+    {"taylor8", 15, 0, 1e-8}, /* 1e-4: the 1e-6 setting, tested at 1e-6 */
     {"taylor16", 11, 0, 1e-10}, {"taylor12", 21, 0, 1e-12}, {"taylor16", 18, 0, 1e-14},
 };
 

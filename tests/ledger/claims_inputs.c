@@ -36,16 +36,14 @@ typedef struct {
     qreal I11, I12, I21, I22, I31, I32, det;
 } qbody;
 
-static qreal qabs(qreal x)
-{
-    return x < 0 ? -x : x;
-}
+static qreal qabs(qreal x) { return x < 0 ? -x : x; }
 
 /* sqrt in binary128 without libquadmath: two Newton steps from double's (53 -> 106 -> 113 bits) */
 static qreal qsqrt(qreal x)
 {
     qreal y = sqrt((double)x);
-    for (int i = 0; i < 2; i++) y = (y + x / y) / 2;
+    for (int i = 0; i < 2; i++)
+        y = (y + x / y) / 2;
     return y;
 }
 
@@ -76,25 +74,31 @@ static void qkin_coeff(qreal q[4][QN], qreal w[2][QN], int k, qreal out[4])
         out[2] += q[0][i] * b + q[3][i] * a;
         out[3] += q[1][i] * b - q[2][i] * a;
     }
-    for (int r = 0; r < 4; r++) out[r] /= 2;
+    for (int r = 0; r < 4; r++)
+        out[r] /= 2;
 }
 
 /* one Taylor step of length h: the state (w, q) replaced by its series summed at h */
 static void qstep(const qbody *b, qreal x[6], qreal h)
 {
     qreal w[2][QN], q[4][QN];
-    for (int r = 0; r < 2; r++) w[r][0] = x[r];
-    for (int r = 0; r < 4; r++) q[r][0] = x[2 + r];
+    for (int r = 0; r < 2; r++)
+        w[r][0] = x[r];
+    for (int r = 0; r < 4; r++)
+        q[r][0] = x[2 + r];
     for (int k = 0; k + 1 < QN; k++) {
         qreal f[2], g[4];
         qfield_coeff(b, w, k, f);
         qkin_coeff(q, w, k, g);
-        for (int r = 0; r < 2; r++) w[r][k + 1] = f[r] / (k + 1);
-        for (int r = 0; r < 4; r++) q[r][k + 1] = g[r] / (k + 1);
+        for (int r = 0; r < 2; r++)
+            w[r][k + 1] = f[r] / (k + 1);
+        for (int r = 0; r < 4; r++)
+            q[r][k + 1] = g[r] / (k + 1);
     }
     for (int r = 0; r < 6; r++) {
         qreal s = 0;
-        for (int k = QN - 1; k >= 0; k--) s = s * h + (r < 2 ? w[r][k] : q[r - 2][k]);
+        for (int k = QN - 1; k >= 0; k--)
+            s = s * h + (r < 2 ? w[r][k] : q[r - 2][k]);
         x[r] = s;
     }
 }
@@ -103,9 +107,11 @@ static void qstep(const qbody *b, qreal x[6], qreal h)
 static void qattitude(const qbody *b, const qreal w0[2], qreal R[3][3])
 {
     qreal x[6] = {w0[0], w0[1], 1, 0, 0, 0};
-    for (int s = 0; s < QSTEPS; s++) qstep(b, x, (qreal)T_END / QSTEPS);
+    for (int s = 0; s < QSTEPS; s++)
+        qstep(b, x, (qreal)T_END / QSTEPS);
     qreal n = 0;
-    for (int r = 2; r < 6; r++) n += x[r] * x[r];
+    for (int r = 2; r < 6; r++)
+        n += x[r] * x[r];
     const qreal r = qsqrt(n), a = x[2] / r, i = x[3] / r, j = x[4] / r, k = x[5] / r;
     R[0][0] = 1 - 2 * (j * j + k * k), R[0][1] = 2 * (i * j - a * k), R[0][2] = 2 * (i * k + a * j);
     R[1][0] = 2 * (i * j + a * k), R[1][1] = 1 - 2 * (i * i + k * k), R[1][2] = 2 * (j * k - a * i);
@@ -133,8 +139,10 @@ void inputs_claims(const sus_model *m)
 {
     /* the paper's inputs: as the doubles the program reads, and as the decimals it prints */
     qreal I_dbl[9], w_dbl[2], R_dbl[3][3], R_dec[3][3];
-    for (int i = 0; i < 9; i++) I_dbl[i] = SUS_PAPER_INERTIA[i];
-    for (int i = 0; i < 2; i++) w_dbl[i] = SUS_PAPER_OMEGA0[i];
+    for (int i = 0; i < 9; i++)
+        I_dbl[i] = SUS_PAPER_INERTIA[i];
+    for (int i = 0; i < 2; i++)
+        w_dbl[i] = SUS_PAPER_OMEGA0[i];
     const qreal tenth = (qreal)1 / 10;
     const qreal I_dec[9] = {1, tenth, 2 * tenth, tenth, 1, 2 * tenth, 2 * tenth, tenth, 1};
     const qreal w_dec[2] = {4 * tenth, 5 * tenth};
@@ -151,7 +159,8 @@ void inputs_claims(const sus_model *m)
     qreal R_refq[3][3];
     sus_refatt_precise(m, SUS_PAPER_OMEGA0, T_END, w_ref, R_ref);
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) R_refq[i][j] = R_ref[i][j];
+        for (int j = 0; j < 3; j++)
+            R_refq[i][j] = R_ref[i][j];
     /* the reference's stated accuracy (refattitude.h), for the inputs as doubles */
     ledger_add("reference-attitude-quad", "(method)",
                "$\\max_{ij} |R_\\mathrm{ref}(50) - R_{128}(50)|_{ij}$: the reference against a "

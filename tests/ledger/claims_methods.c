@@ -134,7 +134,7 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
 typedef struct {
     const sus_model *m;
     double e0, energy, w3, orth;
-    double eterms;            /* the largest 1/2 sum_ij |w_i I_ij w_j| over the rows */
+    double eterms; /* the largest 1/2 sum_ij |w_i I_ij w_j| over the rows */
 } structure_ctx;
 
 static int track(void *vctx, const sus_row *row)
@@ -148,7 +148,7 @@ static int track(void *vctx, const sus_row *row)
 }
 
 typedef struct {
-    double value, bound;      /* the worst ratio value / bound over bodies, and that body's pair */
+    double value, bound; /* the worst ratio value / bound over bodies, and that body's pair */
     const char *body;
     int failed_runs;
 } structure_worst;
@@ -216,7 +216,7 @@ static void method_structure(const sus_step_method *me)
              "%s, $R$ %s, the worst of %d bodies, %s; round-off bound $%s$",
              STRUCT_STEPS, STRUCT_EPS, sus_step_method_label(t, me->recon, label, sizeof label),
              t->desc.attitude == SUS_ATTITUDE_QUAT ? "from a unit quaternion"
-                                              : "by compensated products",
+                                                   : "by compensated products",
              BODIES_COUNT, orth.body, notation_g(orth.bound, 2).s);
     ledger_add_bound(id, ref, q, orth.value, orth.bound, 0, truth);
     if (!t->desc.conserves_energy)

@@ -38,7 +38,7 @@ typedef struct {
 
 static lim_sizes lim_sizes_of(const sus_exact *bex)
 {
-    const double (*I)[3] = bex->model->I, k = bex->k;
+    const double(*I)[3] = bex->model->I, k = bex->k;
     /* Q(w) = w1 (I21 w1 + I22 w2) - w2 (I11 w1 + I12 w2), (LagMult)'s first line */
     const double s11 = I[1][0], s12 = 0.5 * (I[1][1] - I[0][0]), s22 = -I[0][1];
     /* L^-1 = [[1/l11, 0], [-l21/(l11 l22), 1/l22]] */
@@ -62,11 +62,12 @@ static double c_of_t(const sus_exact *bex, double t)
     return bex->model->I[2][0] * w[0] + bex->model->I[2][1] * w[1];
 }
 
-/* O_0 = I31 w1' + I32 w2' = dc(w(t))/dt (docs/explanation/conventions.md), by a central difference on the
- * closed form and never from (LagMult): the expected value must not contain the term under test. Each c(w(t))
- * is good to delta = 32 u |I3.|_1 W (s, exp, tanh and the triangular solve: about ten roundings, each at most
- * W = lim_w_major, doubled); the quotient errs by c3 h^2 / 6 (truncation) + delta / h (round-off), least at
- * h^3 = 3 delta / c3. Returns O_0 and its error bound in *err. */
+/* O_0 = I31 w1' + I32 w2' = dc(w(t))/dt (docs/explanation/conventions.md), by a central difference
+ * on the closed form and never from (LagMult): the expected value must not contain the term under
+ * test. Each c(w(t)) is good to delta = 32 u |I3.|_1 W (s, exp, tanh and the triangular solve:
+ * about ten roundings, each at most W = lim_w_major, doubled); the quotient errs by c3 h^2 / 6
+ * (truncation) + delta / h (round-off), least at h^3 = 3 delta / c3. Returns O_0 and its error
+ * bound in *err. */
 static double o0_closed_form(const sus_exact *bex, double c3, double W, double t, double *err)
 {
     const double delta = 32.0 * SUS_U * (fabs(bex->model->I[2][0]) + fabs(bex->model->I[2][1])) * W;
@@ -104,7 +105,7 @@ typedef struct {
  * sqrt(cond(I_m)) times |w| itself where the motion crosses the ellipse's short axis. */
 static double lim_w_major(const sus_exact *bex)
 {
-    const double (*I)[3] = bex->model->I;
+    const double(*I)[3] = bex->model->I;
     const double lmax = 0.5 * (I[0][0] + I[1][1]) + hypot(0.5 * (I[0][0] - I[1][1]), I[0][1]);
     return bex->r * sqrt(lmax / bex->model->det_m);
 }
@@ -135,7 +136,7 @@ static double lim_step(const sus_exact *bex, double tk, double eps, double *dx)
  * two carry the cancellation: O_0 = c(w)' is far smaller than its terms. */
 static double lim_roundoff(const sus_model *m, double W, double dx)
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     const double im = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
     const double to =
         (fabs(m->b[0]) + fabs(m->b[1])) * (fabs(m->o0c[0]) + fabs(m->o0c[1])) / m->det_m;

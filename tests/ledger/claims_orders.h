@@ -8,11 +8,11 @@
 #include "ledger.h"
 
 typedef struct {
-    double order;             /* NaN: fewer than 3 points above round-off */
-    int plateau;              /* 1: a window of one slope, 0: the lower estimate */
-    int at_roundoff; /* 1: 3 or more steps taken, but fewer than 3 errors above the floor */
-    double eps_lo, eps_hi;    /* the window, in eps k */
-    double eps_ok;            /* the largest eps k at which the step was taken */
+    double order;          /* NaN: fewer than 3 points above round-off */
+    int plateau;           /* 1: a window of one slope, 0: the lower estimate */
+    int at_roundoff;       /* 1: 3 or more steps taken, but fewer than 3 errors above the floor */
+    double eps_lo, eps_hi; /* the window, in eps k */
+    double eps_ok;         /* the largest eps k at which the step was taken */
 } curve_order;
 
 /* The local order of one error curve over eps (largest first) on a body of rate k: the slope minus
@@ -28,17 +28,17 @@ curve_order order_of_curve(const double *eps, double k, const double *err, int n
 curve_order order_of_pair(curve_order r, curve_order p);
 
 typedef struct {
-    double worst, lo, hi;     /* over bodies with a window of one slope: the order farthest from
-                               * expected, and the range */
+    double worst, lo, hi; /* over bodies with a window of one slope: the order farthest from
+                           * expected, and the range */
     const char *worst_body;
-    double eps_lo, eps_hi;    /* the worst body's window, in eps k */
-    int plateaus;             /* bodies with a window of one slope */
-    int fallback;             /* bodies with only the lower estimate */
-    double fb_lo, fb_hi;      /* the range of the lower estimates */
-    const char *fb_body;      /* the body of the lowest */
-    int unmeasured;           /* bodies with fewer than 3 steps taken */
+    double eps_lo, eps_hi; /* the worst body's window, in eps k */
+    int plateaus;          /* bodies with a window of one slope */
+    int fallback;          /* bodies with only the lower estimate */
+    double fb_lo, fb_hi;   /* the range of the lower estimates */
+    const char *fb_body;   /* the body of the lowest */
+    int unmeasured;        /* bodies with fewer than 3 steps taken */
     const char *unmeasured_body;
-    int roundoff;             /* bodies whose error is at round-off wherever a step is taken */
+    int roundoff;              /* bodies whose error is at round-off wherever a step is taken */
     char roundoff_bodies[160]; /* their names, each with the largest eps k stepped */
 } order_summary;
 

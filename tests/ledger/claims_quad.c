@@ -27,10 +27,10 @@ typedef __float128 qreal;
 
 #define QU 0x1p-112 /* binary128's u */
 #define QN                                                                                         \
-    64 /* flow series terms: the nearest singularity is ~10.8 time units off the                   \
-        * real axis, so at |t| <= 2 the tail is below 0.19^64 ~ 1e-46 */
-#define QS 12 /* step series terms eps^0 .. eps^11: e_{2p+1} = e_9 for rk4 */
-#define NJ 12 /* eps = 2^(1-j), j = 0 .. 11: 2 .. 2^-10 */
+    64           /* flow series terms: the nearest singularity is ~10.8 time units off the         \
+                  * real axis, so at |t| <= 2 the tail is below 0.19^64 ~ 1e-46 */
+#define QS 12    /* step series terms eps^0 .. eps^11: e_{2p+1} = e_9 for rk4 */
+#define NJ 12    /* eps = 2^(1-j), j = 0 .. 11: 2 .. 2^-10 */
 #define NSAMP 64 /* times per period along the blended curve */
 #define ORDER_TOL 0.1
 
@@ -46,10 +46,7 @@ typedef struct {
     int n;
 } qseries;
 
-static qreal qabs(qreal x)
-{
-    return x < 0 ? -x : x;
-}
+static qreal qabs(qreal x) { return x < 0 ? -x : x; }
 
 static void qmodel_of(const sus_model *m, qmodel *q)
 {
@@ -120,7 +117,8 @@ static void qseries_eval(const qseries *y, qreal t, qreal out[2])
 {
     for (int i = 0; i < 2; i++) {
         qreal s = 0;
-        for (int k = y->n - 1; k >= 0; k--) s = s * t + y->c[i][k];
+        for (int k = y->n - 1; k >= 0; k--)
+            s = s * t + y->c[i][k];
         out[i] = s;
     }
 }
@@ -143,7 +141,8 @@ static void qw_plus_eps(const qreal w[2], qreal a, const qseries *s, qseries *ou
     out->n = s->n;
     for (int i = 0; i < 2; i++) {
         out->c[i][0] = w[i];
-        for (int k = 1; k < s->n; k++) out->c[i][k] = a * s->c[i][k - 1];
+        for (int k = 1; k < s->n; k++)
+            out->c[i][k] = a * s->c[i][k - 1];
     }
 }
 
@@ -155,7 +154,8 @@ static void qstep(const qmodel *q, int p, const qreal w[2], qreal eps, qreal out
     qseries k1 = {.n = QS}, k2, k3, k4, y;
     qreal f1[2];
     qfield(q, w, f1);
-    for (int k = 0; k < QS; k++) k1.c[0][k] = k1.c[1][k] = 0;
+    for (int k = 0; k < QS; k++)
+        k1.c[0][k] = k1.c[1][k] = 0;
     k1.c[0][0] = f1[0];
     k1.c[1][0] = f1[1];
     if (p == 1) {
@@ -188,11 +188,13 @@ static qreal remark_error(const qmodel *q, int p, const qreal w[2], qreal eps)
     qstep(q, p, w, 0, NULL, &step);
     qstep(q, p, w, eps, x, NULL);
     for (int j = 2 * p + 1; j >= p + 1; j--)
-        for (int i = 0; i < 2; i++) e[i] = e[i] * eps + (step.c[i][j] - flow.c[i][j]);
+        for (int i = 0; i < 2; i++)
+            e[i] = e[i] * eps + (step.c[i][j] - flow.c[i][j]);
     for (int i = 0; i < 2; i++)
         e[i] *= eps; /* sum_j e_j eps^j, Horner from eps^{p+1} .. eps^{2p+1} */
     for (int j = 0; j < p; j++)
-        for (int i = 0; i < 2; i++) e[i] *= eps;
+        for (int i = 0; i < 2; i++)
+            e[i] *= eps;
     qlagmult_grad(q, x, g);
     qseries_eval(&flow, eps, fe);
     const qreal l = -(g[0] * e[0] + g[1] * e[1]);
@@ -223,11 +225,13 @@ static qreal sec6_dlambda(const qmodel *q, const double Iinv[3][3], int p, const
             Xd[k] = (1 - ch) * hA[k] + ch * hB[k] + dch * (B[k] - A[k]);
         }
         qfield(q, X, hX);
-        for (int k = 0; k < 2; k++) g[k] = Xd[k] - hX[k];
+        for (int k = 0; k < 2; k++)
+            g[k] = Xd[k] - hX[k];
         const qreal f0 = q->I[0][0] * g[0] + q->I[0][1] * g[1],
                     f1 = q->I[1][0] * g[0] + q->I[1][1] * g[1];
         const qreal dl = -((qreal)Iinv[2][0] * f0 + (qreal)Iinv[2][1] * f1) / (qreal)Iinv[2][2];
-        if (qabs(dl) > sup) sup = qabs(dl);
+        if (qabs(dl) > sup)
+            sup = qabs(dl);
     }
     return sup;
 }
@@ -309,7 +313,8 @@ static void sec6_line(const qmodel *q, const sus_model *m, const sus_exact *ex, 
                       const char *name, ledger_assert truth)
 {
     double eps[NJ], err[NJ], Iinv[3][3];
-    if (sus_mat3_inverse(m->I, Iinv) != 0) ledger_die("the inverse of the paper's inertia");
+    if (sus_mat3_inverse(m->I, Iinv) != 0)
+        ledger_die("the inverse of the paper's inertia");
     for (int j = 0; j < NJ; j++) {
         qreal e = 0;
         eps[j] = ldexp(1.0, 1 - j);

@@ -26,7 +26,7 @@
 #include <stdlib.h>
 
 #define U SUS_U
-#define NJ5 12  /* eps = 2 .. 2^-10 */
+#define NJ5 12 /* eps = 2 .. 2^-10 */
 static const double TK5[] = {0.0, 3.0, 7.0, 12.0, 20.0};
 #define NTK5 5
 /* lambda's round-off: u times its size, a thousand times over (orderfit.h) */
@@ -73,8 +73,8 @@ static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_s
         sus_exact_omega(ex, TK5[t], wk);
         sus_exact_omega(ex, TK5[t] + eps, we);
         const double w[3] = {wk[0], wk[1], 0.0};
-        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK
-            || sus_lab_series_step(m, st, wk, &a) != 0)
+        if (st->step->apply(m, eps, w, x, &lam, &ss) != SUS_STEPPER_OK ||
+            sus_lab_series_step(m, st, wk, &a) != 0)
             ledger_die("the series of a step");
         sus_lab_series_flow(m, wk, &y);
         sus_lab_series_eval(&a, eps, sx);
@@ -111,8 +111,8 @@ static double fit_s(const double *eps, const double *err)
     double e[NJ5];
     for (int j = 0; j < NJ5; j++)
         e[j] = err[j] > FLOOR_LAMBDA ? err[j] : 0.0;
-    if (sus_lab_fit_order(eps, e, NJ5, SUS_LAB_FIT_EPS_MAX, 0.0, &f) == 0
-        || sus_lab_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
+    if (sus_lab_fit_order(eps, e, NJ5, SUS_LAB_FIT_EPS_MAX, 0.0, &f) == 0 ||
+        sus_lab_fit_order(eps, e, NJ5, eps[0], 0.0, &f) == 0)
         return f.slope - 1.0;
     return NAN;
 }
@@ -247,7 +247,7 @@ static double vso3_lambda(const sus_model *m, double eps, const double w[2], con
     const double mw[2] = {-w[0], -w[1]};
     sus_so3_cayinver_printed(eps, x, Px);
     sus_so3_cayinver_printed(eps, mw, Pw);
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     double vx[3], vw[3];
     for (int i = 0; i < 3; i++) {
         vx[i] = eps * (I[i][0] * x[0] + I[i][1] * x[1]);
@@ -291,7 +291,6 @@ static void vso3_sign_claims(const sus_model *m, const sus_exact *ex)
                "the same ratio, lowest over the samples: the sign printed in \\eqref{VSO3} gives "
                "$-$\\eqref{taualg}; the code follows \\eqref{PartCase}",
                rv_lo, -1.0, 1e-12, LEDGER_EXTENSION);
-
 }
 
 /* The corrected (cayinver) against lambda: an extension of ours. */
@@ -332,7 +331,7 @@ static void corrected_cayinver_claim(const sus_model *m, const sus_exact *ex)
 void remark55_claims(const sus_model *m, const sus_exact *ex)
 {
     const sus_stepper_type *methods[] = {sus_step_euler, sus_step_midpoint, sus_step_rk4,
-                                            sus_step_variational};
+                                         sus_step_variational};
     for (int i = 0; i < 4; i++)
         method_claims(m, ex, methods[i]);
     vso3_sign_claims(m, ex);

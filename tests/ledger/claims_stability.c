@@ -89,8 +89,7 @@ static void limit_lines(const sus_step_method *me, double predicted, double theo
     const sus_stepper_type *st = me->type;
     const double expect = isfinite(theory) ? theory : predicted; /* theory where it is known */
     char id[64], q[640], worst[16], bound[160], named[240] = "";
-    const double measured =
-        limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
+    const double measured = limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
     if (bound[0])
         snprintf(named, sizeof named,
                  "; its steps are refused beyond their proved radius first on %s", bound);
@@ -140,14 +139,14 @@ void stability_boundary_claims(int m)
      * INFINITY; a NaN (no return even at h = 0.1) fails. */
     char id[64], q[640], worst[16], bound[160];
     const double expect = isfinite(theory) ? theory : predicted;
-    const double measured =
-        limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
+    const double measured = limit_over_bodies(st, expect, worst, sizeof worst, bound, sizeof bound);
     snprintf(id, sizeof id, "stability-boundary-%s", st->name);
     snprintf(q, sizeof q,
              "%s has no linear stability limit (%s): the start $10^{-6}$ off the rotation still "
              "returns at $h = %g$ (the largest $h$ tested), on each of %d bodies (the least: %s)",
              st->name,
-             me->type->desc.stability ? "$|R(-h)| \\le 1$ for all $h$ tested" : "no stability function",
+             me->type->desc.stability ? "$|R(-h)| \\le 1$ for all $h$ tested"
+                                      : "no stability function",
              H_MAX, BODIES_COUNT, worst);
     ledger_add_none_found(id, "(extension)", q, measured, H_MAX, H_MAX, LEDGER_EXTENSION);
 }
@@ -178,9 +177,9 @@ static double first_failure(const sus_exact *paper, const sus_stepper_type *st, 
 /* Solvability on the ledger's map (12 angles): every implicit step is asserted solvable on its
  * branch far beyond the paper's eps = 1 (h = 0.145): from h = 1, 7x the paper's step, at least.
  * Where docs/explanation/where-methods-fail.md states that no run fails up to the largest h tested
- * (expected_orders.c: solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000 itself
- * fails it). The steps solve for the branch themselves (newton.h), so a failure here is the step equation's:
- * a fold, or a continuation that cannot follow it. */
+ * (expected_orders.c: solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000
+ * itself fails it). The steps solve for the branch themselves (newton.h), so a failure here is the
+ * step equation's: a fold, or a continuation that cannot follow it. */
 void stability_solvable_claims(const sus_exact *paper, int m)
 {
     char id[64], q[640];

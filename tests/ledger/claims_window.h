@@ -45,9 +45,9 @@
 #define WINDOW_ORDER_TOL 0.25
 
 typedef struct {
-    double slope;             /* NaN: fewer than 3 candidates at the small-eps end */
-    int plateau;              /* 1: a window of one slope (rule 1), 0: the fallback of rule 2 */
-    int used;                 /* points in the fit */
+    double slope; /* NaN: fewer than 3 candidates at the small-eps end */
+    int plateau;  /* 1: a window of one slope (rule 1), 0: the fallback of rule 2 */
+    int used;     /* points in the fit */
     double eps_lo, eps_hi;
 } window_slope;
 

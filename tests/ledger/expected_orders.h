@@ -8,10 +8,10 @@
 
 typedef struct {
     const char *method;
-    int p;                       /* local w error O(eps^{p+1}) */
-    int s;                       /* multiplier order; -1 where the paper proves it inconsistent */
+    int p;                    /* local w error O(eps^{p+1}) */
+    int s;                    /* multiplier order; -1 where the paper proves it inconsistent */
     int so3[SUS_RECON_COUNT]; /* order on SO(3) (TeoL: min(r, p)) with each reconstruction */
-    const char *ref;             /* where p and s are stated, in the notation (notation.h) */
+    const char *ref;          /* where p and s are stated, in the notation (notation.h) */
     /* Linear stability: 1 when theory gives R(z) = sum_{n<=p} z^n/n! (an explicit Runge-Kutta
      * method with p = stages <= 4, or a Taylor series of degree p), so that the real stability
      * limit follows from p alone; the first step h at which a run's step equation loses its

@@ -39,10 +39,7 @@ void ledger_number(const char *name, double value)
     state.extras[state.nextras++].value = value;
 }
 
-void ledger_keep_min(int slot, double value)
-{
-    state.mins[slot] = fmin(state.mins[slot], value);
-}
+void ledger_keep_min(int slot, double value) { state.mins[slot] = fmin(state.mins[slot], value); }
 
 double ledger_min(int slot) { return state.mins[slot]; }
 
@@ -79,8 +76,7 @@ static void add_row(ledger_source src, const char *id, const char *paper_ref, co
     ledger_row *r = &state.rows[state.nrows++];
     memset(r, 0, sizeof *r);
     snprintf(r->id, sizeof r->id, "%s", id);
-    keep(paper_ref, PLAIN_REF_IDS, r->ref, sizeof r->ref, r->ref_plain, sizeof r->ref_plain,
-         src);
+    keep(paper_ref, PLAIN_REF_IDS, r->ref, sizeof r->ref, r->ref_plain, sizeof r->ref_plain, src);
     keep(quantity, PLAIN_QUANTITY, r->quantity, sizeof r->quantity, r->quantity_plain,
          sizeof r->quantity_plain, src);
     snprintf(r->source, sizeof r->source, "%s:%d", src.file, src.line);
@@ -95,7 +91,7 @@ static void add_row(ledger_source src, const char *id, const char *paper_ref, co
         strcpy(r->verdict, truth == LEDGER_EXTENSION ? "extension" : "by construction");
         r->pass = usable && holds;
     } else {
-        strcpy(r->verdict, holds                      ? "reproduced"
+        strcpy(r->verdict, holds                     ? "reproduced"
                            : truth == LEDGER_ERRATUM ? "erratum"
                                                      : "not reproduced");
         r->pass = usable && holds == (truth == LEDGER_REPRODUCED);
@@ -136,8 +132,8 @@ void ledger_add_bound_unbounded_at(const char *file, int line, const char *id,
 }
 
 void ledger_add_none_found_at(const char *file, int line, const char *id, const char *paper_ref,
-                              const char *quantity, double measured, double bound,
-                              double searched, ledger_assert truth)
+                              const char *quantity, double measured, double bound, double searched,
+                              ledger_assert truth)
 {
     add_bound((ledger_source){file, line}, id, paper_ref, quantity, measured, bound, 1, truth, 1);
     state.rows[state.nrows - 1].searched = searched;
@@ -153,8 +149,8 @@ void ledger_test_text(const ledger_row *r, char *out, size_t len)
     else if (r->expected == 0.0)
         snprintf(out, len, "|x| <= %.3g", r->tol);
     else /* |x + 1|, not |x - -1| */
-        snprintf(out, len, "|x %c %.6g| <= %.3g", r->expected < 0.0 ? '+' : '-',
-                 fabs(r->expected), r->tol);
+        snprintf(out, len, "|x %c %.6g| <= %.3g", r->expected < 0.0 ? '+' : '-', fabs(r->expected),
+                 r->tol);
 }
 
 /* The measured column: the number, or what an unbounded limit's search found. */

@@ -12,10 +12,10 @@
 #define SUSLOV_LEDGER_H
 
 typedef enum {
-    LEDGER_REPRODUCED, /* we assert the paper's claim holds: |measured - expected| <= tol */
+    LEDGER_REPRODUCED,     /* we assert the paper's claim holds: |measured - expected| <= tol */
     LEDGER_NOT_REPRODUCED, /* we assert the measurement contradicts it: |measured - expected| > tol
                             */
-    LEDGER_EXTENSION, /* our own claim beyond the paper: |measured - expected| <= tol */
+    LEDGER_EXTENSION,      /* our own claim beyond the paper: |measured - expected| <= tol */
     LEDGER_ERRATUM, /* as NOT_REPRODUCED, for a typo or an internal inconsistency of the paper
                      * (it contradicts the paper's own formulas, not its results) */
     LEDGER_BY_CONSTRUCTION /* a line that holds because the code sets it so (every stepper writes

@@ -146,8 +146,9 @@ static void tex_line(FILE *fp, const ledger_row *r)
     fprintf(fp, " & $%s$ & ", num);
     tex_test(fp, r);
     fprintf(fp, " & %s%s\\\\*\n", r->verdict, r->pass ? "" : " \\textbf{(check FAILS)}");
-    fprintf(fp, "\\multicolumn{5}{@{}p{\\linewidth}@{}}{\\hspace{1.5em}\\parbox[t]"
-                "{\\dimexpr\\linewidth-1.5em}{\\raggedright %s}}\\\\[2pt]\n",
+    fprintf(fp,
+            "\\multicolumn{5}{@{}p{\\linewidth}@{}}{\\hspace{1.5em}\\parbox[t]"
+            "{\\dimexpr\\linewidth-1.5em}{\\raggedright %s}}\\\\[2pt]\n",
             r->quantity);
 }
 
@@ -190,8 +191,7 @@ static int same_group(const ledger_row *a, const ledger_row *b, const char *key)
     char kb[64];
     group_key(b->id, kb, sizeof kb);
     return a->kind == ROW_WITHIN && b->kind == ROW_WITHIN && strcmp(key, kb) == 0 &&
-           strcmp(a->ref, b->ref) == 0 && strcmp(a->verdict, b->verdict) == 0 &&
-           a->pass == b->pass;
+           strcmp(a->ref, b->ref) == 0 && strcmp(a->verdict, b->verdict) == 0 && a->pass == b->pass;
 }
 
 /* A claim tested on several methods: the count, the worst deviation |m - e| and the tolerances

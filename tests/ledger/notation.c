@@ -33,64 +33,112 @@ typedef struct {
 
 static const macro MACROS[] = {
     /* Greek */
-    {"alpha", M_SYMBOL, IN_MATH, "α"}, {"beta", M_SYMBOL, IN_MATH, "β"},
-    {"gamma", M_SYMBOL, IN_MATH, "γ"}, {"delta", M_SYMBOL, IN_MATH, "δ"},
-    {"epsilon", M_SYMBOL, IN_MATH, "ϵ"}, {"varepsilon", M_SYMBOL, IN_MATH, "ε"},
-    {"zeta", M_SYMBOL, IN_MATH, "ζ"}, {"eta", M_SYMBOL, IN_MATH, "η"},
-    {"theta", M_SYMBOL, IN_MATH, "θ"}, {"kappa", M_SYMBOL, IN_MATH, "κ"},
-    {"lambda", M_SYMBOL, IN_MATH, "λ"}, {"mu", M_SYMBOL, IN_MATH, "μ"},
-    {"nu", M_SYMBOL, IN_MATH, "ν"}, {"xi", M_SYMBOL, IN_MATH, "ξ"},
-    {"pi", M_SYMBOL, IN_MATH, "π"}, {"rho", M_SYMBOL, IN_MATH, "ρ"},
-    {"sigma", M_SYMBOL, IN_MATH, "σ"}, {"tau", M_SYMBOL, IN_MATH, "τ"},
-    {"phi", M_SYMBOL, IN_MATH, "ϕ"}, {"varphi", M_SYMBOL, IN_MATH, "φ"},
-    {"chi", M_SYMBOL, IN_MATH, "χ"}, {"psi", M_SYMBOL, IN_MATH, "ψ"},
-    {"omega", M_SYMBOL, IN_MATH, "ω"}, {"Gamma", M_SYMBOL, IN_MATH, "Γ"},
-    {"Delta", M_SYMBOL, IN_MATH, "Δ"}, {"Theta", M_SYMBOL, IN_MATH, "Θ"},
-    {"Lambda", M_SYMBOL, IN_MATH, "Λ"}, {"Sigma", M_SYMBOL, IN_MATH, "Σ"},
-    {"Phi", M_SYMBOL, IN_MATH, "Φ"}, {"Psi", M_SYMBOL, IN_MATH, "Ψ"},
+    {"alpha", M_SYMBOL, IN_MATH, "α"},
+    {"beta", M_SYMBOL, IN_MATH, "β"},
+    {"gamma", M_SYMBOL, IN_MATH, "γ"},
+    {"delta", M_SYMBOL, IN_MATH, "δ"},
+    {"epsilon", M_SYMBOL, IN_MATH, "ϵ"},
+    {"varepsilon", M_SYMBOL, IN_MATH, "ε"},
+    {"zeta", M_SYMBOL, IN_MATH, "ζ"},
+    {"eta", M_SYMBOL, IN_MATH, "η"},
+    {"theta", M_SYMBOL, IN_MATH, "θ"},
+    {"kappa", M_SYMBOL, IN_MATH, "κ"},
+    {"lambda", M_SYMBOL, IN_MATH, "λ"},
+    {"mu", M_SYMBOL, IN_MATH, "μ"},
+    {"nu", M_SYMBOL, IN_MATH, "ν"},
+    {"xi", M_SYMBOL, IN_MATH, "ξ"},
+    {"pi", M_SYMBOL, IN_MATH, "π"},
+    {"rho", M_SYMBOL, IN_MATH, "ρ"},
+    {"sigma", M_SYMBOL, IN_MATH, "σ"},
+    {"tau", M_SYMBOL, IN_MATH, "τ"},
+    {"phi", M_SYMBOL, IN_MATH, "ϕ"},
+    {"varphi", M_SYMBOL, IN_MATH, "φ"},
+    {"chi", M_SYMBOL, IN_MATH, "χ"},
+    {"psi", M_SYMBOL, IN_MATH, "ψ"},
+    {"omega", M_SYMBOL, IN_MATH, "ω"},
+    {"Gamma", M_SYMBOL, IN_MATH, "Γ"},
+    {"Delta", M_SYMBOL, IN_MATH, "Δ"},
+    {"Theta", M_SYMBOL, IN_MATH, "Θ"},
+    {"Lambda", M_SYMBOL, IN_MATH, "Λ"},
+    {"Sigma", M_SYMBOL, IN_MATH, "Σ"},
+    {"Phi", M_SYMBOL, IN_MATH, "Φ"},
+    {"Psi", M_SYMBOL, IN_MATH, "Ψ"},
     {"Omega", M_SYMBOL, IN_MATH, "Ω"},
     /* relations, operators, arrows */
-    {"le", M_SYMBOL, IN_MATH, "≤"}, {"ge", M_SYMBOL, IN_MATH, "≥"},
-    {"ll", M_SYMBOL, IN_MATH, "≪"}, {"gg", M_SYMBOL, IN_MATH, "≫"},
-    {"ne", M_SYMBOL, IN_MATH, "≠"}, {"approx", M_SYMBOL, IN_MATH, "≈"},
-    {"sim", M_SYMBOL, IN_MATH, "~"}, {"equiv", M_SYMBOL, IN_MATH, "≡"},
-    {"propto", M_SYMBOL, IN_MATH, "∝"}, {"in", M_SYMBOL, IN_MATH, "∈"},
-    {"to", M_SYMBOL, IN_MATH, "→"}, {"mapsto", M_SYMBOL, IN_MATH, "↦"},
-    {"times", M_SYMBOL, IN_MATH, "×"}, {"cdot", M_SYMBOL, IN_MATH, "·"},
-    {"circ", M_SYMBOL, IN_MATH, "∘"}, {"otimes", M_SYMBOL, IN_MATH, "⊗"},
-    {"pm", M_SYMBOL, IN_MATH, "±"}, {"mid", M_SYMBOL, IN_MATH, "|"},
-    {"infty", M_SYMBOL, IN_MATH, "∞"}, {"partial", M_SYMBOL, IN_MATH, "∂"},
-    {"nabla", M_SYMBOL, IN_MATH, "∇"}, {"sum", M_SYMBOL, IN_MATH, "Σ"},
-    {"prod", M_SYMBOL, IN_MATH, "Π"}, {"int", M_SYMBOL, IN_MATH, "∫"},
-    {"langle", M_SYMBOL, IN_MATH, "⟨"}, {"rangle", M_SYMBOL, IN_MATH, "⟩"},
-    {"top", M_SYMBOL, IN_MATH, "T"}, {"vee", M_SYMBOL, IN_MATH, "∨"},
-    {"wedge", M_SYMBOL, IN_MATH, "∧"}, {"prime", M_SYMBOL, IN_MATH, "'"},
-    {"dots", M_SYMBOL, ANYWHERE, "…"}, {"ldots", M_SYMBOL, ANYWHERE, "…"},
-    {"cdots", M_SYMBOL, IN_MATH, "…"}, {"quad", M_SYMBOL, IN_MATH, "  "},
+    {"le", M_SYMBOL, IN_MATH, "≤"},
+    {"ge", M_SYMBOL, IN_MATH, "≥"},
+    {"ll", M_SYMBOL, IN_MATH, "≪"},
+    {"gg", M_SYMBOL, IN_MATH, "≫"},
+    {"ne", M_SYMBOL, IN_MATH, "≠"},
+    {"approx", M_SYMBOL, IN_MATH, "≈"},
+    {"sim", M_SYMBOL, IN_MATH, "~"},
+    {"equiv", M_SYMBOL, IN_MATH, "≡"},
+    {"propto", M_SYMBOL, IN_MATH, "∝"},
+    {"in", M_SYMBOL, IN_MATH, "∈"},
+    {"to", M_SYMBOL, IN_MATH, "→"},
+    {"mapsto", M_SYMBOL, IN_MATH, "↦"},
+    {"times", M_SYMBOL, IN_MATH, "×"},
+    {"cdot", M_SYMBOL, IN_MATH, "·"},
+    {"circ", M_SYMBOL, IN_MATH, "∘"},
+    {"otimes", M_SYMBOL, IN_MATH, "⊗"},
+    {"pm", M_SYMBOL, IN_MATH, "±"},
+    {"mid", M_SYMBOL, IN_MATH, "|"},
+    {"infty", M_SYMBOL, IN_MATH, "∞"},
+    {"partial", M_SYMBOL, IN_MATH, "∂"},
+    {"nabla", M_SYMBOL, IN_MATH, "∇"},
+    {"sum", M_SYMBOL, IN_MATH, "Σ"},
+    {"prod", M_SYMBOL, IN_MATH, "Π"},
+    {"int", M_SYMBOL, IN_MATH, "∫"},
+    {"langle", M_SYMBOL, IN_MATH, "⟨"},
+    {"rangle", M_SYMBOL, IN_MATH, "⟩"},
+    {"top", M_SYMBOL, IN_MATH, "T"},
+    {"vee", M_SYMBOL, IN_MATH, "∨"},
+    {"wedge", M_SYMBOL, IN_MATH, "∧"},
+    {"prime", M_SYMBOL, IN_MATH, "'"},
+    {"dots", M_SYMBOL, ANYWHERE, "…"},
+    {"ldots", M_SYMBOL, ANYWHERE, "…"},
+    {"cdots", M_SYMBOL, IN_MATH, "…"},
+    {"quad", M_SYMBOL, IN_MATH, "  "},
     /* operators set upright */
-    {"max", M_SYMBOL, IN_MATH, "max"}, {"min", M_SYMBOL, IN_MATH, "min"},
-    {"lim", M_SYMBOL, IN_MATH, "lim"}, {"sup", M_SYMBOL, IN_MATH, "sup"},
-    {"det", M_SYMBOL, IN_MATH, "det"}, {"exp", M_SYMBOL, IN_MATH, "exp"},
-    {"log", M_SYMBOL, IN_MATH, "log"}, {"ln", M_SYMBOL, IN_MATH, "ln"},
-    {"sin", M_SYMBOL, IN_MATH, "sin"}, {"cos", M_SYMBOL, IN_MATH, "cos"},
-    {"tanh", M_SYMBOL, IN_MATH, "tanh"}, {"cosh", M_SYMBOL, IN_MATH, "cosh"},
-    {"sinh", M_SYMBOL, IN_MATH, "sinh"}, {"arg", M_SYMBOL, IN_MATH, "arg"},
+    {"max", M_SYMBOL, IN_MATH, "max"},
+    {"min", M_SYMBOL, IN_MATH, "min"},
+    {"lim", M_SYMBOL, IN_MATH, "lim"},
+    {"sup", M_SYMBOL, IN_MATH, "sup"},
+    {"det", M_SYMBOL, IN_MATH, "det"},
+    {"exp", M_SYMBOL, IN_MATH, "exp"},
+    {"log", M_SYMBOL, IN_MATH, "log"},
+    {"ln", M_SYMBOL, IN_MATH, "ln"},
+    {"sin", M_SYMBOL, IN_MATH, "sin"},
+    {"cos", M_SYMBOL, IN_MATH, "cos"},
+    {"tanh", M_SYMBOL, IN_MATH, "tanh"},
+    {"cosh", M_SYMBOL, IN_MATH, "cosh"},
+    {"sinh", M_SYMBOL, IN_MATH, "sinh"},
+    {"arg", M_SYMBOL, IN_MATH, "arg"},
     {"cot", M_SYMBOL, IN_MATH, "cot"},
     /* fonts and text */
-    {"mathrm", M_FONT, IN_MATH, NULL}, {"mathit", M_FONT, IN_MATH, NULL},
-    {"mathbf", M_FONT, IN_MATH, NULL}, {"mathcal", M_FONT, IN_MATH, NULL},
+    {"mathrm", M_FONT, IN_MATH, NULL},
+    {"mathit", M_FONT, IN_MATH, NULL},
+    {"mathbf", M_FONT, IN_MATH, NULL},
+    {"mathcal", M_FONT, IN_MATH, NULL},
     {"mathbb", M_FONT, IN_MATH, NULL},
-    {"text", M_TEXT, IN_MATH, NULL}, {"emph", M_TEXT, IN_TEXT, NULL},
-    {"textit", M_TEXT, IN_TEXT, NULL}, {"textbf", M_TEXT, IN_TEXT, NULL},
+    {"text", M_TEXT, IN_MATH, NULL},
+    {"emph", M_TEXT, IN_TEXT, NULL},
+    {"textit", M_TEXT, IN_TEXT, NULL},
+    {"textbf", M_TEXT, IN_TEXT, NULL},
     {"texttt", M_TEXT, IN_TEXT, NULL},
     /* accents: the combining character after the argument */
-    {"hat", M_ACCENT, IN_MATH, "\xcc\x82"}, {"widehat", M_ACCENT, IN_MATH, "\xcc\x82"},
+    {"hat", M_ACCENT, IN_MATH, "\xcc\x82"},
+    {"widehat", M_ACCENT, IN_MATH, "\xcc\x82"},
     {"tilde", M_ACCENT, IN_MATH, "\xcc\x83"},
-    {"bar", M_ACCENT, IN_MATH, "\xcc\x84"}, {"dot", M_ACCENT, IN_MATH, "\xcc\x87"},
-    {"sqrt", M_SQRT, IN_MATH, "√"}, {"frac", M_FRAC, IN_MATH, NULL},
-    {"left", M_DELIM, IN_MATH, NULL}, {"right", M_DELIM, IN_MATH, NULL},
+    {"bar", M_ACCENT, IN_MATH, "\xcc\x84"},
+    {"dot", M_ACCENT, IN_MATH, "\xcc\x87"},
+    {"sqrt", M_SQRT, IN_MATH, "√"},
+    {"frac", M_FRAC, IN_MATH, NULL},
+    {"left", M_DELIM, IN_MATH, NULL},
+    {"right", M_DELIM, IN_MATH, NULL},
     /* the paper's numbering */
-    {"eqref", M_EQREF, IN_TEXT, NULL}, {"PaperRefOr", M_REF, IN_TEXT, NULL},
+    {"eqref", M_EQREF, IN_TEXT, NULL},
+    {"PaperRefOr", M_REF, IN_TEXT, NULL},
 };
 #define NMACROS ((int)(sizeof MACROS / sizeof MACROS[0]))
 
@@ -98,16 +146,19 @@ static const macro MACROS[] = {
 static const char *control_symbol(char c, int math)
 {
     switch (c) {
-    case ',': case ';': case ':': case ' ': return " ";
-    case '!': return "";
-    case '%': return "%";
-    case '&': return "&";
-    case '#': return "#";
-    case '_': return "_";
-    case '{': return "{";
-    case '}': return "}";
-    case '|': return math ? "‖" : NULL;
-    default: return NULL;
+        case ',':
+        case ';':
+        case ':':
+        case ' ': return " ";
+        case '!': return "";
+        case '%': return "%";
+        case '&': return "&";
+        case '#': return "#";
+        case '_': return "_";
+        case '{': return "{";
+        case '}': return "}";
+        case '|': return math ? "‖" : NULL;
+        default: return NULL;
     }
 }
 
@@ -256,20 +307,20 @@ static void operand(renderer *r, const char *before)
 static void macro_call(renderer *r, const macro *m, int math)
 {
     switch (m->kind) {
-    case M_SYMBOL: emits(r, m->plain); break;
-    case M_FONT: group(r, 1); break;
-    case M_TEXT: group(r, 0); break;
-    case M_ACCENT: operand(r, NULL), emits(r, m->plain); break;
-    case M_SQRT: operand(r, m->plain); break;
-    case M_FRAC: operand(r, NULL), emits(r, "/"), operand(r, NULL); break;
-    case M_EQREF: reference(r, 1); break;
-    case M_REF: reference(r, 0); break;
-    case M_DELIM:
-        if (*r->p && strchr("()[]|.", *r->p))
-            emit(r, r->p, *r->p != '.'), r->p++;
-        else
-            fail(r, "a delimiter expected after \\left or \\right");
-        break;
+        case M_SYMBOL: emits(r, m->plain); break;
+        case M_FONT: group(r, 1); break;
+        case M_TEXT: group(r, 0); break;
+        case M_ACCENT: operand(r, NULL), emits(r, m->plain); break;
+        case M_SQRT: operand(r, m->plain); break;
+        case M_FRAC: operand(r, NULL), emits(r, "/"), operand(r, NULL); break;
+        case M_EQREF: reference(r, 1); break;
+        case M_REF: reference(r, 0); break;
+        case M_DELIM:
+            if (*r->p && strchr("()[]|.", *r->p))
+                emit(r, r->p, *r->p != '.'), r->p++;
+            else
+                fail(r, "a delimiter expected after \\left or \\right");
+            break;
     }
     (void)math;
 }

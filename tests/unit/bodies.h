@@ -27,14 +27,14 @@
 #include <stdio.h>
 
 #define BODIES_SEED 20261123u
-#define BODIES_GENERAL 6            /* general bodies after the paper's */
-#define BODIES_STIFF 4              /* hard bodies after the general ones */
+#define BODIES_GENERAL 6 /* general bodies after the paper's */
+#define BODIES_STIFF 4   /* hard bodies after the general ones */
 #define BODIES_COUNT (1 + BODIES_GENERAL + BODIES_STIFF)
 
 typedef struct {
-    double I[9];     /* rows as printed */
+    double I[9]; /* rows as printed */
     double w0[2];
-    char name[16];   /* "paper" or "body1" .. */
+    char name[16]; /* "paper" or "body1" .. */
 } body;
 
 /* splitmix64: a fixed, documented generator, so the family is the same on every platform. */
@@ -91,14 +91,16 @@ static inline void body_general(uint32_t seed, int k, body *b)
         const double a = 1.5707963267948966 * ((k % 4) + body_uniform(&s, 0.2, 0.8));
         b->w0[0] = r * cos(a);
         b->w0[1] = r * sin(a);
-    } while (fabs(I[6] * b->w0[0] + I[7] * b->w0[1]) < 0.2 * r * bn); /* far from a steady rotation */
+    } while (fabs(I[6] * b->w0[0] + I[7] * b->w0[1]) <
+             0.2 * r * bn); /* far from a steady rotation */
     snprintf(b->name, sizeof b->name, "body%d", k);
 }
 
 /* I_m = Q diag(l1, l1 / cond) Q^T, Q the rotation by a, with I12 = I21 exactly. */
 static inline void body_conditioned(uint64_t *s, double cond_lo, double cond_hi, double *I)
 {
-    const double l1 = body_uniform(s, 0.6, 2.0), l2 = l1 / exp(body_uniform(s, log(cond_lo), log(cond_hi)));
+    const double l1 = body_uniform(s, 0.6, 2.0),
+                 l2 = l1 / exp(body_uniform(s, log(cond_lo), log(cond_hi)));
     const double a = body_uniform(s, 0.3, 1.3), c = cos(a), sn = sin(a);
     I[0] = c * c * l1 + sn * sn * l2;
     I[4] = sn * sn * l1 + c * c * l2;
@@ -160,7 +162,8 @@ static inline void body_get(int k, body *b)
 /* One line describing the body, for test output and the ledger. */
 static inline void body_describe(const body *b, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s: I = [%.4g %.4g %.4g; %.4g %.4g %.4g; %.4g %.4g %.4g], w0 = (%.4g, %.4g)", b->name,
+    snprintf(buf, len,
+             "%s: I = [%.4g %.4g %.4g; %.4g %.4g %.4g; %.4g %.4g %.4g], w0 = (%.4g, %.4g)", b->name,
              b->I[0], b->I[1], b->I[2], b->I[3], b->I[4], b->I[5], b->I[6], b->I[7], b->I[8],
              b->w0[0], b->w0[1]);
 }

@@ -17,9 +17,10 @@ static inline int check_body_model(const body *b, sus_model *m)
     return -1;
 }
 
-/* The body's own time against the paper's: k_paper / k, k the rate at which the motion from w0 nears
- * its steady rotation (exact.h), the time scale of (ContDyn) on that body. A step or a span fixed on
- * the paper's body, times this, has the same h k on every body (the stiff ones' k reaches 1e7). */
+/* The body's own time against the paper's: k_paper / k, k the rate at which the motion from w0
+ * nears its steady rotation (exact.h), the time scale of (ContDyn) on that body. A step or a span
+ * fixed on the paper's body, times this, has the same h k on every body (the stiff ones' k reaches
+ * 1e7). */
 static inline double check_body_time(const sus_model *m, const double w0[2])
 {
     sus_exact paper, ex;

@@ -1,8 +1,8 @@
 /* Exact products of doubles for the tests' yardsticks, by Dekker's algorithm with Veltkamp's
- * splitting (no fma, so independent of the library's sus_cross_diff): a b = p + e exactly, p = fl(a b).
- * With them a b - c d, the form of |I_m| and of O_0's coefficients, is known to far below a rounding
- * however much the two products cancel, so a near-singular I_m can be checked to its last bit.
- * Valid away from overflow and underflow (entries of size 2^-400 .. 2^400); the build's
+ * splitting (no fma, so independent of the library's sus_cross_diff): a b = p + e exactly, p = fl(a
+ * b). With them a b - c d, the form of |I_m| and of O_0's coefficients, is known to far below a
+ * rounding however much the two products cancel, so a near-singular I_m can be checked to its last
+ * bit. Valid away from overflow and underflow (entries of size 2^-400 .. 2^400); the build's
  * -ffp-contract=off keeps the splitting's products and sums apart. */
 #ifndef SUSLOV_CHECK_EXACT_H
 #define SUSLOV_CHECK_EXACT_H
@@ -33,9 +33,10 @@ static inline void check_two_sum(double a, double b, double *s, double *e)
     *e = (a - (*s - bb)) + (b - bb);
 }
 
-/* a b - c d = (p1 - p2) + (e1 - e2) with p1 - p2 = s + t exactly: the only roundings are of the small
- * remainder t + e1 - e2 (two, each 2^-53 of a number at most 2^-52 (|a b| + |c d|)) and of the final
- * sum into long double, so the result is within 2^-64 |a b - c d| + 2^-104 (|a b| + |c d|) of it. */
+/* a b - c d = (p1 - p2) + (e1 - e2) with p1 - p2 = s + t exactly: the only roundings are of the
+ * small remainder t + e1 - e2 (two, each 2^-53 of a number at most 2^-52 (|a b| + |c d|)) and of
+ * the final sum into long double, so the result is within 2^-64 |a b - c d| + 2^-104 (|a b| + |c
+ * d|) of it. */
 static inline long double check_cross_diff_exact(double a, double b, double c, double d)
 {
     double p1, e1, p2, e2, s, t;

@@ -5,8 +5,8 @@
  *    above it gives that order and 1e-6 below it the next (the bound moves by 5e-7 there);
  *  - a step's error estimate (stats.residual) is max over the two groups, w rows and quaternion
  *    rows, of T_p^2 / T_{p-1}, T_n = the largest entry of the group's coefficient n scaled by h^n.
- *    The coefficients are computed here in long double from (ContDyn) and from q' = 1/2 q (x) (0, w),
- *    dq(0) = 1; on every body of the family, from w0 and from w0 turned, at three tolerances and
+ *    The coefficients are computed here in long double from (ContDyn) and from q' = 1/2 q (x) (0,
+ * w), dq(0) = 1; on every body of the family, from w0 and from w0 turned, at three tolerances and
  *    three steps, the step's estimate matches to the double recursion's rounding, 12 p u cond(I_m)
  *    relative (estimate_error). A group's entry left out or a coefficient index off by one moves it
  *    by O(1). */
@@ -31,15 +31,16 @@ static void order_rule(void)
         const int below = sus_step_taylor_adaptive_order(tol * (1.0 - 1e-6));
         bad += above != p || below != (p < 20 ? p + 2 : 20);
     }
-    const int loose = sus_step_taylor_adaptive_order(0.5), tight = sus_step_taylor_adaptive_order(1e-300);
+    const int loose = sus_step_taylor_adaptive_order(0.5),
+              tight = sus_step_taylor_adaptive_order(1e-300);
     CHECK(bad == 0 && loose == 6 && tight == 20,
           "taylor-adaptive's order is the smallest even p in 6 .. 20 "
           "with p >= -ln(tol)/2 + 3: %d of 8 boundaries off; tol 0.5 -> %d (6), 1e-300 -> %d (20)",
           bad, loose, tight);
 }
 
-/* The largest entry of coefficient n of each group, scaled by h^n, up to order p, in long double from
- * (ContDyn) with |I_m| exact (check_exact.h) and from q' = 1/2 q (x) (0, w), q(0) = 1. */
+/* The largest entry of coefficient n of each group, scaled by h^n, up to order p, in long double
+ * from (ContDyn) with |I_m| exact (check_exact.h) and from q' = 1/2 q (x) (0, w), q(0) = 1. */
 static void group_sizes(const double I[9], const double w0[2], ld h, int p, ld Tw[], ld Tq[])
 {
     const ld d = check_cross_diff_exact(I[0], I[4], I[1], I[3]);
@@ -57,19 +58,20 @@ static void group_sizes(const double I[9], const double w0[2], ld h, int p, ld T
                 g[2] += Q[0] * a[1] + Q[3] * a[0];
                 g[3] += Q[1] * a[1] - Q[2] * a[0];
             }
-            for (int k = 0; k < 2; k++) w[n + 1][k] = f[k] / (n + 1);
-            for (int k = 0; k < 4; k++) q[n + 1][k] = g[k] / (2 * (n + 1));
+            for (int k = 0; k < 2; k++)
+                w[n + 1][k] = f[k] / (n + 1);
+            for (int k = 0; k < 4; k++)
+                q[n + 1][k] = g[k] / (2 * (n + 1));
         }
         Tw[n] = fmaxl(fabsl(w[n][0]), fabsl(w[n][1])) * hn;
-        Tq[n] = fmaxl(fmaxl(fabsl(q[n][0]), fabsl(q[n][1])), fmaxl(fabsl(q[n][2]), fabsl(q[n][3]))) * hn;
+        Tq[n] =
+            fmaxl(fmaxl(fabsl(q[n][0]), fabsl(q[n][1])), fmaxl(fabsl(q[n][2]), fabsl(q[n][3]))) *
+            hn;
         hn *= h;
     }
 }
 
-static ld group_estimate(ld last2, ld last)
-{
-    return last2 > 0 ? last * last / last2 : last;
-}
+static ld group_estimate(ld last2, ld last) { return last2 > 0 ? last * last / last2 : last; }
 
 /* cond(I_m), the ratio of its eigenvalues. */
 static double condition(const double I[9])
@@ -79,10 +81,12 @@ static double condition(const double I[9])
 }
 
 /* |estimate - expected| over its rounding for one step from w; -1 if the step fails. The double
- * recursion rounds each coefficient by a few u (4 u) per order it builds on, so p of them; where fA w_n
- * cancels (fA = J I_m / |I_m|: |fA w| can be |fA| |w| / cond(I_m)) that is relative to |fA| |w_n|, up
- * to cond(I_m) times the coefficient; T_p^2 / T_{p-1} triples it: 12 p u cond(I_m) relative. */
-static double estimate_error(const sus_model *m, const double I[9], const double w0[2], double tol, double h)
+ * recursion rounds each coefficient by a few u (4 u) per order it builds on, so p of them; where fA
+ * w_n cancels (fA = J I_m / |I_m|: |fA w| can be |fA| |w| / cond(I_m)) that is relative to |fA|
+ * |w_n|, up to cond(I_m) times the coefficient; T_p^2 / T_{p-1} triples it: 12 p u cond(I_m)
+ * relative. */
+static double estimate_error(const sus_model *m, const double I[9], const double w0[2], double tol,
+                             double h)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
     sus_tol_work *wk = ops->alloc(m, tol, w0);
@@ -92,7 +96,8 @@ static double estimate_error(const sus_model *m, const double I[9], const double
     sus_stepper_stats st;
     const int rc = wk ? ops->step(wk, h, &t, w, &lam, &att, &st) : -1;
     ops->free(wk);
-    if (rc != SUS_STEPPER_OK) return -1.0;
+    if (rc != SUS_STEPPER_OK)
+        return -1.0;
     const int p = ops->order(tol);
     ld Tw[NMAX + 1], Tq[NMAX + 1];
     group_sizes(I, w0, st.det, p, Tw, Tq); /* st.det: the step taken */
@@ -111,7 +116,8 @@ static void estimates(void)
         body b;
         sus_model m;
         body_get(k, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         const double s = check_body_time(&m, b.w0);
         for (int j = 0; j < 2; j++) {
             /* w0, and w0 turned by a quarter turn (the other component leads) */
@@ -125,11 +131,14 @@ static void estimates(void)
     }
     CHECK(worst <= 1.0,
           "taylor-adaptive's estimate is max over the w and quaternion rows of T_p^2/T_{p-1} "
-          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst difference %.2g of its rounding, "
-          "12 p u cond(I_m) (at most 1)", n, BODIES_COUNT, worst);
+          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst difference %.2g of its "
+          "rounding, "
+          "12 p u cond(I_m) (at most 1)",
+          n, BODIES_COUNT, worst);
 }
 
-/* One step of taylor-adaptive from (t, w) towards t_end with a fresh workspace, or continuing wk. */
+/* One step of taylor-adaptive from (t, w) towards t_end with a fresh workspace, or continuing wk.
+ */
 static int one_step(sus_tol_work *wk, double t_end, double *t, double w[3], sus_stepper_stats *st)
 {
     double lam;
@@ -152,7 +161,8 @@ static void step_size_rules(void)
         body b;
         sus_model m;
         body_get(k, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         for (int j = 0; j < 2; j++) {
             const double tol = j ? 1e-12 : 1e-6;
             const int p = ops->order(tol);
@@ -166,7 +176,8 @@ static void step_size_rules(void)
             }
             const double want = s1.det * fmin(5.0, 0.9 * pow(tol / s1.residual, 1.0 / (p + 1)));
             const double rho = sus_step_taylor_radius(&m, w);
-            if (one_step(wk, 1e3, &t, w, &s2) == SUS_STEPPER_OK && s2.iterations == 0 && want < 0.98 * rho) {
+            if (one_step(wk, 1e3, &t, w, &s2) == SUS_STEPPER_OK && s2.iterations == 0 &&
+                want < 0.98 * rho) {
                 wn = fmax(wn, fabs(s2.det - want) / want);
                 nn++;
             }
@@ -181,7 +192,8 @@ static void step_size_rules(void)
             double w2[3] = {b.w0[0], b.w0[1], 0.0};
             t = 0.0;
             wk = ops->alloc(&m, tol, w2);
-            if (wk && e0 > tol && one_step(wk, h0, &t, w2, &s1) == SUS_STEPPER_OK && s1.iterations == 1) {
+            if (wk && e0 > tol && one_step(wk, h0, &t, w2, &s1) == SUS_STEPPER_OK &&
+                s1.iterations == 1) {
                 wr = fmax(wr, fabs(s1.det - h0 * sh) / (h0 * sh));
                 nr++;
             }
@@ -192,11 +204,11 @@ static void step_size_rules(void)
           "taylor-adaptive's next step is h min(5, 0.9 (tol/err)^(1/(p+1))) "
           "on %d second steps (at least %d): worst relative difference %.2g (at most 1e-12)",
           nn, BODIES_COUNT, wn);
-    CHECK(
-        nr >= BODIES_COUNT && wr <= 1e-12,
-        "taylor-adaptive's retry is h max(0.1, min(0.9, 0.9 (tol/err)^"
-        "(1/(p+1)))) on %d steps rejected once (at least %d): worst relative difference %.2g (at most 1e-12)",
-        nr, BODIES_COUNT, wr);
+    CHECK(nr >= BODIES_COUNT && wr <= 1e-12,
+          "taylor-adaptive's retry is h max(0.1, min(0.9, 0.9 (tol/err)^"
+          "(1/(p+1)))) on %d steps rejected once (at least %d): worst relative difference %.2g (at "
+          "most 1e-12)",
+          nr, BODIES_COUNT, wr);
 }
 
 /* Every accepted step stays inside 0.99 times the radius the series is proved to converge in at its
@@ -204,15 +216,16 @@ static void step_size_rules(void)
  * estimate allows: at tol 0.1 (order 6) and at tol 1e30, which no estimate exceeds, so that the
  * radius alone limits the steps as they try to grow five-fold; |w| = 3 times each body's w0, over
  * [0, 20 s] in the body's own time s (check_body_time, at most 10^4 steps a run); the family and a
- * body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap radius test K |w| h < 1 is then
- * far from the bound a slip in K would give). A run that settles
- * on the steady rotation (step_taylor_adaptive.c) ends in one step that sums the quaternion's
- * series for a constant w in closed form, whose radius is infinite: that step, the last of its
- * run with w the steady rotation (the closed form's limit, exact.h, to 64 u), is counted apart;
- * every run must still take series steps first (at least one each): each starts from whichever of
+ * body whose I_m is near singular (det 0.19, ||A|| about 10: the cheap radius test K |w| h < 1 is
+ * then far from the bound a slip in K would give). A run that settles on the steady rotation
+ * (step_taylor_adaptive.c) ends in one step that sums the quaternion's series for a constant w in
+ * closed form, whose radius is infinite: that step, the last of its run with w the steady rotation
+ * (the closed form's limit, exact.h, to 64 u), is counted apart; every run must still take series
+ * steps first (at least one each): each starts from whichever of
  * +-3 w0 has g(w) = b . (A w) >= 0, the repelling side, from which the motion crosses the ellipse
  * (the radius is the same at -w). */
-static int settled_on(const sus_model *m, const double w0[2], const double w[3], double t, double t_end)
+static int settled_on(const sus_model *m, const double w0[2], const double w[3], double t,
+                      double t_end)
 {
     sus_exact ex;
     double ws[2];
@@ -230,11 +243,14 @@ static void steps_within_radius(void)
         const int k = i / 2;
         body b = {{1.0, 0.9, 0.3, 0.9, 1.0, 0.2, 0.1, 0.4, 1.0}, {0.3, -0.5}, "near-singular"};
         sus_model m;
-        if (k < BODIES_COUNT) body_get(k, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (k < BODIES_COUNT)
+            body_get(k, &b);
+        if (check_body_model(&b, &m) != 0)
+            continue;
         const double *I = b.I, x = b.w0[0], y = b.w0[1];
         const double g = I[6] * (-I[1] * x - I[4] * y) + I[7] * (I[0] * x + I[3] * y); /* |I_m| g */
-        const double s = g * (I[0] * I[4] - I[1] * I[3]) < 0.0 ? -3.0 : 3.0; /* g(w) >= 0: see above */
+        const double s =
+            g * (I[0] * I[4] - I[1] * I[3]) < 0.0 ? -3.0 : 3.0; /* g(w) >= 0: see above */
         double w[3] = {s * b.w0[0], s * b.w0[1], 0.0}, t = 0.0, lam;
         const double w0[2] = {w[0], w[1]}, t_end = 20.0 * check_body_time(&m, w);
         sus_attitude att;
@@ -262,16 +278,19 @@ static void steps_within_radius(void)
     }
     CHECK(failed == 0 && worst <= 0.99 * (1.0 + 1e-15),
           "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, "
-          "on %d bodies and a near-singular I_m: %d series steps, the longest %.4g of the proved radius (at "
-          "most 0.99), %d of %d runs failed or took no series step (%d settled on the steady rotation)",
+          "on %d bodies and a near-singular I_m: %d series steps, the longest %.4g of the proved "
+          "radius (at "
+          "most 0.99), %d of %d runs failed or took no series step (%d settled on the steady "
+          "rotation)",
           BODIES_COUNT, n, worst, failed, runs, settled);
 }
 
-/* The unit top right singular vector of (ContDyn)'s A = [-I12 -I22; I11 I21] / |I_m| (the eigenvector
- * of the largest eigenvalue of A^T A in closed form), from the printed entries. */
+/* The unit top right singular vector of (ContDyn)'s A = [-I12 -I22; I11 I21] / |I_m| (the
+ * eigenvector of the largest eigenvalue of A^T A in closed form), from the printed entries. */
 static void top_singular(const double I[9], double v[2])
 {
-    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
+    const double d =
+        (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double a = -I[1] / d, b = -I[4] / d, c = I[0] / d, e = I[3] / d;
     const double p = a * a + c * c, r = b * b + e * e, q = a * b + c * e;
     const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
@@ -306,7 +325,8 @@ static void cheap_test_window(void)
         const double side = -v[1] * av0 + v[0] * av1 > 0.0 ? 1e-9 : -1e-9;
         b.I[6] = nb * (v[0] - side * v[1]);
         b.I[7] = nb * (v[1] + side * v[0]);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         for (int i = 0; i < 4; i++) {
             const double a = size[i / 2], s0 = 4.95 * a / ratio[i % 2] * (1.0 - 1e-12);
             double w[3] = {s0 * v[0], s0 * v[1], 0.0}, t = 0.0;
@@ -322,22 +342,24 @@ static void cheap_test_window(void)
             sus_step_taylor_adaptive_type.tol->free(wk);
         }
     }
-    CHECK(worst <= 0.99 * (1.0 + 1e-12),
-          "taylor-adaptive with b and w along A's top singular vector, a step "
-          "proposed just past 1/(K |w|) = rho: %d cases, the longest step %.4g of rho (at most 0.99)",
-          n, worst);
+    CHECK(
+        worst <= 0.99 * (1.0 + 1e-12),
+        "taylor-adaptive with b and w along A's top singular vector, a step "
+        "proposed just past 1/(K |w|) = rho: %d cases, the longest step %.4g of rho (at most 0.99)",
+        n, worst);
 }
 
 /* A step that reaches t_end ends exactly there (stepper.h), also where t + (t_end - t) rounds
  * away from t_end; and a series that overflows (|w| = 1e160: the products in the recursion exceed
- * the doubles) fails with SUS_STEPPER_REJECTED after MAX_TRIES = 12 tries, each retry at most 0.9 times
- * as long as the try before (a NaN estimate asks for 0.9, an infinite one for 0.1). */
+ * the doubles) fails with SUS_STEPPER_REJECTED after MAX_TRIES = 12 tries, each retry at most 0.9
+ * times as long as the try before (a NaN estimate asks for 0.9, an infinite one for 0.1). */
 static void interval_end_and_overflow(void)
 {
     sus_model m;
     body b;
     body_get(1, &b);
-    if (check_body_model(&b, &m) != 0) return;
+    if (check_body_model(&b, &m) != 0)
+        return;
     int exact = 0, rounding = 0, cases = 0;
     for (int i = 1; i <= 40; i++) {
         const double t0 = i / 97.0, te = 1.0 + i / 89.0; /* t_end - t0 rounded: t_end > 2 t0 */
@@ -362,18 +384,20 @@ static void interval_end_and_overflow(void)
     sus_step_taylor_adaptive_type.tol->free(wk);
     CHECK(rc == SUS_STEPPER_REJECTED && st.det <= pow(0.9, 11) * h0 * (1.0 + 1e-12),
           "|w| = 1e160: the series "
-          "overflows; the step fails REJECTED (%d) after its tries shrank to %.3g of the first (at most "
+          "overflows; the step fails REJECTED (%d) after its tries shrank to %.3g of the first (at "
+          "most "
           "0.9^11 = "
           "0.314: eleven retries, each at most 0.9 times the last)",
           rc, rc == SUS_STEPPER_REJECTED ? st.det / h0 : NAN);
 }
 
 /* The driver's report counts the rejected tries of the run (stats.iterations of each step): their
- * total and their largest per step, against the same steps taken by hand, over [0, 20 s] in the body's
- * own time (check_body_time), at tol 1e-10 and 1e-14, where the first try (0.99 rho) is rejected on the
- * paper's body. A body whose proved radius holds every step far inside what the tolerance allows has
- * no rejected try to count (the near-singular I_m: the estimate at the radius is below 1e-16): a NOTE
- * says so, and its totals are compared at 0. Returns the number of differences; *max the largest. */
+ * total and their largest per step, against the same steps taken by hand, over [0, 20 s] in the
+ * body's own time (check_body_time), at tol 1e-10 and 1e-14, where the first try (0.99 rho) is
+ * rejected on the paper's body. A body whose proved radius holds every step far inside what the
+ * tolerance allows has no rejected try to count (the near-singular I_m: the estimate at the radius
+ * is below 1e-16): a NOTE says so, and its totals are compared at 0. Returns the number of
+ * differences; *max the largest. */
 static int report_against_hand(const body *b, const sus_model *m, double tol, int *max)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
@@ -386,7 +410,8 @@ static int report_against_hand(const body *b, const sus_model *m, double tol, in
     long total = 0;
     *max = 0;
     sus_tol_work *wk = ops->alloc(m, cfg.tol, b->w0);
-    for (sus_stepper_stats st; wk && t < t_end && one_step(wk, t_end, &t, w, &st) == SUS_STEPPER_OK;) {
+    for (sus_stepper_stats st;
+         wk && t < t_end && one_step(wk, t_end, &t, w, &st) == SUS_STEPPER_OK;) {
         total += st.iterations;
         *max = st.iterations > *max ? st.iterations : *max;
     }
@@ -401,7 +426,8 @@ static void driver_report(void)
         body b;
         sus_model m;
         body_get(k, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         int seen = 0;
         for (int j = 0; j < 2; j++) {
             int max;
@@ -411,13 +437,18 @@ static void driver_report(void)
         paper = k == 0 ? seen : paper;
         most = seen > most ? seen : most;
         if (seen == 0)
-            printf("NOTE %s: no try rejected at tol 1e-10 or 1e-14 (every step held by the proved radius): "
-                   "rejections compared at 0\n", b.name);
+            printf("NOTE %s: no try rejected at tol 1e-10 or 1e-14 (every step held by the proved "
+                   "radius): "
+                   "rejections compared at 0\n",
+                   b.name);
     }
     CHECK(bad == 0 && paper > 0,
-          "sus_run_tol reports the total and the largest number of rejected tries per step as taken by "
-          "hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 s], at most %d per step, %d on the paper's body): "
-          "%d differ", BODIES_COUNT, most, paper, bad);
+          "sus_run_tol reports the total and the largest number of rejected tries per step as "
+          "taken by "
+          "hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 s], at most %d per step, %d on the "
+          "paper's body): "
+          "%d differ",
+          BODIES_COUNT, most, paper, bad);
 }
 
 static int stop_after_three(void *ctx, const sus_row *row)
@@ -427,13 +458,15 @@ static int stop_after_three(void *ctx, const sus_row *row)
 }
 
 /* An emit that asks to stop ends the run with SUS_RUN_STOPPED after exactly that row, its
- * workspace freed once (a second free would abort here; a missing one is LeakSanitizer's, SAN=1). */
+ * workspace freed once (a second free would abort here; a missing one is LeakSanitizer's, SAN=1).
+ */
 static void driver_stops(void)
 {
     sus_model m;
     body b;
     body_get(2, &b);
-    if (check_body_model(&b, &m) != 0) return;
+    if (check_body_model(&b, &m) != 0)
+        return;
     const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-8, 50.0, 0.5, 0};
     sus_run_report rep;
     int rows = 0;
@@ -444,16 +477,17 @@ static void driver_stops(void)
           rc, SUS_RUN_STOPPED, rows);
 }
 
-/* A run given a budget of steps stops short of t_end with SUS_STEPPER_STEP_LIMIT, reporting the step
- * after the budget, the time reached and the length of the last step taken (stats.det), against the
- * same steps taken by hand. */
+/* A run given a budget of steps stops short of t_end with SUS_STEPPER_STEP_LIMIT, reporting the
+ * step after the budget, the time reached and the length of the last step taken (stats.det),
+ * against the same steps taken by hand. */
 static void driver_budget(void)
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
     sus_model m;
     body b;
     body_get(3, &b);
-    if (check_body_model(&b, &m) != 0) return;
+    if (check_body_model(&b, &m) != 0)
+        return;
     const sus_tol_config cfg = {&m, &sus_step_taylor_adaptive_type, 1e-9, 50.0, 0.0, 5};
     sus_row last;
     sus_run_report rep;
@@ -464,9 +498,10 @@ static void driver_budget(void)
     for (int i = 0; wk && i < 5 && one_step(wk, cfg.t_end, &t, w, &st) == SUS_STEPPER_OK; i++)
         t4 = i == 3 ? t : t4;
     ops->free(wk);
-    CHECK(rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT && rep.step == 6 && rep.t == t &&
-              rep.stats.det == t - t4,
-          "a budget of 5 steps: status %d (STEP_LIMIT %d), step %ld (6), t %.17g (%.17g by hand), last step "
+    CHECK(rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT && rep.step == 6 &&
+              rep.t == t && rep.stats.det == t - t4,
+          "a budget of 5 steps: status %d (STEP_LIMIT %d), step %ld (6), t %.17g (%.17g by hand), "
+          "last step "
           "%.17g (%.17g)",
           rep.status, SUS_STEPPER_STEP_LIMIT, rep.step, rep.t, t, rep.stats.det, t - t4);
 }

@@ -26,15 +26,16 @@ static int count_rows(void *ctx, const sus_row *r)
     return 0;
 }
 
-static sus_model model;          /* the paper's body, from sus_model_init */
-static sus_model model_zero;     /* never initialised: all bits zero */
-static sus_model model_garbage;  /* never initialised: a byte pattern */
-static sus_model model_changed;  /* initialised, then one coefficient changed */
+static sus_model model;         /* the paper's body, from sus_model_init */
+static sus_model model_zero;    /* never initialised: all bits zero */
+static sus_model model_garbage; /* never initialised: a byte pattern */
+static sus_model model_changed; /* initialised, then one coefficient changed */
 
 static void models_init(void)
 {
     char err[128];
-    CHECK(sus_model_init(&model, SUS_PAPER_INERTIA, err, sizeof err) == 0, "the paper's body initialises");
+    CHECK(sus_model_init(&model, SUS_PAPER_INERTIA, err, sizeof err) == 0,
+          "the paper's body initialises");
     memset(&model_zero, 0, sizeof model_zero);
     memset(&model_garbage, 0xA5, sizeof model_garbage);
     model_changed = model;
@@ -64,26 +65,28 @@ static int bad_fixed(int i, sus_run_config *c, const char **what)
     static const sus_stepper_type no_apply = {
         .name = "no-apply", .step = &empty, .desc = {.order = 1, .substeps = 1}};
     switch (i) {
-    case 0: c->every = 0, *what = "every"; return 1;
-    case 1: c->every = -3, *what = "every"; return 1;
-    case 2: c->steps = -5, *what = "steps"; return 1;
-    case 3: c->steps = LONG_MIN, *what = "steps"; return 1;
-    case 4: c->eps = 0.0, *what = "eps"; return 1;
-    case 5: c->eps = -0.1, *what = "eps"; return 1;
-    case 6: c->eps = NAN, *what = "eps"; return 1;
-    case 7: c->eps = INFINITY, *what = "eps"; return 1;
-    case 8: c->eps = 1e300, c->steps = LONG_MAX, *what = "overflows"; return 1;
-    case 9: c->model = NULL, *what = "model"; return 1;
-    case 10: c->model = &model_zero, *what = "model"; return 1;
-    case 11: c->model = &model_garbage, *what = "model"; return 1;
-    case 12: c->model = &model_changed, *what = "model"; return 1;
-    case 13: c->stepper = NULL, *what = "stepper"; return 0; /* exact: no stepper needed */
-    case 14: c->stepper = sus_step_method_by_name("taylor-adaptive")->type, *what = "_tol"; return 0;
-    case 15: c->stepper = &no_apply, *what = "apply"; return 0;
-    case 16: c->stepper = &no_step, *what = "step is NULL"; return 0;
-    case 17: c->recon = (sus_recon)-1, *what = "recon"; return 0;
-    case 18: c->recon = SUS_RECON_COUNT, *what = "recon"; return 0;
-    default: return -1;
+        case 0: c->every = 0, *what = "every"; return 1;
+        case 1: c->every = -3, *what = "every"; return 1;
+        case 2: c->steps = -5, *what = "steps"; return 1;
+        case 3: c->steps = LONG_MIN, *what = "steps"; return 1;
+        case 4: c->eps = 0.0, *what = "eps"; return 1;
+        case 5: c->eps = -0.1, *what = "eps"; return 1;
+        case 6: c->eps = NAN, *what = "eps"; return 1;
+        case 7: c->eps = INFINITY, *what = "eps"; return 1;
+        case 8: c->eps = 1e300, c->steps = LONG_MAX, *what = "overflows"; return 1;
+        case 9: c->model = NULL, *what = "model"; return 1;
+        case 10: c->model = &model_zero, *what = "model"; return 1;
+        case 11: c->model = &model_garbage, *what = "model"; return 1;
+        case 12: c->model = &model_changed, *what = "model"; return 1;
+        case 13: c->stepper = NULL, *what = "stepper"; return 0; /* exact: no stepper needed */
+        case 14:
+            c->stepper = sus_step_method_by_name("taylor-adaptive")->type, *what = "_tol";
+            return 0;
+        case 15: c->stepper = &no_apply, *what = "apply"; return 0;
+        case 16: c->stepper = &no_step, *what = "step is NULL"; return 0;
+        case 17: c->recon = (sus_recon)-1, *what = "recon"; return 0;
+        case 18: c->recon = SUS_RECON_COUNT, *what = "recon"; return 0;
+        default: return -1;
     }
 }
 
@@ -127,8 +130,8 @@ static void fixed_runs(const char *fn, fixed_run_fn run, int with_stepper)
         if (kind || with_stepper)
             refused(fn, what, rc, &rep);
         else /* the exact run takes no stepper and no reconstruction */
-            CHECK(rc == SUS_RUN_OK && rows_seen == 4, "%s ignores %s: rc %d, %ld rows", fn, what, rc,
-                  rows_seen);
+            CHECK(rc == SUS_RUN_OK && rows_seen == 4, "%s ignores %s: rc %d, %ld rows", fn, what,
+                  rc, rows_seen);
     }
     bad_pointers(fn, run, &good);
 }
@@ -157,25 +160,27 @@ static int bad_tol(int i, sus_tol_config *c, const char **what)
     static const sus_tol_ops no_dense = {.alloc = fake_alloc, .step = NULL};
     static const sus_stepper_type half = {.name = "half", .tol = &no_dense};
     switch (i) {
-    case 0: c->stepper = sus_step_method_by_name("midpoint")->type, *what = "fixed-step"; return 1;
-    case 1: c->stepper = NULL, *what = "stepper"; return 1;
-    case 2: c->stepper = &half, *what = "alloc, step or free"; return 1;
-    case 3: c->tol = 0.0, *what = "tol"; return 1;
-    case 4: c->tol = -1e-8, *what = "tol"; return 1;
-    case 5: c->tol = NAN, *what = "tol"; return 1;
-    case 6: c->tol = INFINITY, *what = "tol"; return 1;
-    case 7: c->t_end = NAN, *what = "t_end"; return 1;
-    case 8: c->t_end = -1.0, *what = "t_end"; return 1;
-    case 9: c->t_end = INFINITY, *what = "t_end"; return 1;
-    case 10: c->every_time = NAN, *what = "every_time"; return 1;
-    case 11: c->every_time = -0.5, *what = "every_time"; return 1;
-    case 12: c->every_time = INFINITY, *what = "every_time"; return 1;
-    case 13: c->every_time = 1e-300, *what = "rows"; return 1;
-    case 14: c->max_steps = -1, *what = "max_steps"; return 1;
-    case 15: c->model = NULL, *what = "model"; return 1;
-    case 16: c->model = &model_zero, *what = "model"; return 1;
-    case 17: c->model = &model_changed, *what = "model"; return 1;
-    default: return -1;
+        case 0:
+            c->stepper = sus_step_method_by_name("midpoint")->type, *what = "fixed-step";
+            return 1;
+        case 1: c->stepper = NULL, *what = "stepper"; return 1;
+        case 2: c->stepper = &half, *what = "alloc, step or free"; return 1;
+        case 3: c->tol = 0.0, *what = "tol"; return 1;
+        case 4: c->tol = -1e-8, *what = "tol"; return 1;
+        case 5: c->tol = NAN, *what = "tol"; return 1;
+        case 6: c->tol = INFINITY, *what = "tol"; return 1;
+        case 7: c->t_end = NAN, *what = "t_end"; return 1;
+        case 8: c->t_end = -1.0, *what = "t_end"; return 1;
+        case 9: c->t_end = INFINITY, *what = "t_end"; return 1;
+        case 10: c->every_time = NAN, *what = "every_time"; return 1;
+        case 11: c->every_time = -0.5, *what = "every_time"; return 1;
+        case 12: c->every_time = INFINITY, *what = "every_time"; return 1;
+        case 13: c->every_time = 1e-300, *what = "rows"; return 1;
+        case 14: c->max_steps = -1, *what = "max_steps"; return 1;
+        case 15: c->model = NULL, *what = "model"; return 1;
+        case 16: c->model = &model_zero, *what = "model"; return 1;
+        case 17: c->model = &model_changed, *what = "model"; return 1;
+        default: return -1;
     }
 }
 
@@ -218,17 +223,20 @@ static void extreme_runs(void)
     sus_run_report rep;
     int fin = 1;
     for (int i = 0; i < sus_step_method_count(); i++) {
-        const sus_run_config c = {&model, sus_step_method_get(i)->type, SUS_RECON_EXP_MID, 0.1, 3, 1};
+        const sus_run_config c = {&model, sus_step_method_get(i)->type, SUS_RECON_EXP_MID, 0.1, 3,
+                                  1};
         const int rc = sus_run(&c, big, finite_rows, &fin, &rep);
         fin &= rc == SUS_RUN_OK || rc == SUS_RUN_STEP_FAILED || rc == SUS_RUN_BLOWUP;
     }
-    CHECK(fin, "sus_run from |w0| = 1e200, every fixed-step method: a status, and finite rows only");
+    CHECK(fin,
+          "sus_run from |w0| = 1e200, every fixed-step method: a status, and finite rows only");
     const sus_stepper_type *ta = sus_step_method_by_name("taylor-adaptive")->type;
     const sus_tol_config loose = {&model, ta, 1e300, 1.0, 0.0, 100000};
     const sus_tol_config zero = {&model, ta, 1e-8, 0.0, 0.0, 0};
     const sus_tol_config huge = {&model, ta, 1e-8, 1.0, 0.25, 1000};
     int rc = sus_run_tol(&loose, W0, finite_rows, &fin, &rep);
-    CHECK(fin && (rc == SUS_RUN_OK || rc == SUS_RUN_STEP_FAILED), "sus_run_tol, tol = 1e300: rc %d", rc);
+    CHECK(fin && (rc == SUS_RUN_OK || rc == SUS_RUN_STEP_FAILED), "sus_run_tol, tol = 1e300: rc %d",
+          rc);
     rows_seen = 0;
     rc = sus_run_tol(&zero, W0, count_rows, NULL, &rep);
     CHECK(rc == SUS_RUN_OK && rows_seen == 1, "sus_run_tol, t_end = 0: rc %d, %ld rows (1)", rc,
@@ -271,14 +279,17 @@ static void exact_functions(void)
 {
     sus_exact ex;
     double w[2] = {0, 0};
-    const int bad = (sus_exact_init(NULL, &model, W0) == -1) + (sus_exact_init(&ex, NULL, W0) == -1) +
-                    (sus_exact_init(&ex, &model_zero, W0) == -1) +
-                    (sus_exact_init(&ex, &model_changed, W0) == -1) +
-                    (sus_exact_init(&ex, &model, NULL) == -1) + (sus_exact_init(&ex, &model, W0_NAN) == -1);
+    const int bad =
+        (sus_exact_init(NULL, &model, W0) == -1) + (sus_exact_init(&ex, NULL, W0) == -1) +
+        (sus_exact_init(&ex, &model_zero, W0) == -1) +
+        (sus_exact_init(&ex, &model_changed, W0) == -1) +
+        (sus_exact_init(&ex, &model, NULL) == -1) + (sus_exact_init(&ex, &model, W0_NAN) == -1);
     sus_exact_omega(&ex, 1.0, w);
     CHECK(bad == 6 && isnan(w[0]) && isnan(w[1]),
-          "sus_exact_init refuses a NULL ex, a NULL, uninitialised or changed model, a NULL or NaN w0 "
-          "(%d of 6): -1, and the refused ex gives NaN", bad);
+          "sus_exact_init refuses a NULL ex, a NULL, uninitialised or changed model, a NULL or NaN "
+          "w0 "
+          "(%d of 6): -1, and the refused ex gives NaN",
+          bad);
     w[0] = 0.0;
     sus_exact_omega(NULL, 1.0, w);
     sus_exact_limit(NULL, w + 0);
@@ -323,9 +334,10 @@ static void stepper_functions(void)
                      BAD_STEP(rk4, &model, 0.1, C, &a, w, NULL, &lam, &st) +
                      BAD_STEP(rk4, &model, 0.1, C, &a, w, next, NULL, &st);
     const int ok = sus_stepper_full(rk4, &model, 0.1, C, &a, w, next, &lam, &st);
-    CHECK(nbad == 11 && ok == SUS_STEPPER_OK && isfinite(next[0]),
-          "sus_stepper_full: %d of 11 bad arguments give SUS_STEPPER_BAD_ARGUMENT; control: %d (OK)",
-          nbad, ok);
+    CHECK(
+        nbad == 11 && ok == SUS_STEPPER_OK && isfinite(next[0]),
+        "sus_stepper_full: %d of 11 bad arguments give SUS_STEPPER_BAD_ARGUMENT; control: %d (OK)",
+        nbad, ok);
 }
 
 static void reconstruct_functions(void)
@@ -355,7 +367,7 @@ static void reconstruct_functions(void)
     sus_reconstruct_quat(SUS_RECON_CAYLEY, 0.1, NULL, w, w);
     nan_ok &= isnan(q[0]);
     CHECK(nan_ok, "attitude functions with a NULL pointer or an unknown kind: NaN, never a made-up "
-          "rotation");
+                  "rotation");
     sus_recon k = SUS_RECON_EXP_MID;
     const int r = sus_recon_by_name(NULL, &k) + sus_recon_by_name("cayley", NULL) +
                   sus_recon_by_name("nope", &k);
@@ -378,31 +390,33 @@ static void registry_functions(void)
     CHECK(strcmp(sus_step_attitude_name((sus_attitude_form)99), "?") == 0 &&
               strcmp(sus_step_attitude_name((sus_attitude_form)-1), "?") == 0,
           "sus_step_attitude_name of an unknown form: \"?\"");
-    CHECK(sus_step_method_names(NULL, 8, "|") == NULL && sus_step_method_names(buf, 0, "|") == NULL &&
-              buf[0] == 'x',
+    CHECK(sus_step_method_names(NULL, 8, "|") == NULL &&
+              sus_step_method_names(buf, 0, "|") == NULL && buf[0] == 'x',
           "sus_step_method_names with a NULL buf or len 0: NULL, nothing written");
     const char *s = sus_step_method_names(buf, sizeof buf, NULL);
-    CHECK(s == buf && strlen(buf) == sizeof buf - 1, "sus_step_method_names, NULL sep, 8 bytes: \"%s\"",
-          buf);
+    CHECK(s == buf && strlen(buf) == sizeof buf - 1,
+          "sus_step_method_names, NULL sep, 8 bytes: \"%s\"", buf);
     CHECK(sus_step_methods_write_tsv(NULL) == -1, "sus_step_methods_write_tsv(NULL): -1");
     const sus_stepper_type *rk4 = sus_step_method_by_name("rk4")->type;
     char lab[32] = "x";
-    const int refused = sus_step_method_label(rk4, SUS_RECON_CAYLEY, NULL, 8) == NULL &&
-                        sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, 0) == NULL && lab[0] == 'x' &&
-                        sus_step_method_label(NULL, SUS_RECON_CAYLEY, lab, sizeof lab) == NULL &&
-                        lab[0] == '\0' &&
-                        sus_step_method_label(rk4, SUS_RECON_COUNT, lab, sizeof lab) == NULL &&
-                        sus_step_method_label(rk4, (sus_recon)-1, lab, sizeof lab) == NULL;
+    const int refused =
+        sus_step_method_label(rk4, SUS_RECON_CAYLEY, NULL, 8) == NULL &&
+        sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, 0) == NULL && lab[0] == 'x' &&
+        sus_step_method_label(NULL, SUS_RECON_CAYLEY, lab, sizeof lab) == NULL && lab[0] == '\0' &&
+        sus_step_method_label(rk4, SUS_RECON_COUNT, lab, sizeof lab) == NULL &&
+        sus_step_method_label(rk4, (sus_recon)-1, lab, sizeof lab) == NULL;
     CHECK(refused && sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, sizeof lab) == lab &&
               strcmp(lab, "rk4 + cayley") == 0,
           "sus_step_method_label: NULL for a NULL buf, len 0, a NULL type or an unknown recon; "
-          "control: \"%s\"", lab);
+          "control: \"%s\"",
+          lab);
 }
 
 static void row_functions(void)
 {
     sus_row r = {0};
-    CHECK(sus_keep_last(NULL, &r) != 0 && sus_keep_last(&r, NULL) != 0 && sus_keep_last(&r, &r) == 0,
+    CHECK(sus_keep_last(NULL, &r) != 0 && sus_keep_last(&r, NULL) != 0 &&
+              sus_keep_last(&r, &r) == 0,
           "sus_keep_last: non-zero (stop) for a NULL ctx or row");
     CHECK(sus_row_finite(NULL) == 0 && sus_row_finite(&r) == 1, "sus_row_finite(NULL): 0");
 }

@@ -12,7 +12,7 @@
 static void identity_checks(void)
 {
     sus_attitude a;
-    memset(&a, 0x7f, sizeof a);  /* no field may keep what was there before */
+    memset(&a, 0x7f, sizeof a); /* no field may keep what was there before */
     sus_attitude_identity(&a);
     double R[3][3], q[4];
     sus_attitude_get(&a, R);
@@ -22,9 +22,10 @@ static void identity_checks(void)
         for (int j = 0; j < 3; j++)
             off += a.hi[i][j] != (i == j) || a.lo[i][j] != 0.0 || R[i][j] != (i == j);
     CHECK(off == 0, "the identity attitude: R = hi + lo = I, lo = 0 exactly (%d entries off)", off);
-    CHECK(a.has_q && q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0,
-          "the identity attitude's quaternion is (1, 0, 0, 0) exactly: (%.17g, %g, %g, %g), has_q %d", q[0],
-          q[1], q[2], q[3], a.has_q);
+    CHECK(
+        a.has_q && q[0] == 1.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0,
+        "the identity attitude's quaternion is (1, 0, 0, 0) exactly: (%.17g, %g, %g, %g), has_q %d",
+        q[0], q[1], q[2], q[3], a.has_q);
 }
 
 /* R = hi + lo (reconstruct.h): lo holds the compensated sum's low parts. Here each is a few
@@ -39,7 +40,7 @@ static void sum_checks(void)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             a.hi[i][j] = (i == j) ? 0.75 : 0.5 - 0.25 * j;
-            a.lo[i][j] = ldexp(1.0 + i + 3 * j, -52);  /* nine different small parts */
+            a.lo[i][j] = ldexp(1.0 + i + 3 * j, -52); /* nine different small parts */
         }
     double R[3][3];
     sus_attitude_get(&a, R);
@@ -53,13 +54,15 @@ static void sum_checks(void)
 static void rot_of(const double q[4], double R[3][3])
 {
     const double s = q[0], x = q[1], y = q[2], z = q[3];
-    const double M[3][3] = {{s * s + x * x - y * y - z * z, 2 * (x * y - s * z), 2 * (x * z + s * y)},
-                            {2 * (x * y + s * z), s * s - x * x + y * y - z * z, 2 * (y * z - s * x)},
-                            {2 * (x * z - s * y), 2 * (y * z + s * x), s * s - x * x - y * y + z * z}};
+    const double M[3][3] = {
+        {s * s + x * x - y * y - z * z, 2 * (x * y - s * z), 2 * (x * z + s * y)},
+        {2 * (x * y + s * z), s * s - x * x + y * y - z * z, 2 * (y * z - s * x)},
+        {2 * (x * z - s * y), 2 * (y * z + s * x), s * s - x * x - y * y + z * z}};
     memcpy(R, M, sizeof M);
 }
 
-/* tau(xi) by its closed form: (cay) I + 4/(4 + |xi|^2) (X + X^2/2), or Rodrigues for exp, X = xi^. */
+/* tau(xi) by its closed form: (cay) I + 4/(4 + |xi|^2) (X + X^2/2), or Rodrigues for exp, X = xi^.
+ */
 static void tau_of(sus_recon kind, const double xi[3], double T[3][3])
 {
     const double X[3][3] = {{0, -xi[2], xi[1]}, {xi[2], 0, -xi[0]}, {-xi[1], xi[0], 0}};

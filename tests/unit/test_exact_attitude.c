@@ -16,8 +16,8 @@
  *   - ROUND_STEP = 34 u per step in dist(R, .): the quaternion product q (x) dq rounds each
  *     component by at most 4 u (four products summed), the sum of the series and the normalisation
  *     add 2 u, so |dq| moves by about 12 u, and dist <= 2 sqrt2 |dq|;
- *   - ROUND_W = 16 u r |L^{-1}|_F for w: w = L^{-T} u, |u| = r, and each of the two ways of computing
- *     it rounds a handful of times (exact_fast.h), every rounding relative to that scale;
+ *   - ROUND_W = 16 u r |L^{-1}|_F for w: w = L^{-T} u, |u| = r, and each of the two ways of
+ * computing it rounds a handful of times (exact_fast.h), every rounding relative to that scale;
  *   - COND = 32 u per radian turned: a step that turns R by the angle theta = h |w| computes that
  *     angle in double, so its result carries about u theta (the problem's conditioning); in the
  *     tail, the angle carries the roundings of w_inf (16 u, as above, relative), of T - t* and of
@@ -44,15 +44,12 @@
 #define ROUND_W 16.0
 #define COND 32.0
 
-static const sus_tol_ops *ops(void)
-{
-    return sus_step_exact_attitude_type.tol;
-}
+static const sus_tol_ops *ops(void) { return sus_step_exact_attitude_type.tol; }
 
 /* The family's bodies, then two of the paper's own altered to stress the step rule: "slow" with a
- * third row a tenth of the paper's (k ten times smaller: steps so long that the rotation over a step,
- * not w's singularity, bounds the series' terms) and "fast" with w0 eight times the paper's (k and
- * the rotation eight times larger). */
+ * third row a tenth of the paper's (k ten times smaller: steps so long that the rotation over a
+ * step, not w's singularity, bounds the series' terms) and "fast" with w0 eight times the paper's
+ * (k and the rotation eight times larger). */
 #define TEST_BODIES (BODIES_COUNT + 2)
 
 static void test_body(int j, body *b)
@@ -91,7 +88,8 @@ static void fast_omega_agrees(void)
         sus_exact ex;
         sus_exact_fast f;
         body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0) || sus_exact_fast_init(&f, &ex))
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0) ||
+            sus_exact_fast_init(&f, &ex))
             continue;
         const double span = 60.0 / fmax(ex.k, 1e-3); /* the whole transient and the tail */
         for (int i = 1; i <= 4000; i++) {
@@ -102,8 +100,10 @@ static void fast_omega_agrees(void)
             worst = fmax(worst, hypot(w1[0] - w2[0], w1[1] - w2[1]) / (ROUND_W * U * w_scale(&ex)));
         }
     }
-    CHECK(worst <= 1.0, "exact_fast's w(t) within %g u r |L^-1|_F of sus_exact_omega on %d bodies, t in (0, "
-          "60/k]: worst %.3g of that", ROUND_W, BODIES_COUNT, worst);
+    CHECK(worst <= 1.0,
+          "exact_fast's w(t) within %g u r |L^-1|_F of sus_exact_omega on %d bodies, t in (0, "
+          "60/k]: worst %.3g of that",
+          ROUND_W, BODIES_COUNT, worst);
 }
 
 /* ---- the tail's bound ---- */
@@ -147,28 +147,38 @@ static void tail_bound_holds(void)
             continue;
         const double t0 = fmax(0.0, -ex.sigma * ex.s0 / ex.k); /* a(t) >= 0 from here on */
         for (int j = 0; j < 4; j++) {
-            const double t = t0 + j * 5.0 / ex.k, B = sus_exact_tail_bound(&ex, t), I = tail_integral(&ex, t);
+            const double t = t0 + j * 5.0 / ex.k, B = sus_exact_tail_bound(&ex, t),
+                         I = tail_integral(&ex, t);
             over = fmax(over, I / B);
             /* for a >= 0: |u - u_inf| >= 2 E / sqrt2, and |L^{-T} x| >= sigma_min |x| */
             under = fmin(under, I / (B * norm_ratio(&ex) / sqrt(2.0)));
         }
         for (int j = 0; j < 3; j++) {
             const double budget = pow(10.0, -4.0 - 5.0 * j);
-            inv = fmax(inv, fabs(sus_exact_tail_bound(&ex, sus_exact_tail_time(&ex, budget)) / budget - 1.0));
+            inv = fmax(
+                inv,
+                fabs(sus_exact_tail_bound(&ex, sus_exact_tail_time(&ex, budget)) / budget - 1.0));
         }
     }
-    CHECK(over <= 1.0 + 1e-9, "the tail's bound is above the integral of |w - w_inf| (Simpson, 20000 panels) "
-          "on %d bodies, 4 times each: largest integral / bound %.6f", BODIES_COUNT, over);
-    CHECK(under >= 1.0 - 1e-9, "and not loose beyond the derivation's factor (sigma_min |L^-1|_F^-1 / sqrt2 "
-          "for a >= 0): smallest integral / (bound x factor) %.4f", under);
-    CHECK(inv <= 1e-12, "the bound at sus_exact_tail_time(budget) is the budget, 1e-4 ... 1e-14: worst "
-          "relative difference %.3g", inv);
+    CHECK(over <= 1.0 + 1e-9,
+          "the tail's bound is above the integral of |w - w_inf| (Simpson, 20000 panels) "
+          "on %d bodies, 4 times each: largest integral / bound %.6f",
+          BODIES_COUNT, over);
+    CHECK(under >= 1.0 - 1e-9,
+          "and not loose beyond the derivation's factor (sigma_min |L^-1|_F^-1 / sqrt2 "
+          "for a >= 0): smallest integral / (bound x factor) %.4f",
+          under);
+    CHECK(inv <= 1e-12,
+          "the bound at sus_exact_tail_time(budget) is the budget, 1e-4 ... 1e-14: worst "
+          "relative difference %.3g",
+          inv);
 }
 
 /* ---- steps against the reference ---- */
 
 /* R0 Phi with Phi the reference's exact increment over [t0, t1]. */
-static void exact_after(const sus_exact *ex, const double R0[3][3], double t0, double t1, double R[3][3])
+static void exact_after(const sus_exact *ex, const double R0[3][3], double t0, double t1,
+                        double R[3][3])
 {
     double Phi[3][3];
     sus_refatt_increment(ex, t0, t1, Phi);
@@ -233,11 +243,16 @@ static void steps_within_estimates(void)
         for (int e = 4; e <= 13; e += 3)
             run_checked(&m, b.w0, pow(10.0, -e), 50.0, &c);
     }
-    CHECK(c.local <= 1.0, "every step's local error (against the reference's increment) is at most its "
-          "estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate %.3g over %ld steps, %d "
-          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13", ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
-    CHECK(c.global <= 1.0, "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio "
-          "%.3g", c.global);
+    CHECK(c.local <= 1.0,
+          "every step's local error (against the reference's increment) is at most its "
+          "estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate %.3g over %ld steps, "
+          "%d "
+          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13",
+          ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
+    CHECK(c.global <= 1.0,
+          "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio "
+          "%.3g",
+          c.global);
 }
 
 /* ---- the method's own rules: the budget ---- */
@@ -247,7 +262,8 @@ typedef struct {
     double step; /* worst estimate / share over the integration steps */
 } budget_check;
 
-static void run_budget(const sus_model *m, const double w0[2], double tol, double T, budget_check *c)
+static void run_budget(const sus_model *m, const double w0[2], double tol, double T,
+                       budget_check *c)
 {
     sus_tol_work *wk = ops()->alloc(m, tol, w0);
     double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam, sum = 0.0;
@@ -280,10 +296,14 @@ static void budget_kept(void)
             run_budget(&m, b.w0, pow(10.0, -e), 400.0, &c);
         }
     }
-    CHECK(c.step <= 1.0 + 1e-12, "every step's estimate is at most its share of the budget, rate h: worst "
-          "ratio %.15g (%d bodies, TOL 1e-4, 1e-8, 1e-12, T = 50 and 400)", c.step, TEST_BODIES);
-    CHECK(c.sum <= 1.0 + 1e-12, "the steps' estimates and the tail's bound sum to at most TOL: worst sum / "
-          "TOL %.15g", c.sum);
+    CHECK(c.step <= 1.0 + 1e-12,
+          "every step's estimate is at most its share of the budget, rate h: worst "
+          "ratio %.15g (%d bodies, TOL 1e-4, 1e-8, 1e-12, T = 50 and 400)",
+          c.step, TEST_BODIES);
+    CHECK(c.sum <= 1.0 + 1e-12,
+          "the steps' estimates and the tail's bound sum to at most TOL: worst sum / "
+          "TOL %.15g",
+          c.sum);
 }
 
 /* ---- the tail ---- */
@@ -334,9 +354,11 @@ static void reference_far(const sus_model *m, const sus_exact *ex, double T, dou
     sus_exact_limit(ex, winf);
     const long double v0 = -(long double)m->b[1], v1 = m->b[0];
     const long double e0 = quad_form(m, ex->w0[0], ex->w0[1]), ev = quad_form(m, v0, v1);
-    const long double sgn = v0 * winf[0] + v1 * winf[1] >= 0 ? 1.0L : -1.0L, g = sgn * sqrtl(e0 / ev);
+    const long double sgn = v0 * winf[0] + v1 * winf[1] >= 0 ? 1.0L : -1.0L,
+                      g = sgn * sqrtl(e0 / ev);
     const long double w[2] = {g * v0, g * v1}, n = hypotl(w[0], w[1]);
-    const long double th = ((long double)T - t_s) * n, c = cosl(th), s = sinl(th), x = w[0] / n, y = w[1] / n;
+    const long double th = ((long double)T - t_s) * n, c = cosl(th), s = sinl(th), x = w[0] / n,
+                      y = w[1] / n;
     /* Rodrigues: exp(th n^) = I + sin th n^ + (1 - cos th) n^2, n = (x, y, 0) */
     const long double E[3][3] = {{c + (1 - c) * x * x, (1 - c) * x * y, s * y},
                                  {(1 - c) * x * y, c + (1 - c) * y * y, -s * x},
@@ -371,11 +393,17 @@ static void tail_is_one_step(void)
             ratio[i] = fmax(ratio[i], err / cond);
         }
     }
-    CHECK(same, "a run to T = 1e6 takes as many steps as one to T = 1e3 (TOL %g, %d bodies): the tail is one "
-          "step", tol, BODIES_COUNT);
-    CHECK(worst <= 1.0, "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: the "
-          "angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest error / (u T |w_inf|) "
-          "%.3g at 1e4, %.3g at 1e6", COND, worst, ratio[0], ratio[1]);
+    CHECK(same,
+          "a run to T = 1e6 takes as many steps as one to T = 1e3 (TOL %g, %d bodies): the tail is "
+          "one "
+          "step",
+          tol, BODIES_COUNT);
+    CHECK(worst <= 1.0,
+          "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: the "
+          "angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest error / (u T "
+          "|w_inf|) "
+          "%.3g at 1e4, %.3g at 1e6",
+          COND, worst, ratio[0], ratio[1]);
 }
 
 /* ---- dense output and a constant w ---- */
@@ -399,13 +427,16 @@ static void dense_ends_at_the_step(void)
         ops()->dense(wk, st.det, wd, &ld, &ad);
         sus_attitude_get(&att, R);
         sus_attitude_get(&ad, Rd);
-        same &= memcmp(R, Rd, sizeof R) == 0 && wd[0] == w[0] && wd[1] == w[1] && wd[2] == 0.0 && ld == lam;
+        same &= memcmp(R, Rd, sizeof R) == 0 && wd[0] == w[0] && wd[1] == w[1] && wd[2] == 0.0 &&
+                ld == lam;
         steps++;
     }
     if (wk)
         ops()->free(wk);
-    CHECK(same && t == 400.0, "dense output at each step's length is the step's own state (w, lambda, R), "
-          "%d steps to t = 400 (tail included)", steps);
+    CHECK(same && t == 400.0,
+          "dense output at each step's length is the step's own state (w, lambda, R), "
+          "%d steps to t = 400 (tail included)",
+          steps);
 }
 
 static void constant_w_is_one_rotation(void)
@@ -424,8 +455,9 @@ static void constant_w_is_one_rotation(void)
     sus_so3_exp(v, Rx);
     const double err = sus_so3_dist(R, Rx), bound = 1e-12 + COND * U * T * hypot(w0[0], w0[1]);
     CHECK(n == 1 && err <= bound && w[0] == w0[0] && w[1] == w0[1] && w[2] == 0.0,
-          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, R(T) = exp(T w0^) within %.3g (bound %.3g)", n,
-          err, bound);
+          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, R(T) = exp(T w0^) within %.3g (bound "
+          "%.3g)",
+          n, err, bound);
 }
 
 static void degree_rule(void)
@@ -433,13 +465,16 @@ static void degree_rule(void)
     int mono = 1, lo = 99, hi = 0;
     for (int e = 0; e <= 160; e++) {
         const double tol = pow(10.0, -0.1 * e);
-        const int d = sus_step_exact_attitude_order(tol), d2 = sus_step_exact_attitude_order(tol * 0.99);
+        const int d = sus_step_exact_attitude_order(tol),
+                  d2 = sus_step_exact_attitude_order(tol * 0.99);
         mono &= d2 >= d;
         lo = d < lo ? d : lo;
         hi = d > hi ? d : hi;
     }
-    CHECK(mono && lo >= 9 && hi <= SUS_STEP_TAYLOR_MAX_ORDER - 1, "the degree never falls as TOL tightens, "
-          "within the series' range: %d ... %d over TOL = 1 ... 1e-16", lo, hi);
+    CHECK(mono && lo >= 9 && hi <= SUS_STEP_TAYLOR_MAX_ORDER - 1,
+          "the degree never falls as TOL tightens, "
+          "within the series' range: %d ... %d over TOL = 1 ... 1e-16",
+          lo, hi);
 }
 
 int main(void)

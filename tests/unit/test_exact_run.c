@@ -49,8 +49,8 @@ static void tail_vs_reference(const body *b)
 
     /* At t = 300, 1000, 3000 on the paper's body (in the body's own time elsewhere), all past the
      * tail's start t_s: the two paths differ in their transient steps (a grid and a partial step,
-     * or equal steps over [0, t_s]) by a few long-double roundings a step, and share the tail, whose
-     * angle is formed in 113 bits. Each result is rounded once to double, by at most u (u =
+     * or equal steps over [0, t_s]) by a few long-double roundings a step, and share the tail,
+     * whose angle is formed in 113 bits. Each result is rounded once to double, by at most u (u =
      * DBL_EPSILON / 2) per entry: the bound is those two roundings in the Frobenius norm of the
      * nine entries, 3 * 2u = 6u. */
     const double Ts[] = {300.0, 1000.0, 3000.0};
@@ -67,11 +67,14 @@ static void tail_vs_reference(const body *b)
         sus_refatt_advance(&ra, T, R);
         const double d = sus_mat3_dist(c.R, R), bound = 6.0 * DBL_EPSILON / 2.0;
         CHECK(rc == SUS_RUN_OK && c.rows == 5 && c.last_k == 4 && d <= bound,
-              "%s: exact run to T = %g: rows 0..4, its R(T) within %.2e of the reference advanced over the "
-              "stretch (bound 6u = %.2e)", b->name, T, d, bound);
+              "%s: exact run to T = %g: rows 0..4, its R(T) within %.2e of the reference advanced "
+              "over the "
+              "stretch (bound 6u = %.2e)",
+              b->name, T, d, bound);
     }
 
-    /* An equilibrium (w0 on the steady rotation) rotates uniformly from t = 0: R(t) = exp(t w0^). */
+    /* An equilibrium (w0 on the steady rotation) rotates uniformly from t = 0: R(t) = exp(t w0^).
+     */
     const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 12.5, 1, 1};
     keep_ctx c = {0, -1, {{0}}};
     sus_run_report rep;
@@ -81,8 +84,8 @@ static void tail_vs_reference(const body *b)
     sus_so3_exp(xi, E);
     const double d = sus_mat3_dist(c.R, E), bound = 4.0 * DBL_EPSILON / 2.0 * (1.0 + wn * 12.5);
     CHECK(rc == SUS_RUN_OK && d <= bound,
-          "%s: equilibrium w0 = w*: R(12.5) = exp(12.5 w*^) to %.1e (bound 4u(1 + |w*|T) = %.1e)", b->name, d,
-          bound);
+          "%s: equilibrium w0 = w*: R(12.5) = exp(12.5 w*^) to %.1e (bound 4u(1 + |w*|T) = %.1e)",
+          b->name, d, bound);
 }
 
 int main(void)
@@ -98,13 +101,14 @@ int main(void)
 
     /* Steps near 2^63: no k + K overflow, rows 0, K, 2K, 3K and N. */
     {
-        const sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 1e-3, 9223372036854775807L,
-                                       3074457345618258602L};
+        const sus_run_config cfg = {
+            &m, NULL, SUS_RECON_CAYLEY, 1e-3, 9223372036854775807L, 3074457345618258602L};
         keep_ctx c = {0, -1, {{0}}};
         sus_run_report rep;
         const int rc = sus_run_exact(&cfg, SUS_PAPER_OMEGA0, keep, &c, &rep);
         CHECK(rc == SUS_RUN_OK && c.rows == 5 && c.last_k == 9223372036854775807L,
-              "N = 2^63-1, K = N/3: %ld rows, last k = %ld (no overflow, no wrap)", c.rows, c.last_k);
+              "N = 2^63-1, K = N/3: %ld rows, last k = %ld (no overflow, no wrap)", c.rows,
+              c.last_k);
     }
 
     /* The error convention: emit asking to stop is SUS_RUN_STOPPED, after the first row. */

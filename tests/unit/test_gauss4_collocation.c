@@ -3,9 +3,9 @@
  * the reconstruction equation in continuous time). Here both are solved independently of the
  * step: (ContDyn) written out from the printed entries, the stages by fixed-point iteration in long
  * double, c = 1/2 -+ sqrt(3)/6, a = [1/4, 1/4 - sqrt(3)/6; 1/4 + sqrt(3)/6, 1/4], b = (1/2, 1/2).
- * On every body of the family, from w0 and from the identity attitude, at eps = 1/2 and 1/8: w^{k+1}
- * and R^{k+1} agree with it to 1e-14 (Newton stops at 16 u of its scale and polishes once; a few u
- * each for the stage sums and the normalised quaternion). A change of the attitude system's
+ * On every body of the family, from w0 and from the identity attitude, at eps = 1/2 and 1/8:
+ * w^{k+1} and R^{k+1} agree with it to 1e-14 (Newton stops at 16 u of its scale and polishes once;
+ * a few u each for the stage sums and the normalised quaternion). A change of the attitude system's
  * coefficients by a relative 1e-6 moves R by about 1e-6 eps^3 |w|^2 |w'|, above that bound. */
 #include "check_body.h"
 #include "reconstruct.h"
@@ -121,8 +121,10 @@ int main(void)
         double dR;
         const double dw = worst_at(steps[i], &dR);
         CHECK(dw >= 0.0 && dw <= 1e-14 && dR <= 1e-14,
-              "gauss4 at eps = %g is the Gauss-Legendre collocation on %d bodies: |w - w_col| / |w0| %.2g, "
-              "|R - R_col| %.2g (each at most 1e-14)", steps[i], BODIES_COUNT, dw, dR);
+              "gauss4 at eps = %g is the Gauss-Legendre collocation on %d bodies: |w - w_col| / "
+              "|w0| %.2g, "
+              "|R - R_col| %.2g (each at most 1e-14)",
+              steps[i], BODIES_COUNT, dw, dR);
     }
     return check_summary("test_gauss4_collocation");
 }

@@ -20,6 +20,7 @@ int main(void)
     /* exp(z) - R(z) = z^5/720 + O(z^6) for small z: the leading error constant of the (2,2) Pade
      * approximant; at z = 1e-2 the next term is 1e-2 of it and rounding ~1e-16 / 1.4e-13 */
     const double h = 1e-2, c = (exp(h) - R(h)) / pow(h, 5) * 720.0;
-    CHECK(fabs(c - 1.0) <= 0.05, "gauss4: (exp(z) - R(z)) 720 / z^5 = %.4f at z = 1e-2 (1 to 0.05)", c);
+    CHECK(fabs(c - 1.0) <= 0.05, "gauss4: (exp(z) - R(z)) 720 / z^5 = %.4f at z = 1e-2 (1 to 0.05)",
+          c);
     return check_summary("test_gauss4_pade");
 }

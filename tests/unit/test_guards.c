@@ -41,14 +41,17 @@ static void norm_checks(const body *bd, const sus_model *m)
     CHECK(m->norm_fA >= s && m->norm_fA <= s * (1.0 + UP),
           "%s: ||fA||_2 %.17g, a bound tight to %.0e of %.17g", bd->name, m->norm_fA, UP, s);
     const double nb = sqrt(I[6] * I[6] + I[7] * I[7]);
-    CHECK(m->norm_b >= nb && m->norm_b <= nb * (1.0 + UP), "%s: |b|_2 %.17g, a bound tight to %.0e of %.17g",
-          bd->name, m->norm_b, UP, nb);
+    CHECK(m->norm_b >= nb && m->norm_b <= nb * (1.0 + UP),
+          "%s: |b|_2 %.17g, a bound tight to %.0e of %.17g", bd->name, m->norm_b, UP, nb);
 }
 
 /* A row with every field finite is finite; one non-finite field, whichever, makes it not. */
 static void row_finite_checks(void)
 {
-    sus_row r = {.k = 3, .t = 0.5, .w = {0.1, -0.2, 0.0}, .lambda = 0.3,
+    sus_row r = {.k = 3,
+                 .t = 0.5,
+                 .w = {0.1, -0.2, 0.0},
+                 .lambda = 0.3,
                  .R = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
     CHECK(sus_row_finite(&r), "a finite row is finite");
     double *field[15] = {&r.t, &r.w[0], &r.w[1], &r.w[2], &r.lambda};
@@ -61,7 +64,8 @@ static void row_finite_checks(void)
         missed += sus_row_finite(&r) != 0;
         *field[f] = keep;
     }
-    CHECK(missed == 0, "a row with one non-finite field (each of the 14 in turn) is not finite: %d missed",
+    CHECK(missed == 0,
+          "a row with one non-finite field (each of the 14 in turn) is not finite: %d missed",
           missed);
 }
 
@@ -69,12 +73,14 @@ static void row_finite_checks(void)
  * their values (distinct, so that one printed in another's place shows). */
 static void posdef_message_checks(void)
 {
-    const double I[2][9] = {{-1.25, 0.375, 0.2, 0.375, 0.75, 0.1, 0.3, -0.2, 1.0},
-                            {1.25, 2.5, 0.2, 2.5, 0.75, 0.1, 0.3, -0.2, 1.0}}; /* I11 < 0; |I_m| < 0 */
+    const double I[2][9] = {
+        {-1.25, 0.375, 0.2, 0.375, 0.75, 0.1, 0.3, -0.2, 1.0},
+        {1.25, 2.5, 0.2, 2.5, 0.75, 0.1, 0.3, -0.2, 1.0}}; /* I11 < 0; |I_m| < 0 */
     for (int k = 0; k < 2; k++) {
         sus_model m;
         char err[160] = "", want[128];
-        snprintf(want, sizeof want, "(I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[k][0], I[k][4], I[k][1]);
+        snprintf(want, sizeof want, "(I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[k][0], I[k][4],
+                 I[k][1]);
         const int rc = sus_model_init(&m, I[k], err, sizeof err);
         CHECK(rc == -1 && strstr(err, "not positive definite") && strstr(err, want),
               "I_m not positive definite (case %d) refused with its entries: \"%s\"", k, err);
@@ -82,12 +88,14 @@ static void posdef_message_checks(void)
 }
 
 /* A stepper that keeps w and the attitude, except that at step POISON_STEP it makes one field of
- * the state non-finite: w_next[0..2], lambda, hi[i][j] (a matrix attitude) or q[i] (a stale one). */
+ * the state non-finite: w_next[0..2], lambda, hi[i][j] (a matrix attitude) or q[i] (a stale one).
+ */
 #define POISON_STEP 3
 static int poison_field, poison_calls;
 
-static int poison_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att, const double w[3],
-                       double w_next[3], double *lambda_next, sus_stepper_stats *st)
+static int poison_full(const sus_model *m, double eps, sus_recon recon, sus_attitude *att,
+                       const double w[3], double w_next[3], double *lambda_next,
+                       sus_stepper_stats *st)
 {
     (void)m, (void)eps, (void)recon;
     *st = (sus_stepper_stats){0};
@@ -99,8 +107,10 @@ static int poison_full(const sus_model *m, double eps, sus_recon recon, sus_atti
     if (++poison_calls != POISON_STEP)
         return SUS_STEPPER_OK;
     const int f = poison_field;
-    double *target = f < 3 ? &w_next[f] : f == 3 ? lambda_next : f < 13 ? &att->hi[(f - 4) / 3][(f - 4) % 3]
-                                                                   : &att->q[f - 13];
+    double *target = f < 3    ? &w_next[f]
+                     : f == 3 ? lambda_next
+                     : f < 13 ? &att->hi[(f - 4) / 3][(f - 4) % 3]
+                              : &att->q[f - 13];
     *target = NAN;
     return SUS_STEPPER_OK;
 }
@@ -114,10 +124,13 @@ static int poison_apply(const sus_model *m, double eps, const double w[3], doubl
 }
 
 static const sus_step_ops poison_ops = {.apply = poison_apply, .apply_full = poison_full};
-static const sus_stepper_type poison_stepper = {
-    .name = "poison", .step = &poison_ops,
-    .desc = {.order = 1, .lambda_order = 1, .attitude = SUS_ATTITUDE_MATRIX, .substeps = 1,
-             .source = __FILE__}};
+static const sus_stepper_type poison_stepper = {.name = "poison",
+                                                .step = &poison_ops,
+                                                .desc = {.order = 1,
+                                                         .lambda_order = 1,
+                                                         .attitude = SUS_ATTITUDE_MATRIX,
+                                                         .substeps = 1,
+                                                         .source = __FILE__}};
 
 /* A non-finite field of the state at a step whose row is not written stops the run there. */
 static void blowup_checks(const sus_model *m)
@@ -125,16 +138,23 @@ static void blowup_checks(const sus_model *m)
     const double w0[2] = {0.4, 0.5};
     int missed = 0;
     for (poison_field = 0; poison_field < 17; poison_field++) {
-        const sus_run_config cfg = {.model = m, .stepper = &poison_stepper, .recon = SUS_RECON_CAYLEY,
-                                    .eps = 0.125, .steps = 10, .every = 1000};
+        const sus_run_config cfg = {.model = m,
+                                    .stepper = &poison_stepper,
+                                    .recon = SUS_RECON_CAYLEY,
+                                    .eps = 0.125,
+                                    .steps = 10,
+                                    .every = 1000};
         sus_row last;
         sus_run_report rep;
         poison_calls = 0;
         const int rc = sus_run(&cfg, w0, sus_keep_last, &last, &rep);
-        missed += !(rc == SUS_RUN_BLOWUP && rep.step == POISON_STEP && rep.t == POISON_STEP * 0.125);
+        missed +=
+            !(rc == SUS_RUN_BLOWUP && rep.step == POISON_STEP && rep.t == POISON_STEP * 0.125);
     }
-    CHECK(missed == 0, "a non-finite w_i, lambda, R entry or q_i (each of 17 in turn) at step %d, "
-          "whose row is not written, stops the run there: %d missed", POISON_STEP, missed);
+    CHECK(missed == 0,
+          "a non-finite w_i, lambda, R entry or q_i (each of 17 in turn) at step %d, "
+          "whose row is not written, stops the run there: %d missed",
+          POISON_STEP, missed);
 }
 
 /* The driver's Newton accounting: the total and the largest count per step over the run. */
@@ -153,10 +173,15 @@ static void newton_count_checks(const sus_model *m)
 {
     static const sus_step_ops count_ops = {.apply = count_apply};
     const sus_stepper_type counting = {
-        .name = "count", .step = &count_ops,
+        .name = "count",
+        .step = &count_ops,
         .desc = {.order = 1, .lambda_order = 1, .substeps = 1, .source = __FILE__}};
-    const sus_run_config cfg = {.model = m, .stepper = &counting, .recon = SUS_RECON_CAYLEY, .eps = 0.125,
-                                .steps = 7, .every = 1};
+    const sus_run_config cfg = {.model = m,
+                                .stepper = &counting,
+                                .recon = SUS_RECON_CAYLEY,
+                                .eps = 0.125,
+                                .steps = 7,
+                                .every = 1};
     const double w0[2] = {0.4, 0.5};
     sus_row last;
     sus_run_report rep;
@@ -169,7 +194,8 @@ static void newton_count_checks(const sus_model *m)
 }
 
 /* A composition step's Newton count is the sum of its substeps' (each a midpoint DSP step with
- * step g_i eps from the previous substep's w), its residual the worst one's, its w the last one's. */
+ * step g_i eps from the previous substep's w), its residual the worst one's, its w the last one's.
+ */
 static void composition_count_checks(const body *bd, const sus_model *m)
 {
     const sus_step_composition *c = &sus_step_comp_suzuki4;
@@ -188,8 +214,8 @@ static void composition_count_checks(const body *bd, const sus_model *m)
     const double w[3] = {bd->w0[0], bd->w0[1], 0.0};
     sus_step_composition_apply(c, m, 0.25, w, wn, &lam, &st);
     CHECK(st.iterations == sum && wn[0] == u[0] && wn[1] == u[1],
-          "%s: %s, Newton iterations %d (the substeps' sum %ld), w the last substep's", bd->name, c->name,
-          st.iterations, sum);
+          "%s: %s, Newton iterations %d (the substeps' sum %ld), w the last substep's", bd->name,
+          c->name, st.iterations, sum);
     CHECK(worst > 0.0 && st.residual == worst && st.scale == worst_scale,
           "%s: %s keeps the worst substep's residual %.3g and its scale (%.3g)", bd->name, c->name,
           st.residual, worst);
@@ -208,15 +234,18 @@ static void tiny_angle_checks(void)
     CHECK(d <= 1e-15, "exp(w^) - I at |w| = 3.7e-200 (|w|^2 underflows) is w^: %.2g of |w|", d);
 }
 
-/* Shepperd's choice in sus_quat_from_rotation: the branch of the largest of tr, R11, R22, R33 divides
- * by r = 2 |q_k| >= 1; another branch can divide by a tiny |q_k| and lose all accuracy. These unit
- * q, each with one component of 1e-8 (a branch that divides by it), are recovered to round-off. */
+/* Shepperd's choice in sus_quat_from_rotation: the branch of the largest of tr, R11, R22, R33
+ * divides by r = 2 |q_k| >= 1; another branch can divide by a tiny |q_k| and lose all accuracy.
+ * These unit q, each with one component of 1e-8 (a branch that divides by it), are recovered to
+ * round-off. */
 static void shepperd_checks(void)
 {
-    const double qs[5][4] = {{-0.4809013035408614, 0.8001595003259363, -0.3584392700177361, -3.3e-8},
-                             {0.6, -3.3e-8, 0.48, -0.64}, {-2.1e-8, 0.36, 0.48, 0.8},
-                             {0.28, 0.96, 1.7e-8, 0.0},
-                             {0.5861363299782679, -0.5299857305050835, 0.6128289550442271, 2.6e-8}};
+    const double qs[5][4] = {
+        {-0.4809013035408614, 0.8001595003259363, -0.3584392700177361, -3.3e-8},
+        {0.6, -3.3e-8, 0.48, -0.64},
+        {-2.1e-8, 0.36, 0.48, 0.8},
+        {0.28, 0.96, 1.7e-8, 0.0},
+        {0.5861363299782679, -0.5299857305050835, 0.6128289550442271, 2.6e-8}};
     double worst = 0.0;
     for (int k = 0; k < 5; k++) {
         double q[4], R[3][3], back[4], n = 0.0;
@@ -245,7 +274,8 @@ static void taylor_top_order_checks(const body *bd, const sus_model *m)
         sus_attitude a;
         sus_stepper_stats st;
         sus_attitude_identity(&a);
-        sus_step_taylor_apply_full(k ? SUS_STEP_TAYLOR_MAX_ORDER : 16, m, h, &a, w, wn[k], &lam[k], &st);
+        sus_step_taylor_apply_full(k ? SUS_STEP_TAYLOR_MAX_ORDER : 16, m, h, &a, w, wn[k], &lam[k],
+                                   &st);
         sus_quat_of_attitude(&a, q[k]);
     }
     for (int i = 0; i < 4; i++)

@@ -1,7 +1,8 @@
 /* Unit tests of the high-order building blocks: the composition tables, the exponential
  * reconstruction (matrix and quaternion forms), quaternion <-> rotation, one Taylor step, one
  * composition step's energy, and the long-double reference attitude against an independent
- * computation; the steps on the paper's body and on the seeded general bodies (tests/unit/bodies.h). */
+ * computation; the steps on the paper's body and on the seeded general bodies
+ * (tests/unit/bodies.h). */
 #include "check_body.h"
 #include "composition.h"
 #include "dsp.h"
@@ -35,10 +36,12 @@ static void tables(void)
         }
         /* consistency: sum g = 1; order >= 3 of a symmetric composition: sum g^3 = 0 (HLW V.3).
          * The weights carry 26 digits rounded to double: s ulps of the sums at most. */
-        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)", c[k]->name, s,
-              sum - 1.0);
-        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag), "%s: sum of cubes = 0, the order-3 condition "
-                                                           "(%.2g)", c[k]->name, cubes);
+        CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)",
+              c[k]->name, s, sum - 1.0);
+        CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag),
+              "%s: sum of cubes = 0, the order-3 condition "
+              "(%.2g)",
+              c[k]->name, cubes);
     }
 }
 
@@ -59,8 +62,8 @@ static void exponential(void)
             double S[3][3];
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
-                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j]
-                            + (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
+                    S[i][j] = (1.0 - th2 / 6.0 + th2 * th2 / 120.0) * W[i][j] +
+                              (0.5 - th2 / 24.0 + th2 * th2 / 720.0) * W2[i][j];
             worst_small = fmax(worst_small, sus_mat3_dist(D, S) / sus_mat3_frobenius(S));
         }
         sus_so3_exp(x, E);
@@ -82,10 +85,11 @@ static void exponential(void)
     }
     gsl_rng_free(r);
     /* a and b in half-angle form keep full relative accuracy: a few ulps */
-    CHECK(worst_small <= 10 * U, "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)",
-          worst_small);
+    CHECK(worst_small <= 10 * U,
+          "exp(x^) - I at |x| < 1e-4 against its series: relative %.2g (<= 10 u)", worst_small);
     CHECK(worst_orth <= 10 * U, "exp(x^) orthogonal: |R^T R - I| <= %.2g (<= 10 u)", worst_orth);
-    CHECK(worst_quat <= 20 * U, "exp-mid as a quaternion = exp-mid as a matrix: %.2g (<= 20 u)", worst_quat);
+    CHECK(worst_quat <= 20 * U, "exp-mid as a quaternion = exp-mid as a matrix: %.2g (<= 20 u)",
+          worst_quat);
 }
 
 static void quaternions(void)
@@ -98,7 +102,7 @@ static void quaternions(void)
         for (int i = 0; i < 3; i++)
             x[i] = 2.0 * gsl_rng_uniform(r) - 1.0;
         const double n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]),
-            ang = 3.14159265358979 * gsl_rng_uniform(r);
+                     ang = 3.14159265358979 * gsl_rng_uniform(r);
         for (int i = 0; i < 3; i++)
             x[i] *= ang / n;
         sus_so3_exp(x, R);
@@ -111,8 +115,8 @@ static void quaternions(void)
 }
 
 /* The reference against the independent long-double Magnus integration (Richardson). The Magnus
- * scheme has no tail and no proved step: its steps are as fine, in the body's own time and rotation,
- * as the 4000 steps to t = 50 that agreed with the reference to 1e-15 on the paper's body
+ * scheme has no tail and no proved step: its steps are as fine, in the body's own time and
+ * rotation, as the 4000 steps to t = 50 that agreed with the reference to 1e-15 on the paper's body
  * (h max(k, |w|max) = 0.0117 there; here 1/125, |w|max <= |L^{-1}|_F r, exact.h); its rounding
  * grows with its step count, so each comparison spans a few relaxation times 1/k, and in the tail,
  * where w is constant to 2^-64 and the scheme exact for a constant w, its steps resolve only the
@@ -121,7 +125,8 @@ static void quaternions(void)
  *   - the closed-form tail (refattitude.h), [t_s, t_s + 20/k] from the reference's own R(t_s).
  * The bound 1e-15 is the reference's stated accuracy (refattitude.h: under u = 2^-53 before its
  * rounding) plus the rounding of both results to double and the Magnus scheme's own remainder. */
-static void magnus_span(const sus_exact *ex, double t0, double t1, int tail, double R[3][3], long *n)
+static void magnus_span(const sus_exact *ex, double t0, double t1, int tail, double R[3][3],
+                        long *n)
 {
     const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
     const double wmax = sqrt(a * a + b * b + c * c) * ex->r;
@@ -138,16 +143,18 @@ static void reference_against_magnus(const sus_exact *ex, double k_paper, const 
     sus_refatt_init(&ra, ex, 0.0, Rm);
     sus_refatt_at(&ra, T1, Rr);
     magnus_span(ex, 0.0, T1, 0, Rm, &n);
-    CHECK(sus_so3_dist(Rr, Rm) <= 1e-15, "%s: reference R(T1) against Magnus-4 (long double, Richardson, "
-          "%ld and %ld steps), T1 k = 50 k_paper, T1 = %.3g: %.2g (<= 1e-15)", name, n, 2 * n, T1,
-          sus_so3_dist(Rr, Rm));
+    CHECK(sus_so3_dist(Rr, Rm) <= 1e-15,
+          "%s: reference R(T1) against Magnus-4 (long double, Richardson, "
+          "%ld and %ld steps), T1 k = 50 k_paper, T1 = %.3g: %.2g (<= 1e-15)",
+          name, n, 2 * n, T1, sus_so3_dist(Rr, Rm));
     const double t_s = ra.t_s, T2 = t_s + 20.0 / ex->k;
     sus_refatt_at(&ra, t_s, Rm);
     sus_refatt_at(&ra, T2, Rr);
     magnus_span(ex, t_s, T2, 1, Rm, &n);
-    CHECK(sus_so3_dist(Rr, Rm) <= 1e-15, "%s: reference's tail R(t_s + 20/k) against Magnus-4 from its "
-          "R(t_s) (t_s = %.3g, %ld and %ld steps): %.2g (<= 1e-15)", name, t_s, n, 2 * n,
-          sus_so3_dist(Rr, Rm));
+    CHECK(sus_so3_dist(Rr, Rm) <= 1e-15,
+          "%s: reference's tail R(t_s + 20/k) against Magnus-4 from its "
+          "R(t_s) (t_s = %.3g, %ld and %ld steps): %.2g (<= 1e-15)",
+          name, t_s, n, 2 * n, sus_so3_dist(Rr, Rm));
 }
 
 /* |L^{-1}|_F r (exact.h): the largest |w| on the energy ellipse is at most this. */
@@ -158,13 +165,13 @@ static double ellipse_bound(const sus_exact *ex)
 }
 
 /* One Taylor step of order p at h = rho / 30 against the closed form, rho = pi / (4k): on the disc
- * |t| <= rho, s = s0 + sigma k t (exact.h) has |Im s| <= pi/4, where |sech s|^2 <= 2 and |tanh s| <= 1,
- * so |w| <= M = sqrt3 |L^{-1}|_F r (refattitude.c's bound) and Cauchy's estimate puts the tail past
- * degree p at most M x^(p+1) / (1 - x), x = h / rho. Summing rounds 4 u of |w0| and of the other terms
- * (at most M x / (1 - x)), and E's rounding moves the energy scaling by 2 u of E's terms over E;
- * restoring E multiplies the error by at most A = 1 + |w| |I_m w| / <I_m w, w> (a radial scaling
- * moves w by |w| <I_m w, dw> / 2E). h is also at most half the radius the step is proved to converge
- * in (taylor.h), so the step must run. */
+ * |t| <= rho, s = s0 + sigma k t (exact.h) has |Im s| <= pi/4, where |sech s|^2 <= 2 and |tanh s|
+ * <= 1, so |w| <= M = sqrt3 |L^{-1}|_F r (refattitude.c's bound) and Cauchy's estimate puts the
+ * tail past degree p at most M x^(p+1) / (1 - x), x = h / rho. Summing rounds 4 u of |w0| and of
+ * the other terms (at most M x / (1 - x)), and E's rounding moves the energy scaling by 2 u of E's
+ * terms over E; restoring E multiplies the error by at most A = 1 + |w| |I_m w| / <I_m w, w> (a
+ * radial scaling moves w by |w| <I_m w, dw> / 2E). h is also at most half the radius the step is
+ * proved to converge in (taylor.h), so the step must run. */
 static void taylor_one_step(const sus_model *m, const sus_exact *ex, const char *name)
 {
     const sus_stepper_type *ty[3] = {&sus_step_taylor8_type, &sus_step_taylor10_type,
@@ -172,12 +179,14 @@ static void taylor_one_step(const sus_model *m, const sus_exact *ex, const char 
     const double w0[3] = {ex->w0[0], ex->w0[1], 0.0}, rho = 0.25 * M_PI / ex->k;
     const double h = fmin(rho / 30.0, 0.5 * sus_step_taylor_radius(m, w0)), x = h / rho;
     const double M = sqrt(3.0) * ellipse_bound(ex), E0 = sus_energy(m, w0), (*I)[3] = m->I;
-    const double Ea = 0.5 * (fabs(I[0][0]) * w0[0] * w0[0] + fabs(I[0][1] + I[1][0]) * fabs(w0[0] * w0[1])
-                             + fabs(I[1][1]) * w0[1] * w0[1]);
+    const double Ea =
+        0.5 * (fabs(I[0][0]) * w0[0] * w0[0] + fabs(I[0][1] + I[1][0]) * fabs(w0[0] * w0[1]) +
+               fabs(I[1][1]) * w0[1] * w0[1]);
     double we[2];
     sus_exact_omega(ex, h, we);
     const double Iw[2] = {I[0][0] * we[0] + I[0][1] * we[1], I[1][0] * we[0] + I[1][1] * we[1]};
-    const double A = 1.0 + hypot(we[0], we[1]) * hypot(Iw[0], Iw[1]) / (Iw[0] * we[0] + Iw[1] * we[1]);
+    const double A =
+        1.0 + hypot(we[0], we[1]) * hypot(Iw[0], Iw[1]) / (Iw[0] * we[0] + Iw[1] * we[1]);
     const double rounding = 4 * U * (hypot(w0[0], w0[1]) * Ea / E0 + M * x / (1.0 - x));
     for (int i = 0; i < 3; i++) {
         double w1[3], lam;
@@ -185,24 +194,26 @@ static void taylor_one_step(const sus_model *m, const sus_exact *ex, const char 
         const int rc = ty[i]->step->apply(m, h, w0, w1, &lam, &st);
         const double e = hypot(w1[0] - we[0], w1[1] - we[1]);
         const double bound = A * (M * pow(x, ty[i]->desc.order + 1) / (1.0 - x) + rounding);
-        CHECK(rc == SUS_STEPPER_OK && e <= bound && w1[2] == 0.0, "%s: %s, one step h = %.3g (x = %.3g of "
-              "pi / 4k) against the closed form: %.2g (<= %.2g), w3 = 0", name, ty[i]->name, h, x, e, bound);
+        CHECK(rc == SUS_STEPPER_OK && e <= bound && w1[2] == 0.0,
+              "%s: %s, one step h = %.3g (x = %.3g of "
+              "pi / 4k) against the closed form: %.2g (<= %.2g), w3 = 0",
+              name, ty[i]->name, h, x, e, bound);
     }
 }
 
 /* The terms of E(w), 1/2 (|I11| w1^2 + |I12 + I21| |w1 w2| + |I22| w2^2). */
 static double energy_terms(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
-    return 0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1])
-                  + fabs(I[1][1]) * w[1] * w[1]);
+    const double(*I)[3] = m->I;
+    return 0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1]) +
+                  fabs(I[1][1]) * w[1] * w[1]);
 }
 
-/* A composition step of eps k = k_paper (s the body's time) keeps E. Its 17 substeps are midpoint DSP
- * steps of g_i eps, each taken here (test_guards.c checks that the composition's w is the last one's):
- * a substep changes E by at most |mid|_1 times its true residual (test_steppers.c), the residual Newton
- * reports plus 2 u of its scale and of g eps |mid|_1 c's terms, and E rounds 2 u of its terms. The
- * bound is the sum over the substeps. */
+/* A composition step of eps k = k_paper (s the body's time) keeps E. Its 17 substeps are midpoint
+ * DSP steps of g_i eps, each taken here (test_guards.c checks that the composition's w is the last
+ * one's): a substep changes E by at most |mid|_1 times its true residual (test_steppers.c), the
+ * residual Newton reports plus 2 u of its scale and of g eps |mid|_1 c's terms, and E rounds 2 u of
+ * its terms. The bound is the sum over the substeps. */
 static void composition_energy(const sus_model *m, const sus_exact *ex, double s, const char *name)
 {
     const sus_step_composition *c = &sus_step_comp_kahan_li8;
@@ -213,16 +224,19 @@ static void composition_energy(const sus_model *m, const sus_exact *ex, double s
     for (int i = 0; i < sus_step_composition_stages(c); i++) {
         const double ge = sus_step_composition_weight(c, i) * eps;
         ok &= sus_step_midpoint->step->apply(m, ge, w, x, &lam, &st) == SUS_STEPPER_OK;
-        const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])}, n1 = fabs(mid[0]) + fabs(mid[1]);
+        const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])},
+                     n1 = fabs(mid[0]) + fabs(mid[1]);
         const double ca = fabs(m->b[0] * mid[0]) + fabs(m->b[1] * mid[1]);
-        bound += n1 * (st.residual + 2 * U * (st.scale + fabs(ge) * n1 * ca))
-               + 2 * U * (energy_terms(m, x) + energy_terms(m, w));
+        bound += n1 * (st.residual + 2 * U * (st.scale + fabs(ge) * n1 * ca)) +
+                 2 * U * (energy_terms(m, x) + energy_terms(m, w));
         w[0] = x[0], w[1] = x[1];
     }
     ok &= sus_step_comp8_kl_type.step->apply(m, eps, w0, w1, &lam, &st) == SUS_STEPPER_OK;
     const double dE = fabs(sus_energy(m, w1) - sus_energy(m, w0));
-    CHECK(ok && dE <= bound, "%s: comp8-kl, one step eps = %.3g (17 substeps): |E1 - E0| = %.2g (<= %.2g: "
-          "the substeps' residuals and E's roundings)", name, eps, dE, bound);
+    CHECK(ok && dE <= bound,
+          "%s: comp8-kl, one step eps = %.3g (17 substeps): |E1 - E0| = %.2g (<= %.2g: "
+          "the substeps' residuals and E's roundings)",
+          name, eps, dE, bound);
 }
 
 static void steps(const body *b, double k_paper)

@@ -11,8 +11,8 @@ static void plain_is(const char *s, notation_refs refs, const char *want)
 {
     char out[256], err[256] = "";
     const int rc = notation_plain(s, refs, out, sizeof out, err, sizeof err);
-    CHECK(rc == 0 && !strcmp(out, want), "'%s' reads '%s' (got '%s'%s%s)", s, want,
-          rc ? "" : out, rc ? ": " : "", err);
+    CHECK(rc == 0 && !strcmp(out, want), "'%s' reads '%s' (got '%s'%s%s)", s, want, rc ? "" : out,
+          rc ? ": " : "", err);
 }
 
 static void refused(const char *s, const char *why)
@@ -68,7 +68,8 @@ int main(void)
     refused("$\\hat\\omega$", "'{' expected");
     char small[8], err[128] = "";
     CHECK(notation_plain("$\\omega\\omega\\omega\\omega$", PLAIN_QUANTITY, small, sizeof small, err,
-                         sizeof err) != 0 && strstr(err, "longer than 7 bytes"),
+                         sizeof err) != 0 &&
+              strstr(err, "longer than 7 bytes"),
           "a plain text that does not fit is refused, not cut (got: %s)", err);
     /* numbers for math mode */
     number_is(0.0105, 3, "0.0105");

@@ -12,9 +12,10 @@
 #include <math.h>
 #include <string.h>
 
-/* (ContDyn) as printed, from the rows of I (not through src/core/model.c), in long double with |I_m|
- * exact (check_exact.h), so that its own rounding is 2^-64 of the terms however near-singular I_m is:
- *   w1' = -(I22 w2 + I12 w1)(I31 w1 + I32 w2) / |I_m|,  w2' = (I21 w2 + I11 w1)(I31 w1 + I32 w2) / |I_m|. */
+/* (ContDyn) as printed, from the rows of I (not through src/core/model.c), in long double with
+ * |I_m| exact (check_exact.h), so that its own rounding is 2^-64 of the terms however near-singular
+ * I_m is: w1' = -(I22 w2 + I12 w1)(I31 w1 + I32 w2) / |I_m|,  w2' = (I21 w2 + I11 w1)(I31 w1 + I32
+ * w2) / |I_m|. */
 static void contdyn_printed_l(const double *I, const double w[2], long double f[2])
 {
     const long double det = check_cross_diff_exact(I[0], I[4], I[1], I[3]);
@@ -42,19 +43,21 @@ static long double lagmult_printed(const double *I, const double w[2])
     const long double c = (long double)I[6] * w[0] + (long double)I[7] * w[1];
     const long double o2 = check_cross_diff_exact(I[7], I[3], I[6], I[4]);
     const long double o1 = check_cross_diff_exact(I[7], I[0], I[6], I[1]);
-    return w[0] * ((long double)I[3] * w[0] + (long double)I[4] * w[1])
-         - w[1] * ((long double)I[0] * w[0] + (long double)I[1] * w[1]) + c / det * (o2 * w[1] + o1 * w[0]);
+    return w[0] * ((long double)I[3] * w[0] + (long double)I[4] * w[1]) -
+           w[1] * ((long double)I[0] * w[0] + (long double)I[1] * w[1]) +
+           c / det * (o2 * w[1] + o1 * w[0]);
 }
 
-/* max |w_exact(t) - w_rk8pd(t)| on t = 0, 0.5 s, ..., 100 s, rk8pd on contdyn_printed of the body I:
- * s the body's own time (check_body_time), so that the grid spans the same 14.5 relaxation times
+/* max |w_exact(t) - w_rk8pd(t)| on t = 0, 0.5 s, ..., 100 s, rk8pd on contdyn_printed of the body
+ * I: s the body's own time (check_body_time), so that the grid spans the same 14.5 relaxation times
  * 1/k as [0, 100] on the paper's body, whatever its k. */
 static double exact_vs_rk8pd(const sus_model *m, const double *I, const double w0[2], double s)
 {
     sus_exact ex;
     sus_exact_init(&ex, m, w0);
     gsl_odeiv2_system sys = {contdyn_printed, NULL, 2, (void *)I};
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * s, 1e-13, 1e-13);
+    gsl_odeiv2_driver *d =
+        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * s, 1e-13, 1e-13);
     double y[2] = {w0[0], w0[1]}, t = 0.0, worst = 0.0;
     for (int i = 1; i <= 200; i++) {
         double w[2];
@@ -117,11 +120,10 @@ static void paper_values(const sus_model *mp)
          * 2.3 w1^2 = 0.225; there lambda = w1 (0.1 w1 - 2 w1) + 2 w1 (w1 - 0.2 w1) = -0.3 w1^2
          * = -27/920 and O_0 = 0. */
         const double a = sqrt(0.225 / 2.3), winf[2] = {a, -2.0 * a};
-        CHECK(fabs(sus_lagmult(&m, winf) + 27.0 / 920.0) < 1e-15 && fabs(sus_energy(&m,
-            winf) - 0.225) < 1e-15,
+        CHECK(fabs(sus_lagmult(&m, winf) + 27.0 / 920.0) < 1e-15 &&
+                  fabs(sus_energy(&m, winf) - 0.225) < 1e-15,
               "lambda(w_inf) = %.17g, by hand -27/920; E(w_inf) = 0.225", sus_lagmult(&m, winf));
     }
-
 }
 
 /* Sample points around an ellipse off the origin, in all four quadrants, on the grid 2^-30 (so that
@@ -136,9 +138,9 @@ static void sample_w(int n, double w[2])
 /* The size of the terms each formula sums at w, the yardstick of its rounding (a near-singular I_m
  * makes them large where the sums are not). With u = SUS_U (a rounding is at most u/2), the model's
  * (ContDyn) is within 5 u F_i: |I_m| (u, compensated), a division (u/2), the products and sums of
- * fA w (u) and of c (u), their product (u/2), and u for the second order; its (LagMult) within 6 u L:
- * c, 1/|I_m| and O_0's coefficients (3.5 u), the products and sums (2.5 u). The printed side errs
- * by 2^-64 of the same terms. */
+ * fA w (u) and of c (u), their product (u/2), and u for the second order; its (LagMult) within 6 u
+ * L: c, 1/|I_m| and O_0's coefficients (3.5 u), the products and sums (2.5 u). The printed side
+ * errs by 2^-64 of the same terms. */
 typedef struct {
     double ca;    /* |I31 w1| + |I32 w2|, c(w)'s terms */
     double Ia[2]; /* |I_i1 w1| + |I_i2 w2|, i = 1, 2 */
@@ -157,7 +159,8 @@ static terms terms_at(const double *I, const double w[2])
     t.Ia[1] = fabs(I[3] * w[0]) + fabs(I[4] * w[1]);
     t.F[0] = t.ca * (fabs(I[1] * w[0]) + fabs(I[4] * w[1])) / det;
     t.F[1] = t.ca * (fabs(I[0] * w[0]) + fabs(I[3] * w[1])) / det;
-    t.L = fabs(w[0]) * t.Ia[1] + fabs(w[1]) * t.Ia[0] + t.ca / det * (o2 * fabs(w[1]) + o1 * fabs(w[0]));
+    t.L = fabs(w[0]) * t.Ia[1] + fabs(w[1]) * t.Ia[0] +
+          t.ca / det * (o2 * fabs(w[1]) + o1 * fabs(w[0]));
     return t;
 }
 
@@ -166,8 +169,8 @@ typedef struct {
     double f, l, rgb, e, jac;
 } worst_ratios;
 
-/* (ContDyn) and (LagMult) of the model against the printed ones; (RGB2)'s three rows and <grad E, f>,
- * each 0 for the exact f and lambda: within the model's error times the row's I (7 u with the
+/* (ContDyn) and (LagMult) of the model against the printed ones; (RGB2)'s three rows and <grad E,
+ * f>, each 0 for the exact f and lambda: within the model's error times the row's I (7 u with the
  * row's own products and sums) plus 2 u of the row's other terms, so 8 u of all of them. */
 static void against_printed(const sus_model *m, const double *I, const double w[2], worst_ratios *r)
 {
@@ -177,10 +180,12 @@ static void against_printed(const sus_model *m, const double *I, const double w[
     long double g[2];
     sus_contdyn(m, w, f);
     contdyn_printed_l(I, w, g);
-    r->f = fmax(r->f, fmax(fabsl(f[0] - g[0]) / (5 * u * t.F[0]), fabsl(f[1] - g[1]) / (5 * u * t.F[1])));
+    r->f = fmax(r->f,
+                fmax(fabsl(f[0] - g[0]) / (5 * u * t.F[0]), fabsl(f[1] - g[1]) / (5 * u * t.F[1])));
     const double lam = sus_lagmult(m, w);
     r->l = fmax(r->l, (double)(fabsl(lam - lagmult_printed(I, w)) / (6 * u * t.L)));
-    const double Iw[3] = {I[0] * w[0] + I[1] * w[1], I[3] * w[0] + I[4] * w[1], I[6] * w[0] + I[7] * w[1]};
+    const double Iw[3] = {I[0] * w[0] + I[1] * w[1], I[3] * w[0] + I[4] * w[1],
+                          I[6] * w[0] + I[7] * w[1]};
     /* (RGB2): I (w1', w2', 0)
      *         = (-w2 (I_3i w_i), w1 (I_3i w_i), w2 (I_1i w_i) - w1 (I_2i w_i)) + lambda e3 */
     const double r0 = I[0] * f[0] + I[1] * f[1] + w[1] * Iw[2];
@@ -192,20 +197,24 @@ static void against_printed(const sus_model *m, const double *I, const double w[
     const double rgb = fmax(fabs(r0) / y0, fmax(fabs(r1) / y1, fabs(r2) / y2)) / (8 * u);
     r->rgb = fmax(r->rgb, rgb);
     /* E = 1/2 <I_m w, w> is a first integral of (ContDyn): <grad E, f> = 0 */
-    r->e = fmax(r->e, fabs(Iw[0] * f[0] + Iw[1] * f[1]) / (8 * u * (t.Ia[0] * t.F[0] + t.Ia[1] * t.F[1])));
+    r->e = fmax(r->e, fabs(Iw[0] * f[0] + Iw[1] * f[1]) /
+                          (8 * u * (t.Ia[0] * t.F[0] + t.Ia[1] * t.F[1])));
 }
 
 /* f is quadratic, so a central difference is its derivative exactly at any step: h = 2^-4, with
- * w +- h doubles (sample_w), leaves the roundings of f at w +- h (5 u F each, over 2h) and of J (4 u
- * of its terms: c, p and q (u), their products and sum (u), |I_m| and the division (1.5 u), and u
+ * w +- h doubles (sample_w), leaves the roundings of f at w +- h (5 u F each, over 2h) and of J (4
+ * u of its terms: c, p and q (u), their products and sum (u), |I_m| and the division (1.5 u), and u
  * for the second order) plus u |J| for the difference itself. */
-static void jacobian_by_differences(const sus_model *m, const double *I, const double w[2], worst_ratios *r)
+static void jacobian_by_differences(const sus_model *m, const double *I, const double w[2],
+                                    worst_ratios *r)
 {
     const double h = 0x1p-4, u = SUS_U, d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]);
     const double ca = fabs(I[6] * w[0]) + fabs(I[7] * w[1]);
-    const double pa = fabs(I[4] * w[1]) + fabs(I[1] * w[0]), qa = fabs(I[3] * w[1]) + fabs(I[0] * w[0]);
-    const double JA[2][2] = {{fabs(I[1]) * ca + pa * fabs(I[6]), fabs(I[4]) * ca + pa * fabs(I[7])},
-                             {fabs(I[0]) * ca + qa * fabs(I[6]), fabs(I[3]) * ca + qa * fabs(I[7])}};
+    const double pa = fabs(I[4] * w[1]) + fabs(I[1] * w[0]),
+                 qa = fabs(I[3] * w[1]) + fabs(I[0] * w[0]);
+    const double JA[2][2] = {
+        {fabs(I[1]) * ca + pa * fabs(I[6]), fabs(I[4]) * ca + pa * fabs(I[7])},
+        {fabs(I[0]) * ca + qa * fabs(I[6]), fabs(I[3]) * ca + qa * fabs(I[7])}};
     double J[2][2];
     sus_contdyn_jacobian(m, w, J);
     for (int j = 0; j < 2; j++) {
@@ -216,7 +225,8 @@ static void jacobian_by_differences(const sus_model *m, const double *I, const d
         sus_contdyn(m, wm, fm);
         const terms tp = terms_at(I, wp), tm = terms_at(I, wm);
         for (int i = 0; i < 2; i++) {
-            const double y = 5 * u * (tp.F[i] + tm.F[i]) / (2 * h) + 4 * u * JA[i][j] / d + u * fabs(J[i][j]);
+            const double y =
+                5 * u * (tp.F[i] + tm.F[i]) / (2 * h) + 4 * u * JA[i][j] / d + u * fabs(J[i][j]);
             r->jac = fmax(r->jac, fabs((fp[i] - fm[i]) / (2 * h) - J[i][j]) / y);
         }
     }
@@ -234,16 +244,23 @@ static void model_vs_printed(const sus_model *m, const body *b)
         against_printed(m, b->I, w, &r);
         jacobian_by_differences(m, b->I, w, &r);
     }
-    CHECK(r.f <= 1.0, "%s: (ContDyn) of src/core/model.c = the printed formula; worst %.2g of 5 u F", b->name,
+    CHECK(r.f <= 1.0,
+          "%s: (ContDyn) of src/core/model.c = the printed formula; worst %.2g of 5 u F", b->name,
           r.f);
-    CHECK(r.l <= 1.0, "%s: (LagMult) of src/core/model.c = the printed formula; worst %.2g of 6 u L", b->name,
+    CHECK(r.l <= 1.0,
+          "%s: (LagMult) of src/core/model.c = the printed formula; worst %.2g of 6 u L", b->name,
           r.l);
-    CHECK(r.rgb <= 1.0, "%s: (ContDyn) and (LagMult) satisfy all three rows of (RGB2); worst %.2g of 8 u "
-          "of the row's terms", b->name, r.rgb);
-    CHECK(r.e <= 1.0, "%s: E is a first integral of (ContDyn); <grad E, f> worst %.2g of 8 u of its terms",
+    CHECK(r.rgb <= 1.0,
+          "%s: (ContDyn) and (LagMult) satisfy all three rows of (RGB2); worst %.2g of 8 u "
+          "of the row's terms",
+          b->name, r.rgb);
+    CHECK(r.e <= 1.0,
+          "%s: E is a first integral of (ContDyn); <grad E, f> worst %.2g of 8 u of its terms",
           b->name, r.e);
-    CHECK(r.jac <= 1.0, "%s: Jacobian of (ContDyn) against central differences (exact for a quadratic); "
-          "worst %.2g of its rounding", b->name, r.jac);
+    CHECK(r.jac <= 1.0,
+          "%s: Jacobian of (ContDyn) against central differences (exact for a quadratic); "
+          "worst %.2g of its rounding",
+          b->name, r.jac);
 }
 
 /* 1/2 (|I11| w1^2 + |I12 + I21| |w1 w2| + |I22| w2^2): the terms of E(w). */
@@ -253,8 +270,8 @@ static double energy_terms(const double *I, const double w[2])
     return 0.5 * (fabs(I[0]) * w[0] * w[0] + cross + fabs(I[4]) * w[1] * w[1]);
 }
 
-/* The steady rotation w* = L^{-T} r (-sin beta, cos beta) of exact.h, where c = <v, u> = 0 and E = E0.
- * Computed, it is off by roundings that the yardsticks count (a rounding is u/2 or less):
+/* The steady rotation w* = L^{-T} r (-sin beta, cos beta) of exact.h, where c = <v, u> = 0 and E =
+ * E0. Computed, it is off by roundings that the yardsticks count (a rounding is u/2 or less):
  *   - c(w*): its own products and sum (u ca), w1*'s back-substitution (u |I31 l21 w2*| / l11) and
  *     the direction (cos beta, sin beta) (2 u r (|v1 sin beta| + |v2 cos beta|)): 4 u of their sum;
  *   - E(w*) - E0: each E rounds 2 u of its terms, r = |L^T w0| u E0, and the back-substitution
@@ -267,26 +284,30 @@ static void steady_rotation_checks(const sus_model *m, const body *b, const sus_
     sus_exact_omega(ex, -1e6, wm);
     const double c = I[6] * wl[0] + I[7] * wl[1], back = fabs(ex->l21 * wl[1]) / ex->l11;
     const double v1 = I[6] / ex->l11, v2 = (I[7] - ex->l21 * v1) / ex->l22;
-    const double yc = fabs(I[6] * wl[0]) + fabs(I[7] * wl[1]) + fabs(I[6]) * back
-                    + 2.0 * ex->r * (fabs(v1 * ex->sb) + fabs(v2 * ex->cb));
-    const double ye = energy_terms(I, wl) + energy_terms(I, b->w0) + E0
-                    + (fabs(I[0] * wl[0]) + fabs(I[1] * wl[1])) * back;
+    const double yc = fabs(I[6] * wl[0]) + fabs(I[7] * wl[1]) + fabs(I[6]) * back +
+                      2.0 * ex->r * (fabs(v1 * ex->sb) + fabs(v2 * ex->cb));
+    const double ye = energy_terms(I, wl) + energy_terms(I, b->w0) + E0 +
+                      (fabs(I[0] * wl[0]) + fabs(I[1] * wl[1])) * back;
     const double de = fabs(sus_energy(m, wl) - E0), dm = fabs(sus_energy(m, wm) - E0);
     CHECK(fabs(c) <= 4 * u * yc && de <= 4 * u * ye,
-          "%s: the steady rotation has I31 w1 + I32 w2 = %.1e (%.2g of 4 u of its terms) and E - E0 = %.1e "
-          "(%.2g of 4 u of its terms)", b->name, c, fabs(c) / (4 * u * yc), de, de / (4 * u * ye));
-    CHECK(isfinite(wm[0]) && isfinite(wm[1]) && dm <= 4 * u * ye,
-          "%s: w(-1e6) is finite (the repelling rotation) and on the energy ellipse (E - E0 = %.1e)", b->name,
-          dm);
+          "%s: the steady rotation has I31 w1 + I32 w2 = %.1e (%.2g of 4 u of its terms) and E - "
+          "E0 = %.1e "
+          "(%.2g of 4 u of its terms)",
+          b->name, c, fabs(c) / (4 * u * yc), de, de / (4 * u * ye));
+    CHECK(
+        isfinite(wm[0]) && isfinite(wm[1]) && dm <= 4 * u * ye,
+        "%s: w(-1e6) is finite (the repelling rotation) and on the energy ellipse (E - E0 = %.1e)",
+        b->name, dm);
 }
 
 /* |I_m|, O_0's coefficients (model.c) and the closed form's l22 and direction beta (exact.c), each
  * formed as a b - c d with sus_cross_diff, against the same differences exact (check_exact.h). The
- * compensated form rounds twice (u/2 each), so each is within u of its own size however much a b and
- * c d cancel; formed plainly they would err by u/2 of |a b| + |c d|, cond(I_m) times more on a
- * near-singular I_m (the stiff bodies "cond" and "all"). Then l11 l22 = sqrt|I_m| within 2 u (|I_m|,
- * the square root, the division by l11 and this product), and tan beta = v2 / v1 = (I11 I32 - I21 I31)
- * / (I31 sqrt|I_m|) within 6 u (v2 3.5 u, v1 u, the two divisions by |v| u, and u for the test's side). */
+ * compensated form rounds twice (u/2 each), so each is within u of its own size however much a b
+ * and c d cancel; formed plainly they would err by u/2 of |a b| + |c d|, cond(I_m) times more on a
+ * near-singular I_m (the stiff bodies "cond" and "all"). Then l11 l22 = sqrt|I_m| within 2 u
+ * (|I_m|, the square root, the division by l11 and this product), and tan beta = v2 / v1 = (I11 I32
+ * - I21 I31) / (I31 sqrt|I_m|) within 6 u (v2 3.5 u, v1 u, the two divisions by |v| u, and u for
+ * the test's side). */
 static void compensated_checks(const sus_model *m, const body *b, const sus_exact *ex)
 {
     const double *I = b->I, u = SUS_U;
@@ -295,14 +316,19 @@ static void compensated_checks(const sus_model *m, const body *b, const sus_exac
     const long double o2 = check_cross_diff_exact(I[7], I[3], I[6], I[4]);
     const long double x = check_cross_diff_exact(I[0], I[7], I[3], I[6]), sd = sqrtl(det);
     const double dd = (double)(fabsl(m->det_m - det) / det);
-    const double d1 = (double)fabsl((m->o0c[0] - o1) / o1), d2 = (double)fabsl((m->o0c[1] - o2) / o2);
+    const double d1 = (double)fabsl((m->o0c[0] - o1) / o1),
+                 d2 = (double)fabsl((m->o0c[1] - o2) / o2);
     const double dl = (double)fabsl(((long double)ex->l11 * ex->l22 - sd) / sd);
     const long double sbx = (long double)ex->sb * I[6] * sd, cbx = (long double)ex->cb * x;
     const double db = (double)(fabsl(sbx - cbx) / (fabsl(sbx) + fabsl(cbx)));
-    CHECK(dd <= u && d1 <= u && d2 <= u, "%s: |I_m| and O_0's coefficients against the exact differences: "
-          "%.2g, %.2g, %.2g u (at most u)", b->name, dd / u, d1 / u, d2 / u);
-    CHECK(dl <= 2 * u && db <= 6 * u, "%s: the closed form's l11 l22 against sqrt|I_m| exact: %.2g u "
-          "(at most 2 u); its direction beta: %.2g u (at most 6 u)", b->name, dl / u, db / u);
+    CHECK(dd <= u && d1 <= u && d2 <= u,
+          "%s: |I_m| and O_0's coefficients against the exact differences: "
+          "%.2g, %.2g, %.2g u (at most u)",
+          b->name, dd / u, d1 / u, d2 / u);
+    CHECK(dl <= 2 * u && db <= 6 * u,
+          "%s: the closed form's l11 l22 against sqrt|I_m| exact: %.2g u "
+          "(at most 2 u); its direction beta: %.2g u (at most 6 u)",
+          b->name, dl / u, db / u);
 }
 
 /* The closed form against rk8pd at tolerance 1e-13 over [0, 100 s] (an adaptive method at that
@@ -310,15 +336,18 @@ static void compensated_checks(const sus_model *m, const body *b, const sus_exac
 static void closed_form(const sus_model *m, const body *b)
 {
     const double s = check_body_time(m, b->w0), d = exact_vs_rk8pd(m, b->I, b->w0, s);
-    CHECK(d < 1e-11, "%s: closed form = rk8pd (tol 1e-13) of the printed (ContDyn) on [0, 100 s], s = %.3g "
-          "the body's time; max diff %.2e", b->name, s, d);
+    CHECK(d < 1e-11,
+          "%s: closed form = rk8pd (tol 1e-13) of the printed (ContDyn) on [0, 100 s], s = %.3g "
+          "the body's time; max diff %.2e",
+          b->name, s, d);
     sus_exact ex;
     sus_exact_init(&ex, m, b->w0);
     double wl[2], wt[2];
     sus_exact_limit(&ex, wl);
     sus_exact_omega(&ex, 1e6, wt);
     CHECK(isfinite(wt[0]) && isfinite(wt[1]) && hypot(wt[0] - wl[0], wt[1] - wl[1]) < 1e-15,
-          "%s: w(1e6) is finite and equals the steady rotation (%.17g, %.17g)", b->name, wt[0], wt[1]);
+          "%s: w(1e6) is finite and equals the steady rotation (%.17g, %.17g)", b->name, wt[0],
+          wt[1]);
     steady_rotation_checks(m, b, &ex);
     compensated_checks(m, b, &ex);
 }
@@ -332,30 +361,34 @@ static void paper_closed_form(const sus_model *m)
         const double a = 2.0 * M_PI * (n + 0.25) / 12.0, w0[2] = {0.64 * cos(a), 0.64 * sin(a)};
         ring = fmax(ring, exact_vs_rk8pd(m, SUS_PAPER_INERTIA, w0, 1.0));
     }
-    CHECK(ring < 1e-11, "closed form = rk8pd on [0, 100] for 12 w(0) around the ellipse; max diff %.2e",
-          ring);
+    CHECK(ring < 1e-11,
+          "closed form = rk8pd on [0, 100] for 12 w(0) around the ellipse; max diff %.2e", ring);
     sus_exact ex;
     double wl[2], wq[2];
     sus_exact_init(&ex, m, SUS_PAPER_OMEGA0);
     sus_exact_limit(&ex, wl);
-    CHECK(ex.k > 0.145 && ex.k < 0.146, "rate of approach k = %.6f for the paper's body and w(0)", ex.k);
+    CHECK(ex.k > 0.145 && ex.k < 0.146, "rate of approach k = %.6f for the paper's body and w(0)",
+          ex.k);
     /* The steady rotations are equilibria. The attracting one stays put; the repelling one,
      * known only to round-off (~1e-16), is left at the rate k: by t = 50 the departure is
      * about 1e-16 e^{50 k} ~ 1e-13, so 1e-12 bounds it. */
     sus_exact_init(&ex, m, wl);
     sus_exact_omega(&ex, 50.0, wq);
-    CHECK(hypot(wq[0] - wl[0], wq[1] - wl[1]) < 1e-15, "the attracting steady rotation is a fixed point of "
-                                                       "the closed form");
+    CHECK(hypot(wq[0] - wl[0], wq[1] - wl[1]) < 1e-15,
+          "the attracting steady rotation is a fixed point of "
+          "the closed form");
     const double weq[2] = {-wl[0], -wl[1]};
     sus_exact_init(&ex, m, weq);
     sus_exact_omega(&ex, 50.0, wq);
     const double dep = hypot(wq[0] - weq[0], wq[1] - weq[1]);
     CHECK(dep < 1e-12,
-          "the repelling steady rotation is left only at round-off times e^{kt}: %.2e at t = 50", dep);
+          "the repelling steady rotation is left only at round-off times e^{kt}: %.2e at t = 50",
+          dep);
 }
 
-/* A body whose third row has I31 = I32 = 0: c(w) = 0 for every w, so (ContDyn) keeps w(t) = w(0). The
- * closed form must return w(0) itself (exactly: nothing is computed) at every t and as the limit. */
+/* A body whose third row has I31 = I32 = 0: c(w) = 0 for every w, so (ContDyn) keeps w(t) = w(0).
+ * The closed form must return w(0) itself (exactly: nothing is computed) at every t and as the
+ * limit. */
 static void uncoupled(const body *b)
 {
     double I[9];
@@ -378,8 +411,8 @@ static void uncoupled(const body *b)
     }
     sus_exact_limit(&ex, wl);
     CHECK(same && wl[0] == b->w0[0] && wl[1] == b->w0[1],
-          "%s with I31 = I32 = 0: w(t) = w(0) = (%g, %g) on [0, 100] and as the limit, exactly", b->name,
-          b->w0[0], b->w0[1]);
+          "%s with I31 = I32 = 0: w(t) = w(0) = (%g, %g) on [0, 100] and as the limit, exactly",
+          b->name, b->w0[0], b->w0[1]);
 }
 
 int main(void)

@@ -14,16 +14,17 @@
 #include <math.h>
 #include <string.h>
 
-#define TOL 1e-13 /* a few roundings of sums of O(1) terms; any mutant changes >= 1e-7 of a term */
+#define TOL                                                                                        \
+    1e-13 /* a few roundings of sums of O(1) terms; any mutant changes >= 1e-7 of a term           \
+           */
 #define SEED 20261123u
 #define NSTATE 8
 
 /* Printed inertia matrices, rows as printed: the paper's body and three general ones. */
-static const double BODIES[4][9] = {
-    {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0},
-    {2.0, -0.3, 0.15, -0.3, 1.5, -0.25, 0.4, -0.2, 1.2},
-    {1.2, 0.25, -0.35, 0.25, 0.9, 0.05, -0.1, 0.3, 1.1},
-    {0.8, -0.1, 0.5, -0.1, 1.7, 0.3, 0.35, -0.45, 2.0}};
+static const double BODIES[4][9] = {{1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0},
+                                    {2.0, -0.3, 0.15, -0.3, 1.5, -0.25, 0.4, -0.2, 1.2},
+                                    {1.2, 0.25, -0.35, 0.25, 0.9, 0.05, -0.1, 0.3, 1.1},
+                                    {0.8, -0.1, 0.5, -0.1, 1.7, 0.3, 0.35, -0.45, 2.0}};
 
 static unsigned rng_state = SEED;
 static double uniform(double a, double b) /* a small LCG: the same states on every platform */
@@ -58,12 +59,13 @@ static void model_checks(int b, const sus_model *m, const double w[2])
     double f[2], g[2], J[2][2], fp[2], fm[2];
     sus_contdyn(m, w, f);
     contdyn_printed(I, w, g);
-    CHECK(rel(f[0], g[0]) <= TOL && rel(f[1], g[1]) <= TOL, "body %d: (ContDyn) f = (%.17g, %.17g)", b, f[0],
-          f[1]);
+    CHECK(rel(f[0], g[0]) <= TOL && rel(f[1], g[1]) <= TOL, "body %d: (ContDyn) f = (%.17g, %.17g)",
+          b, f[0], f[1]);
     const double lam = sus_lagmult(m, w), lp = lagmult_printed(I, w);
     CHECK(rel(lam, lp) <= TOL, "body %d: (LagMult) %.17g against %.17g", b, lam, lp);
     const double e = 0.5 * (I[0] * w[0] * w[0] + (I[1] + I[3]) * w[0] * w[1] + I[4] * w[1] * w[1]);
-    CHECK(rel(sus_energy(m, w), e) <= TOL, "body %d: E %.17g against %.17g", b, sus_energy(m, w), e);
+    CHECK(rel(sus_energy(m, w), e) <= TOL, "body %d: E %.17g against %.17g", b, sus_energy(m, w),
+          e);
     sus_contdyn_jacobian(m, w, J);
     for (int j = 0; j < 2; j++) {
         double wp[2] = {w[0], w[1]}, wm[2] = {w[0], w[1]};
@@ -122,10 +124,12 @@ static void so3_checks(const double w[3])
     mat_mul(L, R, Q);
     CHECK(max_diff(Q, P) <= TOL, "(caypart) (I - w^/2) cay(w) = I + w^/2: %.3g", max_diff(Q, P));
     sus_so3_cay_inv(R, v);
-    CHECK(fmax(fabs(v[0] - w[0]), fmax(fabs(v[1] - w[1]), fabs(v[2] - w[2]))) <= TOL, "cay^{-1}(cay(w)) = w");
+    CHECK(fmax(fabs(v[0] - w[0]), fmax(fabs(v[1] - w[1]), fabs(v[2] - w[2]))) <= TOL,
+          "cay^{-1}(cay(w)) = w");
     sus_so3_dcay(w, D);
     sus_so3_dcay_inv(w, Di);
-    for (int i = 0; i < 9; i++) { /* dcay = (I + w^/2) / (1 + |w/2|^2), dcay^{-1} = I - w^/2 + w w^T / 4 */
+    for (int i = 0; i < 9;
+         i++) { /* dcay = (I + w^/2) / (1 + |w/2|^2), dcay^{-1} = I - w^/2 + w w^T / 4 */
         P[i / 3][i % 3] /= 1.0 + 0.25 * n2;
         L[i / 3][i % 3] += 0.25 * w[i / 3] * w[i % 3];
     }
@@ -143,9 +147,11 @@ static void so3_checks(const double w[3])
 /* R(q) of a unit quaternion (s, v): I + 2 s v^ + 2 v^ v^; and back with sus_quat_from_rotation. */
 static void quaternion_checks(const double q_in[4])
 {
-    const double nq = sqrt(q_in[0] * q_in[0] + q_in[1] * q_in[1] + q_in[2] * q_in[2] + q_in[3] * q_in[3]);
+    const double nq =
+        sqrt(q_in[0] * q_in[0] + q_in[1] * q_in[1] + q_in[2] * q_in[2] + q_in[3] * q_in[3]);
     const double sgn = q_in[0] < 0.0 ? -1.0 : 1.0;
-    const double q[4] = {sgn * q_in[0] / nq, sgn * q_in[1] / nq, sgn * q_in[2] / nq, sgn * q_in[3] / nq};
+    const double q[4] = {sgn * q_in[0] / nq, sgn * q_in[1] / nq, sgn * q_in[2] / nq,
+                         sgn * q_in[3] / nq};
     const double V[3][3] = {{0, -q[3], q[2]}, {q[3], 0, -q[1]}, {-q[2], q[1], 0}};
     double V2[3][3], Rq[3][3], R[3][3], back[4];
     mat_mul(V, V, V2);
@@ -167,8 +173,8 @@ static void paper_data_checks(void)
     for (int i = 0; i < 9; i++)
         CHECK(SUS_PAPER_INERTIA[i] == printed[i], "the paper's I, entry %d: %.17g", i + 1,
               SUS_PAPER_INERTIA[i]);
-    CHECK(SUS_PAPER_OMEGA0[0] == 0.4 && SUS_PAPER_OMEGA0[1] == 0.5, "the paper's w(0) = (%.17g, %.17g)",
-          SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
+    CHECK(SUS_PAPER_OMEGA0[0] == 0.4 && SUS_PAPER_OMEGA0[1] == 0.5,
+          "the paper's w(0) = (%.17g, %.17g)", SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]);
 }
 
 /* Every entry that is not finite is refused and named (as the CLI's --inertia reports it). */
@@ -185,7 +191,8 @@ static void model_init_checks(void)
             sus_model m;
             const int rc = sus_model_init(&m, I, err, sizeof err);
             snprintf(want, sizeof want, "entry %d is not finite", i + 1);
-            CHECK(rc == -1 && strstr(err, want), "entry %d = %g refused: \"%s\"", i + 1, bad[k], err);
+            CHECK(rc == -1 && strstr(err, want), "entry %d = %g refused: \"%s\"", i + 1, bad[k],
+                  err);
         }
 }
 
@@ -208,8 +215,8 @@ static void symmetry_bound_checks(void)
         char names[96]; /* a refusal names both entries */
         snprintf(names, sizeof names, "I12 = %.17g but I21 = %.17g", I[1], I[3]);
         CHECK(rc == (above ? -1 : 0) && (!above || strstr(err, names)),
-              "asymmetry %.10g of the bound 4 u S %s: %s",
-              fabs(I[3] - I[1]) / (4.0 * u * S), above ? "refused" : "accepted", rc ? err : "ok");
+              "asymmetry %.10g of the bound 4 u S %s: %s", fabs(I[3] - I[1]) / (4.0 * u * S),
+              above ? "refused" : "accepted", rc ? err : "ok");
     }
 }
 
@@ -218,8 +225,8 @@ static void symmetry_bound_checks(void)
  * the equation as written: the midpoint DSP's I_m (x - w) - eps l(mid) and (taudyn)'s
  * I_m (x - w) + eps/2 (x c(x) + w c(w))^perp + eps^2/4 (x s(x) - w s(w)), s(v) = <v, I_m v>. The
  * states run over two decades of |w|, where a yardstick scaled wrongly by |x| shows. */
-static double terms_scale(const sus_model *m, const sus_stepper_type *st, double eps, const double w[2],
-                          const double x[2])
+static double terms_scale(const sus_model *m, const sus_stepper_type *st, double eps,
+                          const double w[2], const double x[2])
 {
     double sI = 0.0;
     for (int i = 0; i < 2; i++)
@@ -239,7 +246,8 @@ static double terms_scale(const sus_model *m, const sus_stepper_type *st, double
                 sv[k] += v[i] * m->I[i][j] * v[j];
     }
     const double cx = sus_c(m, x), cw = sus_c(m, w);
-    return sI * sx + 0.5 * eps * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
+    return sI * sx +
+           0.5 * eps * (fabs(x[1] * cx) + fabs(w[1] * cw) + fabs(x[0] * cx) + fabs(w[0] * cw)) +
            0.25 * eps * eps *
                (fabs(x[0] * sv[0]) + fabs(w[0] * sv[1]) + fabs(x[1] * sv[0]) + fabs(w[1] * sv[1]));
 }
@@ -251,14 +259,15 @@ static void scale_checks(int b, const sus_model *m)
         double worst = 0.0;
         for (int n = 0; n < 12; n++) {
             const double r = pow(10.0, -1.0 + 0.2 * n), eps = uniform(0.05, 1.0);
-            const double w[2] = {r * uniform(-1, 1), r * uniform(-1, 1)}, x[2] = {r * uniform(-1, 1),
-                                                                                   r * uniform(-1, 1)};
+            const double w[2] = {r * uniform(-1, 1), r * uniform(-1, 1)},
+                         x[2] = {r * uniform(-1, 1), r * uniform(-1, 1)};
             double g[2], J[4], sc;
             st[k]->equation->residual(m, eps, w, x, g, J, &sc);
             worst = fmax(worst, rel(sc, terms_scale(m, st[k], eps, w, x)));
         }
-        CHECK(worst <= 8 * TOL, "body %d, %s: the residual's scale is the sum of |terms| of G (%.2g)", b,
-              st[k]->name, worst);
+        CHECK(worst <= 8 * TOL,
+              "body %d, %s: the residual's scale is the sum of |terms| of G (%.2g)", b, st[k]->name,
+              worst);
     }
 }
 
@@ -285,7 +294,8 @@ int main(void)
         const double w[3] = {uniform(-2, 2), uniform(-2, 2), uniform(-2, 2)};
         so3_checks(w);
         /* the largest component changes with k, so every branch of Shepperd's method is taken */
-        double q[4] = {uniform(-0.3, 0.3), uniform(-0.3, 0.3), uniform(-0.3, 0.3), uniform(-0.3, 0.3)};
+        double q[4] = {uniform(-0.3, 0.3), uniform(-0.3, 0.3), uniform(-0.3, 0.3),
+                       uniform(-0.3, 0.3)};
         q[k % 4] += k % 2 ? -1.0 : 1.0;
         quaternion_checks(q);
     }

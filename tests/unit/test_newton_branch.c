@@ -27,8 +27,8 @@
 
 /* The independent continuation: 4000 equal stages from the root at eps = 0; 0 with the root in x,
  * -1 when a stage fails or det J <= 0 on the way. */
-static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, double eps, const double w[2],
-                                double *x)
+static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, double eps,
+                                const double w[2], double *x)
 {
     enum { STAGES = 4000 };
     st->equation->guess(m, 0.0, w, x);
@@ -43,8 +43,8 @@ static int uniform_continuation(const sus_stepper_type *st, const sus_model *m, 
 }
 
 /* The state after `steps` steps of the map's run from angle a of na at step h (stability.h). */
-static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a, int na, double h, int steps,
-                      double w[3])
+static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a, int na, double h,
+                      int steps, double w[3])
 {
     sus_lab_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / na + SUS_LAB_STAB_ANGLE0, w);
     w[2] = 0.0;
@@ -58,7 +58,8 @@ static void map_state(const sus_exact *paper, const sus_stepper_type *st, int a,
 
 /* One step: the step returns the branch's root; where `hard`, plain Newton from the prediction
  * fails or ends off the branch there (else the case would not test the continuation). */
-static void branch_step(const sus_exact *paper, const char *name, double h, const double w[3], int hard)
+static void branch_step(const sus_exact *paper, const char *name, double h, const double w[3],
+                        int hard)
 {
     const sus_stepper_type *st = sus_step_method_by_name(name)->type;
     const sus_model *m = paper->model;
@@ -75,8 +76,10 @@ static void branch_step(const sus_exact *paper, const char *name, double h, cons
     st->equation->residual(m, eps, w, wn, g, J, &scale);
     const double res = fmax(fabs(g[0]), fabs(g[1])), d = hypot(wn[0] - xu[0], wn[1] - xu[1]);
     CHECK(cont && (off_branch || !hard) && rc == SUS_STEPPER_OK &&
-              res <= SUS_STEP_NEWTON_STAGNATION * scale && d <= 1e-12 * hypot(xu[0], xu[1]) && s.det > 0.0,
-          "%s at h = %g from (%.4g, %.4g): Newton from the prediction %s; the step: status %d, |G| = %.2g "
+              res <= SUS_STEP_NEWTON_STAGNATION * scale && d <= 1e-12 * hypot(xu[0], xu[1]) &&
+              s.det > 0.0,
+          "%s at h = %g from (%.4g, %.4g): Newton from the prediction %s; the step: status %d, |G| "
+          "= %.2g "
           "(scale %.2g), %.2g from the continued branch's root, det J %.3g",
           name, h, w[0], w[1],
           plain != SUS_STEPPER_OK ? "fails"
@@ -95,7 +98,8 @@ static void fast_path(void)
         body b;
         sus_model m;
         body_get(k, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         sus_exact ex;
         sus_exact_init(&ex, &m, b.w0);
         for (int i = 0; i < 4; i++) {
@@ -133,8 +137,10 @@ static void fold(const sus_exact *paper)
                                              0.99 * e_star, w, x, &s, &reg);
     const int above = sus_step_newton_branch(st->equation->residual, st->equation->guess, 4, m,
                                              1.01 * e_star, w, x, &s, &reg);
-    CHECK(found && below == SUS_STEPPER_OK && above == SUS_STEPPER_SINGULAR && fabs(exponent - 0.5) <= 0.05,
-          "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 e*: %d; at 1.01 e*: "
+    CHECK(found && below == SUS_STEPPER_OK && above == SUS_STEPPER_SINGULAR &&
+              fabs(exponent - 0.5) <= 0.05,
+          "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 e*: %d; at "
+          "1.01 e*: "
           "status %d, SINGULAR %d); det J ~ (e* - e)^%.4f (1/2)",
           w[0], w[1], e_star * paper->k, below, above, SUS_STEPPER_SINGULAR, exponent);
 }
@@ -167,7 +173,8 @@ static void cycle_shortcut(const sus_exact *paper)
             double w[3], winf[2];
             sus_exact ex;
             sus_lab_stab_result r;
-            sus_lab_ellipse_point(paper, 2.0 * 3.14159265358979323846 * a / 36 + SUS_LAB_STAB_ANGLE0, w);
+            sus_lab_ellipse_point(paper,
+                                  2.0 * 3.14159265358979323846 * a / 36 + SUS_LAB_STAB_ANGLE0, w);
             w[2] = 0.0;
             sus_exact_init(&ex, paper->model, w);
             sus_exact_limit(&ex, winf);
@@ -178,13 +185,15 @@ static void cycle_shortcut(const sus_exact *paper)
                 st->step->apply(paper->model, eps, w, x, &lam, &s);
                 w[0] = x[0], w[1] = x[1];
             }
-            differ += r.final_err != hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
+            differ +=
+                r.final_err != hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
         }
     }
-    CHECK(differ == 0,
-          "%d runs of the stability map with their cycles skipped end as the whole runs do, bit for "
-          "bit: %d differ",
-          n, differ);
+    CHECK(
+        differ == 0,
+        "%d runs of the stability map with their cycles skipped end as the whole runs do, bit for "
+        "bit: %d differ",
+        n, differ);
 }
 
 int main(void)
@@ -198,7 +207,8 @@ int main(void)
     }
     sus_exact_init(&paper, &m, SUS_PAPER_OMEGA0);
     double w[3];
-    const double h_var = pow(10.0, -2.0 + 0.2 * 21), h_mid = pow(10.0, -2.0 + 0.2 * 13); /* 158, 3.98 */
+    const double h_var = pow(10.0, -2.0 + 0.2 * 21),
+                 h_mid = pow(10.0, -2.0 + 0.2 * 13); /* 158, 3.98 */
     map_state(&paper, sus_step_method_by_name("variational")->type, 1, 36, h_var, 3, w);
     branch_step(&paper, "variational", h_var, w, 1);
     map_state(&paper, sus_step_method_by_name("midpoint")->type, 0, 36, h_mid, 0, w);

@@ -31,7 +31,8 @@ int main(void)
         differ += !(f.slope == b && f.intercept == a);
         sets++;
     }
-    CHECK(differ == 0, "orderfit's line equals gsl_fit_linear's bit for bit: %d of %d random sets differ",
+    CHECK(differ == 0,
+          "orderfit's line equals gsl_fit_linear's bit for bit: %d of %d random sets differ",
           differ, sets);
     /* err = 3 eps^p exactly on a log-log line: slope p to round-off in the logs (a few u of
      * |log eps| <= 7, over a spread of log eps of 7): 1e-13. */
@@ -46,7 +47,8 @@ int main(void)
         const int bad = sus_lab_fit_order(eps, err, 11, INFINITY, 0.0, &f);
         worst = fmax(worst, bad ? INFINITY : fabs(f.slope - p));
     }
-    CHECK(worst <= 1e-13, "err = 3 eps^p, p = 1..10: fitted slope within 1e-13 of p; worst %.2e", worst);
+    CHECK(worst <= 1e-13, "err = 3 eps^p, p = 1..10: fitted slope within 1e-13 of p; worst %.2e",
+          worst);
     gsl_rng_free(rng);
     return check_summary("test_orderfit");
 }

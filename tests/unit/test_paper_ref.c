@@ -30,14 +30,16 @@ static void table_is_labels_tsv(void)
     fclose(fp);
     CHECK(n == SUS_PAPER_NLABELS && same == n,
           "the compiled table is paper/labels.tsv: %d of %d lines agree, the table has %d "
-          "(else: sh tools/paper_labels_c.sh >src/render/paper_labels.c)", same, n, SUS_PAPER_NLABELS);
+          "(else: sh tools/paper_labels_c.sh >src/render/paper_labels.c)",
+          same, n, SUS_PAPER_NLABELS);
 }
 
 static void name_is(const char *label, const char *want)
 {
     char buf[64];
     const char *got = sus_paper_name(label, buf, sizeof buf);
-    CHECK(got && !strcmp(got, want), "%s is named '%s' (got '%s')", label, want, got ? got : "(none)");
+    CHECK(got && !strcmp(got, want), "%s is named '%s' (got '%s')", label, want,
+          got ? got : "(none)");
 }
 
 static void numbered_is(const char *text, size_t len, const char *want)

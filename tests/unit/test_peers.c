@@ -47,8 +47,8 @@ static int same_run(const sus_model *m, const sus_lab_reduced *red,
     const int s2 = sus_lab_peer_run(&used, w0, T_END, y2, &n2);
     sus_lab_peer_close(&fresh);
     sus_lab_peer_close(&used);
-    return s0 == GSL_SUCCESS && s1 == GSL_SUCCESS && s2 == GSL_SUCCESS && n0 == n2
-        && memcmp(y0, y2, dim * sizeof(double)) == 0;
+    return s0 == GSL_SUCCESS && s1 == GSL_SUCCESS && s2 == GSL_SUCCESS && n0 == n2 &&
+           memcmp(y0, y2, dim * sizeof(double)) == 0;
 }
 
 /* The largest |w_cheap - w_closed| over t in [0, 50] and at long times, in units of the rounding
@@ -104,11 +104,15 @@ static void check_reduced(void)
             continue;
         }
         const double r = omega_rounding_ratio(&ex, &red);
-        CHECK(r <= 32.0, "%s: the reduced problem's w(t) is the closed form's within 32 u of its "
-                         "terms, t in [0, 1e4]: %.3g u", bd.name, r);
+        CHECK(r <= 32.0,
+              "%s: the reduced problem's w(t) is the closed form's within 32 u of its "
+              "terms, t in [0, 1e4]: %.3g u",
+              bd.name, r);
         const double e = reduced_error(&m, &ex, &red);
-        CHECK(e <= 1e-8, "%s: rk8pd (tol 1e-12) on the reduced problem ends within 1e-8 of the "
-                         "reference attitude at t = 50: %.3g", bd.name, e);
+        CHECK(e <= 1e-8,
+              "%s: rk8pd (tol 1e-12) on the reduced problem ends within 1e-8 of the "
+              "reference attitude at t = 50: %.3g",
+              bd.name, e);
     }
 }
 
@@ -130,7 +134,8 @@ int main(void)
             for (int d = 0; d < 4; d++)
                 for (int h = 0; h < 4; h++)
                     CHECK(same_run(&m, &red, types[k], dims[d], (sus_lab_peer_api)api, hstarts[h]),
-                          "GSL %s dim %zu %s hstart %g: a repeated run equals a fresh run, bit for bit",
+                          "GSL %s dim %zu %s hstart %g: a repeated run equals a fresh run, bit for "
+                          "bit",
                           types[k]->name, dims[d], api ? "evolve" : "driver", hstarts[h]);
     check_reduced();
     return check_summary("test_peers");

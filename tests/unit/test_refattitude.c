@@ -1,7 +1,7 @@
-/* The reference attitude's contract (src/core/refattitude.h) at its edges: R(q) of a quaternion that
- * is not of unit length, as the long-double integration leaves it after a long run, and a stretch
- * too long to integrate, which gives no answer rather than a wrong one. Its accuracy is tested in
- * test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
+/* The reference attitude's contract (src/core/refattitude.h) at its edges: R(q) of a quaternion
+ * that is not of unit length, as the long-double integration leaves it after a long run, and a
+ * stretch too long to integrate, which gives no answer rather than a wrong one. Its accuracy is
+ * tested in test_highorder.c (against an independent Magnus integration) and test_exact_run.c. */
 #include "check_body.h"
 #include "check_exact.h"
 #include "mat3.h"
@@ -30,7 +30,8 @@ static int none_finite(const double R[3][3])
 }
 
 /* q = c (cos(a/2), sin(a/2) n) for scales c far from 1: R(q) is exp(a n^) whatever c is. Both sides
- * round each entry of an exact rotation once, and exp adds a few u: the bound is 8 u (u = 2^-53). */
+ * round each entry of an exact rotation once, and exp adds a few u: the bound is 8 u (u = 2^-53).
+ */
 static void nonunit_quaternion(const sus_exact *ex)
 {
     const double a = 2.0, n[3] = {2.0 / 7.0, -3.0 / 7.0, 6.0 / 7.0};
@@ -47,7 +48,8 @@ static void nonunit_quaternion(const sus_exact *ex)
         double R[3][3];
         sus_refatt_advance(&ra, ra.t, R);
         const double d = sus_mat3_dist(R, E), bound = 8.0 * DBL_EPSILON / 2.0;
-        CHECK(d <= bound, "R(q) for |q| = %g: %.2e from exp(a n^) (bound 8u = %.2e): q is divided by |q|^2",
+        CHECK(d <= bound,
+              "R(q) for |q| = %g: %.2e from exp(a n^) (bound 8u = %.2e): q is divided by |q|^2",
               c[k], d, bound);
     }
 }
@@ -67,20 +69,21 @@ static void too_long_stretch(const sus_model *m, const double w0[2])
         return;
     }
     sus_refatt_precise(&slow, w0, 1e30, w, R);
-    CHECK(none_finite(R), "reference to T = 1e30 on a body whose tail starts near 1e21: R not finite");
+    CHECK(none_finite(R),
+          "reference to T = 1e30 on a body whose tail starts near 1e21: R not finite");
     sus_refatt_precise(m, w0, NAN, w, R);
     CHECK(none_finite(R), "reference to T = NaN: R not finite");
     const double T[] = {1.0, 1e30};
     for (int k = 0; k < 2; k++) {
         sus_refatt_precise(m, w0, T[k], w, R);
-        CHECK(all_finite(R) && isfinite(w[0]) && isfinite(w[1]), "reference to T = %g: w and R finite",
-              T[k]);
+        CHECK(all_finite(R) && isfinite(w[0]) && isfinite(w[1]),
+              "reference to T = %g: w and R finite", T[k]);
     }
 }
 
-/* Started at t0 = 0, the reference starts from w0 itself, not from the closed form's value at 0 (an ulp
- * or so off), so it is the same long-double computation as sus_refatt_precise: R(50) agrees to the
- * rounding of q(I) (exact) and of the nine entries, 2 u. */
+/* Started at t0 = 0, the reference starts from w0 itself, not from the closed form's value at 0 (an
+ * ulp or so off), so it is the same long-double computation as sus_refatt_precise: R(50) agrees to
+ * the rounding of q(I) (exact) and of the nine entries, 2 u. */
 static void start_from_w0(const sus_model *m, const sus_exact *ex, const char *name)
 {
     double I3[3][3], R[3][3], Rp[3][3], w[2];
@@ -90,7 +93,8 @@ static void start_from_w0(const sus_model *m, const sus_exact *ex, const char *n
     sus_refatt_advance(&ra, 50.0, R);
     sus_refatt_precise(m, ex->w0, 50.0, w, Rp);
     const double d = sus_mat3_dist(R, Rp), bound = 2.0 * DBL_EPSILON / 2.0;
-    CHECK(d <= bound, "%s: R(50) started at t0 = 0 is %.1e from the run started from w0 (bound 2u = %.1e)",
+    CHECK(d <= bound,
+          "%s: R(50) started at t0 = 0 is %.1e from the run started from w0 (bound 2u = %.1e)",
           name, d, bound);
 }
 
@@ -108,29 +112,35 @@ static void restart_at(const sus_exact *ex, const char *name)
     sus_refatt_init(&b, ex, 3.0, R3);
     sus_refatt_at(&b, 5.0, Rr);
     const double d = sus_mat3_dist(R5, Rr);
-    CHECK(d <= 1e-14, "%s: R(5) restarted at t0 = 3 is %.1e from the run from 0 (bound 1e-14)", name, d);
+    CHECK(d <= 1e-14, "%s: R(5) restarted at t0 = 3 is %.1e from the run from 0 (bound 1e-14)",
+          name, d);
 }
 
-/* The reference's Cholesky coordinates (refattitude.c) in long double, with |I_m| and v2's numerator
- * I11 I32 - I21 I31 formed as a b - c d in two roundings of 2^-64 = uL/2 (uL = LDBL_EPSILON) whatever
- * their cancellation, against the exact differences (check_exact.h): l11 l22 = sqrt|I_m| within 3 uL
- * (|I_m| uL and its square root uL, the division by l11 uL/2, here the product and sqrtl uL/2 more),
- * and v2 l11 l11 l22 = I11 I32 - I21 I31 within 4 uL (the numerator uL, l11 sd and the division uL,
- * here l11 l22 and two products 2 uL). Formed plainly they would err by uL/2 of I21^2 or |I21 I31|,
- * cond(I_m) times more on a near-singular I_m: the stiff bodies "cond" and "all" show it. */
+/* The reference's Cholesky coordinates (refattitude.c) in long double, with |I_m| and v2's
+ * numerator I11 I32 - I21 I31 formed as a b - c d in two roundings of 2^-64 = uL/2 (uL =
+ * LDBL_EPSILON) whatever their cancellation, against the exact differences (check_exact.h): l11 l22
+ * = sqrt|I_m| within 3 uL
+ * (|I_m| uL and its square root uL, the division by l11 uL/2, here the product and sqrtl uL/2
+ * more), and v2 l11 l11 l22 = I11 I32 - I21 I31 within 4 uL (the numerator uL, l11 sd and the
+ * division uL, here l11 l22 and two products 2 uL). Formed plainly they would err by uL/2 of I21^2
+ * or |I21 I31|, cond(I_m) times more on a near-singular I_m: the stiff bodies "cond" and "all" show
+ * it. */
 static void cholesky_coordinates(const sus_exact *ex, const char *name)
 {
-    const double (*I)[3] = ex->model->I, I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const double(*I)[3] = ex->model->I, I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const long double uL = LDBL_EPSILON;
     sus_refatt ra;
     sus_refatt_init(&ra, ex, 0.0, I3);
     const sus_refatt_chol *c = &ra.chol;
     const long double sd = sqrtl(check_cross_diff_exact(I[0][0], I[1][1], I[1][0], I[1][0]));
-    const long double x = check_cross_diff_exact(I[0][0], I[2][1], I[1][0], I[2][0]), l = c->l11 * c->l22;
-    const double dl = (double)(fabsl(l - sd) / (sd * uL)), dv = (double)(fabsl(c->v[1] * c->l11 * l - x) /
-                                                                         (fabsl(x) * uL));
-    CHECK(dl <= 3.0 && dv <= 4.0, "%s: the reference's l11 l22 against sqrt|I_m| exact: %.2g uL (at most 3 "
-          "uL); v2 l11^2 l22 against I11 I32 - I21 I31 exact: %.2g uL (at most 4 uL)", name, dl, dv);
+    const long double x = check_cross_diff_exact(I[0][0], I[2][1], I[1][0], I[2][0]),
+                      l = c->l11 * c->l22;
+    const double dl = (double)(fabsl(l - sd) / (sd * uL)),
+                 dv = (double)(fabsl(c->v[1] * c->l11 * l - x) / (fabsl(x) * uL));
+    CHECK(dl <= 3.0 && dv <= 4.0,
+          "%s: the reference's l11 l22 against sqrt|I_m| exact: %.2g uL (at most 3 "
+          "uL); v2 l11^2 l22 against I11 I32 - I21 I31 exact: %.2g uL (at most 4 uL)",
+          name, dl, dv);
 }
 
 int main(void)

@@ -85,11 +85,13 @@ static void check_lambda(const sus_model *m, const sus_stepper_type *st)
         if (!(e2 > floor))
             continue;
         CHECK(st->desc.lambda_order >= 1 ? e1 / e2 >= 3.0 : e1 / e2 < 2.0,
-              "%s: lambda_order = %d; local multiplier error %.2e at eps = %g, %.2e at %g (ratio %.2f)",
+              "%s: lambda_order = %d; local multiplier error %.2e at eps = %g, %.2e at %g (ratio "
+              "%.2f)",
               st->name, st->desc.lambda_order, e1, EPS[i], e2, 0.5 * EPS[i], e1 / e2);
         return;
     }
-    printf("NOTE %s: local multiplier error at round-off for every eps <= 2: not judged\n", st->name);
+    printf("NOTE %s: local multiplier error at round-off for every eps <= 2: not judged\n",
+           st->name);
 }
 
 static void check_type(const sus_model *m, const sus_stepper_type *st)
@@ -103,8 +105,8 @@ static void check_type(const sus_model *m, const sus_stepper_type *st)
           ds->implicit, hooks ? "set" : "unset");
     CHECK(ds->source && access(ds->source, R_OK) == 0 && strncmp(ds->source, "src/", 4) == 0,
           "%s: its source file %s exists", st->name, ds->source ? ds->source : "(null)");
-    CHECK(st->step && st->step->apply && !st->tol && ds->substeps >= 1
-              && (ds->attitude == SUS_ATTITUDE_NONE) == (st->step->apply_full == NULL),
+    CHECK(st->step && st->step->apply && !st->tol && ds->substeps >= 1 &&
+              (ds->attitude == SUS_ATTITUDE_NONE) == (st->step->apply_full == NULL),
           "%s: step interface with apply, no tolerance interface, %d substeps; attitude form %d "
           "with%s apply_full",
           st->name, ds->substeps, (int)ds->attitude, st->step && st->step->apply_full ? "" : "out");
@@ -115,7 +117,8 @@ static void check_type(const sus_model *m, const sus_stepper_type *st)
     const double drift = energy_drift(m, st, 0.5, 200),
                  yard = 200.0 * st->desc.substeps * 4.0 * SUS_U * e0;
     CHECK(st->desc.conserves_energy ? drift <= yard : drift > 100.0 * yard,
-          "%s: conserves_energy = %d; |E - E0| over 200 steps of eps = 0.5: %.2e (round-off yardstick %.1e)",
+          "%s: conserves_energy = %d; |E - E0| over 200 steps of eps = 0.5: %.2e (round-off "
+          "yardstick %.1e)",
           st->name, st->desc.conserves_energy, drift, yard);
     /* cayley against exp-mid differ at O(eps^2) per step; a method that ignores the request gives
      * the same R bit for bit. */
@@ -145,7 +148,8 @@ static void check_labels(void)
         sus_step_method_label(&t, SUS_RECON_EXP_MID, label, sizeof label);
         CHECK(strcmp(label, cases[i].expected) == 0,
               "label of a method with follows_recon = %d, attitude %s: \"%s\" (expected \"%s\")",
-              cases[i].follows_recon, sus_step_attitude_name(cases[i].attitude), label, cases[i].expected);
+              cases[i].follows_recon, sus_step_attitude_name(cases[i].attitude), label,
+              cases[i].expected);
     }
 }
 
@@ -188,8 +192,8 @@ int main(void)
         }
         fclose(fp);
     }
-    CHECK(ok && rows == sus_step_method_count_all(), "methods.tsv: a header and %d rows for %d methods", rows,
-          sus_step_method_count_all());
+    CHECK(ok && rows == sus_step_method_count_all(),
+          "methods.tsv: a header and %d rows for %d methods", rows, sus_step_method_count_all());
     /* The fixed-step methods first, each with a step of given eps; the tolerance-driven ones after;
      * each has exactly one of the two interfaces. */
     for (int i = 0; i < sus_step_method_count_all(); i++) {

@@ -40,7 +40,8 @@ int main(void)
     sus_model m;
     sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err);
     sus_plot_gl_context *gl = sus_plot_gl_context_create(W, H);
-    CHECK(gl != NULL, "an off-screen OSMesa context of %dx%d with a depth buffer is created (no display)", W,
+    CHECK(gl != NULL,
+          "an off-screen OSMesa context of %dx%d with a depth buffer is created (no display)", W,
           H);
     if (!gl)
         return check_summary("test_render");
@@ -54,17 +55,18 @@ int main(void)
         glClearColor(1, 1, 1, 1);
         glViewport(0, 0, W, H);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        sus_plot_scene_draw(&sc, &b, W / 3, 0, W / 3, H, 1); /* the middle viewport, only the e3 tip */
+        sus_plot_scene_draw(&sc, &b, W / 3, 0, W / 3, H,
+                            1); /* the middle viewport, only the e3 tip */
         glFinish();
         double cx, cy, qx, qy;
         const double tip[3] = {0.0, 0.0, SUS_PLOT_SCENE_E3_TIP};
         const int n = green_centroid(px, &cx, &cy);
         sus_plot_scene_project(&sc, b.R, tip, W / 3, 0, W / 3, H, H, &qx, &qy);
         /* a 7-pixel point: its centroid sits on the projected point to within a pixel */
-        CHECK(
-            n > 10 && hypot(cx - qx, cy - qy) < 1.5,
-            "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, %.2f), projected (%.2f, %.2f) (%d pixels)",
-            rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
+        CHECK(n > 10 && hypot(cx - qx, cy - qy) < 1.5,
+              "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, %.2f), projected (%.2f, %.2f) "
+              "(%d pixels)",
+              rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
     }
     /* a full frame: not blank, not one colour */
     sus_plot_scene_body b = {{{0}}, {0.4, 0.5, 0.0}, {{0}}, 0};
@@ -75,7 +77,8 @@ int main(void)
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     sus_plot_scene_draw(&sc, &b, 0, 0, W / 3, H, 0);
     glFinish();
-    /* each element of the scene is there in its colour: the box (blue > red), e3 (red), w (orange) */
+    /* each element of the scene is there in its colour: the box (blue > red), e3 (red), w (orange)
+     */
     int changed = 0, box = 0, red = 0, orange = 0;
     for (int i = 0; i < W * H; i++) {
         const int R = (px[i] >> 16) & 255, G = (px[i] >> 8) & 255, B = px[i] & 255;
@@ -85,7 +88,8 @@ int main(void)
         orange += R > 200 && G > 100 && G < 200 && B < 60;
     }
     CHECK(changed > W * H / 50 && box > 100 && red > 10 && orange > 10,
-          "a full frame has content: %d pixels off the background; box %d, e3 (red) %d, w (orange) %d pixels",
+          "a full frame has content: %d pixels off the background; box %d, e3 (red) %d, w (orange) "
+          "%d pixels",
           changed, box, red, orange);
     sus_plot_gl_context_destroy(gl);
     return check_summary("test_render");

@@ -37,8 +37,8 @@ static void cay_by_definition(const double w[3], double C[3][3])
         }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) /* adj[j][i] = cofactor (i, j) */
-            adj[j][i] = A[(i + 1) % 3][(j + 1) % 3] * A[(i + 2) % 3][(j + 2) % 3]
-                      - A[(i + 1) % 3][(j + 2) % 3] * A[(i + 2) % 3][(j + 1) % 3];
+            adj[j][i] = A[(i + 1) % 3][(j + 1) % 3] * A[(i + 2) % 3][(j + 2) % 3] -
+                        A[(i + 1) % 3][(j + 2) % 3] * A[(i + 2) % 3][(j + 1) % 3];
     const double det = A[0][0] * adj[0][0] + A[0][1] * adj[1][0] + A[0][2] * adj[2][0];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -90,7 +90,8 @@ static double reconstruct_vs_definition(sus_recon kind, double eps, const double
     return d;
 }
 
-/* Definition Retr at xi along eta by central differences: the worst of each derivative in w5, w6. */
+/* Definition Retr at xi along eta by central differences: the worst of each derivative in w5, w6.
+ */
 static void retraction_fd(const double xi[3], const double eta[3], double *w5, double *w6)
 {
     double C[3][3], D[3][3], Di[3][3];
@@ -135,7 +136,8 @@ static void identities(gsl_rng *rng)
 {
     double worst[10] = {0};
     for (int n = 0; n < 200; n++) {
-        double xi[3], eta[3], W[3][3], v[3], a[3], b[3], C[3][3], Cm[3][3], P[3][3], D[3][3], Di[3][3];
+        double xi[3], eta[3], W[3][3], v[3], a[3], b[3], C[3][3], Cm[3][3], P[3][3], D[3][3],
+            Di[3][3];
         random_vec(rng, 3.0, xi);
         random_vec(rng, 1.0, eta);
         random_vec(rng, 1.0, v);
@@ -170,20 +172,26 @@ static void identities(gsl_rng *rng)
         sus_mat3_mul(P, E, G);
         worst[7] = fmax(worst[7], identity_defect(P) + sus_so3_orth_defect(E));
     }
-    CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e", worst[0]);
-    CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e", worst[1]);
-    CHECK(worst[2] < ROUNDOFF_TOL, "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e",
-          worst[2]);
+    CHECK(worst[0] < ROUNDOFF_TOL, "(Isom): hat(w) v = w x v and vee(hat(w)) = w; worst %.2e",
+          worst[0]);
+    CHECK(worst[1] < ROUNDOFF_TOL, "(caypart): cay(xi) cay(-xi) = I, |xi| <= 5; worst %.2e",
+          worst[1]);
+    CHECK(worst[2] < ROUNDOFF_TOL,
+          "(caypart): cay(xi) in SO(3); worst |R^T R - I| + |det - 1| %.2e", worst[2]);
     /* cay^{-1} divides by 1 + tr R, which is as small as ~0.2 for |xi| <= 5: allow 1e-13 */
     CHECK(worst[3] < 1e-13, "cay^{-1}(cay(xi)) = xi; worst %.2e", worst[3]);
     CHECK(worst[4] < ROUNDOFF_TOL, "dcay^{-1}_xi dcay_xi = I; worst %.2e", worst[4]);
     /* central differences with h = 1e-5: truncation O(h^2) ~ 1e-10, cancellation ~ u/h ~ 1e-11 */
-    CHECK(worst[5] < 1e-8, "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central "
-                           "differences); worst %.2e", worst[5]);
-    CHECK(worst[6] < 1e-8, "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central "
-                           "differences); worst %.2e", worst[6]);
-    CHECK(worst[7] < ROUNDOFF_TOL, "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e",
-          worst[7]);
+    CHECK(worst[5] < 1e-8,
+          "Definition Retr: d cay(xi)[eta] = (dcay_xi eta)^ cay(xi) (central "
+          "differences); worst %.2e",
+          worst[5]);
+    CHECK(worst[6] < 1e-8,
+          "Definition Retr: d cay^{-1} along eta^ cay(xi) = dcay^{-1}_xi eta (central "
+          "differences); worst %.2e",
+          worst[6]);
+    CHECK(worst[7] < ROUNDOFF_TOL,
+          "exp (Rodrigues): exp(w) in SO(3), exp(w) exp(-w) = I; worst %.2e", worst[7]);
 }
 
 /* (cayinver) as printed against dcay^{-1}_{eps w} with w_3 = 0: equal but for entry (3,3). */
@@ -237,12 +245,14 @@ static void metric(gsl_rng *rng)
     }
     CHECK(self < ROUNDOFF_TOL, "(MetMat): dist(R, R) = 0; worst %.2e", self);
     CHECK(sym < ROUNDOFF_TOL, "(MetMat): symmetric; worst %.2e", sym);
-    CHECK(tri < ROUNDOFF_TOL, "(MetMat): triangle inequality on 300 triples; worst excess %.2e", tri);
+    CHECK(tri < ROUNDOFF_TOL, "(MetMat): triangle inequality on 300 triples; worst excess %.2e",
+          tri);
     CHECK(chord < ROUNDOFF_TOL && minpos > 0.999,
           "(MetMat) on SO(3) equals |R1 - R2| (so it is positive for R1 != R2); worst %.2e", chord);
     double N[3][3] = {{1.0, 1e-3, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
     CHECK(fabs(sus_so3_orth_defect(N) - sqrt(2.0e-6 + 1e-12)) < 1e-15,
-          "(Groudist): orthogonality defect of a shear = its exact value %.6e", sus_so3_orth_defect(N));
+          "(Groudist): orthogonality defect of a shear = its exact value %.6e",
+          sus_so3_orth_defect(N));
 }
 
 int main(void)
@@ -257,8 +267,10 @@ int main(void)
     const double w[3][3] = {{0.4, 0.5, 0.0}, {-0.7, 0.9, 0.0}, {0.3, -0.2, 0.0}};
     for (int kind = 0; kind < SUS_RECON_COUNT; kind++) {
         const double d = reconstruct_vs_definition((sus_recon)kind, 0.8, w);
-        CHECK(d < 1e-15, "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
-              "worst entry %.2e", SUS_RECON_NAMES[kind], d);
+        CHECK(d < 1e-15,
+              "(algo) step 3, %s: two steps from I equal the product of tau(xi_k) by definition; "
+              "worst entry %.2e",
+              SUS_RECON_NAMES[kind], d);
     }
     gsl_rng_free(rng);
     return check_summary("test_so3");

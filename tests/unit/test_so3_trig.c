@@ -52,16 +52,21 @@ static void relative(gsl_rng *r)
         ws = fmax(ws, fabs(s / sin(t) - 1.0) / U);
         wc = fmax(wc, fabs(c / cos(t) - 1.0) / U);
         wsinc = fmax(wsinc, fabs(sus_so3_sinc(t) / (sin(t) / t) - 1.0) / U);
-        if (t8 > PI_4) /* sin t8 / t8 from a sin that is only absolutely accurate: compare t8 sinc */
+        /* sin t8 / t8 from a sin that is only absolutely accurate: compare t8 sinc */
+        if (t8 > PI_4)
             wbig = fmax(wbig, fabs(sus_so3_sinc(t8) - sin(t8) / t8) * t8 / U);
     }
-    CHECK(ws <= 3.0 && wc <= 3.0, "sin, cos on (0, pi/4] (no reduction): within 3 u relative of libm; "
-          "worst %.2f u (sin), %.2f u (cos)", ws, wc);
-    CHECK(wsinc <= 3.0, "sinc t = sin t / t on (0, pi/4]: within 3 u relative of libm's quotient; "
-          "worst %.2f u", wsinc);
+    CHECK(ws <= 3.0 && wc <= 3.0,
+          "sin, cos on (0, pi/4] (no reduction): within 3 u relative of libm; "
+          "worst %.2f u (sin), %.2f u (cos)",
+          ws, wc);
+    CHECK(wsinc <= 3.0,
+          "sinc t = sin t / t on (0, pi/4]: within 3 u relative of libm's quotient; "
+          "worst %.2f u",
+          wsinc);
     /* 3 u for the two sines, u/2 for each quotient's rounding (times t, |sin t| <= 1) */
-    CHECK(wbig <= 4.0, "sinc t on (pi/4, 8]: t |sinc t - sin t / t| within 4 u of libm's; worst %.2f u",
-          wbig);
+    CHECK(wbig <= 4.0,
+          "sinc t on (pi/4, 8]: t |sinc t - sin t / t| within 4 u of libm's; worst %.2f u", wbig);
 }
 
 int main(void)
@@ -70,8 +75,10 @@ int main(void)
     gsl_rng_set(rng, 20261123);
     relative(rng);
     const double w8 = worst_abs(rng, 0.0, 8.0, 200000), wbig = worst_abs(rng, 8.0, 1.6e6, 200000);
-    CHECK(w8 <= 3.0, "sin, cos on |t| <= 8 (exp-mid's steps): within 3 u of libm; worst %.2f u", w8);
-    CHECK(wbig <= 3.0, "sin, cos on 8 < |t| < 1.6e6 (n < 2^20): within 3 u of libm; worst %.2f u", wbig);
+    CHECK(w8 <= 3.0, "sin, cos on |t| <= 8 (exp-mid's steps): within 3 u of libm; worst %.2f u",
+          w8);
+    CHECK(wbig <= 3.0, "sin, cos on 8 < |t| < 1.6e6 (n < 2^20): within 3 u of libm; worst %.2f u",
+          wbig);
     const double wm = worst_near_multiples();
     CHECK(wm <= 3.0, "sin, cos next to k pi/2, k <= 4000: within 3 u of libm; worst %.2f u", wm);
     double s, c;

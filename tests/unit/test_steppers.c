@@ -22,8 +22,8 @@ static double vso3(const sus_model *m, double eps, const double w[2], const doub
                    int printed, double g[2], double *size)
 {
     double Dw[3][3], Dx[3][3], pw[3], px[3];
-    const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0}, ex[3] = {eps * x[0],
-        eps * x[1], 0.0};
+    const double mw[2] = {-w[0], -w[1]}, ew[3] = {-eps * w[0], -eps * w[1], 0.0},
+                 ex[3] = {eps * x[0], eps * x[1], 0.0};
     if (printed) {
         sus_so3_cayinver_printed(eps, mw, Dw);
         sus_so3_cayinver_printed(eps, x, Dx);
@@ -37,8 +37,8 @@ static double vso3(const sus_model *m, double eps, const double w[2], const doub
     }
     double r[3];
     for (int i = 0; i < 3; i++)
-        r[i] = Dw[0][i] * pw[0] + Dw[1][i] * pw[1] + Dw[2][i] * pw[2]
-             - (Dx[0][i] * px[0] + Dx[1][i] * px[1] + Dx[2][i] * px[2]);
+        r[i] = Dw[0][i] * pw[0] + Dw[1][i] * pw[1] + Dw[2][i] * pw[2] -
+               (Dx[0][i] * px[0] + Dx[1][i] * px[1] + Dx[2][i] * px[2]);
     g[0] = r[0];
     g[1] = r[1];
     *size = 0.0;
@@ -92,14 +92,14 @@ static void onto_grid(double *x, int n, double h)
         x[i] = ldexp(nearbyint(ldexp(x[i] / h, 40)), -40) * h;
 }
 
-/* The fourth-order central difference of G's column j, (8 (G(x+h) - G(x-h)) - (G(x+2h) - G(x-2h))) / 12h,
- * is dG/dx_j exactly for a polynomial of degree <= 4 (the step equations are of degree 2 or 3), at any
- * h: only the roundings of G remain, at most SUS_STEP_NEWTON_RTOL = 16 u of the residual's scale each
- * (newton.h), so 18/12h of 16 u of the largest scale, and J's own roundings: 32 u of the largest scale
- * over h bounds both (h <= |x|, where J's terms are at most the scale over |x|). Returns the worst
- * |difference - J| over that bound. */
-static double jacobian_column(const sus_stepper_type *st, const sus_model *m, double eps, const double w[2],
-                              const double *x, const double *J, int j, double h)
+/* The fourth-order central difference of G's column j, (8 (G(x+h) - G(x-h)) - (G(x+2h) - G(x-2h)))
+ * / 12h, is dG/dx_j exactly for a polynomial of degree <= 4 (the step equations are of degree 2 or
+ * 3), at any h: only the roundings of G remain, at most SUS_STEP_NEWTON_RTOL = 16 u of the
+ * residual's scale each (newton.h), so 18/12h of 16 u of the largest scale, and J's own roundings:
+ * 32 u of the largest scale over h bounds both (h <= |x|, where J's terms are at most the scale
+ * over |x|). Returns the worst |difference - J| over that bound. */
+static double jacobian_column(const sus_stepper_type *st, const sus_model *m, double eps,
+                              const double w[2], const double *x, const double *J, int j, double h)
 {
     enum { NX = SUS_MAX_UNKNOWNS };
     const int n = st->equation->unknowns;
@@ -121,7 +121,8 @@ static double jacobian_column(const sus_stepper_type *st, const sus_model *m, do
 }
 
 /* Analytic Jacobians of every registered implicit step equation against exact differences, at 30
- * states around the body's ellipse and steps eps k as the paper's 0.05 ... 0.35 k_paper, off the root. */
+ * states around the body's ellipse and steps eps k as the paper's 0.05 ... 0.35 k_paper, off the
+ * root. */
 static void jacobians(const sus_model *m, const char *bname, body_scale bs)
 {
     enum { NX = SUS_MAX_UNKNOWNS };
@@ -147,9 +148,11 @@ static void jacobians(const sus_model *m, const char *bname, body_scale bs)
             for (int j = 0; j < n; j++)
                 worst = fmax(worst, jacobian_column(st, m, eps, w, x, J, j, h));
         }
-        CHECK(worst <= 1.0,
-              "%s, %s: analytic Jacobian of the step equation = exact differences; worst %.2g of the "
-              "roundings' bound", bname, st->name, worst);
+        CHECK(
+            worst <= 1.0,
+            "%s, %s: analytic Jacobian of the step equation = exact differences; worst %.2g of the "
+            "roundings' bound",
+            bname, st->name, worst);
     }
 }
 
@@ -177,29 +180,33 @@ static void newton_solves(const sus_model *m, const char *bname, const double w0
             gmax = fmax(gmax, fabs(g[i]));
         CHECK(status == SUS_STEPPER_OK && s2 == SUS_STEPPER_OK && gmax <= 16 * SUS_U * sc &&
                   stats.iterations <= 4 && wn[2] == 0.0 && wr[0] == wn[0] && wr[1] == wn[1],
-              "%s, %s: eps = 0.01 s = %.3g step solved to |G| = %.1e (scale %.2f) in %d Newton iterations, "
-              "w3 = 0", bname, st->name, eps, gmax, sc, stats.iterations);
+              "%s, %s: eps = 0.01 s = %.3g step solved to |G| = %.1e (scale %.2f) in %d Newton "
+              "iterations, "
+              "w3 = 0",
+              bname, st->name, eps, gmax, sc, stats.iterations);
     }
 }
 
 /* The terms of (taualg) at (x, w): 1/2 (|x1| |I_2i x_i| + |x2| |I_1i x_i|) and the same at w. */
 static double taualg_terms(const sus_model *m, const double x[2], const double w[2])
 {
-    const double (*I)[3] = m->I;
+    const double(*I)[3] = m->I;
     double t = 0.0;
     for (int k = 0; k < 2; k++) {
         const double *y = k ? w : x;
-        t += 0.5 * (fabs(y[0]) * (fabs(I[1][0] * y[0]) + fabs(I[1][1] * y[1]))
-                    + fabs(y[1]) * (fabs(I[0][0] * y[0]) + fabs(I[0][1] * y[1])));
+        t += 0.5 * (fabs(y[0]) * (fabs(I[1][0] * y[0]) + fabs(I[1][1] * y[1])) +
+                    fabs(y[1]) * (fabs(I[0][0] * y[0]) + fabs(I[0][1] * y[1])));
     }
     return t;
 }
 
 /* (taudyn) and (taualg) are (VSO3) with (cayinver) as printed, after lambda -> -lambda/eps^2;
- * with the exact dcay^{-1} the multiplier gains (c(x) - c(w))/eps. Steps eps k as the paper's 0.1 ...
- * 3.9 k_paper (s the body's time). Each side is a sum of a few dozen roundings of its terms: the
- * third row's over eps^2, (taualg)'s, and c's over eps for the exact form: 32 u of their sum. */
-static void variational_is_vso3(const sus_model *m, const char *bname, const double w0[2], double time)
+ * with the exact dcay^{-1} the multiplier gains (c(x) - c(w))/eps. Steps eps k as the paper's 0.1
+ * ... 3.9 k_paper (s the body's time). Each side is a sum of a few dozen roundings of its terms:
+ * the third row's over eps^2, (taualg)'s, and c's over eps for the exact form: 32 u of their sum.
+ */
+static void variational_is_vso3(const sus_model *m, const char *bname, const double w0[2],
+                                double time)
 {
     double worst_dyn = 0.0, worst_alg = 0.0, worst_full = 0.0;
     int ran = 0;
@@ -212,40 +219,46 @@ static void variational_is_vso3(const sus_model *m, const char *bname, const dou
         ran++;
         const double raw = vso3(m, eps, w, x, 1, g, &size);
         sus_step_variational->equation->residual(m, eps, w, x, gd, J, &sc);
-        /* relative to the size of the terms summed (the residual's scale): two orders of summation */
-        worst_dyn = fmax(worst_dyn, (fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1])) / (eps * sc));
+        /* relative to the size of the terms summed (the residual's scale): two orders of summation
+         */
+        worst_dyn =
+            fmax(worst_dyn, (fabs(g[0] + eps * gd[0]) + fabs(g[1] + eps * gd[1])) / (eps * sc));
         const double ta = taualg_terms(m, x, w);
         worst_alg = fmax(worst_alg, fabs(-raw / (eps * eps) - lam) / (size / (eps * eps) + ta));
         const double raw_full = vso3(m, eps, w, x, 0, g, &size_full);
-        const double ca = fabs(m->b[0] * x[0]) + fabs(m->b[1] * x[1]) + fabs(m->b[0] * w[0])
-                        + fabs(m->b[1] * w[1]);
+        const double ca = fabs(m->b[0] * x[0]) + fabs(m->b[1] * x[1]) + fabs(m->b[0] * w[0]) +
+                          fabs(m->b[1] * w[1]);
         const double full = lam + (sus_c(m, x) - sus_c(m, w)) / eps;
         const double yard = size_full / (eps * eps) + ta + ca / eps;
         worst_full = fmax(worst_full, fabs(-raw_full / (eps * eps) - full) / yard);
     }
-    CHECK(ran > 0 && worst_dyn < 32 * DBL_EPSILON, "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
+    CHECK(ran > 0 && worst_dyn < 32 * DBL_EPSILON,
+          "%s: (taudyn) = -1/eps x first rows of (VSO3) with "
           "(cayinver) as printed, %d of 20 steps; worst relative to the terms' size %.2e (<= 32 u)",
           bname, ran, worst_dyn);
-    CHECK(ran > 0 && worst_alg < 32 * DBL_EPSILON, "%s: (taualg) = -1/eps^2 x third row of (VSO3) with "
-          "(cayinver) as printed; worst relative to the terms' size %.2e (<= 32 u)", bname, worst_alg);
-    CHECK(ran > 0 && worst_full < 32 * DBL_EPSILON, "%s: with the exact dcay^{-1} ((3,3) = 1) the multiplier "
-          "is (taualg) + (c(x) - c(w))/eps; worst relative to the terms' size %.2e (<= 32 u)", bname,
-          worst_full);
+    CHECK(ran > 0 && worst_alg < 32 * DBL_EPSILON,
+          "%s: (taualg) = -1/eps^2 x third row of (VSO3) with "
+          "(cayinver) as printed; worst relative to the terms' size %.2e (<= 32 u)",
+          bname, worst_alg);
+    CHECK(ran > 0 && worst_full < 32 * DBL_EPSILON,
+          "%s: with the exact dcay^{-1} ((3,3) = 1) the multiplier "
+          "is (taualg) + (c(x) - c(w))/eps; worst relative to the terms' size %.2e (<= 32 u)",
+          bname, worst_full);
 }
 
 /* 1/2 (|I11| w1^2 + |I12 + I21| |w1 w2| + |I22| w2^2): the terms of E(w). */
 static double energy_terms(const sus_model *m, const double w[2])
 {
-    const double (*I)[3] = m->I;
-    return 0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1])
-                  + fabs(I[1][1]) * w[1] * w[1]);
+    const double(*I)[3] = m->I;
+    return 0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1]) +
+                  fabs(I[1][1]) * w[1] * w[1]);
 }
 
 /* The midpoint DSP conserves E exactly in exact arithmetic: with G = I_m (x - w) - eps l(mid) and
  * <l(mid), mid> = 0, E(x) - E(w) = <G, mid>. So a step changes E by at most |mid|_1 times its true
- * residual, the residual Newton reports plus the rounding of G (2 u of its scale, and of eps |mid| |c|'s
- * terms, which the scale leaves out where c(mid) cancels), and each E is computed to 2 u of its
- * terms. 100 steps of eps k = 0.07 k_paper (s the body's time). */
+ * residual, the residual Newton reports plus the rounding of G (2 u of its scale, and of eps |mid|
+ * |c|'s terms, which the scale leaves out where c(mid) cancels), and each E is computed to 2 u of
+ * its terms. 100 steps of eps k = 0.07 k_paper (s the body's time). */
 static void midpoint_energy(const sus_model *m, const char *bname, const double w0[2], double time)
 {
     const double eps = 0.7 * time, u = SUS_U;
@@ -256,28 +269,32 @@ static void midpoint_energy(const sus_model *m, const char *bname, const double 
         ok &= sus_step_midpoint->step->apply(m, eps, w, x, &lam, &st) == SUS_STEPPER_OK;
         const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};
         const double ca = fabs(m->b[0] * mid[0]) + fabs(m->b[1] * mid[1]);
-        const double n1 = fabs(mid[0]) + fabs(mid[1]), d = fabs(sus_energy(m, x) - sus_energy(m, w));
-        const double bound = n1 * (st.residual + 2 * u * (st.scale + eps * n1 * ca))
-                           + 2 * u * (energy_terms(m, x) + energy_terms(m, w));
+        const double n1 = fabs(mid[0]) + fabs(mid[1]),
+                     d = fabs(sus_energy(m, x) - sus_energy(m, w));
+        const double bound = n1 * (st.residual + 2 * u * (st.scale + eps * n1 * ca)) +
+                             2 * u * (energy_terms(m, x) + energy_terms(m, w));
         worst = fmax(worst, d / bound);
         dE = fmax(dE, d);
         w[0] = x[0];
         w[1] = x[1];
     }
-    CHECK(ok && worst <= 1.0, "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = "
-          "0.7 s = %.3g: %.2g of the residual's and E's roundings", bname, dE, eps, worst);
+    CHECK(ok && worst <= 1.0,
+          "%s: midpoint DSP: |E(w^{k+1}) - E(w^k)| <= %.1e over 100 steps of eps = "
+          "0.7 s = %.3g: %.2g of the residual's and E's roundings",
+          bname, dE, eps, worst);
 }
 
 /* The unreduced integrator: its inverse inertia by cofactors over det I. With X^ = the cofactors'
- * |terms| / |det I|, each cofactor rounds u of its terms and the division u/2, det I (expanded along
- * row 1) 2 u of |A_1j| X^_j1 |det I|, and the product I^{-1} I u of |I^{-1}| |I|: to first order
- * |I^{-1} I - Id|_F <= u (3 |X^ |I||_F + 2 sqrt3 (|I| X^)_11); 4 for 2 sqrt3 covers the second. */
+ * |terms| / |det I|, each cofactor rounds u of its terms and the division u/2, det I (expanded
+ * along row 1) 2 u of |A_1j| X^_j1 |det I|, and the product I^{-1} I u of |I^{-1}| |I|: to first
+ * order |I^{-1} I - Id|_F <= u (3 |X^ |I||_F + 2 sqrt3 (|I| X^)_11); 4 for 2 sqrt3 covers the
+ * second. */
 static void unreduced_inverse(const sus_model *m, const char *bname)
 {
     char err[256];
     sus_unreduced un;
     double P[3][3], I3[3][3], X[3][3], XA = 0.0, AX = 0.0;
-    const double (*A)[3] = m->I;
+    const double(*A)[3] = m->I;
     sus_unreduced_init(&un, m, err, sizeof err);
     sus_mat3_mul(P, un.Iinv, m->I);
     sus_mat3_identity(I3);
@@ -297,7 +314,8 @@ static void unreduced_inverse(const sus_model *m, const char *bname)
     for (int k = 0; k < 3; k++)
         AX += fabs(A[0][k]) * X[k][0];
     const double d = sus_so3_dist(P, I3), bound = SUS_U * (3.0 * sqrt(XA) + 4.0 * AX);
-    CHECK(d <= bound, "%s: unreduced: I^{-1} I = Id to %.1e (at most %.1e, its roundings)", bname, d, bound);
+    CHECK(d <= bound, "%s: unreduced: I^{-1} I = Id to %.1e (at most %.1e, its roundings)", bname,
+          d, bound);
 }
 
 /* The driver: rows 0, K, 2K, ... and always the last one; R_0 = I; a failing step is reported. */
@@ -314,11 +332,14 @@ static void driver(const sus_model *m)
     /* A failing step is reported with its index and time, never accepted: the 2-stage Gauss
      * step from this w0 meets a fold of its branch at h = eps k ~ 3.6 (src/lab/stability.h). */
     const double w_fold[2] = {0.27619224, -0.63956748};
-    const sus_run_config bad = {m, sus_step_method_by_name("gauss4")->type, SUS_RECON_CAYLEY, 1000.0, 10, 1};
+    const sus_run_config bad = {
+        m, sus_step_method_by_name("gauss4")->type, SUS_RECON_CAYLEY, 1000.0, 10, 1};
     count_ctx cb = {0, -1, 1.0};
     const int rb = sus_run(&bad, w_fold, count_rows, &cb, &rep);
-    CHECK(rb == 1 && rep.status == SUS_STEPPER_SINGULAR && rep.step == 1 && rep.t == 1000.0 && cb.rows == 1,
-          "gauss4, w0 = (0.276, -0.640), eps = 1000: step %ld (t = %g) reported as failed (status %d, a fold "
+    CHECK(rb == 1 && rep.status == SUS_STEPPER_SINGULAR && rep.step == 1 && rep.t == 1000.0 &&
+              cb.rows == 1,
+          "gauss4, w0 = (0.276, -0.640), eps = 1000: step %ld (t = %g) reported as failed (status "
+          "%d, a fold "
           "%d), only row 0 emitted",
           rep.step, rep.t, rep.status, SUS_STEPPER_SINGULAR);
 
@@ -328,7 +349,8 @@ static void driver(const sus_model *m)
     const double w[2] = {0.0, 0.0};
     const int status = sus_step_newton_solve(singular_residual, 2, m, 0.1, w, x, &stats);
     CHECK(status == SUS_STEPPER_SINGULAR && stats.det == 0.0 && stats.iterations == 0,
-          "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUS_STEPPER_SINGULAR", stats.det);
+          "Newton reports a singular (REGLOC) Jacobian (det %.1g) as SUS_STEPPER_SINGULAR",
+          stats.det);
 }
 
 /* The shared hooks of the implicit steps write NaN for a NULL input, nothing for a NULL output. */

@@ -8,9 +8,9 @@
  *     the step, its start time and the estimate (exit 3 in suslov);
  *   - w = 0 (E0 = 0): every coefficient row vanishes, rho = inf: no division by zero, no 0/0 in
  *     the energy scaling; the run stays at w = 0, R = I, finite;
- *   - a steady rotation (c(w) = 0 exactly in double): the w rows vanish (rho = inf for them) and the
- *     quaternion rows set the step; w stays exactly w*, R is the rotation exp(t w*^) (so3.h) to within
- *     N TOL; from the closed form's steady rotation (c(w*) u-small) w and R stay within N TOL;
+ *   - a steady rotation (c(w) = 0 exactly in double): the w rows vanish (rho = inf for them) and
+ * the quaternion rows set the step; w stays exactly w*, R is the rotation exp(t w*^) (so3.h) to
+ * within N TOL; from the closed form's steady rotation (c(w*) u-small) w and R stay within N TOL;
  *   - dense output at the step's ends equals the step's states, and rows come at the requested
  *     times, t_end included, with w3 = 0, |R^T R - I| at round-off and E = E0.
  * Spans are in the body's own time (check_body_time): t = 20 on the paper's body is 20 k_paper / k.
@@ -32,7 +32,8 @@
 static const sus_stepper_type *adaptive(void)
 {
     for (int i = sus_step_method_count(); i < sus_step_method_count_all(); i++)
-        if (sus_step_method_get(i)->type->tol) return sus_step_method_get(i)->type;
+        if (sus_step_method_get(i)->type->tol)
+            return sus_step_method_get(i)->type;
     return NULL;
 }
 
@@ -49,10 +50,11 @@ static int take(void *vctx, const sus_row *r)
     c->monotone &= c->rows == 0 || r->t > c->t_prev;
     c->t_prev = r->t;
     c->rows++;
-    const double (*I)[3] = c->m->I, *w = r->w, de = fabs(sus_energy(c->m, w) - c->e0);
+    const double(*I)[3] = c->m->I, *w = r->w, de = fabs(sus_energy(c->m, w) - c->e0);
     /* E's terms, 1/2 (|I11| w1^2 + |I12 + I21| |w1 w2| + |I22| w2^2): its rounding's yardstick */
-    const double terms = 0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1])
-                                + fabs(I[1][1]) * w[1] * w[1]);
+    const double terms =
+        0.5 * (fabs(I[0][0]) * w[0] * w[0] + fabs(I[0][1] + I[1][0]) * fabs(w[0] * w[1]) +
+               fabs(I[1][1]) * w[1] * w[1]);
     c->worst_e = fmax(c->worst_e, de);
     c->worst_er = fmax(c->worst_er, de / (terms + c->e0));
     c->worst_orth = fmax(c->worst_orth, sus_so3_orth_defect(r->R));
@@ -85,7 +87,8 @@ static int first_step(const sus_model *m, const double w0[2], double tol, double
 }
 
 /* The first of TOL = 1e-12, 1e-13, 1e-14, 1e-15 at which the first try, the whole proved radius, is
- * rejected; 0 where none is: the radius, not the tolerance, then holds the step (a NOTE says so). */
+ * rejected; 0 where none is: the radius, not the tolerance, then holds the step (a NOTE says so).
+ */
 static double rejecting_tol(const sus_model *m, const double w0[2], const char *name)
 {
     for (double tol = 1e-12; tol >= 1e-15; tol *= 0.1) {
@@ -95,7 +98,8 @@ static double rejecting_tol(const sus_model *m, const double w0[2], const char *
         if (first_step(m, w0, tol, &t, w, &att, &st) == SUS_STEPPER_OK && st.iterations >= 1)
             return tol;
     }
-    printf("NOTE %s: the first try (the proved radius) meets TOL 1e-15: no try rejected to check\n", name);
+    printf("NOTE %s: the first try (the proved radius) meets TOL 1e-15: no try rejected to check\n",
+           name);
     return 0.0;
 }
 
@@ -109,7 +113,8 @@ static void rejection(const sus_model *m, const double w0[2], const char *name, 
     if (tol > 0.0) {
         const int rc = first_step(m, w0, tol, &t, w, &att, &st);
         CHECK(rc == SUS_STEPPER_OK && st.iterations >= 1 && st.residual <= tol && t > 0.0,
-              "%s: first step rejected %d times, then accepted with estimate %.3g <= TOL = %.0e (t = %.3g)",
+              "%s: first step rejected %d times, then accepted with estimate %.3g <= TOL = %.0e (t "
+              "= %.3g)",
               name, st.iterations, st.residual, tol, t);
     }
     sus_tol_work *wk;
@@ -127,34 +132,36 @@ static void rejection(const sus_model *m, const double w0[2], const char *name, 
         tries += st.iterations;
         ops->free(wj_work);
     }
-    CHECK(over == 0, "%s: 91 first steps (TOL 1e-4 ... 1e-13): %d accepted above TOL (%d rejections)", name,
+    CHECK(over == 0,
+          "%s: 91 first steps (TOL 1e-4 ... 1e-13): %d accepted above TOL (%d rejections)", name,
           over, tries);
 
     wk = ops->alloc(m, 1e-300, w0);
     double w1[3] = {w0[0], w0[1], 0.0}, t1 = 0.0;
     sus_attitude_identity(&att);
     const int bad = ops->step(wk, 50.0, &t1, w1, &lam, &att, &st);
-    CHECK(bad == SUS_STEPPER_REJECTED && st.iterations > 1 && st.residual > 1e-300 && st.scale == 1e-300 &&
-              t1 == 0.0 && w1[0] == w0[0] && w1[1] == w0[1],
-          "%s: TOL 1e-300 rejected after %d tries (estimate %.3g), state untouched", name, st.iterations,
-          st.residual);
+    CHECK(bad == SUS_STEPPER_REJECTED && st.iterations > 1 && st.residual > 1e-300 &&
+              st.scale == 1e-300 && t1 == 0.0 && w1[0] == w0[0] && w1[1] == w0[1],
+          "%s: TOL 1e-300 rejected after %d tries (estimate %.3g), state untouched", name,
+          st.iterations, st.residual);
     ops->free(wk);
 
     rows_ctx c;
     sus_run_report rep;
     const int rrc = run(m, w0, 1e-300, 50.0, 0.0, &c, &rep);
-    CHECK(rrc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_REJECTED && rep.step == 1 && rep.t == 0.0 &&
-              c.rows == 1,
-          "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name, rep.step,
-          rep.t);
+    CHECK(rrc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_REJECTED && rep.step == 1 &&
+              rep.t == 0.0 && c.rows == 1,
+          "%s: the driver reports the rejection at step %ld, t = %g, after row 0 only", name,
+          rep.step, rep.t);
 }
 
 /* A rejected try is rescaled, not recomputed: the first step (its first try, the proved radius,
- * is rejected at tol, rejecting_tol) must equal the fixed-step Taylor step of the same order and length
- * from a fresh series (sus_step_taylor_apply_full; both restore E onto E(w_0)). The two differ
- * only by roundings: s^n formed in n <= 20 products and p <= 20 sums of terms at most |w|, so
- * 64 u |w| for w and 64 u for R; a wrong power of s moves w by about |W_2| (1 - s), far above. Where
- * no try is rejected (tol = 0: 1e-12 then), the step is still the fresh series', rescaled by nothing. */
+ * is rejected at tol, rejecting_tol) must equal the fixed-step Taylor step of the same order and
+ * length from a fresh series (sus_step_taylor_apply_full; both restore E onto E(w_0)). The two
+ * differ only by roundings: s^n formed in n <= 20 products and p <= 20 sums of terms at most |w|,
+ * so 64 u |w| for w and 64 u for R; a wrong power of s moves w by about |W_2| (1 - s), far above.
+ * Where no try is rejected (tol = 0: 1e-12 then), the step is still the fresh series', rescaled by
+ * nothing. */
 static void rescaled_retry(const sus_model *m, const double w0[2], const char *name, double tol)
 {
     const sus_tol_ops *ops = adaptive()->tol;
@@ -172,10 +179,12 @@ static void rescaled_retry(const sus_model *m, const double w0[2], const char *n
         for (int j = 0; j < 3; j++)
             dR = fmax(dR, fabs(Ra[i][j] - Rf[i][j]));
     const double scale = fmax(1.0, hypot(w0[0], w0[1]));
-    CHECK(rc == SUS_STEPPER_OK && (st.iterations >= 1 || tol == 0.0) && rf == SUS_STEPPER_OK &&
-              dw <= 64.0 * SUS_U * scale && dR <= 64.0 * SUS_U,
-          "%s: first step at TOL %.0e (%d rejected tries, h = %.4g) equals a fresh order-%d series: "
-          "|dw| = %.2g, |dR| = %.2g", name, t_tol, st.iterations, t, ops->order(t_tol), dw, dR);
+    CHECK(
+        rc == SUS_STEPPER_OK && (st.iterations >= 1 || tol == 0.0) && rf == SUS_STEPPER_OK &&
+            dw <= 64.0 * SUS_U * scale && dR <= 64.0 * SUS_U,
+        "%s: first step at TOL %.0e (%d rejected tries, h = %.4g) equals a fresh order-%d series: "
+        "|dw| = %.2g, |dR| = %.2g",
+        name, t_tol, st.iterations, t, ops->order(t_tol), dw, dR);
 }
 
 /* w = 0 and a steady rotation: vanishing rows. */
@@ -186,11 +195,14 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     const double zero[2] = {0.0, 0.0};
     int rc = run(m, zero, 1e-10, 50.0, 5.0, &c, &rep);
     CHECK(rc == SUS_RUN_OK && c.rows == 11 && c.last.w[0] == 0.0 && c.last.w[1] == 0.0 &&
-              c.last.R[0][0] == 1.0 && c.last.R[1][1] == 1.0 && c.last.R[2][2] == 1.0 && c.last.t == 50.0,
-          "%s: w0 = 0 (E0 = 0): %d rows to t = %g, w = 0 and R = I exactly", name, c.rows, c.last.t);
+              c.last.R[0][0] == 1.0 && c.last.R[1][1] == 1.0 && c.last.R[2][2] == 1.0 &&
+              c.last.t == 50.0,
+          "%s: w0 = 0 (E0 = 0): %d rows to t = %g, w = 0 and R = I exactly", name, c.rows,
+          c.last.t);
     /* a steady rotation with c(w*) = 0 exactly in double: w* = 2^j (-I32, I31), its size |w0|'s
      * within a factor 2 (I31 (-I32 2^j) and I32 (I31 2^j) round alike and cancel), so every w row
-     * vanishes and w stays w* exactly; R is then exp(50 w*^) to the quaternion rows' N local errors */
+     * vanishes and w stays w* exactly; R is then exp(50 w*^) to the quaternion rows' N local errors
+     */
     const int j = ilogb(hypot(w0[0], w0[1]) / hypot(m->b[0], m->b[1]));
     const double ws[2] = {ldexp(-m->b[1], j), ldexp(m->b[0], j)};
     rc = run(m, ws, 1e-10, 50.0, 0.0, &c, &rep);
@@ -199,8 +211,10 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     double d = sus_so3_dist(R, c.last.R);
     CHECK(rc == SUS_RUN_OK && sus_c(m, ws) == 0.0 && c.last.w[0] == ws[0] && c.last.w[1] == ws[1] &&
               d <= 10.0 * (double)c.last.k * 1e-10,
-          "%s: steady rotation (c(w*) = 0 exactly): w stays w* exactly, R = exp(50 w*^) to %.3g <= 10 N TOL "
-          "(N = %ld)", name, d, c.last.k);
+          "%s: steady rotation (c(w*) = 0 exactly): w stays w* exactly, R = exp(50 w*^) to %.3g <= "
+          "10 N TOL "
+          "(N = %ld)",
+          name, d, c.last.k);
     /* the steady rotation the closed form tends to from w0, the attracting one of +-w*: c(w*) is
      * u-small but not 0, so the w rows are u-small; whatever they do, TOL bounds each step's error:
      * w and R within 10 N TOL of w* and exp(T w*^) over T = 50 s, s the body's own time */
@@ -215,8 +229,10 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     d = sus_so3_dist(R, c.last.R);
     const double dw = fmax(fabs(c.last.w[0] - wl[0]), fabs(c.last.w[1] - wl[1]));
     const double bound = 10.0 * (double)c.last.k * 1e-10;
-    CHECK(rc == SUS_RUN_OK && dw <= bound && d <= bound, "%s: the closed form's steady rotation over "
-          "T = 50 s = %.3g: w stays within %.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N = %ld)",
+    CHECK(rc == SUS_RUN_OK && dw <= bound && d <= bound,
+          "%s: the closed form's steady rotation over "
+          "T = 50 s = %.3g: w stays within %.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N "
+          "= %ld)",
           name, T, dw, d, c.last.k);
 }
 
@@ -231,15 +247,18 @@ static void rows_and_structure(const sus_model *m, const double w0[2], const cha
      * a step is rejected only where the estimate's constant grows by more than SAFETY^{-(p+1)}
      * (>= 2) from one step to the next, which a smooth flow does on few steps: fewer than half */
     CHECK(rb == SUS_RUN_OK && 2 * rep.sus_newton_iterations < b.last.k,
-          "%s: %ld rejected tries over %ld accepted steps to t = 20 s = %.3g (fewer than half)", name,
-          rep.sus_newton_iterations, b.last.k, 20.0 * s);
+          "%s: %ld rejected tries over %ld accepted steps to t = 20 s = %.3g (fewer than half)",
+          name, rep.sus_newton_iterations, b.last.k, 20.0 * s);
     CHECK(ra == SUS_RUN_OK && a.rows == 81 && a.monotone && a.last.t == 20.0 * s,
-          "%s: --every-time 0.25 s to 20 s: %d rows (81), increasing t, the last at %g", name, a.rows,
-          a.last.t);
-    /* E restored onto E0 rounds 8 u of E's terms (E0's and the scaled w's: 2 u each, the scaling 2 u) */
+          "%s: --every-time 0.25 s to 20 s: %d rows (81), increasing t, the last at %g", name,
+          a.rows, a.last.t);
+    /* E restored onto E0 rounds 8 u of E's terms (E0's and the scaled w's: 2 u each, the scaling 2
+     * u) */
     CHECK(a.w3 == 0.0 && a.worst_orth <= 1e-14 && a.worst_er <= 8.0 * SUS_U,
-          "%s: dense rows keep w3 = 0, |R^T R - I| = %.2g <= 1e-14, |E - E0| = %.2g, %.2g u of E's terms "
-          "(<= 8 u)", name, a.worst_orth, a.worst_e, a.worst_er / SUS_U);
+          "%s: dense rows keep w3 = 0, |R^T R - I| = %.2g <= 1e-14, |E - E0| = %.2g, %.2g u of E's "
+          "terms "
+          "(<= 8 u)",
+          name, a.worst_orth, a.worst_e, a.worst_er / SUS_U);
     /* the row at t_end is the step's own end in both runs: the same state */
     CHECK(rb == SUS_RUN_OK && memcmp(a.last.w, b.last.w, sizeof a.last.w) == 0 &&
               memcmp(a.last.R, b.last.R, sizeof a.last.R) == 0,
@@ -278,11 +297,11 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
     const int rc = sus_run_tol(&cfg, w0, against_reference, &c, &rep);
     run(m, w0, 1e-8, 30.0 * s, 0.0, &steps, &rep);
     const double bound = 10.0 * (double)steps.last.k * 1e-8;
-    CHECK(
-        rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
-        "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, both <= 10 N "
-        "TOL = %.3g",
-        name, c.worst_R, c.worst_w, bound);
+    CHECK(rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
+          "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, "
+          "both <= 10 N "
+          "TOL = %.3g",
+          name, c.worst_R, c.worst_w, bound);
 }
 
 /* The step budget: with max_steps = 3 a run that needs more stops before step 4, at the time its
@@ -299,8 +318,9 @@ static void step_budget(const sus_model *m, const double w0[2], const char *name
     CHECK(all.last.k > 3 && rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT &&
               rep.step == 4 && cut.rows == 4 && rep.t == cut.last.t && cut.last.t < 50.0 * s &&
               rep.stats.det > 0.0,
-          "%s: a budget of 3 steps stops before step %ld at t = %.3g with %d rows (the run needs %ld)", name,
-          rep.step, rep.t, cut.rows, all.last.k);
+          "%s: a budget of 3 steps stops before step %ld at t = %.3g with %d rows (the run needs "
+          "%ld)",
+          name, rep.step, rep.t, cut.rows, all.last.k);
     cfg.max_steps = all.last.k;
     const int rc_enough = sus_run_tol(&cfg, w0, take, &cut, &rep);
     CHECK(rc_enough == SUS_RUN_OK && rep.status == SUS_STEPPER_OK,
@@ -340,13 +360,17 @@ static void estimate_vs_truth(const sus_model *m, const double w0[2], const char
         hi = fmax(hi, st.residual / truth);
     }
     if (counted == 0 && failed == 0) {
-        printf("NOTE %s: the first step's true error is round-off (below %.2g) at every TOL 1e-6 ... 1e-12: "
-               "its estimate has no truncation to be compared with\n", name, floor);
+        printf("NOTE %s: the first step's true error is round-off (below %.2g) at every TOL 1e-6 "
+               "... 1e-12: "
+               "its estimate has no truncation to be compared with\n",
+               name, floor);
         return;
     }
     CHECK(failed == 0 && lo >= 0.1 && hi <= 10.0,
-          "%s: the first step's estimate over its true local error in [%.3g, %.3g] (%d of TOL 1e-6, 1e-8, "
-          "1e-10, 1e-12 above round-off): within [0.1, 10]", name, lo, hi, counted);
+          "%s: the first step's estimate over its true local error in [%.3g, %.3g] (%d of TOL "
+          "1e-6, 1e-8, "
+          "1e-10, 1e-12 above round-off): within [0.1, 10]",
+          name, lo, hi, counted);
 }
 
 /* The order rule of step_taylor_adaptive.c, recomputed here: the smallest even p >= -ln(TOL)/2 + 3
@@ -357,11 +381,13 @@ static void order_rule(void)
     int ok = 1;
     for (double tol = 0.5; tol > 1e-16; tol *= 0.3) {
         int p = 6;
-        while (p < 20 && p < -0.5 * log(tol) + 3.0) p += 2;
+        while (p < 20 && p < -0.5 * log(tol) + 3.0)
+            p += 2;
         ok &= ops->order(tol) == p;
     }
     CHECK(ok && ops->order(1e-10) == 16 && ops->order(1e-4) == 8 && ops->order(DBL_EPSILON) == 20,
-          "the order is the smallest even p >= -ln(TOL)/2 + 3 in [6, 20] (1e-10: %d)", ops->order(1e-10));
+          "the order is the smallest even p >= -ln(TOL)/2 + 3 in [6, 20] (1e-10: %d)",
+          ops->order(1e-10));
 }
 
 int main(void)

@@ -1,8 +1,8 @@
 /* A Taylor step never returns a wrong answer as a success: over a grid of steps up to 100 time
  * units, on the paper's body and on general ones, every Taylor method's step either refuses
  * (SUS_STEPPER_DIVERGED: beyond the radius 1/(K |w|) its series is proved to converge in) or
- * lands within its proved error bound of the closed-form w(eps) (src/core/exact.h, independent of the
- * series). The bound (step_taylor.c): the tail past degree p is at most |w| r^{p+1} / (1 - r),
+ * lands within its proved error bound of the closed-form w(eps) (src/core/exact.h, independent of
+ * the series). The bound (step_taylor.c): the tail past degree p is at most |w| r^{p+1} / (1 - r),
  * r = K |w| eps; restoring E moves the sum by at most kappa times its distance to the ellipse
  * (kappa = the condition number of I_m) to first order, so (2 + kappa) tail bounds the error with
  * room for the second order; 1e-14 |w| covers the rounding of a sum of at most 17 terms of size
@@ -47,7 +47,8 @@ static int sweep(const sus_stepper_type *st, const sus_model *m, const double w0
         const double bound =
             (2.0 + kappa) * sus_step_taylor_tail_bound(st->desc.order, m, eps, w0) + 1e-14 * a;
         *worst = fmax(*worst, err / bound);
-        if (status != SUS_STEPPER_OK || !isfinite(bound) || !(err <= bound)) /* no proof, no answer */
+        /* no proof, no answer */
+        if (status != SUS_STEPPER_OK || !isfinite(bound) || !(err <= bound))
             return -1;
         ran++;
     }
@@ -122,14 +123,16 @@ static void radius_against_quadrature(void)
             worst = d > worst || isnan(d) ? d : worst;
         }
     }
-    CHECK(worst <= 1e-8, "the proved radius is the majorant's blow-up time by quadrature on %d bodies x 4 "
-          "states: worst relative difference %.2g (at most 1e-8)", BODIES_COUNT, worst);
+    CHECK(worst <= 1e-8,
+          "the proved radius is the majorant's blow-up time by quadrature on %d bodies x 4 "
+          "states: worst relative difference %.2g (at most 1e-8)",
+          BODIES_COUNT, worst);
 }
 
 /* The radius is the majorant's blow-up time rounded down by the step's stated margin, 1e-12, and by
- * no more: against the closed form ln((z0 + b)/(z0 - b)) / (2 b K), b = sqrt(z0^2 - F/K), z0 = L/(2K),
- * evaluated in long double from the same coefficients, it lies in [1 - 1e-12 - 1e-13, 1] times it
- * (1e-13: a hundred times the rounding of the step's double formula, a few u). */
+ * no more: against the closed form ln((z0 + b)/(z0 - b)) / (2 b K), b = sqrt(z0^2 - F/K), z0 =
+ * L/(2K), evaluated in long double from the same coefficients, it lies in [1 - 1e-12 - 1e-13, 1]
+ * times it (1e-13: a hundred times the rounding of the step's double formula, a few u). */
 static void radius_rounded_down(void)
 {
     int bad = 0, n = 0;
@@ -152,9 +155,11 @@ static void radius_rounded_down(void)
             bad += !(q <= 0.0 && q >= -1e-12 - 1e-13);
         }
     }
-    CHECK(bad == 0 && n > 0, "the proved radius over the closed form in long double, minus 1, on %d states: "
-          "in [%.3g, %.3g] (must lie in [-1e-12 - 1e-13, 0]: rounded down by the stated margin only)",
-          n, lo, hi);
+    CHECK(
+        bad == 0 && n > 0,
+        "the proved radius over the closed form in long double, minus 1, on %d states: "
+        "in [%.3g, %.3g] (must lie in [-1e-12 - 1e-13, 0]: rounded down by the stated margin only)",
+        n, lo, hi);
 }
 
 /* The tail bound (step_taylor.c) is, by its definition, the least of y(R) q^{p+1} / (1 - q),
@@ -177,7 +182,8 @@ static double tail_bound_by_ode(int p, const sus_model *m, double h, const doubl
     majorant_coeffs(m, w, k);
     const double rho = radius_by_quadrature(m, w);
     gsl_odeiv2_system sys = {majorant_rhs, NULL, 1, k};
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-13, 1e-13);
+    gsl_odeiv2_driver *d =
+        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-13, 1e-13);
     double t = 0.0, y[1] = {0.0}, best = INFINITY;
     for (int i = 1; d && i < 400; i++) {
         const double R = h + (rho - h) * (double)i / 400.0, q = h / R;
@@ -201,7 +207,8 @@ static void tail_bound_against_ode(void)
         if (family_model(k, &b, &m) != 0)
             continue;
         const double rho = sus_step_taylor_radius(&m, b.w0);
-        for (int j = 0; j < 5; j++) { /* j = 3, 4: the top orders, whose best R is the grid's last */
+        for (int j = 0; j < 5;
+             j++) { /* j = 3, 4: the top orders, whose best R is the grid's last */
             const int p = j < 3 ? 8 + 4 * j : (j == 3 ? 28 : SUS_STEP_TAYLOR_MAX_ORDER);
             const double h = rho * (j < 3 ? 0.1 + 0.25 * j : 0.1);
             const double got = sus_step_taylor_tail_bound(p, &m, h, b.w0);
@@ -211,15 +218,18 @@ static void tail_bound_against_ode(void)
             n++;
         }
     }
-    CHECK(worst <= 1e-7, "the Taylor tail bound is its definition with the majorant integrated by rk8pd, "
-          "%d cases on %d bodies: worst relative difference %.2g (at most 1e-7)", n, BODIES_COUNT, worst);
+    CHECK(worst <= 1e-7,
+          "the Taylor tail bound is its definition with the majorant integrated by rk8pd, "
+          "%d cases on %d bodies: worst relative difference %.2g (at most 1e-7)",
+          n, BODIES_COUNT, worst);
 }
 
 /* The majorant's double root, b = 0 in step_taylor.c: z^2 + 2 z0 z + F/K = K (z + z0)^2 when
  * |c(w)| ||fA|| = |b| |fA w|, which some direction w on the unit circle meets between w along b
  * (where the left side is larger) and w across b (where it is 0). Found by bisection on that
  * difference, then among the doubles next to the root one where z0^2 - F/K, computed as the step
- * computes it, is not positive: the step then takes its b = 0 branch. Returns 0 if none is found. */
+ * computes it, is not positive: the step then takes its b = 0 branch. Returns 0 if none is found.
+ */
 static int double_root_state(const sus_model *m, double w[2])
 {
     double a = atan2(m->b[1], m->b[0]), z = a + acos(-1.0) / 2.0; /* along b, across b */
@@ -231,7 +241,8 @@ static int double_root_state(const sus_model *m, double w[2])
         *(g > 0.0 ? &a : &z) = mid;
     }
     for (int j = 0; j < 4000; j++) {
-        const double th = a + (j % 2 ? 1 : -1) * (j / 2) * 1e-16 * fabs(a), u[2] = {cos(th), sin(th)};
+        const double th = a + (j % 2 ? 1 : -1) * (j / 2) * 1e-16 * fabs(a),
+                     u[2] = {cos(th), sin(th)};
         double k[3];
         majorant_coeffs(m, u, k);
         const double K = k[0], z0 = k[1] / (2.0 * K);
@@ -266,12 +277,13 @@ static void double_root_case(void)
     }
     CHECK(found == BODIES_COUNT && wr <= 1e-8 && wt <= 1e-7,
           "the majorant's double root, met on %d of %d bodies: radius against quadrature %.2g "
-          "(at most 1e-8), tail bound against rk8pd %.2g (at most 1e-7)", found, BODIES_COUNT, wr, wt);
+          "(at most 1e-8), tail bound against rk8pd %.2g (at most 1e-7)",
+          found, BODIES_COUNT, wr, wt);
 }
 
 /* At |w| = 3 (a state where the cheap test K |w| |h| < 1 and the radius differ most), a step just
- * inside the proved radius runs and one 1e-9 beyond it (past its 1e-12 rounding) is refused, on every
- * body. */
+ * inside the proved radius runs and one 1e-9 beyond it (past its 1e-12 rounding) is refused, on
+ * every body. */
 static void refused_beyond_radius(void)
 {
     int ok = 0;
@@ -280,27 +292,34 @@ static void refused_beyond_radius(void)
         sus_model m;
         if (family_model(k, &b, &m) != 0)
             continue;
-        const double n = hypot(b.w0[0], b.w0[1]), w[3] = {3.0 * b.w0[0] / n, 3.0 * b.w0[1] / n, 0.0};
+        const double n = hypot(b.w0[0], b.w0[1]),
+                     w[3] = {3.0 * b.w0[0] / n, 3.0 * b.w0[1] / n, 0.0};
         const double rho = sus_step_taylor_radius(&m, w);
         double wn[3], lam;
         sus_stepper_stats st;
         sus_attitude a;
         sus_attitude_identity(&a);
         const int in = sus_step_taylor_apply_full(16, &m, 0.99 * rho, &a, w, wn, &lam, &st);
-        const int out = sus_step_taylor_apply_full(16, &m, (1.0 + 1e-9) * rho, &a, w, wn, &lam, &st);
+        const int out =
+            sus_step_taylor_apply_full(16, &m, (1.0 + 1e-9) * rho, &a, w, wn, &lam, &st);
         ok += in == SUS_STEPPER_OK && out == SUS_STEPPER_DIVERGED;
     }
-    CHECK(ok == BODIES_COUNT, "|w| = 3: a Taylor step of 0.99 times the proved radius runs and one of "
-          "1 + 1e-9 times it is refused (DIVERGED) on %d of %d bodies", ok, BODIES_COUNT);
+    CHECK(ok == BODIES_COUNT,
+          "|w| = 3: a Taylor step of 0.99 times the proved radius runs and one of "
+          "1 + 1e-9 times it is refused (DIVERGED) on %d of %d bodies",
+          ok, BODIES_COUNT);
 }
 
 /* The top right singular vector of (ContDyn)'s matrix A = [-I12 -I22; I11 I21] / |I_m| (the
- * eigenvector of the largest eigenvalue of A^T A, in closed form) and ||A||, from the printed entries. */
+ * eigenvector of the largest eigenvalue of A^T A, in closed form) and ||A||, from the printed
+ * entries. */
 static double top_singular(const double I[9], double v[2])
 {
-    const double d = (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
+    const double d =
+        (double)check_cross_diff_exact(I[0], I[4], I[1], I[3]); /* exact, rounded once */
     const double A[2][2] = {{-I[1] / d, -I[4] / d}, {I[0] / d, I[3] / d}};
-    const double p = A[0][0] * A[0][0] + A[1][0] * A[1][0], r = A[0][1] * A[0][1] + A[1][1] * A[1][1];
+    const double p = A[0][0] * A[0][0] + A[1][0] * A[1][0],
+                 r = A[0][1] * A[0][1] + A[1][1] * A[1][1];
     const double q = A[0][0] * A[0][1] + A[1][0] * A[1][1];
     const double lam = 0.5 * (p + r) + hypot(0.5 * (p - r), q);
     /* (lam - r, q) and (q, lam - p) both solve it; the longer one is the better conditioned */
@@ -311,11 +330,12 @@ static double top_singular(const double I[9], double v[2])
     return sqrt(lam);
 }
 
-/* The cheap test K |w| |h| < 1 accepts a step without the radius because rho >= 1/(K |w|) (F <= K |w|^2,
- * L <= 2 K |w|), with equality when b = (I31, I32) and w both lie along A's top right singular vector:
- * there F = K |w|^2, beta = 0 and rho = 1/(K |w|). On each body turned so (b set to |b| v), at w = 3 v, the
- * radius is 1/(K |w|) within [1 - 1e-12 - 1e-13, 1 + 1e-13] (its rounding-down margin and a few u); a step
- * of 0.99 rho runs and one of 1 + 1e-9 times rho is refused, so the cheap test has no slack to give. */
+/* The cheap test K |w| |h| < 1 accepts a step without the radius because rho >= 1/(K |w|) (F <= K
+ * |w|^2, L <= 2 K |w|), with equality when b = (I31, I32) and w both lie along A's top right
+ * singular vector: there F = K |w|^2, beta = 0 and rho = 1/(K |w|). On each body turned so (b set
+ * to |b| v), at w = 3 v, the radius is 1/(K |w|) within [1 - 1e-12 - 1e-13, 1 + 1e-13] (its
+ * rounding-down margin and a few u); a step of 0.99 rho runs and one of 1 + 1e-9 times rho is
+ * refused, so the cheap test has no slack to give. */
 static void cheap_test_tight(void)
 {
     int ok = 0;
@@ -338,11 +358,14 @@ static void cheap_test_tight(void)
         sus_attitude a;
         sus_attitude_identity(&a);
         const int in = sus_step_taylor_apply_full(16, &m, 0.99 * rho, &a, w, wn, &lam, &st);
-        const int out = sus_step_taylor_apply_full(16, &m, (1.0 + 1e-9) * rho, &a, w, wn, &lam, &st);
+        const int out =
+            sus_step_taylor_apply_full(16, &m, (1.0 + 1e-9) * rho, &a, w, wn, &lam, &st);
         ok += in == SUS_STEPPER_OK && out == SUS_STEPPER_DIVERGED && d >= -1.1e-12 && d <= 1e-13;
     }
-    CHECK(ok == BODIES_COUNT, "b and w along A's top singular vector (rho = 1/(K |w|)), on %d of %d bodies: "
-          "radius against 1/(K |w|) %.3g (in [-1.1e-12, 1e-13]); 0.99 rho runs, (1 + 1e-9) rho is refused",
+    CHECK(ok == BODIES_COUNT,
+          "b and w along A's top singular vector (rho = 1/(K |w|)), on %d of %d bodies: "
+          "radius against 1/(K |w|) %.3g (in [-1.1e-12, 1e-13]); 0.99 rho runs, (1 + 1e-9) rho is "
+          "refused",
           ok, BODIES_COUNT, worst);
 }
 
@@ -363,7 +386,8 @@ int main(void)
         {1.0, 0.3, 0.5, 0.3, 0.8, -0.4, 0.6, -0.7, 1.2},
         {2.0, -0.5, 0.1, -0.5, 0.6, 0.3, -1.5, 2.5, 1.0},
     };
-    static const double starts[4][2] = {{0.4, 0.5}, {-0.1 * 3.0 + 1e-6, 0.2 * 3.0}, {-0.3, 0.9}, {1.5, -2.0}};
+    static const double starts[4][2] = {
+        {0.4, 0.5}, {-0.1 * 3.0 + 1e-6, 0.2 * 3.0}, {-0.3, 0.9}, {1.5, -2.0}};
     const sus_stepper_type *types[4] = {&sus_step_taylor8_type, &sus_step_taylor10_type,
                                         &sus_step_taylor12_type, &sus_step_taylor16_type};
     for (int b = 0; b < 4; b++) {
@@ -377,7 +401,8 @@ int main(void)
             double worst = 0.0;
             const int ran = sweep(types[k], &m, starts[b], &worst);
             CHECK(ran > 0,
-                  "%s, case %d: over steps 1e-3 ... 100 every step that runs (%d of %d) is within its "
+                  "%s, case %d: over steps 1e-3 ... 100 every step that runs (%d of %d) is within "
+                  "its "
                   "proved bound (worst error / bound %.2g), the others exit DIVERGED",
                   types[k]->name, b, ran, NGRID, worst);
         }

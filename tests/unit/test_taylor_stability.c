@@ -20,7 +20,8 @@ static long double truncated_exp(int p, long double z)
     return r;
 }
 
-/* max over the z grid of |R(z) - sum| / (8 u e^{|z|}); R is either stab (if set) or the run-time form */
+/* max over the z grid of |R(z) - sum| / (8 u e^{|z|}); R is either stab (if set) or the run-time
+ * form */
 static double worst_ratio(int p, double (*stab)(double))
 {
     double worst = 0.0;
@@ -40,13 +41,17 @@ int main(void)
     for (int i = 0; i < 4; i++) {
         const double w =
             ty[i]->desc.stability ? worst_ratio(ty[i]->desc.order, ty[i]->desc.stability) : NAN;
-        CHECK(w <= 1.0, "%s: R(z) is the truncated exponential of degree %d on [-8, 2] (error / 8 u e^|z| "
-              "%.2g, at most 1)", ty[i]->name, ty[i]->desc.order, w);
+        CHECK(w <= 1.0,
+              "%s: R(z) is the truncated exponential of degree %d on [-8, 2] (error / 8 u e^|z| "
+              "%.2g, at most 1)",
+              ty[i]->name, ty[i]->desc.order, w);
     }
     double worst = 0.0;
     for (int p = 1; p <= 32; p++)
         worst = fmax(worst, worst_ratio(p, NULL));
-    CHECK(worst <= 1.0, "sus_step_taylor_stability(p, z) for p = 1 .. 32 is the truncated exponential on "
-          "[-8, 2] (error / 8 u e^|z| %.2g, at most 1)", worst);
+    CHECK(worst <= 1.0,
+          "sus_step_taylor_stability(p, z) for p = 1 .. 32 is the truncated exponential on "
+          "[-8, 2] (error / 8 u e^|z| %.2g, at most 1)",
+          worst);
     return check_summary("test_taylor_stability");
 }

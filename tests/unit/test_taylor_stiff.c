@@ -14,9 +14,9 @@
  *   - the settling step keeps the promise of a step: from the state it starts at, its w and its
  *     attitude increment are within TOL of the exact motion over the rest of the run (w by the
  *     closed form; R by the long-double reference attitude, sus_refatt_precise, on the family: on
- *     the hard bodies it is not yet to be trusted), over TOL 1e-1 ... 1e-8 by half decades, wherever
- *     a run to t = 200 settles; the attitude's allowance adds the rounding of the angle
- *     (T - t_k) |w_inf|, 16 u of it, the problem's own conditioning;
+ *     the hard bodies it is not yet to be trusted), over TOL 1e-1 ... 1e-8 by half decades,
+ * wherever a run to t = 200 settles; the attitude's allowance adds the rounding of the angle (T -
+ * t_k) |w_inf|, 16 u of it, the problem's own conditioning;
  *   - dense output after settling: rows every 1 to t = 200 at TOL 1e-4 on the family, against the
  *     closed-form w and the reference attitude, within 10 N TOL (claims_adaptive.c's bound; N the
  *     steps the run takes) plus the angle's rounding;
@@ -55,10 +55,7 @@ static void body_at(int i, body *b)
         *b = HARD[i - BODIES_COUNT];
 }
 
-static double ladder_tol(int j)
-{
-    return j < NLADDER - 1 ? pow(10.0, -2.0 - j) : 0x1p-52;
-}
+static double ladder_tol(int j) { return j < NLADDER - 1 ? pow(10.0, -2.0 - j) : 0x1p-52; }
 
 typedef struct {
     int rc;
@@ -71,7 +68,9 @@ static run_result run(const sus_model *m, const double w0[2], double tol, double
     const sus_tol_config cfg = {m, &sus_step_taylor_adaptive_type, tol, T, 0.0, BUDGET};
     sus_row last;
     sus_run_report rep;
-    run_result r = {sus_run_tol(&cfg, w0, sus_keep_last, &last, &rep), last.k, rep.sus_newton_iterations,
+    run_result r = {sus_run_tol(&cfg, w0, sus_keep_last, &last, &rep),
+                    last.k,
+                    rep.sus_newton_iterations,
                     {last.w[0], last.w[1], last.w[2]}};
     return r;
 }
@@ -112,19 +111,22 @@ static void effort_ladder(void)
         body b;
         sus_model m;
         body_at(i, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         int f = 0, s = 0, w = 0;
         double ww = 0.0;
         body_ladder(&m, b.w0, &f, &s, &w, &ww);
         CHECK(f == 0 && s == 0 && w == 0 && ww <= 1.0,
-              "%s: TOL 1e-2 ... 2^-52 to t = 50: %d runs over %ld steps; %d tighter TOL of the same order "
+              "%s: TOL 1e-2 ... 2^-52 to t = 50: %d runs over %ld steps; %d tighter TOL of the "
+              "same order "
               "with fewer steps, %d with less work; |w(50) - w_exact| <= %.2g of 10 N TOL",
               b.name, f, BUDGET, s, w, ww);
         failed += f, more_steps += s, more_work += w;
         worst_w = fmax(worst_w, ww);
     }
     CHECK(failed == 0 && more_steps == 0 && more_work == 0 && worst_w <= 1.0,
-          "%d bodies (%d of them hard): a looser TOL never costs more steps at one order, nor more work "
+          "%d bodies (%d of them hard): a looser TOL never costs more steps at one order, nor more "
+          "work "
           "((tries) (p+1)^2) across orders; every run within %ld steps and 10 N TOL of w_exact",
           NBODY, NHARD, BUDGET);
 }
@@ -134,10 +136,12 @@ static void issue_case(void)
 {
     sus_model m;
     body b = HARD[0];
-    if (check_body_model(&b, &m) != 0) return;
+    if (check_body_model(&b, &m) != 0)
+        return;
     const run_result loose = run(&m, b.w0, 1e-6, 10.0), tight = run(&m, b.w0, 1e-15, 10.0);
     CHECK(loose.rc == SUS_RUN_OK && tight.rc == SUS_RUN_OK && loose.steps <= tight.steps,
-          "I_m = [1 1-1e-10; 1-1e-10 1], w0 = (0.4, 0.5), t = 10: TOL 1e-6 in %ld steps, 1e-15 in %ld "
+          "I_m = [1 1-1e-10; 1-1e-10 1], w0 = (0.4, 0.5), t = 10: TOL 1e-6 in %ld steps, 1e-15 in "
+          "%ld "
           "(no more at the looser TOL)",
           loose.steps, tight.steps);
 }
@@ -145,8 +149,8 @@ static void issue_case(void)
 /* A run to T taken step by step; the state before its settling step (the step that ends the run
  * with stats.residual 0 and w the closed form's limit) in *wk_state, its time in *tk, and the
  * attitude increment of that step in D. Returns 0 when the run settles, -1 when it does not. */
-static int settling_step(const sus_model *m, const double w0[2], double tol, double T, double wk_state[2],
-                         double *tk, double D[3][3], double w_end[2])
+static int settling_step(const sus_model *m, const double w0[2], double tol, double T,
+                         double wk_state[2], double *tk, double D[3][3], double w_end[2])
 {
     const sus_tol_ops *ops = sus_step_taylor_adaptive_type.tol;
     sus_tol_work *wk = ops->alloc(m, tol, w0);
@@ -158,8 +162,10 @@ static int settling_step(const sus_model *m, const double w0[2], double tol, dou
     for (long n = 0; wk && t < T && n < BUDGET; n++) {
         const double t0 = t, ws[2] = {w[0], w[1]};
         sus_attitude_get(&att, R0);
-        if (ops->step(wk, T, &t, w, &lam, &att, &st) != SUS_STEPPER_OK) break;
-        if (t == T && st.residual == 0.0 && st.iterations == 0 && (w[0] != ws[0] || w[1] != ws[1])) {
+        if (ops->step(wk, T, &t, w, &lam, &att, &st) != SUS_STEPPER_OK)
+            break;
+        if (t == T && st.residual == 0.0 && st.iterations == 0 &&
+            (w[0] != ws[0] || w[1] != ws[1])) {
             sus_attitude_get(&att, R1);
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
@@ -175,21 +181,24 @@ static int settling_step(const sus_model *m, const double w0[2], double tol, dou
 
 /* The settling step's local error against the exact motion from its start, over the rest of the
  * run, in units of TOL: w (closed form) and R (reference attitude, when finite). */
-static void settle_errors(const sus_model *m, const double w0[2], int with_R, double *ew, double *eR, int *n,
-                          int *nR)
+static void settle_errors(const sus_model *m, const double w0[2], int with_R, double *ew,
+                          double *eR, int *n, int *nR)
 {
     for (int j = 0; j <= 14; j++) {
         const double tol = pow(10.0, -1.0 - 0.5 * j), T = 200.0;
         double ws[2], tk, D[3][3], w_end[2], we[2], wr[2], Rr[3][3];
-        if (settling_step(m, w0, tol, T, ws, &tk, D, w_end) != 0) continue;
+        if (settling_step(m, w0, tol, T, ws, &tk, D, w_end) != 0)
+            continue;
         sus_exact ex;
         sus_exact_init(&ex, m, ws);
         sus_exact_omega(&ex, T - tk, we);
         *ew = fmax(*ew, hypot(w_end[0] - we[0], w_end[1] - we[1]) / tol);
         (*n)++;
-        if (!with_R) continue;
+        if (!with_R)
+            continue;
         sus_refatt_precise(m, ws, T - tk, wr, Rr);
-        *eR = fmax(*eR, sus_so3_dist(Rr, D) / (tol + 16.0 * SUS_U * (1.0 + (T - tk) * hypot(ws[0], ws[1]))));
+        *eR = fmax(*eR, sus_so3_dist(Rr, D) /
+                            (tol + 16.0 * SUS_U * (1.0 + (T - tk) * hypot(ws[0], ws[1]))));
         (*nR)++;
     }
 }
@@ -202,13 +211,15 @@ static void settling(void)
         body b;
         sus_model m;
         body_at(i, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         const int before = n;
         settle_errors(&m, b.w0, i < BODIES_COUNT, &ew, &eR, &n, &nR);
         bodies += n > before;
     }
     CHECK(bodies == NBODY && nR > 0 && ew <= 1.0 && eR <= 1.0,
-          "the settling step's local error over the rest of the run (t = 200), %d runs on %d of %d bodies "
+          "the settling step's local error over the rest of the run (t = 200), %d runs on %d of %d "
+          "bodies "
           "(R on %d): w %.3g TOL, R %.3g TOL (at most 1 TOL)",
           n, bodies, NBODY, nR, ew, eR);
 }
@@ -240,7 +251,8 @@ static void dense_after_settling(void)
         body b;
         sus_model m;
         body_at(i, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         dense_ctx c = {.worst_R = 0.0};
         sus_exact_init(&c.ex, &m, b.w0);
         sus_refatt_init(&c.ref, &c.ex, 0.0, I3);
@@ -257,7 +269,8 @@ static void dense_after_settling(void)
         n++;
     }
     CHECK(worst <= 1.0 && settled == n,
-          "%d bodies, rows every 1 to t = 200 at TOL 1e-4 (%d runs settle): |R - R_ref| and |w - w(t)| "
+          "%d bodies, rows every 1 to t = 200 at TOL 1e-4 (%d runs settle): |R - R_ref| and |w - "
+          "w(t)| "
           "within %.3g of 10 N TOL",
           n, settled, worst);
 }
@@ -273,7 +286,8 @@ static void floor_settles(void)
         sus_exact ex;
         double ws[2];
         body_at(i, &b);
-        if (check_body_model(&b, &m) != 0) continue;
+        if (check_body_model(&b, &m) != 0)
+            continue;
         sus_exact_init(&ex, &m, b.w0);
         sus_exact_limit(&ex, ws);
         const double a0 = m.fA[0][0] * ws[0] + m.fA[0][1] * ws[1],
@@ -283,14 +297,17 @@ static void floor_settles(void)
         const run_result r = run(&m, w0, 0x1p-52, 50.0);
         /* w_inf from E carries E's rounding: u times the size of E's terms over E */
         const double *I = b.I, x = ws[0], y = ws[1];
-        const double terms =
-            0.5 * (fabs(I[0]) * x * x + (fabs(I[1]) + fabs(I[3])) * fabs(x * y) + fabs(I[4]) * y * y);
-        const double tol = 16.0 * SUS_U * hypot(ws[0], ws[1]) * fmax(1.0, terms / sus_energy(&m, ws));
+        const double terms = 0.5 * (fabs(I[0]) * x * x + (fabs(I[1]) + fabs(I[3])) * fabs(x * y) +
+                                    fabs(I[4]) * y * y);
+        const double tol =
+            16.0 * SUS_U * hypot(ws[0], ws[1]) * fmax(1.0, terms / sus_energy(&m, ws));
         bad += r.rc != SUS_RUN_OK || r.steps != 1 || hypot(r.w[0] - ws[0], r.w[1] - ws[1]) > tol;
         n++;
     }
-    CHECK(bad == 0, "%d bodies: from 4 u |w_inf| off the steady rotation, TOL 2^-52: one step to t = 50, "
-          "ending on w_inf (to 16 u, times E's rounding over u): %d do not", n, bad);
+    CHECK(bad == 0,
+          "%d bodies: from 4 u |w_inf| off the steady rotation, TOL 2^-52: one step to t = 50, "
+          "ending on w_inf (to 16 u, times E's rounding over u): %d do not",
+          n, bad);
 }
 
 int main(void)

@@ -78,12 +78,14 @@ static void bounds_hold(void)
         sus_model m;
         sus_exact ex;
         body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0)) continue;
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+            continue;
         const double a0 = ex.sigma * ex.s0, sq = sqrt(cond_im(b.I));
         const double slack = ROUND_W * U * w_scale(&ex), islack = slack * 60.0 / ex.k;
         for (int j = -1; j <= 7; j++) {
             const double a = j < 0 ? a0 : 2.0 * j;
-            if (a < a0) continue;
+            if (a < a0)
+                continue;
             const double t = (a - a0) / ex.k;
             double dev, in, sup, I;
             sus_exact_tail_bounds(&ex, t, &dev, &in);
@@ -91,7 +93,8 @@ static void bounds_hold(void)
             below = fmax(below, fmax((sup - slack) / dev, (I - islack) / in));
             n++;
             const double x = exp(-a) * sq, f = (1.0 + x) / (1.0 - x);
-            if (!(x <= 0.5)) continue;
+            if (!(x <= 0.5))
+                continue;
             loose = fmax(loose, fmax(dev / (f * (sup + slack)), in / (f * (I + islack))));
             tight++;
         }
@@ -99,10 +102,12 @@ static void bounds_hold(void)
     CHECK(n > 0 && below <= 1.0 + 1e-9,
           "sus_exact_tail_bounds on %d bodies, %d starts (a = a0, 0, 2, ..., 14): the sampled "
           "largest |w - w_inf| ahead and its integral over the bounds, at most %.9f (at most 1, to "
-          "the sampling's rounding)", BODIES_COUNT, n, below);
+          "the sampling's rounding)",
+          BODIES_COUNT, n, below);
     CHECK(tight > 0 && loose <= 1.0 + 1e-9,
           "and tight: at the %d starts with x = e^-a sqrt(cond I_m) <= 1/2, each bound over "
-          "(1 + x) / (1 - x) times what it bounds: at most %.6f (at most 1)", tight, loose);
+          "(1 + x) / (1 - x) times what it bounds: at most %.6f (at most 1)",
+          tight, loose);
 }
 
 /* Steps and final attitude of a run of taylor-adaptive to T. */
@@ -115,7 +120,8 @@ static int run_to(const sus_model *m, const double w0[2], double tol, double T, 
     const int rc = sus_run_tol(&cfg, w0, sus_keep_last, &last, &rep);
     *steps = last.k;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) R[i][j] = last.R[i][j];
+        for (int j = 0; j < 3; j++)
+            R[i][j] = last.R[i][j];
     return rc;
 }
 
@@ -123,8 +129,8 @@ static int run_to(const sus_model *m, const double w0[2], double tol, double T, 
 static double energy_ratio(const double I[9], const sus_model *m, const double w[2])
 {
     const double x = w[0], y = w[1];
-    const double t = 0.5 * (fabs(I[0]) * x * x + (fabs(I[1]) + fabs(I[3])) * fabs(x * y) +
-                            fabs(I[4]) * y * y);
+    const double t =
+        0.5 * (fabs(I[0]) * x * x + (fabs(I[1]) + fabs(I[3])) * fabs(x * y) + fabs(I[4]) * y * y);
     return fmax(1.0, t / sus_energy(m, w));
 }
 
@@ -140,7 +146,8 @@ static void one_body(const body *b, const sus_model *m, double tol, int *unequal
     const double rho = fmax(energy_ratio(b->I, m, b->w0), energy_ratio(b->I, m, winf));
     long first = -1;
     for (int e = 3; e <= 6; e++) {
-        if (e == 5) continue;
+        if (e == 5)
+            continue;
         const double T = pow(10.0, e) * scale;
         long steps;
         if (run_to(m, b->w0, tol, T, &steps, R) != SUS_RUN_OK) {
@@ -149,7 +156,8 @@ static void one_body(const body *b, const sus_model *m, double tol, int *unequal
         }
         *unequal += first >= 0 && steps != first;
         first = first < 0 ? steps : first;
-        if (e == 3) continue;
+        if (e == 3)
+            continue;
         sus_refatt_precise(m, b->w0, T, wr, Rr);
         const double bound =
             F_UNDERSHOOT * steps * tol + ROUND_ANGLE * rho * U * (1.0 + T * wn) + REF_DIST;
@@ -166,13 +174,19 @@ static void long_runs(void)
         body b;
         sus_model m;
         body_get(k, &b);
-        if (check_body_model(&b, &m)) continue;
-        for (int j = 0; j < 3; j++) one_body(&b, &m, TOLS[j], &unequal, &worst);
+        if (check_body_model(&b, &m))
+            continue;
+        for (int j = 0; j < 3; j++)
+            one_body(&b, &m, TOLS[j], &unequal, &worst);
     }
-    CHECK(unequal == 0, "%d bodies at TOL 1e-6, 1e-10, 1e-14: the same number of steps to T = 1e3, "
-          "1e4 and 1e6 (t k = T k_paper): %d differ", BODIES_COUNT, unequal);
-    CHECK(worst <= 1.0, "and dist(R, R_ref) at T = 1e4 and 1e6 within 10 N TOL + 16 rho u (1 + T "
-          "|w_inf|) + 3 2^-51: worst %.3g of that (at most 1)", worst);
+    CHECK(unequal == 0,
+          "%d bodies at TOL 1e-6, 1e-10, 1e-14: the same number of steps to T = 1e3, "
+          "1e4 and 1e6 (t k = T k_paper): %d differ",
+          BODIES_COUNT, unequal);
+    CHECK(worst <= 1.0,
+          "and dist(R, R_ref) at T = 1e4 and 1e6 within 10 N TOL + 16 rho u (1 + T "
+          "|w_inf|) + 3 2^-51: worst %.3g of that (at most 1)",
+          worst);
 }
 
 static void conditioning(void)
@@ -184,7 +198,8 @@ static void conditioning(void)
         sus_model m;
         sus_exact ex;
         body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0)) continue;
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+            continue;
         double winf[2], w1[2], w2[2], R1[3][3], R2[3][3];
         sus_exact_limit(&ex, winf);
         for (int p = 4; p <= 6; p += 2) {
@@ -199,7 +214,8 @@ static void conditioning(void)
     CHECK(lo >= 0.99 && hi <= 1.01,
           "%d bodies, T = 1e4 and 1e6: dist(R(T), R(T (1 + 2^-40))) / (sqrt2 2^-40 T |w_inf|) "
           "in [%.6f, %.6f] (within 1 %% of 1: the attitude's sensitivity to a relative change of "
-          "time or of w0's scale is T |w_inf|)", BODIES_COUNT, lo, hi);
+          "time or of w0's scale is T |w_inf|)",
+          BODIES_COUNT, lo, hi);
 }
 
 int main(void)
