@@ -15,6 +15,7 @@
 #include "claims_figures.h"
 #include "claims_global.h"
 #include "claims_highorder.h"
+#include "claims_inputs.h"
 #include "claims_methods.h"
 #include "claims_paper.h"
 #include "claims_propocons1.h"
@@ -57,6 +58,7 @@ static void s_fold(int i) { stability_fold_claims(&P.ex, i); }
 static void s_section6(int a) { (void)a, section6_claims(&P.m, &P.ex); }
 static void s_remark55(int a) { (void)a, remark55_claims(&P.m, &P.ex); }
 static void s_quad(int a) { (void)a, quad_claims(&P.m, &P.ex); }
+static void s_inputs(int a) { (void)a, inputs_claims(&P.m); }
 static void s_fig2more(int a) { (void)a, fig2more_claims(&P.m, &P.ex); }
 static void s_propocons1(int a) { (void)a, propocons1_claims(); }
 static void s_reference(int a) { (void)a, highorder_reference_claims(&P.m, &P.ex); }
@@ -102,6 +104,7 @@ static const section SECTIONS[] = {
     {"coverage", s_coverage, 0},
     {"Figure 2 readings", s_fig2readings, 0},
     {"sensitivity", s_sensitivity, 0},
+    {"inputs as decimals", s_inputs, 0},
 };
 #define NSECTIONS ((int)(sizeof SECTIONS / sizeof SECTIONS[0]))
 
