@@ -219,6 +219,9 @@ $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(if $(filter $@,$(TESTS_DRAW)),$(LIBS_DRAW),$(LIBS_RUN)) -o $@
 
+# The attitude-order test takes its expected orders from the ledger's table of the theory.
+$(BUILD)/test_attitude_order: $(BUILD)/tobj/ledger/expected_orders.o
+
 CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
 $(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
 	$(call say,LD,$@)

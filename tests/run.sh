@@ -102,6 +102,8 @@ if [ "$mode" != ledger ]; then
     run eqmap sh tools/eqmap.sh check
     run doc_links sh tests/build/doc_links.sh
     run doc_facts sh tests/build/doc_facts.sh
+    # the steps of docs/howto/add-a-method.md, taken in a scratch copy of the tree and build
+    run scaffold_method sh tests/build/scaffold_method.sh "$B"
     st_end "build checks" "$(echo $st_names | tr ' ' ',' | sed 's/,/, /g')"
 fi
 if [ "$mode" != test ]; then

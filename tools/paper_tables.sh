@@ -108,11 +108,11 @@ printf '%s\n' '\end{longtable}' >>"$O/conclusions.tex"
 
 # The appendix's table of every line that tests the paper, in the paper's order: a stable sort of
 # its rows (one per line, ending in \\) by the position in labels.tsv of the first label they
-# cite, or of the figure they cite if any (a row about a figure sits with the figure, not with
-# the section's text that introduces it); the header and footer stay in place. A (sub)section's
-# own text (a row citing "Sec. 5.6 text") sorts after the section's numbered statements and
-# before its figures, where the source discusses its experiments. Each row gets the finding of
-# Table 1 it rests under (paper/findings.tsv).
+# cite (\PaperRef.. or \eqref), or of the figure they cite if any (a row about a figure sits
+# with the figure, not with the section's text that introduces it); the header and footer stay
+# in place. A (sub)section's own text (a row citing "Sec. 5.6 text") sorts after the section's
+# numbered statements and before its figures, where the source discusses its experiments. Each
+# row gets the finding of Table 1 it rests under (paper/findings.tsv).
 awk -F'\t' 'FILENAME == ARGV[1] { if (FNR == 1) next
                       if ($2 ~ /section$/) sec = $1; else if ($2 != "figure" && sec != "") pos[sec] = FNR
                       if ($2 == "figure") isfig[$1] = 1
@@ -139,7 +139,7 @@ FILENAME == ARGV[3] { if (FNR > 1) { n = split($4, a, " "); for (i = 1; i <= n; 
           $0 = substr($0, 1, len) " {\\scriptsize\\href{\\RepoBase " file "}{\\texttt{" shown "}}}" substr($0, len + 1) }
       if (fd != "" && substr($0, length($0) - 1) == "\\\\") $0 = substr($0, 1, length($0) - 2) " " fd "\\\\" }
   got = 0
-  while (match(s, /\\PaperRef(Or|Paren)\{[^}]*\}/)) {
+  while (match(s, /\\(PaperRef(Or|Paren)|eqref)\{[^}]*\}/)) {
       l = substr(s, RSTART, RLENGTH); sub(/^[^{]*\{/, "", l); sub(/\}$/, "", l)
       if ((l in pos) && !got) { key = pos[l]; got = 1 }
       if ((l in pos) && (l in isfig)) { key = pos[l]; break }

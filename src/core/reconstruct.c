@@ -67,6 +67,15 @@ void sus_quat_to_attitude(const double q[4], sus_attitude *a)
     a->r_stale = 1;
 }
 
+/* The argument xi of tau in (algo), step 3: eps w^k for cayley (first order), the midpoint
+ * eps (w^k + w^{k+1}) / 2 for the symmetric reconstructions (second order). */
+static void recon_arg(sus_recon kind, double eps, const double w[3], const double w_next[3],
+                      double xi[3])
+{
+    for (int i = 0; i < 3; i++)
+        xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+}
+
 /* (algo), step 3, with tau = cay as in (caypart), or tau = exp (Rodrigues) for exp-mid. */
 void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w[3],
                      const double w_next[3])
@@ -79,8 +88,7 @@ void sus_reconstruct(sus_recon kind, double eps, sus_attitude *a, const double w
         sus_attitude_increment(a, D);
         return;
     }
-    for (int i = 0; i < 3; i++)
-        xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+    recon_arg(kind, eps, w, w_next, xi);
     if (kind == SUS_RECON_EXP_MID)
         sus_so3_exp_minus_identity(xi, D);
     else
@@ -99,8 +107,7 @@ void sus_reconstruct_quat(sus_recon kind, double eps, double q[4], const double 
         q[0] = q[1] = q[2] = q[3] = NAN;
         return;
     }
-    for (int i = 0; i < 3; i++)
-        xi[i] = kind == SUS_RECON_CAYLEY ? eps * w[i] : 0.5 * eps * (w[i] + w_next[i]);
+    recon_arg(kind, eps, w, w_next, xi);
     if (kind == SUS_RECON_EXP_MID) {
         const double th = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
         double half_sin;

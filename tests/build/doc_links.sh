@@ -1,5 +1,5 @@
 #!/bin/sh
-# Every relative link of README.md and docs/ resolves: each markdown link [text](target) and
+# Every relative link of README.md and docs/ resolves: each markdown link `[text](target)` and
 # each <img src=...> or <a href=...> outside code leads to a file or folder of the tree, and each
 # #anchor to a heading of its markdown file, by the anchors GitHub derives from headings
 # (lowercased, punctuation dropped but - and _, spaces as -). Links to other sites are not

@@ -1,8 +1,10 @@
 /* The claims program: every section of the ledger, in the order of its lines, run on the
  * available cores (ledger_jobs.h) once what they share is made; then the lines that compare
  * the reference attitude with what the sections fitted, and the files.
- * Usage: claims [-j JOBS] [CLAIMS_TSV]   (JOBS: default the processors online; 1 runs the
- * sections one after the other in this process, the run every other is compared with) */
+ * Usage: claims [-j JOBS] [--method NAME] [CLAIMS_TSV]   (JOBS: default the processors online; 1
+ * runs the sections one after the other in this process, the run every other is compared with;
+ * --method NAME: only the per-method sections, for that method alone, as a new method's first
+ * check: tests/build/scaffold_method.sh) */
 #include "atomic_file.h"
 #include "claims_adaptive.h"
 #include "claims_bodies.h"
@@ -13,6 +15,7 @@
 #include "claims_figures.h"
 #include "claims_global.h"
 #include "claims_highorder.h"
+#include "claims_inputs.h"
 #include "claims_methods.h"
 #include "claims_paper.h"
 #include "claims_propocons1.h"
@@ -34,6 +37,7 @@ const double PAPER_TK[PAPER_NTK] = {0.0, 3.0, 7.0, 12.0, 20.0};
 
 static claims_paper P;
 static const char *tsv_path = "build/claims.tsv";
+static int only = -1; /* --method: the method's index, else -1 */
 
 /* ---- the sections, as the jobs run them: arg is a method's index where there is one ---- */
 
@@ -54,6 +58,7 @@ static void s_fold(int i) { stability_fold_claims(&P.ex, i); }
 static void s_section6(int a) { (void)a, section6_claims(&P.m, &P.ex); }
 static void s_remark55(int a) { (void)a, remark55_claims(&P.m, &P.ex); }
 static void s_quad(int a) { (void)a, quad_claims(&P.m, &P.ex); }
+static void s_inputs(int a) { (void)a, inputs_claims(&P.m); }
 static void s_fig2more(int a) { (void)a, fig2more_claims(&P.m, &P.ex); }
 static void s_propocons1(int a) { (void)a, propocons1_claims(); }
 static void s_reference(int a) { (void)a, highorder_reference_claims(&P.m, &P.ex); }
@@ -99,6 +104,7 @@ static const section SECTIONS[] = {
     {"coverage", s_coverage, 0},
     {"Figure 2 readings", s_fig2readings, 0},
     {"sensitivity", s_sensitivity, 0},
+    {"inputs as decimals", s_inputs, 0},
 };
 #define NSECTIONS ((int)(sizeof SECTIONS / sizeof SECTIONS[0]))
 
@@ -110,13 +116,15 @@ static int section_tasks(ledger_task *tasks, int max)
         for (int i = 0; i < (SECTIONS[s].per_method ? sus_step_method_count() : 1); i++) {
             if (n == max)
                 ledger_die("fitting the sections into their table");
-            tasks[n++] = (ledger_task){SECTIONS[s].name, SECTIONS[s].run, i};
+            if (only < 0 || (SECTIONS[s].per_method && i == only))
+                tasks[n++] = (ledger_task){SECTIONS[s].name, SECTIONS[s].run, i};
         }
     return n;
 }
 
-/* What every section shares: the paper's body, its closed form, the convergence sweep, and the
- * bodies of tests/unit/bodies.h with their references (made here once, not in every job). */
+/* What every section shares: the paper's body, its closed form, the convergence sweep (which no
+ * per-method section reads: not made under --method), and the bodies of tests/unit/bodies.h with
+ * their references (made here once, not in every job). */
 static void prepare(void)
 {
     char err[256];
@@ -129,7 +137,8 @@ static void prepare(void)
     ledger_number("EnergyZero", sus_energy(&P.m, SUS_PAPER_OMEGA0));
     ledger_number("SteadyOmegaOne", winf[0]);
     ledger_number("SteadyOmegaTwo", winf[1]);
-    if (sus_lab_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
+    if (only < 0 &&
+        sus_lab_convergence_run(&P.conv, &P.ex, PAPER_TK, PAPER_NTK, PAPER_T_GLOBAL) != 0)
         ledger_die("the convergence sweep");
     for (int k = 0; k < BODIES_COUNT; k++)
         claims_body_get(k);
@@ -171,10 +180,27 @@ static void write_methods(const char *tsv)
         ledger_die(err);
 }
 
-/* -j JOBS (or -jJOBS) and the path; bad arguments: one line and exit 2. */
+/* --method NAME at argv[*i], if there: sets only, or one line and exit 2 for a name that is not a
+ * fixed-step method (the per-method sections iterate those). */
+static void parse_method(int argc, char **argv, int *i)
+{
+    if (*i >= argc || strcmp(argv[*i], "--method") != 0)
+        return;
+    const char *name = *i + 1 < argc ? argv[*i + 1] : "";
+    only = sus_step_method_index(name);
+    if (only < 0 || only >= sus_step_method_count()) {
+        fprintf(stderr, "claims: --method takes a fixed-step method of the registry, not '%s'\n",
+                name);
+        exit(2);
+    }
+    *i += 2;
+}
+
+/* -j JOBS (or -jJOBS), --method NAME and the path; bad arguments: one line and exit 2. */
 static int parse_args(int argc, char **argv)
 {
     int jobs = ledger_jobs_online(), i = 1;
+    parse_method(argc, argv, &i);
     if (i < argc && strncmp(argv[i], "-j", 2) == 0) {
         const char *v = argv[i][2] ? argv[i] + 2 : i + 1 < argc ? argv[++i] : "";
         char *end;
@@ -186,8 +212,9 @@ static int parse_args(int argc, char **argv)
         jobs = (int)j;
         i++;
     }
+    parse_method(argc, argv, &i);
     if (argc - i > 1 || (i < argc && argv[i][0] == '-')) {
-        fprintf(stderr, "usage: claims [-j JOBS] [CLAIMS_TSV]\n");
+        fprintf(stderr, "usage: claims [-j JOBS] [--method NAME] [CLAIMS_TSV]\n");
         exit(2);
     }
     if (i < argc)
@@ -202,8 +229,10 @@ int main(int argc, char **argv)
     gsl_set_error_handler_off();
     prepare();
     ledger_run_tasks(tasks, section_tasks(tasks, 512), jobs);
-    reference_claims();
-    sus_lab_convergence_free(&P.conv);
+    if (only < 0) { /* it compares with what the convergence sweep fitted */
+        reference_claims();
+        sus_lab_convergence_free(&P.conv);
+    }
     const int failed = ledger_finish(tsv_path);
     write_methods(tsv_path);
     return failed != 0;
