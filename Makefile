@@ -305,7 +305,7 @@ $(BUILD)/ledger-j1/claims.out: $(CLAIMS) | $(TIMED)
 	    $(@D)/claims.tsv; if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
 	    else cat $@.tmp; rm -f $@.tmp; echo "ledger -j1: the claims program stopped early"; exit 1; fi
 
-# The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
+# The fuzzer (tests/cli/fuzz*.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the
 # interface; last line "fuzz: N passed, N failed". CI runs it under SAN=1.
 T    ?= 60
@@ -314,7 +314,7 @@ SEED ?= 20261122
 fuzz: $(BUILD)/suslov $(BUILD)/fuzz
 	@$(SAN_ENV) $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
 
-$(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
+$(BUILD)/fuzz: $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/cli/fuzz*.c))
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $^ -o $@
 
