@@ -102,8 +102,8 @@ inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 
 # The programs' main files (wasm_api.c: the browser's, built only for WebAssembly); the other
-# files of src/prog (suslov's option table, parser and progress line) are the programs' own
-# support, archived like a layer.
+# files of src/prog (suslov's option table, parser and progress line, the animation's video) are
+# the programs' own support, archived like a layer.
 PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c) \
              src/prog/wasm_api.c src/prog/timed.c
 src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
