@@ -179,15 +179,17 @@ endef
 $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
 # --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball),
-# through a stamp that changes only when the commit does, so only suslov_cli.o is rebuilt then.
+# through a stamp that changes only when the commit does, so only the two objects that print it
+# (--version and --man: suslov_cli.o; the output's header: suslov_cli_header.o) are rebuilt then.
 # Only when this directory is the top of its own work tree: a source export unpacked inside
 # another repository's work tree must not carry that repository's commit.
 SUSLOV_VERSION := $(shell top=$$(git -C "$(CURDIR)" rev-parse --show-toplevel 2>/dev/null) && \
     [ "$$top" = "$$(cd "$(CURDIR)" && pwd -P)" ] && git -C "$(CURDIR)" describe --always --dirty 2>/dev/null \
     || echo unknown)
 $(eval $(call STAMP_RULE,$(BUILD)/version.stamp,$(SUSLOV_VERSION)))
-$(BUILD)/obj/prog/suslov_cli.o: $(BUILD)/version.stamp
-$(BUILD)/obj/prog/suslov_cli.o: VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
+VERSION_OBJ := $(BUILD)/obj/prog/suslov_cli.o $(BUILD)/obj/prog/suslov_cli_header.o
+$(VERSION_OBJ): $(BUILD)/version.stamp
+$(VERSION_OBJ): VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 	$(call say,LD,$@)
