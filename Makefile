@@ -102,8 +102,8 @@ inc_tests   := $(inc_prog) -Itests/unit -Itests/ledger
 CFLAGS_OF   = $(WARN) $(CFLAGS) $(SANFLAGS) $(inc_$(1)) $(PKG_CFLAGS) -MMD -MP
 
 # The programs' main files (wasm_api.c: the browser's, built only for WebAssembly); the other
-# files of src/prog (suslov's option table, parser and progress line) are the programs' own
-# support, archived like a layer.
+# files of src/prog (suslov's option table, parser and progress line, the animation's video) are
+# the programs' own support, archived like a layer.
 PROG_MAIN := src/prog/suslov.c src/prog/bench.c src/prog/animation.c $(wildcard src/prog/figure_*.c) \
              src/prog/wasm_api.c src/prog/timed.c
 src_of  = $(filter-out $(PROG_MAIN),$(sort $(wildcard src/$(1)/*.c)))
@@ -179,15 +179,17 @@ endef
 $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
 # --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball),
-# through a stamp that changes only when the commit does, so only suslov_cli.o is rebuilt then.
+# through a stamp that changes only when the commit does, so only the two objects that print it
+# (--version and --man: suslov_cli.o; the output's header: suslov_cli_header.o) are rebuilt then.
 # Only when this directory is the top of its own work tree: a source export unpacked inside
 # another repository's work tree must not carry that repository's commit.
 SUSLOV_VERSION := $(shell top=$$(git -C "$(CURDIR)" rev-parse --show-toplevel 2>/dev/null) && \
     [ "$$top" = "$$(cd "$(CURDIR)" && pwd -P)" ] && git -C "$(CURDIR)" describe --always --dirty 2>/dev/null \
     || echo unknown)
 $(eval $(call STAMP_RULE,$(BUILD)/version.stamp,$(SUSLOV_VERSION)))
-$(BUILD)/obj/prog/suslov_cli.o: $(BUILD)/version.stamp
-$(BUILD)/obj/prog/suslov_cli.o: VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
+VERSION_OBJ := $(BUILD)/obj/prog/suslov_cli.o $(BUILD)/obj/prog/suslov_cli_header.o
+$(VERSION_OBJ): $(BUILD)/version.stamp
+$(VERSION_OBJ): VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
 $(BUILD)/suslov: $(BUILD)/obj/prog/suslov.o $(LIBS_LINK)
 	$(call say,LD,$@)
@@ -311,7 +313,7 @@ $(BUILD)/ledger-j1/claims.out: $(CLAIMS) | $(TIMED)
 	    $(@D)/claims.tsv; if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
 	    else cat $@.tmp; rm -f $@.tmp; echo "ledger -j1: the claims program stopped early"; exit 1; fi
 
-# The fuzzer (tests/cli/fuzz.c): random and hostile argument vectors against $(BUILD)/suslov for T
+# The fuzzer (tests/cli/fuzz*.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the
 # interface; last line "fuzz: N passed, N failed". CI runs it under SAN=1.
 T    ?= 60
@@ -320,7 +322,7 @@ SEED ?= 20261122
 fuzz: $(BUILD)/suslov $(BUILD)/fuzz
 	@$(SAN_ENV) $(BUILD)/fuzz $(BUILD)/suslov $(T) $(SEED)
 
-$(BUILD)/fuzz: $(BUILD)/tobj/cli/fuzz.o
+$(BUILD)/fuzz: $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/cli/fuzz*.c))
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $^ -o $@
 

@@ -7,8 +7,9 @@
  * DATADIR/attitude.csv: the R_k of both integrators at every step, exactly as `suslov` prints
  * them for the same settings (the same driver).
  * On every exit path - an error, or SIGINT/SIGTERM/SIGHUP - the ffmpeg child is stopped and
- * waited for, and the temporary video and frame files are removed. */
+ * waited for, and the temporary video and frame files are removed (animation_video.c). */
 #define _POSIX_C_SOURCE 200809L
+#include "animation_video.h"
 #include "atomic_file.h"
 #include "plot.h"
 #include "driver.h"
@@ -26,48 +27,11 @@
 #include <cairo.h>
 #include <errno.h>
 #include <gsl/gsl_errno.h>
-#include <fcntl.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-/* ---- what must not outlive the program: the ffmpeg child and the temporary files ---- */
-
-static volatile pid_t video_pid = -1; /* the running ffmpeg, or -1 */
-static char video_tmp[4200];          /* the video ffmpeg writes, renamed on success */
-
-/* Async-signal-safe: kill(), waitpid(), unlink(). SIGKILL, not SIGTERM: on SIGTERM ffmpeg
- * finishes its output file, which could then appear after the unlink. */
-static void on_signal(int sig)
-{
-    if (video_pid > 0) {
-        kill(video_pid, SIGKILL);
-        waitpid(video_pid, NULL, 0);
-    }
-    if (video_tmp[0])
-        unlink(video_tmp);
-    sus_sys_atomic_file_remove_temporaries(); /* a frame being written (named fallback) */
-    signal(sig, SIG_DFL);
-    raise(sig);
-}
-
-/* atexit: on an error exit the video is unfinished; stop ffmpeg, wait for it, remove its file. */
-static void stop_video(void)
-{
-    if (video_pid > 0) {
-        kill(video_pid, SIGKILL);
-        waitpid(video_pid, NULL, 0);
-        video_pid = -1;
-    }
-    if (video_tmp[0])
-        unlink(video_tmp);
-    video_tmp[0] = '\0';
-}
 
 /* What main allocates, released at exit on every path (an error return included). */
 static struct {
@@ -84,47 +48,6 @@ static void release_owned(void)
         sus_plot_gl_context_destroy(owned.gl);
     free(owned.strip);
     memset(&owned, 0, sizeof owned);
-}
-
-/* ffmpeg reading raw frames on a pipe; returns the write end as a stream, or NULL. */
-static FILE *start_video(int W, int H, int fps, const char *out)
-{
-    int fd[2];
-    if (pipe(fd) != 0)
-        return NULL;
-    char size[32], rate[16];
-    snprintf(size, sizeof size, "%dx%d", W, H);
-    snprintf(rate, sizeof rate, "%d", fps);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        dup2(fd[0], 0);
-        close(fd[0]);
-        close(fd[1]);
-        execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pixel_format",
-               "bgra", "-video_size", size, "-framerate", rate, "-i", "-", "-c:v", "libx264",
-               "-pix_fmt", "yuv420p", out, (char *)NULL);
-        _exit(127);
-    }
-    close(fd[0]);
-    if (pid < 0) {
-        close(fd[1]);
-        return NULL;
-    }
-    video_pid = pid;
-    fcntl(fd[1], F_SETFD, FD_CLOEXEC);
-    return fdopen(fd[1], "w");
-}
-
-/* Closes the pipe and waits: 0 when ffmpeg exited with status 0. */
-static int finish_video(FILE *video)
-{
-    fclose(video);
-    int status = -1;
-    const pid_t pid = video_pid;
-    if (pid > 0 && waitpid(pid, &status, 0) != pid)
-        status = -1;
-    video_pid = -1;
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
 typedef struct {
@@ -341,18 +264,11 @@ static int write_png(const uint32_t *px, int W, int H, const char *path)
 /* Times of the filmstrip frames, as fractions of t_end. */
 static const double STRIP[6] = {0.0, 1.0 / 12, 1.0 / 6, 1.0 / 3, 2.0 / 3, 1.0};
 
+/* At exit, the owned memory is released after the video's clean-up (atexit runs in reverse). */
 static void handle_signals(void)
 {
-    /* A dead ffmpeg must show as a write error, not kill us by SIGPIPE with its file left. */
-    signal(SIGPIPE, SIG_IGN);
     atexit(release_owned);
-    atexit(stop_video);
-    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-    for (int i = 0; i < 3; i++) {
-        struct sigaction sa = {.sa_handler = on_signal};
-        sigemptyset(&sa.sa_mask);
-        sigaction(sigs[i], &sa, NULL);
-    }
+    suslov_video_guard();
 }
 
 static const char *const NAMES[2] = {"midpoint", "variational"};
@@ -375,34 +291,6 @@ static int run_integrators(const anim_config *cfg, const sus_model *model, const
         }
     }
     return 0;
-}
-
-/* The video, through ffmpeg's standard input, when ffmpeg is there; NULL otherwise. */
-static FILE *open_video(const anim_config *cfg, const char *figdir, const char *mp4)
-{
-    FILE *video = NULL;
-    const int want_video = getenv("SUSLOV_NO_VIDEO") == NULL;
-    if (want_video && system("command -v ffmpeg >/dev/null 2>&1") == 0) {
-        snprintf(video_tmp, sizeof video_tmp, "%s/attitude.tmp.%ld.mp4", figdir, (long)getpid());
-        video = start_video(cfg->width, cfg->height, cfg->fps, video_tmp);
-        if (!video)
-            fprintf(stderr, "animation: cannot start ffmpeg: frames written, no %s\n", mp4);
-    } else if (want_video) {
-        fprintf(stderr, "animation: ffmpeg is not installed: frames written, no %s\n", mp4);
-    }
-    return video;
-}
-
-static void close_video(FILE *video, const char *mp4)
-{
-    if (!video)
-        return;
-    if (finish_video(video) == 0 && rename(video_tmp, mp4) == 0) {
-        video_tmp[0] = '\0';
-    } else {
-        stop_video();
-        fprintf(stderr, "animation: ffmpeg failed; no video\n");
-    }
 }
 
 /* What the frame loop draws from and into. */
@@ -442,12 +330,7 @@ static int draw_frame(frames *fr, sus_refatt *ra, int f, const char *figdir, FIL
     snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
     if (write_png(fr->px, W, H, path) != 0)
         return -1;
-    if (*video && fwrite(fr->px, sizeof(uint32_t), (size_t)W * H, *video) != (size_t)W * H) {
-        finish_video(*video);
-        *video = NULL;
-        stop_video();
-        fprintf(stderr, "animation: ffmpeg stopped reading; no video\n");
-    }
+    suslov_video_frame(video, fr->px, W, H);
     while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9)
         memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px,
                (size_t)W * H * sizeof(uint32_t));
@@ -540,7 +423,7 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir, int mo
         return -1;
     }
     snprintf(mp4, sizeof mp4, "%s/attitude.mp4", figdir);
-    FILE *video = open_video(cfg, figdir, mp4);
+    FILE *video = suslov_video_open(cfg->width, cfg->height, cfg->fps, figdir, mp4);
     sus_refatt ra;
     double I3[3][3];
     sus_mat3_identity(I3);
@@ -553,7 +436,7 @@ static int render(frames *fr, const anim_config *cfg, const char *figdir, int mo
             return -1;
     }
     suslov_progress_end();
-    close_video(video, mp4);
+    suslov_video_close(video, mp4);
     if (fr->strip && fr->strip_next == 6 && write_filmstrip(fr, figdir) != 0)
         return -1;
     free(fr->strip);

@@ -76,22 +76,14 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_legend(&ax, lega, 4, 4);
 }
 
-int main(int argc, char **argv)
+/* The exact solutions for the printed third row and for the third column, their distance, and
+ * their limits (the steady rotations): 0, or 1 (said). */
+static int solve(inertia_fig *f, double lr[2], double lc[2])
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: figure_inertia FIGDIR DATADIR\n");
-        return 2;
-    }
-    gsl_set_error_handler_off();
-    char err[256], path[4096];
-    static inertia_fig f;
+    char err[256];
     double Icol[9];
     sus_model mr, mc;
     sus_exact er, ec;
-    if (sus_lab_experiment_steps(T_END, DT) + 1 != NPTS) {
-        fprintf(stderr, "figure_inertia: NPTS does not match src/lab/experiments.h\n");
-        return 1;
-    }
     sus_lab_inertia_column_swap(SUS_PAPER_INERTIA, Icol); /* (I31, I32) := (I13, I23) */
     if (sus_model_init(&mr, SUS_PAPER_INERTIA, err, sizeof err) ||
         sus_model_init(&mc, Icol, err, sizeof err)) {
@@ -100,30 +92,38 @@ int main(int argc, char **argv)
     }
     sus_exact_init(&er, &mr, SUS_PAPER_OMEGA0);
     sus_exact_init(&ec, &mc, SUS_PAPER_OMEGA0);
-    f.k_row = er.k;
-    f.k_col = ec.k;
-    if (sus_lab_series_init(&f.row, NPTS - 1, 1) || sus_lab_series_init(&f.col, NPTS - 1, 1))
+    f->k_row = er.k;
+    f->k_col = ec.k;
+    if (sus_lab_series_init(&f->row, NPTS - 1, 1) || sus_lab_series_init(&f->col, NPTS - 1, 1))
         return 1;
-    sus_lab_series_exact(&f.row, &er, DT, NPTS);
-    sus_lab_series_exact(&f.col, &ec, DT, NPTS);
-    for (size_t i = 0; i < f.row.n; i++)
-        f.dist[i] = hypot(f.row.w1[i] - f.col.w1[i], f.row.w2[i] - f.col.w2[i]);
-    const double *cols[] = {f.row.t,  f.row.w1, f.row.w2,    f.row.lambda,
-                            f.col.w1, f.col.w2, f.col.lambda};
-    if (sus_plot_fig_write_csv(
-            sus_plot_fig_path(path, sizeof path, argv[2], "inertia", "csv"),
-            "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f.row.n,
-            1) != 0)
-        return 1;
-    double maxd = 0.0;
-    for (size_t i = 0; i < f.row.n; i++)
-        maxd = fmax(maxd, f.dist[i]);
-    double lr[2], lc[2];
+    sus_lab_series_exact(&f->row, &er, DT, NPTS);
+    sus_lab_series_exact(&f->col, &ec, DT, NPTS);
+    for (size_t i = 0; i < f->row.n; i++)
+        f->dist[i] = hypot(f->row.w1[i] - f->col.w1[i], f->row.w2[i] - f->col.w2[i]);
     sus_exact_limit(&er, lr);
     sus_exact_limit(&ec, lc);
-    char cap[2048];
+    return 0;
+}
+
+static int write_data(const inertia_fig *f, const char *datadir)
+{
+    char path[4096];
+    const double *cols[] = {f->row.t,  f->row.w1, f->row.w2,    f->row.lambda,
+                            f->col.w1, f->col.w2, f->col.lambda};
+    return sus_plot_fig_write_csv(
+        sus_plot_fig_path(path, sizeof path, datadir, "inertia", "csv"),
+        "t,omega1_row,omega2_row,lambda_row,omega1_col,omega2_col,lambda_col", 7, cols, f->row.n,
+        1);
+}
+
+static void caption(char *cap, size_t len, const inertia_fig *f, const double lr[2],
+                    const double lc[2])
+{
+    double maxd = 0.0;
+    for (size_t i = 0; i < f->row.n; i++)
+        maxd = fmax(maxd, f->dist[i]);
     snprintf(
-        cap, sizeof cap,
+        cap, len,
         "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
         "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
         "(RGB2), (ContDyn)\n"
@@ -136,6 +136,25 @@ int main(int argc, char **argv)
         "rotations:\n"
         "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
         "Data: data/inertia.csv.\n",
-        T_END, maxd, lr[0], lr[1], lc[0], lc[1], f.k_row, f.k_col);
+        T_END, maxd, lr[0], lr[1], lc[0], lc[1], f->k_row, f->k_col);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: figure_inertia FIGDIR DATADIR\n");
+        return 2;
+    }
+    gsl_set_error_handler_off();
+    static inertia_fig f;
+    if (sus_lab_experiment_steps(T_END, DT) + 1 != NPTS) {
+        fprintf(stderr, "figure_inertia: NPTS does not match src/lab/experiments.h\n");
+        return 1;
+    }
+    double lr[2], lc[2];
+    if (solve(&f, lr, lc) != 0 || write_data(&f, argv[2]) != 0)
+        return 1;
+    char cap[2048];
+    caption(cap, sizeof cap, &f, lr, lc);
     return sus_plot_fig_write_figure(argv[1], "inertia", FIG_W, FIG_H, draw, &f, cap) != 0;
 }

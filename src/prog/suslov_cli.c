@@ -1,18 +1,15 @@
+/* suslov's option table: one handler per option, the lists under --method and --reconstruct,
+ * the sections of --help and the manual page, and --method list. The parser, --help and --man come
+ * from it (cli_options.h); the checks that need several options are in suslov_cli_checks.c, the
+ * output's header in suslov_cli_header.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "suslov_cli.h"
 
-#include "atomic_file.h"
 #include "cli_options.h"
-#include "dsp.h"
-#include "echo.h"
-#include "exact_run.h"
-#include "inertia_check.h"
-#include "midpoint_sweeps.h"
 #include "paper_ref.h"
 #include "stepper.h"
+#include "suslov_cli_checks.h"
 
-#include <float.h>
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,83 +19,69 @@
 #define SUSLOV_VERSION "unknown" /* the Makefile passes the git commit; a tarball has none */
 #endif
 
-/* The reference attitude of --method exact costs this many long-double Taylor steps at most
- * (hours of computing); beyond, the run is refused before it starts. */
-#define EXACT_MAX_REFERENCE_STEPS 1e9
-
-/* The options as given, before the checks that need several of them. */
-typedef struct {
-    const char *method, *recon, *output;
-    double eps, T, tol, every_time;
-    long steps, every;
-    double w0[2], inertia[9];
-    int quiet, header, header_given, list, every_given, omega0_given, inertia_given;
-    long sweeps;
-} given;
-
 static const suslov_cli_spec SPEC;
 
 /* ---- handlers: one per option ---- */
 
 static void set_method(void *g, const suslov_cli_option *o, const char *v)
 {
-    (void)o, ((given *)g)->method = v;
+    (void)o, ((suslov_args_given *)g)->method = v;
 }
 static void set_eps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->eps = suslov_cli_number(o->name, v);
+    ((suslov_args_given *)g)->eps = suslov_cli_number(o->name, v);
 }
 static void set_steps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->steps = suslov_cli_count(o->name, v);
+    ((suslov_args_given *)g)->steps = suslov_cli_count(o->name, v);
 }
 static void set_time(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->T = suslov_cli_number(o->name, v);
+    ((suslov_args_given *)g)->T = suslov_cli_number(o->name, v);
 }
 static void set_omega0(void *g, const suslov_cli_option *o, const char *v)
 {
-    suslov_cli_list(o->name, v, ((given *)g)->w0, 2);
-    ((given *)g)->omega0_given = 1;
+    suslov_cli_list(o->name, v, ((suslov_args_given *)g)->w0, 2);
+    ((suslov_args_given *)g)->omega0_given = 1;
 }
 static void set_inertia(void *g, const suslov_cli_option *o, const char *v)
 {
-    suslov_cli_list(o->name, v, ((given *)g)->inertia, 9);
-    ((given *)g)->inertia_given = 1;
+    suslov_cli_list(o->name, v, ((suslov_args_given *)g)->inertia, 9);
+    ((suslov_args_given *)g)->inertia_given = 1;
 }
 static void set_recon(void *g, const suslov_cli_option *o, const char *v)
 {
-    (void)o, ((given *)g)->recon = v;
+    (void)o, ((suslov_args_given *)g)->recon = v;
 }
 static void set_every(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->every = suslov_cli_count(o->name, v);
-    ((given *)g)->every_given = 1;
+    ((suslov_args_given *)g)->every = suslov_cli_count(o->name, v);
+    ((suslov_args_given *)g)->every_given = 1;
 }
 static void set_tol(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->tol = suslov_cli_number(o->name, v);
+    ((suslov_args_given *)g)->tol = suslov_cli_number(o->name, v);
 }
 static void set_every_time(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->every_time = suslov_cli_number(o->name, v);
+    ((suslov_args_given *)g)->every_time = suslov_cli_number(o->name, v);
 }
 static void set_sweeps(void *g, const suslov_cli_option *o, const char *v)
 {
-    ((given *)g)->sweeps = suslov_cli_count(o->name, v);
+    ((suslov_args_given *)g)->sweeps = suslov_cli_count(o->name, v);
 }
 static void set_output(void *g, const suslov_cli_option *o, const char *v)
 {
-    (void)o, ((given *)g)->output = v;
+    (void)o, ((suslov_args_given *)g)->output = v;
 }
 static void set_quiet(void *g, const suslov_cli_option *o, const char *v)
 {
-    (void)o, (void)v, ((given *)g)->quiet = 1;
+    (void)o, (void)v, ((suslov_args_given *)g)->quiet = 1;
 }
 
 static void set_header(void *vg, const suslov_cli_option *o, const char *v)
 {
-    given *g = vg;
+    suslov_args_given *g = vg;
     (void)v;
     if (g->header_given++)
         suslov_cli_die("--header and --no-header are both given");
@@ -339,194 +322,15 @@ static void method_list(void)
     suslov_cli_exit_stdout();
 }
 
-/* ---- checks that need several options ---- */
-
-/* The nearest final time to n steps, written as briefly as it is still accepted. */
-static void time_choice(char *buf, size_t len, double n, double eps)
-{
-    const double T = n * eps;
-    for (int digits = 15; digits <= 17; digits++) {
-        snprintf(buf, len, "--time %.*g", digits, T);
-        const double back = strtod(buf + 7, NULL);
-        if (fabs(round(back / eps) * eps - back) <= 2.0 * DBL_EPSILON * back)
-            return;
-    }
-}
-
-/* N = T/H when that is a whole number to within the rounding of T, H and their quotient:
- * |N H - T| <= 4u T (u = DBL_EPSILON / 2), so that the last row is at T; else refused. */
-static long steps_for_time(double T, double eps)
-{
-    const double n = round(T / eps); /* T / eps may be inf: caught below */
-    char lo[64], hi[64];
-    if (!(n >= 1.0)) {
-        time_choice(hi, sizeof hi, 1.0, eps);
-        suslov_cli_die(
-            "--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
-            T, eps, n, hi);
-    }
-    if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
-        suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n,
-                       LONG_MAX);
-    if (fabs(n * eps - T) > 2.0 * DBL_EPSILON * T) {
-        const double f = floor(T / eps);
-        time_choice(lo, sizeof lo, f, eps);
-        time_choice(hi, sizeof hi, f + 1.0, eps);
-        suslov_cli_die(
-            "--time %.17g is not a whole number of steps of --eps %.17g; nearest: %s%s%s", T, eps,
-            f >= 1.0 ? lo : "", f >= 1.0 ? " or " : "", hi);
-    }
-    return (long)n;
-}
-
-/* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
- * check has passed, so that bad input still gets exactly one line). */
-static int resolve_method(suslov_args *a, const given *g)
-{
-    char names[1024];
-    const int exact = strcmp(g->method, "exact") == 0;
-    a->method = exact ? NULL : sus_step_method_by_name(g->method);
-    if (!exact && !a->method)
-        suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
-                       sus_step_method_names(names, sizeof names, ", "));
-    a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
-    if (!g->recon)
-        return 0;
-    if (sus_recon_by_name(g->recon, &a->recon) != 0) {
-        size_t len = 0;
-        for (int r = 0; r < SUS_RECON_COUNT; r++)
-            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s", r ? ", " : "",
-                                    SUS_RECON_NAMES[r]);
-        suslov_cli_die("unknown reconstruction %s (%s)", suslov_cli_quote(g->recon), names);
-    }
-    if (exact)
-        suslov_cli_die(
-            "--reconstruct does not apply to --method exact (its R is the reference attitude)");
-    return !a->method->type->desc.follows_recon;
-}
-
-/* --sweeps replaces the midpoint rule's Newton solve, so it needs that method. */
-static void check_sweeps(suslov_args *a, const given *g)
-{
-    a->stepper = a->method ? a->method->type : NULL;
-    if (!g->sweeps)
-        return;
-    if (!a->method || a->method->type != sus_step_midpoint)
-        suslov_cli_die(
-            "--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
-    if (g->sweeps > SUS_LAB_MAX_SWEEPS)
-        suslov_cli_die("--sweeps must be at most %d, got %ld", SUS_LAB_MAX_SWEEPS, g->sweeps);
-    a->sweeps = (int)g->sweeps;
-    a->stepper = sus_lab_midpoint_sweeps_type(a->sweeps);
-}
-
-/* A tolerance-driven method: --tol and --time, no fixed step. The smallest TOL is one rounding
- * unit of 1: a step's estimate cannot be resolved below the rounding of the state it corrects. */
-static void check_tol_run(suslov_args *a, const given *g)
-{
-    if (isnan(g->tol))
-        suslov_cli_die("--method %s chooses its steps from --tol, which is required", g->method);
-    if (!(g->tol >= DBL_EPSILON && g->tol < 1.0))
-        suslov_cli_die("--tol must be in [2^-52, 1), got %.17g", g->tol);
-    if (!isnan(g->eps) || g->steps > 0)
-        suslov_cli_die("--tol chooses the steps: give --time, not --eps or --steps");
-    if (g->every_given)
-        suslov_cli_die(
-            "--every counts fixed steps; with --tol rows come at each step or by --every-time");
-    if (isnan(g->T) || !(g->T > 0.0))
-        suslov_cli_die("--tol needs a final time --time T > 0");
-    if (!isnan(g->every_time) && !(g->every_time > 0.0))
-        suslov_cli_die("--every-time must be positive, got %.17g", g->every_time);
-    /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
-    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
-        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld",
-                       g->T, g->every_time, g->T / g->every_time, LONG_MAX);
-    a->tol = g->tol;
-    a->t_end = g->T;
-    a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;
-}
-
-static void check_fixed_steps(suslov_args *a, const given *g)
-{
-    if (!isnan(g->tol) || !isnan(g->every_time))
-        suslov_cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
-                       isnan(g->tol) ? "--every-time" : "--tol");
-    if (isnan(g->eps))
-        suslov_cli_die("--eps is required");
-    if (!(g->eps > 0.0))
-        suslov_cli_die("--eps must be positive, got %.17g", g->eps);
-    if ((g->steps > 0) == !isnan(g->T))
-        suslov_cli_die("give exactly one of --steps and --time");
-    a->eps = g->eps;
-    a->steps = isnan(g->T) ? g->steps : steps_for_time(g->T, g->eps);
-    /* Every t_k = k eps <= N eps must be a finite number. */
-    if (!isfinite((double)a->steps * a->eps))
-        suslov_cli_die("--steps %ld with --eps %.17g: the final time N H overflows", a->steps,
-                       a->eps);
-    a->t_end = (double)a->steps * a->eps;
-}
-
-/* E and lambda at w0 must be finite numbers (row 0 prints them). They depend on w0 and the body
- * alike, so the message names the options that were given: the default of the other is not the
- * user's doing. */
-static void check_start(const suslov_args *a, const given *g)
-{
-    const double w[3] = {g->w0[0], g->w0[1], 0.0};
-    const char *what = !isfinite(sus_energy(&a->model, w))    ? "energy"
-                       : !isfinite(sus_lagmult(&a->model, w)) ? "multiplier lambda"
-                                                              : NULL;
-    if (!what)
-        return;
-    const char *opts =
-        g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
-    suslov_cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what,
-                   g->w0[0], g->w0[1], g->inertia_given ? "this" : "the paper's (default)");
-}
-
-static void check_run(suslov_args *a, const given *g)
-{
-    char err[1024];
-    if (!g->method)
-        suslov_cli_die("--method is required");
-    if (strcmp(g->method, "list") == 0)
-        method_list();
-    const sus_step_method *me = sus_step_method_by_name(g->method);
-    if (me && me->type->tol)
-        check_tol_run(a, g);
-    else
-        check_fixed_steps(a, g);
-    char bad[512];
-    if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
-        suslov_cli_die("%s", bad);
-    if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0) {
-        char said[sizeof err]; /* the model cites the paper by labels; the reader gets numbers */
-        suslov_cli_die("--inertia: %s", sus_paper_numbered(err, said, sizeof said));
-    }
-    check_start(a, g);
-    const int ignored = resolve_method(a, g);
-    check_sweeps(a, g);
-    const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
-    if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
-        suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly "
-                       "that the reference "
-                       "attitude needs %.3g Taylor steps (at most %.0e)",
-                       cost, EXACT_MAX_REFERENCE_STEPS);
-    if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
-        suslov_cli_die("--output: %s", err);
-    if (ignored)
-        suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon,
-                        a->method->type->name);
-}
-
 void suslov_args_parse(suslov_args *a, int argc, char **argv)
 {
-    given g = {.eps = NAN,
-               .T = NAN,
-               .tol = NAN,
-               .every_time = NAN,
-               .every = 1,
-               .header = 1,
-               .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
+    suslov_args_given g = {.eps = NAN,
+                           .T = NAN,
+                           .tol = NAN,
+                           .every_time = NAN,
+                           .every = 1,
+                           .header = 1,
+                           .w0 = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]}};
     memcpy(g.inertia, SUS_PAPER_INERTIA, sizeof g.inertia);
     /* before any handler: another option's check or action (--help) would come first */
     const char *method;
@@ -534,97 +338,16 @@ void suslov_args_parse(suslov_args *a, int argc, char **argv)
         strcmp(method, "list") == 0)
         suslov_cli_die("--method list takes no other options");
     suslov_cli_parse(&SPEC, argc, argv, &g);
+    if (!g.method)
+        suslov_cli_die("--method is required");
+    if (strcmp(g.method, "list") == 0)
+        method_list();
     memset(a, 0, sizeof *a);
-    check_run(a, &g);
+    suslov_args_check(a, &g);
     a->output = g.output;
     a->every = g.every;
     memcpy(a->w0, g.w0, sizeof a->w0);
     memcpy(a->inertia, g.inertia, sizeof a->inertia);
     a->quiet = g.quiet;
     a->header = g.header;
-}
-
-/* ---- the header ---- */
-
-/* 1 when s can stand raw inside single quotes on a line of UTF-8: no control character and no
- * byte that is not part of a well-formed UTF-8 character. */
-static int quotable(const char *s, size_t n)
-{
-    for (size_t i = 0, len; i < n; i += len) {
-        const unsigned char c = (unsigned char)s[i];
-        if (!(len = sus_sys_utf8_len(s + i, n - i)) || c < 0x20 || c == 0x7f)
-            return 0;
-    }
-    return 1;
-}
-
-/* An argument as a shell reads it back, on one line of valid UTF-8 (so that the header can be
- * parsed as text, and the line pasted into a shell runs the same command): bare when it holds
- * only [A-Za-z0-9_.,:/=+-]; else in single quotes; else, when it holds a control character or a
- * byte that is not UTF-8, in $'...' quoting with those bytes as \xNN (bash, ksh, zsh, busybox
- * sh, and POSIX sh since 2024; not dash 0.5.12). */
-static void put_arg(FILE *fp, const char *s)
-{
-    const size_t n = strlen(s);
-    static const char BARE[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.,:/=+-";
-    if (n && strspn(s, BARE) == n) {
-        fputs(s, fp);
-        return;
-    }
-    const int single = quotable(s, n);
-    fputs(single ? "'" : "$'", fp);
-    for (size_t i = 0, len; i < n; i += len) {
-        const unsigned char c = (unsigned char)s[i];
-        len = sus_sys_utf8_len(s + i, n - i);
-        if (c == '\'' && single)
-            fputs("'\\''", fp);
-        else if ((c == '\'' || c == '\\') && !single)
-            fprintf(fp, "\\%c", c);
-        else if (!len || c < 0x20 || c == 0x7f)
-            fprintf(fp, "\\x%02x", c);
-        else
-            fwrite(s + i, 1, len, fp);
-        len = len ? len : 1;
-    }
-    fputc('\'', fp);
-}
-
-void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp)
-{
-    fprintf(fp, "# suslov %s\n# command:", SUSLOV_VERSION);
-    for (int i = 0; i < argc; i++) {
-        fputc(' ', fp);
-        put_arg(fp, i ? argv[i] : "suslov");
-    }
-    if (a->method)
-        fprintf(fp, "\n# method: %s (%s, order %d), ", a->method->type->name, a->method->family,
-                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->desc.order);
-    if (a->method && a->method->type->desc.follows_recon)
-        fprintf(fp, "reconstruction %s\n", SUS_RECON_NAMES[a->recon]);
-    else if (a->method) /* what --method list calls "own" */
-        fprintf(fp, "attitude: own (%s; --reconstruct does not apply)\n",
-                sus_step_attitude_name(a->method->type->desc.attitude));
-    else
-        fputs("\n# method: exact (closed-form w and lambda, reference attitude R)\n", fp);
-    if (a->sweeps)
-        fprintf(fp, "# sweeps: the implicit equation solved by %d fixed-point sweeps, not Newton\n",
-                a->sweeps);
-    if (a->tol > 0.0)
-        fprintf(fp, "# tol: %.17g, every time: %.17g (%s), final time: %.17g\n", a->tol,
-                a->every_time,
-                a->every_time > 0.0 ? "k is the row's index: t = k DT, the last row at T"
-                                    : "0: a row at each accepted step, k counting them",
-                a->t_end);
-    else
-        fprintf(fp, "# eps: %.17g, steps: %ld, every: %ld, final time: %.17g\n", a->eps, a->steps,
-                a->every, a->t_end);
-    fputs("# inertia (rows of I):", fp);
-    for (int i = 0; i < 9; i++)
-        fprintf(fp, "%s%.17g", i ? "," : " ", a->inertia[i]);
-    fprintf(fp, "\n# omega0: %.17g,%.17g,0\n", a->w0[0], a->w0[1]);
-    fputs("# units: those of the paper's data: t in time units, omega in radians per time unit, "
-          "lambda\n"
-          "# in units of I omega^2, energy = <I_m w, w>/2 in units of I omega^2\n",
-          fp);
 }
