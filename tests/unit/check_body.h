@@ -17,6 +17,19 @@ static inline int check_body_model(const body *b, sus_model *m)
     return -1;
 }
 
+/* Body k of the family, its model and its closed form: 0, or nonzero after a FAIL line (a body is
+ * never skipped quietly). */
+static inline int check_body_exact(int k, body *b, sus_model *m, sus_exact *ex)
+{
+    body_get(k, b);
+    if (check_body_model(b, m))
+        return -1;
+    if (sus_exact_init(ex, m, b->w0) == 0)
+        return 0;
+    CHECK(0, "%s: no closed form for its w0", b->name);
+    return -1;
+}
+
 /* The body's own time against the paper's: k_paper / k, k the rate at which the motion from w0
  * nears its steady rotation (exact.h), the time scale of (ContDyn) on that body. A step or a span
  * fixed on the paper's body, times this, has the same h k on every body (the stiff ones' k reaches

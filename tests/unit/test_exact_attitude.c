@@ -142,8 +142,7 @@ static void tail_bound_holds(void)
         body b;
         sus_model m;
         sus_exact ex;
-        body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+        if (check_body_exact(k, &b, &m, &ex))
             continue;
         const double t0 = fmax(0.0, -ex.sigma * ex.s0 / ex.k); /* a(t) >= 0 from here on */
         for (int j = 0; j < 4; j++) {
@@ -378,8 +377,7 @@ static void tail_is_one_step(void)
         sus_model m;
         sus_exact ex;
         double R[3][3], Rr[3][3], winf[2];
-        body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+        if (check_body_exact(k, &b, &m, &ex))
             continue;
         const long n3 = steps_to(&m, b.w0, tol, 1e3, R);
         same &= n3 > 0 && steps_to(&m, b.w0, tol, 1e6, R) == n3;

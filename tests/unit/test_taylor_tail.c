@@ -77,8 +77,7 @@ static void bounds_hold(void)
         body b;
         sus_model m;
         sus_exact ex;
-        body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+        if (check_body_exact(k, &b, &m, &ex))
             continue;
         const double a0 = ex.sigma * ex.s0, sq = sqrt(cond_im(b.I));
         const double slack = ROUND_W * U * w_scale(&ex), islack = slack * 60.0 / ex.k;
@@ -197,8 +196,7 @@ static void conditioning(void)
         body b;
         sus_model m;
         sus_exact ex;
-        body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+        if (check_body_exact(k, &b, &m, &ex))
             continue;
         double winf[2], w1[2], w2[2], R1[3][3], R2[3][3];
         sus_exact_limit(&ex, winf);
