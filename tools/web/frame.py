@@ -55,7 +55,10 @@ def short_published(kind, number):
 
 
 def secondary(lab):
-    """The LaTeX label, shown after the published number as a secondary id."""
+    """The LaTeX label, shown after the published number as a secondary id; nothing for a
+    statement the source leaves unlabelled (nolabel:...), whose number is its only name."""
+    if lab.startswith("nolabel:"):
+        return ""
     return '<span class="lab">%s</span>' % esc(lab)
 
 
