@@ -87,9 +87,7 @@ static void fast_omega_agrees(void)
         sus_model m;
         sus_exact ex;
         sus_exact_fast f;
-        body_get(k, &b);
-        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0) ||
-            sus_exact_fast_init(&f, &ex))
+        if (check_body_exact(k, &b, &m, &ex) || sus_exact_fast_init(&f, &ex))
             continue;
         const double span = 60.0 / fmax(ex.k, 1e-3); /* the whole transient and the tail */
         for (int i = 1; i <= 4000; i++) {

@@ -97,11 +97,9 @@ static void fast_path(void)
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
-        body_get(k, &b);
-        if (check_body_model(&b, &m) != 0)
-            continue;
         sus_exact ex;
-        sus_exact_init(&ex, &m, b.w0);
+        if (check_body_exact(k, &b, &m, &ex))
+            continue;
         for (int i = 0; i < 4; i++) {
             const sus_stepper_type *st = sus_step_method_by_name(names[i % 2])->type;
             const double eps = (i < 2 ? 0.145 : 0.5) / ex.k;

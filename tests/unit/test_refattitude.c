@@ -147,12 +147,10 @@ int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
-        body_get(k, &b);
         sus_model m;
-        if (check_body_model(&b, &m) != 0)
-            continue;
         sus_exact ex;
-        sus_exact_init(&ex, &m, b.w0);
+        if (check_body_exact(k, &b, &m, &ex))
+            continue;
         start_from_w0(&m, &ex, b.name);
         restart_at(&ex, b.name);
         cholesky_coordinates(&ex, b.name);

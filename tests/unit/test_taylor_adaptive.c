@@ -18,6 +18,7 @@
  * NOTE says so. Expected values come from the model (the steady rotation, the closed-form
  * exponential), never from the code under test. */
 #include "check_body.h"
+#include "check_dense.h"
 #include "driver.h"
 #include "exact.h"
 #include "refattitude.h"
@@ -267,23 +268,7 @@ static void rows_and_structure(const sus_model *m, const double w0[2], const cha
 
 /* Dense rows against the reference between steps: every row within 10 N TOL of the long-double
  * reference attitude and of the closed-form w (the bound of the ledger's claims_adaptive.c: N
- * local errors of at most TOL, the estimate within 10x). */
-typedef struct {
-    sus_exact ex;
-    sus_refatt ref;
-    double worst_R, worst_w;
-} dense_ctx;
-
-static int against_reference(void *vctx, const sus_row *r)
-{
-    dense_ctx *c = vctx;
-    double R[3][3], w[2];
-    sus_refatt_advance(&c->ref, r->t, R);
-    sus_exact_omega(&c->ex, r->t, w);
-    c->worst_R = fmax(c->worst_R, sus_so3_dist(R, r->R));
-    c->worst_w = fmax(c->worst_w, hypot(r->w[0] - w[0], r->w[1] - w[1]));
-    return 0;
-}
+ * local errors of at most TOL, the estimate within 10x), read by check_dense.h's callback. */
 
 static void dense_accuracy(const sus_model *m, const double w0[2], const char *name, double s)
 {

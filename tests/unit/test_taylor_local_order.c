@@ -74,12 +74,10 @@ int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
-        body_get(k, &b);
         sus_model m;
-        if (check_body_model(&b, &m) != 0)
-            continue;
         sus_exact ex;
-        sus_exact_init(&ex, &m, b.w0);
+        if (check_body_exact(k, &b, &m, &ex))
+            continue;
         const double h0 = 0.8 * check_body_time(&m, b.w0);
         int low = 0;
         for (int p = 3; p <= 8; p++) {

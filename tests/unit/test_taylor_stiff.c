@@ -25,6 +25,7 @@
  *     over E: w_inf is found through E, and a near-singular I_m makes that cond(I_m)).
  * Expected values come from the closed form and the reference attitude, never from the stepper. */
 #include "check_body.h"
+#include "check_dense.h"
 #include "driver.h"
 #include "exact.h"
 #include "refattitude.h"
@@ -218,27 +219,9 @@ static void settling(void)
         bodies += n > before;
     }
     CHECK(bodies == NBODY && nR > 0 && ew <= 1.0 && eR <= 1.0,
-          "the settling step's local error over the rest of the run (t = 200), %d runs on %d of %d "
-          "bodies "
-          "(R on %d): w %.3g TOL, R %.3g TOL (at most 1 TOL)",
+          "the settling step's local error over the rest of the run (t = 200), %d runs on %d of "
+          "%d bodies (R on %d): w %.3g TOL, R %.3g TOL (at most 1 TOL)",
           n, bodies, NBODY, nR, ew, eR);
-}
-
-typedef struct {
-    sus_exact ex;
-    sus_refatt ref;
-    double worst_R, worst_w;
-} dense_ctx;
-
-static int against_reference(void *vctx, const sus_row *r)
-{
-    dense_ctx *c = vctx;
-    double R[3][3], w[2];
-    sus_refatt_advance(&c->ref, r->t, R);
-    sus_exact_omega(&c->ex, r->t, w);
-    c->worst_R = fmax(c->worst_R, sus_so3_dist(R, r->R));
-    c->worst_w = fmax(c->worst_w, hypot(r->w[0] - w[0], r->w[1] - w[1]));
-    return 0;
 }
 
 static void dense_after_settling(void)
