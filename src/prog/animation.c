@@ -99,8 +99,8 @@ static int read_config(const char *path, anim_config *c)
         c->height % 2 || c->fps < 1 || c->fps > 120 || !(c->seconds > 0) || !(c->t_end > 0) ||
         !(c->eps > 0)) {
         fprintf(stderr,
-                "animation: %s: out of range (even width/height 48..4096, fps 1..120, positive "
-                "times)\n",
+                "animation: %s: out of range (even width/height "
+                "48..4096, fps 1..120, positive times)\n",
                 path);
         return -1;
     }
@@ -379,34 +379,29 @@ static int write_caption(const anim_config *cfg, const frames *fr, const char *f
     for (int m = 0; m < 2; m++)
         dist[m] = sus_so3_dist(body[0].R, body[1 + m].R);
     char cap[2048];
-    snprintf(
-        cap, sizeof cap,
-        "Attitude animation. Regenerate: make animation (or make figures); settings in "
-        "data/animation.cfg.\n"
-        "Three copies of the body: the exact motion (R from the reference attitude along the "
-        "closed-form w), "
-        "the midpoint rule\n"
-        "and the variational integrator, both at eps = %g with R_{k+1} = R_k cay(eps w^_k) "
-        "((algo)),\n"
-        "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. Between steps the attitude follows "
-        "the step's "
-        "own\n"
-        "retraction curve R_k cay(s w^_k), s in [0, eps); at step times it is R_k exactly, as "
-        "`suslov` "
-        "prints it\n"
-        "(data/attitude.csv). The box has the principal axes and relative extents of the symmetric "
-        "part of "
-        "I;\n"
-        "grey arrows e1, e2, red arrow e3 (the direction along which w must vanish) with its "
-        "fading trail,\n"
-        "orange arrow: w in space, R w. The distance of (MetMat) to the exact attitude at t = %g: "
-        "midpoint %.3f,\n"
-        "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
-        "figures/attitude.mp4.\n"
-        "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
-        cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps,
-        STRIP[0] * cfg->t_end, STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end, STRIP[3] * cfg->t_end,
-        STRIP[4] * cfg->t_end, STRIP[5] * cfg->t_end);
+    snprintf(cap, sizeof cap,
+             "Attitude animation. Regenerate: make animation (or "
+             "make figures); settings in data/animation.cfg.\n"
+             "Three copies of the body: the exact motion (R from the reference "
+             "attitude along the closed-form w), the midpoint rule\n"
+             "and the variational integrator, both at eps = %g "
+             "with R_{k+1} = R_k cay(eps w^_k) ((algo)),\n"
+             "inertia as printed, w(0) = (0.4, 0.5), t in [0, %g]. "
+             "Between steps the attitude follows the step's own\n"
+             "retraction curve R_k cay(s w^_k), s in [0, eps); at step "
+             "times it is R_k exactly, as `suslov` prints it\n"
+             "(data/attitude.csv). The box has the principal axes "
+             "and relative extents of the symmetric part of I;\n"
+             "grey arrows e1, e2, red arrow e3 (the direction along "
+             "which w must vanish) with its fading trail,\n"
+             "orange arrow: w in space, R w. The distance of (MetMat) "
+             "to the exact attitude at t = %g: midpoint %.3f,\n"
+             "variational %.3f. %d frames of %dx%d at %d fps: figures/attitude/frame_NNNN.png, "
+             "figures/attitude.mp4.\n"
+             "Filmstrip rows: t = %.3g, %.3g / %.3g, %.3g / %.3g, %.3g.\n",
+             cfg->eps, cfg->t_end, cfg->t_end, dist[0], dist[1], nframes, W, H, cfg->fps,
+             STRIP[0] * cfg->t_end, STRIP[1] * cfg->t_end, STRIP[2] * cfg->t_end,
+             STRIP[3] * cfg->t_end, STRIP[4] * cfg->t_end, STRIP[5] * cfg->t_end);
     if (sus_plot_fig_write_text(sus_plot_fig_path(path, sizeof path, figdir, "attitude", "txt"),
                                 cap) != 0)
         return -1;

@@ -171,19 +171,15 @@ int main(int argc, char **argv)
             "tol,t_start,h,proved_radius", 4, cols, n, 1) != 0)
         return 1;
     snprintf(cap, sizeof cap,
-             "The tolerance-driven Taylor method. Regenerate: make figures "
-             "(src/prog/figure_adaptive_steps.c).\n"
-             "taylor-adaptive (suslov --method taylor-adaptive --tol TOL --time 50) on the paper's "
-             "body, w(0) = "
-             "(0.4, 0.5).\n"
-             "(a) the length of each accepted step against its start (the last one ends at t = "
-             "50), for TOL = "
-             "%.0e, %.0e, %.0e (orders %d, %d, "
-             "%d), and the\n"
+             "The tolerance-driven Taylor method. Regenerate: make "
+             "figures (src/prog/figure_adaptive_steps.c).\n"
+             "taylor-adaptive (suslov --method taylor-adaptive --tol TOL "
+             "--time 50) on the paper's body, w(0) = (0.4, 0.5).\n"
+             "(a) the length of each accepted step against its start (the last one ends "
+             "at t = 50), for TOL = %.0e, %.0e, %.0e (orders %d, %d, %d), and the\n"
              "radius its series is proved to converge in (dashed grey; no step may exceed it).\n"
-             "(b) the attitude error dist(R, R_ref) of rows every 0.5 time units (dense output "
-             "from each step's "
-             "series)\n"
+             "(b) the attitude error dist(R, R_ref) of rows every 0.5 "
+             "time units (dense output from each step's series)\n"
              "against the long-double reference; dotted: TOL.\n"
              "Data: data/adaptive_steps.csv (the steps).\n",
              TOLS[0], TOLS[1], TOLS[2], f.order[0], f.order[1], f.order[2]);

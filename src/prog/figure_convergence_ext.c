@@ -16,28 +16,22 @@ static int extension_or_baseline(const sus_step_method *me)
 static void caption(char *buf, size_t len, const sus_plot_conv_fig *f)
 {
     (void)f;
-    snprintf(
-        buf, len,
-        "Convergence of the methods we add to the paper's (compositions of the midpoint DSP, "
-        "Taylor "
-        "series), with\n"
-        "the midpoint DSP as the baseline. Regenerate: make figures "
-        "(src/prog/figure_convergence_ext.c).\n"
-        "eps = 2^-j, j = -3..10 (steps up to 8); global errors at t = 10 with N = round(10/eps) "
-        "steps "
-        "of 10/N.\n"
-        "SO(3): solid, exp-mid (the Taylor methods advance their own quaternion whatever is "
-        "asked); "
-        "dashed,\n"
-        "cayley-mid.\n"
-        "The legend (above the panels) gives no slopes: over the paper's window eps <= 2^-2 these "
-        "methods are at round-off. Their\n"
-        "orders are fitted in the claims ledger (tests/ledger/claims_highorder.c, at t = 50 over "
-        "each "
-        "method's "
-        "own step\n"
-        "range). No reference slope triangles: the steep curves leave no room for them.\n"
-        "Data: data/convergence_ext.csv. Fitted orders: build/claims.tsv (make check).\n");
+    snprintf(buf, len,
+             "Convergence of the methods we add to the paper's (compositions "
+             "of the midpoint DSP, Taylor series), with\n"
+             "the midpoint DSP as the baseline. Regenerate: make "
+             "figures (src/prog/figure_convergence_ext.c).\n"
+             "eps = 2^-j, j = -3..10 (steps up to 8); global errors "
+             "at t = 10 with N = round(10/eps) steps of 10/N.\n"
+             "SO(3): solid, exp-mid (the Taylor methods advance "
+             "their own quaternion whatever is asked); dashed,\n"
+             "cayley-mid.\n"
+             "The legend (above the panels) gives no slopes: over the paper's "
+             "window eps <= 2^-2 these methods are at round-off. Their\n"
+             "orders are fitted in the claims ledger (tests/ledger/claims_highorder.c, "
+             "at t = 50 over each method's own step\n"
+             "range). No reference slope triangles: the steep curves leave no room for them.\n"
+             "Data: data/convergence_ext.csv. Fitted orders: build/claims.tsv (make check).\n");
 }
 
 int main(int argc, char **argv)

@@ -173,27 +173,25 @@ int main(int argc, char **argv)
             7, cols, N_STEPS + 1, 1) != 0)
         return 1;
     char cap[2048];
-    snprintf(
-        cap, sizeof cap,
-        "Energy at eps = 1 for every reading of the midpoint DSP tried (evidence for the "
-        "fig2-energy lines "
-        "of\n"
-        "the claims ledger). Regenerate: make figures (src/prog/figure_fig2_energy.c).\n"
-        "Run: eps = 1, t in [0, %g], inertia as printed, w(0) = (0.4, 0.5). The implicit equation\n"
-        "(Discretization) with the midpoint l1, l2 is solved (i) by Newton to round-off, (ii) by n "
-        "fixed-point\n"
-        "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = w^k (n = 1 is explicit Euler, n = 2 the "
-        "explicit\n"
-        "midpoint rule); the variational integrator (taudyn) is solved by Newton.\n"
-        "(a) E_k - E_0; (b) |E_k - E_0|, log scale; (c) |E_N - E_0| at t = %g against n, with the "
-        "variational\n"
-        "loss as a dashed line; (d) the key of (a) and (b).\n"
-        "Measured: Newton |dE| = %.2g; variational loses %.4g; n = 1 gains %.4g; n = 2 loses %.4g; "
-        "n = 3 %s "
-        "%.3g.\n"
-        "No reading loses energy faster than the variational integrator.\n"
-        "Data: data/fig2_energy.csv.\n",
-        T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
-        r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
+    snprintf(cap, sizeof cap,
+             "Energy at eps = 1 for every reading of the midpoint "
+             "DSP tried (evidence for the fig2-energy lines of\n"
+             "the claims ledger). Regenerate: make figures (src/prog/figure_fig2_energy.c).\n"
+             "Run: eps = 1, t in [0, %g], inertia as printed, "
+             "w(0) = (0.4, 0.5). The implicit equation\n"
+             "(Discretization) with the midpoint l1, l2 is solved "
+             "(i) by Newton to round-off, (ii) by n fixed-point\n"
+             "sweeps x <- w^k + eps I_m^{-1} l(w^k, x) from x = "
+             "w^k (n = 1 is explicit Euler, n = 2 the explicit\n"
+             "midpoint rule); the variational integrator (taudyn) is solved by Newton.\n"
+             "(a) E_k - E_0; (b) |E_k - E_0|, log scale; (c) |E_N "
+             "- E_0| at t = %g against n, with the variational\n"
+             "loss as a dashed line; (d) the key of (a) and (b).\n"
+             "Measured: Newton |dE| = %.2g; variational loses %.4g; "
+             "n = 1 gains %.4g; n = 2 loses %.4g; n = 3 %s %.3g.\n"
+             "No reading loses energy faster than the variational integrator.\n"
+             "Data: data/fig2_energy.csv.\n",
+             T_END, T_END, r->newton_final, r->var_final, r->final_adE[0], r->final_adE[1],
+             r->final_dE[2] < 0 ? "loses" : "gains", r->final_adE[2]);
     return sus_plot_fig_write_figure(argv[1], "fig2_energy", FIG_W, FIG_H, draw, r, cap) != 0;
 }

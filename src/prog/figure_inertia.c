@@ -122,21 +122,19 @@ static void caption(char *cap, size_t len, const inertia_fig *f, const double lr
     double maxd = 0.0;
     for (size_t i = 0; i < f->row.n; i++)
         maxd = fmax(maxd, f->dist[i]);
-    snprintf(
-        cap, len,
-        "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
-        "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], which is not symmetric. "
-        "(RGB2), (ContDyn)\n"
-        "and (LagMult) use I_m and the third row (I31, I32) = (0.2, 0.1) (red; all other figures); "
-        "a symmetric body with the\n"
-        "printed third column would have (0.2, 0.2) (blue). Exact solutions, w(0) = (0.4, 0.5), t "
-        "in "
-        "[0, %g].\n"
-        "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row - w_col|, at most %.3f. Steady "
-        "rotations:\n"
-        "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
-        "Data: data/inertia.csv.\n",
-        T_END, maxd, lr[0], lr[1], lc[0], lc[1], f->k_row, f->k_col);
+    snprintf(cap, len,
+             "The inertia ambiguity. Regenerate: make figures (src/prog/figure_inertia.c).\n"
+             "The paper prints I = [[1,0.1,0.2],[0.1,1,0.2],[0.2,0.1,1]], "
+             "which is not symmetric. (RGB2), (ContDyn)\n"
+             "and (LagMult) use I_m and the third row (I31, I32) = (0.2, "
+             "0.1) (red; all other figures); a symmetric body with the\n"
+             "printed third column would have (0.2, 0.2) (blue). "
+             "Exact solutions, w(0) = (0.4, 0.5), t in [0, %g].\n"
+             "(a) w1 (solid), w2 (dashed); (b) lambda; (c) |w_row "
+             "- w_col|, at most %.3f. Steady rotations:\n"
+             "row (%.4f, %.4f), column (%.4f, %.4f); rates k = %.4f and %.4f.\n"
+             "Data: data/inertia.csv.\n",
+             T_END, maxd, lr[0], lr[1], lc[0], lc[1], f->k_row, f->k_col);
 }
 
 int main(int argc, char **argv)

@@ -181,8 +181,8 @@ static int trajectory(pert_fig *f, const sus_model *m, const sus_exact *ex, doub
         if (sus_lab_perturb_trajectory(&P, x, TOL, NSUB, seg) != SUS_LAB_PERTURB_OK) {
             char eq2[32];
             fprintf(stderr,
-                    "figure_perturbation: %s failed on period %d, t in [%g, %g], Newton residual "
-                    "%.3g\n",
+                    "figure_perturbation: %s failed on period "
+                    "%d, t in [%g, %g], Newton residual %.3g\n",
                     sus_paper_name("Eq2", eq2, sizeof eq2), k, EPS_A * k, EPS_A * (k + 1),
                     P.sus_lab_newton_res);
             return 3;
@@ -320,27 +320,25 @@ int main(int argc, char **argv)
         cap, sizeof cap,
         "Section 6 made constructive. Regenerate: make figures (src/prog/figure_perturbation.c, "
         "src/lab/perturbation.c).\n"
-        "On each period [k eps, (k+1) eps] the curve blends the exact flow forward from w_k and "
-        "backward from the\n"
-        "method's w_{k+1} with a C-infinity weight flat on the first and last tenth; d is its "
-        "defect "
-        "against (ContDyn),\n"
-        "evaluated at any point by Newton on the blend. (a)-(b): x' = h(x) + eps^p d integrated by "
-        "rk8pd (tol 1e-14)\n"
-        "over %d periods of explicit Euler at eps = %g passes through Euler's points (largest gap "
-        "%.1e); dashed:\n"
-        "the exact flow. (c): sup over a period of |eps^p d| from w(0), w(3), w(7), every method "
-        "of the "
-        "registry;\n"
-        "slopes p (claims sec6-size-order-*); points below 1000x round-off (%.1e/eps) omitted, and "
-        "methods with fewer\n"
-        "than two points left (their perturbation is at round-off for every eps <= 2). (d): the "
-        "attitude\n"
-        "part of the perturbation on SO(3) (geodesic blend, Per11): sup |vee(R^T R') - w|, the "
-        "body "
-        "angular\nvelocity of the blended attitude R(t) against the curve's w, midpoint DSP: order "
-        "1 "
-        "with cayley, 2 with\nthe symmetric reconstructions. Data: data/perturbation.csv, "
+        "On each period [k eps, (k+1) eps] the curve blends the "
+        "exact flow forward from w_k and backward from the\n"
+        "method's w_{k+1} with a C-infinity weight flat on the first "
+        "and last tenth; d is its defect against (ContDyn),\n"
+        "evaluated at any point by Newton on the blend. (a)-(b): "
+        "x' = h(x) + eps^p d integrated by rk8pd (tol 1e-14)\n"
+        "over %d periods of explicit Euler at eps = %g passes "
+        "through Euler's points (largest gap %.1e); dashed:\n"
+        "the exact flow. (c): sup over a period of |eps^p d| from "
+        "w(0), w(3), w(7), every method of the registry;\n"
+        "slopes p (claims sec6-size-order-*); points below 1000x "
+        "round-off (%.1e/eps) omitted, and methods with fewer\n"
+        "than two points left (their perturbation is at round-off "
+        "for every eps <= 2). (d): the attitude\n"
+        "part of the perturbation on SO(3) (geodesic blend, "
+        "Per11): sup |vee(R^T R') - w|, the body angular\n"
+        "velocity of the blended attitude R(t) against the curve's "
+        "w, midpoint DSP: order 1 with cayley, 2 with\n"
+        "the symmetric reconstructions. Data: data/perturbation.csv, "
         "data/perturbation_sizes.csv.\n",
         NSTEP_A, EPS_A, gap, FLOOR_G);
     return sus_plot_fig_write_figure(argv[1], "perturbation", FIG_W, FIG_H, draw, &f, cap) != 0;

@@ -10,8 +10,8 @@ static int check_definite(const double I[9], char *msg, size_t len)
     const long double p = (long double)I[0] * I[4], q = (long double)I[1] * I[3];
     if (!(I[0] > 0.0) || !(p - q > 0.0L))
         return snprintf(msg, len,
-                        "--inertia: I_m is not positive definite (I11 = %.17g, I22 = %.17g, "
-                        "I12 = %.17g)",
+                        "--inertia: I_m is not positive definite "
+                        "(I11 = %.17g, I22 = %.17g, I12 = %.17g)",
                         I[0], I[4], I[1]),
                -1;
     /* The model forms I11 I22 - I12 I21 in double: within 2 DBL_EPSILON of its terms, its rounding

@@ -92,8 +92,7 @@ static void newton_failure(char *msg, size_t len, const sus_run_report *rep)
         snprintf(res, sizeof res, "residual %.3g (scale %.3g)", st->residual, st->scale);
     else if (isfinite(st->residual))
         snprintf(res, sizeof res,
-                 "residual %.3g, but its scale (the sum of |terms| of G) is not a finite "
-                 "number",
+                 "residual %.3g, but its scale (the sum of |terms| of G) is not a finite number",
                  st->residual);
     else if (isfinite(st->last_residual))
         snprintf(res, sizeof res,

@@ -58,10 +58,9 @@ static void print_overheads(const sus_lab_bench *b)
         if (!sus_lab_bench_own_attitude(me))
             continue;
         const double over = c->ns_full_min[m] / c->ns_direct[m] - 1.0;
-        printf(
-            "  %s the driver adds <= 10 %% to a %s step (%.1f ns in a bare loop, fastest rounds): "
-            "%+.1f %%\n",
-            over <= 0.10 ? "PASS" : "MISS", me->type->name, c->ns_direct[m], 100.0 * over);
+        printf("  %s the driver adds <= 10 %% to a %s step (%.1f "
+               "ns in a bare loop, fastest rounds): %+.1f %%\n",
+               over <= 0.10 ? "PASS" : "MISS", me->type->name, c->ns_direct[m], 100.0 * over);
     }
     if (c->tol_bare_min > 0.0) {
         const double over = c->tol_drv_min / c->tol_bare_min - 1.0;

@@ -207,8 +207,8 @@ static void write_long_runs(FILE *fp, const sus_lab_bench *b)
     const double r = sus_lab_bench_growth_ratio(b);
     sus_lab_bench_suslov_args_to(s, g->point, SUS_LAB_BENCH_T_GROWTH, args, sizeof args);
     fprintf(fp,
-            "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run to T = %g\t\t%.4g\t\t%.3g\t%g\t%s"
-            "\t\t\t\t\t%s\n",
+            "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run "
+            "to T = %g\t\t%.4g\t\t%.3g\t%g\t%s\t\t\t\t\t%s\n",
             s->name, sus_lab_bench_param_name(s), s->param[g->point], SUS_LAB_BENCH_T_GROWTH,
             g->sec, SUS_LAB_BENCH_T_LONG, g->sec_long, r, SUS_LAB_BENCH_GROWTH_TARGET,
             pass_word(r <= SUS_LAB_BENCH_GROWTH_TARGET), args);

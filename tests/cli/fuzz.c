@@ -146,8 +146,7 @@ static int judge(int code, const char *before, const char *first, long errlines,
     }
     if (code == 3 && strcmp(before, after) != 0) {
         snprintf(why, len,
-                 "exit 3 but files in the work directory changed (a failed run writes "
-                 "no file)");
+                 "exit 3 but files in the work directory changed (a failed run writes no file)");
         return 0;
     }
     return !((code == 0 || code == 3) && !fuzz_output_ok(code, why, len));
@@ -308,8 +307,7 @@ static void finish(void)
     if (system(cmd) != 0)
         fprintf(stderr, "fuzz: could not remove %s\n", fuzz_workdir);
     printf("fuzz: runs that exited 0: %ld, 2: %ld, 3: %ld; stopped with SIGTERM after %.0f s: %ld; "
-           "killed by a "
-           "random signal mid-run: %ld\n",
+           "killed by a random signal mid-run: %ld\n",
            by_status[0], by_status[1], by_status[2], run_limit, by_status[3], by_status[4]);
 }
 

@@ -286,9 +286,9 @@ static void local_claims(const tol_method *tm)
         text, sizeof text,
         "steepest slope of $\\log \\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50 " against $\\log "
         "\\mathrm{TOL}$, " TOLS " above $100\\,N u$ (%d of %d points), %s, %d of %d bodies (%s): "
-        "$\\le %.2f$, the upper edge of the band $[%.2f, %.2f]$ fixed before measuring; the "
-        "verdict turns at an edge of %.3f, and %d of %d bodies lie inside the one-order theory "
-        "$[%.2f, 1]$; %s",
+        "$\\le %.2f$, the upper edge of the band $[%.2f, %.2f]$ fixed before "
+        "measuring; the verdict turns at an edge of %.3f, and %d of %d "
+        "bodies lie inside the one-order theory $[%.2f, 1]$; %s",
         s[1].fitted, s[1].points, name, s[1].bodies, BODIES_COUNT, s[1].slope_body,
         SLOPE_MID + SLOPE_HALF, SLOPE_MID - SLOPE_HALF, SLOPE_MID + SLOPE_HALF, s[1].slope,
         s[1].in_theory, s[1].bodies, SLOPE_P6, slow);
@@ -307,8 +307,8 @@ static void local_claims(const tol_method *tm)
                      LEDGER_EXTENSION);
     snprintf(text, sizeof text,
              "smallest $\\mathrm{dist}(R, R_\\mathrm{ref})/\\mathrm{TOL}$ at " T50 ", " TOLS
-             " above "
-             "$100\\,N u$, %s, %d of %d bodies (%s): $\\ge %g$ (within two decades below TOL); %s",
+             " above $100\\,N u$, %s, %d of %d bodies (%s): "
+             "$\\ge %g$ (within two decades below TOL); %s",
              name, s[1].bodies, BODIES_COUNT, s[1].lo_body, RATIO_LO, slow);
     snprintf(id, sizeof id, "%s-tol-ratio-lo-R", key);
     ledger_add_bound(id, "(extension)", text, s[1].ratio_lo, RATIO_LO, 1, LEDGER_EXTENSION);
@@ -319,9 +319,8 @@ static void local_claims(const tol_method *tm)
         snprintf(id, sizeof id, "%s-tol-ratio-hi-%s", key, wr[q]);
         snprintf(text, sizeof text,
                  "largest %s at " T50 " over $N\\,\\mathrm{TOL}$, " TOLS
-                 " ($N$ accepted steps), %s, "
-                 "%d bodies (%s): $\\le %g$ ($N$ local errors of at most TOL, estimate within "
-                 "$%g\\times$)",
+                 " ($N$ accepted steps), %s, %d bodies (%s): $\\le %g$ ($N$ "
+                 "local errors of at most TOL, estimate within $%g\\times$)",
                  what[q], name, BODIES_COUNT, s[q].hi_body, F_UNDERSHOOT, F_UNDERSHOOT);
         ledger_add_bound(id, "(extension)", text, s[q].ratio_hi, F_UNDERSHOOT, 0, LEDGER_EXTENSION);
     }
@@ -439,8 +438,7 @@ static void structure_claims(const tol_method *tm)
     key_number(tm, "StructSteps", (double)steps / BODIES_COUNT);
     snprintf(text, sizeof text,
              "$\\max |\\omega_3|$ over every step to " T1E4
-             ", %s at $\\mathrm{TOL} = %s$, %d bodies: "
-             "exactly 0",
+             ", %s at $\\mathrm{TOL} = %s$, %d bodies: exactly 0",
              name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     /* the method writes w3 = 0.0 at every step: a check of the code, not evidence */
     snprintf(id, sizeof id, "%s-w3", key);
@@ -465,8 +463,7 @@ void adaptive_claims(void)
             snprintf(id, sizeof id, "expected-tol-known-%s", type->name);
             ledger_add_bound(
                 id, "\\texttt{tests/ledger/expected\\_orders.c}",
-                "the tolerance-driven method has a stated meaning of TOL to test: 1 when "
-                "it does",
+                "the tolerance-driven method has a stated meaning of TOL to test: 1 when it does",
                 0.0, 1.0, 1, LEDGER_EXTENSION);
             continue;
         }

@@ -108,8 +108,8 @@ static double reduced_orders(const sus_step_method *me, const sus_lab_convergenc
     if (eo->s > 0) {
         snprintf(id, sizeof id, "lambda-order-%s", st->name);
         snprintf(what, sizeof what,
-                 "$s$: local slope of $|\\lambda(t_k+\\varepsilon) - \\lambda(\\omega^{k+1})|$ "
-                 "minus 1, %s",
+                 "$s$: local slope of $|\\lambda(t_k+\\varepsilon) "
+                 "- \\lambda(\\omega^{k+1})|$ minus 1, %s",
                  st->name);
         order_line(id, eo->ref, what,
                    fit_on(conv->eps, cm->loc_lambda, SUS_LAB_CONV_NJ, 1, SIZE_LAMBDA, FIT_EPS_MAX),
@@ -227,9 +227,9 @@ void consistency_cayinver_claims(void)
                "$|d_{33} - 1|$, $d_{33}$ that difference",
                fabs(d33 - 1.0), 0.0, 1e-14, LEDGER_EXTENSION);
     ledger_add("cayinver-other-entries-agree", "(extension)",
-               "max over 16 $(\\varepsilon, \\omega)$ of the differences between the other eight "
-               "entries of \\eqref{cayinver} as printed and those of $\\mathrm{dcay}^{-1}$: they "
-               "agree",
+               "max over 16 $(\\varepsilon, \\omega)$ of the differences "
+               "between the other eight entries of \\eqref{cayinver} as "
+               "printed and those of $\\mathrm{dcay}^{-1}$: they agree",
                others, 0.0, 1e-14, LEDGER_EXTENSION);
 }
 

@@ -79,8 +79,8 @@ static void killing_claims(gsl_rng *r)
         "max over 64 pairs of $|-\\mathrm{tr}(\\hat{x} \\hat{y})/2 - \\langle x, y \\rangle|$",
         trace, 0.0, 1e-14, LEDGER_REPRODUCED);
     ledger_add("killing-transpose", "\\eqref{Killing}",
-               "max over 64 pairs of $|\\mathrm{tr}(\\hat{x}^\\top \\hat{y})/2 - \\langle x, y "
-               "\\rangle|$",
+               "max over 64 pairs of $|\\mathrm{tr}(\\hat{x}^\\top "
+               "\\hat{y})/2 - \\langle x, y \\rangle|$",
                transpose, 0.0, 1e-14, LEDGER_REPRODUCED);
     ledger_add("killing-ad-invariant", "\\eqref{Killing}",
                "max over 64 pairs and rotations $R = \\mathrm{cay}(a)$ of $|(R x, R y) - (x, y)|$: "
@@ -257,11 +257,10 @@ static void subspace_claims(void)
     ledger_number("SecFiveFourViolationEpsQuarter", viol[2]);
     /* a violation a million times round-off at eps = 1/4 cannot be a rounding artefact */
     ledger_add_bound("sec54-not-preserved", "\\PaperRefOr{dreps}",
-                     "$|\\omega_3|$ on the zero set of $\\varphi_d \\circ \\mathrm{cay}$ at "
-                     "$(\\omega_1, \\omega_2) = "
-                     "(0.4, 0.5)$, $\\varepsilon = 1/4$, $\\varphi_d = \\omega_3$ read at $(2,1)$ "
-                     "on the forward "
-                     "difference $(W - I)/\\varepsilon$: the text says it need not vanish",
+                     "$|\\omega_3|$ on the zero set of $\\varphi_d \\circ \\mathrm{cay}$ "
+                     "at $(\\omega_1, \\omega_2) = (0.4, 0.5)$, $\\varepsilon = 1/4$, "
+                     "$\\varphi_d = \\omega_3$ read at $(2,1)$ on the forward difference "
+                     "$(W - I)/\\varepsilon$: the text says it need not vanish",
                      viol[2], 1e-10, 1, LEDGER_REPRODUCED);
     /* (caypart): the (2,1) entry is (x_3 + x_1 x_2/2)/(1 + |x/2|^2), so w_3 = -eps w_1 w_2/2: slope
      * 1 */
@@ -270,13 +269,11 @@ static void subspace_claims(void)
                "$\\varepsilon = "
                "2^{-j}$, $j = 2, \\dots, 10$: our analysis gives 1",
                slope, 1.0, 0.1, LEDGER_EXTENSION);
-    ledger_add(
-        "sec54-skew-preserved", "\\PaperRefOr{dreps}, extension",
-        "max over $\\varepsilon = 2^{-j}$, $j = 0, \\dots, 10$, of $|\\omega_3|$ when $\\varphi_d$ "
-        "reads "
-        "the skew part of $(W - I)/\\varepsilon$: the Cayley map's skew part is $\\hat{x}/(1 + "
-        "|x/2|^2)$, so the zero set is the subspace",
-        skew, 0.0, 1e-15, LEDGER_EXTENSION);
+    ledger_add("sec54-skew-preserved", "\\PaperRefOr{dreps}, extension",
+               "max over $\\varepsilon = 2^{-j}$, $j = 0, \\dots, 10$, of $|\\omega_3|$ when "
+               "$\\varphi_d$ reads the skew part of $(W - I)/\\varepsilon$: the Cayley map's "
+               "skew part is $\\hat{x}/(1 + |x/2|^2)$, so the zero set is the subspace",
+               skew, 0.0, 1e-15, LEDGER_EXTENSION);
 }
 
 void coverage_claims(const sus_model *m)

@@ -128,8 +128,7 @@ static void swap_claims(const run_result v10, const run_result m10, const run_re
         lo[1], 4.0, 0.5, LEDGER_EXTENSION);
     ledger_add("fig2-swap-printed-none", REF_FIG2_SEC56 "; extension",
                "how many of the 3 statements that need no threshold (energy, faster convergence, "
-               "long-term "
-               "accuracy) hold with the labels as printed: none",
+               "long-term accuracy) hold with the labels as printed: none",
                fixed[0], 0.0, 0.5, LEDGER_EXTENSION);
 }
 
@@ -155,8 +154,7 @@ void fig2more_claims(const sus_model *m, const sus_exact *ex)
     snprintf(
         q, sizeof q,
         "smallest over $\\varepsilon = 2^{-j}$ ($j = 0, \\dots, 10$) of $e_\\mathrm{var}(10) / "
-        "e_\\mathrm{mid}(10)$ (largest $%s$); faster convergence needs it $\\le 1/10$ "
-        "somewhere",
+        "e_\\mathrm{mid}(10)$ (largest $%s$); faster convergence needs it $\\le 1/10$ somewhere",
         notation_g(hi, 3).s);
     ledger_add_bound("fig2-converges-faster-eps", REF_FIG2_CONCLUSIONS, q, lo, 1.0 / MUCH, 0,
                      LEDGER_NOT_REPRODUCED);

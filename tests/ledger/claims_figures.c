@@ -146,8 +146,8 @@ static void constraint_claims(const char *fig, const char *ref, const sus_model 
     }
     snprintf(id, sizeof id, "%s-constraint-positive-control", fig);
     snprintf(what, sizeof what,
-             "the same measurement on a midpoint run with $\\omega_3 = %s$ injected every step: it "
-             "sees it",
+             "the same measurement on a midpoint run with $\\omega_3 "
+             "= %s$ injected every step: it sees it",
              notation_g(VIOLATION, 6).s);
     ledger_add(id, "(test of the test)", what, seen, VIOLATION, 0.1 * VIOLATION, LEDGER_EXTENSION);
 }

@@ -115,8 +115,8 @@ static void method_orders(const sus_step_method *me, const expected_order *eo)
         const int paper = r == SUS_RECON_CAYLEY && me->paper_ref;
         snprintf(id, sizeof id, "method-so3-%s-%s", SUS_RECON_NAMES[r], me->type->name);
         snprintf(what, sizeof what,
-                 "$\\mathrm{SO}(3)$ order $\\min(r, p)$, $r$: local \\eqref{MetMat} error slope "
-                 "$- 1$, %s",
+                 "$\\mathrm{SO}(3)$ order $\\min(r, p)$, $r$: "
+                 "local \\eqref{MetMat} error slope $- 1$, %s",
                  SUS_RECON_NAMES[r]);
         ledger_order_line(id, what, me->type->name, &sum[2 + r], eo->so3[r],
                           paper ? "\\PaperRefOr{TeoL}" : "\\PaperRefOr{TeoL}, extension",

@@ -210,9 +210,9 @@ void multiplier_limit_claims(const claims_paper *p)
     ledger_add("lambda-limit-variational", "\\PaperRefOr{PropoFinal}, proof", text, worst.dev, 0.0,
                worst.bound, LEDGER_REPRODUCED);
     snprintf(text, sizeof text,
-             "smallest over %d bodies (%s) of max over $t_k$ of $|\\lim_{\\varepsilon \\to 0} "
-             "(\\lambda(t_k+\\varepsilon) - \\lambda_{k+1})|$ over the bound above: $\\ge %g$, the "
-             "limit is not 0",
+             "smallest over %d bodies (%s) of max over $t_k$ of $|\\lim_{\\varepsilon "
+             "\\to 0} (\\lambda(t_k+\\varepsilon) - \\lambda_{k+1})|$ over "
+             "the bound above: $\\ge %g$, the limit is not 0",
              BODIES_COUNT, far_name, LIM_NOT_ZERO);
     ledger_add_bound("lambda-limit-variational-not-zero", "\\PaperRefOr{PropoFinal}, proof", text,
                      far, LIM_NOT_ZERO, 1, LEDGER_REPRODUCED);

@@ -296,9 +296,8 @@ static void remark_line(const qmodel *q, const sus_exact *ex, int p, const char 
     snprintf(
         quantity, sizeof quantity,
         "$s$ with the shift from $p + 1 = %d$ terms ($e_{p+1}, \\dots, e_{2p+1}$), in binary128 "
-        "($u = 2^{-112}$), %s: the remark's $s = 2p + 1$; error $%s$ at $\\varepsilon = "
-        "2^{-10}$; fit over $\\varepsilon \\in [2^{-10}, 2^{-2}]$, errors above $1000\\,u "
-        "|\\lambda|$",
+        "($u = 2^{-112}$), %s: the remark's $s = 2p + 1$; error $%s$ at $\\varepsilon = 2^{-10}$; "
+        "fit over $\\varepsilon \\in [2^{-10}, 2^{-2}]$, errors above $1000\\,u |\\lambda|$",
         p + 1, name, notation_g(err[NJ - 1], 2).s);
     double last;
     const double s = qfit(eps, err, 1000.0 * QU * SUS_LAB_SIZE_LAMBDA, 0, &last) - 1.0;

@@ -91,12 +91,11 @@ static void expansion_claim(const sus_model *m, const sus_exact *ex, const sus_s
     }
     char id[64], q[400];
     snprintf(id, sizeof id, "remark55-expansion-%s", st->name);
-    snprintf(
-        q, sizeof q,
-        "the largest distance of the series from the step and from the exact flow at "
-        "$\\varepsilon = 1/8$ (12 terms), %s; local error coefficients $e_0, \\dots, e_p$: $%s$, "
-        "$e_{p+1}$: $%s$",
-        st->name, notation_g(low, 2).s, notation_g(lead, 2).s);
+    snprintf(q, sizeof q,
+             "the largest distance of the series from the step and from the "
+             "exact flow at $\\varepsilon = 1/8$ (12 terms), %s; local error "
+             "coefficients $e_0, \\dots, e_p$: $%s$, $e_{p+1}$: $%s$",
+             st->name, notation_g(low, 2).s, notation_g(lead, 2).s);
     /* a step is computed to a few u |w| (~1e-16); the series' truncation is (k eps)^12 ~ 1e-20;
      * e_j for j <= p cancel to a few u: 1e-14 bounds both with a factor ~50 */
     ledger_add(id, "\\PaperRefOr{RemarkLambda}, expansion from \\eqref{ContDyn}", q, fmax(dev, low),
@@ -129,9 +128,8 @@ static void midpoint_label(const sus_model *m, const sus_exact *ex, int p, const
     const double s0 = fit_s(eps, e0);
     ledger_add_bound(
         "label-midpoint-2-1", SEC56_LABEL,
-        "$s$ of the midpoint DSP's $\\lambda(\\omega^{k+1})$ (local slope minus 1) $\\ge 1 "
-        "- 0.1$: the label (2,1) of a (2,2) method holds as a lower bound, not sharp (next "
-        "line)",
+        "$s$ of the midpoint DSP's $\\lambda(\\omega^{k+1})$ (local slope minus 1) $\\ge 1 - "
+        "0.1$: the label (2,1) of a (2,2) method holds as a lower bound, not sharp (next line)",
         s0, 0.9, 1, LEDGER_REPRODUCED);
     /* ... but is not sharp: the measured s is 2 (an order is an integer: a tenth of the gap) */
     ledger_add(
@@ -175,8 +173,8 @@ static void shift_claims(const sus_stepper_type *st, int p, const double *eps, c
             "remark55-variational-2s",
             "text after \\PaperRefOr{PropoFinal}, \\PaperRefOr{RemarkLambda}",
             "$s$ of $\\lambda(\\omega^{k+1}) + l_\\lambda$ (one term of the local error of "
-            "\\eqref{taudyn}) in place of \\eqref{taualg}: the text says $(2, s)$ with $s > "
-            "p = 2$",
+            "\\eqref{taudyn}) in place of \\eqref{taualg}: the text says $(2, s)$ with $s > p = "
+            "2$",
             s1, 2.5, 1, LEDGER_REPRODUCED);
 }
 
@@ -320,8 +318,8 @@ static void corrected_cayinver_claim(const sus_model *m, const sus_exact *ex)
         f.slope = NAN;
     ledger_add(
         "cayinver-corrected-s",
-        "\\eqref{cayinver} with its entry $(3,3) = 1$ against the midpoint of \\PaperRefOr{Fig1}; "
-        "extension",
+        "\\eqref{cayinver} with its entry $(3,3) = 1$ against "
+        "the midpoint of \\PaperRefOr{Fig1}; extension",
         "$s$ of \\eqref{taualg} $+ (c(\\omega^{k+1}) - c(\\omega^k))/\\varepsilon$ (the corrected "
         "entry) against $\\lambda(t_k+\\varepsilon)$: 0, not the midpoint's $s = 2$ (1 at the half "
         "step, see \\texttt{lambda-order-variational-exact-dcayinv-mid})",

@@ -130,10 +130,10 @@ static void reduced_lines(const sus_step_method *me, const expected_order *eo,
      * is exact to Newton's 64 u |x| (perturbation.c). 1e-12 leaves a factor ~30 over both. */
     snprintf(id, sizeof id, "sec6-embedding-%s", st->name);
     snprintf(q, sizeof q,
-             "$\\max |G(\\varepsilon,0;x_0) - \\phi(\\varepsilon,x_0)|$, period map of $x' = h + "
-             "\\varepsilon^p d$ (rk8pd $10^{-14}$; $d$ by Newton, %.1f iterations per evaluation) "
-             "against the %s step, $\\varepsilon = 1, 1/4, 1/16$; the unperturbed flow misses by "
-             "$\\ge %s$",
+             "$\\max |G(\\varepsilon,0;x_0) - \\phi(\\varepsilon,x_0)|$, period "
+             "map of $x' = h + \\varepsilon^p d$ (rk8pd $10^{-14}$; $d$ by Newton, "
+             "%.1f iterations per evaluation) against the %s step, $\\varepsilon "
+             "= 1, 1/4, 1/16$; the unperturbed flow misses by $\\ge %s$",
              d->evals ? (double)d->its / (double)d->evals : 0.0, st->name,
              notation_g(d->emb_local, 2).s);
     snprintf(ref, sizeof ref, "\\PaperRefOr{TheoPer}%s", ext);

@@ -130,10 +130,9 @@ static void estimates(void)
         }
     }
     CHECK(worst <= 1.0,
-          "taylor-adaptive's estimate is max over the w and quaternion rows of T_p^2/T_{p-1} "
-          "on %d steps (%d bodies x 2 states x 3 tol x 3 steps): worst difference %.2g of its "
-          "rounding, "
-          "12 p u cond(I_m) (at most 1)",
+          "taylor-adaptive's estimate is max over the w and quaternion rows of "
+          "T_p^2/T_{p-1} on %d steps (%d bodies x 2 states x 3 tol x 3 steps): "
+          "worst difference %.2g of its rounding, 12 p u cond(I_m) (at most 1)",
           n, BODIES_COUNT, worst);
 }
 
@@ -205,9 +204,8 @@ static void step_size_rules(void)
           "on %d second steps (at least %d): worst relative difference %.2g (at most 1e-12)",
           nn, BODIES_COUNT, wn);
     CHECK(nr >= BODIES_COUNT && wr <= 1e-12,
-          "taylor-adaptive's retry is h max(0.1, min(0.9, 0.9 (tol/err)^"
-          "(1/(p+1)))) on %d steps rejected once (at least %d): worst relative difference %.2g (at "
-          "most 1e-12)",
+          "taylor-adaptive's retry is h max(0.1, min(0.9, 0.9 (tol/err)^(1/(p+1)))) on %d steps "
+          "rejected once (at least %d): worst relative difference %.2g (at most 1e-12)",
           nr, BODIES_COUNT, wr);
 }
 
@@ -277,11 +275,9 @@ static void steps_within_radius(void)
         ops->free(wk);
     }
     CHECK(failed == 0 && worst <= 0.99 * (1.0 + 1e-15),
-          "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, "
-          "on %d bodies and a near-singular I_m: %d series steps, the longest %.4g of the proved "
-          "radius (at "
-          "most 0.99), %d of %d runs failed or took no series step (%d settled on the steady "
-          "rotation)",
+          "taylor-adaptive at tol 0.1 and 1e30, |w| = 3 |w0|, on %d bodies and a near-singular "
+          "I_m: %d series steps, the longest %.4g of the proved radius (at most 0.99), %d of "
+          "%d runs failed or took no series step (%d settled on the steady rotation)",
           BODIES_COUNT, n, worst, failed, runs, settled);
 }
 
@@ -383,10 +379,8 @@ static void interval_end_and_overflow(void)
     const int rc = wk ? one_step(wk, 1.0, &t, w, &st) : -1;
     sus_step_taylor_adaptive_type.tol->free(wk);
     CHECK(rc == SUS_STEPPER_REJECTED && st.det <= pow(0.9, 11) * h0 * (1.0 + 1e-12),
-          "|w| = 1e160: the series "
-          "overflows; the step fails REJECTED (%d) after its tries shrank to %.3g of the first (at "
-          "most "
-          "0.9^11 = "
+          "|w| = 1e160: the series overflows; the step fails REJECTED (%d) "
+          "after its tries shrank to %.3g of the first (at most 0.9^11 = "
           "0.314: eleven retries, each at most 0.9 times the last)",
           rc, rc == SUS_STEPPER_REJECTED ? st.det / h0 : NAN);
 }
@@ -438,16 +432,13 @@ static void driver_report(void)
         most = seen > most ? seen : most;
         if (seen == 0)
             printf("NOTE %s: no try rejected at tol 1e-10 or 1e-14 (every step held by the proved "
-                   "radius): "
-                   "rejections compared at 0\n",
+                   "radius): rejections compared at 0\n",
                    b.name);
     }
     CHECK(bad == 0 && paper > 0,
-          "sus_run_tol reports the total and the largest number of rejected tries per step as "
-          "taken by "
-          "hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 s], at most %d per step, %d on the "
-          "paper's body): "
-          "%d differ",
+          "sus_run_tol reports the total and the largest number of rejected tries "
+          "per step as taken by hand, on %d bodies (tol 1e-10 and 1e-14, [0, 20 "
+          "s], at most %d per step, %d on the paper's body): %d differ",
           BODIES_COUNT, most, paper, bad);
 }
 
@@ -500,9 +491,8 @@ static void driver_budget(void)
     ops->free(wk);
     CHECK(rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT && rep.step == 6 &&
               rep.t == t && rep.stats.det == t - t4,
-          "a budget of 5 steps: status %d (STEP_LIMIT %d), step %ld (6), t %.17g (%.17g by hand), "
-          "last step "
-          "%.17g (%.17g)",
+          "a budget of 5 steps: status %d (STEP_LIMIT %d), step %ld "
+          "(6), t %.17g (%.17g by hand), last step %.17g (%.17g)",
           rep.status, SUS_STEPPER_STEP_LIMIT, rep.step, rep.t, t, rep.stats.det, t - t4);
 }
 

@@ -286,9 +286,8 @@ static void exact_functions(void)
         (sus_exact_init(&ex, &model, NULL) == -1) + (sus_exact_init(&ex, &model, W0_NAN) == -1);
     sus_exact_omega(&ex, 1.0, w);
     CHECK(bad == 6 && isnan(w[0]) && isnan(w[1]),
-          "sus_exact_init refuses a NULL ex, a NULL, uninitialised or changed model, a NULL or NaN "
-          "w0 "
-          "(%d of 6): -1, and the refused ex gives NaN",
+          "sus_exact_init refuses a NULL ex, a NULL, uninitialised or changed "
+          "model, a NULL or NaN w0 (%d of 6): -1, and the refused ex gives NaN",
           bad);
     w[0] = 0.0;
     sus_exact_omega(NULL, 1.0, w);
@@ -407,8 +406,8 @@ static void registry_functions(void)
         sus_step_method_label(rk4, (sus_recon)-1, lab, sizeof lab) == NULL;
     CHECK(refused && sus_step_method_label(rk4, SUS_RECON_CAYLEY, lab, sizeof lab) == lab &&
               strcmp(lab, "rk4 + cayley") == 0,
-          "sus_step_method_label: NULL for a NULL buf, len 0, a NULL type or an unknown recon; "
-          "control: \"%s\"",
+          "sus_step_method_label: NULL for a NULL buf, len 0, "
+          "a NULL type or an unknown recon; control: \"%s\"",
           lab);
 }
 

@@ -77,16 +77,16 @@ static void check_verdicts(const sus_lab_bench *b)
                               r = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_REDUCED, 0),
                               w = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, 0);
     CHECK(f.ours.series == 0 && f.peer.series == 1 && f.ratio == 3e-6 / 1e-6 && f.pass,
-          "attitude, full problem: ours against the full problem's peer (series %d, ratio %g, "
-          "target %g)",
+          "attitude, full problem: ours against the full problem's "
+          "peer (series %d, ratio %g, target %g)",
           f.peer.series, f.ratio, f.target);
     CHECK(r.peer.series == 2 && r.ratio == 0.4e-6 / 1e-6 && !r.pass &&
               r.target == SUS_LAB_BENCH_REDUCED_TARGET,
           "attitude, reduced problem: against the peer given w(t) (series %d, ratio %g, target %g)",
           r.peer.series, r.ratio, r.target);
     CHECK(w.peer.series == 3 && isnan(w.target),
-          "w: against the w-only peer, never the one given w(t); information, no target (series "
-          "%d, target %g)",
+          "w: against the w-only peer, never the one given w(t); "
+          "information, no target (series %d, target %g)",
           w.peer.series, w.target);
     CHECK(b->env[1].n == 1 && b->env[1].sec[0] == 3e-6 && b->env[2].n == 1 &&
               b->env[2].sec[0] == 0.4e-6,

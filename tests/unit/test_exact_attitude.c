@@ -241,14 +241,12 @@ static void steps_within_estimates(void)
             run_checked(&m, b.w0, pow(10.0, -e), 50.0, &c);
     }
     CHECK(c.local <= 1.0,
-          "every step's local error (against the reference's increment) is at most its "
-          "estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate %.3g over %ld steps, "
-          "%d "
-          "bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13",
+          "every step's local error (against the reference's increment) is at most "
+          "its estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate "
+          "%.3g over %ld steps, %d bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13",
           ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
     CHECK(c.global <= 1.0,
-          "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio "
-          "%.3g",
+          "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio %.3g",
           c.global);
 }
 
@@ -298,8 +296,7 @@ static void budget_kept(void)
           "ratio %.15g (%d bodies, TOL 1e-4, 1e-8, 1e-12, T = 50 and 400)",
           c.step, TEST_BODIES);
     CHECK(c.sum <= 1.0 + 1e-12,
-          "the steps' estimates and the tail's bound sum to at most TOL: worst sum / "
-          "TOL %.15g",
+          "the steps' estimates and the tail's bound sum to at most TOL: worst sum / TOL %.15g",
           c.sum);
 }
 
@@ -390,15 +387,13 @@ static void tail_is_one_step(void)
         }
     }
     CHECK(same,
-          "a run to T = 1e6 takes as many steps as one to T = 1e3 (TOL %g, %d bodies): the tail is "
-          "one "
-          "step",
+          "a run to T = 1e6 takes as many steps as one to T "
+          "= 1e3 (TOL %g, %d bodies): the tail is one step",
           tol, BODIES_COUNT);
     CHECK(worst <= 1.0,
-          "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: the "
-          "angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest error / (u T "
-          "|w_inf|) "
-          "%.3g at 1e4, %.3g at 1e6",
+          "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: "
+          "the angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest "
+          "error / (u T |w_inf|) %.3g at 1e4, %.3g at 1e6",
           COND, worst, ratio[0], ratio[1]);
 }
 
@@ -451,8 +446,8 @@ static void constant_w_is_one_rotation(void)
     sus_so3_exp(v, Rx);
     const double err = sus_so3_dist(R, Rx), bound = 1e-12 + COND * U * T * hypot(w0[0], w0[1]);
     CHECK(n == 1 && err <= bound && w[0] == w0[0] && w[1] == w0[1] && w[2] == 0.0,
-          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, R(T) = exp(T w0^) within %.3g (bound "
-          "%.3g)",
+          "I31 = I32 = 0: one step (%ld), w(T) = w0 exactly, "
+          "R(T) = exp(T w0^) within %.3g (bound %.3g)",
           n, err, bound);
 }
 

@@ -67,9 +67,8 @@ static void tail_vs_reference(const body *b)
         sus_refatt_advance(&ra, T, R);
         const double d = sus_mat3_dist(c.R, R), bound = 6.0 * DBL_EPSILON / 2.0;
         CHECK(rc == SUS_RUN_OK && c.rows == 5 && c.last_k == 4 && d <= bound,
-              "%s: exact run to T = %g: rows 0..4, its R(T) within %.2e of the reference advanced "
-              "over the "
-              "stretch (bound 6u = %.2e)",
+              "%s: exact run to T = %g: rows 0..4, its R(T) within %.2e of "
+              "the reference advanced over the stretch (bound 6u = %.2e)",
               b->name, T, d, bound);
     }
 

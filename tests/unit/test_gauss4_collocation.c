@@ -121,9 +121,8 @@ int main(void)
         double dR;
         const double dw = worst_at(steps[i], &dR);
         CHECK(dw >= 0.0 && dw <= 1e-14 && dR <= 1e-14,
-              "gauss4 at eps = %g is the Gauss-Legendre collocation on %d bodies: |w - w_col| / "
-              "|w0| %.2g, "
-              "|R - R_col| %.2g (each at most 1e-14)",
+              "gauss4 at eps = %g is the Gauss-Legendre collocation on %d bodies: "
+              "|w - w_col| / |w0| %.2g, |R - R_col| %.2g (each at most 1e-14)",
               steps[i], BODIES_COUNT, dw, dR);
     }
     return check_summary("test_gauss4_collocation");

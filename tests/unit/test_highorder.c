@@ -39,9 +39,7 @@ static void tables(void)
         CHECK(fabs(sum - 1.0) <= 4.0 * s * U, "%s: sum of the %d weights = 1 (off by %.2g)",
               c[k]->name, s, sum - 1.0);
         CHECK(fabs(cubes) <= 4.0 * s * U * fmax(1.0, mag),
-              "%s: sum of cubes = 0, the order-3 condition "
-              "(%.2g)",
-              c[k]->name, cubes);
+              "%s: sum of cubes = 0, the order-3 condition (%.2g)", c[k]->name, cubes);
     }
 }
 

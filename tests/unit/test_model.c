@@ -290,9 +290,8 @@ static void steady_rotation_checks(const sus_model *m, const body *b, const sus_
                       (fabs(I[0] * wl[0]) + fabs(I[1] * wl[1])) * back;
     const double de = fabs(sus_energy(m, wl) - E0), dm = fabs(sus_energy(m, wm) - E0);
     CHECK(fabs(c) <= 4 * u * yc && de <= 4 * u * ye,
-          "%s: the steady rotation has I31 w1 + I32 w2 = %.1e (%.2g of 4 u of its terms) and E - "
-          "E0 = %.1e "
-          "(%.2g of 4 u of its terms)",
+          "%s: the steady rotation has I31 w1 + I32 w2 = %.1e (%.2g of 4 "
+          "u of its terms) and E - E0 = %.1e (%.2g of 4 u of its terms)",
           b->name, c, fabs(c) / (4 * u * yc), de, de / (4 * u * ye));
     CHECK(
         isfinite(wm[0]) && isfinite(wm[1]) && dm <= 4 * u * ye,
@@ -375,8 +374,7 @@ static void paper_closed_form(const sus_model *m)
     sus_exact_init(&ex, m, wl);
     sus_exact_omega(&ex, 50.0, wq);
     CHECK(hypot(wq[0] - wl[0], wq[1] - wl[1]) < 1e-15,
-          "the attracting steady rotation is a fixed point of "
-          "the closed form");
+          "the attracting steady rotation is a fixed point of the closed form");
     const double weq[2] = {-wl[0], -wl[1]};
     sus_exact_init(&ex, m, weq);
     sus_exact_omega(&ex, 50.0, wq);

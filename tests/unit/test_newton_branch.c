@@ -78,9 +78,8 @@ static void branch_step(const sus_exact *paper, const char *name, double h, cons
     CHECK(cont && (off_branch || !hard) && rc == SUS_STEPPER_OK &&
               res <= SUS_STEP_NEWTON_STAGNATION * scale && d <= 1e-12 * hypot(xu[0], xu[1]) &&
               s.det > 0.0,
-          "%s at h = %g from (%.4g, %.4g): Newton from the prediction %s; the step: status %d, |G| "
-          "= %.2g "
-          "(scale %.2g), %.2g from the continued branch's root, det J %.3g",
+          "%s at h = %g from (%.4g, %.4g): Newton from the prediction %s; the step: status "
+          "%d, |G| = %.2g (scale %.2g), %.2g from the continued branch's root, det J %.3g",
           name, h, w[0], w[1],
           plain != SUS_STEPPER_OK ? "fails"
           : off_branch            ? "lands off the branch"
@@ -137,9 +136,8 @@ static void fold(const sus_exact *paper)
                                              1.01 * e_star, w, x, &s, &reg);
     CHECK(found && below == SUS_STEPPER_OK && above == SUS_STEPPER_SINGULAR &&
               fabs(exponent - 0.5) <= 0.05,
-          "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 e*: %d; at "
-          "1.01 e*: "
-          "status %d, SINGULAR %d); det J ~ (e* - e)^%.4f (1/2)",
+          "gauss4 from (%.4g, %.4g): its branch folds at e* k = %.4g (reached at 0.99 "
+          "e*: %d; at 1.01 e*: status %d, SINGULAR %d); det J ~ (e* - e)^%.4f (1/2)",
           w[0], w[1], e_star * paper->k, below, above, SUS_STEPPER_SINGULAR, exponent);
 }
 
@@ -187,11 +185,10 @@ static void cycle_shortcut(const sus_exact *paper)
                 r.final_err != hypot(w[0] - winf[0], w[1] - winf[1]) / hypot(winf[0], winf[1]);
         }
     }
-    CHECK(
-        differ == 0,
-        "%d runs of the stability map with their cycles skipped end as the whole runs do, bit for "
-        "bit: %d differ",
-        n, differ);
+    CHECK(differ == 0,
+          "%d runs of the stability map with their cycles skipped "
+          "end as the whole runs do, bit for bit: %d differ",
+          n, differ);
 }
 
 int main(void)

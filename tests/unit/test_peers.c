@@ -134,8 +134,8 @@ int main(void)
             for (int d = 0; d < 4; d++)
                 for (int h = 0; h < 4; h++)
                     CHECK(same_run(&m, &red, types[k], dims[d], (sus_lab_peer_api)api, hstarts[h]),
-                          "GSL %s dim %zu %s hstart %g: a repeated run equals a fresh run, bit for "
-                          "bit",
+                          "GSL %s dim %zu %s hstart %g: a repeated "
+                          "run equals a fresh run, bit for bit",
                           types[k]->name, dims[d], api ? "evolve" : "driver", hstarts[h]);
     check_reduced();
     return check_summary("test_peers");

@@ -85,8 +85,8 @@ static void check_lambda(const sus_model *m, const sus_stepper_type *st)
         if (!(e2 > floor))
             continue;
         CHECK(st->desc.lambda_order >= 1 ? e1 / e2 >= 3.0 : e1 / e2 < 2.0,
-              "%s: lambda_order = %d; local multiplier error %.2e at eps = %g, %.2e at %g (ratio "
-              "%.2f)",
+              "%s: lambda_order = %d; local multiplier error "
+              "%.2e at eps = %g, %.2e at %g (ratio %.2f)",
               st->name, st->desc.lambda_order, e1, EPS[i], e2, 0.5 * EPS[i], e1 / e2);
         return;
     }
@@ -117,8 +117,8 @@ static void check_type(const sus_model *m, const sus_stepper_type *st)
     const double drift = energy_drift(m, st, 0.5, 200),
                  yard = 200.0 * st->desc.substeps * 4.0 * SUS_U * e0;
     CHECK(st->desc.conserves_energy ? drift <= yard : drift > 100.0 * yard,
-          "%s: conserves_energy = %d; |E - E0| over 200 steps of eps = 0.5: %.2e (round-off "
-          "yardstick %.1e)",
+          "%s: conserves_energy = %d; |E - E0| over 200 steps "
+          "of eps = 0.5: %.2e (round-off yardstick %.1e)",
           st->name, st->desc.conserves_energy, drift, yard);
     /* cayley against exp-mid differ at O(eps^2) per step; a method that ignores the request gives
      * the same R bit for bit. */

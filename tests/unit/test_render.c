@@ -64,8 +64,8 @@ int main(void)
         sus_plot_scene_project(&sc, b.R, tip, W / 3, 0, W / 3, H, H, &qx, &qy);
         /* a 7-pixel point: its centroid sits on the projected point to within a pixel */
         CHECK(n > 10 && hypot(cx - qx, cy - qy) < 1.5,
-              "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, %.2f), projected (%.2f, %.2f) "
-              "(%d pixels)",
+              "e3 tip of R = exp(%.1f, %.1f, %.1f)^ drawn at (%.2f, "
+              "%.2f), projected (%.2f, %.2f) (%d pixels)",
               rot[i][0], rot[i][1], rot[i][2], cx, cy, qx, qy, n);
     }
     /* a full frame: not blank, not one colour */
@@ -88,8 +88,8 @@ int main(void)
         orange += R > 200 && G > 100 && G < 200 && B < 60;
     }
     CHECK(changed > W * H / 50 && box > 100 && red > 10 && orange > 10,
-          "a full frame has content: %d pixels off the background; box %d, e3 (red) %d, w (orange) "
-          "%d pixels",
+          "a full frame has content: %d pixels off the background; "
+          "box %d, e3 (red) %d, w (orange) %d pixels",
           changed, box, red, orange);
     sus_plot_gl_context_destroy(gl);
     return check_summary("test_render");

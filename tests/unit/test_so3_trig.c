@@ -61,8 +61,7 @@ static void relative(gsl_rng *r)
           "worst %.2f u (sin), %.2f u (cos)",
           ws, wc);
     CHECK(wsinc <= 3.0,
-          "sinc t = sin t / t on (0, pi/4]: within 3 u relative of libm's quotient; "
-          "worst %.2f u",
+          "sinc t = sin t / t on (0, pi/4]: within 3 u relative of libm's quotient; worst %.2f u",
           wsinc);
     /* 3 u for the two sines, u/2 for each quotient's rounding (times t, |sin t| <= 1) */
     CHECK(wbig <= 4.0,

@@ -180,9 +180,8 @@ static void newton_solves(const sus_model *m, const char *bname, const double w0
             gmax = fmax(gmax, fabs(g[i]));
         CHECK(status == SUS_STEPPER_OK && s2 == SUS_STEPPER_OK && gmax <= 16 * SUS_U * sc &&
                   stats.iterations <= 4 && wn[2] == 0.0 && wr[0] == wn[0] && wr[1] == wn[1],
-              "%s, %s: eps = 0.01 s = %.3g step solved to |G| = %.1e (scale %.2f) in %d Newton "
-              "iterations, "
-              "w3 = 0",
+              "%s, %s: eps = 0.01 s = %.3g step solved to |G| = "
+              "%.1e (scale %.2f) in %d Newton iterations, w3 = 0",
               bname, st->name, eps, gmax, sc, stats.iterations);
     }
 }
@@ -338,9 +337,8 @@ static void driver(const sus_model *m)
     const int rb = sus_run(&bad, w_fold, count_rows, &cb, &rep);
     CHECK(rb == 1 && rep.status == SUS_STEPPER_SINGULAR && rep.step == 1 && rep.t == 1000.0 &&
               cb.rows == 1,
-          "gauss4, w0 = (0.276, -0.640), eps = 1000: step %ld (t = %g) reported as failed (status "
-          "%d, a fold "
-          "%d), only row 0 emitted",
+          "gauss4, w0 = (0.276, -0.640), eps = 1000: step %ld (t = %g) reported "
+          "as failed (status %d, a fold %d), only row 0 emitted",
           rep.step, rep.t, rep.status, SUS_STEPPER_SINGULAR);
 
     /* A singular (REGLOC) block is reported as such, not iterated on. */

@@ -114,8 +114,8 @@ static void rejection(const sus_model *m, const double w0[2], const char *name, 
     if (tol > 0.0) {
         const int rc = first_step(m, w0, tol, &t, w, &att, &st);
         CHECK(rc == SUS_STEPPER_OK && st.iterations >= 1 && st.residual <= tol && t > 0.0,
-              "%s: first step rejected %d times, then accepted with estimate %.3g <= TOL = %.0e (t "
-              "= %.3g)",
+              "%s: first step rejected %d times, then accepted "
+              "with estimate %.3g <= TOL = %.0e (t = %.3g)",
               name, st.iterations, st.residual, tol, t);
     }
     sus_tol_work *wk;
@@ -212,9 +212,8 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     double d = sus_so3_dist(R, c.last.R);
     CHECK(rc == SUS_RUN_OK && sus_c(m, ws) == 0.0 && c.last.w[0] == ws[0] && c.last.w[1] == ws[1] &&
               d <= 10.0 * (double)c.last.k * 1e-10,
-          "%s: steady rotation (c(w*) = 0 exactly): w stays w* exactly, R = exp(50 w*^) to %.3g <= "
-          "10 N TOL "
-          "(N = %ld)",
+          "%s: steady rotation (c(w*) = 0 exactly): w stays w* exactly, "
+          "R = exp(50 w*^) to %.3g <= 10 N TOL (N = %ld)",
           name, d, c.last.k);
     /* the steady rotation the closed form tends to from w0, the attracting one of +-w*: c(w*) is
      * u-small but not 0, so the w rows are u-small; whatever they do, TOL bounds each step's error:
@@ -231,9 +230,8 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
     const double dw = fmax(fabs(c.last.w[0] - wl[0]), fabs(c.last.w[1] - wl[1]));
     const double bound = 10.0 * (double)c.last.k * 1e-10;
     CHECK(rc == SUS_RUN_OK && dw <= bound && d <= bound,
-          "%s: the closed form's steady rotation over "
-          "T = 50 s = %.3g: w stays within %.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N "
-          "= %ld)",
+          "%s: the closed form's steady rotation over T = 50 s = %.3g: w stays within "
+          "%.2g of w*, R = exp(T w*^) to %.3g, both <= 10 N TOL (N = %ld)",
           name, T, dw, d, c.last.k);
 }
 
@@ -256,9 +254,8 @@ static void rows_and_structure(const sus_model *m, const double w0[2], const cha
     /* E restored onto E0 rounds 8 u of E's terms (E0's and the scaled w's: 2 u each, the scaling 2
      * u) */
     CHECK(a.w3 == 0.0 && a.worst_orth <= 1e-14 && a.worst_er <= 8.0 * SUS_U,
-          "%s: dense rows keep w3 = 0, |R^T R - I| = %.2g <= 1e-14, |E - E0| = %.2g, %.2g u of E's "
-          "terms "
-          "(<= 8 u)",
+          "%s: dense rows keep w3 = 0, |R^T R - I| = %.2g <= 1e-14, "
+          "|E - E0| = %.2g, %.2g u of E's terms (<= 8 u)",
           name, a.worst_orth, a.worst_e, a.worst_er / SUS_U);
     /* the row at t_end is the step's own end in both runs: the same state */
     CHECK(rb == SUS_RUN_OK && memcmp(a.last.w, b.last.w, sizeof a.last.w) == 0 &&
@@ -283,9 +280,8 @@ static void dense_accuracy(const sus_model *m, const double w0[2], const char *n
     run(m, w0, 1e-8, 30.0 * s, 0.0, &steps, &rep);
     const double bound = 10.0 * (double)steps.last.k * 1e-8;
     CHECK(rc == SUS_RUN_OK && c.worst_R <= bound && c.worst_w <= bound,
-          "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| <= %.3g, |w - w(t)| <= %.3g, "
-          "both <= 10 N "
-          "TOL = %.3g",
+          "%s: 301 dense rows to t = 30 s at TOL 1e-8: |R - R_ref| "
+          "<= %.3g, |w - w(t)| <= %.3g, both <= 10 N TOL = %.3g",
           name, c.worst_R, c.worst_w, bound);
 }
 
@@ -303,8 +299,8 @@ static void step_budget(const sus_model *m, const double w0[2], const char *name
     CHECK(all.last.k > 3 && rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT &&
               rep.step == 4 && cut.rows == 4 && rep.t == cut.last.t && cut.last.t < 50.0 * s &&
               rep.stats.det > 0.0,
-          "%s: a budget of 3 steps stops before step %ld at t = %.3g with %d rows (the run needs "
-          "%ld)",
+          "%s: a budget of 3 steps stops before step %ld "
+          "at t = %.3g with %d rows (the run needs %ld)",
           name, rep.step, rep.t, cut.rows, all.last.k);
     cfg.max_steps = all.last.k;
     const int rc_enough = sus_run_tol(&cfg, w0, take, &cut, &rep);
@@ -346,15 +342,13 @@ static void estimate_vs_truth(const sus_model *m, const double w0[2], const char
     }
     if (counted == 0 && failed == 0) {
         printf("NOTE %s: the first step's true error is round-off (below %.2g) at every TOL 1e-6 "
-               "... 1e-12: "
-               "its estimate has no truncation to be compared with\n",
+               "... 1e-12: its estimate has no truncation to be compared with\n",
                name, floor);
         return;
     }
     CHECK(failed == 0 && lo >= 0.1 && hi <= 10.0,
-          "%s: the first step's estimate over its true local error in [%.3g, %.3g] (%d of TOL "
-          "1e-6, 1e-8, "
-          "1e-10, 1e-12 above round-off): within [0.1, 10]",
+          "%s: the first step's estimate over its true local error in [%.3g, %.3g] "
+          "(%d of TOL 1e-6, 1e-8, 1e-10, 1e-12 above round-off): within [0.1, 10]",
           name, lo, hi, counted);
 }
 

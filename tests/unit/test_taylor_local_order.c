@@ -57,15 +57,13 @@ static int local_order(const sus_model *m, const sus_exact *ex, const char *name
     const int mw = rc == 0 && ew2 >= floor_w, mR = rc == 0 && eR2 >= 1e-14;
     if (rc == 0 && !mw && !mR) {
         printf("NOTE %s: Taylor p = %d: local error below round-off (w %.2g, R %.2g at h = %.3g, "
-               "the longest "
-               "step within the limits): the order cannot be measured in double\n",
+               "the longest step within the limits): the order cannot be measured in double\n",
                name, p, ew1, eR1, h);
         return 0;
     }
     CHECK(rc == 0 && (!mw || sw >= p + 0.5) && (!mR || sR >= p + 0.5),
-          "%s: Taylor p = %d, one step h = %.3g (h k = %.3g), h/2: local error exponents w %.2f%s, "
-          "R %.2f%s "
-          "(>= p + 1/2)",
+          "%s: Taylor p = %d, one step h = %.3g (h k = %.3g), h/2: "
+          "local error exponents w %.2f%s, R %.2f%s (>= p + 1/2)",
           name, p, h, h * ex->k, sw, mw ? "" : NOT_COUNTED, sR, mR ? "" : NOT_COUNTED);
     return 1;
 }

@@ -363,9 +363,8 @@ static void cheap_test_tight(void)
         ok += in == SUS_STEPPER_OK && out == SUS_STEPPER_DIVERGED && d >= -1.1e-12 && d <= 1e-13;
     }
     CHECK(ok == BODIES_COUNT,
-          "b and w along A's top singular vector (rho = 1/(K |w|)), on %d of %d bodies: "
-          "radius against 1/(K |w|) %.3g (in [-1.1e-12, 1e-13]); 0.99 rho runs, (1 + 1e-9) rho is "
-          "refused",
+          "b and w along A's top singular vector (rho = 1/(K |w|)), on %d of %d bodies: radius "
+          "against 1/(K |w|) %.3g (in [-1.1e-12, 1e-13]); 0.99 rho runs, (1 + 1e-9) rho is refused",
           ok, BODIES_COUNT, worst);
 }
 
@@ -402,8 +401,7 @@ int main(void)
             const int ran = sweep(types[k], &m, starts[b], &worst);
             CHECK(ran > 0,
                   "%s, case %d: over steps 1e-3 ... 100 every step that runs (%d of %d) is within "
-                  "its "
-                  "proved bound (worst error / bound %.2g), the others exit DIVERGED",
+                  "its proved bound (worst error / bound %.2g), the others exit DIVERGED",
                   types[k]->name, b, ran, NGRID, worst);
         }
     }

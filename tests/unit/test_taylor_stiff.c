@@ -119,16 +119,16 @@ static void effort_ladder(void)
         body_ladder(&m, b.w0, &f, &s, &w, &ww);
         CHECK(f == 0 && s == 0 && w == 0 && ww <= 1.0,
               "%s: TOL 1e-2 ... 2^-52 to t = 50: %d runs over %ld steps; %d tighter TOL of the "
-              "same order "
-              "with fewer steps, %d with less work; |w(50) - w_exact| <= %.2g of 10 N TOL",
+              "same order with fewer steps, %d with less work; |w(50) - w_exact| <= %.2g of 10 N "
+              "TOL",
               b.name, f, BUDGET, s, w, ww);
         failed += f, more_steps += s, more_work += w;
         worst_w = fmax(worst_w, ww);
     }
     CHECK(failed == 0 && more_steps == 0 && more_work == 0 && worst_w <= 1.0,
-          "%d bodies (%d of them hard): a looser TOL never costs more steps at one order, nor more "
-          "work "
-          "((tries) (p+1)^2) across orders; every run within %ld steps and 10 N TOL of w_exact",
+          "%d bodies (%d of them hard): a looser TOL never costs more "
+          "steps at one order, nor more work ((tries) (p+1)^2) across "
+          "orders; every run within %ld steps and 10 N TOL of w_exact",
           NBODY, NHARD, BUDGET);
 }
 
@@ -141,9 +141,8 @@ static void issue_case(void)
         return;
     const run_result loose = run(&m, b.w0, 1e-6, 10.0), tight = run(&m, b.w0, 1e-15, 10.0);
     CHECK(loose.rc == SUS_RUN_OK && tight.rc == SUS_RUN_OK && loose.steps <= tight.steps,
-          "I_m = [1 1-1e-10; 1-1e-10 1], w0 = (0.4, 0.5), t = 10: TOL 1e-6 in %ld steps, 1e-15 in "
-          "%ld "
-          "(no more at the looser TOL)",
+          "I_m = [1 1-1e-10; 1-1e-10 1], w0 = (0.4, 0.5), t = 10: TOL "
+          "1e-6 in %ld steps, 1e-15 in %ld (no more at the looser TOL)",
           loose.steps, tight.steps);
 }
 
@@ -252,9 +251,8 @@ static void dense_after_settling(void)
         n++;
     }
     CHECK(worst <= 1.0 && settled == n,
-          "%d bodies, rows every 1 to t = 200 at TOL 1e-4 (%d runs settle): |R - R_ref| and |w - "
-          "w(t)| "
-          "within %.3g of 10 N TOL",
+          "%d bodies, rows every 1 to t = 200 at TOL 1e-4 (%d runs settle): "
+          "|R - R_ref| and |w - w(t)| within %.3g of 10 N TOL",
           n, settled, worst);
 }
 
