@@ -275,22 +275,48 @@ static void last_number(const char *id, double value)
     ledger_number(name, value);
 }
 
-static void remark_line(const qmodel *q, const sus_exact *ex, int p, const char *name,
-                        ledger_assert truth)
+/* What a sweep measures at one point w of the exact motion and one step eps. */
+typedef struct {
+    const qmodel *q;
+    const double (*Iinv)[3]; /* sec6 only */
+    int p;
+} sweep_ctx;
+typedef qreal (*sweep_fn)(const sweep_ctx *c, const qreal w[2], qreal eps);
+
+static qreal remark_at(const sweep_ctx *c, const qreal w[2], qreal eps)
 {
-    double eps[NJ], err[NJ];
+    return remark_error(c->q, c->p, w, eps);
+}
+
+static qreal sec6_at(const sweep_ctx *c, const qreal w[2], qreal eps)
+{
+    return sec6_dlambda(c->q, c->Iinv, c->p, w, eps);
+}
+
+/* err[j]: the largest of f over the exact motion's w at the times tk, at eps[j] = 2^{1-j}. */
+static void sweep(const sus_exact *ex, const double *tk, size_t ntk, sweep_fn f, const sweep_ctx *c,
+                  double eps[NJ], double err[NJ])
+{
     for (int j = 0; j < NJ; j++) {
         qreal e = 0;
         eps[j] = ldexp(1.0, 1 - j);
-        for (int t = 0; t < (int)(sizeof TK_REMARK / sizeof TK_REMARK[0]); t++) {
+        for (size_t t = 0; t < ntk; t++) {
             double wk[2];
-            sus_exact_omega(ex, TK_REMARK[t], wk);
+            sus_exact_omega(ex, tk[t], wk);
             const qreal w[2] = {wk[0], wk[1]};
-            const qreal r = remark_error(q, p, w, eps[j]);
+            const qreal r = f(c, w, eps[j]);
             e = r > e ? r : e;
         }
         err[j] = (double)e;
     }
+}
+
+static void remark_line(const qmodel *q, const sus_exact *ex, int p, const char *name,
+                        ledger_assert truth)
+{
+    double eps[NJ], err[NJ];
+    const sweep_ctx c = {q, NULL, p};
+    sweep(ex, TK_REMARK, sizeof TK_REMARK / sizeof TK_REMARK[0], remark_at, &c, eps, err);
     char id[64], quantity[640];
     snprintf(id, sizeof id, "remark55-formula-%s-quad", name);
     snprintf(
@@ -314,18 +340,8 @@ static void sec6_line(const qmodel *q, const sus_model *m, const sus_exact *ex, 
     double eps[NJ], err[NJ], Iinv[3][3];
     if (sus_mat3_inverse(m->I, Iinv) != 0)
         ledger_die("the inverse of the paper's inertia");
-    for (int j = 0; j < NJ; j++) {
-        qreal e = 0;
-        eps[j] = ldexp(1.0, 1 - j);
-        for (int t = 0; t < (int)(sizeof TK_SEC6 / sizeof TK_SEC6[0]); t++) {
-            double wk[2];
-            sus_exact_omega(ex, TK_SEC6[t], wk);
-            const qreal x0[2] = {wk[0], wk[1]};
-            const qreal r = sec6_dlambda(q, Iinv, p, x0, eps[j]);
-            e = r > e ? r : e;
-        }
-        err[j] = (double)e;
-    }
+    const sweep_ctx c = {q, Iinv, p};
+    sweep(ex, TK_SEC6, sizeof TK_SEC6 / sizeof TK_SEC6[0], sec6_at, &c, eps, err);
     char id[64], quantity[640];
     snprintf(id, sizeof id, "sec6-multiplier-order-%s-quad", name);
     snprintf(
