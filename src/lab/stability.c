@@ -17,11 +17,11 @@ const char *const SUS_LAB_STAB_NAMES[SUS_LAB_STAB_NCLASS] = {"good", "wrong limi
 static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps,
                          const double w[2], double x[2])
 {
-    double root[SUS_MAX_UNKNOWNS], reg;
+    double root[SUS_MAX_UNKNOWNS];
     sus_stepper_stats s;
     const sus_step_equation *eq = st->equation;
     const int rc =
-        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, &reg);
+        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL);
     if (rc == SUS_STEPPER_OK)
         eq->result(m, eps, w, root, x);
     return rc;
@@ -123,10 +123,9 @@ void sus_lab_stability_run(const sus_exact *ex, const sus_stepper_type *st, doub
 static int reaches(const sus_model *m, const sus_stepper_type *st, const double w[2], double e,
                    double *root)
 {
-    double reg;
     sus_stepper_stats s;
     const sus_step_equation *eq = st->equation;
-    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, &reg) ==
+    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, NULL) ==
            SUS_STEPPER_OK;
 }
 

@@ -243,6 +243,15 @@ static double regularity(sus_residual_fn G, int n, const sus_model *m, double ep
     return (n == 2 ? fabs(det) : pow(fabs(det), 2.0 / n)) / f2;
 }
 
+/* r at the root x for eps relative to r at eps = 0, at its root guess(0). */
+static double relative_regularity(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                                  double eps, const double w[2], const double *x)
+{
+    double x0[SUS_MAX_UNKNOWNS];
+    guess(m, 0.0, w, x0);
+    return regularity(G, n, m, eps, w, x) / regularity(G, n, m, 0.0, w, x0);
+}
+
 /* The scale of the unknowns (values of w or its increments) from w: the largest |x| on w's energy
  * ellipse, sqrt(2 E(w) / lambda_min(I_m)) (the steps keep E, or nearly), and at least |w|_inf. A
  * near-singular I_m stretches the ellipse by cond(I_m)^(1/2), and the roots with it. */
@@ -303,12 +312,17 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
     guess(m, 0.0, w, cur); /* the root at eps = 0 */
     for (int i = 0; i < n; i++)
         prev[i] = cur[i];
-    const double reg0 = regularity(G, n, m, 0.0, w, cur);
-    *reg_min = 1.0;
+    /* Without reg_min, r is wanted only where the stages stop short: there it is computed at the
+     * last accepted stage, from the same (e, cur) and the same root at 0, so the same bits. */
+    const double reg0 = reg_min ? regularity(G, n, m, 0.0, w, cur) : NAN;
+    if (reg_min)
+        *reg_min = 1.0;
     for (int stages = 0; e != eps; stages++) {
         if (stages == BRANCH_MAX_STAGES || !(fabs(de) >= BRANCH_MIN_STAGE * fabs(eps))) {
             st->iterations = its;
             st->continued = 1;
+            if (!reg_min && e != 0.0) /* e = 0: no stage accepted, r still 1 */
+                reg_last = relative_regularity(G, guess, n, m, e, w, cur);
             return reg_last <= BRANCH_FOLD ? SUS_STEPPER_SINGULAR : SUS_STEPPER_NO_CONVERGENCE;
         }
         const double en = fabs(eps - e) <= fabs(de) ? eps : e + de;
@@ -330,8 +344,10 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
             prev[i] = cur[i], cur[i] = xp[i];
         e_prev = e, e = en,
         de *= st->iterations <= BRANCH_EASY_ITS ? BRANCH_GROW_EASY : BRANCH_GROW;
-        reg_last = regularity(G, n, m, e, w, cur) / reg0;
-        *reg_min = fmin(*reg_min, reg_last);
+        if (reg_min) {
+            reg_last = regularity(G, n, m, e, w, cur) / reg0;
+            *reg_min = fmin(*reg_min, reg_last);
+        }
     }
     for (int i = 0; i < n; i++)
         x[i] = cur[i];
@@ -347,8 +363,7 @@ int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, c
     guess(m, eps, w, x);
     if (stage(G, n, m, eps, w, x, st, &its) == 0)
         return SUS_STEPPER_OK;
-    double reg;
-    const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, &reg);
+    const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, NULL);
     st->iterations += its;
     return rc;
 }
