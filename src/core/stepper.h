@@ -40,6 +40,9 @@ typedef struct {
     /* The last finite |G|_inf the solve reached (NAN if none): what a failure can name when the
      * final residual is not a finite number (the iteration overflowed). */
     double last_residual;
+    /* 1 when the step's root is (or its failure that of) the branch continued in eps from eps = 0,
+     * sus_step_newton_branch of its own equation (newton.h), not Newton from its prediction */
+    int continued;
 } sus_stepper_stats;
 
 /* How a method advances the attitude R_k. NONE: it steps w only and the driver reconstructs R

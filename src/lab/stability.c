@@ -17,14 +17,22 @@ const char *const SUS_LAB_STAB_NAMES[SUS_LAB_STAB_NCLASS] = {"good", "wrong limi
 static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps,
                          const double w[2], double x[2])
 {
-    double root[SUS_MAX_UNKNOWNS], reg;
+    double root[SUS_MAX_UNKNOWNS];
     sus_stepper_stats s;
     const sus_step_equation *eq = st->equation;
     const int rc =
-        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, &reg);
+        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL);
     if (rc == SUS_STEPPER_OK)
         eq->result(m, eps, w, root, x);
     return rc;
+}
+
+/* hypot(x) > limit, for finite x. The computed hypot is within an ulp of |x|_2 <= sqrt(2) |x|_inf,
+ * so below 2 |x|_inf: where 2 |x|_inf <= limit the answer is no without the call. */
+static int beyond(const double x[2], double limit)
+{
+    const double a = fabs(x[0]), b = fabs(x[1]);
+    return 2.0 * (a > b ? a : b) > limit && hypot(x[0], x[1]) > limit;
 }
 
 /* The class a step w -> x (status, stats s) ends the run with, or -1 when the run goes on. */
@@ -37,9 +45,12 @@ static int step_class(const sus_model *m, const sus_stepper_type *st, double eps
         return SUS_LAB_STAB_REGULARITY;
     if (status != SUS_STEPPER_OK)
         return SUS_LAB_STAB_SOLVER;
-    if (!isfinite(x[0]) || !isfinite(x[1]) || hypot(x[0], x[1]) > SUS_LAB_STAB_BLOWUP_FACTOR * r0)
+    if (!isfinite(x[0]) || !isfinite(x[1]) || beyond(x, SUS_LAB_STAB_BLOWUP_FACTOR * r0))
         return SUS_LAB_STAB_BLOWUP;
-    if (check_branch && st->equation) {
+    /* A step whose root is already the continued branch (s->continued: the step ran the very call
+     * continue_root makes, sus_step_newton_branch of its own equation with these m, eps, w, a
+     * function of them alone) would be compared with itself, bit for bit: nothing to check. */
+    if (check_branch && st->equation && !s->continued) {
         double xc[2];
         const int rc = continue_root(m, st, eps, w, xc);
         if (rc != SUS_STEPPER_OK)
@@ -112,10 +123,9 @@ void sus_lab_stability_run(const sus_exact *ex, const sus_stepper_type *st, doub
 static int reaches(const sus_model *m, const sus_stepper_type *st, const double w[2], double e,
                    double *root)
 {
-    double reg;
     sus_stepper_stats s;
     const sus_step_equation *eq = st->equation;
-    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, &reg) ==
+    return sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, e, w, root, &s, NULL) ==
            SUS_STEPPER_OK;
 }
 

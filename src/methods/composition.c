@@ -1,17 +1,19 @@
 #include "composition.h"
 #include "dsp.h"
+#include "implicit_step.h"
 
 #include "quaternion.h"
 
 #include <math.h>
 
-/* One substep of the base map: the midpoint DSP (Discretization) with step g eps; the stats add
- * up the Newton iterations and keep the worst residual. */
-static int substep(const sus_model *m, double h, const double w[3], double x[3], double *lambda,
+/* One substep of the base map: the midpoint DSP (Discretization) with step g eps, its step
+ * equation solved as the midpoint step solves it; the stats add up the Newton iterations and keep
+ * the worst residual. No lambda: (LagMult) is read at the substep that ends the step. */
+static int substep(const sus_model *m, double h, const double w[3], double x[3],
                    sus_stepper_stats *acc)
 {
     sus_stepper_stats st;
-    const int status = sus_step_midpoint->step->apply(m, h, w, x, lambda, &st);
+    const int status = sus_step_implicit_solve(sus_step_midpoint->equation, m, h, w, x, &st);
     acc->iterations += st.iterations;
     if (!(st.residual <= acc->residual)) { /* also takes a NaN residual */
         acc->residual = st.residual;
@@ -28,19 +30,27 @@ static int run_substeps(const sus_step_composition *c, const sus_model *m, doubl
                         sus_recon recon, double q[4], const double w[3], double w_next[3],
                         double *lambda_next, sus_stepper_stats *st)
 {
-    double u[3] = {w[0], w[1], w[2]};
+    /* Each substep writes its own buffer, the last one w_next, and the next reads it where it lies:
+     * no copy of a state just stored (a copy the compiler merges into one wide load of two narrow
+     * stores waits for them to retire, most of a substep's time at small steps). */
+    double buf[2][3];
+    const double *u = w;
     *st = (sus_stepper_stats){0};
     const int s = sus_step_composition_stages(c);
     for (int i = 0; i < s; i++) {
         const double h = sus_step_composition_weight(c, i) * eps;
-        const int status = substep(m, h, u, w_next, lambda_next, st);
+        double *out = i == s - 1 ? w_next : buf[i % 2];
+        const int status = substep(m, h, u, out, st);
+        if (status != SUS_STEPPER_OK || i == s - 1) {
+            for (int j = 0; out != w_next && j < 3; j++) /* w_next: the failed substep's, as ever */
+                w_next[j] = out[j];
+            *lambda_next = sus_lagmult(m, w_next); /* (LagMult) at the substep's end */
+        }
         if (status != SUS_STEPPER_OK)
             return status;
         if (q)
-            sus_reconstruct_quat(recon, h, q, u, w_next);
-        u[0] = w_next[0];
-        u[1] = w_next[1];
-        u[2] = w_next[2];
+            sus_reconstruct_quat(recon, h, q, u, out);
+        u = out;
     }
     return SUS_STEPPER_OK;
 }

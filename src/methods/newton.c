@@ -2,16 +2,28 @@
 
 #include <math.h>
 
-/* NaN when an entry is NaN (fmax would drop it and call an overflowed residual 0). */
+/* NaN when an entry is NaN (a max that drops NaN would call an overflowed residual 0). The max
+ * is a comparison, not fmax: no NaN reaches it, so it is fmax's value without fmax's call. */
 static double inf_norm(const double *v, int n)
 {
     double r = 0.0;
     for (int i = 0; i < n; i++) {
         if (isnan(v[i]))
             return NAN;
-        r = fmax(r, fabs(v[i]));
+        r = fabs(v[i]) > r ? fabs(v[i]) : r;
     }
     return r;
+}
+
+/* to[0 .. n-1] = from[0 .. n-1]; n = 2 (most equations) without a call to memcpy. */
+static void copy_n(double *to, const double *from, int n)
+{
+    if (n == 2) {
+        to[0] = from[0], to[1] = from[1];
+        return;
+    }
+    for (int i = 0; i < n; i++)
+        to[i] = from[i];
 }
 
 /* The product of the row 1-norms of J: an upper bound on the sum of |terms| of det J's Leibniz
@@ -100,16 +112,14 @@ typedef struct {
 
 static void keep(newton_point *p, const double *x, int n, double residual, double scale)
 {
-    for (int i = 0; i < n; i++)
-        p->x[i] = x[i];
+    copy_n(p->x, x, n);
     p->residual = residual;
     p->scale = scale;
 }
 
 static void restore(const newton_point *p, double *x, int n, sus_stepper_stats *st)
 {
-    for (int i = 0; i < n; i++)
-        x[i] = p->x[i];
+    copy_n(x, p->x, n);
     st->residual = p->residual;
 }
 
@@ -160,23 +170,38 @@ static int decide(newton_state *s, double *x, int n, sus_stepper_stats *st)
 
 /* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
  * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
-/* Newton as described in newton.h, at most maxit corrections. */
+/* Newton as described in newton.h from x0 (which may be x), the iterates in x, at most maxit
+ * corrections. */
 static int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-                        double *x, sus_stepper_stats *st, int maxit)
+                        const double *x0, double *x, sus_stepper_stats *st, int maxit)
 {
     double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS];
-    newton_state s = {
-        .prev = INFINITY, .best.residual = INFINITY, .ok.residual = INFINITY, .maxit = maxit};
-    keep(&s.best, x, n, INFINITY, 0.0);
+    /* Field by field, not an initializer that zeroes both points' SUS_MAX_UNKNOWNS entries on every
+     * solve. ok is read only after keep has filled it (polishing); best only by the stagnation
+     * test, which needs a finite residual, and decide keeps the first finite one (below infinity)
+     * before that test: its x is always filled before it is read. */
+    newton_state s;
+    s.prev = INFINITY, s.polishing = 0, s.maxit = maxit;
+    s.ok.residual = INFINITY, s.ok.scale = 0.0;
+    s.best.residual = INFINITY, s.best.scale = 0.0;
     st->iterations = 0;
     st->det = NAN;
     st->last_residual = NAN;
-    for (;;) {
-        G(m, eps, w, x, g, J, &st->scale);
+    st->continued = 0;
+    for (const double *at = x0;; at = x) {
+        G(m, eps, w, at, g, J, &st->scale);
+        /* x0 into x after G has read it: the start was just stored (a prediction), and a copy that
+         * the compiler makes one wide load would wait here for those stores */
+        if (at != x)
+            copy_n(x, x0, n);
         st->residual = inf_norm(g, n);
         if (isfinite(st->residual))
             st->last_residual = st->residual;
-        const int singular = sus_step_linear_solve(n, J, g, dx, &st->det) != 0;
+        int singular = 0;
+        if (s.polishing && n == 2) /* decide ends the solve: only det J is read, as solve has it */
+            st->det = J[0] * J[3] - J[1] * J[2];
+        else
+            singular = sus_step_linear_solve(n, J, g, dx, &st->det) != 0;
         const int status = decide(&s, x, n, st);
         if (status >= 0)
             return status;
@@ -199,7 +224,7 @@ static int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps
 int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,
                           const double w[2], double *x, sus_stepper_stats *st)
 {
-    return newton_solve(G, n, m, eps, w, x, st, SUS_STEP_NEWTON_MAXIT);
+    return newton_solve(G, n, m, eps, w, x, x, st, SUS_STEP_NEWTON_MAXIT);
 }
 
 /* ---- the branch: continuation in eps from the root at eps = 0 ---- */
@@ -214,7 +239,17 @@ static double regularity(sus_residual_fn G, int n, const sus_model *m, double ep
     for (int i = 0; i < n * n; i++)
         f2 += J[i] * J[i];
     sus_step_linear_solve(n, J, g, dx, &det);
-    return pow(fabs(det), 2.0 / n) / f2;
+    /* pow(|det|, 1) is |det| (a representable exact result): n = 2 skips the call */
+    return (n == 2 ? fabs(det) : pow(fabs(det), 2.0 / n)) / f2;
+}
+
+/* r at the root x for eps relative to r at eps = 0, at its root guess(0). */
+static double relative_regularity(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
+                                  double eps, const double w[2], const double *x)
+{
+    double x0[SUS_MAX_UNKNOWNS];
+    guess(m, 0.0, w, x0);
+    return regularity(G, n, m, eps, w, x) / regularity(G, n, m, 0.0, w, x0);
 }
 
 /* The scale of the unknowns (values of w or its increments) from w: the largest |x| on w's energy
@@ -229,12 +264,24 @@ static double unknowns_scale(const sus_model *m, const double w[2])
     return fmax(fmax(fabs(w[0]), fabs(w[1])), isfinite(reach) ? reach : 0.0);
 }
 
-/* |a - b|_inf over n entries. */
+/* Is moved <= BRANCH_JUMP * unknowns_scale(m, w)? unknowns_scale is at least the larger |w_i|
+ * (fmax of it and the reach), so a move within BRANCH_JUMP of that answers yes without the energy,
+ * the square root and the hypot; a NaN in w makes lo NaN or fmax's value, and the answer the full
+ * one. */
+static int within_jump(double moved, const sus_model *m, const double w[2])
+{
+    const double a = fabs(w[0]), b = fabs(w[1]), lo = a > b ? a : b;
+    return moved <= BRANCH_JUMP * lo || moved <= BRANCH_JUMP * unknowns_scale(m, w);
+}
+
+/* |a - b|_inf over n entries; a NaN difference is dropped, as fmax would drop it. */
 static double moved_by(const double *a, const double *b, int n)
 {
     double d = 0.0;
-    for (int i = 0; i < n; i++)
-        d = fmax(d, fabs(a[i] - b[i]));
+    for (int i = 0; i < n; i++) {
+        const double e = fabs(a[i] - b[i]);
+        d = e > d ? e : d;
+    }
     return d;
 }
 
@@ -247,16 +294,11 @@ static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const d
                  double *xp, sus_stepper_stats *st, int *its)
 {
     double x[SUS_MAX_UNKNOWNS];
-    const double size = unknowns_scale(m, w);
-    for (int i = 0; i < n; i++)
-        x[i] = xp[i];
-    const int rc = newton_solve(G, n, m, e, w, x, st, BRANCH_STAGE_ITS);
+    const int rc = newton_solve(G, n, m, e, w, xp, x, st, BRANCH_STAGE_ITS);
     *its += st->iterations;
-    const double moved = moved_by(x, xp, n);
-    if (rc != SUS_STEPPER_OK || !(st->det > 0.0) || !(moved <= BRANCH_JUMP * size))
+    if (rc != SUS_STEPPER_OK || !(st->det > 0.0) || !within_jump(moved_by(x, xp, n), m, w))
         return -1;
-    for (int i = 0; i < n; i++)
-        xp[i] = x[i];
+    copy_n(xp, x, n);
     return 0;
 }
 
@@ -270,17 +312,23 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
     guess(m, 0.0, w, cur); /* the root at eps = 0 */
     for (int i = 0; i < n; i++)
         prev[i] = cur[i];
-    const double reg0 = regularity(G, n, m, 0.0, w, cur);
-    *reg_min = 1.0;
+    /* Without reg_min, r is wanted only where the stages stop short: there it is computed at the
+     * last accepted stage, from the same (e, cur) and the same root at 0, so the same bits. */
+    const double reg0 = reg_min ? regularity(G, n, m, 0.0, w, cur) : NAN;
+    if (reg_min)
+        *reg_min = 1.0;
     for (int stages = 0; e != eps; stages++) {
         if (stages == BRANCH_MAX_STAGES || !(fabs(de) >= BRANCH_MIN_STAGE * fabs(eps))) {
             st->iterations = its;
+            st->continued = 1;
+            if (!reg_min && e != 0.0) /* e = 0: no stage accepted, r still 1 */
+                reg_last = relative_regularity(G, guess, n, m, e, w, cur);
             return reg_last <= BRANCH_FOLD ? SUS_STEPPER_SINGULAR : SUS_STEPPER_NO_CONVERGENCE;
         }
         const double en = fabs(eps - e) <= fabs(de) ? eps : e + de;
         if (e == 0.0) { /* the explicit prediction: accurate for a first stage short enough */
             guess(m, en, w, xp);
-            if (!(moved_by(xp, cur, n) <= BRANCH_JUMP * unknowns_scale(m, w))) {
+            if (!within_jump(moved_by(xp, cur, n), m, w)) {
                 de *= BRANCH_SHRINK; /* too long to predict: shorter, without a Newton solve */
                 continue;
             }
@@ -296,12 +344,15 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
             prev[i] = cur[i], cur[i] = xp[i];
         e_prev = e, e = en,
         de *= st->iterations <= BRANCH_EASY_ITS ? BRANCH_GROW_EASY : BRANCH_GROW;
-        reg_last = regularity(G, n, m, e, w, cur) / reg0;
-        *reg_min = fmin(*reg_min, reg_last);
+        if (reg_min) {
+            reg_last = regularity(G, n, m, e, w, cur) / reg0;
+            *reg_min = fmin(*reg_min, reg_last);
+        }
     }
     for (int i = 0; i < n; i++)
         x[i] = cur[i];
     st->iterations = its;
+    st->continued = 1;
     return SUS_STEPPER_OK;
 }
 
@@ -312,8 +363,7 @@ int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, c
     guess(m, eps, w, x);
     if (stage(G, n, m, eps, w, x, st, &its) == 0)
         return SUS_STEPPER_OK;
-    double reg;
-    const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, &reg);
+    const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, NULL);
     st->iterations += its;
     return rc;
 }

@@ -27,7 +27,8 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
  * 1/n), relative to its value at eps = 0. Returns SUS_STEPPER_OK with the root in x;
  * SUS_STEPPER_SINGULAR when the stages shrink to nothing where r had fallen to BRANCH_FOLD (a
  * fold: the branch turns back, and beyond it the step has no root on the branch);
- * SUS_STEPPER_NO_CONVERGENCE otherwise. *reg_min: the least r over the accepted stages. */
+ * SUS_STEPPER_NO_CONVERGENCE otherwise. *reg_min: the least r over the accepted stages (reg_min
+ * NULL: not wanted, and r is computed only where the stages stop short). */
 int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_model *m,
                            double eps, const double w[2], double *x, sus_stepper_stats *st,
                            double *reg_min);

@@ -15,7 +15,11 @@
  *     failure at step 1;
  *   - the stability map skips the rest of a run that has entered a cycle (stability.c): its final
  *     error equals that of the whole run, step by step, bit for bit (midpoint at h = 1000, a
- *     composition and the variational step at h = 100, six starts each). */
+ *     composition and the variational step at h = 100, six starts each);
+ *   - stats.continued: a step says when its root is the continuation's, and then that root is
+ *     sus_step_newton_branch's from the same w and eps, bit for bit (the map skips its branch check
+ *     on that identity); at h = 0.01 no step continues, at h = 1000 some do (the three implicit
+ *     methods, twelve starts each, first steps). */
 #include "check_body.h"
 #include "exact.h"
 #include "implicit_step.h"
@@ -24,6 +28,7 @@
 #include "stability.h"
 
 #include <math.h>
+#include <string.h>
 
 /* The independent continuation: 4000 equal stages from the root at eps = 0; 0 with the root in x,
  * -1 when a stage fails or det J <= 0 on the way. */
@@ -191,6 +196,41 @@ static void cycle_shortcut(const sus_exact *paper)
           n, differ);
 }
 
+/* Over the implicit methods and twelve starts on the ellipse: the steps that report a continued
+ * root and those that do not, at h = 0.01 and 1000, and how many continued roots differ from the
+ * continuation's own. */
+static void continued_flag(const sus_exact *paper)
+{
+    static const char *const NAMES[3] = {"midpoint", "variational", "gauss4"};
+    int cont[2] = {0, 0}, steps = 0, differ = 0;
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 2; i++)
+            for (int a = 0; a < 36; a += 3) {
+                const sus_stepper_type *st = sus_step_method_by_name(NAMES[k])->type;
+                const double eps = (i ? 1000.0 : 0.01) / paper->k;
+                double w[3], x[3], xc[3], lam, root[SUS_MAX_UNKNOWNS];
+                sus_stepper_stats s, sb;
+                map_state(paper, st, a, 36, 0.0, 0, w);
+                const int rc = st->step->apply(paper->model, eps, w, x, &lam, &s);
+                steps++;
+                if (rc != SUS_STEPPER_OK || !s.continued)
+                    continue;
+                cont[i]++;
+                const sus_step_equation *eq = st->equation;
+                differ +=
+                    sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, paper->model, eps,
+                                           w, root, &sb, NULL) != SUS_STEPPER_OK;
+                eq->result(paper->model, eps, w, root, xc);
+                differ += memcmp(xc, x, 2 * sizeof x[0]) != 0;
+            }
+    CHECK(
+        cont[0] == 0 && cont[1] > 0 && differ == 0,
+        "%d first steps (midpoint, variational, gauss4; h = 0.01 and 1000): %d at h = 0.01 and %d "
+        "at h = 1000 report a continued root (0 and some); %d of these differ from "
+        "sus_step_newton_branch's bit for bit",
+        steps, cont[0], cont[1], differ);
+}
+
 int main(void)
 {
     sus_model m;
@@ -215,5 +255,6 @@ int main(void)
     fold(&paper);
     unsolvable(&paper);
     cycle_shortcut(&paper);
+    continued_flag(&paper);
     return check_summary("test_newton_branch");
 }
