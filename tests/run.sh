@@ -233,20 +233,37 @@ start_next() {
 }
 # On an interrupt, the programs still running are ended whole (the process group of each), and
 # waited for until the last process of each is gone (a test script cleans up its scratch files on
-# TERM), for at most 5 s.
+# TERM), for at most 5 s. $! too: the trap may come between a start and its bookkeeping. A program
+# just started may not have its group yet (setsid has not run): its group is asked again until it
+# has one or is gone.
 stop_all() {
-    groups="" k=1
+    pids="" last=${!:-} k=1
     while [ $k -le $q_n ]; do
         eval "s=\$q_started_$k d=\$q_done_$k p=\${q_pid_$k:-}"
-        [ "$s" = 1 ] && [ "$d" = 0 ] && groups="$groups ${setsid:+-}$p"
+        [ "$s" = 1 ] && [ "$d" = 0 ] && pids="$pids $p"
+        [ "$d" = 1 ] && [ "$p" = "$last" ] && last="" # ended and waited for: the pid may be reused
         k=$((k + 1))
     done
-    [ -n "$groups" ] || return 0
-    kill -TERM $groups 2>/dev/null
+    pids="$pids $last"
+    for p in $pids; do
+        if [ -z "$setsid" ]; then kill -TERM "$p" 2>/dev/null; continue; fi
+        i=0
+        until kill -TERM "-$p" 2>/dev/null || ! kill -0 "$p" 2>/dev/null || [ $i -ge 100 ]; do
+            sleep 0.01; i=$((i + 1))
+        done
+    done
+    for p in $pids; do wait "$p" 2>/dev/null; done # the jobs' own shells, which TERM ends at once
     i=0
-    while [ $i -lt 100 ] && alive $groups; do sleep 0.05; i=$((i + 1)); done
+    while [ $i -lt 100 ] && alive $pids; do sleep 0.05; i=$((i + 1)); done
 }
-alive() { for g in "$@"; do kill -0 "$g" 2>/dev/null && return 0; done; return 1; }
+# alive PID...: one of these processes, or of their groups, is still there
+alive() {
+    for p in "$@"; do
+        kill -0 "$p" 2>/dev/null && return 0
+        [ -n "$setsid" ] && kill -0 "-$p" 2>/dev/null && return 0
+    done
+    return 1
+}
 # dash runs no EXIT trap when a signal ends it: end the programs, remove the stage's file, then die
 # of the same signal, so that make (or the terminal) sees the interrupt
 trap 'rm -f "$st_out"' EXIT

@@ -30,13 +30,14 @@ finish() {
     [ "$fail" = 0 ]
     exit
 }
-S=$(mktemp -d)
+S=""
 trap 'rm -rf "$S"' EXIT
 # dash runs no EXIT trap on a signal: remove the copy, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
     trap "trap - EXIT $sig; rm -rf \"\$S\"; kill -$sig \$\$" $sig
 done
+S=$(mktemp -d)
 
 # The guide's steps: step K's block into $S/steps/K (its first line, the block's info string
 # without the language, into $S/steps/K.how). A step with no block or two, or a block outside a
