@@ -213,7 +213,9 @@ DRAW_PROGS := $(BUILD)/animation $(BUILD)/bench $(FIG_BIN)
 $(DRAW_PROGS): $(BUILD)/%: $(BUILD)/obj/prog/%.o | $(LIBS_LINK)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $< $(LIBS_LINK) $(LIBS_DRAW) -o $@ -Wl,--trace,--trace >$@.trace
-	@objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
+	@$(LINK_D)
+# $@.link.d from the linker's trace $@.trace (which it removes)
+LINK_D = objs=$$(sed -n -e 's|^(.*libsus_\([a-z]*\)\.a)\(.*\.o\)$$|$(BUILD)/obj/\1/\2|p' \
 	    -e 's|^.*libsus_\([a-z]*\)\.a(\(.*\.o\))$$|$(BUILD)/obj/\1/\2|p' $@.trace | sort -u | tr '\n' ' '); \
 	    { echo "$@: $${objs:-$(LIBS_LINK)}"; for o in $$objs; do echo "$$o:"; done; } >$@.link.d; rm -f $@.trace
 
@@ -224,10 +226,17 @@ $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
 # The attitude-order test takes its expected orders from the ledger's table of the theory.
 $(BUILD)/test_attitude_order: $(BUILD)/tobj/ledger/expected_orders.o
 
+# The claims program is linked as a drawing program is: it depends on the archive members it links,
+# so that a change to one it does not (the version stamp's objects, at every commit) neither
+# relinks it nor runs the ledger again. Until its $@.link.d exists, on the whole archives.
 CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
-$(CLAIMS): $(CLAIMS_OBJ) $(LIBS_LINK)
+$(CLAIMS): $(CLAIMS_OBJ) | $(LIBS_LINK)
 	$(call say,LD,$@)
-	$(Q)$(CC) $(ALL_LDFLAGS) $^ $(LIBS_RUN) -o $@
+	$(Q)$(CC) $(ALL_LDFLAGS) $(CLAIMS_OBJ) $(LIBS_LINK) $(LIBS_RUN) -o $@ -Wl,--trace,--trace >$@.trace
+	@$(LINK_D)
+ifeq ($(wildcard $(CLAIMS).link.d),)
+$(CLAIMS): $(LIBS_LINK)
+endif
 
 # A figure program writes its figure (PDF, PNG, caption) and its data together; it runs again
 # only when the program (or anything it is linked from) changes. The figures' tools (ffmpeg) are

@@ -15,13 +15,14 @@ check() { # check DESCRIPTION COMMAND...
     d=$1; shift
     if "$@"; then pass=$((pass + 1)); else echo "FAIL doc_facts: $d"; fail=$((fail + 1)); fi
 }
-tmp=$(mktemp -d)
+tmp=""
 trap 'rm -rf "$tmp"' EXIT
 # dash runs no EXIT trap on a signal: remove the folder, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
     trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
 done
+tmp=$(mktemp -d)
 
 sh tools/readme_make.sh --print >"$tmp/want"
 sed -n '/^<!-- make targets -->$/,/^<!-- end make targets -->$/p' docs/reference/make-targets.md |

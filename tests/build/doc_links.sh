@@ -8,13 +8,14 @@
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 pass=0 fail=0
-tmp=$(mktemp)
+tmp=""
 trap 'rm -f "$tmp"' EXIT
 # dash runs no EXIT trap on a signal: remove the file, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
     trap "trap - EXIT $sig; rm -f \"\$tmp\"; kill -$sig \$\$" $sig
 done
+tmp=$(mktemp)
 # The anchors of a markdown file, one a line.
 anchors() {
     awk '/^```/ { code = !code; next } !code && /^#+ / { sub(/^#+ +/, ""); print }' "$1" |

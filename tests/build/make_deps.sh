@@ -26,8 +26,9 @@ would_draw() {
         sed -n "s#^.*$B/\(figure_[a-z0-9_]*\|animation\) \(figures\|data/\).*#\1#p" | sort -u | tr '\n' ' '
 }
 
-if [ -n "$(would_draw)" ]; then
-    echo "SKIP make_deps: figures in $B are not up to date ($(would_draw)); run make BUILD=$B figures first"
+stale=$(would_draw)
+if [ -n "$stale" ]; then
+    echo "SKIP make_deps: figures in $B are not up to date ($stale); run make BUILD=$B figures first"
 else
     # every program that draws: the figure programs and the animation
     all="$(ls src/prog/figure_*.c | sed 's#src/prog/\(.*\)\.c#\1#' | tr '\n' ' ')animation"
@@ -51,19 +52,22 @@ EOF
 fi
 
 # 2. SAN=1 with a command-line CFLAGS still compiles and links with the sanitizers.
-tmp=$(mktemp -d)
+tmp=""
 trap 'rm -rf "$tmp"' EXIT
 for sig in INT TERM HUP; do # dash runs no EXIT trap on a signal: clean up, then die of it
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
     trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
 done
+tmp=$(mktemp -d)
 line=$(make -n -B SAN=1 CFLAGS=-O1 BUILD="$tmp/san" "$tmp/san/obj/core/model.o" 2>/dev/null | grep -- '-c src/core/model.c')
 case $line in *-O1*-fsanitize=address,undefined*) ok ;; *) bad "SAN=1 CFLAGS=-O1 compiles model.c as: $line" ;; esac
 line=$(make -n -B SAN=1 LDFLAGS=-g BUILD="$tmp/san" "$tmp/san/figure_fig1" 2>/dev/null | grep -- '-o .*figure_fig1')
 case $line in *-fsanitize=address,undefined*) ok ;; *) bad "SAN=1 LDFLAGS=-g links figure_fig1 as: $line" ;; esac
 
-# 3. make check needs the check profile only; make paper asks for TeX.
-if make -n BUILD="$tmp/b" check 2>/dev/null | grep -q 'deps.sh \(figures\|paper\)'; then
+# 3. make check needs the check profile only; make paper asks for TeX. (What make check would do
+#    in a fresh build directory is read once, here and in 5.)
+make -n BUILD="$tmp/b" check >"$tmp/check.n" 2>/dev/null
+if grep -q 'deps.sh \(figures\|paper\)' "$tmp/check.n"; then
     bad "make check waits on a deps profile beyond 'check'"
 else ok; fi
 if make -n BUILD="$tmp/b" paper 2>/dev/null | grep -q 'deps.sh paper'; then ok; else bad "make paper does not ask for the paper profile"; fi
@@ -102,7 +106,7 @@ rm "$tmp/l/src/util/probe.c"
     bad "CFLAGS=-O1 does not recompile atomic_file.c"
 # the unit tests make check passes to the runner: exactly tests/unit/test_*.c
 want=$(ls tests/unit/test_*.c | sed 's#tests/unit/##; s#\.c$##' | sort | tr '\n' ' ')
-got=$(make -n BUILD="$tmp/b" check 2>/dev/null | sed -n 's#.*tests/run.sh [^ ]* check ##p' | tr ' ' '\n' |
+got=$(sed -n 's#.*tests/run.sh [^ ]* check ##p' "$tmp/check.n" | tr ' ' '\n' |
     sed 's#.*/##' | sed '/^$/d' | sort | tr '\n' ' ')
 [ "$got" = "$want" ] && ok || bad "make check runs '$got', expected '$want'"
 

@@ -4,18 +4,21 @@
 # N failed" (done NAME prints it and sets the status).
 B_GIVEN=${B:-build} # as given, for make: its stamps hold the paths BUILD spells
 B=$(cd "$B_GIVEN" 2>/dev/null && pwd -P || echo "$B_GIVEN")
-T=$(mktemp -d)
 # at_exit COMMAND: run COMMAND too when the script ends (normally or by a signal), before $T goes
 cleanup_extra=""
 at_exit() { cleanup_extra="$1; $cleanup_extra"; }
-cleanup() { eval "$cleanup_extra"; rm -rf "$T"; }
+cleanup() { eval "$cleanup_extra"; rm -rf "${T:-}"; }
 trap cleanup EXIT
 # dash runs no EXIT trap when a signal ends it: clean up, then die of the same signal, so that the
-# caller (make, run.sh, a terminal) sees the interrupt
+# caller (make, run.sh, a terminal) sees the interrupt. Set before $T is made, and $T named before
+# it is made, so that a signal at any moment (run.sh may end a script it has just started) leaves
+# nothing behind; mkdir refuses a name that exists (then mktemp picks one).
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
     trap "trap - EXIT $sig; cleanup; kill -$sig \$\$" $sig
 done
+T="${TMPDIR:-/tmp}/cli.$$"
+mkdir -m 700 "$T" 2>/dev/null || T=$(mktemp -d)
 pass=0 fail=0
 ok() { printf '%s\n' "PASS $*"; pass=$((pass + 1)); }
 ko() { printf '%s\n' "FAIL $*"; fail=$((fail + 1)); }
