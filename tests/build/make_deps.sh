@@ -27,6 +27,8 @@ would_draw() {
 }
 
 stale=$(would_draw)
+# the bench's two figures, redrawn from its recorded run (data/bench-recorded/) by build/bench
+make -n BUILD="$B" figures 2>/dev/null | grep -q -- "$B/bench --plot" && stale="${stale}bench --plot "
 if [ -n "$stale" ]; then
     echo "SKIP make_deps: figures in $B are not up to date ($stale); run make BUILD=$B figures first"
 else
