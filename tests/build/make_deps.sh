@@ -14,6 +14,15 @@
 set -u
 B=${1:-build}
 unset MAKEFLAGS MFLAGS MAKELEVEL  # called from make check: a fresh make, not a sub-make
+# Part 1 asks about the build in BUILD_DIR, so with the variables it was made with (make check's
+# command line: WERROR=1 in CI; the flags stamp holds them, and without them every figure would
+# look stale and the part be skipped); the other parts ask a fresh make.
+b_werror=${WERROR-} b_san=${SAN-} b_cflags=${CFLAGS-} b_ldflags=${LDFLAGS-}
+b_cflags_set=${CFLAGS+1} b_ldflags_set=${LDFLAGS+1}
+make_b() {
+    make BUILD="$B" ${b_werror:+"WERROR=$b_werror"} ${b_san:+"SAN=$b_san"} \
+        ${b_cflags_set:+"CFLAGS=$b_cflags"} ${b_ldflags_set:+"LDFLAGS=$b_ldflags"} "$@"
+}
 unset SAN BUILD CFLAGS LDFLAGS WERROR  # make exports its command-line variables to recipes
 pass=0 fail=0
 ok() { pass=$((pass + 1)); }
@@ -22,15 +31,16 @@ bad() { fail=$((fail + 1)); echo "FAIL make_deps: $*"; }
 # The programs `make figures` would run (the recipe may wrap them, e.g. in a timer), as a sorted
 # space-separated list.
 would_draw() {
-    make -n BUILD="$B" "$@" figures 2>/dev/null |
+    make_b -n "$@" figures 2>/dev/null |
         sed -n "s#^.*$B/\(figure_[a-z0-9_]*\|animation\) \(figures\|data/\).*#\1#p" | sort -u | tr '\n' ' '
 }
 
 stale=$(would_draw)
 # the bench's two figures, redrawn from its recorded run (data/bench-recorded/) by build/bench
-make -n BUILD="$B" figures 2>/dev/null | grep -q -- "$B/bench --plot" && stale="${stale}bench --plot "
+make_b -n figures 2>/dev/null | grep -q -- "$B/bench --plot" && stale="${stale}bench --plot "
 if [ -n "$stale" ]; then
-    echo "SKIP make_deps: figures in $B are not up to date ($stale); run make BUILD=$B figures first"
+    echo "SKIP make_deps: figures in $B are not up to date ($stale); run make BUILD=$B figures first" \
+        "(with the variables of this make check)"
 else
     # every program that draws: the figure programs and the animation
     all="$(ls src/prog/figure_*.c | sed 's#src/prog/\(.*\)\.c#\1#' | tr '\n' ' ')animation"
@@ -50,7 +60,7 @@ EOF
     # model.h: every program includes it. midpoint_sweeps: only the readings of Figure 2(d).
     # scene and the config: only the animation draws the body. The ledger: no figure.
     # and make -q says so (an always-run prerequisite, such as a phony deps target, made it 1)
-    make -q BUILD="$B" figures 2>/dev/null && ok || bad "make -q figures answers 1 with every figure up to date"
+    make_b -q figures 2>/dev/null && ok || bad "make -q figures answers 1 with every figure up to date"
 fi
 
 # 2. SAN=1 with a command-line CFLAGS still compiles and links with the sanitizers.
