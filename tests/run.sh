@@ -244,7 +244,7 @@ stop_all() {
         [ "$d" = 1 ] && [ "$p" = "$last" ] && last="" # ended and waited for: the pid may be reused
         k=$((k + 1))
     done
-    pids="$pids $last"
+    case " $pids " in *" $last "*) ;; *) pids="$pids $last" ;; esac # each group asked once
     for p in $pids; do
         if [ -z "$setsid" ]; then kill -TERM "$p" 2>/dev/null; continue; fi
         i=0
@@ -265,11 +265,12 @@ alive() {
     return 1
 }
 # dash runs no EXIT trap when a signal ends it: end the programs, remove the stage's file, then die
-# of the same signal, so that make (or the terminal) sees the interrupt
+# of the same signal, so that make (or the terminal) sees the interrupt; deaf to further signals
+# meanwhile, which would end the cleanup half done
 trap 'rm -f "$st_out"' EXIT
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; stop_all; rm -f \"\$st_out\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; stop_all; rm -f \"\$st_out\"; trap - $sig; kill -$sig \$\$" $sig
 done
 # the pool's pipe: open for reading and writing (so that neither end waits for the other), and
 # removed at once; the open descriptor is all the jobs need

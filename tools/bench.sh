@@ -16,7 +16,7 @@ mkdir "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
 done
 load() { cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 load0=$(load)

@@ -20,7 +20,7 @@ trap 'rm -rf "$tmp"' EXIT
 # dash runs no EXIT trap on a signal: remove the folder, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
 done
 tmp=$(mktemp -d)
 

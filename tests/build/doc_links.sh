@@ -13,7 +13,7 @@ trap 'rm -f "$tmp"' EXIT
 # dash runs no EXIT trap on a signal: remove the file, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; rm -f \"\$tmp\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; rm -f \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
 done
 tmp=$(mktemp)
 # The anchors of a markdown file, one a line.

@@ -68,7 +68,7 @@ tmp=""
 trap 'rm -rf "$tmp"' EXIT
 for sig in INT TERM HUP; do # dash runs no EXIT trap on a signal: clean up, then die of it
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; rm -rf \"\$tmp\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
 done
 tmp=$(mktemp -d)
 line=$(make -n -B SAN=1 CFLAGS=-O1 BUILD="$tmp/san" "$tmp/san/obj/core/model.o" 2>/dev/null | grep -- '-c src/core/model.c')

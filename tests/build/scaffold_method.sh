@@ -35,7 +35,7 @@ trap 'rm -rf "$S"' EXIT
 # dash runs no EXIT trap on a signal: remove the copy, then die of the same signal
 for sig in INT TERM HUP; do
     # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap - EXIT $sig; rm -rf \"\$S\"; kill -$sig \$\$" $sig
+    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$S\"; trap - $sig; kill -$sig \$\$" $sig
 done
 S=$(mktemp -d)
 

@@ -11,8 +11,8 @@ LIB="$PWD/tests/cli/cli_testlib.sh"
 # interrupted SIG DESCRIPTION READY COMMAND...: runs COMMAND with TMPDIR in a fresh directory, in
 # a process group of its own (so that, as from a terminal, the signal reaches the script and its
 # child at once), with SIG at its default action (a background job would ignore SIGINT); once the
-# file READY exists, signals the group. The script must die of SIG (128 + n) and leave TMPDIR
-# empty.
+# file READY exists and $after seconds more have passed (default 0), signals the group. The script
+# must die of SIG (128 + n) and leave TMPDIR empty.
 interrupted() {
     sig=$1 d=$2 ready=$3; shift 3
     X=$(mktemp -d "$T/tmp.XXXXXX")
@@ -21,6 +21,7 @@ interrupted() {
     pid=$!
     i=0
     while [ ! -e "$ready" ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
+    sleep "${after:-0}"
     kill -s "$sig" -- "-$pid"
     { wait "$pid"; } 2>/dev/null; rc=$?
     case $sig in HUP) want=129 ;; INT) want=130 ;; TERM) want=143 ;; esac
@@ -42,13 +43,15 @@ EOF
     for sig in INT TERM HUP; do
         interrupted $sig "a script using cli_testlib.sh" "$T/ready" sh "$T/victim.sh"
     done
-    # the runner itself, interrupted while it runs a (stand-in) unit test: one program at a time,
-    # so that the stand-in is what runs when the signal comes (with more, a CLI script may be at
-    # any point of its start, and what the interrupt finds is a matter of timing)
+    # the runner itself, interrupted while it runs a (stand-in) unit test beside the CLI scripts
+    # its pool has started (each at whatever point of its start the signal finds it)
     printf '#!/bin/sh\n: >"%s"\nexec sleep 30\n' "$T/ready" >"$T/sleeper"
     chmod +x "$T/sleeper"
     mkdir -p "$T/b"
-    interrupted INT "tests/run.sh" "$T/ready" env SUSLOV_JOBS=1 sh tests/run.sh "$T/b" test "$T/sleeper"
+    for after in 0 0.3 0.6; do # the pool's scripts caught at three points of their start
+        interrupted INT "tests/run.sh, $after s after its stand-in started" "$T/ready" \
+            sh tests/run.sh "$T/b" test "$T/sleeper"
+    done
 else
     skip "interrupts: needs setsid and env --default-signal"
 fi
