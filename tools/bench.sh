@@ -13,11 +13,8 @@ mkdir -p "$(dirname "$OUT")" "$FIG"
 tmp="$OUT.tmp.$$"
 rm -rf "$tmp"
 mkdir "$tmp"
-trap 'rm -rf "$tmp"' EXIT
-for sig in INT TERM HUP; do
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
-done
+. tools/on_exit.sh
+on_exit 'rm -rf "$tmp"'
 load() { cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 load0=$(load)
 start=$(date -u '+%Y-%m-%d %H:%M UTC')

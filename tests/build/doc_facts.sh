@@ -16,12 +16,8 @@ check() { # check DESCRIPTION COMMAND...
     if "$@"; then pass=$((pass + 1)); else echo "FAIL doc_facts: $d"; fail=$((fail + 1)); fi
 }
 tmp=""
-trap 'rm -rf "$tmp"' EXIT
-# dash runs no EXIT trap on a signal: remove the folder, then die of the same signal
-for sig in INT TERM HUP; do
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
-done
+. tools/on_exit.sh
+on_exit 'rm -rf "$tmp"'
 tmp=$(mktemp -d)
 
 sh tools/readme_make.sh --print >"$tmp/want"

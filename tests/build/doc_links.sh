@@ -9,12 +9,8 @@ set -u
 cd "$(dirname "$0")/../.." || exit 2
 pass=0 fail=0
 tmp=""
-trap 'rm -f "$tmp"' EXIT
-# dash runs no EXIT trap on a signal: remove the file, then die of the same signal
-for sig in INT TERM HUP; do
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; rm -f \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
-done
+. tools/on_exit.sh
+on_exit 'rm -f "$tmp"'
 tmp=$(mktemp)
 # The anchors of a markdown file, one a line.
 anchors() {

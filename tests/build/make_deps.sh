@@ -65,11 +65,8 @@ fi
 
 # 2. SAN=1 with a command-line CFLAGS still compiles and links with the sanitizers.
 tmp=""
-trap 'rm -rf "$tmp"' EXIT
-for sig in INT TERM HUP; do # dash runs no EXIT trap on a signal: clean up, then die of it
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$tmp\"; trap - $sig; kill -$sig \$\$" $sig
-done
+. tools/on_exit.sh
+on_exit 'rm -rf "$tmp"'
 tmp=$(mktemp -d)
 line=$(make -n -B SAN=1 CFLAGS=-O1 BUILD="$tmp/san" "$tmp/san/obj/core/model.o" 2>/dev/null | grep -- '-c src/core/model.c')
 case $line in *-O1*-fsanitize=address,undefined*) ok ;; *) bad "SAN=1 CFLAGS=-O1 compiles model.c as: $line" ;; esac

@@ -31,12 +31,8 @@ finish() {
     exit
 }
 S=""
-trap 'rm -rf "$S"' EXIT
-# dash runs no EXIT trap on a signal: remove the copy, then die of the same signal
-for sig in INT TERM HUP; do
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; rm -rf \"\$S\"; trap - $sig; kill -$sig \$\$" $sig
-done
+. tools/on_exit.sh
+on_exit 'rm -rf "$S"'
 S=$(mktemp -d)
 
 # The guide's steps: step K's block into $S/steps/K (its first line, the block's info string

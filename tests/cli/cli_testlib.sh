@@ -8,17 +8,11 @@ B=$(cd "$B_GIVEN" 2>/dev/null && pwd -P || echo "$B_GIVEN")
 cleanup_extra=""
 at_exit() { cleanup_extra="$1; $cleanup_extra"; }
 cleanup() { eval "$cleanup_extra"; rm -rf "${T:-}"; }
-trap cleanup EXIT
-# dash runs no EXIT trap when a signal ends it: clean up, deaf to further signals (a second one,
-# which run.sh or a terminal may send, would end the cleanup half done, and the rm it runs), then
-# die of the same signal, so that the caller (make, run.sh, a terminal) sees the interrupt. Set
-# before $T is made, and $T named before it is made, so that a signal at any moment (run.sh may
-# end a script it has just started) leaves nothing behind; mkdir refuses a name that exists (then
-# mktemp picks one).
-for sig in INT TERM HUP; do
-    # shellcheck disable=SC2064 # $sig now, the rest at the signal
-    trap "trap '' INT TERM HUP; trap - EXIT; cleanup; trap - $sig; kill -$sig \$\$" $sig
-done
+# Set before $T is made, and $T named before it is made, so that a signal at any moment (run.sh
+# may end a script it has just started) leaves nothing behind; mkdir refuses a name that exists
+# (then mktemp picks one).
+. tools/on_exit.sh
+on_exit cleanup
 T="${TMPDIR:-/tmp}/cli.$$"
 mkdir -m 700 "$T" 2>/dev/null || T=$(mktemp -d)
 pass=0 fail=0

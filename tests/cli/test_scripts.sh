@@ -56,12 +56,13 @@ else
     skip "interrupts: needs setsid and env --default-signal"
 fi
 
-# Every test script that makes a scratch file cleans it up on a signal: through cli_testlib.sh, or
-# with its own INT TERM HUP trap.
+# Every test script that makes a scratch file cleans it up on a signal: through cli_testlib.sh,
+# through tools/on_exit.sh, or with its own INT TERM HUP trap.
 missing=""
 for f in tests/run.sh tests/cli/test_*.sh tests/build/*.sh; do
     grep -q 'mktemp' "$f" || continue
-    grep -q '^\. .*cli_testlib\.sh"$' "$f" || grep -q 'for sig in INT TERM HUP' "$f" || missing="$missing $f"
+    grep -q '^\. .*cli_testlib\.sh"$' "$f" || grep -q "^on_exit '" "$f" ||
+        grep -q 'for sig in INT TERM HUP' "$f" || missing="$missing $f"
 done
 check "every test script with a scratch file cleans it up on INT, TERM and HUP${missing:+ (not:$missing)}" \
     test -z "$missing"
