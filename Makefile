@@ -179,15 +179,15 @@ endef
 $(foreach l,$(LIB_LAYERS),$(eval $(call ARCHIVE_RULE,$(l))))
 
 # --version names the commit built from (git describe; "unknown" outside git, e.g. a tarball),
-# through a stamp that changes only when the commit does, so only the two objects that print it
-# (--version and --man: suslov_cli.o; the output's header: suslov_cli_header.o) are rebuilt then.
+# through a stamp that changes only when the commit does, so only the object that holds it
+# (suslov_version.o, which --version, --man and the output's header read) is rebuilt then.
 # Only when this directory is the top of its own work tree: a source export unpacked inside
 # another repository's work tree must not carry that repository's commit.
 SUSLOV_VERSION := $(shell top=$$(git -C "$(CURDIR)" rev-parse --show-toplevel 2>/dev/null) && \
     [ "$$top" = "$$(cd "$(CURDIR)" && pwd -P)" ] && git -C "$(CURDIR)" describe --always --dirty 2>/dev/null \
     || echo unknown)
 $(eval $(call STAMP_RULE,$(BUILD)/version.stamp,$(SUSLOV_VERSION)))
-VERSION_OBJ := $(BUILD)/obj/prog/suslov_cli.o $(BUILD)/obj/prog/suslov_cli_header.o
+VERSION_OBJ := $(BUILD)/obj/prog/suslov_version.o
 $(VERSION_OBJ): $(BUILD)/version.stamp
 $(VERSION_OBJ): VERSION_DEF = -DSUSLOV_VERSION='"$(SUSLOV_VERSION)"'
 
@@ -227,7 +227,7 @@ $(TESTS): $(BUILD)/test_%: $(BUILD)/tobj/unit/test_%.o $(LIBS_LINK)
 $(BUILD)/test_attitude_order: $(BUILD)/tobj/ledger/expected_orders.o
 
 # The claims program is linked as a drawing program is: it depends on the archive members it links,
-# so that a change to one it does not (the version stamp's objects, at every commit) neither
+# so that a change to one it does not (the version stamp's object, at every commit) neither
 # relinks it nor runs the ledger again. Until its $@.link.d exists, on the whole archives.
 CLAIMS_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/ledger/*.c))
 $(CLAIMS): $(CLAIMS_OBJ) | $(LIBS_LINK)

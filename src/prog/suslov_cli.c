@@ -15,10 +15,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#ifndef SUSLOV_VERSION
-#define SUSLOV_VERSION "unknown" /* the Makefile passes the git commit; a tarball has none */
-#endif
-
 static const suslov_cli_spec SPEC;
 
 /* ---- handlers: one per option ---- */
@@ -98,14 +94,14 @@ static void show_help(void *g, const suslov_cli_option *o, const char *v)
 static void show_man(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)g, (void)o, (void)v;
-    suslov_cli_man(&SPEC, SUSLOV_VERSION, stdout);
+    suslov_cli_man(&SPEC, suslov_version(), stdout);
     suslov_cli_exit_stdout();
 }
 
 static void show_version(void *g, const suslov_cli_option *o, const char *v)
 {
     (void)g, (void)o, (void)v;
-    printf("suslov %s\n", SUSLOV_VERSION);
+    printf("suslov %s\n", suslov_version());
     suslov_cli_exit_stdout();
 }
 

@@ -33,5 +33,7 @@ void suslov_args_parse(suslov_args *a, int argc, char **argv);
 /* The #-comment lines before the CSV header: version, command line, method, eps, body, w0,
  * units. */
 void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp);
+/* The commit built from (git describe), or "unknown". */
+const char *suslov_version(void);
 
 #endif

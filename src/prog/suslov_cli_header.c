@@ -8,10 +8,6 @@
 
 #include <string.h>
 
-#ifndef SUSLOV_VERSION
-#define SUSLOV_VERSION "unknown" /* the Makefile passes the git commit; a tarball has none */
-#endif
-
 /* 1 when s can stand raw inside single quotes on a line of UTF-8: no control character and no
  * byte that is not part of a well-formed UTF-8 character. */
 static int quotable(const char *s, size_t n)
@@ -58,7 +54,7 @@ static void put_arg(FILE *fp, const char *s)
 
 void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp)
 {
-    fprintf(fp, "# suslov %s\n# command:", SUSLOV_VERSION);
+    fprintf(fp, "# suslov %s\n# command:", suslov_version());
     for (int i = 0; i < argc; i++) {
         fputc(' ', fp);
         put_arg(fp, i ? argv[i] : "suslov");
