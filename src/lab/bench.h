@@ -38,6 +38,7 @@ extern const double SUS_LAB_BENCH_LEVEL_TARGET[SUS_LAB_BENCH_NLEVELS];
 #define SUS_LAB_BENCH_LONG_LEVEL 1e-9 /* the attitude error both sides reach at T_LONG */
 #define SUS_LAB_BENCH_LONG_TARGET 20.0
 #define SUS_LAB_BENCH_GROWTH_TARGET 1.5
+#define SUS_LAB_BENCH_IMPLICIT_TARGET 3.0 /* an implicit step over our rk4 step, at most */
 /* The peers' tolerances: four a decade, 10^(-3 - j/4), down to 1e-15. */
 #define SUS_LAB_BENCH_TOLS_PER_DECADE 4
 #define SUS_LAB_BENCH_PEER_TOL(j) pow(10.0, -3.0 - (double)(j) / SUS_LAB_BENCH_TOLS_PER_DECADE)

@@ -147,11 +147,16 @@ int sus_lab_bench_implicit_target(const sus_step_method *me)
     return me->type->desc.implicit && !sus_lab_bench_composed(me);
 }
 
+int sus_lab_bench_implicit_step_pass(const sus_lab_bench *b, int m)
+{
+    return sus_lab_bench_implicit_ratio(b, m) <= SUS_LAB_BENCH_IMPLICIT_TARGET;
+}
+
 int sus_lab_bench_implicit_pass(const sus_lab_bench *b)
 {
     int pass = 1;
     for (int m = 0; m < b->cost.n; m++)
         if (sus_lab_bench_implicit_target(sus_step_method_get(m)))
-            pass &= sus_lab_bench_implicit_ratio(b, m) <= 3;
+            pass &= sus_lab_bench_implicit_step_pass(b, m);
     return pass;
 }

@@ -62,7 +62,9 @@ double sus_lab_bench_rk4_speedup(const sus_lab_bench *b);
 double sus_lab_bench_implicit_ratio(const sus_lab_bench *b, int m);
 /* Whether the implicit step is held to its target (a composition's is not: many substeps). */
 int sus_lab_bench_implicit_target(const sus_step_method *me);
-/* 1 when every implicit step held to its target costs <= 3x our rk4 step. */
+/* 1 when the implicit step m costs at most SUS_LAB_BENCH_IMPLICIT_TARGET rk4 steps. */
+int sus_lab_bench_implicit_step_pass(const sus_lab_bench *b, int m);
+/* 1 when every implicit step held to its target passes it. */
 int sus_lab_bench_implicit_pass(const sus_lab_bench *b);
 
 #ifdef __cplusplus
