@@ -28,16 +28,17 @@ pass=0 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL make_deps: $*"; }
 
-# The programs `make figures` would run (the recipe may wrap them, e.g. in a timer), as a sorted
-# space-separated list.
-would_draw() {
-    make_b -n "$@" figures 2>/dev/null |
-        sed -n "s#^.*$B/\(figure_[a-z0-9_]*\|animation\) \(figures\|data/\).*#\1#p" | sort -u | tr '\n' ' '
+# The programs a plan of make (its -n output, on stdin) runs to draw (the recipe may wrap them,
+# e.g. in a timer), as a sorted space-separated list; would_draw: those of `make figures`.
+drawn() {
+    sed -n "s#^.*$B/\(figure_[a-z0-9_]*\|animation\) \(figures\|data/\).*#\1#p" | sort -u | tr '\n' ' '
 }
+would_draw() { make_b -n "$@" figures 2>/dev/null | drawn; }
 
-stale=$(would_draw)
+plan=$(make_b -n figures 2>/dev/null)
+stale=$(printf '%s\n' "$plan" | drawn)
 # the bench's two figures, redrawn from its recorded run (data/bench-recorded/) by build/bench
-make_b -n figures 2>/dev/null | grep -q -- "$B/bench --plot" && stale="${stale}bench --plot "
+printf '%s\n' "$plan" | grep -q -- "$B/bench --plot" && stale="${stale}bench --plot "
 if [ -n "$stale" ]; then
     echo "SKIP make_deps: figures in $B are not up to date ($stale); run make BUILD=$B figures first" \
         "(with the variables of this make check)"
