@@ -430,7 +430,8 @@ web: $(WEB)/index.html
 WASM      := $(BUILD)/wasm/suslov.wasm
 WASM_CC   ?= clang
 WASM_AR   ?= llvm-ar
-WASM_SRC  := $(shell sh tools/web/wasm_sources.sh)
+# (a tree without tools/web, as the build checks' scratch trees, has no browser part to build)
+WASM_SRC  := $(if $(wildcard tools/web/wasm_sources.sh),$(shell sh tools/web/wasm_sources.sh))
 WASM_OBJ  := $(WASM_SRC:src/%.c=$(BUILD)/wasm/%.o)
 WASM_EXPORTS := input inertia_column rows nrows message limit method_count method_name method_about \
                 method_recon recon_count recon_name run sweeps exact_omega fit_input fit
