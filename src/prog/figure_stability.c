@@ -256,6 +256,10 @@ int main(int argc, char **argv)
     int jobs;
     if (jobs_option(&argc, argv, &jobs) != 0)
         return 2;
+    if (argc != 3) { /* the setup's usage line would leave out the options */
+        fprintf(stderr, "usage: figure_stability [--quiet] [--jobs N] FIGDIR DATADIR\n");
+        return 2;
+    }
     sus_model model;
     sus_exact paper;
     const int setup = sus_plot_fig_setup_paper(argc, "stability", &model, &paper);

@@ -1,6 +1,7 @@
 #!/bin/sh
 # figure_stability's number of processes (--jobs N, SUSLOV_JOBS): a value that is not a whole
-# number from 1 to 256 is refused before any run, with one line and exit 2, and nothing written.
+# number from 1 to 256 is refused before any run, with one line and exit 2, and nothing written;
+# its usage line names both options.
 # (That the map is the same bytes for any number of processes is test_workpool's.)
 # Usage: test_figure_stability.sh BUILD_DIR
 set -u
@@ -23,6 +24,9 @@ if [ -x "$P" ]; then
     refused "--jobs 2x" "$P" --quiet --jobs 2x
     refused "SUSLOV_JOBS=0" SUSLOV_JOBS=0 "$P" --quiet
     refused "SUSLOV_JOBS= (empty)" SUSLOV_JOBS= "$P" --quiet
+    "$P" --quiet >/dev/null 2>"$T/err"; rc=$?
+    check "a missing directory: exit $rc (2), a usage line that names both options ($(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q -- '--quiet.*--jobs N' '$T/err'"
 else
     skip "figure_stability is not built"
 fi
