@@ -1,15 +1,19 @@
 /* The bench's bookkeeping, on a bench filled by hand (no timing): which peer each comparison
  * takes (src/lab/bench_floor.c: the full problem's peers for the attitude target, the reduced
  * problem's for the other, never a peer given w(t) for the w race, never a w-only one for the
- * attitude), and the data file the figures are drawn from (src/render/bench_tables.c writes
- * bench.csv, src/lab/bench_load.c reads it back: the same series, points and step costs). */
+ * attitude), the implicit steps' cost verdicts, and the data file the figures are drawn from
+ * (src/render/bench_tables.c writes bench.csv, src/lab/bench_load.c reads it back: the same
+ * series, points and step costs). */
 #define _POSIX_C_SOURCE 200809L
 #include "bench.h"
 #include "bench_floor.h"
 #include "bench_load.h"
 #include "bench_tables.h"
 #include "check.h"
+#include "composition.h"
+#include "dsp.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,6 +97,33 @@ static void check_verdicts(const sus_lab_bench *b)
           "the attitude envelopes: the full problem's peers, and apart the reduced one's");
 }
 
+/* The implicit-step target: at most SUS_LAB_BENCH_IMPLICIT_TARGET rk4 steps, each step its own
+ * verdict, the joint one all of them; the compositions (many substeps a step) are not held to it. */
+static void check_implicit(sus_lab_bench *b)
+{
+    double *ns = b->cost.ns_raw;
+    const double rk4 = ns[sus_step_method_index_of(sus_step_rk4)];
+    const int mid = sus_step_method_index_of(sus_step_midpoint),
+              var = sus_step_method_index_of(sus_step_variational),
+              comp = sus_step_method_index_of(&sus_step_comp10_ss_type);
+    for (int m = 0; m < b->cost.n; m++)
+        if (sus_lab_bench_implicit_target(sus_step_method_get(m)))
+            ns[m] = SUS_LAB_BENCH_IMPLICIT_TARGET * rk4;
+    ns[comp] = 100.0 * rk4;
+    CHECK(sus_lab_bench_implicit_step_pass(b, mid) && sus_lab_bench_implicit_pass(b) &&
+              !sus_lab_bench_implicit_target(sus_step_method_get(comp)),
+          "implicit steps at exactly the target pass (at most), a composition is not held to it");
+    ns[mid] = nextafter(SUS_LAB_BENCH_IMPLICIT_TARGET * rk4, INFINITY);
+    CHECK(!sus_lab_bench_implicit_step_pass(b, mid) && sus_lab_bench_implicit_step_pass(b, var) &&
+              !sus_lab_bench_implicit_pass(b),
+          "the midpoint a rounding above the target: its verdict and the joint one MISS, the "
+          "variational step's still PASS");
+    ns[mid] = SUS_LAB_BENCH_IMPLICIT_TARGET * rk4;
+    ns[var] = NAN;
+    CHECK(!sus_lab_bench_implicit_step_pass(b, var) && !sus_lab_bench_implicit_pass(b),
+          "a step with no measured cost (NaN) is a MISS, not a PASS");
+}
+
 static int same_series(const sus_lab_bench_series *a, const sus_lab_bench_series *b)
 {
     const double rel = 1e-5; /* bench.csv prints errors and seconds to 6 digits */
@@ -151,6 +182,7 @@ int main(void)
     fill(&b);
     check_verdicts(&b);
     check_round_trip(&b);
+    check_implicit(&b);
     sus_lab_bench_free(&b);
     return check_summary("test_bench");
 }
