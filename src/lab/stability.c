@@ -73,8 +73,11 @@ static int step_class(const sus_model *m, const sus_stepper_type *st, double eps
  *     already stepped with class -1 (no failure can come), and w_N = w_{k-p+(N-k) mod p}.
  * Nothing earlier: GOOD and WRONG_LIMIT are read from w_N, and the map records |w_N - w_inf| to
  * six digits; a run that still moves can change them, so a bound that decides the class alone
- * (a contraction towards a limit, an energy that has left the ellipse) is no licence to stop. */
-#define SUS_LAB_STAB_CYCLE 8
+ * (a contraction towards a limit, an energy that has left the ellipse) is no licence to stop.
+ * The ring holds 16 states: the check costs up to 16 comparisons a step, little beside any step
+ * that runs long, and large steps fall into round-off cycles longer than 8 (each skipped saves
+ * thousands of costly steps; tests/unit/test_newton_branch.c checks periods to 16 and past). */
+#define SUS_LAB_STAB_CYCLE 16
 
 /* The period p <= SUS_LAB_STAB_CYCLE with w = ring[(k - p) % CYCLE], or 0. */
 static int period(const double ring[][2], long k, const double w[2])

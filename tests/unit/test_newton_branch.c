@@ -15,7 +15,9 @@
  *     failure at step 1;
  *   - the stability map skips the rest of a run that has entered a cycle (stability.c): its final
  *     error equals that of the whole run, step by step, bit for bit (midpoint at h = 1000, a
- *     composition and the variational step at h = 100, six starts each);
+ *     composition and the variational step at h = 100, six starts each); on a made-up step that
+ *     walks a cycle of P states, a cycle of up to 16 states is skipped once it has come round
+ *     (P steps taken) and a longer one is stepped through, and w_N is the same either way;
  *   - stats.continued: a step says when its root is the continuation's, and then that root is
  *     sus_step_newton_branch's from the same w and eps, bit for bit (the map skips its branch check
  *     on that identity); at h = 0.01 no step continues, at h = 1000 some do (the three implicit
@@ -196,6 +198,60 @@ static void cycle_shortcut(const sus_exact *paper)
           n, differ);
 }
 
+/* A made-up step that walks P states round a circle about the paper's w0: w = state i goes to
+ * state i + 1 mod P (a state it does not know goes to NaN, which the map calls a blow-up). */
+enum { WALK_MAX = 32 };
+static double walk[WALK_MAX][2];
+static int walk_n;
+static long walk_calls;
+
+static int walk_apply(const sus_model *m, double eps, const double w[3], double x[3],
+                      double *lambda, sus_stepper_stats *st)
+{
+    (void)m, (void)eps;
+    *st = (sus_stepper_stats){0};
+    *lambda = 0.0;
+    walk_calls++;
+    x[0] = x[1] = NAN, x[2] = 0.0;
+    for (int i = 0; i < walk_n; i++)
+        if (w[0] == walk[i][0] && w[1] == walk[i][1]) {
+            x[0] = walk[(i + 1) % walk_n][0], x[1] = walk[(i + 1) % walk_n][1];
+            break;
+        }
+    return SUS_STEPPER_OK;
+}
+
+/* The map's cycle skip against the cycle's known period: calls and w_N. */
+static void cycle_lengths(const sus_exact *paper)
+{
+    static const sus_step_ops ops = {.apply = walk_apply};
+    const sus_stepper_type walker = {.name = "walk", .step = &ops, .desc = {.substeps = 1}};
+    const long N = 1000;
+    static const int periods[] = {1, 9, 16, 17};
+    for (int k = 0; k < 4; k++) {
+        const int P = periods[k];
+        walk_n = P;
+        for (int i = 0; i < P; i++) {
+            const double a = 2.0 * 3.14159265358979323846 * i / P;
+            walk[i][0] = paper->w0[0] + 0.01 * cos(a), walk[i][1] = paper->w0[1] + 0.01 * sin(a);
+        }
+        sus_exact ex;
+        sus_lab_stab_result r;
+        double winf[2];
+        sus_exact_init(&ex, paper->model, walk[0]);
+        sus_exact_limit(&ex, winf);
+        walk_calls = 0;
+        sus_lab_stability_run(&ex, &walker, 1.0, N, 0, &r);
+        const double *wN = walk[N % P]; /* w_N of the whole run */
+        const int same = r.final_err == hypot(wN[0] - winf[0], wN[1] - winf[1]) /
+                                             hypot(winf[0], winf[1]);
+        const long want = P <= 16 ? P : N; /* w_P = w_0 is seen at step P */
+        CHECK(same && walk_calls == want,
+              "a cycle of period %d: %ld steps taken (%ld), w_N that of the whole run (%s)", P,
+              walk_calls, want, same ? "yes" : "no");
+    }
+}
+
 /* Over the implicit methods and twelve starts on the ellipse: the steps that report a continued
  * root and those that do not, at h = 0.01 and 1000, and how many continued roots differ from the
  * continuation's own. */
@@ -255,6 +311,7 @@ int main(void)
     fold(&paper);
     unsolvable(&paper);
     cycle_shortcut(&paper);
+    cycle_lengths(&paper);
     continued_flag(&paper);
     return check_summary("test_newton_branch");
 }
