@@ -286,15 +286,16 @@ static double moved_by(const double *a, const double *b, int n)
 }
 
 /* One stage of the continuation: Newton at e from the prediction xp; the stage holds when Newton
- * converges within BRANCH_STAGE_ITS iterations to a root with det J > 0 (the sign at e = 0, where J
+ * converges within maxit iterations (BRANCH_STAGE_ITS; FAST_ITS from the explicit prediction) to a
+ * root with det J > 0 (the sign at e = 0, where J
  * is I_m or blocks of it) no farther than BRANCH_JUMP times the unknowns' scale from xp: a root
  * reached that way is the one the prediction follows, not one of the others (they lie that far
  * away). */
 static int stage(sus_residual_fn G, int n, const sus_model *m, double e, const double w[2],
-                 double *xp, sus_stepper_stats *st, int *its)
+                 double *xp, sus_stepper_stats *st, int *its, int maxit)
 {
     double x[SUS_MAX_UNKNOWNS];
-    const int rc = newton_solve(G, n, m, e, w, xp, x, st, BRANCH_STAGE_ITS);
+    const int rc = newton_solve(G, n, m, e, w, xp, x, st, maxit);
     *its += st->iterations;
     if (rc != SUS_STEPPER_OK || !(st->det > 0.0) || !within_jump(moved_by(x, xp, n), m, w))
         return -1;
@@ -336,7 +337,7 @@ int sus_step_newton_branch(sus_residual_fn G, sus_guess_fn guess, int n, const s
             for (int i = 0; i < n; i++) /* the secant through the last two roots */
                 xp[i] = cur[i] + (en - e) / (e - e_prev) * (cur[i] - prev[i]);
         }
-        if (stage(G, n, m, en, w, xp, st, &its) != 0) {
+        if (stage(G, n, m, en, w, xp, st, &its, BRANCH_STAGE_ITS) != 0) {
             de *= BRANCH_SHRINK;
             continue;
         }
@@ -361,7 +362,7 @@ int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, c
 {
     int its = 0;
     guess(m, eps, w, x);
-    if (stage(G, n, m, eps, w, x, st, &its) == 0)
+    if (stage(G, n, m, eps, w, x, st, &its, FAST_ITS) == 0)
         return SUS_STEPPER_OK;
     const int rc = sus_step_newton_branch(G, guess, n, m, eps, w, x, st, NULL);
     st->iterations += its;

@@ -98,7 +98,8 @@ static void check_verdicts(const sus_lab_bench *b)
 }
 
 /* The implicit-step target: at most SUS_LAB_BENCH_IMPLICIT_TARGET rk4 steps, each step its own
- * verdict, the joint one all of them; the compositions (many substeps a step) are not held to it. */
+ * verdict, the joint one all of them; the compositions (many substeps a step) are not held to it.
+ */
 static void check_implicit(sus_lab_bench *b)
 {
     double *ns = b->cost.ns_raw;

@@ -4,6 +4,8 @@
  *     to round-off, and it is the branch's: it equals the end of an independent continuation (4000
  *     equal stages, each Newton from the last root, det J > 0 all along) to 1e-12 relative; a step
  *     of negative eps (a composition's backward substep) likewise;
+ *     and where it lands on another root, which it can where the energy ellipse is long (a
+ *     near-singular I_m: the variational step, one start), the step still gives the branch's;
  *   - where the prediction is good (h = 0.145, the paper's eps = 1, and h = 0.5; 200 steps on
  *     every body of the family), the step is Newton from the prediction, bit for bit (the fast
  *     path: the results of the fixed-step experiments at such steps are unchanged);
@@ -92,6 +94,25 @@ static void branch_step(const sus_exact *paper, const char *name, double h, cons
           : off_branch            ? "lands off the branch"
                                   : "holds",
           rc, res, scale, d, s.det);
+}
+
+/* A near-singular I_m (condition near 1e5, the stiff bodies' "cond" kind): its energy ellipse is
+ * so long that the variational step's other root lies nearer the explicit prediction than the
+ * ellipse's size; at this eps Newton from the prediction reaches that root within the stage's
+ * iterations and det J > 0. The step must still give the continued branch's root. */
+static void elongated_ellipse(void)
+{
+    static const double I[9] = {0.88026711676438429, 0.50204113652209859, 0.31474715079768634,
+                                0.50204113652209859, 0.2863411520411564,  0.43734859527303876,
+                                0.52863521428070659, 0.38428363400701054, 2.4838304300206255};
+    const double w[3] = {0.57904027635134869, 0.51602877784210577, 0.0};
+    sus_model m;
+    sus_exact ex;
+    if (sus_model_init(&m, I, NULL, 0) != 0 || sus_exact_init(&ex, &m, w) != 0) {
+        CHECK(0, "the elongated body is accepted");
+        return;
+    }
+    branch_step(&ex, "variational", 0.00049476 * ex.k, w, 1);
 }
 
 /* Small steps, h = eps k = 0.145 (the paper's eps = 1) and 0.5 on each body: the step is plain
@@ -243,8 +264,8 @@ static void cycle_lengths(const sus_exact *paper)
         walk_calls = 0;
         sus_lab_stability_run(&ex, &walker, 1.0, N, 0, &r);
         const double *wN = walk[N % P]; /* w_N of the whole run */
-        const int same = r.final_err == hypot(wN[0] - winf[0], wN[1] - winf[1]) /
-                                             hypot(winf[0], winf[1]);
+        const int same =
+            r.final_err == hypot(wN[0] - winf[0], wN[1] - winf[1]) / hypot(winf[0], winf[1]);
         const long want = P <= 16 ? P : N; /* w_P = w_0 is seen at step P */
         CHECK(same && walk_calls == want,
               "a cycle of period %d: %ld steps taken (%ld), w_N that of the whole run (%s)", P,
@@ -307,6 +328,7 @@ int main(void)
     branch_step(&paper, "midpoint", -h_mid, w, 0);
     map_state(&paper, sus_step_method_by_name("midpoint")->type, 2, 36, h_mid, 0, w);
     branch_step(&paper, "midpoint", -h_mid, w, 1);
+    elongated_ellipse();
     fast_path();
     fold(&paper);
     unsolvable(&paper);
