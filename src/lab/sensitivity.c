@@ -53,39 +53,26 @@ static double record(const sus_exact *ex, const sus_model *m, double t, double t
     return err;
 }
 
-/* The root of the step equation that continuation in eps from 0 reaches (at eps = 0 the root is
- * w itself): SENS_CONT steps, each Newton from the linear extrapolation of the last two roots,
- * the block's determinant positive all along (no fold). Returns 0 with that w^{k+1} in x. */
-#define SENS_CONT 8
+/* The root of the step equation on the branch continued in eps from 0 (newton.h's continuation,
+ * the one the steps fall back on). Returns 0 with that w^{k+1} in x. */
 static int continued_root(const sus_model *m, const sus_stepper_type *st, double eps,
                           const double w[2], double x[2])
 {
-    const int n = st->equation->unknowns;
-    double a[SUS_MAX_UNKNOWNS], b[SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS];
-    st->equation->guess(m, 0.0, w, b);
-    for (int i = 0; i < n; i++)
-        a[i] = b[i];
-    for (int j = 1; j <= SENS_CONT; j++) {
-        sus_stepper_stats s;
-        const double e = eps * j / SENS_CONT;
-        for (int i = 0; i < n; i++)
-            g[i] = 2.0 * b[i] - a[i];
-        if (sus_step_newton_solve(st->equation->residual, n, m, e, w, g, &s) != SUS_STEPPER_OK ||
-            !(s.det > 0.0))
-            return -1;
-        for (int i = 0; i < n; i++) {
-            a[i] = b[i];
-            b[i] = g[i];
-        }
-    }
-    st->equation->result(m, eps, w, b, x);
+    const sus_step_equation *eq = st->equation;
+    double root[SUS_MAX_UNKNOWNS];
+    sus_stepper_stats s;
+    if (sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL) !=
+        SUS_STEPPER_OK)
+        return -1;
+    eq->result(m, eps, w, root, x);
     return 0;
 }
 
 /* A step that failed: the solve did not converge, a value is not finite, the block's determinant
  * reached or passed zero, or the root is not the one continuation from eps = 0 reaches (two roots
  * of one equation are apart by O(|w|); the same root agrees to round-off times the block's
- * conditioning, far below the 1e-8 |w| that tells them apart). */
+ * conditioning, far below the 1e-8 |w| that tells them apart). A step whose root is already the
+ * continuation's (s->continued: the same call, bit for bit) is not continued again. */
 static int step_failed(int status, const double w[3], const double x[3], const sus_stepper_stats *s,
                        const sus_model *m, const sus_stepper_type *st, double eps, double *det_min)
 {
@@ -96,7 +83,11 @@ static int step_failed(int status, const double w[3], const double x[3], const s
     const double ratio = s->det / m->det_m;
     *det_min = fmin(*det_min, ratio);
     double xc[2];
-    if (!(ratio > 0.0) || continued_root(m, st, eps, w, xc) != 0)
+    if (!(ratio > 0.0))
+        return 1;
+    if (s->continued)
+        return 0;
+    if (continued_root(m, st, eps, w, xc) != 0)
         return 1;
     return hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + hypot(w[0], w[1]));
 }

@@ -142,6 +142,23 @@ static void write_failures(FILE *fp, const char *name, int var)
     fprintf(fp, "%s & %s & %s & %s & %d of %d\\\\\n", name, p, a, h, none, NCASE);
 }
 
+/* The implicit steps solve for their branch (newton.h): the runs, of both methods, in every case,
+ * that fail somewhere on the grid. */
+static void solvable_line(void)
+{
+    int failing = 0;
+    for (int c = 0; c < NCASE; c++)
+        failing += isfinite(cases[c].fail_mid) + isfinite(cases[c].fail_var);
+    char q[400];
+    snprintf(q, sizeof q,
+             "runs (of %d: the midpoint and the variational run of each of the %d cases) that "
+             "fail somewhere on the grid $\\varepsilon = 2^{j/4}$ up to $2^{%d}$: Newton not "
+             "converged, the root off the branch continued from $\\varepsilon = 0$, or the "
+             "block's determinant at zero",
+             2 * NCASE, NCASE, SUS_LAB_SENS_FAIL_MAX_EXP);
+    ledger_add("fig2-sensitivity-solvable", "(extension)", q, failing, 0.0, 0.5, LEDGER_EXTENSION);
+}
+
 static void write_table(const char *tsv, const sens_row *rows)
 {
     char path[4200], err[256];
@@ -289,6 +306,7 @@ void sensitivity_claims(const char *tsv)
     for (int i = 0; i < NEPS; i++)
         rows[i] = row_of(i);
     write_table(tsv, rows);
+    solvable_line();
     regularity_lines();
     numbers(rows);
     paper_case_numbers();
