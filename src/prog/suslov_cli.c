@@ -187,10 +187,10 @@ static const suslov_cli_option OPTIONS[] = {
      set_sweeps, NULL},
     {"--every", "K", "write step 0, every K-th step and the last step; default 1", set_every, NULL},
     {"--tol", "TOL",
-     "error tolerance of a step, 2^-52 <= TOL < 1, for a tolerance-driven\n"
-     "method (taylor-adaptive), which then chooses its order and steps; with\n"
-     "--time T, never with --eps, --steps or --every; a run stops (exit 3)\n"
-     "after 10^6 steps short of T",
+     "error tolerance, 2^-52 <= TOL < 1, for a tolerance-driven method (order\n"
+     "tol in --method list), which then chooses its steps; with --time T, never\n"
+     "with --eps, --steps or --every; a run stops (exit 3) after 10^6 steps\n"
+     "short of T",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
