@@ -13,7 +13,7 @@ static int substep(const sus_model *m, double h, const double w[3], double x[3],
                    sus_stepper_stats *acc)
 {
     sus_stepper_stats st;
-    const int status = sus_step_implicit_solve(sus_step_midpoint->equation, m, h, w, x, &st);
+    const int status = sus_step_midpoint_solve(m, h, w, x, &st);
     acc->iterations += st.iterations;
     if (!(st.residual <= acc->residual)) { /* also takes a NaN residual */
         acc->residual = st.residual;

@@ -15,6 +15,12 @@ extern "C" {
 int sus_step_implicit_solve(const sus_step_equation *eq, const sus_model *m, double eps,
                             const double w[3], double w_next[3], sus_stepper_stats *st);
 
+/* The midpoint DSP's step (step_midpoint.c): sus_step_implicit_solve of its equation, with its
+ * residual inlined into Newton's loop (newton_core.h); the compositions call it for every substep.
+ */
+int sus_step_midpoint_solve(const sus_model *m, double eps, const double w[3], double w_next[3],
+                            sus_stepper_stats *st);
+
 /* Explicit midpoint (second order) prediction, the starting point of the Newton solves (a guess
  * hook). These two write NaN where an input is NULL, and nothing where the output is. */
 void sus_step_predict(const sus_model *m, double eps, const double w[2], double x[2]);

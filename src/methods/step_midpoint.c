@@ -5,6 +5,7 @@
  *   G(x) = I_m (x - w^k) - eps (l1, l2) = 0
  * is solved by Newton from an explicit prediction. */
 #include "implicit_step.h"
+#include "newton_core.h"
 #include "stability_fn.h"
 #include "dsp.h"
 
@@ -36,10 +37,19 @@ static const sus_step_equation MID_EQUATION = {.unknowns = 2,
                                                .guess = sus_step_predict,
                                                .result = sus_step_result_is_x};
 
+int sus_step_midpoint_solve(const sus_model *m, double eps, const double w[3], double w_next[3],
+                            sus_stepper_stats *st)
+{
+    double x[2];
+    const int status = newton_solve_branch(mid_residual, sus_step_predict, 2, m, eps, w, x, st);
+    w_next[0] = x[0], w_next[1] = x[1], w_next[2] = 0.0;
+    return status;
+}
+
 static int midpoint_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
                           double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = sus_step_implicit_solve(&MID_EQUATION, m, eps, w, w_next, st);
+    const int status = sus_step_midpoint_solve(m, eps, w, w_next, st);
     *lambda_next = sus_lagmult(m, w_next);
     return status;
 }
