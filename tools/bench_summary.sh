@@ -11,10 +11,17 @@
 #   tex  the machine's macros for the companion (\BenchRunDate, \BenchRunCommit, \BenchRunCPU,
 #        \BenchRunCores, \BenchRunLoad, \BenchRunNote (empty, or "; " and the note),
 #        \BenchRunSeconds), from machine.txt
-# Usage: bench_summary.sh DIR md|tex [NAME] (to stdout; NAME: the directory's name to print, if
-# DIR is where it is being written)
+#   misses  the targets' count and the misses for the software note (\BenchTargetCount: the
+#        PASS and MISS lines of bench.txt; \BenchMissCount; \BenchMisses: each MISS line said
+#        short, its measured value and its target, separated by semicolons), from bench.txt
+# Usage: bench_summary.sh DIR md|tex|misses [NAME] (to stdout; NAME: the directory's name to
+# print, if DIR is where it is being written)
 set -eu
 D=$1 mode=$2 name=${3:-$1}
+if [ "$mode" = misses ]; then
+    [ -f "$D/bench.txt" ] || { echo "bench_summary: no $D/bench.txt" >&2; exit 2; }
+    exec awk -f "$(dirname "$0")/bench_misses.awk" "$D/bench.txt"
+fi
 field() { sed -n "s/^$1: //p" "$D/machine.txt" | head -1; }
 if [ "$mode" = tex ]; then
     esc() { sed -e 's/\\/\\textbackslash{}/g' -e 's/[_%&#$]/\\&/g' -e 's/[{}]/\\&/g' -e 's/~/\\textasciitilde{}/g' -e 's/\^/\\textasciicircum{}/g'; }
@@ -30,7 +37,7 @@ if [ "$mode" = tex ]; then
     def BenchRunSeconds "$(field 'bench seconds (wall clock)')"
     exit 0
 fi
-[ "$mode" = md ] || { echo "bench_summary: mode md or tex, not '$mode'" >&2; exit 2; }
+[ "$mode" = md ] || { echo "bench_summary: mode md, tex or misses, not '$mode'" >&2; exit 2; }
 cat <<EOF
 # Performance: one run of \`make bench\`
 
