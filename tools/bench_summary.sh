@@ -5,13 +5,23 @@
 #        bench.txt) and the tables: at each accuracy our fastest method and the best peer on the
 #        full problem, on the reduced one, and for w alone (what_to_use.tsv, with each point's
 #        fastest and slowest round from bench.csv), then the long runs (longruns.tsv)
+#        The tables print the ratios and the long runs' numbers as the TSV files hold them (a
+#        ratio to two decimals, as bench.txt and bench.tex have it), and the times in µs to three
+#        digits from bench.csv's six (not the TSV's four), so that they agree with bench.txt
 #   tex  the machine's macros for the companion (\BenchRunDate, \BenchRunCommit, \BenchRunCPU,
 #        \BenchRunCores, \BenchRunLoad, \BenchRunNote (empty, or "; " and the note),
 #        \BenchRunSeconds), from machine.txt
-# Usage: bench_summary.sh DIR md|tex [NAME] (to stdout; NAME: the directory's name to print, if
-# DIR is where it is being written)
+#   misses  the targets' count and the misses for the software note (\BenchTargetCount: the
+#        PASS and MISS lines of bench.txt; \BenchMissCount; \BenchMisses: each MISS line said
+#        short, its measured value and its target, separated by semicolons), from bench.txt
+# Usage: bench_summary.sh DIR md|tex|misses [NAME] (to stdout; NAME: the directory's name to
+# print, if DIR is where it is being written)
 set -eu
 D=$1 mode=$2 name=${3:-$1}
+if [ "$mode" = misses ]; then
+    [ -f "$D/bench.txt" ] || { echo "bench_summary: no $D/bench.txt" >&2; exit 2; }
+    exec awk -f "$(dirname "$0")/bench_misses.awk" "$D/bench.txt"
+fi
 field() { sed -n "s/^$1: //p" "$D/machine.txt" | head -1; }
 if [ "$mode" = tex ]; then
     esc() { sed -e 's/\\/\\textbackslash{}/g' -e 's/[_%&#$]/\\&/g' -e 's/[{}]/\\&/g' -e 's/~/\\textasciitilde{}/g' -e 's/\^/\\textasciicircum{}/g'; }
@@ -27,7 +37,7 @@ if [ "$mode" = tex ]; then
     def BenchRunSeconds "$(field 'bench seconds (wall clock)')"
     exit 0
 fi
-[ "$mode" = md ] || { echo "bench_summary: mode md or tex, not '$mode'" >&2; exit 2; }
+[ "$mode" = md ] || { echo "bench_summary: mode md, tex or misses, not '$mode'" >&2; exit 2; }
 cat <<EOF
 # Performance: one run of \`make bench\`
 
@@ -64,20 +74,20 @@ function split_csv(line, f,    n, i, c, q, cur) {
     return n
 }
 function range(name, sec,    k) { k = name SUBSEP sprintf("%.4g", sec)
-    return (k in lo) ? sprintf("%.3g (%.3g–%.3g)", sec * 1e6, lo[k] * 1e6, hi[k] * 1e6) : sprintf("%.3g", sec * 1e6) }
+    return (k in lo) ? sprintf("%.3g (%.3g–%.3g)", med[k] * 1e6, lo[k] * 1e6, hi[k] * 1e6) : sprintf("%.4g", sec * 1e6) }
 function args(a,    n, w, s, i) { # the suslov arguments, numbers to 4 digits, without the run length every row shares
     sub(/^--method /, "", a); sub(/ --time [^ ]* --every-time [^ ]*$/, "", a)
     n = split(a, w, " "); s = ""
     for (i = 1; i <= n; i++) s = s (i > 1 ? " " : "") (w[i] ~ /^[0-9.e+-]+$/ && w[i] ~ /\./ ? sprintf("%.4g", w[i]) : w[i])
     return s }
 BEGIN { while ((getline l < csv) > 0) { if (split_csv(l, f) < 12 || f[1] != "work") continue
-        k = f[2] SUBSEP sprintf("%.4g", f[10]); lo[k] = f[11]; hi[k] = f[12] }
+        k = f[2] SUBSEP sprintf("%.4g", f[10]); med[k] = f[10]; lo[k] = f[11]; hi[k] = f[12] }
     title["attitude"] = "The attitude at t = 50 against the best peer on the full problem"
     title["attitude-reduced"] = "The attitude at t = 50 against the best peer on the reduced problem (given w(t))"
     title["omega"] = "w alone at t = 50 (information: the closed form gives w(t) in one evaluation)" }
 NR == 1 { next }
 $1 != last { printf "\n## %s\n\n| level | ours (`suslov` args) | µs median (min–max) | best peer | µs median (min–max) | ratio | target |\n|---|---|---|---|---|---|---|\n", title[$1]; last = $1 }
-{ printf "| %s | `%s` | %s | %s, tol %s | %s | %.2f× | %s |\n", $2, args($11), range($3, $4), $5, $6,
+{ printf "| %s | `%s` | %s | %s, tol %s | %s | %s× | %s |\n", $2, args($11), range($3, $4), $5, $6,
          range($5, $7), $8, ($9 == "nan" ? "info" : $9 "× " $10) }
 ' "$tsv"
 printf '\n## Long runs\n\nAt T = 1e4, each of our methods at its first step or tolerance whose run ends within 1e-9 of\n'
@@ -85,10 +95,10 @@ printf 'the reference attitude, against rk8pd at its loosest tolerance (four a d
 printf 'then the row fastest against its peer, to T = 1e6 (medians of interleaved rounds).\n\n'
 printf '| ours | T | seconds | attitude error | GSL rk8pd (w,q): tol, seconds | ratio | rk8pd reduced (q): tol, seconds | ratio | target |\n'
 printf '|---|---|---|---|---|---|---|---|---|\n'
-awk -F'\t' 'function peer(tol, sec, ratio) { return sec == "inf" ? "none reaches it | " : sprintf("%s, %.3g | %.2f×", tol, sec, ratio) }
+awk -F'\t' 'function peer(tol, sec, ratio) { return sec == "inf" ? "none reaches it | " : sprintf("%s, %s | %s×", tol, sec, ratio) }
 NR > 1 && $1 == "equal-error" {
-    printf "| %s, %s %s | %s | %.3g | %.2g | %s | %s | %s |\n", $2, $3, $4, $5, $6, $7,
+    printf "| %s, %s %s | %s | %s | %s | %s | %s | %s |\n", $2, $3, $4, $5, $6, $7,
         peer($9, $10, $12), peer($15, $16, $18), ($13 == "" ? "info" : $13 "× " $14) }
 NR > 1 && $1 == "growth" {
-    printf "| %s, %s %s | %s | %.3g | | cost over the same run to T = 1e4 (%.3g s) | %.2f× | | | ≤ %s× %s |\n", $2, $3, $4, $5,
+    printf "| %s, %s %s | %s | %s | | cost over the same run to T = 1e4 (%s s) | %s× | | | ≤ %s× %s |\n", $2, $3, $4, $5,
         $6, $10, $12, $13, $14 }' "$D/longruns.tsv"

@@ -82,8 +82,10 @@ printf '\\newcommand{\\CiteVersion}{%s}\n\\newcommand{\\CiteAuthor}{%s}\n' "$ver
 sh tools/repro.sh "$P/repro.tex"
 sh tools/figsplit.sh figures/stability.pdf Stability "$P/figsplit.tex"
 cp "$B/numbers.tex" "$B/ledger.tex" "$B/summary.tex" "$B/sensitivity.tex" "$P/"
-# the bench's numbers and its machine, from the recorded run (make bench-record)
+# the bench's numbers and its machine, from the recorded run (make bench-record), and the targets
+# it misses, from its bench.txt
 cat data/bench-recorded/bench.tex data/bench-recorded/machine.tex >"$P/bench.tex"
+sh tools/bench_summary.sh data/bench-recorded misses >>"$P/bench.tex"
 # The PDFs' dates (creation, modification, 	oday) are the time of the commit of their sources
 # (outside git, a fixed one); no trailer ID, and no names or info of included files.
 epoch=$(sh tools/repro.sh --commit | cut -d' ' -f2)

@@ -117,7 +117,7 @@ static void tex_long(FILE *fp, const sus_lab_bench *b)
     const int k = sus_lab_bench_best_equal_error(b);
     const double r = k < 0 ? 0.0 : b->EQ[k].peer_sec / b->EQ[k].sec,
                  g = sus_lab_bench_growth_ratio(b);
-    tex_ratio(fp, "BenchLongRatio", "", r, 1);
+    tex_ratio(fp, "BenchLongRatio", "", r, 2);
     fprintf(fp, "\\newcommand{\\BenchPassLong}{%s}\n", pass_word(r >= SUS_LAB_BENCH_LONG_TARGET));
     fprintf(fp, "\\newcommand{\\BenchLongTarget}{%g}\n", SUS_LAB_BENCH_LONG_TARGET);
     fprintf(fp, "\\newcommand{\\BenchGrowthRatio}{%.2f}\n\\newcommand{\\BenchPassGrowth}{%s}\n", g,
@@ -151,6 +151,11 @@ static void write_tex(FILE *fp, const sus_lab_bench *b)
     tex_long(fp, b);
 }
 
+/* ---- what_to_use.tsv and longruns.tsv ----
+ * A ratio is written to two decimals, from the same double that make bench prints and bench.tex
+ * holds to two decimals: one rounding, so the tables, bench.txt and the software note agree
+ * (summary.md prints it as written here). */
+
 /* ---- what_to_use.tsv: at each level the fastest of ours and of the peers, from their timed
  * runs, with the suslov arguments that reproduce ours ---- */
 
@@ -168,7 +173,7 @@ static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
             const sus_lab_bench_series *os = b->S[v.ours.series];
             const sus_lab_bench_series *ps = v.peer.series < 0 ? NULL : b->S[v.peer.series];
             sus_lab_bench_suslov_args(os, v.ours.point, args, sizeof args);
-            fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.3g\t%g\t%s\t%s\n",
+            fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.2f\t%g\t%s\t%s\n",
                     sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l], os->name,
                     v.ours.sec, ps ? ps->name : "none reaches it",
                     ps ? ps->param[v.peer.point] : NAN, ps ? v.peer.sec : NAN, v.ratio, v.target,
@@ -188,7 +193,7 @@ static void long_row(FILE *fp, const sus_lab_bench *b, const sus_lab_bench_equal
         snprintf(target, sizeof target, "%g", SUS_LAB_BENCH_LONG_TARGET);
     fprintf(fp,
             "equal-error\t%s\t%s\t%.4g\t%g\t%.4g\t%.3g\tGSL rk8pd (w,q) driver h0 0.001"
-            "\t%.2g\t%.4g\t%.3g\t%.3g\t%s\t%s\t%.2g\t%.4g\t%.3g\t%.3g\t%s\n",
+            "\t%.2g\t%.4g\t%.3g\t%.2f\t%s\t%s\t%.2g\t%.4g\t%.3g\t%.2f\t%s\n",
             s->name, sus_lab_bench_param_name(s), s->param[e->point], SUS_LAB_BENCH_T_LONG, e->sec,
             e->err, e->peer_tol, e->peer_sec, e->peer_err, r, target,
             best ? pass_word(r >= SUS_LAB_BENCH_LONG_TARGET) : "info", e->red_tol, e->red_sec,
@@ -212,7 +217,7 @@ static void write_long_runs(FILE *fp, const sus_lab_bench *b)
     sus_lab_bench_suslov_args_to(s, g->point, SUS_LAB_BENCH_T_GROWTH, args, sizeof args);
     fprintf(fp,
             "growth\t%s\t%s\t%.4g\t%g\t%.4g\t\tthe same run "
-            "to T = %g\t\t%.4g\t\t%.3g\t%g\t%s\t\t\t\t\t%s\n",
+            "to T = %g\t\t%.4g\t\t%.2f\t%g\t%s\t\t\t\t\t%s\n",
             s->name, sus_lab_bench_param_name(s), s->param[g->point], SUS_LAB_BENCH_T_GROWTH,
             g->sec, SUS_LAB_BENCH_T_LONG, g->sec_long, r, SUS_LAB_BENCH_GROWTH_TARGET,
             pass_word(r <= SUS_LAB_BENCH_GROWTH_TARGET), args);

@@ -136,6 +136,47 @@ static int same_series(const sus_lab_bench_series *a, const sus_lab_bench_series
                                : fabs(a->err_R[0] - b->err_R[0]) <= rel * a->err_R[0]);
 }
 
+/* Field col (1-based) of the first line of DIR/NAME that starts with head, into out. */
+static int tsv_field(const char *dir, const char *name, const char *head, int col, char *out,
+                     size_t len)
+{
+    char path[96], line[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *fp = fopen(path, "r");
+    int found = 0;
+    while (fp && !found && fgets(line, sizeof line, fp))
+        if (strncmp(line, head, strlen(head)) == 0) {
+            char *f = strtok(line, "\t\n");
+            for (int k = 1; f && k < col; k++)
+                f = strtok(NULL, "\t\n");
+            found = f != NULL;
+            if (found)
+                snprintf(out, len, "%s", f);
+        }
+    if (fp)
+        fclose(fp);
+    return found;
+}
+
+/* One rounding of a ratio everywhere: what_to_use.tsv holds it to two decimals, as bench.tex and
+ * make bench print it (3 us over 1 us is 3.00, not 3; 0.4 over 1 is 0.40). */
+static void check_ratio_digits(const char *dir)
+{
+    char full[32] = "", red[32] = "", tex[4096] = "", path[96];
+    tsv_field(dir, "what_to_use.tsv", "attitude\t1e-04\t", 8, full, sizeof full);
+    tsv_field(dir, "what_to_use.tsv", "attitude-reduced\t1e-04\t", 8, red, sizeof red);
+    snprintf(path, sizeof path, "%s/bench.tex", dir);
+    FILE *fp = fopen(path, "r");
+    const size_t n = fp ? fread(tex, 1, sizeof tex - 1, fp) : 0;
+    tex[n] = '\0';
+    if (fp)
+        fclose(fp);
+    CHECK(strcmp(full, "3.00") == 0 && strcmp(red, "0.40") == 0 &&
+              strstr(tex, "\\BenchRatioRFour}{3.00}") && strstr(tex, "\\BenchRatioRedFour}{0.40}"),
+          "what_to_use.tsv's ratios to two decimals, as bench.tex's (full %s, reduced %s)", full,
+          red);
+}
+
 static void check_round_trip(const sus_lab_bench *b)
 {
     char dir[] = "/tmp/test_bench.XXXXXX", path[64];
@@ -160,6 +201,8 @@ static void check_round_trip(const sus_lab_bench *b)
         CHECK(c.env[2].n == 1, "the envelopes again from what was read");
         sus_lab_bench_free(&c);
     }
+    if (wrote)
+        check_ratio_digits(dir);
     /* a file that is not the bench's: refused, with a message */
     snprintf(path, sizeof path, "%s/bench.csv", dir);
     FILE *fp = fopen(path, "w");
