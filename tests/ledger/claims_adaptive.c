@@ -94,9 +94,9 @@
  * turn). Where |w| < k the attitude's truncation error lies a factor (|w| / k)^(p+1) below the
  * tolerance each step spends, so R's error tells nothing of how the tolerance is used: such a
  * body (|w| / k below RATE_RATIO_MIN, |w| the largest along the motion) enters only the upper
- * bounds, and the lines name it. Chosen after the stiff bodies were first measured (their R
- * errors lay 1e-2 to 1e-8 times TOL), from this argument; the paper's and the general bodies
- * have |w| / k from 2 to 9. */
+ * bounds, and the lines name it. 1 is where the argument turns: below it the factor, which
+ * shrinks as p grows with falling TOL (by ln(10) / 2 a decade), steepens R's slope by
+ * 1.15 log10(k / |w|) and takes its ratio out of the two decades the lower bound allows. */
 #define RATE_RATIO_MIN 1.0
 
 typedef struct {
@@ -276,7 +276,7 @@ static void local_claims(const tol_method *tm)
     snprintf(
         slow, sizeof slow,
         "without: %s ($|\\omega|/k < %g$: the attitude turns slower than $\\omega$ settles, its "
-        "error is not what TOL controls; a scope set after measuring)",
+        "error is not what TOL controls)",
         s[1].slow[0] ? s[1].slow : "none", RATE_RATIO_MIN);
     key_number(tm, "SlopeRMin", s[1].slope_min);
     key_number(tm, "SlopeRMax", s[1].slope);

@@ -13,6 +13,7 @@
 #include "claims_bodies.h"
 #include "claims_global.h"
 #include "claims_methods.h"
+#include "claims_recommended.h"
 #include "composition.h"
 #include "driver.h"
 #include "expected_orders.h"
@@ -162,67 +163,11 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
     ledger_add_bound(id, "(extension)", what, ok ? l.orth : INFINITY, orth, 0, LEDGER_EXTENSION);
 }
 
-/* Settings an earlier benchmark run found fastest at each accuracy at t = 50 (fixed here; each
- * new `make bench` may pick others), checked at that accuracy: the attitude rows against the
- * reference R(50), the w rows against the closed form. The bound is the level and the margin is
- * that run's (the fastest setting that reached it), not one from theory: these are regression
- * points at the large steps where a defect shows that the asymptotic order lines cannot see (a
- * quaternion series one degree short, E no longer restored). Paper's body only: a step count
- * belongs to one body's time scale. E: each step evaluates E twice, divides, takes a root and
- * scales: at most 8 roundings of E per step that need not cancel, 8 N u E0. */
-static const struct {
-    const char *method;
-    long steps;
-    int attitude; /* 1: R(50) is the target, 0: w(50) */
-    double level;
-} RECOMMENDED[] = {
-    {"taylor8", 17, 1, 1e-4},   {"taylor10", 18, 1, 1e-6},  {"taylor12", 20, 1, 1e-8},
-    {"taylor12", 29, 1, 1e-10}, {"taylor16", 27, 1, 1e-12}, {"taylor8", 9, 0, 1e-6},
-    {"taylor8", 15, 0, 1e-8}, /* 1e-4: the 1e-6 setting, tested at 1e-6 */
-    {"taylor16", 11, 0, 1e-10}, {"taylor12", 21, 0, 1e-12}, {"taylor16", 18, 0, 1e-14},
-};
-
-static void recommended_settings(const sus_model *m, const sus_exact *ex, const double w_T[2],
-                                 const double R_T[3][3])
-{
-    char id[96], what[400];
-    for (size_t i = 0; i < sizeof RECOMMENDED / sizeof RECOMMENDED[0]; i++) {
-        const sus_step_method *me = sus_step_method_by_name(RECOMMENDED[i].method);
-        if (!me)
-            ledger_die("a recommended method is not registered");
-        const long N = RECOMMENDED[i].steps;
-        last_row l;
-        const int ok = run(m, ex, me->type, me->recon, T_ORD, N, 1, &l) == 0;
-        const double err = !ok                       ? INFINITY
-                           : RECOMMENDED[i].attitude ? sus_so3_dist(R_T, l.R)
-                                                     : hypot(l.w[0] - w_T[0], l.w[1] - w_T[1]);
-        snprintf(id, sizeof id, "recommended-%s-%s-%ld", RECOMMENDED[i].attitude ? "attitude" : "w",
-                 me->type->name, N);
-        snprintf(
-            what, sizeof what,
-            "%s at $t = 50$, %s with %ld steps ($\\varepsilon = %.4g$), an earlier bench run's "
-            "setting for $%s$: at most that",
-            RECOMMENDED[i].attitude ? "the distance \\eqref{MetMat} $\\mathrm{dist}(R(50), R_N)$"
-                                    : "$|\\omega(50) - \\omega_N|$",
-            me->type->name, N, T_ORD / (double)N, notation_g(RECOMMENDED[i].level, 1).s);
-        ledger_add_bound(id, "(make bench, earlier run)", what, err, RECOMMENDED[i].level, 0,
-                         LEDGER_EXTENSION);
-        const double yard = 8.0 * (double)N * DBL_EPSILON * l.e0;
-        snprintf(id, sizeof id, "recommended-energy-%s-%ld", me->type->name, N);
-        snprintf(
-            what, sizeof what,
-            "$\\max |E - E_0|$ over the same run (%s, $\\varepsilon = %.4g$): $E$ restored, bound "
-            "$8 N u E_0 = %s$",
-            me->type->name, T_ORD / (double)N, notation_g(yard, 2).s);
-        ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0,
-                         LEDGER_EXTENSION);
-    }
-}
-
 /* The reference R(50) against the independent long-double Magnus integration along the
  * closed-form w(t), Richardson-extrapolated from 4000 and 8000 steps (its error is ~1e-17; each
  * matrix is rounded to double once, so ~1e-16 is the floor of the comparison): <= 1e-15, a tenth
- * of the 1e-14 that would blur errors of 1e-12 by 1%; then the recommended settings against it. */
+ * of the 1e-14 that would blur errors of 1e-12 by 1%; then the recorded bench's settings against it
+ * (claims_recommended.c). */
 void highorder_reference_claims(const sus_model *m, const sus_exact *ex)
 {
     double w_T[2], R_T[3][3], w_ref[2];
@@ -240,7 +185,7 @@ void highorder_reference_claims(const sus_model *m, const sus_exact *ex)
                "reference's $\\omega$ against the closed form, claimed $\\le 4\\,u "
                "|\\omega| \\sim 10^{-15}$ (each side rounds a few times)",
                hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
-    recommended_settings(m, ex, w_T, R_T);
+    recommended_claims(m, ex->w0, w_T, R_T);
 }
 
 void highorder_method_claims(const sus_model *m, const sus_exact *ex, int i)
