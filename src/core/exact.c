@@ -39,7 +39,12 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     }
     ex->cb = v1 / vn;
     ex->sb = v2 / vn;
-    const double C = (ex->cb * u1 + ex->sb * u2) / ex->r;
+    /* C = <v, u> / (|v| r) = c(w0) / (|v| r), as <v, u> = b^T L^{-T} L^T w0: c(w0) = I31 w1 + I32
+     * w2 formed to about one rounding of itself (sus_cross_diff), not from the rounded u and v,
+     * whose terms cancel near the line c = 0; there s0 = asinh(S / C) takes C's relative error as
+     * an absolute one, and a start 1e-14 off the repelling rotation would leave it at a time off by
+     * up to u / 1e-14 of 1 / k. */
+    const double C = sus_cross_diff(m->b[0], w0[0], -m->b[1], w0[1]) / (vn * ex->r);
     const double S = (ex->cb * u2 - ex->sb * u1) / ex->r;
     if (C == 0.0) { /* an equilibrium: c(w0) = 0 */
         ex->fixed = 1;

@@ -43,6 +43,41 @@ static void u_of_w(const sus_refatt_chol *c, const double w[2], long double u[2]
     u[1] = c->l22 * w[1];
 }
 
+/* The closed form's constants in long double, as exact.c forms them in double: C = c(w0) / (|v| r)
+ * from c(w0) = I31 w1 + I32 w2 to one rounding (cross_diff), so that s0 = asinh(S / C) holds
+ * however near w0 lies to the line c = 0 (the repelling rotation). */
+static void closed_init(sus_refatt_closed *cf, const sus_refatt_chol *co, const sus_exact *ex)
+{
+    const double *b = ex->model->b, *w0 = ex->w0;
+    u_of_w(co, w0, cf->u0);
+    const long double u1 = cf->u0[0], u2 = cf->u0[1], vn = hypotl(co->v[0], co->v[1]);
+    cf->r = hypotl(u1, u2);
+    cf->fixed = ex->fixed || !(cf->r > 0.0L) || !(vn > 0.0L);
+    if (cf->fixed)
+        return;
+    cf->cb = co->v[0] / vn;
+    cf->sb = co->v[1] / vn;
+    const long double C = cross_diff(b[0], w0[0], -b[1], w0[1]) / (vn * cf->r),
+                      S = (cf->cb * u2 - cf->sb * u1) / cf->r;
+    cf->fixed = C == 0.0L;
+    cf->k = cf->r * vn / (co->l11 * co->l22);
+    cf->sigma = C > 0.0L ? 1.0L : -1.0L;
+    cf->s0 = asinhl(S / C);
+}
+
+/* u(t) from the closed form (exact.c's omega_from_psi, in long double). */
+static void closed_u(const sus_refatt_closed *cf, long double t, long double u[2])
+{
+    if (cf->fixed) {
+        u[0] = cf->u0[0], u[1] = cf->u0[1];
+        return;
+    }
+    const long double s = cf->s0 + cf->sigma * cf->k * t, e = expl(-fabsl(s));
+    const long double cp = cf->sigma * 2.0L * e / (1.0L + e * e), sp = cf->sigma * tanhl(s);
+    u[0] = cf->r * (cf->cb * cp - cf->sb * sp);
+    u[1] = cf->r * (cf->sb * cp + cf->cb * sp);
+}
+
 /* (ContDyn): One Taylor step of order P in long double, in the Cholesky coordinates u = L^T w of
  * exact.h, where (ContDyn) reads u' = c J u / |L| with c = <v, u> and J u = (-u2, u1): no
  * cancellation however near-singular I_m is. With it, the Cauchy-product recursion of the
@@ -248,8 +283,10 @@ static void integrate(sus_refatt *ra, double t1)
     }
     const long n = (long)steps;
     const long double h = n > 0 ? ((long double)t1 - ra->t) / n : 0.0L;
-    for (long k = 0; k < n; k++)
+    for (long k = 0; k < n; k++) {
         precise_step(&ra->chol, h, ra->u, ra->q);
+        closed_u(&ra->closed, ra->t + (k + 1) * h, ra->u); /* u's own series is not carried on */
+    }
     ra->t = t1;
 }
 
@@ -258,6 +295,7 @@ void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const doubl
     double w[2], q[4];
     ra->ex = ex;
     chol_init(&ra->chol, ex->model);
+    closed_init(&ra->closed, &ra->chol, ex);
     ra->h = sus_refatt_step(ex);
     ra->t = t0;
     ra->t0 = t0;
@@ -307,8 +345,10 @@ static int grid_state(sus_refatt *ra, double t1, long double q[4])
     const long double span = (long double)t1 - ra->t0, whole = floorl(span / ra->h);
     if (!(whole < 0x1p62L))
         return -1;
-    for (; ra->grid < whole; ra->grid++)
+    for (; ra->grid < whole; ra->grid++) {
         precise_step(&ra->chol, ra->h, ra->u, ra->q);
+        closed_u(&ra->closed, ra->t0 + (ra->grid + 1) * ra->h, ra->u);
+    }
     long double u[2] = {ra->u[0], ra->u[1]};
     memcpy(q, ra->q, sizeof ra->q);
     const long double rest = span - ra->grid * ra->h;

@@ -1,9 +1,11 @@
 /* Reference attitude: R(t) with R' = R w^(t), w(t) the solution of (ContDyn), integrated in long
  * double by a Taylor series of order SUS_REFATT_ORDER: the Cauchy-product recursions of (ContDyn),
  * in the Cholesky coordinates u = L^T w of exact.h (no cancellation however near-singular I_m
- * is), and of the quaternion kinematics q' = 1/2 q (x) (0, w). Past the time t_s where w(t) is the
- * steady rotation w* to within a total angle of 2^-64, R(t) = R(t_s) exp((t - t_s) w*^) in closed
- * form, so any time costs at most the steps to t_s.
+ * is), and of the quaternion kinematics q' = 1/2 q (x) (0, w). Each step starts from u(t) of the
+ * closed form in long double (refattitude.c), not from the last step's sum: the motion near the
+ * repelling rotation amplifies any error in u by up to 1 / (its distance from it). Past the time
+ * t_s where w(t) is the steady rotation w* to within a total angle of 2^-64, R(t) = R(t_s) exp((t -
+ * t_s) w*^) in closed form, so any time costs at most the steps to t_s.
  *
  * The step is proved, for every body and start, from the closed form: w(t) is analytic in the
  * strip |Im t| < pi / (2k) and bounded there by what the closed form gives, so Cauchy's estimate
@@ -38,10 +40,18 @@ typedef struct {
     long double l11, l21, l22, v[2], g;
 } sus_refatt_chol;
 
+/* The closed form of exact.h in long double, u(t) = L^T w(t) = r Rot(beta) sigma (sech s, tanh s),
+ * s = s0 + sigma k t; fixed: an equilibrium, u = u0. */
+typedef struct {
+    long double r, cb, sb, k, s0, sigma, u0[2];
+    int fixed;
+} sus_refatt_closed;
+
 typedef struct {
     const sus_exact *ex;
     sus_refatt_chol chol;
-    long double h; /* the proved step, sus_refatt_step */
+    sus_refatt_closed closed; /* u at every grid point, where each step starts */
+    long double h;            /* the proved step, sus_refatt_step */
     double t;
     long double u[2], q[4]; /* u = L^T w(t) and the attitude as a quaternion (not normalised) */
     double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */

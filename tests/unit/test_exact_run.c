@@ -43,8 +43,13 @@ static void tail_vs_reference(const body *b)
         return;
     sus_exact ex;
     sus_exact_init(&ex, &m, b->w0);
+    /* An equilibrium exactly: c(w) = I31 w1 + I32 w2 = 0 for w = 2^e (-I32, I31), with 2^e near
+     * the steady rotation's size (sus_exact_limit's w* is one to a rounding only, and from a
+     * rounding off the line the motion is not uniform to u on a near-singular I_m) */
     double wstar[2];
     sus_exact_limit(&ex, wstar);
+    const int e = (int)lround(log2(hypot(wstar[0], wstar[1]) / hypot(m.b[0], m.b[1])));
+    wstar[0] = ldexp(-m.b[1], e), wstar[1] = ldexp(m.b[0], e);
     const double wn = hypot(wstar[0], wstar[1]), scale = check_body_time(&m, b->w0);
 
     /* At t = 300, 1000, 3000 on the paper's body (in the body's own time elsewhere), all past the
@@ -87,6 +92,52 @@ static void tail_vs_reference(const body *b)
           b->name, d, bound);
 }
 
+/* A start 1e-14 off the repelling rotation (c(w0) ~ 1e-15): it stays there until s = s0 + sigma k t
+ * crosses 0, at t1 = |s0| / k (|s0| ~ 32), and at t2 = t1 + 1 / k is on its way. The closed form
+ * from w0 against the closed form restarted from w(t1), well away from both rotations: both give
+ * w(t2). (A time shift of the motion is a motion too, so this sees the evaluation, not s0 itself;
+ * s0 is checked against asinh(S / C) with c(w0) in long double, whose rounding, 2^-64 |I32 w2|,
+ * is a millionth of c(w0) here: 1e-5 covers it. With C formed from the rounded Cholesky
+ * coordinates, whose terms cancel to 1e-14 of their size, s0 could be off by u / 1e-14.)
+ * Each evaluation has s to a few roundings of the terms it adds, |s0| and k t: 8 u (|s0| + k t)
+ * each, and w moves by at most |w| per unit of s; w(t1)'s own rounding adds u |w|. The
+ * reference R from w0 against the reference restarted at t1 from R(t1): the two share the closed
+ * form's w, and R(t1) is rounded once to double: 16 u per entry covers that and a few roundings
+ * of each. */
+static void near_repelling(const sus_model *m)
+{
+    const double w0[2] = {0.1, -0.20000000000001};
+    const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    sus_exact ex, ex1;
+    double w1[2], wa[2], wb[2], R1[3][3], Ra[3][3], Rb[3][3];
+    sus_exact_init(&ex, m, w0);
+    const double t1 = fabs(ex.s0) / ex.k, t2 = t1 + 1.0 / ex.k;
+    sus_exact_omega(&ex, t1, w1);
+    sus_exact_omega(&ex, t2, wa);
+    sus_exact_init(&ex1, m, w1);
+    sus_exact_omega(&ex1, t2 - t1, wb);
+    const double spread = fabs(ex.s0) + ex.k * t2 + fabs(ex1.s0) + ex1.k * (t2 - t1) + 1.0;
+    const double dw = hypot(wa[0] - wb[0], wa[1] - wb[1]),
+                 bw = 8.0 * SUS_U * spread * hypot(wa[0], wa[1]);
+    sus_refatt ra, rb;
+    sus_refatt_init(&ra, &ex, 0.0, I3);
+    sus_refatt_advance(&ra, t1, R1);
+    sus_refatt_advance(&ra, t2, Ra);
+    sus_refatt_init(&rb, &ex1, 0.0, R1);
+    sus_refatt_advance(&rb, t2 - t1, Rb);
+    const double dR = sus_mat3_dist(Ra, Rb), bR = 16.0 * 3.0 * SUS_U;
+    /* S / C = |v| (cb u2 - sb u1) / c(w0), |v| = k l11 l22 / r (exact.c) */
+    const long double c = fmal(m->b[0], w0[0], (long double)m->b[1] * w0[1]),
+                      u1 = ex.l11 * (long double)w0[0] + ex.l21 * (long double)w0[1],
+                      u2 = ex.l22 * (long double)w0[1], vn = ex.k * ex.l11 * ex.l22 / ex.r;
+    const double ds = fabs(ex.s0 - (double)asinhl(vn * (ex.cb * u2 - ex.sb * u1) / c));
+    CHECK(fabs(ex.s0) > 30.0 && ds <= 1e-5 && dw <= bw && dR <= bR,
+          "w0 1e-14 off the repelling rotation: s0 = %.1f, %.1e from long double's (bound 1e-5); "
+          "w(%.0f) from w0 and from w(%.0f) agree to %.1e (bound %.1e), R(%.0f) to %.1e (bound "
+          "16 u per entry, %.1e)",
+          ex.s0, ds, t2, t1, dw, bw, t2, dR, bR);
+}
+
 int main(void)
 {
     for (int k = 0; k < BODIES_COUNT; k++) {
@@ -97,6 +148,7 @@ int main(void)
     sus_model m;
     char err[256];
     sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err);
+    near_repelling(&m);
 
     /* Steps near 2^63: no k + K overflow, rows 0, K, 2K, 3K and N. */
     {
