@@ -195,7 +195,7 @@ static const suslov_cli_option OPTIONS[] = {
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
      "method's dense output, k numbering them (default: the end of every\n"
-     "accepted step, k counting the steps); T/DT <= 2^63 - 1, and a time\n"
+     "accepted step, k counting the steps); T/DT < 2^62, and a time\n"
      "within 4 rounding units of T is T",
      set_every_time, NULL},
     {"--output", "FILE", "write to FILE (see FILES); - or no --output: stdout", set_output, NULL},

@@ -118,10 +118,11 @@ static void check_tol_run(suslov_args *a, const suslov_args_given *g)
         suslov_cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
         suslov_cli_die("--every-time must be positive, got %.17g", g->every_time);
-    /* The rows' count, as --steps's: at most 2^63 - 1 (the row index is a long). */
-    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p63))
-        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, more than %ld",
-                       g->T, g->every_time, g->T / g->every_time, LONG_MAX);
+    /* The rows' count: below 2^62, as the library counts them (driver.h, sus_run_tol), so that a
+     * count it refuses is refused here, as bad input, not met later as a failed run. */
+    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p62))
+        suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, 2^62 or more",
+                       g->T, g->every_time, g->T / g->every_time);
     a->tol = g->tol;
     a->t_end = g->T;
     a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;

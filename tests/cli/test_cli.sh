@@ -89,10 +89,12 @@ bad "--tol with --steps" $A --tol 1e-8 --steps 3
 bad "--tol without --time" $A --tol 1e-8
 bad "--tol with --every" $A --tol 1e-8 --time 1 --every 2
 bad "--every-time <= 0" $A --tol 1e-8 --time 1 --every-time 0
-# T/DT rows, like --steps, at most 2^63 - 1 (1e-300 asked for 1e301 rows and wrote for ever)
-bad_says "--every-time 1e-300 to --time 10" "asks for 1e+301 rows, more than 9223372036854775807" \
+# T/DT rows below 2^62, as the library counts them (driver.h): bad input, exit 2, not a failed run
+bad_says "--every-time 1e-300 to --time 10" "asks for 1e+301 rows, 2^62 or more" \
     $A --tol 1e-8 --time 10 --every-time 1e-300
-bad "--every-time 1e-19 to --time 1 (1e19 > 2^63 - 1 rows)" $A --tol 1e-8 --time 1 --every-time 1e-19
+bad "--every-time 1e-19 to --time 1 (1e19 > 2^62 rows)" $A --tol 1e-8 --time 1 --every-time 1e-19
+bad "--every-time 1.5e-19 to --time 1 (6.7e18 rows: 2^62 to 2^63)" $A --tol 1e-8 --time 1 \
+    --every-time 1.5e-19
 bad "taylor-adaptive without --tol" $A --time 1
 bad "--tol to a fixed-step method" --method rk4 --eps 0.1 --steps 3 --tol 1e-8
 bad "--every-time without --tol" --method rk4 --eps 0.1 --steps 3 --every-time 0.5
