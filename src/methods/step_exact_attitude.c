@@ -178,7 +178,8 @@ static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int
 
 /* A step of at most left from (t, w, q) whose estimate is at most rate h (top of the file): the
  * series over H, the step s H, q's rows rescaled to it (dense output reads them), q advanced.
- * Returns 0, or -1 for a series that overflowed (nothing advanced). */
+ * Returns 0, or -1 for a series that overflowed or a step shorter than a rounding of H (a
+ * tolerance far below round-off; nothing advanced). */
 static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2],
                        double q[4], double *h, double *est)
 {
@@ -194,6 +195,8 @@ static int taylor_step(sus_tol_work *wk, double t, double left, double rate, con
         s = 0.5 * q1 / q0;
     if (2.0 * B * pow(s, d) > rate * H) /* s^(d+1) B / (1 - s a) <= rate s H, 1 - s a >= 1/2 */
         s = pow(rate * H / (2.0 * B), 1.0 / d);
+    if (!(s >= SUS_U)) /* a tolerance no step of double can meet: fail, not crawl for ever */
+        return -1;
     double sn = 1.0;
     for (int j = 1; j <= d; j++) { /* q's rows: w's are read no more */
         sn *= s;

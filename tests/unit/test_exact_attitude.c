@@ -468,6 +468,37 @@ static void degree_rule(void)
           lo, hi);
 }
 
+static int count_row(void *ctx, const sus_row *row)
+{
+    (void)row;
+    ++*(long *)ctx;
+    return 0;
+}
+
+/* A tolerance far below round-off (the library takes any tol > 0): its steps would be shorter
+ * than a rounding of the longest allowed, and a run to t = 10 would take ~1e20 of them. It fails
+ * at its first step instead (SUS_RUN_STEP_FAILED), as taylor-adaptive does; 2^-52, the CLI's
+ * least, still runs. */
+static void unreachable_tol(void)
+{
+    sus_model m;
+    sus_model_init(&m, SUS_PAPER_INERTIA, NULL, 0);
+    sus_run_report rep;
+    long rows = 0;
+    /* a budget of 1000 steps, so that a crawl ends too, as a step limit, not a rejection */
+    sus_tol_config tc = {&m, &sus_step_exact_attitude_type, 1e-300, 10.0, 0.0, 1000};
+    const int rc = sus_run_tol(&tc, SUS_PAPER_OMEGA0, count_row, &rows, &rep);
+    const int status = rep.status;
+    const long step = rep.step;
+    tc.tol = 0x1p-52;
+    const int ok = sus_run_tol(&tc, SUS_PAPER_OMEGA0, count_row, &rows, &rep);
+    CHECK(rc == SUS_RUN_STEP_FAILED && status == SUS_STEPPER_REJECTED && step == 1 &&
+              ok == SUS_RUN_OK,
+          "tol 1e-300: the run fails at step %ld (1) with status %d (rejected, %d); tol 2^-52 "
+          "runs (%d)",
+          step, status, SUS_STEPPER_REJECTED, ok);
+}
+
 int main(void)
 {
     fast_omega_agrees();
@@ -478,5 +509,6 @@ int main(void)
     dense_ends_at_the_step();
     constant_w_is_one_rotation();
     degree_rule();
+    unreachable_tol();
     return check_summary("test_exact_attitude");
 }
