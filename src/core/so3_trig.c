@@ -17,7 +17,7 @@
  * leading term, adds about 1 u. So sin and cos are within about 2 u of the true values for
  * |t| < 2^20 pi/2 (t up to 1.6e6 rad), and sinc (below) within about 1 u relative for
  * |t| <= pi/4. Beyond 2^20 pi/2 the same operations still give the same bits everywhere, but
- * n P1 is rounded and the absolute error grows like |t| u. */
+ * n P1 is rounded and the absolute error grows like |t| u; from 2^52 on t is reduced first. */
 #include "so3.h"
 
 #include <math.h>
@@ -56,7 +56,12 @@ void sus_so3_sincos(double t, double *s, double *c)
         *s = *c = NAN;
         return;
     }
-    const double a = fabs(t), n = rint(a * TWO_OVER_PI);
+    /* From 2^52 on a rounding of t is a radian or more, so no angle is better than another; the
+     * exact remainder by 2 pi (fmod is exact, hence the same bits everywhere) keeps r in range,
+     * where the reduction below would leave |r| growing like |t| u until the polynomials
+     * overflow (at |t| near 1e33). */
+    const double a = fabs(t) < 0x1p52 ? fabs(t) : fmod(fabs(t), 2.0 * (2.0 * P1)),
+                 n = rint(a * TWO_OVER_PI);
     const double r = ((a - n * P1) - n * P2) - n * P3, z = r * r;
     const double sr = r * sinc_poly(z), cr = cos_poly(z);
     const int q = (int)fmod(n, 4.0); /* exact: n is a whole number */

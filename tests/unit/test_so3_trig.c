@@ -84,6 +84,14 @@ int main(void)
     sus_so3_sincos(0.0, &s, &c);
     CHECK(s == 0.0 && c == 1.0 && sus_so3_sinc(0.0) == 1.0 && sus_so3_sinc(1e-300) == 1.0,
           "sin 0 = 0, cos 0 = 1, sinc 0 = sinc 1e-300 = 1 exactly");
+    /* any finite t gives a point of the unit circle (2^52 and past: an angle of the circle) */
+    double worst_unit = 0.0;
+    for (double t = 1e15; t < 1e308; t *= 7.3) {
+        sus_so3_sincos(t, &s, &c);
+        worst_unit = fmax(worst_unit, isfinite(s) && isfinite(c) ? fabs(s * s + c * c - 1.0) : 1.0);
+    }
+    CHECK(worst_unit <= 4.0 * U, "sin^2 + cos^2 = 1 to 4 u for t = 1e15 .. 1e308: worst %.2g",
+          worst_unit);
     sus_so3_sincos(INFINITY, &s, &c);
     CHECK(isnan(s) && isnan(c) && isnan(sus_so3_sinc(NAN)), "sin, cos, sinc of inf or NaN: NaN");
     gsl_rng_free(rng);
