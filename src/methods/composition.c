@@ -8,14 +8,16 @@
 
 /* One substep of the base map: the midpoint DSP (Discretization) with step g eps, its step
  * equation solved as the midpoint step solves it; the stats add up the Newton iterations and keep
- * the worst residual. No lambda: (LagMult) is read at the substep that ends the step. */
+ * the worst residual, or a failing substep's. No lambda: (LagMult) is read at the substep that ends
+ * the step. */
 static int substep(const sus_model *m, double h, const double w[3], double x[3],
                    sus_stepper_stats *acc)
 {
     sus_stepper_stats st;
     const int status = sus_step_midpoint_solve(m, h, w, x, &st);
     acc->iterations += st.iterations;
-    if (!(st.residual <= acc->residual)) { /* also takes a NaN residual */
+    /* the worst residual, or the failing substep's own stats (a failure says where it is) */
+    if (status != SUS_STEPPER_OK || !(st.residual <= acc->residual)) { /* also a NaN residual */
         acc->residual = st.residual;
         acc->scale = st.scale;
         acc->det = st.det;
