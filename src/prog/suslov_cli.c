@@ -111,7 +111,7 @@ static void show_version(void *g, const suslov_cli_option *o, const char *v)
  * so no list of names is kept here. */
 static void more_methods(FILE *fp, int man)
 {
-    suslov_cli_line(fp, man, "%-12s %s", "exact",
+    suslov_cli_line(fp, man, "%-15s %s", "exact",
                     "closed-form w(t), lambda(w(t)) from (LagMult), reference R(t)");
     for (int i = 0; i < sus_step_method_count_all(); i++) {
         const sus_step_method *me = sus_step_method_get(i);
