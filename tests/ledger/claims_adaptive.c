@@ -5,8 +5,7 @@
  * global error; exact-attitude).
  *
  * TOL_LOCAL. Error against TOL at t = T_ERR: w and R against the long-double reference
- * (sus_refatt_precise, good to ~1e-17), for TOL = 10^-4 ... 10^-14, one a decade. What theory says,
- * fixed before measuring (the commit that added this file holds them as first written):
+ * (sus_refatt_precise, good to ~1e-17), for TOL = 10^-4 ... 10^-14, one a decade. What theory says:
  *   - each accepted step's estimated error is at most TOL, and the global error at t is a sum of
  *     N such local errors carried by the flow, so err <= F N TOL with F = 10, the factor by which
  *     the last-two-terms estimate may undershoot a tail whose ratio r is up to 0.9 (true tail
@@ -15,32 +14,31 @@
  *     uses its tolerance lands within two decades below it: err(R) >= 1e-2 TOL (the textbook rule
  *     lands 10-100x below, which is what this line is to catch);
  *   - proportionality: the slope of log err(R) against log TOL is 1 - 1/(p+1) at one order (N
- *     grows like TOL^{-1/(p+1)}) and 1 when N does not change: in [0.86, 1] for p = 6 ... 20; with
- *     0.15 for the order changing with TOL and the estimate's scatter, the band was [0.7, 1.15].
- *     Each edge is a line (the steepest body against the upper, the shallowest against the lower).
- *     With the order -ln(TOL)/2 + 1 one body lies above the upper edge; the band is as fixed
- *     before measuring. The 0.15 was an allowance, not an
- *     estimate; two parts of it can be estimated (written after measuring, so they are not the
- *     line's threshold): the controller's SAFETY^{p+1} falls by 12 log10(1/0.9) = 0.55 decades as p
- *     goes from 8 to 20 over the ten decades (+0.055 of slope), and an estimate whose undershoot
- *     varies within [1, F] moves a least-squares slope over 11 evenly spaced decades by at most
- *     log10(F) 15/110 = 0.14 (0.17 over the 9 left above round-off on some bodies). So the
- *     upper-edge line prints where its verdict turns and how many bodies lie inside the one-order
- *     theory alone;
+ *     grows like TOL^{-1/(p+1)}) and 1 when N does not change: in [0.86, 1] for p = 6 ... 20,
+ *     widened by 0.15 each way for the order changing with TOL and the estimate's scatter: the band
+ *     [0.7, 1.15]. Each edge is a line (the steepest body against the upper, the shallowest
+ *     against the lower). The 0.15 is an allowance, not an estimate: theory does not fix it. Two
+ *     of its parts can be estimated, and the estimates are not the line's threshold: the
+ *     controller's SAFETY^{p+1} falls by 12 log10(1/0.9) = 0.55 decades as p goes from 8 to 20
+ *     over the ten decades (+0.055 of slope), and an estimate whose undershoot varies within
+ *     [1, F] moves a least-squares slope over 11 evenly spaced decades by at most log10(F) 15/110
+ *     = 0.14 (0.17 over the 9 left above round-off on some bodies). Together they can exceed the
+ *     allowance, so the upper-edge line prints where its verdict turns and how many bodies lie
+ *     inside the one-order theory alone;
  *   - points within 100 N u of round-off (the rounding of N steps, a hundredfold) are left out
  *     of the slope and of the lower ratio bound (as in the order fits, claims_highorder.c).
- * w gets only the upper bound: first written with the lower bound and the slope too, against the
- * first point above, since w's local errors decay on the attracting rotation (its error at t = 50
- * is 1e-4 ... 1e-9 TOL: no lower bound and no slope follow from the estimate). Its bound is the
- * theory's and far above w's error, so it cannot see a weak w estimate; it does catch a w far from
- * the reference (a broken step or reference: the mutants of refattitude.c's w are killed by it).
+ * w gets only the upper bound: its local errors decay on the attracting rotation, far below the
+ * tolerance its steps spend, so no lower bound and no slope follow from the estimate. Its bound
+ * is the theory's and far above w's error, so it cannot see a weak w estimate; it does catch a w
+ * far from the reference (a broken step or reference: the mutants of refattitude.c's w are killed
+ * by it). u is SUS_U = 2^-52 in every bound of this file.
  * Every body runs in its own time: t k = T k_paper (t = T on the paper's body), the same phase of
  * its transient and the same number of its time scales 1/k.
  * Structure at T = 1e4 (every step's row): w3 = 0 exactly; |R^T R - I| <= 1e-14 (R is built afresh
  * from a unit quaternion: one rounding per entry, whatever N); |E - E0| <= 8 u e, e the sum of
  * |terms| of E (E0 itself where none cancels; far more on a near-singular I_m) (every step
  * scales w onto E(w_0) itself, so the rounding does not accumulate). *
- * TOL_GLOBAL, fixed from theory before measuring (each body in its own time, as above):
+ * TOL_GLOBAL, from theory (each body in its own time, as above):
  *   - dist(R, R_ref)(t k = 50 k_paper) <= TOL + (34 N + 32 sum h |w|) u for TOL = 10^-4 ... 10^-14:
  * the method's estimates of its N steps sum to at most TOL (its file's top); each step rounds |q|
  * by about 12 u (the quaternion product, the series' sum, the normalisation), dist <= 2 sqrt2 |dq|:

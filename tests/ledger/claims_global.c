@@ -8,37 +8,36 @@
  * w is compared with the closed form, R with the long-double reference (refattitude.h) at T; the
  * reference's own error on each body is a line below (against the independent Magnus-4).
  *
- * The rule, fixed before measuring on the other bodies: the per-curve window of claims_window.h
- * for every method, the longest run of one slope spanning an octave, fitted within 0.25 of p
- * (WINDOW_ORDER_TOL); where no run has one slope, the smallest-eps octave, >= p / 2. Its bound
- * assumes only that one term dominates the pre-asymptotic bend, C eps^p (1 + a eps + ...),
- * whatever a: a body changes a (its rate k and rotation |w| set it), which moves where the run of
- * one slope lies, not how far its fit can be from p. Candidates lie between the round-off of the
- * run (the larger of 1000 u and 100 N s u, times the size of the quantity along the motion) and
- * that size. A body whose error is at round-off at all but at most two steps of the grid (and
- * nowhere as large as the quantity) has no order to measure: it is named in the line, not
- * measured (a line with no body measured fails). w at order >= 10
- * with no run of one slope on a body (it reaches round-off first)
+ * The rule: the per-curve window of claims_window.h for every method, the run of one slope spanning
+ * an octave nearest the asymptotic regime, fitted within 0.25 of p (WINDOW_ORDER_TOL); where no run
+ * has one slope, the smallest-eps octave, >= p / 2. Its bound assumes only that one term dominates
+ * the pre-asymptotic bend, C eps^p (1 + a eps + ...), whatever a: a body changes a (its rate k and
+ * rotation |w| set it), which moves where the run of one slope lies, not how far its fit can be
+ * from p. Candidates lie between the round-off of the run (the larger of 1000 u and 100 N s u,
+ * times the size of the quantity along the motion; u = 2^-52, DBL_EPSILON) and that size. A body
+ * whose error is at round-off at all but at most two steps of the grid (and nowhere as large as the
+ * quantity) has no order to measure: it is named in the line, not measured (a line with no body
+ * measured fails). w at order >= 10 with no run of one slope on a body (it reaches round-off first)
  * leaves that body out of the w line of a method that is not a series: the SO(3) line, which
  * integrates w, carries the order.
  *
- * Two departures from the rules the paper's body had, both decided after measuring the family:
- *   - the Taylor methods were held to slope >= p - 1 over errors up to 1e-3 on a grid of 2^(1/2)
- *     (claims_highorder.c: a rule measured on the paper's body, without a derivation); on the
- *     family it fails: below p - 1 for taylor8 on one body, and no point at all between round-off
- *     and 1e-3 for taylor12's w on another. A series reaches round-off before its asymptotic
- *     regime (claims_highorder.c): its runs of one slope lie where h / rho is not small, steeper
- *     or shallower than p by more than the window's bound, which does not apply there. Its slope
- *     is taken as the lower estimate of claims_window.h (>= p / 2, which a series truncated at
- *     half its degree fails), and p is told from p - 1 by the local control of
- *     claims_highorder.c, on every body;
+ * Two kinds of curve need more than that rule:
+ *   - a truncated series (the Taylor methods) reaches round-off before its asymptotic regime
+ *     (claims_highorder.c): its runs of one slope lie where h / rho is not small, steeper or
+ *     shallower than p by more than the window's bound, which does not apply there. Its slope is
+ *     taken as the lower estimate of claims_window.h (>= p / 2, which a series truncated at half
+ *     its degree fails) on every body, and p is told from p - 1 by the local control of
+ *     claims_highorder.c;
  *   - a first-order reconstruction (cayley) on a body whose rotation is fast against its transient
  *     (|w| / k twice the paper's body's on body2) carries a global error of two parts: the
  *     first-order part grows with the transient only, the second-order one with the rotation over
- *     all of T. At the extensions' phase (k T = 50 k_paper) the second dominates down to steps far
- *     below the grid's, so the paper's methods keep claims.c's phase, k T = 10 k_paper, where
- *     the first-order part shows within the grid; their curves run to N = 2^15. claims_window.h's
- *     rule now takes the run of one slope nearest the asymptotic regime (see there).
+ *     all of T, so a longer T moves the first-order regime to smaller steps. The paper's methods
+ *     are measured at claims.c's phase, k T = 10 k_paper, with curves to N = 2^15; at the
+ *     extensions' phase (k T = 50 k_paper) the second-order part dominates on body2 down to steps
+ *     below the grid's. Theory gives the direction, not which phase shows the first-order regime
+ *     within the grid: that phase was chosen with body2's curves known, and it governs the
+ *     global-order-bodies-* and global-so3-order-bodies-* lines. claims_window.h's preference for
+ *     the run of one slope nearest the asymptotic regime serves the same curves (see there).
  * Each line reports the body nearest to failing it (the least margin to its bound). */
 #include "claims_global.h"
 

@@ -126,9 +126,10 @@ static void taylor_control(const sus_step_method *me, int p)
 
 /* Structure over a long run at T = 1e4, 10^5 steps of eps = 0.1. Yardsticks: w3 = 0 exactly (the
  * steps never compute it); where the method says it conserves E, E kept to round-off: at most one
- * unit roundoff of E per midpoint substep or per Taylor step (N s u E, the worst case of a drift
- * that never cancels); R^T R - I: the bound of its attitude form (claims_methods.h: one rounding
- * for a unit quaternion, whatever N). */
+ * unit roundoff of E per midpoint substep or per Taylor step (N s (u/2) E with u = SUS_U = 2^-52:
+ * the unit roundoff is u/2 = 2^-53, DBL_EPSILON / 2; the worst case of a drift that never
+ * cancels); R^T R - I: the bound of its attitude form (claims_methods.h: one rounding for a unit
+ * quaternion, whatever N). */
 static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_method *me)
 {
     const long N = 100000L;
@@ -140,7 +141,7 @@ static void long_run(const sus_model *m, const sus_exact *ex, const sus_step_met
     snprintf(
         what, sizeof what,
         "$\\max |E - E_0|$ over %ld steps of $\\varepsilon = %g$ ($T = 10^4$), %s; bound $N s\\,u "
-        "E_0 = %s$ ($s = %d$ substeps)",
+        "E_0 / 2 = %s$ ($s = %d$ substeps)",
         N, 1e4 / (double)N, me->type->name, notation_g(yard, 2).s, me->type->desc.substeps);
     if (me->type->desc.conserves_energy)
         ledger_add_bound(id, "(extension)", what, ok ? l.energy : INFINITY, yard, 0,

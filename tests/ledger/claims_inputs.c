@@ -174,7 +174,7 @@ void inputs_claims(const sus_model *m)
     ledger_add("reference-inputs-decimal", "(method)",
                "$\\max_{ij} |R_\\mathrm{dec}(50) - R_\\mathrm{dbl}(50)|_{ij}$ in binary128: the "
                "paper's inputs read as exact decimals against the doubles nearest them (each off "
-               "by $\\le u$ relative); bound $8\\,u\\,\\Theta$, $\\Theta = T |\\omega|_{\\max}$ "
-               "the angle turned",
+               "by $\\le u = 2^{-53}$ relative); bound $8\\,u\\,\\Theta$, "
+               "$\\Theta = T |\\omega|_{\\max}$ the angle turned",
                max_entry_diff(R_dec, R_dbl), 0.0, 8.0 * U_DOUBLE * theta, LEDGER_EXTENSION);
 }
