@@ -24,3 +24,13 @@ int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps,
         sus_reconstruct(recon, eps, att, w, w_next);
     return status;
 }
+
+double sus_step_end(double t, double h, double stop)
+{
+    if (!(h < stop - t))
+        return stop;
+    double end = t + h;
+    if (end - t > h) /* rounded up: h' > h could leave the radius or the tolerance the step met */
+        end = nextafter(end, t);
+    return end < stop ? end : stop;
+}

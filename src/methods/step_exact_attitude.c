@@ -176,15 +176,16 @@ static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int
     return H * fmax(1.0 / rho, wk->w_max / (2.0 * (d + 2)));
 }
 
-/* A step of at most left from (t, w, q) whose estimate is at most rate h (top of the file): the
- * series over H, the step s H, q's rows rescaled to it (dense output reads them), q advanced.
- * Returns 0, or -1 for a series that overflowed or a step shorter than a rounding of H (a
- * tolerance far below round-off; nothing advanced). */
-static int taylor_step(sus_tol_work *wk, double t, double left, double rate, const double w[2],
-                       double q[4], double *h, double *est)
+/* A step from (t, w, q) to at most stop whose estimate is at most rate h (top of the file): the
+ * series over H, the step s H shortened to the one the clock represents (stepper.h: its end *t_next
+ * is the row's time to the bit, h = *t_next - t), q's rows rescaled to it (dense output reads
+ * them), q advanced. Returns 0, or -1 for a series that overflowed or a step shorter than a
+ * rounding of H (a tolerance far below round-off; nothing advanced). */
+static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, const double w[2],
+                       double q[4], double *h, double *t_next, double *est)
 {
     const int d = wk->deg->order;
-    const double rho = radius(wk, t), H = fmin(left, RADIUS_SHARE * rho);
+    const double rho = radius(wk, t), H = fmin(stop - t, RADIUS_SHARE * rho);
     wk->deg->series_of(wk->m, H, w, &wk->ts);
     const double a = decay_per_degree(wk, H, rho, d);
     const double q2 = quat_row(&wk->ts, d - 2), q1 = quat_row(&wk->ts, d - 1),
@@ -197,13 +198,15 @@ static int taylor_step(sus_tol_work *wk, double t, double left, double rate, con
         s = pow(rate * H / (2.0 * B), 1.0 / d);
     if (!(s >= SUS_U)) /* a tolerance no step of double can meet: fail, not crawl for ever */
         return -1;
+    *t_next = sus_step_end(t, s * H, stop);
+    *h = *t_next - t;
+    s = *h / H; /* at most the s above, but for a rounding on reaching stop */
     double sn = 1.0;
     for (int j = 1; j <= d; j++) { /* q's rows: w's are read no more */
         sn *= s;
         wk->ts.P[j] *= sn;
         wk->ts.M[j] *= sn;
     }
-    *h = s * H;
     *est = sn * s * B / (1.0 - s * a);
     if (!isfinite(B))
         return -1;
@@ -258,7 +261,7 @@ static void ea_free(sus_tol_work *wk) { free(wk); }
 static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                    sus_attitude *att, sus_stepper_stats *st)
 {
-    double q[4], h = t_end - *t, est = 0.0, rate = 0.0, stop = t_end;
+    double q[4], h = t_end - *t, t_next = t_end, est = 0.0, rate = 0.0;
     int failed = 0;
     sus_quat_of_attitude(att, q);
     memcpy(wk->q0, q, sizeof q);
@@ -269,17 +272,16 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     } else {
         wk->kind = KIND_TAYLOR;
         rate = rate_of(wk, *t, t_end);
-        stop = stop_of(wk, t_end);
-        failed = taylor_step(wk, *t, stop - *t, rate, w, q, &h, &est);
+        failed = taylor_step(wk, *t, stop_of(wk, t_end), rate, w, q, &h, &t_next, &est);
     }
     *st =
         (sus_stepper_stats){.residual = DIST_PER_Q * est, .scale = DIST_PER_Q * rate * h, .det = h};
-    if (failed || !(*t + h > *t))
+    if (failed || !(h > 0.0))
         return SUS_STEPPER_REJECTED;
     wk->spent += est;
     wk->t0 = *t;
     wk->h = h;
-    *t = h < stop - *t ? *t + h : stop; /* exactly at t_end, or at the tail's start */
+    *t = t_next; /* exactly at t_end, or at the tail's start */
     state_at(wk, *t, q, w, lambda, att);
     return SUS_STEPPER_OK;
 }

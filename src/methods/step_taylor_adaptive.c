@@ -244,7 +244,7 @@ static double within_radius(const sus_model *m, const double w[2], double h)
 }
 
 /* The accepted step: w, the quaternion and t advance, and the next step is proposed. */
-static void accept(sus_tol_work *wk, double h, double err, double t_end, double *t, double w[3],
+static void accept(sus_tol_work *wk, double h, double err, double t_next, double *t, double w[3],
                    double *lambda, sus_attitude *att)
 {
     const int p = wk->order->p;
@@ -254,7 +254,7 @@ static void accept(sus_tol_work *wk, double h, double err, double t_end, double 
     sus_quat_mul(q1, wk->q0, dq);
     sus_quat_to_attitude(q1, att);
     *lambda = sus_lagmult(wk->m, w);
-    *t = h < t_end - *t ? *t + h : t_end;
+    *t = t_next;
     wk->h = h;
     wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
 }
@@ -359,8 +359,17 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
         err = isfinite(err) ? rescaled_try(wk, p, s) : wk->order->try_step(wk, h * s, w);
         h *= s;
     }
-    *st = (sus_stepper_stats){.iterations = tries, .residual = err, .scale = wk->tol, .det = h};
-    accept(wk, h, err, t_end, t, w, lambda, att);
+    /* The series is summed over the step the clock represents (stepper.h): h' <= h (but for a
+     * rounding on reaching t_end), so the try's estimate still bounds it, and the attitude's time is the row's to the bit; adding h to t
+     * instead lost u t per step, a phase error growing like t^2 whatever tol. */
+    const double t_next = sus_step_end(*t, h, t_end), h_clock = t_next - *t;
+    *st = (sus_stepper_stats){
+        .iterations = tries, .residual = err, .scale = wk->tol, .det = h_clock};
+    if (!(h_clock > 0.0)) /* h below an ulp of t: the clock cannot advance */
+        return SUS_STEPPER_REJECTED;
+    if (h_clock != h)
+        rescaled_try(wk, p, h_clock / h);
+    accept(wk, h_clock, err, t_next, t, w, lambda, att);
     return SUS_STEPPER_OK;
 }
 
