@@ -451,6 +451,38 @@ static void constant_w_is_one_rotation(void)
           n, err, bound);
 }
 
+/* A long transient (a slow approach, k ~ 1e-5 |w|, and |w| ~ 1e3: some 3e5 steps to t = 200 at
+ * the tightest TOL) against the long-double reference: the steps' time and the rows' must agree,
+ * else each step loses the rounding of t + h, u t |w| in angle, and the error grows like N u T |w|
+ * whatever TOL. The allowance: TOL, the conditioning COND u T |w|max (every step's angle rounded,
+ * as in the run allowance above), and the steps' other roundings as a random walk, 3 ROUND_STEP u
+ * sqrt N (independent roundings to nearest, three deviations), not ROUND_STEP u N. */
+static void long_transient(void)
+{
+    const double I[9] = {1, 0, 0, 0, 1, 0, 1e-5, 1e-5, 1}, w0[2] = {1000, -999}, T = 200.0,
+                 I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    sus_model m;
+    sus_exact ex;
+    sus_refatt ra;
+    double R[3][3], Rr[3][3];
+    if (sus_model_init(&m, I, NULL, 0) != 0 || sus_exact_init(&ex, &m, w0) != 0) {
+        CHECK(0, "the slow body");
+        return;
+    }
+    sus_refatt_init(&ra, &ex, 0.0, I3);
+    sus_refatt_advance(&ra, T, Rr);
+    const double tols[2] = {1e-12, 3e-16}, w_max = w_scale(&ex);
+    for (int i = 0; i < 2; i++) {
+        const long n = steps_to(&m, w0, tols[i], T, R);
+        const double err = sus_so3_dist(R, Rr),
+                     bound = tols[i] + COND * U * T * w_max + 3.0 * ROUND_STEP * U * sqrt((double)n);
+        CHECK(n > 0 && err <= bound,
+              "slow body, |w0| = %.0f, TOL %.0e: %ld steps to t = %g, dist(R, R_ref) = %.3g <= "
+              "TOL + COND u T |w|max + 3 ROUND_STEP u sqrt N = %.3g",
+              hypot(w0[0], w0[1]), tols[i], n, T, err, bound);
+    }
+}
+
 static void degree_rule(void)
 {
     int mono = 1, lo = 99, hi = 0;
@@ -508,6 +540,7 @@ int main(void)
     tail_is_one_step();
     dense_ends_at_the_step();
     constant_w_is_one_rotation();
+    long_transient();
     degree_rule();
     unreachable_tol();
     return check_summary("test_exact_attitude");

@@ -235,6 +235,58 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
           name, T, dw, d, c.last.k);
 }
 
+/* exp(T w^) for w = (w1, w2, 0) in long double (Rodrigues): the angle T |w| carries a few
+ * long-double roundings, below 1e-13 at T |w| = 2^20 on x86 (64-bit significands). */
+static void rotation_ld(const double w[2], double T, double R[3][3])
+{
+    const long double n = hypotl(w[0], w[1]), th = (long double)T * n, c = cosl(th),
+                      s = sinl(th), x = w[0] / n, y = w[1] / n;
+    const long double E[3][3] = {{c + (1 - c) * x * x, (1 - c) * x * y, s * y},
+                                 {(1 - c) * x * y, c + (1 - c) * y * y, -s * x},
+                                 {-s * y, s * x, c}};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[i][j] = (double)E[i][j];
+}
+
+/* A fast steady rotation, c(w*) = 0 exactly (w* = +-2^j (-I32, I31), |w*| in [2^10, 2^11)), the
+ * repelling one (no tail jump: every step a series, more than 1e4 of them), turned
+ * through T |w*| = 2^20 radians at TOL 1e-12 and 2^17 at TOL 3e-16 (some 1e5 steps each): R(T) is
+ * exp(T w*^) to 2 sqrt2 N TOL (each step's quaternion error at most its estimate, the flow keeping
+ * norms, dist <= 2 sqrt2 |dq|), plus ROUND_ANGLE u T |w*| (each step's angle rounded relative to
+ * itself: step_taylor_adaptive.c's conditioning, rho = 1 as w stays w* exactly) and the steps'
+ * other roundings as a random walk, 3 ROUND_STEP u sqrt N (independent roundings to nearest).
+ * A clock that adds h to t in place loses u t per step instead, N u T |w*| in all, whatever TOL. */
+#define ROUND_ANGLE 16.0
+#define ROUND_STEP 34.0 /* dist per step: the product q (x) dq, the sums, the norm (exact-attitude's) */
+static void fast_steady_rotation(const sus_model *m, const double w0[2], const char *name)
+{
+    const double tols[2] = {1e-12, 3e-16}, turns[2] = {0x1p20, 0x1p17};
+    const int j = 10 - ilogb(hypot(m->b[0], m->b[1]));
+    sus_exact ex;
+    double wl[2];
+    sus_exact_init(&ex, m, w0);
+    sus_exact_limit(&ex, wl); /* the attracting direction: w* is taken on the other side */
+    const double sg = -m->b[1] * wl[0] + m->b[0] * wl[1] > 0.0 ? -1.0 : 1.0,
+                 ws[2] = {sg * ldexp(-m->b[1], j), sg * ldexp(m->b[0], j)};
+    for (int i = 0; i < 2; i++) {
+        rows_ctx c;
+        sus_run_report rep;
+        double R[3][3];
+        const double T = turns[i] / hypot(ws[0], ws[1]);
+        const int rc = run(m, ws, tols[i], T, 0.0, &c, &rep);
+        rotation_ld(ws, T, R);
+        const double n = (double)c.last.k, err = sus_so3_dist(R, c.last.R),
+                     bound = 2.8284271247461903 * n * tols[i] + ROUND_ANGLE * SUS_U * turns[i] +
+                             3.0 * ROUND_STEP * SUS_U * sqrt(n);
+        CHECK(rc == SUS_RUN_OK && sus_c(m, ws) == 0.0 && c.last.t == T && n > 1e4 && err <= bound,
+              "%s: fast steady rotation |w*| = %.0f, T |w*| = 2^%d, TOL %.0e: %.0f steps, "
+              "dist(R, exp(T w*^)) = %.3g <= 2 sqrt2 N TOL + %g u T |w*| + 3 %g u sqrt N = %.3g",
+              name, hypot(ws[0], ws[1]), ilogb(turns[i]), tols[i], n, err, ROUND_ANGLE,
+              ROUND_STEP, bound);
+    }
+}
+
 /* Rows at requested times, structure, and dense output agreeing with the steps it lies between. */
 static void rows_and_structure(const sus_model *m, const double w0[2], const char *name, double s)
 {
@@ -389,6 +441,7 @@ int main(void)
         rejection(&m, b.w0, b.name, tol);
         rescaled_retry(&m, b.w0, b.name, tol);
         vanishing_rows(&m, b.w0, b.name, s);
+        fast_steady_rotation(&m, b.w0, b.name);
         rows_and_structure(&m, b.w0, b.name, s);
         dense_accuracy(&m, b.w0, b.name, s);
         estimate_vs_truth(&m, b.w0, b.name);
