@@ -167,15 +167,14 @@ int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps,
                      sus_stepper_stats *stats);
 
 /* The end of a step of at most h > 0 from t >= 0 (t < stop), the clock's own: stop when h reaches
- * it, else fl(t + h), or the double below it when that rounded up, so that a method which integrates
- * exactly h' = end - t (computed) steps no further than h (but to stop, when t + h rounds there)
- * and labels its state with the very time it reached.
- * Why h' is that difference to the bit: end >= t >= 0 are both multiples of ulp(t), so end - t is
- * one too, and it is a double while below 2^53 ulp(t), in particular whenever end <= 2t
- * (Sterbenz). Only a step longer than t (the first few of a run: each more than doubles t) or a
- * last step to stop from below stop/2 may round h', by at most u h': a rounding of the step's own
- * length, where adding h to t in place rounds by u t, which summed over N steps grows like
- * N u t. */
+ * it, else fl(t + h), or the double below it when that rounded up, so that a method which
+ * integrates exactly h' = end - t (computed) steps no further than h (but to stop, when t + h
+ * rounds there) and labels its state with the very time it reached. Why h' is that difference to
+ * the bit: end >= t >= 0 are both multiples of ulp(t), so end - t is one too, and it is a double
+ * while below 2^53 ulp(t), in particular whenever end <= 2t (Sterbenz). Only a step longer than t
+ * (the first few of a run: each more than doubles t) or a last step to stop from below stop/2 may
+ * round h', by at most u h': a rounding of the step's own length, where adding h to t in place
+ * rounds by u t, which summed over N steps grows like N u t. */
 double sus_step_end(double t, double h, double stop);
 
 #ifdef __cplusplus

@@ -360,11 +360,12 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
         h *= s;
     }
     /* The series is summed over the step the clock represents (stepper.h): h' <= h (but for a
-     * rounding on reaching t_end), so the try's estimate still bounds it, and the attitude's time is the row's to the bit; adding h to t
-     * instead lost u t per step, a phase error growing like t^2 whatever tol. */
+     * rounding on reaching t_end), so the try's estimate still bounds it, and the attitude's time
+     * is the row's to the bit; adding h to t instead lost u t per step, a phase error growing like
+     * t^2 whatever tol. */
     const double t_next = sus_step_end(*t, h, t_end), h_clock = t_next - *t;
-    *st = (sus_stepper_stats){
-        .iterations = tries, .residual = err, .scale = wk->tol, .det = h_clock};
+    *st =
+        (sus_stepper_stats){.iterations = tries, .residual = err, .scale = wk->tol, .det = h_clock};
     if (!(h_clock > 0.0)) /* h below an ulp of t: the clock cannot advance */
         return SUS_STEPPER_REJECTED;
     if (h_clock != h)

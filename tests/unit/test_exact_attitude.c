@@ -474,8 +474,8 @@ static void long_transient(void)
     const double tols[2] = {1e-12, 3e-16}, w_max = w_scale(&ex);
     for (int i = 0; i < 2; i++) {
         const long n = steps_to(&m, w0, tols[i], T, R);
-        const double err = sus_so3_dist(R, Rr),
-                     bound = tols[i] + COND * U * T * w_max + 3.0 * ROUND_STEP * U * sqrt((double)n);
+        const double err = sus_so3_dist(R, Rr), bound = tols[i] + COND * U * T * w_max +
+                                                        3.0 * ROUND_STEP * U * sqrt((double)n);
         CHECK(n > 0 && err <= bound,
               "slow body, |w0| = %.0f, TOL %.0e: %ld steps to t = %g, dist(R, R_ref) = %.3g <= "
               "TOL + COND u T |w|max + 3 ROUND_STEP u sqrt N = %.3g",

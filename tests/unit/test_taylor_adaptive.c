@@ -239,8 +239,8 @@ static void vanishing_rows(const sus_model *m, const double w0[2], const char *n
  * long-double roundings, below 1e-13 at T |w| = 2^20 on x86 (64-bit significands). */
 static void rotation_ld(const double w[2], double T, double R[3][3])
 {
-    const long double n = hypotl(w[0], w[1]), th = (long double)T * n, c = cosl(th),
-                      s = sinl(th), x = w[0] / n, y = w[1] / n;
+    const long double n = hypotl(w[0], w[1]), th = (long double)T * n, c = cosl(th), s = sinl(th),
+                      x = w[0] / n, y = w[1] / n;
     const long double E[3][3] = {{c + (1 - c) * x * x, (1 - c) * x * y, s * y},
                                  {(1 - c) * x * y, c + (1 - c) * y * y, -s * x},
                                  {-s * y, s * x, c}};
@@ -258,7 +258,8 @@ static void rotation_ld(const double w[2], double T, double R[3][3])
  * other roundings as a random walk, 3 ROUND_STEP u sqrt N (independent roundings to nearest).
  * A clock that adds h to t in place loses u t per step instead, N u T |w*| in all, whatever TOL. */
 #define ROUND_ANGLE 16.0
-#define ROUND_STEP 34.0 /* dist per step: the product q (x) dq, the sums, the norm (exact-attitude's) */
+/* dist per step: the product q (x) dq, the sums, the norm (test_exact_attitude's count) */
+#define ROUND_STEP 34.0
 static void fast_steady_rotation(const sus_model *m, const double w0[2], const char *name)
 {
     const double tols[2] = {1e-12, 3e-16}, turns[2] = {0x1p20, 0x1p17};
@@ -282,8 +283,8 @@ static void fast_steady_rotation(const sus_model *m, const double w0[2], const c
         CHECK(rc == SUS_RUN_OK && sus_c(m, ws) == 0.0 && c.last.t == T && n > 1e4 && err <= bound,
               "%s: fast steady rotation |w*| = %.0f, T |w*| = 2^%d, TOL %.0e: %.0f steps, "
               "dist(R, exp(T w*^)) = %.3g <= 2 sqrt2 N TOL + %g u T |w*| + 3 %g u sqrt N = %.3g",
-              name, hypot(ws[0], ws[1]), ilogb(turns[i]), tols[i], n, err, ROUND_ANGLE,
-              ROUND_STEP, bound);
+              name, hypot(ws[0], ws[1]), ilogb(turns[i]), tols[i], n, err, ROUND_ANGLE, ROUND_STEP,
+              bound);
     }
 }
 
