@@ -5,9 +5,9 @@
  * Why a Taylor method's global slope is only a lower estimate there: its windows reach h ~ 3 on
  * the paper's body, h / rho ~ 0.3 (rho ~ 10.8, the series' radius in t), where the corrections
  * bend the slope by a few tenths; at orders 10, 12, 16 the asymptotic regime lies below double
- * round-off (at order 12 the error drops from 1e-2 to 1e-13 within a factor 3 of eps, in the
- * pre-asymptotic range where it behaves like (h / rho)^p with corrections of relative size
- * h / rho). p is told from p - 1 by taylor_control below, on every body. */
+ * round-off (at order 12 the error falls from its largest to round-off within a few-fold of eps,
+ * steeper than eps^12: the pre-asymptotic range, where it behaves like (h / rho)^p with corrections
+ * of relative size h / rho). p is told from p - 1 by taylor_control below, on every body. */
 #include "claims_highorder.h"
 
 #include "claims_bodies.h"

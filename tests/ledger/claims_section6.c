@@ -146,7 +146,7 @@ static void reduced_lines(const sus_step_method *me, const expected_order *eo,
     unmeasured += !claims_order_or_floor(id, ref, q, d->eps, d->sup_g, d->loc, NJ6, FLOOR_G, 1, 0.0,
                                          eo->p, truth);
     /* xi3' is zero by the elimination up to u |xi'| per evaluation, and |xi'| eps <= |w| over a
-     * period here, so xi3 stays at a few u |w| (u |w| = 1.8e-16): 1e-15 is ~6 u |w| */
+     * period here, so xi3 stays at a few u |w| (u = 2^-52, |w0| = 0.64): 1e-15 is ~7 u |w| */
     snprintf(id, sizeof id, "sec6-constraint-%s", st->name);
     snprintf(
         q, sizeof q,

@@ -32,8 +32,8 @@
  * 0.1% above 1000 u times the quantity's size), which tilts a fit over an octave by at most 3.6 x
  * 0.01 = 0.036. A span below 0.10 thus keeps the fit within 2.11 x 0.10 + 0.036 = 0.247 of the
  * order, and such a run cannot straddle two orders. This assumes one term dominates the bend; where
- * two of opposite sign compete, the slope can pause on its way to p (claims_highorder.c's exp-mid
- * comp8-kl: chords 7.86-7.91 at eps 2-4), which the preference for the run reaching the smallest
+ * two of opposite sign compete, the slope can pause below p on its way there (claims_highorder.c's
+ * exp-mid comp8-kl at its largest steps), which the preference for the run reaching the smallest
  * eps only mitigates. */
 #ifndef SUSLOV_CLAIMS_WINDOW_H
 #define SUSLOV_CLAIMS_WINDOW_H
