@@ -125,13 +125,17 @@ static inline int decide(newton_state *s, double *x, int n, sus_stepper_stats *s
     return -1;
 }
 
+/* Always inlined: with G known where it is inlined, its residual inlines into the loop. */
+static inline int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,
+                               const double w[2], const double *x0, double *x,
+                               sus_stepper_stats *st, int maxit) __attribute__((always_inline));
+
 /* (REGLOC): Newton on the step equation; the matrix it inverts is, for x = w^{k+1}, the
- * upper-left block of (REGLOC), and a singular one ends the step as a failure. */
-/* Newton as described in newton.h from x0 (which may be x), the iterates in x, at most maxit
- * corrections. */
-static inline __attribute__((always_inline)) int
-newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps, const double w[2],
-             const double *x0, double *x, sus_stepper_stats *st, int maxit)
+ * upper-left block of (REGLOC), and a singular one ends the step as a failure. Newton as
+ * described in newton.h from x0 (which may be x), the iterates in x, at most maxit corrections. */
+static inline int newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,
+                               const double w[2], const double *x0, double *x,
+                               sus_stepper_stats *st, int maxit)
 {
     double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS];
     /* Field by field, not an initializer that zeroes both points' SUS_MAX_UNKNOWNS entries on every
