@@ -57,8 +57,8 @@ void sus_so3_sincos(double t, double *s, double *c)
         return;
     }
     /* From 2^52 on a rounding of t is a radian or more, so no angle is better than another; the
-     * exact remainder by 2 pi (fmod is exact, hence the same bits everywhere) keeps r in range,
-     * where the reduction below would leave |r| growing like |t| u until the polynomials
+     * remainder by 4 P1, 2 pi to 33 bits (fmod is exact, hence the same bits everywhere), keeps r
+     * in range, where the reduction below would leave |r| growing like |t| u until the polynomials
      * overflow (at |t| near 1e33). */
     const double a = fabs(t) < 0x1p52 ? fabs(t) : fmod(fabs(t), 2.0 * (2.0 * P1)),
                  n = rint(a * TWO_OVER_PI);

@@ -1,7 +1,7 @@
 #include "sensitivity.h"
 
+#include "implicit_step.h"
 #include "mat3.h"
-#include "newton.h"
 #include "reconstruct.h"
 #include "so3.h"
 #include "unreduced.h"
@@ -53,21 +53,6 @@ static double record(const sus_exact *ex, const sus_model *m, double t, double t
     return err;
 }
 
-/* The root of the step equation on the branch continued in eps from 0 (newton.h's continuation,
- * the one the steps fall back on). Returns 0 with that w^{k+1} in x. */
-static int continued_root(const sus_model *m, const sus_stepper_type *st, double eps,
-                          const double w[2], double x[2])
-{
-    const sus_step_equation *eq = st->equation;
-    double root[SUS_MAX_UNKNOWNS];
-    sus_stepper_stats s;
-    if (sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL) !=
-        SUS_STEPPER_OK)
-        return -1;
-    eq->result(m, eps, w, root, x);
-    return 0;
-}
-
 /* A step that failed: the solve did not converge, a value is not finite, the block's determinant
  * reached or passed zero, or the root is not the one continuation from eps = 0 reaches (two roots
  * of one equation are apart by O(|w|); the same root agrees to round-off times the block's
@@ -87,7 +72,7 @@ static int step_failed(int status, const double w[3], const double x[3], const s
         return 1;
     if (s->continued)
         return 0;
-    if (continued_root(m, st, eps, w, xc) != 0)
+    if (sus_step_branch_root(st->equation, m, eps, w, xc) != SUS_STEPPER_OK)
         return 1;
     return hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + hypot(w[0], w[1]));
 }

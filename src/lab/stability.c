@@ -1,5 +1,6 @@
 #include "stability.h"
 
+#include "implicit_step.h"
 #include "newton.h"
 #include "orderfit.h"
 
@@ -10,22 +11,6 @@
 
 const char *const SUS_LAB_STAB_NAMES[SUS_LAB_STAB_NCLASS] = {"good", "wrong limit", "blow-up",
                                                              "solver failure", "regularity lost"};
-
-/* The physical branch: the root continued in eps from 0 (where it is the trivial one) to eps,
- * newton.h's continuation. Returns SUS_STEPPER_OK with w^{k+1} of that root in x, or the
- * continuation's failure: SUS_STEPPER_SINGULAR at a fold. */
-static int continue_root(const sus_model *m, const sus_stepper_type *st, double eps,
-                         const double w[2], double x[2])
-{
-    double root[SUS_MAX_UNKNOWNS];
-    sus_stepper_stats s;
-    const sus_step_equation *eq = st->equation;
-    const int rc =
-        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL);
-    if (rc == SUS_STEPPER_OK)
-        eq->result(m, eps, w, root, x);
-    return rc;
-}
 
 /* hypot(x) > limit, for finite x. The computed hypot is within an ulp of |x|_2 <= sqrt(2) |x|_inf,
  * so below 2 |x|_inf: where 2 |x|_inf <= limit the answer is no without the call. */
@@ -48,11 +33,11 @@ static int step_class(const sus_model *m, const sus_stepper_type *st, double eps
     if (!isfinite(x[0]) || !isfinite(x[1]) || beyond(x, SUS_LAB_STAB_BLOWUP_FACTOR * r0))
         return SUS_LAB_STAB_BLOWUP;
     /* A step whose root is already the continued branch (s->continued: the step ran the very call
-     * continue_root makes, sus_step_newton_branch of its own equation with these m, eps, w, a
-     * function of them alone) would be compared with itself, bit for bit: nothing to check. */
+     * sus_step_branch_root makes, sus_step_newton_branch of its own equation with these m, eps, w,
+     * a function of them alone) would be compared with itself, bit for bit: nothing to check. */
     if (check_branch && st->equation && !s->continued) {
         double xc[2];
-        const int rc = continue_root(m, st, eps, w, xc);
+        const int rc = sus_step_branch_root(st->equation, m, eps, w, xc);
         if (rc != SUS_STEPPER_OK)
             return rc == SUS_STEPPER_SINGULAR ? SUS_LAB_STAB_REGULARITY : SUS_LAB_STAB_SOLVER;
         if (hypot(xc[0] - x[0], xc[1] - x[1]) > 1e-8 * (hypot(x[0], x[1]) + r0))

@@ -15,6 +15,18 @@ int sus_step_implicit_solve(const sus_step_equation *eq, const sus_model *m, dou
     return status;
 }
 
+int sus_step_branch_root(const sus_step_equation *eq, const sus_model *m, double eps,
+                         const double w[2], double w_next[2])
+{
+    double root[SUS_MAX_UNKNOWNS];
+    sus_stepper_stats s;
+    const int rc =
+        sus_step_newton_branch(eq->residual, eq->guess, eq->unknowns, m, eps, w, root, &s, NULL);
+    if (rc == SUS_STEPPER_OK)
+        eq->result(m, eps, w, root, w_next);
+    return rc;
+}
+
 void sus_step_predict(const sus_model *m, double eps, const double w[2], double x[2])
 {
     double f[2], mid[2];

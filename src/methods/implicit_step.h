@@ -15,6 +15,13 @@ extern "C" {
 int sus_step_implicit_solve(const sus_step_equation *eq, const sus_model *m, double eps,
                             const double w[3], double w_next[3], sus_stepper_stats *st);
 
+/* w^{k+1} of the root on eq's branch continued from eps = 0 alone (sus_step_newton_branch, no
+ * Newton from the prediction first): what a check of a step's root compares it with. Returns the
+ * continuation's status (SUS_STEPPER_SINGULAR at a fold); w_next is written only on
+ * SUS_STEPPER_OK. */
+int sus_step_branch_root(const sus_step_equation *eq, const sus_model *m, double eps,
+                         const double w[2], double w_next[2]);
+
 /* The midpoint DSP's step (step_midpoint.c): sus_step_implicit_solve of its equation, with its
  * residual inlined into Newton's loop (newton_core.h); the compositions call it for every substep.
  */
