@@ -186,7 +186,9 @@ static const suslov_cli_option OPTIONS[] = {
      set_steps, NULL},
     {"--time", "T",
      "final time instead of --steps: T/H must be a whole number N (to 4\n"
-     "rounding units of T), else it is refused with the nearest valid T",
+     "rounding units of T), else it is refused with the nearest valid T; the\n"
+     "last row's t is then N H (see OUTPUT, t), which may differ from T in\n"
+     "its last digits: --eps 0.1 --time 0.3 ends at t = 0.30000000000000004",
      set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0,
      NULL},
@@ -251,7 +253,9 @@ static const suslov_cli_section SECTIONS[] = {
      "    the row's index: the step k (t = k H); with --tol the accepted step k, and with\n"
      "    --every-time DT the output time k (t = k DT, the last row at T): it always increases\n"
      "t\n"
-     "    the time\n"
+     "    the time k H, rounded once: the time that k steps of H reach. With --time T the last\n"
+     "    row's t is N H, within 4 rounding units of T but not always T. With --tol, the end\n"
+     "    of the step, or k DT, the last row at T\n"
      "omega1,omega2,omega3\n"
      "    the body angular velocity w (omega3 = 0)\n"
      "lambda\n"
