@@ -381,7 +381,8 @@ $(BUILD)/bench_boost: $(BUILD)/obj/prog/bench_boost.o $(BUILD)/obj/prog/bench_od
 PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibliography.tex $(wildcard paper/*.tsv) \
             $(BUILD)/claims.tsv paper/equations.txt $(BUILD)/numbers.tex $(BUILD)/ledger.tex \
             $(BUILD)/summary.tex $(BUILD)/sensitivity.tex $(BENCH_REC)/bench.tex $(BENCH_REC)/machine.tex \
-            $(BENCH_REC)/bench.txt tools/bench_summary.sh tools/bench_misses.awk \
+            $(BENCH_REC)/bench.txt tools/bench_summary.sh tools/bench_misses.awk tools/latex.sh \
+            tools/latex_esc.awk \
             $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \

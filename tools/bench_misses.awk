@@ -4,22 +4,8 @@
 # ones). Output: LaTeX macros \BenchTargetCount, \BenchMissCount and \BenchMisses, the misses
 # separated by semicolons, each said short with its measured value and its target, the numbers
 # as the line prints them. A line of a shape this file does not know is listed as printed, so
-# that no miss is ever left out.
-
-# LaTeX's special characters in text, escaped (a loop: gsub's treatment of "\\" in its replacement
-# differs between awks).
-function esc(s,    i, c, o) {
-    o = ""
-    for (i = 1; i <= length(s); i++) {
-        c = substr(s, i, 1)
-        if (c == "\\") c = "\\textbackslash{}"
-        else if (c == "~") c = "\\textasciitilde{}"
-        else if (c == "^") c = "\\textasciicircum{}"
-        else if (index("_%&#${}", c)) c = "\\" c
-        o = o c
-    }
-    return o
-}
+# that no miss is ever left out. Text is escaped by latex_esc (tools/latex_esc.awk, given first
+# with -f).
 
 # A number for math mode: 3.51 as it is, 1.7e-13 as 1.7\times10^{-13}, 1e-04 and 1e4 as powers
 # of ten.
@@ -77,19 +63,19 @@ function longrun(t,    name, v, tg, sym, i, o) {
         if (v[i] + 0 > tg[i] + 0)
             o = o (o == "" ? "" : " and ") "$" sym[i] "=" num(v[i]) "$ (target~$\\le " \
                 num(tg[i]) "$)"
-    return "\\cmd{" esc(name) "} at $T=10^{4}$, " o
+    return "\\cmd{" latex_esc(name) "} at $T=10^{4}$, " o
 }
 
 function short(t,    what, lvl, v) {
     if (t ~ /^an implicit [^ ]+ step costs <= /)
-        return "the \\cmd{" esc(between(t, "an implicit ", " step costs")) "} step, $" \
+        return "the \\cmd{" latex_esc(between(t, "an implicit ", " step costs")) "} step, $" \
             last_value(between(t, "our rk4 step: ", " (")) "$ RK4 steps" \
             target_le(between(t, "costs <= ", "x our"))
     if (t ~ /^our rk4 step is >= /)
         return "our RK4 step, $" last_value(t) "$ times as fast as GSL's \\cmd{rk4}" \
             target_ge(between(t, "is >= ", "x faster"))
     if (t ~ /^the driver adds <= /)
-        return "the driver on a \\cmd{" esc(between(t, "to a ", " step (")) "} step, $" \
+        return "the driver on a \\cmd{" latex_esc(between(t, "to a ", " step (")) "} step, $" \
             last_value(t) "\\,\\%$ (target~$\\le " between(t, "adds <= ", " %") "\\,\\%$)"
     if (t ~ /^the driver \(sus_run_tol/)
         return "the driver on tolerance-driven runs, $" last_value(t) "\\,\\%$ (target~$\\le " \
@@ -105,7 +91,7 @@ function short(t,    what, lvl, v) {
         lvl = num(between(t, "accuracy ", " at t"))
         what = what == "attitude (reduced problem)" ? "the attitude to $" lvl \
             "$ on the reduced problem" : what == "attitude" ? "the attitude to $" lvl "$" : \
-            esc(what) " to $" lvl "$"
+            latex_esc(what) " to $" lvl "$"
         if (index(t, ": none of our"))
             return what ": none of our structure-preserving methods reaches it"
         if (index(t, "(target ")) {
@@ -121,7 +107,7 @@ function short(t,    what, lvl, v) {
             "error $" num(between(t, "reaches attitude ", " there")) "$"
     if (t ~ /^T = 1e4 at equal error .* faster than /)
         return "at $T=10^{4}$ and equal attitude error, \\cmd{" \
-            esc(between(t, "ours ", " is ")) "} $" between(t, " is ", "x faster") \
+            latex_esc(between(t, "ours ", " is ")) "} $" between(t, " is ", "x faster") \
             "$ times as fast as \\cmd{rk8pd}" target_ge(between(t, "(target ", "x)"))
     if (t ~ /^cost at T = 1e6 <= /)
         return "the cost to $T=10^{6}$, $" last_value(t) "$ times that to $T=10^{4}$" \
@@ -134,7 +120,7 @@ function short(t,    what, lvl, v) {
         return "\\cmd{make check}: a test failed, so no time to judge"
     if (t ~ /^make check /)
         return wall("\\cmd{make check}", t)
-    return esc(t)
+    return latex_esc(t)
 }
 
 /^  (PASS|MISS) / { n++ }

@@ -81,13 +81,15 @@ static void closed_u(const sus_refatt_closed *cf, long double t, long double u[2
 /* (ContDyn): One Taylor step of order P in long double, in the Cholesky coordinates u = L^T w of
  * exact.h, where (ContDyn) reads u' = c J u / |L| with c = <v, u> and J u = (-u2, u1): no
  * cancellation however near-singular I_m is. With it, the Cauchy-product recursion of the
- * quaternion kinematics q' = 1/2 q (x) (0, w), w = L^{-T} u. Coefficients are scaled,
+ * quaternion kinematics q' = 1/2 q (x) (0, w), w = L^{-T} u, whose sum advances q. u's own series
+ * is needed only for its coefficients below order P, which feed q's: it is not summed, as every
+ * step starts from u of the closed form (integrate, grid_state). Coefficients are scaled,
  * U_n = u_n h^n. */
-static void precise_step(const sus_refatt_chol *co, long double h, long double u[2],
+static void precise_step(const sus_refatt_chol *co, long double h, const long double u[2],
                          long double q[4])
 {
     enum { P = SUS_REFATT_ORDER };
-    long double U[P + 1][2], W[P + 1][2], Q[P + 1][4], C[P + 1];
+    long double U[P][2], W[P][2], Q[P + 1][4], C[P];
     U[0][0] = u[0];
     U[0][1] = u[1];
     for (int i = 0; i < 4; i++)
@@ -107,17 +109,16 @@ static void precise_step(const sus_refatt_chol *co, long double h, long double u
             t[3] += qj[1] * y - qj[2] * x;
         }
         const long double f = h / (n + 1);
-        U[n + 1][0] = f * co->g * s0;
-        U[n + 1][1] = f * co->g * s1;
+        if (n + 1 < P) { /* U_P would feed only u's sum */
+            U[n + 1][0] = f * co->g * s0;
+            U[n + 1][1] = f * co->g * s1;
+        }
         for (int i = 0; i < 4; i++)
             Q[n + 1][i] = 0.5L * f * t[i];
     }
-    for (int n = P; n >= 1; n--) {
-        u[0] += U[n][0];
-        u[1] += U[n][1];
+    for (int n = P; n >= 1; n--)
         for (int i = 0; i < 4; i++)
             q[i] += Q[n][i];
-    }
 }
 
 /* R(q) for q not of unit length: ((s^2 - |v|^2) I + 2 v v^T + 2 s v^) / |q|^2, rounded once. */
@@ -349,11 +350,10 @@ static int grid_state(sus_refatt *ra, double t1, long double q[4])
         precise_step(&ra->chol, ra->h, ra->u, ra->q);
         closed_u(&ra->closed, ra->t0 + (ra->grid + 1) * ra->h, ra->u);
     }
-    long double u[2] = {ra->u[0], ra->u[1]};
     memcpy(q, ra->q, sizeof ra->q);
     const long double rest = span - ra->grid * ra->h;
     if (rest > 0.0L)
-        precise_step(&ra->chol, rest, u, q);
+        precise_step(&ra->chol, rest, ra->u, q);
     return 0;
 }
 

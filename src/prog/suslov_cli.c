@@ -84,25 +84,46 @@ static void set_header(void *vg, const suslov_cli_option *o, const char *v)
     g->header = strcmp(o->name, "--header") == 0;
 }
 
-static void show_help(void *g, const suslov_cli_option *o, const char *v)
+/* --help, --man and --version act once the whole command line is read (suslov_args_parse), so
+ * that an option after them is read too: bad input is exit 2 wherever it stands. */
+static void show_help(void)
 {
-    (void)g, (void)o, (void)v;
     suslov_cli_help(&SPEC, stdout);
     suslov_cli_exit_stdout();
 }
 
-static void show_man(void *g, const suslov_cli_option *o, const char *v)
+static void show_man(void)
 {
-    (void)g, (void)o, (void)v;
     suslov_cli_man(&SPEC, suslov_version(), stdout);
     suslov_cli_exit_stdout();
 }
 
-static void show_version(void *g, const suslov_cli_option *o, const char *v)
+static void show_version(void)
 {
-    (void)g, (void)o, (void)v;
     printf("suslov %s\n", suslov_version());
     suslov_cli_exit_stdout();
+}
+
+/* One text per run: two of them are as contradictory as --header with --no-header. */
+static void want_show(suslov_args_given *g, const suslov_cli_option *o, void (*show)(void))
+{
+    if (g->show)
+        suslov_cli_die("%s and %s are both given (each prints its text and exits)", g->show_name,
+                       o->name);
+    g->show = show;
+    g->show_name = o->name;
+}
+static void set_help(void *g, const suslov_cli_option *o, const char *v)
+{
+    (void)v, want_show(g, o, show_help);
+}
+static void set_man(void *g, const suslov_cli_option *o, const char *v)
+{
+    (void)v, want_show(g, o, show_man);
+}
+static void set_version(void *g, const suslov_cli_option *o, const char *v)
+{
+    (void)v, want_show(g, o, show_version);
 }
 
 /* ---- lists under --method and --reconstruct ---- */
@@ -165,7 +186,9 @@ static const suslov_cli_option OPTIONS[] = {
      set_steps, NULL},
     {"--time", "T",
      "final time instead of --steps: T/H must be a whole number N (to 4\n"
-     "rounding units of T), else it is refused with the nearest valid T",
+     "rounding units of T), else it is refused with the nearest valid T; the\n"
+     "last row's t is then N H (see OUTPUT, t), which may differ from T in\n"
+     "its last digits: --eps 0.1 --time 0.3 ends at t = 0.30000000000000004",
      set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0,
      NULL},
@@ -210,9 +233,9 @@ static const suslov_cli_option OPTIONS[] = {
      "NO_PROGRESS)",
      set_quiet, NULL},
     {"--version", NULL, "print the version (the git commit built from, or unknown) and exit",
-     show_version, NULL},
-    {"--help", NULL, "print this text and exit", show_help, NULL},
-    {"--man", NULL, "print this text as a manual page (roff) and exit", show_man, NULL},
+     set_version, NULL},
+    {"--help", NULL, "print this text and exit", set_help, NULL},
+    {"--man", NULL, "print this text as a manual page (roff) and exit", set_man, NULL},
 };
 
 /* Section text (cli_options.h): prose is filled; a line indented by two spaces is kept as it is;
@@ -230,7 +253,9 @@ static const suslov_cli_section SECTIONS[] = {
      "    the row's index: the step k (t = k H); with --tol the accepted step k, and with\n"
      "    --every-time DT the output time k (t = k DT, the last row at T): it always increases\n"
      "t\n"
-     "    the time\n"
+     "    the time k H, rounded once: the time that k steps of H reach. With --time T the last\n"
+     "    row's t is N H, within 4 rounding units of T but not always T. With --tol, the end\n"
+     "    of the step, or k DT, the last row at T\n"
      "omega1,omega2,omega3\n"
      "    the body angular velocity w (omega3 = 0)\n"
      "lambda\n"
@@ -334,6 +359,8 @@ void suslov_args_parse(suslov_args *a, int argc, char **argv)
         strcmp(method, "list") == 0)
         suslov_cli_die("--method list takes no other options");
     suslov_cli_parse(&SPEC, argc, argv, &g);
+    if (g.show)
+        g.show();
     if (!g.method)
         suslov_cli_die("--method is required");
     if (strcmp(g.method, "list") == 0)

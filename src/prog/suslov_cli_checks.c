@@ -35,7 +35,10 @@ static void time_choice(char *buf, size_t len, double n, double eps)
 }
 
 /* N = T/H when that is a whole number to within the rounding of T, H and their quotient:
- * |N H - T| <= 4u T (u = DBL_EPSILON / 2), so that the last row is at T; else refused. */
+ * |N H - T| <= 4u T (u = DBL_EPSILON / 2), so that the last row is at T up to those roundings;
+ * else refused. The rows print t = k H, the time the steps reach, so the last may differ from T
+ * in its last digits (0.1 and 0.3: 3 H = 0.30000000000000004): a step shortened to end at T
+ * would change the method's last step, and a t printed as T would not be the time reached. */
 static long steps_for_time(double T, double eps)
 {
     const double n = round(T / eps); /* T / eps may be inf: caught below */

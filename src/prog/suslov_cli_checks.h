@@ -13,6 +13,8 @@ typedef struct {
     double w0[2], inertia[9];
     int quiet, header, header_given, list, every_given, omega0_given, inertia_given;
     long sweeps;
+    void (*show)(void);    /* --help, --man or --version: prints its text and exits */
+    const char *show_name; /* which of them */
 } suslov_args_given;
 
 /* Fills the run's kind (steps or tolerance), its steps, model, method, stepper and

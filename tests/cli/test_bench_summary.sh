@@ -86,6 +86,17 @@ sh "$S" "$R" misses >"$T/rec"
 got=$(sed -n 's/^\\newcommand{\\BenchMisses}{\(.*\)}$/\1/p' "$T/rec" | sed 's/; /\n/g' | grep -c .)
 check "the recorded run: its $n MISS lines counted and listed ($got)" \
     sh -c "grep -qx '\\\\newcommand{\\\\BenchMissCount}{$n}' '$T/rec' && test '$got' = '$n'"
+# tex mode: machine.txt's text through the one escaper (tools/latex.sh, tools/latex_esc.awk) that
+# the misses use too: every special character escaped once (the braces of \textbackslash{} are
+# braces), the same as the misses' line of an unknown shape above
+printf '%s\n' 'date: 2000-01-01' 'commit: 0123456789abcdef' 'cpu: 50% & #1 {x} ~^\ a_b $' \
+    'cores: 2' 'note: run_1' >"$T/md/machine.txt"
+sh "$S" "$T/md" tex >"$T/md/tex" 2>"$T/md/err"
+rc=$?
+check "tex: exit $rc (0); \\BenchRunCPU and \\BenchRunNote escaped ($(grep -E 'CPU|Note' "$T/md/tex" | tr '\n' ' '))" \
+    sh -c "test $rc = 0 -a ! -s '$T/md/err' &&
+        grep -qxF '\\newcommand{\\BenchRunCPU}{50\\% \\& \\#1 \\{x\\} \\textasciitilde{}\\textasciicircum{}\\textbackslash{} a\\_b \\\$}' '$T/md/tex' &&
+        grep -qxF '\\newcommand{\\BenchRunNote}{; run\\_1}' '$T/md/tex'"
 # summary.md: the ratios as the TSV files hold them
 printf 'date: d\ncommit: c\n' >"$T/md/machine.txt"
 printf 'Targets:\n' >"$T/md/bench.txt"

@@ -30,10 +30,25 @@ check "numbers are printed with %.17g (t = 2.5 at k = 25, w1(0) = 0.400000000000
 check "row 0 of a DSP has w1 = 0.40000000000000002, R = I" \
     grep -q '^0,0,0.40000000000000002,0.5,0,.*,1,0,0,0,1,0,0,0,1$' "$T/midpoint.csv"
 
-# --time T ends exactly at T: N = T/H when that is a whole number, else refused naming the
-# nearest valid final times (never a silent rounding)
+# --time T takes N = T/H steps when that is a whole number to 4 rounding units of T, else it is
+# refused naming the nearest valid final times (never a silent rounding)
 "$S" --no-header --method euler --eps 0.3 --time 1.2 | tail -1 | cut -d, -f1,2 >"$T/n"
 check "--time 1.2 --eps 0.3 gives N = 4 steps, last t = 4 * 0.3 ($(cat "$T/n"))" test "$(cat "$T/n")" = 4,1.2
+# Every row's t is k H as computed (awk's double product, printed as suslov prints it), the time
+# the steps reach: the last is N H, which IEEE double arithmetic makes differ from T in its last
+# digits for these four (3 x 0.1 = 0.30000000000000004, 7 x 0.1 = 0.70000000000000007, 3 x 0.2 =
+# 0.60000000000000009, 3 x 0.3 = 0.89999999999999991), and the header's final time says the same.
+for case in "euler 0.1 0.3 3 0.30000000000000004" "exact 0.1 0.7 7 0.70000000000000007" \
+    "midpoint 0.2 0.6 3 0.60000000000000009" "exact 0.3 0.9 3 0.89999999999999991" \
+    "rk4 0.1 1 10 1"; do
+    set -- $case
+    "$S" --method "$1" --eps "$2" --time "$3" >"$T/tk.csv"
+    last=$(tail -1 "$T/tk.csv" | cut -d, -f1,2)
+    fin=$(sed -n 's/^# eps: .*, final time: //p' "$T/tk.csv")
+    off=$(grep -v '^#' "$T/tk.csv" | awk -F, -v h="$2" 'NR > 1 && $2 != sprintf("%.17g", $1 * h)' | wc -l)
+    check "--method $1 --eps $2 --time $3: every t = k H, the last row $4,$5 and final time $5 ($last; $fin; $off rows off)" \
+        test "$last" = "$4,$5" -a "$fin" = "$5" -a "$off" = 0
+done
 "$S" --method euler --eps 3 --time 10 >"$T/out" 2>"$T/err"; rc=$?
 check "--time 10 --eps 3 is refused (exit 2), naming --time 9 and --time 12 ($(cat "$T/err"))" \
     sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q -- '--time 9 or --time 12' '$T/err'"

@@ -20,6 +20,24 @@ head=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 check "--version prints 'suslov <commit>' ($v; HEAD $head)" \
     sh -c "test $rc = 0 && case '$v' in 'suslov unknown') test '$head' = unknown ;; 'suslov '*) echo '$v' | grep -q '$head' ;; *) false ;; esac"
 
+# --help, --man and --version act once the whole command line is read: whatever stands before or
+# after them, bad input is exit 2 and one line, with nothing printed on stdout
+for first in --help --man --version; do
+    bad "$first --bogus" "^suslov: error: unknown option .--bogus." $first --bogus
+    bad "$first --eps abc" "^suslov: error: --eps: .abc. is not a number" $first --eps abc
+    bad "$first --eps (no value)" "^suslov: error: --eps needs a value" $first --eps
+    bad "$first, then an operand" "^suslov: error: unexpected argument .x." $first x
+    bad "--bogus $first" "^suslov: error: unknown option .--bogus." --bogus $first
+    bad "$first twice" "^suslov: error: $first is given twice" $first $first
+done
+bad "--help --version" "^suslov: error: --help and --version are both given" --help --version
+bad "--version --man" "^suslov: error: --version and --man are both given" --version --man
+# the checks that need a run are not made: --help after a valid command prints the help
+"$S" --help >"$T/help0"
+"$S" --method euler --eps -1 --output "$T/none/x.csv" --help >"$T/help1" 2>"$T/err"; rc=$?
+check "--method euler --eps -1 --output MISSING/x.csv --help: exit 0, the help, nothing on stderr" \
+    sh -c "test $rc = 0 -a ! -s '$T/err' && cmp -s '$T/help0' '$T/help1'"
+
 # -- ends the options; nothing may follow (suslov takes no operands)
 "$S" --no-header --method euler --eps 0.1 --steps 1 -- >"$T/o"; rc=$?
 check "-- at the end is accepted" test "$rc" = 0 -a "$(wc -l <"$T/o")" = 3
