@@ -63,7 +63,7 @@ double sus_lab_bench_now(void);
 typedef struct {
     sus_model model;
     sus_exact ex;
-    sus_lab_reduced red; /* w(t) for the reduced problem */
+    sus_exact_fast red; /* w(t) for the reduced problem */
     double w_T[2], R_T[3][3];
 } sus_lab_bench_problem;
 
@@ -77,6 +77,7 @@ typedef struct {
     int w_only;     /* w alone, no attitude: counts for the w accuracies only (err_R = inf) */
     int reduced;    /* a peer given w(t) (reduced.h): counts for the attitude only (err_w = 0) */
     int tol_driven; /* ours, tolerance-driven: param is TOL, steps the accepted steps */
+    int fixed_peer; /* a peer at fixed steps (Magnus6): param is the step, as for ours */
     const sus_step_method *me; /* ours: the method; NULL for a peer */
     sus_recon recon;
     const gsl_odeiv2_step_type *type; /* a GSL peer's stepper and configuration, else NULL */
@@ -112,7 +113,7 @@ typedef struct {
 
 /* The cost of one step, n each (one per registered method): the w-step, the whole step through
  * the driver and in a bare loop, Newton iterations per step; GSL's rk4 and the closed form (as
- * exact.h and as reduced.h evaluate it); and the tolerance-driven runs' sums of fastest rounds
+ * exact.h and as exact_fast.h evaluates it); and the tolerance-driven runs' sums of fastest rounds
  * through the driver and in a bare loop. */
 typedef struct {
     int n;

@@ -1,5 +1,7 @@
 #include "bench_runs.h"
 
+#include "magnus6.h"
+
 #include <gsl/gsl_errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,6 +83,21 @@ static int peer_result(const void *vctx, double w[2], double R[3][3])
     return g->status == GSL_SUCCESS;
 }
 
+void sus_lab_bench_magnus6_fn(void *vctx)
+{
+    sus_lab_bench_magnus6_run *r = vctx;
+    sus_lab_magnus6(&r->pb->red, r->T, r->N, r->q);
+}
+
+/* w is the closed form's, as for the other peers on the reduced problem. */
+static int magnus6_result(const void *vctx, double w[2], double R[3][3])
+{
+    const sus_lab_bench_magnus6_run *r = vctx;
+    memcpy(w, r->pb->w_T, 2 * sizeof(double));
+    sus_lab_peer_attitude(4, r->q, R);
+    return 1;
+}
+
 static void peer_release(void *vctx)
 {
     sus_lab_bench_peer_run *g = vctx;
@@ -92,4 +109,6 @@ const sus_lab_bench_run_ops SUS_LAB_BENCH_DSP_OPS = {sus_lab_bench_dsp_fn, dsp_r
                             SUS_LAB_BENCH_W_OPS = {sus_lab_bench_w_fn, w_result, free},
                             SUS_LAB_BENCH_TOL_OPS = {sus_lab_bench_tol_fn, tol_result, free},
                             SUS_LAB_BENCH_PEER_OPS = {sus_lab_bench_peer_fn, peer_result,
-                                                      peer_release};
+                                                      peer_release},
+                            SUS_LAB_BENCH_MAGNUS6_OPS = {sus_lab_bench_magnus6_fn, magnus6_result,
+                                                         free};

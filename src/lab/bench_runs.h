@@ -2,7 +2,8 @@
  * ends bit for bit where the first run did): our methods through the driver, as `suslov` runs
  * them; their w-steps alone; a tolerance-driven method through sus_run_tol; and a GSL odeiv2
  * peer in one configuration (src/lab/peers.c): (w, R) 11 unknowns, (w, q) 6, w alone 2, and the
- * reduced problem, q alone along the closed-form w, 4. */
+ * reduced problem, q alone along the closed-form w, 4; and Magnus6 on the reduced problem
+ * (magnus6.h) at N steps. */
 #ifndef SUS_LAB_BENCH_RUNS_H
 #define SUS_LAB_BENCH_RUNS_H
 
@@ -55,14 +56,22 @@ typedef struct {
     int status;
 } sus_lab_bench_peer_run;
 
+/* Magnus6 along the closed-form w to T in N equal steps. */
+typedef struct {
+    const sus_lab_bench_problem *pb;
+    long N;
+    double T, q[4];
+} sus_lab_bench_magnus6_run;
+
 void sus_lab_bench_dsp_fn(void *ctx);
 void sus_lab_bench_w_fn(void *ctx);
 void sus_lab_bench_tol_fn(void *ctx);
 void sus_lab_bench_peer_fn(void *ctx);
+void sus_lab_bench_magnus6_fn(void *ctx);
 
 /* Each with its result and release (free, and the peer's sus_lab_peer_close). */
 extern const sus_lab_bench_run_ops SUS_LAB_BENCH_DSP_OPS, SUS_LAB_BENCH_W_OPS,
-    SUS_LAB_BENCH_TOL_OPS, SUS_LAB_BENCH_PEER_OPS;
+    SUS_LAB_BENCH_TOL_OPS, SUS_LAB_BENCH_PEER_OPS, SUS_LAB_BENCH_MAGNUS6_OPS;
 
 #ifdef __cplusplus
 }

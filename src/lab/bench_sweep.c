@@ -205,6 +205,26 @@ static void sweep_reduced(sus_lab_bench *b)
                     sweep_gsl_control(b, types[k], 4, (sus_lab_peer_api)api, hstarts[h], rel[c]);
 }
 
+static void *magnus6_run(const sus_lab_bench *b, const sus_lab_bench_series *s, long N)
+{
+    (void)s;
+    sus_lab_bench_magnus6_run *r = sus_lab_bench_calloc(1, sizeof *r);
+    *r = (sus_lab_bench_magnus6_run){&b->pb, N, T_END, {0}};
+    return r;
+}
+
+/* Magnus6 along the closed-form w (magnus6.h), on the Taylor methods' N grid: the prototype's
+ * proposal for the loose levels, a peer on the reduced problem. */
+static void sweep_magnus6(sus_lab_bench *b)
+{
+    sus_lab_bench_series *s = sus_lab_bench_new_series(b);
+    snprintf(s->name, sizeof s->name, "Magnus6 reduced (q) fixed step");
+    s->reduced = 1;
+    s->fixed_peer = 1;
+    s->dim = 4;
+    sweep_steps(b, s, 2.0, 1, 1, &SUS_LAB_BENCH_MAGNUS6_OPS, magnus6_run);
+}
+
 static void sweep_methods(sus_lab_bench *b)
 {
     for (int m = 0; m < sus_step_method_count(); m++) {
@@ -239,6 +259,7 @@ void sus_lab_bench_sweep_all(sus_lab_bench *b, sus_lab_bench_more_peers more, vo
             more(b, dims[d], ctx);
     }
     sweep_reduced(b);
+    sweep_magnus6(b);
     if (more)
         more(b, 4, ctx);
 }

@@ -117,7 +117,7 @@ static void gsl_fixed_fn(void *vctx)
 
 typedef struct {
     const sus_exact *ex;
-    const sus_lab_reduced *red;
+    const sus_exact_fast *red;
     long n;
     double acc;
 } exact_run;
@@ -133,13 +133,13 @@ static void exact_fn(void *vctx)
     e->acc = acc;
 }
 
-/* The same with one exponential (reduced.h), as the peers on the reduced problem evaluate it. */
+/* The same with one exponential (exact_fast.h), as the peers on the reduced problem evaluate it. */
 static void exact_one_exp_fn(void *vctx)
 {
     exact_run *e = vctx;
     double acc = 0.0, w[2];
     for (long i = 0; i < e->n; i++) {
-        sus_lab_reduced_omega(e->red, T_END * (double)i / (double)e->n, w);
+        sus_exact_fast_omega(e->red, T_END * (double)i / (double)e->n, w);
         acc += w[0];
     }
     e->acc = acc;

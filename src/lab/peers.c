@@ -90,7 +90,7 @@ int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step
     return peer_alloc(p);
 }
 
-int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_lab_reduced *r,
+int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_exact_fast *r,
                               const gsl_odeiv2_step_type *type, sus_lab_peer_api api, double tol,
                               double rel, double hstart)
 {

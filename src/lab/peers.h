@@ -53,7 +53,7 @@ typedef struct {
 int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type,
                       size_t dim, sus_lab_peer_api api, double tol, double hstart);
 /* The reduced problem along r (which must outlive p), abs tolerance tol and rel tolerance rel. */
-int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_lab_reduced *r,
+int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_exact_fast *r,
                               const gsl_odeiv2_step_type *type, sus_lab_peer_api api, double tol,
                               double rel, double hstart);
 /* From y(0) (sus_lab_peer_initial) to t = T with the step reset to hstart; steps taken (accepted

@@ -50,11 +50,11 @@ template <std::size_t N> struct rhs {
 };
 
 struct reduced_rhs {
-    const sus_lab_reduced *r;
+    const sus_exact_fast *r;
     void operator()(const std::array<double, 4> &q, std::array<double, 4> &f, double t) const
     {
         double w[3] = {0.0, 0.0, 0.0}, p[4];
-        sus_lab_reduced_omega(r, t, w);
+        sus_exact_fast_omega(r, t, w);
         sus_quat_mul_pure(p, q.data(), w);
         for (int i = 0; i < 4; i++)
             f[i] = 0.5 * p[i];
@@ -87,7 +87,7 @@ template <std::size_t N> struct rkf78 final : base {
 struct rkf78_reduced final : base {
     reduced_rhs f;
     double tol, rel;
-    rkf78_reduced(const sus_lab_reduced *r, double t, double rl) : f{r}, tol(t), rel(rl) {}
+    rkf78_reduced(const sus_exact_fast *r, double t, double rl) : f{r}, tol(t), rel(rl) {}
     long run(double T, double *y) override
     {
         std::array<double, 4> s = {y[0], y[1], y[2], y[3]};
@@ -142,7 +142,7 @@ extern "C" suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, c
     return o;
 }
 
-extern "C" suslov_odeint *suslov_odeint_open_reduced(const sus_lab_reduced *r, double tol,
+extern "C" suslov_odeint *suslov_odeint_open_reduced(const sus_exact_fast *r, double tol,
                                                      double rel)
 {
     base *b = new (std::nothrow) rkf78_reduced(r, tol, rel);

@@ -21,7 +21,7 @@ typedef struct suslov_odeint suslov_odeint;
 suslov_odeint *suslov_odeint_open(int stepper, int dim, double tol, const sus_model *m);
 /* runge_kutta_fehlberg78 on the reduced problem along r (which must outlive it), y = q, with
  * abs tolerance tol and rel tolerance rel. Returns NULL when out of memory. */
-suslov_odeint *suslov_odeint_open_reduced(const sus_lab_reduced *r, double tol, double rel);
+suslov_odeint *suslov_odeint_open_reduced(const sus_exact_fast *r, double tol, double rel);
 /* Integrates y (dim entries) from 0 to T; returns the number of steps odeint reports. */
 long suslov_odeint_run(suslov_odeint *o, double T, double *y);
 void suslov_odeint_close(suslov_odeint *o);

@@ -132,8 +132,8 @@ static void print_level(const sus_lab_bench *b, sus_lab_bench_comparison c, int 
         return;
     }
     const sus_lab_bench_series *ps = b->S[v.peer.series];
-    printf("vs %s %.3g s (%s, tol %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c], v.peer.sec,
-           ps->name, ps->param[v.peer.point],
+    printf("vs %s %.3g s (%s, %s %.2g, its timed runs' error %.2g): %.2fx", AGAINST[c], v.peer.sec,
+           ps->name, sus_lab_bench_param_name(ps), ps->param[v.peer.point],
            c != SUS_LAB_BENCH_W_INFO ? ps->err_R[v.peer.point] : ps->err_w[v.peer.point], v.ratio);
     if (isnan(v.target))
         printf(" (no target: the closed form gives w(t) in %.3g ns)\n", b->cost.ns_exact);

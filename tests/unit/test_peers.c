@@ -2,8 +2,8 @@
  * timed runs repeat it, must give the state and step count of a run on a fresh configuration.
  * GSL's driver keeps the step a run ended with unless it is reset to hstart, and the bench
  * records the error of one run while it times the others: they must be the same run. And the
- * reduced problem the peers are given (src/lab/reduced.h): its cheap w(t) is the closed form's on
- * every body, and its right-hand side is the attitude's kinematics along it. */
+ * reduced problem the peers are given (src/lab/reduced.h): its cheap w(t) (exact_fast.h) is the
+ * closed form's on every body, and its right-hand side is the attitude's kinematics along it. */
 #include "bodies.h"
 #include "check.h"
 #include "exact.h"
@@ -22,7 +22,7 @@
 #define T_END 50.0
 
 /* dim 4: the reduced problem along red, abs = rel = TOL. */
-static int open_peer(sus_lab_peer *p, const sus_model *m, const sus_lab_reduced *red,
+static int open_peer(sus_lab_peer *p, const sus_model *m, const sus_exact_fast *red,
                      const gsl_odeiv2_step_type *type, size_t dim, sus_lab_peer_api api,
                      double hstart)
 {
@@ -30,9 +30,8 @@ static int open_peer(sus_lab_peer *p, const sus_model *m, const sus_lab_reduced 
                     : sus_lab_peer_open(p, m, type, dim, api, TOL, hstart);
 }
 
-static int same_run(const sus_model *m, const sus_lab_reduced *red,
-                    const gsl_odeiv2_step_type *type, size_t dim, sus_lab_peer_api api,
-                    double hstart)
+static int same_run(const sus_model *m, const sus_exact_fast *red, const gsl_odeiv2_step_type *type,
+                    size_t dim, sus_lab_peer_api api, double hstart)
 {
     const double w0[2] = {SUS_PAPER_OMEGA0[0], SUS_PAPER_OMEGA0[1]};
     sus_lab_peer fresh, used;
@@ -56,7 +55,7 @@ static int same_run(const sus_model *m, const sus_lab_reduced *red,
  * terms w is summed from (|cos psi|, |sin psi| <= 1). Both sides share s; E, sech and tanh
  * (its 1 - E^2 loses relative, not absolute, accuracy near s = 0) carry a few roundings each,
  * M's entries and the product with it a few more: about 10 u S_i in all. */
-static double omega_rounding_ratio(const sus_exact *ex, const sus_lab_reduced *red)
+static double omega_rounding_ratio(const sus_exact *ex, const sus_exact_fast *red)
 {
     const double S1 = ex->r / ex->l22, S0 = (ex->r + fabs(ex->l21) * S1) / ex->l11;
     double worst = 0.0;
@@ -64,7 +63,7 @@ static double omega_rounding_ratio(const sus_exact *ex, const sus_lab_reduced *r
         const double t = i <= 500 ? 0.1 * i : 50.0 * pow(1e4 / 50.0, (i - 500) / 500.0);
         double a[2], b[2];
         sus_exact_omega(ex, t, a);
-        sus_lab_reduced_omega(red, t, b);
+        sus_exact_fast_omega(red, t, b);
         worst = fmax(worst, fmax(fabs(a[0] - b[0]) / S0, fabs(a[1] - b[1]) / S1) / DBL_EPSILON);
     }
     return worst;
@@ -74,7 +73,7 @@ static double omega_rounding_ratio(const sus_exact *ex, const sus_lab_reduced *r
  * the flow of R' = R w^ keeps norms, so the global error is at most the sum of the local ones,
  * each held near the tolerance, over fewer than 1e4 steps: 1e-8. A wrong sign or row of M, or of
  * the kinematics, moves R(50) by O(1). */
-static double reduced_error(const sus_model *m, const sus_exact *ex, const sus_lab_reduced *red)
+static double reduced_error(const sus_model *m, const sus_exact *ex, const sus_exact_fast *red)
 {
     sus_lab_peer p;
     double y[4], w[2], R[3][3], Rref[3][3];
@@ -95,11 +94,11 @@ static void check_reduced(void)
         body bd;
         sus_model m;
         sus_exact ex;
-        sus_lab_reduced red;
+        sus_exact_fast red;
         char err[256];
         body_get(k, &bd);
         if (sus_model_init(&m, bd.I, err, sizeof err) != 0 || sus_exact_init(&ex, &m, bd.w0) != 0 ||
-            sus_lab_reduced_init(&red, &ex) != 0) {
+            sus_exact_fast_init(&red, &ex) != 0) {
             CHECK(0, "%s: the model, closed form and reduced problem set up (%s)", bd.name, err);
             continue;
         }
@@ -121,10 +120,10 @@ int main(void)
     gsl_set_error_handler_off();
     sus_model m;
     sus_exact ex;
-    sus_lab_reduced red;
+    sus_exact_fast red;
     char err[256];
     if (sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) != 0 ||
-        sus_exact_init(&ex, &m, SUS_PAPER_OMEGA0) != 0 || sus_lab_reduced_init(&red, &ex) != 0)
+        sus_exact_init(&ex, &m, SUS_PAPER_OMEGA0) != 0 || sus_exact_fast_init(&red, &ex) != 0)
         return 1;
     const gsl_odeiv2_step_type *types[2] = {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_rkck};
     const size_t dims[4] = {11, 6, 2, 4};
