@@ -183,8 +183,10 @@ void highorder_reference_claims(const sus_model *m, const sus_exact *ex)
                sus_so3_dist(R_T, Rm), 0.0, 1e-15, LEDGER_EXTENSION);
     ledger_add("highorder-reference-omega", "(method)",
                "$|\\omega_\\mathrm{ref}(50) - \\omega_\\mathrm{exact}(50)|$: the "
-               "reference's $\\omega$ against the closed form, claimed $\\le 4\\,u "
-               "|\\omega| \\sim 10^{-15}$ (each side rounds a few times)",
+               "reference's $\\omega$, the closed form in long double, against the closed form "
+               "in double (not an independent integration: test\\_model holds the closed form "
+               "to rk8pd on every body), claimed $\\le 4\\,u |\\omega| \\sim 10^{-15}$ (each "
+               "side rounds a few times)",
                hypot(w_ref[0] - w_T[0], w_ref[1] - w_T[1]), 0.0, 1e-15, LEDGER_EXTENSION);
     recommended_claims(m, ex->w0, w_T, R_T);
 }
