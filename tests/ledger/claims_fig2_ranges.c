@@ -26,8 +26,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#define NEPS 21   /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
-#define MUCH 10.0 /* "much": at least 10 times (tests/ledger/claims_fig2more.c) */
+#define NEPS 21          /* eps = 0.25 * 2^(j/4), j = 0..20: [0.25, 8] */
+#define MUCH CLAIMS_MUCH /* claims_refs.h */
 
 static double grid_eps(int j) { return 0.25 * pow(2.0, 0.25 * j); }
 

@@ -19,7 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define MUCH 10.0 /* "much": an order of magnitude, our reading (above) */
+#define MUCH CLAIMS_MUCH /* "much": an order of magnitude, our reading (claims_refs.h) */
 
 /* Macro names (letters only) of the count of Figure 2's statements holding as printed at tau %. */
 static const char *const SWAP_PRINTED_AT[20] = {

@@ -23,7 +23,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#define MUCH 10.0 /* "much": an order of magnitude, our reading (above) */
+#define MUCH CLAIMS_MUCH /* "much": an order of magnitude, our reading (claims_refs.h) */
 #define T_OWN_LIMIT 10000
 
 typedef struct {
