@@ -29,6 +29,7 @@
 #include "registry.h"
 #include "so3.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -151,6 +152,7 @@ static FILE *start_suslov(const char *args, pid_t *pid)
         close(fd[0]);
         close(fd[1]);
         execv(suslov_path, argv);
+        fprintf(stderr, "claims: %s: %s\n", suslov_path, strerror(errno));
         _exit(127);
     }
     close(fd[1]);
