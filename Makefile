@@ -282,10 +282,10 @@ figures/%.pdf figures/%.png figures/%.txt data/%.csv: $(BUILD)/figure_% | $(DEPS
 
 # make test: the unit tests, the CLI tests and the build checks, exactly $(TESTS) and the scripts
 # named in tests/run.sh (a few seconds). make ledger: the claims ledger, run again only when the
-# claims program or its one input changed (the recorded bench's settings, what_to_use.tsv, which
-# it checks at their levels); its table is kept in $(BUILD)/claims.out and
-# printed whole (make check prints the lines whose check failed and the findings; V=1 the table).
-# make check: both, and "N passed, N failed" over all of them on the last line.
+# claims program, suslov or its one input changed (the recorded bench's settings, what_to_use.tsv,
+# which it runs with suslov and checks at their levels); its table is kept in $(BUILD)/claims.out
+# and printed whole (make check prints the lines whose check failed and the findings; V=1 the
+# table). make check: both, and "N passed, N failed" over all of them on the last line.
 # The suppressions path is quoted for LSan, so that a checkout path with a space works.
 SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
     LSAN_OPTIONS="suppressions='$(CURDIR)/tests/build/lsan.supp':print_suppressions=0"
@@ -298,6 +298,12 @@ ledger: $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
 check: all $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
+# The ledger runs suslov on the recorded bench's settings (tests/ledger/claims_recommended.c): it
+# runs again when an object suslov is linked from changes, but not for the version stamp's alone
+# (a new commit), which changes only the first line of suslov's header.
+LEDGER_SUSLOV := $(BUILD)/obj/prog/suslov.o \
+                 $(filter-out $(VERSION_OBJ),$(foreach l,$(LIB_LAYERS),$(call obj_of,$(l))))
+
 # The ledger writes claims.tsv and, beside it, the companion's numbers.tex, ledger.tex,
 # summary.tex and sensitivity.tex (the table of Figure 2's statements over steps, bodies and
 # starts), and the web edition's claims_tex.tsv (each line's quantity and test in that LaTeX),
@@ -306,7 +312,8 @@ check: all $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
 # grouped rule is whichever target asked for it: the table's path is spelled out.)
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
               $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
-$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv | $(TIMED)
+$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV) \
+    | $(TIMED) $(BUILD)/suslov
 	$(call say,LEDGER,$(BUILD)/claims.tsv)
 	$(Q)out=$(BUILD)/claims.out; $(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp \
 	    $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv; \
@@ -317,7 +324,8 @@ $(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv | $(
 # byte as a run of one section after the other in one process: the claims program with -j1 writes
 # its files into $(BUILD)/ledger-j1 (beside the parallel run, under make -j), and tests/run.sh
 # compares them.
-$(BUILD)/ledger-j1/claims.out: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv | $(TIMED)
+$(BUILD)/ledger-j1/claims.out: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV) \
+    | $(TIMED) $(BUILD)/suslov
 	$(call say,LEDGER,$(BUILD)/ledger-j1/claims.tsv (-j1))
 	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-j1.txt $(CLAIMS) -j1 \
 	    $(@D)/claims.tsv; if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \

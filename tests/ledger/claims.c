@@ -20,6 +20,7 @@
 #include "claims_paper.h"
 #include "claims_propocons1.h"
 #include "claims_quad.h"
+#include "claims_recommended.h"
 #include "claims_remark55.h"
 #include "claims_section6.h"
 #include "claims_sensitivity.h"
@@ -226,6 +227,7 @@ int main(int argc, char **argv)
 {
     static ledger_task tasks[512];
     const int jobs = parse_args(argc, argv);
+    recommended_program(argv[0]);
     gsl_set_error_handler_off();
     prepare();
     ledger_run_tasks(tasks, section_tasks(tasks, 512), jobs);
