@@ -29,6 +29,8 @@ if [ "${1:-}" = --commit ]; then
 fi
 out=$1
 . "$(dirname "$0")/latex.sh"
+. "$(dirname "$0")/on_exit.sh"
+on_exit 'rm -f "$out.tmp"'
 ver() { pkg-config --modversion "$1" 2>/dev/null || echo "not found"; }
 full=$(source_commit | cut -d' ' -f1)
 dirty=""
