@@ -86,8 +86,8 @@ BEGIN { while ((getline l < csv) > 0) { if (split_csv(l, f) < 12 || f[1] != "wor
     title["omega"] = "w alone at t = 50 (information: the closed form gives w(t) in one evaluation)" }
 NR == 1 { next }
 $1 != last { printf "\n## %s\n\n| level | ours (`suslov` args) | µs median (min–max) | best peer | µs median (min–max) | ratio | target |\n|---|---|---|---|---|---|---|\n", title[$1]; last = $1 }
-{ printf "| %s | `%s` | %s | %s, tol %s | %s | %s× | %s |\n", $2, args($11), range($3, $4), $5, $6,
-         range($5, $7), $8, ($9 == "nan" ? "info" : $9 "× " $10) }
+{ printf "| %s | `%s` | %s | %s, %s %s | %s | %s× | %s |\n", $2, args($12), range($3, $4), $5, $6, $7,
+         range($5, $8), $9, ($10 == "nan" ? "info" : $10 "× " $11) }
 ' "$tsv"
 printf '\n## Long runs\n\nAt T = 1e4, each of our methods at its first step or tolerance whose run ends within 1e-9 of\n'
 printf 'the reference attitude, against rk8pd at its loosest tolerance (four a decade) that does too;\n'

@@ -162,8 +162,8 @@ static void write_tex(FILE *fp, const sus_lab_bench *b)
 static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
 {
     char args[256];
-    fprintf(fp, "quantity\tlevel\tours\tours_seconds\tpeer\tpeer_tol\tpeer_seconds\tratio\ttarget\t"
-                "verdict\tsuslov_args\n");
+    fprintf(fp, "quantity\tlevel\tours\tours_seconds\tpeer\tpeer_parameter_name\tpeer_parameter\t"
+                "peer_seconds\tratio\ttarget\tverdict\tsuslov_args\n");
     for (int c = 0; c < SUS_LAB_BENCH_NCOMP; c++)
         for (int l = 0; l < NLEVELS; l++) {
             const sus_lab_bench_level v =
@@ -173,10 +173,11 @@ static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
             const sus_lab_bench_series *os = b->S[v.ours.series];
             const sus_lab_bench_series *ps = v.peer.series < 0 ? NULL : b->S[v.peer.series];
             sus_lab_bench_suslov_args(os, v.ours.point, args, sizeof args);
-            fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%.2g\t%.4g\t%.2f\t%g\t%s\t%s\n",
+            fprintf(fp, "%s\t%.0e\t%s\t%.4g\t%s\t%s\t%.2g\t%.4g\t%.2f\t%g\t%s\t%s\n",
                     sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l], os->name,
                     v.ours.sec, ps ? ps->name : "none reaches it",
-                    ps ? ps->param[v.peer.point] : NAN, ps ? v.peer.sec : NAN, v.ratio, v.target,
+                    ps ? sus_lab_bench_param_name(ps) : "none", ps ? ps->param[v.peer.point] : NAN,
+                    ps ? v.peer.sec : NAN, v.ratio, v.target,
                     isnan(v.target) ? "info" : pass_word(v.pass), args);
         }
 }

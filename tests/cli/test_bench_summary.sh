@@ -103,15 +103,17 @@ printf 'Targets:\n' >"$T/md/bench.txt"
 printf 'section,method\n' >"$T/md/bench.csv"
 tab=$(printf '\t')
 {
-    echo "quantity${tab}level${tab}ours${tab}ours_seconds${tab}peer${tab}peer_tol${tab}peer_seconds${tab}ratio${tab}target${tab}verdict${tab}suslov_args"
-    echo "attitude-reduced${tab}1e-14${tab}ours${tab}7.069e-06${tab}peer${tab}3.2e-15${tab}7.312e-05${tab}10.3${tab}1.5${tab}PASS${tab}--method taylor8"
+    echo "quantity${tab}level${tab}ours${tab}ours_seconds${tab}peer${tab}peer_parameter_name${tab}peer_parameter${tab}peer_seconds${tab}ratio${tab}target${tab}verdict${tab}suslov_args"
+    echo "attitude-reduced${tab}1e-14${tab}ours${tab}7.069e-06${tab}peer${tab}tol${tab}3.2e-15${tab}7.312e-05${tab}10.3${tab}1.5${tab}PASS${tab}--method taylor8"
+    echo "attitude-reduced${tab}1e-04${tab}ours${tab}1.91e-06${tab}fixed peer${tab}eps${tab}2.2${tab}2.304e-06${tab}1.21${tab}1.5${tab}MISS${tab}--method taylor10"
 } >"$T/md/what_to_use.tsv"
 {
     echo "row${tab}ours${tab}parameter_name${tab}parameter${tab}T${tab}seconds${tab}attitude_error${tab}peer${tab}peer_tol${tab}peer_seconds${tab}peer_error${tab}ratio${tab}target${tab}verdict${tab}reduced_tol${tab}reduced_seconds${tab}reduced_error${tab}reduced_ratio${tab}suslov_args"
     echo "equal-error${tab}ours${tab}tol${tab}1.778e-10${tab}10000${tab}1.666e-05${tab}1.05e-10${tab}rk8pd${tab}3.2e-12${tab}0.004152${tab}7.54e-10${tab}249.14${tab}20${tab}PASS${tab}3.2e-12${tab}0.007298${tab}9.06e-10${tab}437.90${tab}--method x"
 } >"$T/md/longruns.tsv"
 sh "$S" "$T/md" md >"$T/md/out" 2>"$T/md/err"
-check "summary.md prints the ratios as the TSV holds them (10.3, not 10.30; 249.14, 437.90) and the long run's numbers too (1.666e-05, 1.05e-10, 0.004152)" \
+check "summary.md prints the ratios as the TSV holds them (10.3, not 10.30; 249.14, 437.90), each peer's parameter by its name (tol, eps), and the long run's numbers too (1.666e-05, 1.05e-10, 0.004152)" \
     sh -c "grep -q '| 10.3× |' '$T/md/out' && grep -q '| 249.14× |' '$T/md/out' &&
+           grep -q '| peer, tol 3.2e-15 |' '$T/md/out' && grep -q '| fixed peer, eps 2.2 |' '$T/md/out' &&
            grep -q '| 437.90× |' '$T/md/out' && grep -q '| 1.666e-05 | 1.05e-10 | 3.2e-12, 0.004152 |' '$T/md/out'"
 done_tests test_bench_summary

@@ -163,8 +163,8 @@ static int tsv_field(const char *dir, const char *name, const char *head, int co
 static void check_ratio_digits(const char *dir)
 {
     char full[32] = "", red[32] = "", tex[4096] = "", path[96];
-    tsv_field(dir, "what_to_use.tsv", "attitude\t1e-04\t", 8, full, sizeof full);
-    tsv_field(dir, "what_to_use.tsv", "attitude-reduced\t1e-04\t", 8, red, sizeof red);
+    tsv_field(dir, "what_to_use.tsv", "attitude\t1e-04\t", 9, full, sizeof full);
+    tsv_field(dir, "what_to_use.tsv", "attitude-reduced\t1e-04\t", 9, red, sizeof red);
     snprintf(path, sizeof path, "%s/bench.tex", dir);
     FILE *fp = fopen(path, "r");
     const size_t n = fp ? fread(tex, 1, sizeof tex - 1, fp) : 0;
