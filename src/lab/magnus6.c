@@ -1,5 +1,6 @@
 #include "magnus6.h"
 
+#include "mat3.h"
 #include "quaternion.h"
 
 #include <string.h>
@@ -7,13 +8,6 @@
 /* The Gauss nodes 1/2 -+ sqrt(15)/10 and the weights of the alphas (Blanes, Casas & Ros). */
 #define NODE_OFF 0.3872983346207417 /* sqrt(15) / 10 */
 #define SQRT15_3 1.2909944487358056 /* sqrt(15) / 3 */
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* The Magnus vector of one step of Y' = A(t) Y, from the nodes' A1, A2, A3 as 3-vectors (on so(3)
  * the bracket [a^, b^] is (a x b)^):
@@ -28,15 +22,15 @@ static void omega_left(double h, const double A[3][3], double O[3])
         a2[i] = SQRT15_3 * h * (A[2][i] - A[0][i]);
         a3[i] = (10.0 / 3.0) * h * (A[2][i] - 2.0 * A[1][i] + A[0][i]);
     }
-    cross(a1, a2, C1);
+    sus_vec3_cross(C1, a1, a2);
     for (int i = 0; i < 3; i++)
         x[i] = 2.0 * a3[i] + C1[i];
-    cross(a1, x, C2);
+    sus_vec3_cross(C2, a1, x);
     for (int i = 0; i < 3; i++) {
         x[i] = -20.0 * a1[i] - a3[i] + C1[i];
         y[i] = a2[i] - C2[i] * (1.0 / 60.0);
     }
-    cross(x, y, C2);
+    sus_vec3_cross(C2, x, y);
     for (int i = 0; i < 3; i++)
         O[i] = a1[i] + a3[i] * (1.0 / 12.0) + C2[i] * (1.0 / 240.0);
 }
@@ -85,7 +79,7 @@ static void step(nodes *nd, long k, double q[4])
     double A[3][3], O[3], p[4];
     nodes_at(nd, k, A);
     omega_left(nd->h, A, O);
-    const double n = sqrt(O[0] * O[0] + O[1] * O[1] + O[2] * O[2]);
+    const double n = sus_vec3_norm(O);
     const double f = n > 0.0 ? -sin(0.5 * n) / n : -0.5;
     const double dq[4] = {cos(0.5 * n), f * O[0], f * O[1], f * O[2]};
     sus_quat_mul(p, q, dq);
