@@ -87,7 +87,8 @@ void sus_lab_sens_run_one(const sus_exact *ex, const sus_stepper_type *st, doubl
     const double e0 = sus_energy(m, w);
     sus_attitude att;
     sus_attitude_identity(&att);
-    *r = (sus_lab_sens_run){.steps = N, .err_fast = NAN, .det_min = 1.0};
+    /* det_min: the smallest ratio over the steps, which may lie above 1; 1 where no block is */
+    *r = (sus_lab_sens_run){.steps = N, .err_fast = NAN, .det_min = st->equation ? INFINITY : 1.0};
     for (long k = 0; k < N; k++) {
         double x[3], lam;
         sus_stepper_stats s;
