@@ -3,7 +3,8 @@
  * rule's. "Much" has no number in the paper, and no theory gives one: MUCH = 10, an order of
  * magnitude, is our reading. Its verdicts do not lean on it: line
  * fig2-much-factor-one judges every ratio here at factor 1, the weakest reading of "faster" and
- * "more accurate", where no larger factor can hold either. Every statement of Figure 2 is then
+ * "more accurate", where no larger factor can hold either (fig2-much-factor-one-ranges the two of
+ * claims_fig2_ranges.c). Every statement of Figure 2 is then
  * evaluated under the printed labels and with the two methods' labels swapped. Figure 2's image
  * is not in the paper's source (\includegraphics{ } with an empty argument, for Figure 1 too):
  * only the caption and the text can be checked. */

@@ -11,7 +11,8 @@
 
 /* "Much" (Figure 2's caption, the Conclusions) has no number in the paper, and no theory gives
  * one: our reading, an order of magnitude. The lines it governs also give their verdicts at factor
- * one, the weakest reading (claims_fig2more.c, claims_fig2readings.c, claims_sensitivity.c). */
+ * one, the weakest reading (claims_fig2more.c, claims_fig2_ranges.c, claims_fig2readings.c,
+ * claims_sensitivity.c). */
 #define CLAIMS_MUCH 10.0
 
 #endif

@@ -263,7 +263,8 @@ static void factor_one_lines(const sens_row *rows)
     ledger_add("fig2-sensitivity-factor-one-order", "(extension)", q, disordered, 0.0, 0.5,
                LEDGER_EXTENSION);
     snprintf(q, sizeof q,
-             "cases (of %d, both runs defined) where the variational $|\\omega_N - \\omega_\\infty|$ is at "
+             "cases (of %d, both runs defined) where the variational $|\\omega_N - "
+             "\\omega_\\infty|$ is at "
              "most the midpoint rule's, ``much'' read at factor one: theory gives none (the "
              "midpoint rule keeps $E$ and ends on $\\omega_\\infty$; the variational integrator "
              "ends on its own energy level)",

@@ -51,8 +51,8 @@ static void block_e(const double I[9], int var, double eps, const double w[2], c
 }
 
 /* det J / det I_m at the step w -> x, and in *tol its round-off bound (top of the file). */
-static double ratio_at(const double I[9], int var, double eps, const double w[2],
-                       const double x[2], double *tol)
+static double ratio_at(const double I[9], int var, double eps, const double w[2], const double x[2],
+                       double *tol)
 {
     double E[2][2];
     block_e(I, var, eps, w, x, E);
