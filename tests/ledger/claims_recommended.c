@@ -297,6 +297,26 @@ static void energy_line(const rec_row *row, const char *word, const rec_run *r)
                      LEDGER_EXTENSION);
 }
 
+/* The smallest attitude level has no level below it, and w is far more accurate than R in these
+ * runs: a line that measured w there would pass its upper side all the same. This one tells the
+ * two apart: dist(R(50), R_N) and |w(50) - w_N| come from different columns of the run (R's nine
+ * entries against the reference, w's two against the closed form), each within a few roundings,
+ * so they agree to 8 u relative only when the same columns are read. */
+static void not_w_line(const rec_row *row, const rec_run *r, double err, const double w_T[2])
+{
+    char id[96], what[400];
+    const double err_w = hypot(r->w[0] - w_T[0], r->w[1] - w_T[1]);
+    snprintf(id, sizeof id, "recommended-%s-%.0e-not-w", row->quantity, row->level);
+    snprintf(what, sizeof what,
+             "$|d_R - d_\\omega| / \\max(d_R, d_\\omega)$ in the same run, $d_R$ its distance "
+             "\\eqref{MetMat} at $t = 50$ and $d_\\omega = |\\omega(50) - \\omega_N|$ ($%s$): the "
+             "line above measures the attitude, not $\\omega$; at least $8u$",
+             notation_g(err_w, 2).s);
+    ledger_add_bound(id, "(recorded bench)", what,
+                     r->failed ? 0.0 : fabs(err - err_w) / fmax(err, err_w), 8.0 * SUS_U, 1,
+                     LEDGER_EXTENSION);
+}
+
 /* Row i's lines: its error at t = 50 between the level below and its own, and E where the
  * setting restores it. */
 static void setting_lines(const rec_row *rows, int n, int i, const sus_model *m, const double w0[2],
@@ -327,6 +347,8 @@ static void setting_lines(const rec_row *rows, int n, int i, const sus_model *m,
                    LEDGER_EXTENSION);
     else
         ledger_add_bound(id, "(recorded bench)", what, err, level, 0, LEDGER_EXTENSION);
+    if (on_R && below == 0.0)
+        not_w_line(row, &r, err, w_T);
     if (!r.me->type->tol && r.me->type->step->apply_order && r.me->type->desc.conserves_energy)
         energy_line(row, on_R ? row->quantity : "w", &r);
 }
