@@ -84,8 +84,8 @@ static void set_header(void *vg, const suslov_cli_option *o, const char *v)
     g->header = strcmp(o->name, "--header") == 0;
 }
 
-/* --help, --man and --version act once the whole command line is read (suslov_args_parse), so
- * that an option after them is read too: bad input is exit 2 wherever it stands. */
+/* --help, --man and --version act once the whole command line is read and checked
+ * (suslov_args_parse), so that bad input is exit 2 wherever it stands, with them or without. */
 static void show_help(void)
 {
     suslov_cli_help(&SPEC, stdout);
@@ -234,7 +234,10 @@ static const suslov_cli_option OPTIONS[] = {
      set_quiet, NULL},
     {"--version", NULL, "print the version (the git commit built from, or unknown) and exit",
      set_version, NULL},
-    {"--help", NULL, "print this text and exit", set_help, NULL},
+    {"--help", NULL,
+     "print this text and exit; as with --version and --man, every option given\n"
+     "is checked first as a run checks it (bad input: exit 2), none is required",
+     set_help, NULL},
     {"--man", NULL, "print this text as a manual page (roff) and exit", set_man, NULL},
 };
 
@@ -359,14 +362,14 @@ void suslov_args_parse(suslov_args *a, int argc, char **argv)
         strcmp(method, "list") == 0)
         suslov_cli_die("--method list takes no other options");
     suslov_cli_parse(&SPEC, argc, argv, &g);
-    if (g.show)
-        g.show();
-    if (!g.method)
+    if (!g.method && !g.show)
         suslov_cli_die("--method is required");
-    if (strcmp(g.method, "list") == 0)
+    if (g.method && strcmp(g.method, "list") == 0) /* alone: the peek above saw to that */
         method_list();
     memset(a, 0, sizeof *a);
     suslov_args_check(a, &g);
+    if (g.show)
+        g.show();
     a->output = g.output;
     a->every = g.every;
     memcpy(a->w0, g.w0, sizeof a->w0);
