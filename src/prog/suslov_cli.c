@@ -213,7 +213,13 @@ static const suslov_cli_option OPTIONS[] = {
      "error tolerance, 2^-52 <= TOL < 1, for a tolerance-driven method (order\n"
      "tol in --method list), which then chooses its steps; with --time T, never\n"
      "with --eps, --steps or --every; a run stops (exit 3) after 10^6 steps\n"
-     "short of T",
+     "short of T. TOL bounds absolute errors: taylor-adaptive's estimate, in\n"
+     "each step, of the error of w and of the attitude quaternion (max norm;\n"
+     "the steps' errors add up over a run), exact-attitude's |R R_ref^T - I|_F\n"
+     "over the whole run, up to round-off (its w is the closed form). Not\n"
+     "relative ones: where |w| is far below TOL, TOL promises nothing of the\n"
+     "relative error of w, nor of lambda, computed from w by (LagMult) and\n"
+     "quadratic in w",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
