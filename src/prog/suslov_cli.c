@@ -84,8 +84,8 @@ static void set_header(void *vg, const suslov_cli_option *o, const char *v)
     g->header = strcmp(o->name, "--header") == 0;
 }
 
-/* --help, --man and --version act once the whole command line is read (suslov_args_parse), so
- * that an option after them is read too: bad input is exit 2 wherever it stands. */
+/* --help, --man and --version act once the whole command line is read and checked
+ * (suslov_args_parse), so that bad input is exit 2 wherever it stands, with them or without. */
 static void show_help(void)
 {
     suslov_cli_help(&SPEC, stdout);
@@ -213,7 +213,13 @@ static const suslov_cli_option OPTIONS[] = {
      "error tolerance, 2^-52 <= TOL < 1, for a tolerance-driven method (order\n"
      "tol in --method list), which then chooses its steps; with --time T, never\n"
      "with --eps, --steps or --every; a run stops (exit 3) after 10^6 steps\n"
-     "short of T",
+     "short of T. TOL bounds absolute errors: taylor-adaptive's estimate, in\n"
+     "each step, of the error of w and of the attitude quaternion (max norm;\n"
+     "the steps' errors add up over a run), exact-attitude's |R R_ref^T - I|_F\n"
+     "over the whole run, up to round-off (its w is the closed form). Not\n"
+     "relative ones: where |w| is far below TOL, TOL promises nothing of the\n"
+     "relative error of w, nor of lambda, computed from w by (LagMult) and\n"
+     "quadratic in w",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
@@ -234,7 +240,10 @@ static const suslov_cli_option OPTIONS[] = {
      set_quiet, NULL},
     {"--version", NULL, "print the version (the git commit built from, or unknown) and exit",
      set_version, NULL},
-    {"--help", NULL, "print this text and exit", set_help, NULL},
+    {"--help", NULL,
+     "print this text and exit; as with --version and --man, every option given\n"
+     "is checked first as a run checks it (bad input: exit 2), none is required",
+     set_help, NULL},
     {"--man", NULL, "print this text as a manual page (roff) and exit", set_man, NULL},
 };
 
@@ -359,14 +368,14 @@ void suslov_args_parse(suslov_args *a, int argc, char **argv)
         strcmp(method, "list") == 0)
         suslov_cli_die("--method list takes no other options");
     suslov_cli_parse(&SPEC, argc, argv, &g);
-    if (g.show)
-        g.show();
-    if (!g.method)
+    if (!g.method && !g.show)
         suslov_cli_die("--method is required");
-    if (strcmp(g.method, "list") == 0)
+    if (g.method && strcmp(g.method, "list") == 0) /* alone: the peek above saw to that */
         method_list();
     memset(a, 0, sizeof *a);
     suslov_args_check(a, &g);
+    if (g.show)
+        g.show();
     a->output = g.output;
     a->every = g.every;
     memcpy(a->w0, g.w0, sizeof a->w0);

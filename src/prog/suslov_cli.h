@@ -28,7 +28,8 @@ typedef struct {
 #define SUSLOV_TOL_MAX_STEPS 1000000L
 
 /* Parses and checks everything that can be checked before the run (bad input: one line, exit
- * 2); --help, --version, --man and --method list print and exit 0 (1 if stdout fails). */
+ * 2); --help, --version, --man and --method list print and exit 0 (1 if stdout fails), the first
+ * three after the same checks of every option given (suslov_args_check). */
 void suslov_args_parse(suslov_args *a, int argc, char **argv);
 /* The #-comment lines before the CSV header: version, command line, method, eps, body, w0,
  * units. */

@@ -68,9 +68,9 @@ static long steps_for_time(double T, double eps)
 static int resolve_method(suslov_args *a, const suslov_args_given *g)
 {
     char names[1024];
-    const int exact = strcmp(g->method, "exact") == 0;
-    a->method = exact ? NULL : sus_step_method_by_name(g->method);
-    if (!exact && !a->method)
+    const int exact = g->method && strcmp(g->method, "exact") == 0;
+    a->method = exact || !g->method ? NULL : sus_step_method_by_name(g->method);
+    if (g->method && !exact && !a->method)
         suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
                        sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
@@ -83,6 +83,8 @@ static int resolve_method(suslov_args *a, const suslov_args_given *g)
                                     SUS_RECON_NAMES[r]);
         suslov_cli_die("unknown reconstruction %s (%s)", suslov_cli_quote(g->recon), names);
     }
+    if (!g->method) /* --help without --method: the name alone can be checked */
+        return 0;
     if (exact)
         suslov_cli_die(
             "--reconstruct does not apply to --method exact (its R is the reference attitude)");
@@ -95,7 +97,7 @@ static void check_sweeps(suslov_args *a, const suslov_args_given *g)
     a->stepper = a->method ? a->method->type : NULL;
     if (!g->sweeps)
         return;
-    if (!a->method || a->method->type != sus_step_midpoint)
+    if (g->method && (!a->method || a->method->type != sus_step_midpoint))
         suslov_cli_die(
             "--sweeps applies only to --method midpoint (it solves the midpoint rule's equation)");
     if (g->sweeps > SUS_LAB_MAX_SWEEPS)
@@ -105,29 +107,31 @@ static void check_sweeps(suslov_args *a, const suslov_args_given *g)
 }
 
 /* A tolerance-driven method: --tol and --time, no fixed step. The smallest TOL is one rounding
- * unit of 1: a step's estimate cannot be resolved below the rounding of the state it corrects. */
+ * unit of 1: a step's estimate cannot be resolved below the rounding of the state it corrects.
+ * Under --help (g->show) an option that is missing is not asked for; one given is checked. */
 static void check_tol_run(suslov_args *a, const suslov_args_given *g)
 {
-    if (isnan(g->tol))
+    if (isnan(g->tol) && !g->show)
         suslov_cli_die("--method %s chooses its steps from --tol, which is required", g->method);
-    if (!(g->tol >= DBL_EPSILON && g->tol < 1.0))
+    if (!isnan(g->tol) && !(g->tol >= DBL_EPSILON && g->tol < 1.0))
         suslov_cli_die("--tol must be in [2^-52, 1), got %.17g", g->tol);
     if (!isnan(g->eps) || g->steps > 0)
-        suslov_cli_die("--tol chooses the steps: give --time, not --eps or --steps");
+        suslov_cli_die("a tolerance-driven run chooses its steps from --tol: give --time, not "
+                       "--eps or --steps");
     if (g->every_given)
         suslov_cli_die(
             "--every counts fixed steps; with --tol rows come at each step or by --every-time");
-    if (isnan(g->T) || !(g->T > 0.0))
+    if (isnan(g->T) ? !g->show : !(g->T > 0.0))
         suslov_cli_die("--tol needs a final time --time T > 0");
     if (!isnan(g->every_time) && !(g->every_time > 0.0))
         suslov_cli_die("--every-time must be positive, got %.17g", g->every_time);
     /* The rows' count: below 2^62, as the library counts them (driver.h, sus_run_tol), so that a
      * count it refuses is refused here, as bad input, not met later as a failed run. */
-    if (!isnan(g->every_time) && !(g->T / g->every_time < 0x1p62))
+    if (!isnan(g->every_time) && !isnan(g->T) && !(g->T / g->every_time < 0x1p62))
         suslov_cli_die("--time %.17g with --every-time %.17g asks for %.3g rows, 2^62 or more",
                        g->T, g->every_time, g->T / g->every_time);
     a->tol = g->tol;
-    a->t_end = g->T;
+    a->t_end = isnan(g->T) ? 0.0 : g->T; /* 0: --help without --time, no run to size */
     a->every_time = isnan(g->every_time) ? 0.0 : g->every_time;
 }
 
@@ -136,12 +140,15 @@ static void check_fixed_steps(suslov_args *a, const suslov_args_given *g)
     if (!isnan(g->tol) || !isnan(g->every_time))
         suslov_cli_die("%s applies to a tolerance-driven method (--method list: order tol)",
                        isnan(g->tol) ? "--every-time" : "--tol");
-    if (isnan(g->eps))
+    if (isnan(g->eps) && !g->show)
         suslov_cli_die("--eps is required");
-    if (!(g->eps > 0.0))
+    if (!isnan(g->eps) && !(g->eps > 0.0))
         suslov_cli_die("--eps must be positive, got %.17g", g->eps);
-    if ((g->steps > 0) == !isnan(g->T))
+    const int lengths = (g->steps > 0) + !isnan(g->T);
+    if (lengths == 2 || (lengths == 0 && !g->show))
         suslov_cli_die("give exactly one of --steps and --time");
+    if (isnan(g->eps) || lengths == 0) /* --help without them: no run to size, t_end 0 */
+        return;
     a->eps = g->eps;
     a->steps = isnan(g->T) ? g->steps : steps_for_time(g->T, g->eps);
     /* Every t_k = k eps <= N eps must be a finite number. */
@@ -171,8 +178,9 @@ static void check_start(const suslov_args *a, const suslov_args_given *g)
 void suslov_args_check(suslov_args *a, const suslov_args_given *g)
 {
     char err[1024];
-    const sus_step_method *me = sus_step_method_by_name(g->method);
-    if (me && me->type->tol)
+    const sus_step_method *me = g->method ? sus_step_method_by_name(g->method) : NULL;
+    /* --help without --method: the options given say which kind of run they describe */
+    if (me ? me->type->tol != NULL : !g->method && (!isnan(g->tol) || !isnan(g->every_time)))
         check_tol_run(a, g);
     else
         check_fixed_steps(a, g);
@@ -186,7 +194,9 @@ void suslov_args_check(suslov_args *a, const suslov_args_given *g)
     check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
-    const double cost = a->method ? 0.0 : sus_exact_reference_steps(&a->model, g->w0, a->t_end);
+    const int exact = g->method && !a->method;
+    const double cost =
+        exact && a->t_end > 0.0 ? sus_exact_reference_steps(&a->model, g->w0, a->t_end) : 0.0;
     if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
         suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly "
                        "that the reference "
@@ -194,7 +204,7 @@ void suslov_args_check(suslov_args *a, const suslov_args_given *g)
                        cost, EXACT_MAX_REFERENCE_STEPS);
     if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
         suslov_cli_die("--output: %s", err);
-    if (ignored)
+    if (ignored && !g->show) /* a warning about a run that --help does not make */
         suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon,
                         a->method->type->name);
 }

@@ -20,7 +20,9 @@ typedef struct {
 /* Fills the run's kind (steps or tolerance), its steps, model, method, stepper and
  * reconstruction into a, checking everything that can be checked before the run: bad input is
  * one line and exit 2; --reconstruct given to a method that ignores it, a warning once every
- * check has passed. g->method is set and is not "list". */
+ * check has passed. g->method is not "list", and is set unless --help, --man or --version is
+ * given (g->show): then every option given is checked alike, but none is required and no
+ * warning is given, since no run follows. */
 void suslov_args_check(suslov_args *a, const suslov_args_given *g);
 
 #endif

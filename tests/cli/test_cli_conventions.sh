@@ -32,11 +32,47 @@ for first in --help --man --version; do
 done
 bad "--help --version" "^suslov: error: --help and --version are both given" --help --version
 bad "--version --man" "^suslov: error: --version and --man are both given" --version --man
-# the checks that need a run are not made: --help after a valid command prints the help
+# Every option given is checked before --help, --man or --version acts, as a run checks it: a
+# command line refused without them is refused with them, before or after them, by the very line
+# it gets without them (the expected line comes from that run, which must itself be refused).
+for cmd in "--method euler --eps -1 --steps 1" "--method taylor-adaptive --tol 5 --time 1" \
+    "--method euler --eps 0.1 --steps 1 --every-time 1" "--method euler --eps 0.1 --time 0.25" \
+    "--method euler --eps 0.1 --steps 3 --time 1" "--method rk4 --eps 0.1 --time 1 --sweeps 2" \
+    "--method midpoint --eps 0.1 --steps 1 --inertia 1,0,0,0,-1,0,0,0,1" \
+    "--method exact --eps 0.1 --steps 1 --reconstruct cayley" "--method bogus --eps 0.1 --steps 1" \
+    "--method euler --eps 0.1 --steps 1 --output $T/none/x.csv"; do
+    "$S" $cmd >"$T/out" 2>"$T/want"; rc=$?
+    wrong=""
+    [ "$rc" = 2 ] && [ "$(wc -l <"$T/want")" = 1 ] || wrong=" [without them: exit $rc]"
+    for show in --help --man --version; do
+        for at in before after; do
+            if [ $at = before ]; then set -- $show $cmd; else set -- $cmd $show; fi
+            "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
+            [ "$rc" = 2 ] && [ ! -s "$T/out" ] && cmp -s "$T/want" "$T/err" ||
+                wrong="$wrong [$show $at: exit $rc, $(head -c 80 "$T/err")]"
+        done
+    done
+    d="$cmd, with --help, --man or --version before or after it: exit 2 and its line"
+    check "$d ($(cat "$T/want"))${wrong:+; wrong:$wrong}" test -z "$wrong"
+done
+# without --method, the options given are checked for the kind of run they describe
+bad "--eps -1 --help" "^suslov: error: --eps must be positive" --eps -1 --help
+bad "--help --tol 0" "^suslov: error: --tol must be in" --help --tol 0
+bad "--eps 0.1 --tol 1e-6 --man" "not --eps or --steps" --eps 0.1 --tol 1e-6 --man
+bad "--version --sweeps 9" "^suslov: error: --sweeps must be at most 8" --version --sweeps 9
+bad "--reconstruct cay --help" "^suslov: error: unknown reconstruction .cay." \
+    --reconstruct cay --help
+# but none is required, and no warning is given for a run that is not made: the help, exit 0
 "$S" --help >"$T/help0"
-"$S" --method euler --eps -1 --output "$T/none/x.csv" --help >"$T/help1" 2>"$T/err"; rc=$?
-check "--method euler --eps -1 --output MISSING/x.csv --help: exit 0, the help, nothing on stderr" \
-    sh -c "test $rc = 0 -a ! -s '$T/err' && cmp -s '$T/help0' '$T/help1'"
+for cmd in "--method euler" "--method taylor-adaptive" "--eps 0.1 --steps 3" \
+    "--tol 1e-6 --time 1 --every-time 0.5" "--method midpoint --sweeps 2 --eps 0.1" \
+    "--method taylor8 --eps 0.1 --steps 1 --reconstruct cayley" \
+    "--method euler --eps 0.1 --steps 1 --output $T/new.csv"; do
+    "$S" $cmd --help >"$T/help1" 2>"$T/err"; rc=$?
+    check "$cmd --help: exit 0, the help, nothing on stderr ($(head -c 80 "$T/err"))" \
+        sh -c "test $rc = 0 -a ! -s '$T/err' && cmp -s '$T/help0' '$T/help1'"
+done
+check "--output FILE --help creates no FILE" test ! -e "$T/new.csv"
 
 # -- ends the options; nothing may follow (suslov takes no operands)
 "$S" --no-header --method euler --eps 0.1 --steps 1 -- >"$T/o"; rc=$?
