@@ -14,7 +14,17 @@
  *     (cos psi, sin psi) = sigma (sech s, tanh s),  s = asinh(S/C) + sigma k t,
  * with (C, S) = (cos psi0, sin psi0) and sigma = sign C. Every motion with C != 0 tends to
  * psi = pi/2: the steady rotation with c(w) = 0 reached at the rate k. Nothing here
- * overflows for any t: sech is evaluated as 2 e^{-|s|} / (1 + e^{-2|s|}). */
+ * overflows for any t: sech is evaluated as 2 e^{-|s|} / (1 + e^{-2|s|}).
+ *
+ * The factor c(w) = I_3i w_i of (ContDyn) and (LagMult) along the motion: c = <b, L^{-T} u> =
+ * <v, u> = r |v| cos psi, so
+ *     c(t) = sigma r |v| sech s,
+ * to a few roundings of itself at every t, where I31 w1 + I32 w2 at the rounded w cancels to
+ * about u |b| |w| near the steady rotation (and 1 / |I_m| in (LagMult) multiplies that).
+ *
+ * A motion whose k underflows is taken as fixed: |psi'| <= k, so w moves by at most
+ * |L^{-T}| r k t, and k rounds to 0 only below 2^-1074, so for any double t (< 2^1024) that is
+ * below 2^-50 |M|, |M| = r |L^{-T}|: the size of the closed form's own rounding of w. */
 #ifndef SUS_EXACT_H
 #define SUS_EXACT_H
 
@@ -31,7 +41,10 @@ typedef struct {
     double cb, sb;        /* (cos beta, sin beta) */
     double k;             /* rate of approach to the steady rotation */
     double sigma, s0;
-    int fixed; /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0) */
+    double cmax; /* r |v|: c(t) = sigma cmax sech s */
+    double c0;   /* c(w0) = I31 w1 + I32 w2, to about one rounding */
+    /* w(0) is an equilibrium (or w(0) = 0, or I31 = I32 = 0), or k underflows */
+    int fixed;
     double w0[2];
 } sus_exact;
 
@@ -41,6 +54,12 @@ typedef struct {
 int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2]);
 void sus_exact_omega(const sus_exact *ex, double t, double w[2]);
 void sus_exact_limit(const sus_exact *ex, double w[2]);
+/* c(w(t)) = I31 w1 + I32 w2 along the motion, from the closed form (above): c(w0) at t = 0 and
+ * for a fixed motion; NaN for a NULL or refused ex. */
+double sus_exact_c(const sus_exact *ex, double t);
+/* (LagMult) at w with its factor c = I_3i w_i given, not formed from w: term by term as
+ * sus_lagmult (model.h), which it equals for c = sus_c(m, w). NaN for a NULL m or w. */
+double sus_lagmult_c(const sus_model *m, const double w[2], double c);
 
 #ifdef __cplusplus
 }

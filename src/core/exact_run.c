@@ -34,7 +34,7 @@ int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emi
         sus_row row = {.k = k, .t = (double)k * cfg->eps};
         sus_exact_omega(&ex, row.t, row.w);
         row.w[2] = 0.0;
-        row.lambda = sus_lagmult(cfg->model, row.w);
+        row.lambda = sus_lagmult_c(cfg->model, row.w, sus_exact_c(&ex, row.t)); /* exact.h */
         sus_refatt_at(&ra, row.t, row.R);
         if (!sus_row_finite(&row)) {
             report->step = k;

@@ -76,6 +76,17 @@ result "$(near "$4" 0 2e-15)" "exact: energy stays 0.225 (a first integral), wor
 lam=$(tail -n 1 "$tmp/exact200.csv" | cut -d, -f6)
 result "$(near "$lam" -0.029347826086956522 1e-11)" "exact: lambda(t = 200) = $lam, by hand lambda(w_inf) = -27/920"
 
+# A motion whose rate k = r |v| / det L underflows (here 1e-360) is fixed to far below a rounding
+# over any final time (exact.h): exit 0 and every row w = w0, lambda = 0 (c(w0) = 1e-360 is 0).
+"$S" --no-header --method exact --eps 0.05 --steps 3 --inertia 1,0,0,0,1,0,1e-200,0,1 \
+    --omega0 1e-160,0 >"$tmp/under.csv" 2>"$tmp/err"
+rc=$?
+bad=$(awk -F, 'NR > 1 && !($3 == 1e-160 && $4 == 0 && $6 == 0) { n++ } END { print n + 0 }' \
+    "$tmp/under.csv")
+rows=$(($(wc -l <"$tmp/under.csv") - 1))
+result "$([ "$rc" = 0 ] && [ "$rows" = 4 ] && [ "$bad" = 0 ] && echo 1 || echo 0)" \
+    "exact, k underflows (I31 = 1e-200, w0 = (1e-160, 0)): exit $rc, $rows rows (4), $bad not at w0"
+
 # The explicit DSPs print lambda_{k+1} = lambda(w^{k+1}) by (Discretization): check each row.
 for m in euler rk4 midpoint; do
     "$S" --no-header --method "$m" --eps 0.25 --steps 40 >"$tmp/$m.csv" 2>"$tmp/err"
