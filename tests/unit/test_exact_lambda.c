@@ -26,8 +26,8 @@ static void ref_init(ref_form *f, const sus_model *m, const double w0[2])
     const long double u1 = check_cross_diff_exact(I[0][0], w0[0], -I[1][0], w0[1]) / f->l11;
     const long double u2 = f->l22 * w0[1];
     const long double v1 = b[0] / f->l11;
-    const long double v2 = check_cross_diff_exact(I[0][0], b[1], I[1][0], b[0]) / (f->l11 *
-                                                                                 sqrtl(f->det));
+    const long double v2 =
+        check_cross_diff_exact(I[0][0], b[1], I[1][0], b[0]) / (f->l11 * sqrtl(f->det));
     f->vn = hypotl(v1, v2);
     f->r = hypotl(u1, u2);
     f->cb = v1 / f->vn;
@@ -115,8 +115,9 @@ static void check_motion(const char *name, const double I9[9], const double w0[2
         }
     for (int t = 0; t <= 4; t++)
         terms_only = fmax(terms_only, one_time(&ex, &f, t, &worst));
-    CHECK(worst <= 1.0, "%s: exact's lambda against (LagMult) in long double at the closed-form w "
-                        "and c: worst error / bound %.3g (error / 8 u |terms| alone: %.3g)",
+    CHECK(worst <= 1.0,
+          "%s: exact's lambda against (LagMult) in long double at the closed-form w "
+          "and c: worst error / bound %.3g (error / 8 u |terms| alone: %.3g)",
           name, worst, terms_only);
 }
 
@@ -141,8 +142,10 @@ static void check_rows(void)
     const int rc = sus_run_exact(&cfg, w0, keep_lambda, &lam, &rep);
     const long double e2 = 1e-12L, a2 = (1 + e2) / (1 + 4 * e2), want = 2 * a2 * (1 - e2);
     const double err = (double)fabsl(lam - want);
-    CHECK(rc == SUS_RUN_OK && err <= 32 * DBL_EPSILON, "exact run on diag(1, 1e-12), b = (8, 4): "
-          "lambda(t = 1) = %.17g, by hand 2 a^2 (1 - 1e-12) = %.17Lg (error %.3g)", lam, want, err);
+    CHECK(rc == SUS_RUN_OK && err <= 32 * DBL_EPSILON,
+          "exact run on diag(1, 1e-12), b = (8, 4): "
+          "lambda(t = 1) = %.17g, by hand 2 a^2 (1 - 1e-12) = %.17Lg (error %.3g)",
+          lam, want, err);
 }
 
 /* k underflows: the motion is fixed (exact.h), w = w0 and c = c(w0), never NaN. */
@@ -150,7 +153,8 @@ static void check_underflow(void)
 {
     static const struct {
         double I31, I32, w0[2];
-    } cases[] = {{1e-200, 0, {1e-160, 0}}, {1e-160, 0, {1e-200, 1e-200}}, {0, -1e-300, {1e-30, 1e-40}}};
+    } cases[] = {
+        {1e-200, 0, {1e-160, 0}}, {1e-160, 0, {1e-200, 1e-200}}, {0, -1e-300, {1e-30, 1e-40}}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const double I9[9] = {1, 0, 0, 0, 1, 0, cases[i].I31, cases[i].I32, 1};
         sus_model m;
@@ -163,8 +167,8 @@ static void check_underflow(void)
         CHECK(rc == 0 && ex.fixed && w[0] == cases[i].w0[0] && w[1] == cases[i].w0[1] &&
                   c == sus_c(&m, cases[i].w0),
               "k underflows (I31, I32 = %g, %g; w0 = %g, %g): fixed, w(1e300) = w0, c = c(w0) "
-              "(rc %d, fixed %d, w = %g, %g)", cases[i].I31, cases[i].I32, cases[i].w0[0],
-              cases[i].w0[1], rc, ex.fixed, w[0], w[1]);
+              "(rc %d, fixed %d, w = %g, %g)",
+              cases[i].I31, cases[i].I32, cases[i].w0[0], cases[i].w0[1], rc, ex.fixed, w[0], w[1]);
     }
 }
 
@@ -191,9 +195,10 @@ static void check_phase_overflow(void)
         const long double u1 = f.r * (f.cb * ch - f.sb * th), u2 = f.r * (f.sb * ch + f.cb * th);
         const long double y = u2 / f.l22, x = (u1 - f.l21 * y) / f.l11;
         const double err = (double)hypotl(w[0] - x, w[1] - y);
-        CHECK(isfinite(ex.s0) && err <= 8.0 * DBL_EPSILON * 750.0, "w0 = (%g, -1), 2^-1060 off a "
-              "steady rotation: s0 = %.17g finite, w(735) = (%.3g, %.3g), error %.3g", w0[0], ex.s0,
-              w[0], w[1], err);
+        CHECK(isfinite(ex.s0) && err <= 8.0 * DBL_EPSILON * 750.0,
+              "w0 = (%g, -1), 2^-1060 off a "
+              "steady rotation: s0 = %.17g finite, w(735) = (%.3g, %.3g), error %.3g",
+              w0[0], ex.s0, w[0], w[1], err);
     }
 }
 
