@@ -232,7 +232,9 @@ static void state_at(const sus_tol_work *wk, double t, const double q[4], double
 {
     sus_exact_fast_omega(&wk->f, t, w);
     w[2] = 0.0;
-    *lambda = sus_lagmult(wk->m, w);
+    /* c(t) from the closed form, as the reference's: I31 w1 + I32 w2 at the rounded w cancels
+     * near the steady rotation, and (LagMult) divides it by |I_m| */
+    *lambda = sus_lagmult_c(wk->m, w, sus_exact_c(&wk->ex, t));
     sus_quat_to_attitude(q, att);
 }
 

@@ -87,6 +87,18 @@ rows=$(($(wc -l <"$tmp/under.csv") - 1))
 result "$([ "$rc" = 0 ] && [ "$rows" = 4 ] && [ "$bad" = 0 ] && echo 1 || echo 0)" \
     "exact, k underflows (I31 = 1e-200, w0 = (1e-160, 0)): exit $rc, $rows rows (4), $bad not at w0"
 
+# exact-attitude's lambda takes c(t) from the closed form too: on I_m = diag(1, 1e-12), I31, I32 =
+# 8, 4 the motion is at once the steady rotation w2 = -2 w1 (c = 0), where (LagMult) is
+# 2 w1^2 (1 - 1e-12); terms of size 4 rounded a few times: 1e-14 (c(w) at the rounded w, divided
+# by |I_m| = 1e-12, was off by 4e-3).
+"$S" --no-header --method exact-attitude --tol 1e-10 --time 1 --every-time 1 \
+    --inertia 1,0,0,0,1e-12,0,8,4,1 --omega0 1,1 >"$tmp/ea_sing.csv" 2>"$tmp/err"
+ea=$(tail -n 1 "$tmp/ea_sing.csv")
+ea_w1=$(echo "$ea" | cut -d, -f3) ea_lam=$(echo "$ea" | cut -d, -f6)
+ea_hand=$(awk -v a="$ea_w1" 'BEGIN { printf "%.17g", 2 * a * a * (1 - 1e-12) }')
+result "$(near "$ea_lam" "$ea_hand" 1e-14)" \
+    "exact-attitude, I_m = diag(1, 1e-12): lambda(1) = $ea_lam, by hand 2 w1^2 (1 - 1e-12) = $ea_hand"
+
 # The explicit DSPs print lambda_{k+1} = lambda(w^{k+1}) by (Discretization): check each row.
 for m in euler rk4 midpoint; do
     "$S" --no-header --method "$m" --eps 0.25 --steps 40 >"$tmp/$m.csv" 2>"$tmp/err"
