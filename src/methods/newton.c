@@ -2,35 +2,50 @@
  * and the continuation in eps they fall back on. */
 #include "newton_core.h"
 
+#include <float.h>
 #include <math.h>
 
-/* The product of the row 1-norms of J: an upper bound on the sum of |terms| of det J's Leibniz
- * expansion (expanding the product gives every term of it and more): the yardstick for the
- * round-off in det J, on the safe side. */
-static double row_norm_product(const double *J, int n)
+/* A product kept as mantissa and binary exponent, m 2^e with 0.5 <= |m| < 1 (or m = 0): det J
+ * and its round-off yardstick are products of n factors of the size of J's entries, and leave the
+ * range of doubles when J's entries are far from 1 (n = 4 and entries near c: once c^4 does),
+ * where their ratio, all the singularity test reads, does not. */
+typedef struct {
+    double m;
+    int e;
+} wide;
+
+static void wide_mul(wide *w, double f)
 {
-    double p = 1.0;
-    for (int i = 0; i < n; i++) {
-        double r = 0.0;
-        for (int j = 0; j < n; j++)
-            r += fabs(J[i * n + j]);
-        p *= r;
-    }
-    return p;
+    int k;
+    w->m = frexp(w->m * f, &k);
+    w->e += k;
 }
 
-/* n = 2 by the closed form (newton_core.h: the (REGLOC) block); larger n by Gaussian elimination
- * with partial pivoting, on the stack. Written here rather than taken from GSL: GSL's LU was most
- * of the cost of a gauss4 step (n = 8), and the WebAssembly build of the methods has no GSL. */
-int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+/* |a| > |b|, exactly: the exponents decide unless they are equal (a NaN: no). */
+static int wide_abs_greater(wide a, wide b) { return ldexp(fabs(a.m), a.e - b.e) > fabs(b.m); }
+
+static int in_range(double x) { return fabs(x) >= DBL_MIN && fabs(x) <= DBL_MAX; }
+
+/* The row 1-norms of J into r. Their product bounds the sum of |terms| of det J's Leibniz
+ * expansion (expanding the product gives every term of it and more): times 4 n u, the yardstick
+ * for the round-off in det J, on the safe side. */
+static void row_norms(const double *J, int n, double *r)
 {
-    if (n == 2)
-        return newton_solve_2x2(J, g, dx, det);
-    const double bound = 4.0 * n * SUS_U * row_norm_product(J, n);
-    double b[SUS_MAX_UNKNOWNS];
-    for (int i = 0; i < n; i++)
-        b[i] = g[i];
-    *det = 1.0;
+    for (int i = 0; i < n; i++) {
+        r[i] = 0.0;
+        for (int j = 0; j < n; j++)
+            r[i] += fabs(J[i * n + j]);
+    }
+}
+
+/* P J = L U in place by Gaussian elimination with partial pivoting: U on and above the diagonal,
+ * L's multipliers below it (only the condition number reads them), perm[k] the row of J that is
+ * row k of P J; the same eliminations applied to b. Returns det P (+-1). */
+static double lu_factor(int n, double *J, double *b, int *perm)
+{
+    double sign = 1.0;
+    for (int k = 0; k < n; k++)
+        perm[k] = k;
     for (int k = 0; k < n; k++) {
         int p = k;
         for (int i = k + 1; i < n; i++)
@@ -43,27 +58,98 @@ int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double 
                 J[p * n + j] = t;
             }
             const double t = b[k];
-            b[k] = b[p];
-            b[p] = t;
-            *det = -*det;
+            const int q = perm[k];
+            b[k] = b[p], b[p] = t;
+            perm[k] = perm[p], perm[p] = q;
+            sign = -sign;
         }
-        *det *= J[k * n + k];
         if (J[k * n + k] == 0.0)
             continue;
         for (int i = k + 1; i < n; i++) {
             const double f = J[i * n + k] / J[k * n + k];
-            for (int j = k; j < n; j++)
+            J[i * n + k] = f;
+            for (int j = k + 1; j < n; j++)
                 J[i * n + j] -= f * J[k * n + j];
             b[i] -= f * b[k];
         }
     }
-    if (!(fabs(*det) > bound))
+    return sign;
+}
+
+/* The condition number of J with its rows scaled to unit 1-norm (D J, D = diag(1/r)), in the
+ * max norm: kappa = |D J| |(D J)^-1| = max_i sum_j |(J^-1)_ij| r_j, unchanged by scaling any row.
+ * J^-1 column by column from the factors of lu_factor; NaN or infinite for a zero pivot. */
+static double equilibrated_cond(int n, const double *LU, const int *perm, const double *r)
+{
+    double rows[SUS_MAX_UNKNOWNS] = {0}, x[SUS_MAX_UNKNOWNS], kappa = 0.0;
+    for (int j = 0; j < n; j++) {
+        for (int k = 0; k < n; k++) { /* L y = P e_j */
+            x[k] = perm[k] == j;
+            for (int i = 0; i < k; i++)
+                x[k] -= LU[k * n + i] * x[i];
+        }
+        for (int k = n - 1; k >= 0; k--) { /* U x = y */
+            for (int i = k + 1; i < n; i++)
+                x[k] -= LU[k * n + i] * x[i];
+            x[k] /= LU[k * n + k];
+        }
+        for (int i = 0; i < n; i++)
+            rows[i] += fabs(x[i]) * r[j];
+    }
+    for (int i = 0; i < n; i++)
+        kappa = rows[i] > kappa || isnan(rows[i]) ? rows[i] : kappa;
+    return kappa;
+}
+
+/* Is |det J| at or below 4 n u times the product of the row norms? As plain products of doubles
+ * (in this order, as they have always been formed) where both lie in the range of doubles; else
+ * as wide products, which round as the plain ones do (a power of two scales exactly) but never
+ * under- or overflow: the answer is the same for J and 2^s J. *det: det J where a double holds it;
+ * beyond, +-inf above the range and, below it, the least subnormal of its sign (not 0: det J > 0
+ * is the test of the branch's orientation, newton_core.h). */
+static int det_small(int n, const double *U, double sign, const double *r, double *det)
+{
+    double d = sign, p = 1.0;
+    for (int k = 0; k < n; k++)
+        d *= U[k * n + k], p *= r[k];
+    const double bound = 4.0 * n * SUS_U * p;
+    *det = d;
+    if (in_range(d) && in_range(bound))
+        return !(fabs(d) > bound);
+    wide wd = {0.5 * sign, 1}, wb = {0.5, 1}; /* +-1 and 1 */
+    for (int k = 0; k < n; k++)
+        wide_mul(&wd, U[k * n + k]), wide_mul(&wb, r[k]);
+    wide_mul(&wb, 4.0 * n * SUS_U);
+    const double v = ldexp(wd.m, wd.e);
+    *det = v == 0.0 && wd.m != 0.0 ? copysign(DBL_TRUE_MIN, wd.m) : v;
+    return !wide_abs_greater(wd, wb);
+}
+
+/* n = 2 by the closed form (newton_core.h: the (REGLOC) block); larger n by Gaussian elimination
+ * with partial pivoting, on the stack. Written here rather than taken from GSL: GSL's LU was most
+ * of the cost of a gauss4 step (n = 8), and the WebAssembly build of the methods has no GSL. */
+int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+{
+    if (n == 2)
+        return newton_solve_2x2(J, g, dx, det);
+    double b[SUS_MAX_UNKNOWNS], r[SUS_MAX_UNKNOWNS];
+    int perm[SUS_MAX_UNKNOWNS];
+    row_norms(J, n, r);
+    for (int i = 0; i < n; i++)
+        b[i] = g[i];
+    const double sign = lu_factor(n, J, b, perm);
+    /* The determinant test is cheap but, beyond n = 2, strict: it falls with the product of the
+     * small singular values (gauss4's J on a near-singular I_m has two, one from each block I_m).
+     * Where it fails, the condition number decides: the solve's relative error is about
+     * 4 n u kappa, and J is singular to working precision only where that reaches 1. */
+    if (det_small(n, J, sign, r, det) &&
+        !(4.0 * n * SUS_U * equilibrated_cond(n, J, perm, r) < 1.0))
         return -1;
     for (int i = n - 1; i >= 0; i--) {
-        double r = b[i];
+        double s = b[i];
         for (int j = i + 1; j < n; j++)
-            r -= J[i * n + j] * dx[j];
-        dx[i] = r / J[i * n + i];
+            s -= J[i * n + j] * dx[j];
+        dx[i] = s / J[i * n + i];
     }
     return 0;
 }
@@ -76,18 +162,43 @@ int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double e
 
 /* ---- the branch: continuation in eps from the root at eps = 0 ---- */
 
-/* |det J| / |J|_F^2 (n = 2) or |det J|^(2/n) / |J|_F^2: how far J is from singular, scale-free. */
+/* |det J|^(2/n) / |J|_F^2 of an n x n J, n > 2, for J = 2^s J0 (s from the largest |J0_ij|):
+ * the same ratio for J0, whose det and |J|_F^2 a double holds however J is scaled. */
+static double regularity_scaled(int n, const double *J)
+{
+    double J0[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], g[SUS_MAX_UNKNOWNS] = {0}, dx[SUS_MAX_UNKNOWNS],
+                                                    amax = 0.0, f2 = 0.0;
+    for (int i = 0; i < n * n; i++)
+        amax = fmax(amax, fabs(J[i]));
+    const int s = ilogb(amax);
+    for (int i = 0; i < n * n; i++) {
+        J0[i] = ldexp(J[i], -s);
+        f2 += J0[i] * J0[i];
+    }
+    double det;
+    sus_step_linear_solve(n, J0, g, dx, &det);
+    return pow(fabs(det), 2.0 / n) / f2;
+}
+
+/* |det J| / |J|_F^2 (n = 2) or |det J|^(2/n) / |J|_F^2: how far J is from singular, scale-free.
+ * Where det J or |J|_F^2 leaves the range of doubles (n > 2 on a body scaled far from 1), on J
+ * scaled by a power of two; elsewhere on J itself, as it always was. */
 static double regularity(sus_residual_fn G, int n, const sus_model *m, double eps,
                          const double w[2], const double *x)
 {
-    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS], det,
-        sc, f2 = 0.0;
+    double g[SUS_MAX_UNKNOWNS], J[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS],
+        J1[SUS_MAX_UNKNOWNS * SUS_MAX_UNKNOWNS], dx[SUS_MAX_UNKNOWNS], det, sc, f2 = 0.0;
     G(m, eps, w, x, g, J, &sc);
-    for (int i = 0; i < n * n; i++)
+    for (int i = 0; i < n * n; i++) {
         f2 += J[i] * J[i];
+        J1[i] = J[i];
+    }
     sus_step_linear_solve(n, J, g, dx, &det);
-    /* pow(|det|, 1) is |det| (a representable exact result): n = 2 skips the call */
-    return (n == 2 ? fabs(det) : pow(fabs(det), 2.0 / n)) / f2;
+    if (n == 2) /* pow(|det|, 1) is |det| (a representable exact result): n = 2 skips the call */
+        return fabs(det) / f2;
+    if (!(fabs(det) >= DBL_MIN && fabs(det) <= DBL_MAX && f2 >= DBL_MIN && f2 <= DBL_MAX))
+        return regularity_scaled(n, J1);
+    return pow(fabs(det), 2.0 / n) / f2;
 }
 
 /* r at the root x for eps relative to r at eps = 0, at its root guess(0). */

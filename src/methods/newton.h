@@ -44,7 +44,11 @@ int sus_step_newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, c
 /* dx = J^{-1} g and det J for n <= SUS_MAX_UNKNOWNS (J row-major, overwritten). Returns -1,
  * leaving dx unset, when J is singular to working precision: |det| at or below 4 n u times the sum
  * of |terms| of its Leibniz expansion (for n = 2 exactly that sum; beyond, the product of the row
- * 1-norms, which bounds it). */
+ * 1-norms, which bounds it) and, for n > 2, also 4 n u kappa >= 1, kappa the condition number of
+ * J with rows scaled to unit 1-norm (the determinant alone calls a J with two small singular
+ * values singular long before the solve loses its digits). Both tests are scale-free: the answer
+ * and dx are the same for 2^s J and 2^s g. *det is det J where a double holds it; beyond (n > 2,
+ * entries far from 1), +-inf above and the least subnormal of its sign below, so its sign reads. */
 int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det);
 
 /* G is a sum of a handful of products; each carries a relative error of a few units of
