@@ -14,7 +14,7 @@ void sus_lab_local_ref_init(sus_lab_local_ref *ref, const sus_exact *ex, double 
     sus_exact_omega(ex, tk, ref->w_k);
     sus_exact_omega(ex, tk + eps, ref->w_exact);
     ref->w_k[2] = ref->w_exact[2] = 0.0;
-    ref->lambda_exact = sus_lagmult(ex->model, ref->w_exact);
+    ref->lambda_exact = sus_lagmult_c(ex->model, ref->w_exact, sus_exact_c(ex, tk + eps));
     sus_refatt_increment(ex, tk, tk + eps, ref->Phi);
 }
 
@@ -60,7 +60,7 @@ int sus_lab_global_errors(const sus_exact *ex, const sus_stepper_type *stepper, 
     double w[2];
     sus_exact_omega(ex, T, w);
     err->w = hypot(last.w[0] - w[0], last.w[1] - w[1]);
-    err->lambda = fabs(last.lambda - sus_lagmult(ex->model, w));
+    err->lambda = fabs(last.lambda - sus_lagmult_c(ex->model, w, sus_exact_c(ex, T)));
     err->so3 = sus_so3_dist(R_ref, last.R);
     return 0;
 }

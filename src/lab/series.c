@@ -72,7 +72,7 @@ void sus_lab_series_exact(sus_lab_series *s, const sus_exact *ex, double dt, siz
         s->w1[i] = w[0];
         s->w2[i] = w[1];
         s->w3[i] = 0.0;
-        s->lambda[i] = sus_lagmult(ex->model, w);
+        s->lambda[i] = sus_lagmult_c(ex->model, w, sus_exact_c(ex, s->t[i]));
         s->energy[i] = sus_energy(ex->model, w);
         s->mu[i] = 0.0;
     }

@@ -221,7 +221,7 @@ int wasm_exact_omega(double eps, double nsteps, double nevery)
         for (int i = 0; i < 9; i++)
             r.R[i / 3][i % 3] = NAN;
         sus_exact_omega(&ex, r.t, r.w);
-        r.lambda = sus_lagmult(row_model, r.w);
+        r.lambda = sus_lagmult_c(row_model, r.w, sus_exact_c(&ex, r.t));
         put_row(&r);
         if (k == steps)
             return 0;

@@ -54,7 +54,8 @@ static void lambda_errors(const sus_model *m, const sus_exact *ex, const sus_ste
                 ledger_die("a step for Remark 5.5");
             if (nterms > 0 && sus_lab_lambda_shift(m, st, p, nterms, eps_of(j), wk, x, &l) != 0)
                 ledger_die("the lambda shift");
-            err[j] = fmax(err[j], fabs(sus_lagmult(m, x) + l - sus_lagmult(m, we)));
+            err[j] = fmax(err[j], fabs(sus_lagmult(m, x) + l -
+                                       sus_lagmult_c(m, we, sus_exact_c(ex, TK5[t] + eps_of(j)))));
         }
     }
 }
@@ -310,7 +311,8 @@ static void corrected_cayinver_claim(const sus_model *m, const sus_exact *ex)
             if (sus_step_variational->step->apply(m, eps[j], w, x, &lam, &ss) != SUS_STEPPER_OK)
                 ledger_die("variational step");
             const double full = lam + (sus_c(m, x) - sus_c(m, wk)) / eps[j];
-            err[j] = fmax(err[j], fabs(full - sus_lagmult(m, we)));
+            err[j] =
+                fmax(err[j], fabs(full - sus_lagmult_c(m, we, sus_exact_c(ex, TK5[t] + eps[j]))));
         }
     }
     sus_lab_order_fit f;
