@@ -33,6 +33,12 @@ static const char *common(const void *cfg, const sus_model *model, const double 
         return "w0 is not finite";
     if (!sus_args_model_ready(model))
         return "cfg->model is NULL, or not a model sus_model_init filled, or changed since";
+    /* the first row's E and lambda (sus_model_start_overflow), refused as the CLI refuses them */
+    const char *what = sus_model_start_overflow(model, w0);
+    if (what)
+        return strcmp(what, "energy") == 0
+                   ? "the energy at w0 overflows with this inertia"
+                   : "the multiplier lambda at w0 overflows with this inertia";
     return NULL;
 }
 

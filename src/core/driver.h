@@ -81,7 +81,8 @@ int sus_row_finite(const sus_row *r);
 /* The arguments every run function checks before row 0, refusing with SUS_RUN_BAD_ARGUMENT and
  * report->message (nothing emitted; with a NULL report it writes nothing): cfg, w0, emit and
  * report are not NULL; cfg->model is a model sus_model_init filled and nothing changed since
- * (a NULL, uninitialised or altered one is refused); w0 is finite. sus_run and sus_run_exact
+ * (a NULL, uninitialised or altered one is refused); w0 is finite, and so are the energy and
+ * lambda there (sus_model_start_overflow: row 0 must be finite). sus_run and sus_run_exact
  * also want eps finite and > 0, steps >= 0, every >= 1 and steps * eps finite; sus_run a
  * fixed-step stepper (stepper->tol NULL) with apply or apply_full, and a recon among
  * sus_recon's values. sus_run_exact ignores cfg->stepper and cfg->recon. */

@@ -1,5 +1,6 @@
 #include "model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -37,6 +38,57 @@ static int check_coefficients(const sus_model *m, char *err, size_t errlen)
     return -1;
 }
 
+/* Positive definite, with a determinant double precision resolves and holds. Definiteness is
+ * decided on the unscaled products in long double, whose range holds the product of any two
+ * doubles (scaled, an entry such as 1e-200 next to 1e200 underflowed to 0 and a positive definite
+ * I_m was called indefinite). */
+static int check_definite(const double I[9], char *err, size_t errlen)
+{
+    const long double p = (long double)I[0] * I[4], q = (long double)I[1] * I[3];
+    if (!(I[0] > 0.0) || !(p - q > 0.0L))
+        return snprintf(err, errlen,
+                        "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)",
+                        I[0], I[4], I[1]),
+               -1;
+    /* |I_m| formed in double: within 2 DBL_EPSILON of its terms, its rounding (u = DBL_EPSILON / 2
+     * for each product and for the difference) can be all of it. Past this test the double
+     * determinant is within a quarter of the true one, so one out of range is the entries' doing.
+     */
+    if (p - q <= 2.0L * SUS_U * (p + fabsl(q)))
+        return snprintf(err, errlen,
+                        "too ill-conditioned for double precision: I11 I22 and I12 I21 agree to "
+                        "their rounding, so |I_m| is lost to cancellation (I11 = %.17g, I22 = "
+                        "%.17g, I12 = %.17g)",
+                        I[0], I[4], I[1]),
+               -1;
+    const double det = I[0] * I[4] - I[1] * I[3];
+    if (!isfinite(det) || !(det >= DBL_MIN))
+        return snprintf(err, errlen,
+                        "the determinant of I_m, %.17g * %.17g - %.17g * %.17g, is not a finite "
+                        "normal number (entries too large or too small)",
+                        I[0], I[4], I[1], I[3]),
+               -1;
+    return 0;
+}
+
+/* I_m (upper-left 2x2 of I) must be symmetric (for E to be conserved by (ContDyn)) and positive
+ * definite, and its determinant, which (ContDyn) divides by, a finite normal number that double
+ * precision resolves. Symmetry is tested relative to M = max |I_m entry|, so that nothing
+ * overflows (the unscaled sum of |entries| is inf at 1e308, and inf > 4u inf is false); the
+ * tolerance 4u (1 + 1 + 1 + 1) allows the rounding of four entries of size <= M. */
+static int check_im(const double I[9], char *err, size_t errlen)
+{
+    const double M = fmax(fmax(fabs(I[0]), fabs(I[1])), fmax(fabs(I[3]), fabs(I[4])));
+    if (M == 0.0)
+        return snprintf(err, errlen, "I_m is zero, not positive definite"), -1;
+    const double a = I[0] / M, b = I[1] / M, c = I[3] / M, d = I[4] / M;
+    if (fabs(b - c) > 4.0 * SUS_U * (fabs(a) + fabs(b) + fabs(c) + fabs(d)))
+        return snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1],
+                        I[3]),
+               -1;
+    return check_definite(I, err, errlen);
+}
+
 int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
 {
     if (!err)
@@ -52,19 +104,9 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
         }
         m->I[i / 3][i % 3] = I[i];
     }
-    const double scale = fabs(I[0]) + fabs(I[1]) + fabs(I[3]) + fabs(I[4]);
-    /* I_m must be symmetric for E to be conserved by (ContDyn); allow only round-off. */
-    if (fabs(I[1] - I[3]) > 4.0 * SUS_U * scale) {
-        snprintf(err, errlen, "I_m is not symmetric: I12 = %.17g but I21 = %.17g", I[1], I[3]);
+    if (check_im(I, err, errlen) != 0)
         return -1;
-    }
     m->det_m = sus_cross_diff(I[0], I[4], I[1], I[3]);
-    if (!(I[0] > 0.0) || !(m->det_m > 0.0)) {
-        snprintf(err, errlen,
-                 "I_m is not positive definite (I11 = %.17g, I22 = %.17g, I12 = %.17g)", I[0], I[4],
-                 I[1]);
-        return -1;
-    }
     m->b[0] = I[6];
     m->b[1] = I[7];
     m->inv_det_m = 1.0 / m->det_m;
@@ -77,6 +119,13 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
     m->o0c[1] = sus_cross_diff(I[7], I[3], I[6], I[4]); /* I32 I21 - I31 I22 */
     m->norm_b = hypot(m->b[0], m->b[1]) * (1.0 + 1e-15);
     return check_coefficients(m, err, errlen);
+}
+
+const char *sus_model_start_overflow(const sus_model *m, const double w[2])
+{
+    return !isfinite(sus_energy(m, w))    ? "energy"
+           : !isfinite(sus_lagmult(m, w)) ? "multiplier lambda"
+                                          : NULL;
 }
 
 /* Df of (ContDyn), for the Newton iterations and linear stability. */

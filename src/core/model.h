@@ -42,9 +42,16 @@ static inline double sus_cross_diff(double a, double b, double c, double d)
 extern const double SUS_PAPER_INERTIA[9];
 extern const double SUS_PAPER_OMEGA0[2];
 
-/* Returns 0, or -1 with a one-line reason in err when an entry is not finite or I_m is not
- * symmetric positive definite, or m or I is NULL (err may be NULL, errlen 0). */
+/* Returns 0, or -1 with a one-line reason in err when m or I is NULL, an entry is not finite,
+ * I_m is not symmetric positive definite, or double precision cannot hold the body: |I_m| lost
+ * to cancellation or not a finite normal number, or a coefficient the model derives overflows
+ * (err may be NULL, errlen 0). The suslov command refuses --inertia with these same lines. */
 int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen);
+/* NULL when the energy and the multiplier lambda at w (w3 = 0) are finite numbers, as the first
+ * row of a run must be; else what overflows there: "energy" or "multiplier lambda". A body's
+ * coefficients may be finite while their products at a w are not (I31 = I32 = 1e300 at
+ * |w| ~ 1): the run functions refuse such a start, and so does the suslov command. */
+const char *sus_model_start_overflow(const sus_model *m, const double w[2]);
 
 /* The inline kernels below, sus_contdyn_jacobian and sus_energy give NaN for a NULL pointer. */
 

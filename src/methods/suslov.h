@@ -17,8 +17,9 @@
  * crashes, loops or returns a made-up number on bad ones:
  *   - the runs return SUS_RUN_BAD_ARGUMENT before emitting any row, with report->message
  *     naming the argument (driver.h lists what they check: NULL pointers, a model that
- *     sus_model_init did not make, non-finite w0, eps <= 0, steps < 0, every < 1, a method of
- *     the wrong kind, a tolerance or times that are not finite and positive);
+ *     sus_model_init did not make, non-finite w0 or one whose energy or lambda overflows,
+ *     eps <= 0, steps < 0, every < 1, a method of the wrong kind, a tolerance or times that are
+ *     not finite and positive);
  *   - functions returning int return a negative value (sus_model_init, sus_exact_init,
  *     sus_recon_by_name, sus_step_method_index, sus_step_methods_write_tsv) or a
  *     documented status (sus_stepper_full: SUS_STEPPER_BAD_ARGUMENT);

@@ -67,6 +67,14 @@ void suslov_cli_warn(const char *fmt, ...)
     va_end(ap);
 }
 
+void suslov_cli_note(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    say("note", fmt, ap, "");
+    va_end(ap);
+}
+
 void suslov_cli_die(const char *fmt, ...)
 {
     char suffix[64];

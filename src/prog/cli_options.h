@@ -65,6 +65,8 @@ const char *suslov_cli_quote(const char *s);
 void suslov_cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void suslov_cli_die(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
 void suslov_cli_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* "suslov: note: MESSAGE": what a person waiting should know (a long run ahead). */
+void suslov_cli_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* The number grammar: strtod's (decimal or hexadecimal, with exponent), no leading blank, no
  * trailing text; the value must be finite and normal or zero. */

@@ -236,7 +236,7 @@ static const suslov_cli_option OPTIONS[] = {
     {"--quiet", NULL,
      "no progress line (shown on a terminal stderr when a run takes > 1 s;\n"
      "without escape sequences under TERM=dumb or NO_COLOR; never with\n"
-     "NO_PROGRESS)",
+     "NO_PROGRESS), nor the note that a --method exact run will take over 5 s",
      set_quiet, NULL},
     {"--version", NULL, "print the version (the git commit built from, or unknown) and exit",
      set_version, NULL},
@@ -281,15 +281,18 @@ static const suslov_cli_section SECTIONS[] = {
      "outlives the program, even when killed. A run that fails (exit 3) leaves an existing FILE\n"
      "as it was and creates none. The new FILE keeps the mode of the old one (a new one gets\n"
      "0666 less the umask) but is owned by the user who ran suslov, and other hard links keep\n"
-     "the old contents. A read-only FILE is refused (as cp does without -f), and so is one that\n"
-     "the rename could not replace: in a sticky directory owned by neither, or a mount point\n"
-     "(a bind-mounted file; redirect stdout to write it in place). A symbolic link, or a chain\n"
-     "of them, is written through to the file at its end, which is created if missing (as a\n"
-     "shell redirection does); the links stay links. A device, a pipe, - and a name of an open\n"
-     "descriptor (/dev/stdout, /dev/fd/N) are written in place, never renamed, at the\n"
-     "descriptor's offset. Every condition that can be checked before the run (directory\n"
-     "writable, names within the system's limits with the temporary's suffix, permissions,\n"
-     "mount points) is checked before it."},
+     "the old contents. A read-only FILE is refused (as cp does without -f), and so is one in a\n"
+     "read-only directory: read-only is what you may not write, or what its owner may not (mode\n"
+     "u-w, which stops root too). So is a FILE the rename could not replace (in a sticky\n"
+     "directory owned by neither, or a mount point: a bind-mounted file; redirect stdout to\n"
+     "write it in place), and one in a directory where no file can be created (/proc, /sys). A\n"
+     "symbolic link, or a chain of them, is written through to the file at its end, which is\n"
+     "created if missing (as a shell redirection does); the links stay links. A device, a pipe,\n"
+     "the name - and a name of an open descriptor (/dev/stdout, /dev/fd/N) are written in\n"
+     "place, never renamed, at the descriptor's offset. Every condition that can be checked\n"
+     "before the run (directory writable, a file can be created in it, names within the\n"
+     "system's limits with the temporary's suffix, permissions, mount points) is checked before\n"
+     "it."},
     {"EXIT STATUS",
      "0\n"
      "    success\n"
@@ -307,7 +310,7 @@ static const suslov_cli_section SECTIONS[] = {
      "NO_COLOR (non-empty), TERM=dumb\n"
      "    the progress line uses no escape sequence\n"
      "NO_PROGRESS (non-empty)\n"
-     "    no progress line, as with --quiet\n"
+     "    no progress line nor note, as with --quiet\n"
      "SUSLOV_NO_O_TMPFILE (non-empty, for tests)\n"
      "    use a named temporary file instead of an unnamed one; every catchable fatal signal\n"
      "    then removes it\n"

@@ -9,7 +9,6 @@
 #include "exact_run.h"
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
-#include "paper_ref.h"
 #include "stepper.h"
 
 #include <float.h>
@@ -18,9 +17,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The reference attitude of --method exact costs this many long-double Taylor steps at most
- * (hours of computing); beyond, the run is refused before it starts. */
-#define EXACT_MAX_REFERENCE_STEPS 1e9
+/* The reference attitude of --method exact (refattitude.h) costs one long-double Taylor step of
+ * order SUS_REFATT_ORDER = P per step h: its Cauchy products sum P (P + 1) / 2 = 406 terms of
+ * about 20 long-double operations each, some 1e4 operations, about 1e-5 s at 1e9 operations a
+ * second (x87; several times slower where long double is a software quad). A run is refused
+ * beyond a budget of ten minutes, and one beyond a few seconds (the guide's threshold for a
+ * progress report) is announced on stderr, since its rows may come minutes apart. */
+#define EXACT_STEP_SECONDS 1e-5
+#define EXACT_MAX_SECONDS 600.0
+#define EXACT_NOTE_SECONDS 5.0
 
 /* The nearest final time to n steps, written as briefly as it is still accepted. */
 static void time_choice(char *buf, size_t len, double n, double eps)
@@ -47,7 +52,7 @@ static long steps_for_time(double T, double eps)
         time_choice(hi, sizeof hi, 1.0, eps);
         suslov_cli_die(
             "--time %.17g with --eps %.17g gives %.17g steps; need at least 1: the shortest is %s",
-            T, eps, n, hi);
+            T, eps, n + 0.0, hi); /* + 0.0: the count of --time -0 is 0, not -0 */
     }
     if (!(n < 0x1p63)) /* (long)n is defined only below 2^63 = LONG_MAX + 1 */
         suslov_cli_die("--time %.17g with --eps %.17g gives %.17g steps, more than %ld", T, eps, n,
@@ -63,6 +68,15 @@ static long steps_for_time(double T, double eps)
     return (long)n;
 }
 
+/* An unknown method first: the other checks depend on the kind of run it names. */
+static void check_method_name(const suslov_args_given *g)
+{
+    char names[1024];
+    if (g->method && strcmp(g->method, "exact") != 0 && !sus_step_method_by_name(g->method))
+        suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
+                       sus_step_method_names(names, sizeof names, ", "));
+}
+
 /* Returns 1 when --reconstruct is given to a method that ignores it (a warning, given once every
  * check has passed, so that bad input still gets exactly one line). */
 static int resolve_method(suslov_args *a, const suslov_args_given *g)
@@ -70,9 +84,6 @@ static int resolve_method(suslov_args *a, const suslov_args_given *g)
     char names[1024];
     const int exact = g->method && strcmp(g->method, "exact") == 0;
     a->method = exact || !g->method ? NULL : sus_step_method_by_name(g->method);
-    if (g->method && !exact && !a->method)
-        suslov_cli_die("unknown method %s (exact, %s; or list)", suslov_cli_quote(g->method),
-                       sus_step_method_names(names, sizeof names, ", "));
     a->recon = a->method ? a->method->recon : SUS_RECON_CAYLEY;
     if (!g->recon)
         return 0;
@@ -163,10 +174,7 @@ static void check_fixed_steps(suslov_args *a, const suslov_args_given *g)
  * user's doing. */
 static void check_start(const suslov_args *a, const suslov_args_given *g)
 {
-    const double w[3] = {g->w0[0], g->w0[1], 0.0};
-    const char *what = !isfinite(sus_energy(&a->model, w))    ? "energy"
-                       : !isfinite(sus_lagmult(&a->model, w)) ? "multiplier lambda"
-                                                              : NULL;
+    const char *what = sus_model_start_overflow(&a->model, g->w0);
     if (!what)
         return;
     const char *opts =
@@ -178,33 +186,37 @@ static void check_start(const suslov_args *a, const suslov_args_given *g)
 void suslov_args_check(suslov_args *a, const suslov_args_given *g)
 {
     char err[1024];
+    check_method_name(g);
     const sus_step_method *me = g->method ? sus_step_method_by_name(g->method) : NULL;
     /* --help without --method: the options given say which kind of run they describe */
     if (me ? me->type->tol != NULL : !g->method && (!isnan(g->tol) || !isnan(g->every_time)))
         check_tol_run(a, g);
     else
         check_fixed_steps(a, g);
-    char bad[512];
-    if (suslov_inertia_check(g->inertia, bad, sizeof bad) != 0)
-        suslov_cli_die("%s", bad);
-    if (sus_model_init(&a->model, g->inertia, err, sizeof err) != 0) {
-        char said[sizeof err]; /* the model cites the paper by labels; the reader gets numbers */
-        suslov_cli_die("--inertia: %s", sus_paper_numbered(err, said, sizeof said));
-    }
+    if (suslov_inertia_model(&a->model, g->inertia, err, sizeof err) != 0)
+        suslov_cli_die("%s", err);
     check_start(a, g);
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const int exact = g->method && !a->method;
     const double cost =
         exact && a->t_end > 0.0 ? sus_exact_reference_steps(&a->model, g->w0, a->t_end) : 0.0;
-    if (!(cost <= EXACT_MAX_REFERENCE_STEPS))
+    if (!(cost * EXACT_STEP_SECONDS <= EXACT_MAX_SECONDS))
         suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly "
-                       "that the reference "
-                       "attitude needs %.3g Taylor steps (at most %.0e)",
-                       cost, EXACT_MAX_REFERENCE_STEPS);
+                       "that the reference attitude needs %.3g Taylor steps, roughly %.2g hours "
+                       "(at most %.3g, ten minutes): ask for a shorter final time",
+                       cost, cost * EXACT_STEP_SECONDS / 3600.0,
+                       EXACT_MAX_SECONDS / EXACT_STEP_SECONDS);
     if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)
         suslov_cli_die("--output: %s", err);
-    if (ignored && !g->show) /* a warning about a run that --help does not make */
+    if (g->show) /* --help, --man, --version: no run, so no warning or note about it */
+        return;
+    if (ignored)
         suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon,
                         a->method->type->name);
+    const char *np = getenv("NO_PROGRESS");
+    if (cost * EXACT_STEP_SECONDS > EXACT_NOTE_SECONDS && !g->quiet && !(np && *np))
+        suslov_cli_note("--method exact: the reference attitude needs %.3g Taylor steps, roughly "
+                        "%.0f s",
+                        cost, cost * EXACT_STEP_SECONDS);
 }

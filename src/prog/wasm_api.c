@@ -118,7 +118,6 @@ static int reserve(long steps, long every)
 static int setup(double eps, double nsteps, double nevery)
 {
     static sus_model model;
-    char err[256];
     message[0] = '\0';
     if (!(eps > 0.0))
         return say(2, "--eps must be positive, got %.17g", eps, 0);
@@ -131,12 +130,8 @@ static int setup(double eps, double nsteps, double nevery)
                    floor(nsteps / nevery) + 2.0, (double)MAX_ROWS);
     if (!isfinite(nsteps * eps))
         return say(2, "--steps %.0f with --eps %.17g: the final time N H overflows", nsteps, eps);
-    if (suslov_inertia_check(input + 2, message, sizeof message) != 0) /* the CLI's own check */
+    if (suslov_inertia_model(&model, input + 2, message, sizeof message) != 0) /* the CLI's */
         return 2;
-    if (sus_model_init(&model, input + 2, err, sizeof err) != 0) {
-        snprintf(message, sizeof message, "--inertia: %s", err);
-        return 2;
-    }
     row_model = &model;
     return reserve((long)nsteps, (long)nevery);
 }
@@ -145,6 +140,8 @@ static int failed(int rc, const sus_run_report *rep)
 {
     if (rc == SUS_RUN_OK)
         return 0;
+    if (rc == SUS_RUN_BAD_ARGUMENT) /* a start the library refuses: E or lambda overflows */
+        return snprintf(message, sizeof message, "%s", rep->message), 2;
     if (rc == SUS_RUN_BLOWUP)
         return say(
             3,

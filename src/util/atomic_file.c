@@ -68,10 +68,15 @@ static int check_names(const char *path, const char *target, const char *dir, ch
     return 0;
 }
 
+/* Read-only, for everyone: the owner's write bit clear (chmod u-w, mode 444). root's access()
+ * succeeds whatever the mode, so the bit is read as well; a file or directory its owner may not
+ * write is then refused to root as to any other user. */
+static int owner_may_write(const struct stat *sb) { return (sb->st_mode & S_IWUSR) != 0; }
+
 /* Replacing an existing regular file: not the root of a mount (a bind-mounted file: the rename
  * would fail with EBUSY after the run; it is refused rather than written in place, which would
- * break all-or-nothing), not a read-only one (as cp without -f), and in a sticky directory only
- * as the owner of the file or of the directory (else the rename fails). */
+ * break all-or-nothing), not a read-only one (as cp without -f; owner_may_write), and in a
+ * sticky directory only as the owner of the file or of the directory (else the rename fails). */
 static int check_replace(const char *path, const char *target, const struct stat *fsb,
                          const char *dir, char *err, size_t errlen)
 {
@@ -86,6 +91,11 @@ static int check_replace(const char *path, const char *target, const struct stat
         return fail(err, errlen,
                     "%s is read-only (%s): not replaced; remove it or make it writable first",
                     shown(path), strerror(errno));
+    if (!owner_may_write(fsb))
+        return fail(
+            err, errlen,
+            "%s is read-only (mode %03o): not replaced; remove it or make it writable first",
+            shown(path), (unsigned)(fsb->st_mode & 07777));
     const uid_t me = geteuid();
     if (stat(dir, &dsb) == 0 && (dsb.st_mode & S_ISVTX) && me != 0 && me != fsb->st_uid &&
         me != dsb.st_uid)
@@ -94,6 +104,32 @@ static int check_replace(const char *path, const char *target, const struct stat
                     "yours, so the rename would be refused",
                     shown(path), shown(dir));
     return 0;
+}
+
+/* A file can be created in dir: tried, since neither access() (always yes for root) nor the
+ * mode tells where a pseudo filesystem (/proc, /sys) refuses every new file. An unnamed
+ * O_TMPFILE file, closed at once, leaves nothing; where the filesystem has no O_TMPFILE, a named
+ * temporary, removed at once (and on a fatal signal meanwhile), as the open would make. Only a
+ * refusal of the path is found here; a lack of resources (no space or inode, I/O) is not the
+ * path's fault and is met, and reported as such, by the open. */
+static int probe_create(const char *path, const char *dir, char *err, size_t errlen)
+{
+    char tmp[4096];
+    int slot = -1, fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+    if (fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL)) {
+        snprintf(tmp, sizeof tmp, "%s/%sXXXXXX", dir, SUS_SYS_ATOMIC_TMP_PREFIX);
+        if ((fd = sus_sys_cleanup_mkstemp(tmp, &slot)) >= 0) {
+            unlink(tmp);
+            sus_sys_cleanup_forget(&slot);
+        }
+    }
+    if (fd >= 0)
+        return close(fd), 0;
+    const int why = errno; /* ENOENT in a directory that exists: no file can be created there */
+    if (why != EACCES && why != EPERM && why != EROFS && why != ENOENT)
+        return 0;
+    return fail(err, errlen, "cannot create a temporary file next to %s: %s%s", shown(path),
+                strerror(why), why == ENOENT ? " (its filesystem creates no files)" : "");
 }
 
 int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
@@ -133,10 +169,14 @@ int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen)
                  strerror(errno));
         return -1;
     }
+    if (!owner_may_write(&sb))
+        return fail(err, errlen, "cannot write %s: directory %s is read-only (mode %03o)",
+                    shown(path), shown(dir), (unsigned)(sb.st_mode & 07777));
     if (check_names(path, target, dir, err, errlen) != 0)
         return -1;
-    return exists && stat(target, &sb) == 0 ? check_replace(path, target, &sb, dir, err, errlen)
-                                            : 0;
+    if (exists && stat(target, &sb) == 0 && check_replace(path, target, &sb, dir, err, errlen))
+        return -1;
+    return probe_create(path, dir, err, errlen);
 }
 
 /* stdout, a descriptor, a device or a pipe: written where it is. */

@@ -16,8 +16,9 @@
  * - a device or pipe is written in place;
  * - a regular file is replaced atomically: a new file gets 0666 & ~umask, an existing file
  *   keeps its mode but not its owner (the writer owns the new file) and not its hard links
- *   (the other names keep the old contents); a read-only file is refused, and so is the root of
- *   a mount (a bind-mounted file), which no rename can replace;
+ *   (the other names keep the old contents); a read-only file or directory is refused (one the
+ *   caller may not write, or whose owner may not: mode u-w, which root's access() ignores), and
+ *   so is the root of a mount (a bind-mounted file), which no rename can replace;
  * - a symbolic link, or a chain of them, is written through: the file at the chain's end is
  *   replaced, or created when the chain dangles (l1 -> l2 -> missing.csv creates missing.csv),
  *   and the links stay links. */
@@ -45,12 +46,14 @@ typedef struct {
     int slot;          /* its entry in the signal-cleanup table, or -1 */
 } sus_sys_atomic_file;
 
-/* Checks, without creating anything, every condition of a later commit that can be checked
- * now: the path is non-empty and not a directory; for a descriptor, device or pipe, that it
- * can be written; for a regular file, that its chain of links ends within 40 links, that it is
- * not read-only nor the root of a mount, that its directory exists and is writable, that the
- * temporary's name fits (NAME_MAX, PATH_MAX) and that the rename is permitted (a sticky
- * directory lets only the owner of the file or directory replace it).
+/* Checks, leaving nothing behind, every condition of a later commit that can be checked now:
+ * the path is non-empty and not a directory; for a descriptor, device or pipe, that it can be
+ * written; for a regular file, that its chain of links ends within 40 links, that it is not
+ * read-only nor the root of a mount, that its directory exists, is writable and not read-only,
+ * that the temporary's name fits (NAME_MAX, PATH_MAX), that the rename is permitted (a sticky
+ * directory lets only the owner of the file or directory replace it), and last, by creating
+ * one, that a file can be created in the directory (an unnamed O_TMPFILE file, or where the
+ * filesystem has none a named temporary, each removed at once).
  * Returns 0, or -1 with a one-line reason in err. */
 int sus_sys_atomic_file_check(const char *path, char *err, size_t errlen);
 /* Returns 0, or -1 with a one-line reason in err and errno its cause (nothing is left behind). */

@@ -80,6 +80,18 @@ bad_says() { # bad_says DESCRIPTION PATTERN ARGS...: bad input, and its one line
     check "$d: the line says '$pat' ($(cat "$T/err"))" grep -q -- "$pat" "$T/err"
 }
 bad "unknown method" --method leapfrog --eps 0.1 --steps 3
+# an unknown method is named first, not a missing option its kind of run would want
+bad_says "an unknown method and nothing else" "^suslov: error: unknown method 'LIST' (exact, " \
+    --method LIST
+bad_says "--time -0 gives 0 steps (not -0)" "with --eps 0.10000000000000001 gives 0 steps; need" \
+    --method rk4 --eps 0.1 --time -0
+# --method exact: a reference attitude estimated over ten minutes (src/prog/suslov_cli_checks.c:
+# about 1e-5 s a step) is refused before it starts, saying what to do (the timeout: one let
+# through would run for an hour)
+timeout 20 "$S" --method exact --eps 1e6 --steps 1000 --inertia 1,0,0,0,1,0,1e-12,0,1 \
+    >"$T/out" 2>"$T/err"; rc=$?
+check "--method exact, a body that nears its steady rotation slowly: exit $rc (2), refused ($(cat "$T/err"))" \
+    sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'attitude needs [0-9.e+]* Taylor steps, roughly .* hours (at most 6e+07, ten minutes): ask for a shorter final time' '$T/err'"
 bad "malformed number" --method rk4 --eps 0.1x --steps 3
 bad "H <= 0" --method rk4 --eps -1 --steps 3
 bad "H not finite" --method rk4 --eps inf --steps 3
@@ -186,11 +198,10 @@ check "a 3000-character --output path in no directory: exit $rc, one line that s
     sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q 'characters) does not exist (see suslov --help)\$' '$T/err'"
 
 # the output path is checked before computing (a run of 10^13 steps would take hours):
-# empty, a directory, a missing directory, a read-only directory -> exit 2, nothing created
+# empty, a directory, a missing directory, a read-only directory -> exit 2, nothing created.
+# Read-only is the owner's write bit too, so root is refused alike.
 mkdir -p "$T/ro"; chmod 555 "$T/ro"
 for o in "" "$T" "$T/missing/x.csv" "$T/ro/x.csv"; do
-    # root may write in a read-only directory: then the run is (rightly) not refused
-    if [ "$o" = "$T/ro/x.csv" ] && touch "$T/ro/probe" 2>/dev/null; then rm -f "$T/ro/probe"; continue; fi
     timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 --output "$o" >"$T/out" 2>"$T/err"; rc=$?
     check "--output '$o' is refused before computing: exit 2, one line ($(cat "$T/err")), nothing created" \
         sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' -a ! -e '$T/missing' -a -z \"\$(ls -A '$T/ro')\""
@@ -204,9 +215,44 @@ if [ "$(id -u)" = 0 ] && [ -d /sys/kernel ] && ! (: >/sys/kernel/suslov-probe) 2
         --output /sys/kernel/x.csv >"$T/out" 2>"$T/err"; rc=$?
     check "--output /sys/kernel/x.csv as root: exit $rc (2), one line, before computing ($(cat "$T/err"))" \
         sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q 'Permission denied (see suslov --help)\$' '$T/err'"
+    # ... and found by the check itself, so that --help refuses it as a run does
+    "$S" --method rk4 --eps 0.1 --steps 1 --output /sys/kernel/x.csv --help >"$T/out" 2>"$T/err"; rc=$?
+    check "--output /sys/kernel/x.csv --help as root: exit $rc (2), the same line ($(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q 'Permission denied (see suslov --help)\$' '$T/err'"
 else
     skip "--output where root cannot create a file: needs root and a /sys/kernel that refuses files"
 fi
+# /proc takes no new file (an existing one cannot be replaced either): exit 2 before computing,
+# not exit 1 at the open
+if [ -f /proc/version ]; then
+    timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 \
+        --output /proc/version >"$T/out" 2>"$T/err"; rc=$?
+    check "--output /proc/version: exit $rc (2), one line, before computing ($(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q '^suslov: error: --output: ' '$T/err'"
+else
+    skip "--output /proc/version: no /proc"
+fi
+# a mode-444 FILE is read-only to root as well (its owner may not write it): refused, kept; the
+# same FILE made writable by its owner (644) is replaced, the control
+echo "keep" >"$T/r444.csv"; chmod 444 "$T/r444.csv"
+timeout 20 "$S" --no-header --method rk4 --eps 1e-9 --steps 10000000000000 --every 10000000000000 \
+    --output "$T/r444.csv" >"$T/out" 2>"$T/err"; rc=$?
+check "--output FILE of mode 444: exit $rc (2), one line saying read-only, FILE kept ($(cat "$T/err"))" \
+    sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a \"\$(cat '$T/r444.csv')\" = keep && grep -q 'read-only' '$T/err'"
+chmod 644 "$T/r444.csv"
+"$S" --no-header --method rk4 --eps 0.1 --steps 1 --output "$T/r444.csv" 2>"$T/err"; rc=$?
+check "control: the same FILE at mode 644 is replaced (exit $rc, $(wc -l <"$T/r444.csv") lines)" \
+    test "$rc" = 0 -a "$(wc -l <"$T/r444.csv")" = 3
+# a --method exact run estimated over 5 s is announced on one note line before it starts (its
+# rows may come minutes apart; the progress line shows on a terminal only); not under --quiet
+SLOW="--method exact --eps 1e6 --steps 3 --inertia 1,0,0,0,1,0,1e-12,0,1 --no-header"
+NO_PROGRESS= timeout 1 "$S" $SLOW >/dev/null 2>"$T/err"
+check "a --method exact run estimated over 5 s: a note first ($(head -1 "$T/err"))" \
+    sh -c "head -1 '$T/err' | grep -q '^suslov: note: --method exact: the reference attitude needs [0-9.e+]* Taylor steps, roughly [0-9]* s\$'"
+NO_PROGRESS= timeout 1 "$S" $SLOW --quiet >/dev/null 2>"$T/err"
+check "... and none under --quiet ($(cat "$T/err"))" test ! -s "$T/err"
+NO_PROGRESS= "$S" --method exact --eps 0.1 --steps 25 >/dev/null 2>"$T/err"; rc=$?
+check "no note for a short --method exact run (exit $rc: $(cat "$T/err"))" test "$rc" = 0 -a ! -s "$T/err"
 
 # a solver failure: exit 3, message names step, t, residual; stdout keeps the rows before it,
 # and --output FILE is all or nothing: a new FILE is not created, an existing one is left as it

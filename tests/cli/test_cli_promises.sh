@@ -56,6 +56,11 @@ if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null && id nobody >/dev/null 2
     check "as nobody: another user's 666 file in a sticky dir and a read-only file are refused before the run (exit $rc1, $rc2: $(cat "$T/err" "$T/err2" | tr '\n' ' ')); a new file is written ($rc3)" \
         sh -c "test $rc1 = 2 -a $rc2 = 2 -a $rc3 = 0 && grep -q sticky '$T/err' && grep -q read-only '$T/err2' && test \"\$(cat '$P/other.csv' '$P/ro.csv')\" = 'keep
 ro' && ! ls -A '$P' | grep -q '^\\.tmp\\.'"
+    # root's 644 file: its owner may write it, nobody may not: read-only to nobody by access()
+    echo keep >"$P/root644.csv"; chmod 644 "$P/root644.csv"
+    asnobody timeout 20 "$S" --method rk4 $LONG --output "$P/root644.csv" 2>"$T/err4"; rc4=$?
+    check "as nobody: root's 644 file is read-only to nobody (exit $rc4: $(cat "$T/err4"))" \
+        sh -c "test $rc4 = 2 && grep -q 'read-only (Permission denied)' '$T/err4'"
     rm -rf "$P"
 else
     skip "permissions as nobody: needs root, setpriv and a user nobody who can run $S"

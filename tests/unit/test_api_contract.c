@@ -209,8 +209,9 @@ static void tol_runs(void)
     CHECK(rc == SUS_RUN_BAD_ARGUMENT && rows_seen == 0, "sus_run_tol, NULL report: rc %d", rc);
 }
 
-/* Legal but extreme: huge w0, a tolerance of 1e300, t_end = 0, steps = 0. Each ends with a
- * status (a failure reported with its step, or success), and every row it emits is finite. */
+/* Legal but extreme: huge w0 (1e150: the energy, about |w0|^2, still a double), a tolerance of
+ * 1e300, t_end = 0, steps = 0. Each ends with a status (a failure reported with its step, or
+ * success), and every row it emits is finite. */
 static int finite_rows(void *ctx, const sus_row *r)
 {
     *(int *)ctx &= sus_row_finite(r);
@@ -219,7 +220,7 @@ static int finite_rows(void *ctx, const sus_row *r)
 
 static void extreme_runs(void)
 {
-    const double big[2] = {1e200, -1e200};
+    const double big[2] = {1e150, -1e150};
     sus_run_report rep;
     int fin = 1;
     for (int i = 0; i < sus_step_method_count(); i++) {
@@ -229,7 +230,7 @@ static void extreme_runs(void)
         fin &= rc == SUS_RUN_OK || rc == SUS_RUN_STEP_FAILED || rc == SUS_RUN_BLOWUP;
     }
     CHECK(fin,
-          "sus_run from |w0| = 1e200, every fixed-step method: a status, and finite rows only");
+          "sus_run from |w0| = 1e150, every fixed-step method: a status, and finite rows only");
     const sus_stepper_type *ta = sus_step_method_by_name("taylor-adaptive")->type;
     const sus_tol_config loose = {&model, ta, 1e300, 1.0, 0.0, 100000};
     const sus_tol_config zero = {&model, ta, 1e-8, 0.0, 0.0, 0};
@@ -243,11 +244,43 @@ static void extreme_runs(void)
           rows_seen);
     rc = sus_run_tol(&huge, big, finite_rows, &fin, &rep);
     CHECK(fin && rc != SUS_RUN_OK && rc != SUS_RUN_BAD_ARGUMENT,
-          "sus_run_tol from |w0| = 1e200 with 1000 steps to t = 1: a failure reported, rc %d", rc);
+          "sus_run_tol from |w0| = 1e150 with 1000 steps to t = 1: a failure reported, rc %d", rc);
     const sus_run_config none = {&model, NULL, SUS_RECON_CAYLEY, 0.5, 0, 1};
     rows_seen = 0;
     rc = sus_run_exact(&none, W0, count_rows, NULL, &rep);
     CHECK(rc == SUS_RUN_OK && rows_seen == 1, "sus_run_exact, steps = 0: rc %d, %ld rows (1)", rc,
+          rows_seen);
+}
+
+/* A start whose first row cannot be finite is refused before it, by every run function, with
+ * the suslov command's reason: the energy at |w0| = 1e200 overflows on the paper's body, and
+ * lambda at the paper's w0 on a body with I31 = I32 = 1e300 (its coefficients, each finite,
+ * multiply past the range). Controls: the same runs from a smaller w0 are not refused. */
+static void start_overflow_runs(void)
+{
+    const double big[2] = {1e200, -1e200}, tiny[2] = {1e-200, 1e-200};
+    const double I[9] = {1, 0, 0, 0, 1, 0, 1e300, 1e300, 1};
+    sus_model heavy;
+    char err[128] = "";
+    CHECK(sus_model_init(&heavy, I, err, sizeof err) == 0,
+          "I31 = I32 = 1e300: a body (its coefficients are finite): %s", err);
+    const sus_run_config fixed = {
+        &model, sus_step_method_by_name("rk4")->type, SUS_RECON_CAYLEY, 0.1, 3, 1};
+    const sus_run_config fixed_heavy = {&heavy, fixed.stepper, SUS_RECON_CAYLEY, 0.1, 3, 1};
+    const sus_tol_config tol = {
+        &model, sus_step_method_by_name("taylor-adaptive")->type, 1e-8, 1.0, 0.0, 1000};
+    const char *energy = "the energy at w0 overflows", *lambda = "the multiplier lambda at w0";
+    sus_run_report rep;
+    rows_seen = 0;
+    refused("sus_run", energy, sus_run(&fixed, big, count_rows, NULL, &rep), &rep);
+    refused("sus_run_exact", energy, sus_run_exact(&fixed, big, count_rows, NULL, &rep), &rep);
+    refused("sus_run_tol", energy, sus_run_tol(&tol, big, count_rows, NULL, &rep), &rep);
+    refused("sus_run", lambda, sus_run(&fixed_heavy, W0, count_rows, NULL, &rep), &rep);
+    refused("sus_run_exact", lambda, sus_run_exact(&fixed_heavy, W0, count_rows, NULL, &rep), &rep);
+    const int rc = sus_run(&fixed_heavy, tiny, count_rows, NULL, &rep);
+    const int rc_exact = sus_run_exact(&fixed_heavy, tiny, count_rows, NULL, &rep);
+    CHECK(rc == SUS_RUN_OK && rc_exact == SUS_RUN_OK && rows_seen == 8,
+          "control: the same body from |w0| = 1e-200 runs (rc %d, %d; %ld rows of 8)", rc, rc_exact,
           rows_seen);
 }
 
@@ -430,6 +463,7 @@ int main(void)
     fixed_runs("sus_run_exact", run_exact, 0);
     tol_runs();
     extreme_runs();
+    start_overflow_runs();
     model_functions();
     exact_functions();
     stepper_functions();

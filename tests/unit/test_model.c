@@ -91,6 +91,44 @@ static void validation(void)
           "a NaN entry is rejected: %s", err);
 }
 
+/* What double precision cannot hold is refused by sus_model_init itself, in the words the suslov
+ * command prints after "--inertia: " (tests/cli/test_cli.sh pins the same lines): the command
+ * and the library share the one check. Each body with a good control: the same shape, scaled
+ * into range, is accepted. */
+static void extreme_bodies(void)
+{
+    static const struct {
+        double I[9], ok[9];
+        const char *says;
+    } cases[] = {
+        {{1e-300, 0, 0, 0, 1e-300, 0, 0, 0, 1},
+         {1e-150, 0, 0, 0, 1e-150, 0, 0, 0, 1},
+         "the determinant of I_m, 1e-300 * 1e-300 - 0 * 0, is not a finite normal number "
+         "(entries too large or too small)"},
+        {{1e308, 0, 0, 0, 1e308, 0, 0, 0, 1},
+         {1e150, 0, 0, 0, 1e150, 0, 0, 0, 1},
+         "the determinant of I_m, 1e+308 * 1e+308 - 0 * 0, is not a finite normal number"},
+        {{1e308, 1e308, 0, -1e308, 1e308, 0, 0, 0, 1},
+         {1e154, 1e153, 0, 1e153, 1e154, 0, 0, 0, 1},
+         "I_m is not symmetric: I12 = 1e+308 but I21 = -1e+308"},
+        {{1, 0.99999999999999989, 0, 0.99999999999999989, 1, 0, 0, 0, 1},
+         {1, 0.99999999999999, 0, 0.99999999999999, 1, 0, 0, 0, 1},
+         "too ill-conditioned for double precision: I11 I22 and I12 I21 agree to their rounding"},
+        {{0, 0, 0, 0, 0, 0, 0, 0, 1},
+         {1e-300, 0, 0, 0, 1e300, 0, 0, 0, 1},
+         "I_m is zero, not positive definite"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char err[256] = "", err_ok[256] = "";
+        sus_model m;
+        const int rc = sus_model_init(&m, cases[i].I, err, sizeof err);
+        const int rc_ok = sus_model_init(&m, cases[i].ok, err_ok, sizeof err_ok);
+        CHECK(rc == -1 && strncmp(err, cases[i].says, strlen(cases[i].says)) == 0 && rc_ok == 0,
+              "extreme body %zu refused as the CLI refuses it (\"%s\"), its control accepted (%s)",
+              i, err, err_ok);
+    }
+}
+
 /* Absolute values at the paper's body, by hand. */
 static void paper_values(const sus_model *mp)
 {
@@ -418,6 +456,7 @@ int main(void)
     gsl_set_error_handler_off();
     char err[256], about[200];
     validation();
+    extreme_bodies();
     printf("bodies: seed %u\n", BODIES_SEED);
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
