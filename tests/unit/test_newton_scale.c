@@ -234,7 +234,7 @@ static void fold_still_fails(void)
         sus_model m;
         double w[3], l;
         sus_stepper_stats s;
-        int at;
+        int at = -1;
         ok &= scaled_model(I, 1.0, pow2[k], &m) == 0 &&
               run("gauss4", &m, 0.5, 10, w0, w, &l, &s, &at) == SUS_STEPPER_SINGULAR;
         at0 = k == 0 ? at : at0;
