@@ -110,6 +110,15 @@ static int refused(const sus_exact *ex, double w[2])
     return 1;
 }
 
+/* sech s at t, s = s0 + sigma k t into *s: 2 e^{-|s|} / (1 + e^{-2|s|}), which overflows for no t
+ * (exact.h). */
+static double sech_at(const sus_exact *ex, double t, double *s)
+{
+    *s = ex->s0 + ex->sigma * ex->k * t;
+    const double e = exp(-fabs(*s));
+    return 2.0 * e / (1.0 + e * e);
+}
+
 void sus_exact_omega(const sus_exact *ex, double t, double w[2])
 {
     if (!w || refused(ex, w))
@@ -119,32 +128,20 @@ void sus_exact_omega(const sus_exact *ex, double t, double w[2])
         w[1] = ex->w0[1];
         return;
     }
-    const double s = ex->s0 + ex->sigma * ex->k * t;
-    const double e = exp(-fabs(s));
-    const double sech = 2.0 * e / (1.0 + e * e);
+    double s;
+    const double sech = sech_at(ex, t, &s);
     omega_from_psi(ex, ex->sigma * sech, ex->sigma * tanh(s), w);
 }
 
-/* (exact.h) c(t) = sigma r |v| sech s, with sech s = 2 e^{-|s|} / (1 + e^{-2|s|}). */
+/* (exact.h) c(t) = sigma r |v| sech s. */
 double sus_exact_c(const sus_exact *ex, double t)
 {
     if (!ex || !ex->model)
         return NAN;
     if (ex->fixed || t == 0.0)
         return ex->c0;
-    const double s = ex->s0 + ex->sigma * ex->k * t;
-    const double e = exp(-fabs(s));
-    return ex->sigma * ex->cmax * (2.0 * e / (1.0 + e * e));
-}
-
-/* (LagMult), with the factor I_3i w_i of its last term given. */
-double sus_lagmult_c(const sus_model *m, const double w[2], double c)
-{
-    if (!m || !w)
-        return NAN;
-    const double(*I)[3] = m->I;
-    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1]) - w[1] * (I[0][0] * w[0] + I[0][1] * w[1]) +
-           c * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
+    double s;
+    return ex->sigma * ex->cmax * sech_at(ex, t, &s);
 }
 
 /* The steady rotation w(t -> infinity): psi = pi/2. */

@@ -57,9 +57,6 @@ void sus_exact_limit(const sus_exact *ex, double w[2]);
 /* c(w(t)) = I31 w1 + I32 w2 along the motion, from the closed form (above): c(w0) at t = 0 and
  * for a fixed motion; NaN for a NULL or refused ex. */
 double sus_exact_c(const sus_exact *ex, double t);
-/* (LagMult) at w with its factor c = I_3i w_i given, not formed from w: term by term as
- * sus_lagmult (model.h), which it equals for c = sus_c(m, w). NaN for a NULL m or w. */
-double sus_lagmult_c(const sus_model *m, const double w[2], double c);
 
 #ifdef __cplusplus
 }

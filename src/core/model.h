@@ -80,23 +80,38 @@ static inline void sus_contdyn(const sus_model *m, const double w[2], double f[2
 
 void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2]);
 
+/* The last term of (LagMult) with its factor c = I_3i w_i given (c / |I_m| (o0c[0] w1 + o0c[1]
+ * w2)): the exact solution gives c(t) in closed form (exact.h), where I31 w1 + I32 w2 at the
+ * rounded w cancels near the steady rotation. */
+static inline double sus_o0_with_c(const sus_model *m, const double w[2], double c)
+{
+    return c * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
+}
+
 /* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the
  * O_0 of the proof of PropoFinal. */
 static inline double sus_lagmult_o0(const sus_model *m, const double w[2])
 {
     if (!m || !w)
         return NAN;
-    return sus_c(m, w) * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
+    return sus_o0_with_c(m, w, sus_c(m, w));
 }
 
-/* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
-static inline double sus_lagmult(const sus_model *m, const double w[2])
+/* (LagMult) at w with its factor c = I_3i w_i given, not formed from w: term by term as printed.
+ * NaN for a NULL m or w. */
+static inline double sus_lagmult_c(const sus_model *m, const double w[2], double c)
 {
     if (!m || !w)
         return NAN;
     const double(*I)[3] = m->I;
     return w[0] * (I[1][0] * w[0] + I[1][1] * w[1]) - w[1] * (I[0][0] * w[0] + I[0][1] * w[1]) +
-           sus_lagmult_o0(m, w);
+           sus_o0_with_c(m, w, c);
+}
+
+/* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
+static inline double sus_lagmult(const sus_model *m, const double w[2])
+{
+    return sus_lagmult_c(m, w, sus_c(m, w));
 }
 double sus_energy(const sus_model *m, const double w[2]);
 
