@@ -23,6 +23,8 @@ typedef struct {
     double c[2];    /* 0, or w0 for a motion that stays at w0 (exact.h's fixed): then M = 0 */
     double s0, ks;  /* s = s0 + ks t, ks = sigma k */
     double winf[2]; /* w(t -> infinity), sus_exact_limit */
+    double cs, c0;  /* c(t) = I31 w1 + I32 w2 = cs sech s (exact.h: sigma cmax), c0 = c(w0) */
+    int fixed;      /* exact.h's fixed motion: c = c0 at every t */
 } sus_exact_fast;
 
 /* From a closed form that sus_exact_init accepted; returns 0, or -1 (f then gives NaN) when ex or
@@ -50,6 +52,17 @@ static inline void sus_exact_fast_omega(const sus_exact_fast *f, double t, doubl
     double st[2];
     sus_exact_fast_st(f, t, st);
     sus_exact_fast_map(f, st, w);
+}
+
+/* w(t) and c(t) from one sech, as sus_exact_omega and sus_exact_c give them (c0 at t = 0, as
+ * sus_exact_c; the sech here is 2E times 1/(1 + E^2), sus_exact_c's 2E / (1 + E^2): a rounding
+ * apart). Returns c. */
+static inline double sus_exact_fast_omega_c(const sus_exact_fast *f, double t, double w[2])
+{
+    double st[2];
+    sus_exact_fast_st(f, t, st);
+    sus_exact_fast_map(f, st, w);
+    return f->fixed || t == 0.0 ? f->c0 : f->cs * st[0];
 }
 
 #ifdef __cplusplus

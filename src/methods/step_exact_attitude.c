@@ -155,18 +155,29 @@ static double quat_row(const taylor_series *ts, int n)
     return sqrt(p[0] * p[0] + p[1] * p[1] + m[0] * m[0] + m[1] * m[1]);
 }
 
-/* q <- q (x) sum_{n <= d} Q_n theta^n. */
-static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4])
+/* q <- q (x) sum_{n <= d} Q_n, summed as dq_from sums. */
+static void turn(double q[4], const taylor_series *ts, int d)
 {
-    v2d P = {0.0, 0.0}, M = {0.0, 0.0};
-    for (int n = d; n >= 0; n--) {
-        P = P * theta + ts->P[n];
-        M = M * theta + ts->M[n];
-    }
-    const double dq[4] = {P[0], M[0], M[1], P[1]};
-    double p[4];
+    double dq[4], p[4];
+    dq_from(ts, d, dq);
     sus_quat_mul(p, q, dq);
     memcpy(q, p, sizeof p);
+}
+
+/* q <- q (x) sum_{n <= d} Q_n theta^n: the rows scaled, then summed in tail_sum's interleaved
+ * order (its two partial sums overlap, where a Horner scheme is one chain of d dependent steps);
+ * at theta = 1, the step's end, the products are exact, so dense output there is the step's own
+ * q to the bit. */
+static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4])
+{
+    taylor_series y;
+    double tn = 1.0;
+    for (int n = 1; n <= d; n++) {
+        tn *= theta;
+        y.P[n] = ts->P[n] * tn;
+        y.M[n] = ts->M[n] * tn;
+    }
+    turn(q, &y, d);
 }
 
 /* The bound, per degree, on how the terms past the last fall over a step H from t (top of the
@@ -194,8 +205,10 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     double s = fmin(1.0, 0.5 / a);
     if (s * q0 > 0.5 * q1) /* the last two terms halve too */
         s = 0.5 * q1 / q0;
-    if (2.0 * B * pow(s, d) > rate * H) /* s^(d+1) B / (1 - s a) <= rate s H, 1 - s a >= 1/2 */
-        s = pow(rate * H / (2.0 * B), 1.0 / d);
+    /* s^(d+1) B / (1 - s a) <= rate s H, as 1 - s a >= 1/2: one root, not a power to test first */
+    const double s_rate = pow(rate * H / (2.0 * B), 1.0 / d);
+    if (s > s_rate)
+        s = s_rate;
     if (!(s >= SUS_U)) /* a tolerance no step of double can meet: fail, not crawl for ever */
         return -1;
     *t_next = sus_step_end(t, s * H, stop);
@@ -210,7 +223,7 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     *est = sn * s * B / (1.0 - s * a);
     if (!isfinite(B))
         return -1;
-    taylor_sum(&wk->ts, d, 1.0, q);
+    turn(q, &wk->ts, d); /* taylor_sum at theta = 1, without the copy */
     return 0;
 }
 
@@ -230,11 +243,11 @@ static void tail_rotate(const sus_tol_work *wk, double tau, double q[4])
 static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3],
                      double *lambda, sus_attitude *att)
 {
-    sus_exact_fast_omega(&wk->f, t, w);
-    w[2] = 0.0;
     /* c(t) from the closed form, as the reference's: I31 w1 + I32 w2 at the rounded w cancels
      * near the steady rotation, and (LagMult) divides it by |I_m| */
-    *lambda = sus_lagmult_c(wk->m, w, sus_exact_c(&wk->ex, t));
+    const double c = sus_exact_fast_omega_c(&wk->f, t, w);
+    w[2] = 0.0;
+    *lambda = sus_lagmult_c(wk->m, w, c);
     sus_quat_to_attitude(q, att);
 }
 

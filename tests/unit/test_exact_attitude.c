@@ -10,14 +10,18 @@
  *     its error at T = 1e4 and 1e6 is at most TOL + C u T |w_inf|, the conditioning of the problem
  *     (an angle (T - t*) |w_inf| rounded in double), against a reference whose tail is a
  *     long-double rotation about a long-double w_inf;
- *   - dense output at a step's end is the step's own state; a body with I31 = I32 = 0 (w constant)
- *     is one step, the rotation exp(T w0^).
+ *   - dense output half way through a step is within the step's estimate, and at its end it is
+ *     the step's own state; a body with I31 = I32 = 0 (w constant) is one step, the rotation
+ *     exp(T w0^).
  * Round-off allowances, fixed from counts of roundings before measuring:
  *   - ROUND_STEP = 34 u per step in dist(R, .): the quaternion product q (x) dq rounds each
  *     component by at most 4 u (four products summed), the sum of the series and the normalisation
  *     add 2 u, so |dq| moves by about 12 u, and dist <= 2 sqrt2 |dq|;
  *   - ROUND_W = 16 u r |L^{-1}|_F for w: w = L^{-T} u, |u| = r, and each of the two ways of
  * computing it rounds a handful of times (exact_fast.h), every rounding relative to that scale;
+ *   - ROUND_C = 4 u r |v| for c = sigma r |v| sech s: both ways share s and exp(-|s|), and their
+ *     sech (2E / (1 + E^2) against 2E (1 / (1 + E^2))) and the product with r |v| round at most
+ *     twice each;
  *   - COND = 32 u per radian turned: a step that turns R by the angle theta = h |w| computes that
  *     angle in double, so its result carries about u theta (the problem's conditioning); in the
  *     tail, the angle carries the roundings of w_inf (16 u, as above, relative), of T - t* and of
@@ -43,6 +47,7 @@
 #define ROUND_STEP 34.0
 #define ROUND_W 16.0
 #define COND 32.0
+#define ROUND_C 4.0
 
 static const sus_tol_ops *ops(void) { return sus_step_exact_attitude_type.tol; }
 
@@ -81,7 +86,7 @@ static double w_scale(const sus_exact *ex)
 
 static void fast_omega_agrees(void)
 {
-    double worst = 0.0;
+    double worst = 0.0, worst_c = 0.0;
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
@@ -92,16 +97,20 @@ static void fast_omega_agrees(void)
         const double span = 60.0 / fmax(ex.k, 1e-3); /* the whole transient and the tail */
         for (int i = 1; i <= 4000; i++) {
             double w1[2], w2[2];
-            const double t = span * i / 4000.0;
+            const double t = span * i / 4000.0, c = sus_exact_fast_omega_c(&f, t, w2);
             sus_exact_omega(&ex, t, w1);
-            sus_exact_fast_omega(&f, t, w2);
             worst = fmax(worst, hypot(w1[0] - w2[0], w1[1] - w2[1]) / (ROUND_W * U * w_scale(&ex)));
+            worst_c = fmax(worst_c, fabs(c - sus_exact_c(&ex, t)) / (ROUND_C * U * ex.cmax));
         }
     }
     CHECK(worst <= 1.0,
           "exact_fast's w(t) within %g u r |L^-1|_F of sus_exact_omega on %d bodies, t in (0, "
           "60/k]: worst %.3g of that",
           ROUND_W, BODIES_COUNT, worst);
+    CHECK(worst_c <= 1.0,
+          "exact_fast's c(t) within %g u r |v| of sus_exact_c on the same bodies and times (the "
+          "sign sigma included): worst %.3g of that",
+          ROUND_C, worst_c);
 }
 
 /* ---- the tail's bound ---- */
@@ -186,6 +195,7 @@ static void exact_after(const sus_exact *ex, const double R0[3][3], double t0, d
 
 typedef struct {
     double local;  /* worst (local error - round-off) / estimate over steps */
+    double dense;  /* the same for dense output half way through each step */
     double global; /* worst dist(R, R_ref)(T) / (TOL + the steps' round-off) */
     long steps;
 } step_check;
@@ -194,6 +204,22 @@ typedef struct {
 static double step_roundoff(double h, const double w0[3], const double w1[3])
 {
     return (ROUND_STEP + COND * h * fmax(hypot(w0[0], w0[1]), hypot(w1[0], w1[1]))) * U;
+}
+
+/* Dense output tau into the last step (from t0, where R was R0) against the reference's increment,
+ * less its round-off: the terms past the last degree enter at theta = tau / h <= 1 as theta^n <= 1
+ * times their size over the whole step, and the tail's integral of |w - w_inf| over [t*, t* + tau]
+ * is within that over [t*, T], so the step's own estimate bounds this error too. */
+static double dense_excess(const sus_tol_work *wk, const sus_exact *ex, const double R0[3][3],
+                           double t0, double tau, const double w0[3], const sus_attitude *att)
+{
+    double wd[3], ld, Rd[3][3], Re[3][3];
+    sus_attitude ad = *att;
+    ops()->dense(wk, tau, wd, &ld, &ad);
+    sus_attitude_get(&ad, Rd);
+    exact_after(ex, R0, t0, t0 + tau, Re);
+    const double excess = sus_so3_dist(Re, Rd) - step_roundoff(tau, w0, wd);
+    return excess > 0.0 ? excess : 0.0;
 }
 
 /* One run of a body to T at tol, step by step, each step's local error against its estimate. */
@@ -219,6 +245,10 @@ static void run_checked(const sus_model *m, const double w0[2], double tol, doub
         const double r = step_roundoff(t - t0, wb, w), excess = sus_so3_dist(Re, Rn) - r;
         round += r;
         c->local = fmax(c->local, excess > 0.0 ? excess / st.residual : 0.0);
+        /* tau such that t0 + tau is a double: the reference is taken there, without a rounding
+         * of t0 + tau, which would turn R by up to u t |w| */
+        const double tau = (t0 + 0.5 * (t - t0)) - t0;
+        c->dense = fmax(c->dense, dense_excess(wk, &ex, R, t0, tau, wb, &att) / st.residual);
     }
     if (wk)
         ops()->free(wk);
@@ -245,6 +275,10 @@ static void steps_within_estimates(void)
           "its estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate "
           "%.3g over %ld steps, %d bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13",
           ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
+    CHECK(c.dense <= 1.0,
+          "dense output half way through each step is within the step's estimate + its "
+          "round-off on the same runs: worst (error - round-off) / estimate %.3g",
+          c.dense);
     CHECK(c.global <= 1.0,
           "dist(R, R_ref)(50) <= TOL + the steps' round-off on the same runs: worst ratio %.3g",
           c.global);
