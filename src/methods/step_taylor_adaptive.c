@@ -58,7 +58,9 @@
  * r), so at the stiff balance above (dev <= 0.29 tol, and the integral about dev / k) the run jumps
  * instead of stalling. A w within SETTLE_FLOOR u |w_inf| of w_inf, times the rounding of E that
  * w_inf inherits (up to cond(I_m)), settles at any tol: there c(w) is rounding noise, which would
- * otherwise drive the stiff series.
+ * otherwise drive the stiff series. And a w exactly on c(w) = 0 (w_0 = 0, I31 = I32 = 0, a start on
+ * a steady rotation) is a rest point of the series itself, whose every later term vanishes: the
+ * rest of the run is one such step there too, about that w (at_rest).
  *
  * Conditioning. The jump turns R by the angle (T - t*) |w_inf| (T = t_end, t* the jump's start),
  * formed in double: T - t* carries a rounding of T, |w_inf| and its direction about 3 rho u (rho
@@ -288,6 +290,20 @@ static int settles(const sus_tol_work *wk, const double w[2])
     return tail_error(wk, w) <= wk->tol;
 }
 
+/* Is w a rest point of the series? c(w) = 0 makes every W_n, n >= 1, vanish (W_1 = h c_0 U_0, and
+ * each later sum holds a factor c_j, 0 < j < n, or W_n), so the steps keep w (exactly from w_0,
+ * whose energy is E(w_0); to the energy restoration's rounding from a landing) and turn R by
+ * exp(h w^/2), which the rest of the run then takes in closed form instead of adding each step's
+ * truncation. w becomes the run's w_inf. */
+static int at_rest(sus_tol_work *wk, const double w[2])
+{
+    if (sus_c(wk->m, w) != 0.0)
+        return 0;
+    wk->w_inf[0] = w[0];
+    wk->w_inf[1] = w[1];
+    return 1;
+}
+
 /* exp(h (0, w)/2) for a constant w = (w1, w2, 0): the quaternion series of a steady rotation,
  * summed. */
 static void steady_increment(const double w[2], double h, double dq[4])
@@ -343,6 +359,8 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
                          sus_attitude *att, sus_stepper_stats *st)
 {
     if (settles(wk, w))
+        return settled_step(wk, t_end, t, w, lambda, att, st);
+    if (at_rest(wk, w))
         return settled_step(wk, t_end, t, w, lambda, att, st);
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));
