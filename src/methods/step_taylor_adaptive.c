@@ -358,9 +358,7 @@ static double rescaled_try(sus_tol_work *wk, int p, double s)
 static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                          sus_attitude *att, sus_stepper_stats *st)
 {
-    if (settles(wk, w))
-        return settled_step(wk, t_end, t, w, lambda, att, st);
-    if (at_rest(wk, w))
+    if (settles(wk, w) || at_rest(wk, w))
         return settled_step(wk, t_end, t, w, lambda, att, st);
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));

@@ -6,6 +6,7 @@
 #include "bodies.h"
 #include "check.h"
 #include "exact.h"
+#include "refattitude.h"
 
 /* 0, or nonzero after a FAIL line naming the body and the model's reason. */
 static inline int check_body_model(const body *b, sus_model *m)
@@ -42,6 +43,26 @@ static inline double check_body_time(const sus_model *m, const double w0[2])
     sus_exact_init(&paper, &mp, SUS_PAPER_OMEGA0);
     sus_exact_init(&ex, m, w0);
     return paper.k / ex.k;
+}
+
+/* The slow body: I_m = I, I31 = I32 = 1e-5, w0 = (1000, -999), whose k is far below |w0|, so a
+ * run to SLOW_T is a slow transient on a fast rotation, many steps long for any method. Its model
+ * and closed form, and the long-double reference attitude at SLOW_T (R(0) = I): 0, or nonzero
+ * after a FAIL line. */
+#define SLOW_T 200.0
+static inline int check_slow_body(sus_model *m, sus_exact *ex, double w0[2], double R_T[3][3])
+{
+    const double I[9] = {1, 0, 0, 0, 1, 0, 1e-5, 1e-5, 1},
+                 I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    sus_refatt ra;
+    w0[0] = 1000.0, w0[1] = -999.0;
+    if (sus_model_init(m, I, NULL, 0) != 0 || sus_exact_init(ex, m, w0) != 0) {
+        CHECK(0, "the slow body");
+        return -1;
+    }
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    sus_refatt_advance(&ra, SLOW_T, R_T);
+    return 0;
 }
 
 #endif

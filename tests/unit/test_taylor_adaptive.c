@@ -288,28 +288,21 @@ static void fast_steady_rotation(const sus_model *m, const double w0[2], const c
     }
 }
 
-/* The clock over many steps: a slow transient on a fast rotation (test_exact_attitude's slow
- * body: I_m = I, I31 = I32 = 1e-5, w0 = (1000, -999), T = 200; some 1e5 steps, none at rest, no
- * tail), against the long-double reference: R(T) within the steps' estimates summed, 2 sqrt2 N TOL
- * (each step's quaternion error at most its estimate, the flow keeping norms, dist <= 2 sqrt2
- * |dq|), plus ROUND_ANGLE u T |w0| (every step's angle rounded; |w| = |w0| on this I_m) and the
- * steps' other roundings as a random walk, 3 ROUND_STEP u sqrt N (independent roundings to
- * nearest, three deviations). A clock that adds h to t in place loses u t per step instead, N u T
- * |w| in all, whatever TOL. */
+/* The clock over many steps: a slow transient on a fast rotation (check_body.h's slow body; some
+ * 1e5 steps, none at rest, no tail), against the long-double reference: R(T) within the steps'
+ * estimates summed, 2 sqrt2 N TOL (each step's quaternion error at most its estimate, the flow
+ * keeping norms, dist <= 2 sqrt2 |dq|), plus ROUND_ANGLE u T |w0| (every step's angle rounded; |w|
+ * = |w0| on this I_m) and the steps' other roundings as a random walk, 3 ROUND_STEP u sqrt N
+ * (independent roundings to nearest, three deviations). A clock that adds h to t in place loses u t
+ * per step instead, N u T |w| in all, whatever TOL. */
 static void slow_transient(void)
 {
-    const double I[9] = {1, 0, 0, 0, 1, 0, 1e-5, 1e-5, 1}, w0[2] = {1000, -999}, T = 200.0,
-                 I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, tols[2] = {1e-12, 3e-16};
+    const double tols[2] = {1e-12, 3e-16}, T = SLOW_T;
     sus_model m;
     sus_exact ex;
-    sus_refatt ra;
-    double Rr[3][3];
-    if (sus_model_init(&m, I, NULL, 0) != 0 || sus_exact_init(&ex, &m, w0) != 0) {
-        CHECK(0, "the slow body");
+    double w0[2], Rr[3][3];
+    if (check_slow_body(&m, &ex, w0, Rr))
         return;
-    }
-    sus_refatt_init(&ra, &ex, 0.0, I3);
-    sus_refatt_advance(&ra, T, Rr);
     for (int i = 0; i < 2; i++) {
         rows_ctx c;
         sus_run_report rep;
