@@ -108,10 +108,13 @@ static inline double sus_lagmult_c(const sus_model *m, const double w[2], double
            sus_o0_with_c(m, w, c);
 }
 
-/* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */
+/* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). c is
+ * formed here, not by sus_c, so that the pointers are tested once on this hot path. */
 static inline double sus_lagmult(const sus_model *m, const double w[2])
 {
-    return sus_lagmult_c(m, w, sus_c(m, w));
+    if (!m || !w)
+        return NAN;
+    return sus_lagmult_c(m, w, m->b[0] * w[0] + m->b[1] * w[1]);
 }
 double sus_energy(const sus_model *m, const double w[2]);
 
