@@ -164,6 +164,19 @@ static void turn(double q[4], const taylor_series *ts, int d)
     memcpy(q, p, sizeof p);
 }
 
+/* q's rows Q_n theta^n, n = 1..d, into out (which may be in); w's rows are left out, being read no
+ * more. Returns theta^d. */
+static double scale_rows(const taylor_series *in, int d, double theta, taylor_series *out)
+{
+    double tn = 1.0;
+    for (int n = 1; n <= d; n++) {
+        tn *= theta;
+        out->P[n] = in->P[n] * tn;
+        out->M[n] = in->M[n] * tn;
+    }
+    return tn;
+}
+
 /* q <- q (x) sum_{n <= d} Q_n theta^n: the rows scaled, then summed in tail_sum's interleaved
  * order (its two partial sums overlap, where a Horner scheme is one chain of d dependent steps);
  * at theta = 1, the step's end, the products are exact, so dense output there is the step's own
@@ -171,12 +184,7 @@ static void turn(double q[4], const taylor_series *ts, int d)
 static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4])
 {
     taylor_series y;
-    double tn = 1.0;
-    for (int n = 1; n <= d; n++) {
-        tn *= theta;
-        y.P[n] = ts->P[n] * tn;
-        y.M[n] = ts->M[n] * tn;
-    }
+    scale_rows(ts, d, theta, &y);
     turn(q, &y, d);
 }
 
@@ -214,12 +222,7 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     *t_next = sus_step_end(t, s * H, stop);
     *h = *t_next - t;
     s = *h / H; /* at most the s above, but for a rounding on reaching stop */
-    double sn = 1.0;
-    for (int j = 1; j <= d; j++) { /* q's rows: w's are read no more */
-        sn *= s;
-        wk->ts.P[j] *= sn;
-        wk->ts.M[j] *= sn;
-    }
+    const double sn = scale_rows(&wk->ts, d, s, &wk->ts); /* the rows of the step s H */
     *est = sn * s * B / (1.0 - s * a);
     if (!isfinite(B))
         return -1;

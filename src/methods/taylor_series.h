@@ -53,7 +53,7 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
     t->W[0] = (v2d){w[0], w[1]};
     t->P[0] = (v2d){1.0, 0.0};
     t->M[0] = (v2d){0.0, 0.0};
-    C[0] = m->b[0] * w[0] + m->b[1] * w[1];
+    C[0] = sus_c_unchecked(m, w);
     U[0] = a0 * w[0] + a1 * w[1];
     const v2d l0 = C[0] * a0 + m->b[0] * U[0],
               l1 = C[0] * a1 + m->b[1] * U[0]; /* the columns of L */
