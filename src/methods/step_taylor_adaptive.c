@@ -294,15 +294,8 @@ static int settles(const sus_tol_work *wk, const double w[2])
  * each later sum holds a factor c_j, 0 < j < n, or W_n), so the steps keep w (exactly from w_0,
  * whose energy is E(w_0); to the energy restoration's rounding from a landing) and turn R by
  * exp(h w^/2), which the rest of the run then takes in closed form instead of adding each step's
- * truncation. w becomes the run's w_inf. */
-static int at_rest(sus_tol_work *wk, const double w[2])
-{
-    if (sus_c(wk->m, w) != 0.0)
-        return 0;
-    wk->w_inf[0] = w[0];
-    wk->w_inf[1] = w[1];
-    return 1;
-}
+ * truncation, about w as the run's w_inf. */
+static int at_rest(const sus_model *m, const double w[2]) { return sus_c(m, w) == 0.0; }
 
 /* exp(h (0, w)/2) for a constant w = (w1, w2, 0): the quaternion series of a steady rotation,
  * summed. */
@@ -358,8 +351,12 @@ static double rescaled_try(sus_tol_work *wk, int p, double s)
 static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                          sus_attitude *att, sus_stepper_stats *st)
 {
-    if (settles(wk, w) || at_rest(wk, w))
+    if (settles(wk, w))
         return settled_step(wk, t_end, t, w, lambda, att, st);
+    if (at_rest(wk->m, w)) {
+        wk->w_inf[0] = w[0], wk->w_inf[1] = w[1];
+        return settled_step(wk, t_end, t, w, lambda, att, st);
+    }
     const int p = wk->order->p;
     double h = within_radius(wk->m, w, first_try(wk, w, t_end - *t));
     double err = wk->order->try_step(wk, h, w);
