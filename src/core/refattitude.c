@@ -1,9 +1,17 @@
 #include "refattitude.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include "quaternion.h"
+
+/* The stated accuracy, 2^-51 after up to a thousand steps of about ten long-double roundings, needs
+ * a significand of 64 bits at least (x87; binary128 on aarch64 and WebAssembly). Where long double
+ * is double (MSVC, Apple's arm64) the reference would be no more accurate than the methods it
+ * judges: refuse to build there rather than state what does not hold. */
+_Static_assert(LDBL_MANT_DIG >= 64,
+               "the reference attitude needs a long double of 64 bits at least");
 
 /* a b - c d for doubles, to about one rounding of the result however much the two products
  * cancel: p = fl(c d) and e = c d - p are exact in long double (a product of doubles has 106
