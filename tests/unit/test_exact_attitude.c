@@ -267,13 +267,13 @@ static void steps_within_estimates(void)
         test_body(k, &b);
         if (check_body_model(&b, &m))
             continue;
-        for (int e = 4; e <= 13; e += 3)
-            run_checked(&m, b.w0, pow(10.0, -e), 50.0, &c);
+        for (int j = 6; j <= 28; j++) /* a dip in the terms shows at some TOLs only */
+            run_checked(&m, b.w0, pow(10.0, -0.5 * j), 50.0, &c);
     }
     CHECK(c.local <= 1.0,
           "every step's local error (against the reference's increment) is at most "
           "its estimate + (%g + %g h |w|) u: worst (error - round-off) / estimate "
-          "%.3g over %ld steps, %d bodies, TOL 1e-4, 1e-7, 1e-10, 1e-13",
+          "%.3g over %ld steps, %d bodies, TOL 1e-3 ... 1e-14, two a decade",
           ROUND_STEP, COND, c.local, c.steps, TEST_BODIES);
     CHECK(c.dense <= 1.0,
           "dense output half way through each step is within the step's estimate + its "
