@@ -215,11 +215,14 @@ static const suslov_cli_option OPTIONS[] = {
      "with --eps, --steps or --every; a run stops (exit 3) after 10^6 steps\n"
      "short of T. TOL bounds absolute errors: taylor-adaptive's estimate, in\n"
      "each step, of the error of w and of the attitude quaternion (max norm;\n"
-     "the steps' errors add up over a run), exact-attitude's |R R_ref^T - I|_F\n"
-     "over the whole run, up to round-off (its w is the closed form). Not\n"
-     "relative ones: where |w| is far below TOL, TOL promises nothing of the\n"
-     "relative error of w, nor of lambda, computed from w by (LagMult) and\n"
-     "quadratic in w",
+     "over a run the steps' errors add up, and an error in w shifts the rest\n"
+     "of the motion in time, which the attitude carries: most where w starts\n"
+     "near the repelling steady rotation), exact-attitude's |R R_ref^T - I|_F\n"
+     "over the whole run (its w is the closed form). Both add a round-off in\n"
+     "proportion to T |w|, the angle turned, rounded in double: the problem's\n"
+     "own conditioning. Not relative ones: where |w| is far below TOL, TOL\n"
+     "promises nothing of the relative error of w, nor of lambda, computed\n"
+     "from w by (LagMult) and quadratic in w",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
