@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 enum { EXIT_WRITE = 1, EXIT_SOLVER = 3 };
+#define PROGRESS_PARTS 10000L /* a --tol run's progress: t / T in these parts */
 
 /* ---- rows ---- */
 
@@ -28,6 +29,7 @@ typedef struct {
     long every, steps;
     long next;          /* the next row to write: 0, K, 2K, ..., N (no division per step) */
     unsigned tick_mask; /* check the clock when (calls & mask) == 0 */
+    double t_end;       /* > 0: progress as the share of [0, t_end] done (a --tol run), else k */
     unsigned long calls;
     int blowup; /* the energy overflowed at row blow_k (w finite but |w| > ~1e154) */
     long blow_k;
@@ -56,7 +58,8 @@ static int take_row(void *vctx, const sus_row *r)
 {
     csv_ctx *ctx = vctx;
     if ((ctx->calls++ & ctx->tick_mask) == 0)
-        suslov_progress_tick(r->k, "t = %.6g", r->t);
+        suslov_progress_tick(ctx->t_end > 0.0 ? (long)(PROGRESS_PARTS * (r->t / ctx->t_end)) : r->k,
+                             "t = %.6g", r->t);
     if (!isfinite(sus_energy(ctx->m, r->w))) {
         ctx->blowup = 1;
         ctx->blow_k = r->k;
@@ -163,14 +166,27 @@ static void failure_message(char *msg, size_t len, const char *name, int rc,
 
 /* ---- the run ---- */
 
-/* A tolerance-driven run: the driver hands over exactly the rows to write. */
+/* Progress only where a person watches stderr and the rows do not scroll over it. */
+static int progress_modes(const suslov_args *a)
+{
+    return !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0;
+}
+
+/* A tolerance-driven run: the driver hands over exactly the rows to write. Its steps are uneven,
+ * so progress is the share of [0, T] done, in PROGRESS_PARTS. */
 static int run_tol(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *ctx)
 {
     const sus_tol_config cfg = {&a->model, a->method->type, a->tol,
                                 a->t_end,  a->every_time,   SUSLOV_TOL_MAX_STEPS};
-    *ctx = (csv_ctx){
-        .fp = fp, .m = &a->model, .all = 1, .renumber = a->every_time > 0.0, .tick_mask = ~0u};
+    *ctx = (csv_ctx){.fp = fp,
+                     .m = &a->model,
+                     .all = 1,
+                     .renumber = a->every_time > 0.0,
+                     .tick_mask = 15u,
+                     .t_end = a->t_end};
+    suslov_progress_start("suslov", NULL, PROGRESS_PARTS, progress_modes(a));
     const int rc = sus_run_tol(&cfg, a->w0, take_row, ctx, report);
+    suslov_progress_end();
     if (rc == SUS_RUN_STOPPED && ctx->blowup) { /* the energy overflowed: a blow-up too */
         report->step = ctx->blow_k;
         report->t = ctx->blow_t;
@@ -194,10 +210,7 @@ static int run(const suslov_args *a, FILE *fp, sus_run_report *report, csv_ctx *
                      .every = a->every,
                      .steps = a->steps,
                      .tick_mask = exact ? 0u : 1023u};
-    /* Progress only where a person watches stderr and the rows do not scroll over it. */
-    suslov_progress_start(
-        "suslov", "step", a->steps,
-        !a->quiet && (a->output != NULL || !isatty(STDOUT_FILENO)) ? PROGRESS_TERMINAL : 0);
+    suslov_progress_start("suslov", "step", a->steps, progress_modes(a));
     int rc = exact ? sus_run_exact(&cfg, a->w0, take_row, ctx, report)
                    : sus_run(&cfg, a->w0, take_row, ctx, report);
     suslov_progress_end();

@@ -410,6 +410,10 @@ if command -v script >/dev/null; then
     SUSLOV_PROGRESS_AFTER=0 "$S" --no-header --method rk4 --eps 1e-3 --steps 200000 --every 100000 --output "$T/pr.csv" 2>"$T/notty"
     check "progress on a terminal: 'step .. of 200000 (..%), t = .., .. s elapsed' then erased (ends with CR ESC[K); nothing with --quiet or without a terminal" \
         sh -c "test $rc = 0 && grep -q 'suslov: step [0-9]* of 200000 (.*), t = .*, [0-9]* s elapsed' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b && test ! -s '$T/ttyq' -a ! -s '$T/notty'"
+    # a --tol run's steps are uneven: its progress is the share of [0, T] done
+    SUSLOV_PROGRESS_AFTER=0 script -qec "'$S' --no-header --method exact-attitude --tol 1e-8 --time 100 --every-time 0.01 --output '$T/pr.csv'" /dev/null >"$T/tty" 2>&1; rc=$?
+    check "progress of a --tol run on a terminal: 'N% done, t = .., .. s elapsed', then erased" \
+        sh -c "test $rc = 0 && grep -q 'suslov: [0-9]*% done, t = [0-9.e+]*, [0-9]* s elapsed' '$T/tty' && test \"\$(tail -c 4 '$T/tty' | od -An -tx1 | tr -d ' \n')\" = 0d1b5b4b"
 fi
 
 # a write error (emit asks the run to stop: SUS_RUN_STOPPED) is status 1 with one line,
