@@ -17,12 +17,13 @@
  *
  * Accuracy, for the inputs as the doubles they are: each step adds its truncation and a few
  * long-double roundings (2^-64 each) to q, and rotations carry an error on unchanged; the tail's
- * speed |w*| and angle are formed in 113-bit arithmetic, so its error does not grow with t. Before
- * its one rounding to double, R(t) is within about 10 * 2^-64 per step to the tail plus a few
- * 2^-64: the stated accuracy is 2^-51 in every entry, at every t, for up to a thousand steps to the
- * tail (sus_exact_reference_steps). tests/unit/test_highorder.c checks it against an independent
- * long-double Magnus integration along the closed-form w(t) on every test body, stiff ones
- * included. */
+ * speed |w*| and angle are formed in 113-bit arithmetic, so its error does not grow with t while
+ * the angle (t - t_s) |w*| is below about 2^60 (its rounding is 2^-53 there). Before its one
+ * rounding to double, R(t) is within about 10 * 2^-64 per step to the tail plus a few 2^-64: the
+ * stated accuracy is 2^-51 in every entry, at every t with that angle below 2^60, for up to a
+ * thousand steps to the tail (sus_exact_reference_steps). tests/unit/test_highorder.c checks it
+ * against an independent long-double Magnus integration along the closed-form w(t) on every test
+ * body, stiff ones included. */
 #ifndef SUS_REFATTITUDE_H
 #define SUS_REFATTITUDE_H
 
