@@ -240,25 +240,46 @@ static quad quad_sqrt(quad x)
  * the energy of w0: |w*| = |b| sqrt(<I_m w0, w0> / <I_m Jb, Jb>). Products of doubles are exact in
  * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*|
  * needs no more than long double: an error in it does not grow with t. */
+static quad steady_speed(const sus_exact *ex, const double d[2])
+{
+    const double(*I)[3] = ex->model->I;
+    const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
+    if (ex->fixed)
+        return quad_sqrt(nd);
+    const quad w0 = ex->w0[0], w1 = ex->w0[1],
+               e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 + I[1][1] * w1 * w1;
+    const quad ed =
+        I[0][0] * (quad)d[0] * d[0] + 2 * I[1][0] * (quad)d[0] * d[1] + I[1][1] * (quad)d[1] * d[1];
+    return quad_sqrt(e0 * nd / ed);
+}
+
+/* w*'s direction, not normalised: w0 for a motion that stays there, else J b. */
+static void steady_direction(const sus_exact *ex, double d[2])
+{
+    const double *b = ex->model->b;
+    d[0] = ex->fixed ? ex->w0[0] : -b[1];
+    d[1] = ex->fixed ? ex->w0[1] : b[0];
+}
+
 static void steady_rotation(sus_refatt *ra)
 {
-    const sus_exact *ex = ra->ex;
-    const double(*I)[3] = ex->model->I, *b = ex->model->b;
-    const double *d = ex->fixed ? ex->w0 : (const double[2]){-b[1], b[0]};
-    const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
-    quad speed = quad_sqrt(nd);
-    if (!ex->fixed) {
-        const quad w0 = ex->w0[0], w1 = ex->w0[1],
-                   e0 = I[0][0] * w0 * w0 + 2 * I[1][0] * w0 * w1 + I[1][1] * w1 * w1;
-        const quad ed = I[0][0] * (quad)d[0] * d[0] + 2 * I[1][0] * (quad)d[0] * d[1] +
-                        I[1][1] * (quad)d[1] * d[1];
-        speed = quad_sqrt(e0 * nd / ed);
-    }
-    const long double n = sqrtl((long double)nd);
+    double d[2];
+    steady_direction(ra->ex, d);
+    const quad speed = steady_speed(ra->ex, d);
+    const long double n = sqrtl((long double)((quad)d[0] * d[0] + (quad)d[1] * d[1]));
     ra->axis[0] = n > 0 ? d[0] / n : 1.0L;
     ra->axis[1] = n > 0 ? d[1] / n : 0.0L;
     ra->speed[0] = (long double)speed;
     ra->speed[1] = (long double)(speed - ra->speed[0]);
+}
+
+void sus_refatt_steady_speed(const sus_exact *ex, double speed[2])
+{
+    double d[2];
+    steady_direction(ex, d);
+    const quad s = steady_speed(ex, d);
+    speed[0] = (double)s;
+    speed[1] = (double)(s - speed[0]);
 }
 
 /* q (x) (cos(theta/2), sin(theta/2) a), theta = tau |w*|, a the axis (0 on the third): the steady

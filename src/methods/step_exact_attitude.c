@@ -16,12 +16,13 @@
  * The tail. w(t) -> w_inf at the rate k. Once half the closed-form bound of the integral of
  * |w - w_inf| from t on (exact_tail.h; half: the quaternion's share) is at most tolq / 2, one step
  * jumps to t_end: q(T) = q(t*) (x) exp((T - t*) w_inf / 2), the steady rotation in closed form. So
- * the cost of a run stops growing with T. Its error grows with T all the same, as any method's
- * must: a step that turns R by the angle theta computes theta in double, so it is off by about
- * u theta; in the tail theta = (T - t*) |w_inf| (w_inf and T known to a few roundings; dR/dT = R w^
- * moves R by |w| per unit of T), so the absolute error grows like u T |w_inf|: the conditioning of
- * the problem itself, not of the method (tests/unit/test_exact_attitude.c holds it to a bound of
- * that form at T = 1e4 and 1e6).
+ * the cost of a run stops growing with T, and so does its error: the angle (T - t*) |w_inf| is
+ * formed in two doubles (tail_half_angle), from T - t* exactly and |w_inf| to 106 bits (the
+ * reference's, refattitude.h), so it is right to a few roundings of pi however large. In one
+ * double it would be off by u (T - t*) |w_inf|, an error growing with T that the inputs, exact
+ * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step to 128 u at T = 1e4,
+ * 1e6 and 1e9). Dense rows in the tail take their time from the driver as tau = t - t*, rounded,
+ * so they keep an error of about u tau |w_inf|; the step's end does not.
  *
  * Steps: the Taylor series of w (the Cauchy recursion of (ContDyn) seeded by the closed form's
  * w(t), which is w's own series) and of q, to degree d, from taylor_series.h, over the longest step
@@ -60,6 +61,7 @@
 #include "exact_fast.h"
 #include "exact_tail.h"
 #include "quaternion.h"
+#include "refattitude.h"
 #include "taylor_series.h"
 
 #include <math.h>
@@ -93,6 +95,8 @@ struct sus_tol_work {
     const degree *deg;
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
+    double h_lo;      /* a tail step's length, t_end - t0 = h + h_lo exactly */
+    double speed[2];  /* |w_inf| to 106 bits, speed[0] + speed[1]; set at the tail's step */
     taylor_series ts; /* its series (q's rows scaled to its length) */
 };
 
@@ -247,12 +251,26 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     return 0;
 }
 
-/* The steady rotation over tau: q <- q (x) exp(tau w_inf / 2). */
-static void tail_rotate(const sus_tol_work *wk, double tau, double q[4])
+/* Half the angle (tau + tau_lo) |w_inf| reduced to [-pi, pi], to a few roundings whatever its
+ * size: the product in two parts (fma gives the first's rounding error exactly), the multiple of
+ * 2 pi (as hi + lo) taken off the high part by fma, which is exact there. A double angle would be
+ * off by u times itself, an error growing with T that the reference does not have. */
+static double tail_half_angle(const double speed[2], double tau, double tau_lo)
+{
+    const double two_pi = 6.283185307179586, two_pi_lo = 2.4492935982947064e-16;
+    const double p = tau * speed[0];
+    const double e = fma(tau, speed[0], -p) + (tau * speed[1] + tau_lo * speed[0]);
+    const double k = nearbyint(0.5 * p / two_pi);
+    return fma(-k, two_pi, 0.5 * p) - k * two_pi_lo + 0.5 * e;
+}
+
+/* The steady rotation over tau + tau_lo: q <- q (x) exp(tau w_inf / 2), the axis w_inf / |w_inf|
+ * in double (its error does not grow with tau), the angle by tail_half_angle. */
+static void tail_rotate(const sus_tol_work *wk, double tau, double tau_lo, double q[4])
 {
     const double n = hypot(wk->f.winf[0], wk->f.winf[1]);
     double s, c, p[4];
-    sus_so3_sincos(0.5 * tau * n, &s, &c);
+    sus_so3_sincos(tail_half_angle(wk->speed, tau, tau_lo), &s, &c);
     const double f = n > 0.0 ? s / n : 0.5 * tau; /* sin(tau |w_inf| / 2) / |w_inf| */
     const double dq[4] = {c, f * wk->f.winf[0], f * wk->f.winf[1], 0.0};
     sus_quat_mul(p, q, dq);
@@ -302,7 +320,9 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     memcpy(wk->q0, q, sizeof q);
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
-        tail_rotate(wk, h, q);
+        wk->h_lo = (t_end - h) - *t; /* exact, as t_end >= *t */
+        sus_refatt_steady_speed(&wk->ex, wk->speed);
+        tail_rotate(wk, h, wk->h_lo, q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {
         wk->kind = KIND_TAYLOR;
@@ -328,8 +348,8 @@ static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *la
 {
     double q[4];
     memcpy(q, wk->q0, sizeof q);
-    if (wk->kind == KIND_TAIL)
-        tail_rotate(wk, tau, q);
+    if (wk->kind == KIND_TAIL) /* at the step's end, its own exact length */
+        tail_rotate(wk, tau, tau == wk->h ? wk->h_lo : 0.0, q);
     else
         taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
     state_at(wk, wk->t0 + tau, q, w, lambda, att);

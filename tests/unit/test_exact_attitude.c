@@ -7,9 +7,9 @@
  *     most its estimate plus the step's round-off, and the error at t = 50 at most TOL plus the
  *     steps' round-off;
  *   - the tail: a run to T = 1e6 takes as many steps as one to T = 1e3 (the tail is one step), and
- *     its error at T = 1e4 and 1e6 is at most TOL + C u T |w_inf|, the conditioning of the problem
- *     (an angle (T - t*) |w_inf| rounded in double), against a reference whose tail is a
- *     long-double rotation about a long-double w_inf;
+ *     the tail step is the steady rotation to ROUND_TAIL u, at T = 1e4, 1e6 and 1e9 alike, against
+ *     a rotation about w* derived here with its angle in 113 bits (the method forms the angle in
+ *     two doubles: in one, its error would be u T |w_inf|);
  *   - dense output half way through a step is within the step's estimate, and at its end it is
  *     the step's own state; a body with I31 = I32 = 0 (w constant) is one step, the rotation
  *     exp(T w0^).
@@ -23,13 +23,16 @@
  *     sech (2E / (1 + E^2) against 2E (1 / (1 + E^2))) and the product with r |v| round at most
  *     twice each;
  *   - COND = 32 u per radian turned: a step that turns R by the angle theta = h |w| computes that
- *     angle in double, so its result carries about u theta (the problem's conditioning); in the
- *     tail, the angle carries the roundings of w_inf (16 u, as above, relative), of T - t* and of
- *     the product (2 u), sin and cos (2 u), and dist = sqrt2 angle for small angles:
- *     (16 + 4) sqrt2 < 32. A step's allowance is ROUND_STEP u + COND u h max(|w(t0)|, |w(t1)|), a
- *     run's the sum over its steps. */
+ *     angle in double, so its result carries about u theta (the problem's conditioning), and
+ *     dist = sqrt2 angle for small angles. A step's allowance is ROUND_STEP u + COND u h
+ *     max(|w(t0)|, |w(t1)|), a run's the sum over its steps;
+ *   - ROUND_TAIL = 128 u for the tail step, whatever its angle: the half angle reduced to [-pi, pi]
+ *     carries about three roundings of pi (10 u), so the angle 20 u and dist sqrt2 times that
+ *     (28 u); the axis w_inf / |w_inf| carries ROUND_W's 16 u relative, which moves R by at most
+ *     2 sqrt2 times it (45 u); the quaternion product and R from q, ROUND_STEP (34 u). */
 #include "check.h"
 #include "check_body.h"
+#include "check_steady.h"
 #include "driver.h"
 #include "exact.h"
 #include "exact_attitude.h"
@@ -45,6 +48,7 @@
 
 #define U SUS_U
 #define ROUND_STEP 34.0
+#define ROUND_TAIL 128.0
 #define ROUND_W 16.0
 #define COND 32.0
 #define ROUND_C 4.0
@@ -336,9 +340,14 @@ static void budget_kept(void)
 
 /* ---- the tail ---- */
 
-/* Steps to T; R(T) and w(T) (w may be NULL). */
+/* The last step of a run: where it started, and R there. */
+typedef struct {
+    double t, R[3][3];
+} last_start;
+
+/* Steps to T; R(T), w(T) and the last step's start (w and last may be NULL). */
 static long steps_to_w(const sus_model *m, const double w0[2], double tol, double T, double R[3][3],
-                       double wT[3])
+                       double wT[3], last_start *last)
 {
     sus_tol_work *wk = ops()->alloc(m, tol, w0);
     double t = 0.0, w[3] = {w0[0], w0[1], 0.0}, lam;
@@ -346,8 +355,15 @@ static long steps_to_w(const sus_model *m, const double w0[2], double tol, doubl
     sus_stepper_stats st;
     sus_attitude_identity(&att);
     long n = 0;
-    while (wk && t < T && ops()->step(wk, T, &t, w, &lam, &att, &st) == SUS_STEPPER_OK)
+    for (double t0 = t; wk && t < T; t0 = t) {
+        if (last) {
+            last->t = t0;
+            sus_attitude_get(&att, last->R);
+        }
+        if (ops()->step(wk, T, &t, w, &lam, &att, &st) != SUS_STEPPER_OK)
+            break;
         n++;
+    }
     if (wk)
         ops()->free(wk);
     sus_attitude_get(&att, R);
@@ -358,77 +374,60 @@ static long steps_to_w(const sus_model *m, const double w0[2], double tol, doubl
 
 static long steps_to(const sus_model *m, const double w0[2], double tol, double T, double R[3][3])
 {
-    return steps_to_w(m, w0, tol, T, R, NULL);
-}
-
-/* x^T I_m x in long double. */
-static long double quad_form(const sus_model *m, long double x, long double y)
-{
-    return x * (m->I[0][0] * x + m->I[0][1] * y) + y * (m->I[1][0] * x + m->I[1][1] * y);
+    return steps_to_w(m, w0, tol, T, R, NULL, NULL);
 }
 
 /* The reference at T past the tail: R(t_s) from the long-double integration, with t_s where the
- * tail's integral is below 1e-20, then the steady rotation about w* in long double. w* lies on
- * the line c(w) = 0 at the energy E0 (the attracting steady rotation), on the side the closed
- * form approaches. */
+ * tail's integral is below 1e-20, then the steady rotation (steady_far). */
 static void reference_far(const sus_model *m, const sus_exact *ex, double T, double R[3][3])
 {
     const double t_s = fmax(0.0, sus_exact_tail_time(ex, 1e-20));
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    double Rs[3][3], winf[2];
+    double Rs[3][3];
     sus_refatt ra;
     sus_refatt_init(&ra, ex, 0.0, I3);
     sus_refatt_advance(&ra, t_s, Rs);
-    sus_exact_limit(ex, winf);
-    const long double v0 = -(long double)m->b[1], v1 = m->b[0];
-    const long double e0 = quad_form(m, ex->w0[0], ex->w0[1]), ev = quad_form(m, v0, v1);
-    const long double sgn = v0 * winf[0] + v1 * winf[1] >= 0 ? 1.0L : -1.0L,
-                      g = sgn * sqrtl(e0 / ev);
-    const long double w[2] = {g * v0, g * v1}, n = hypotl(w[0], w[1]);
-    const long double th = ((long double)T - t_s) * n, c = cosl(th), s = sinl(th), x = w[0] / n,
-                      y = w[1] / n;
-    /* Rodrigues: exp(th n^) = I + sin th n^ + (1 - cos th) n^2, n = (x, y, 0) */
-    const long double E[3][3] = {{c + (1 - c) * x * x, (1 - c) * x * y, s * y},
-                                 {(1 - c) * x * y, c + (1 - c) * y * y, -s * x},
-                                 {-s * y, s * x, c}};
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            R[i][j] = (double)(Rs[i][0] * E[0][j] + Rs[i][1] * E[1][j] + Rs[i][2] * E[2][j]);
+    steady_far(m, ex, Rs, t_s, T, R);
 }
 
 static void tail_is_one_step(void)
 {
-    const double tol = 1e-10, Ts[2] = {1e4, 1e6};
+    const double tol = 1e-10, Ts[3] = {1e4, 1e6, 1e9};
     int same = 1;
-    double worst = 0.0, ratio[2] = {0.0, 0.0};
+    double tail = 0.0, run = 0.0;
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         sus_model m;
         sus_exact ex;
         double R[3][3], Rr[3][3], winf[2];
+        last_start ls;
         if (check_body_exact(k, &b, &m, &ex))
             continue;
         const long n3 = steps_to(&m, b.w0, tol, 1e3, R);
         same &= n3 > 0 && steps_to(&m, b.w0, tol, 1e6, R) == n3;
         sus_exact_limit(&ex, winf);
-        for (int i = 0; i < 2; i++) {
-            const double cond = U * Ts[i] * hypot(winf[0], winf[1]);
-            steps_to(&m, b.w0, tol, Ts[i], R);
+        for (int i = 0; i < 3; i++) {
+            const long n = steps_to_w(&m, b.w0, tol, Ts[i], R, NULL, &ls);
+            steady_far(&m, &ex, ls.R, ls.t, Ts[i], Rr);
+            tail = fmax(tail, sus_so3_dist(R, Rr) / (ROUND_TAIL * U));
+            /* the whole run: TOL, the steps' round-off before the tail, and the tail's */
+            const double before = (ROUND_STEP * (double)n + COND * ls.t * w_scale(&ex)) * U;
             reference_far(&m, &ex, Ts[i], Rr);
-            const double err = sus_so3_dist(R, Rr);
-            worst = fmax(worst, err / (tol + COND * cond));
-            ratio[i] = fmax(ratio[i], err / cond);
+            run = fmax(run, sus_so3_dist(R, Rr) / (tol + before + ROUND_TAIL * U));
         }
     }
     CHECK(same,
           "a run to T = 1e6 takes as many steps as one to T "
           "= 1e3 (TOL %g, %d bodies): the tail is one step",
           tol, BODIES_COUNT);
-    CHECK(worst <= 1.0,
-          "dist(R, R_ref)(T) <= TOL + %g u T |w_inf| at T = 1e4 and 1e6 (the conditioning: "
-          "the angle (T - t*) |w_inf| rounded in double): worst %.3g of it; largest "
-          "error / (u T |w_inf|) %.3g at 1e4, %.3g at 1e6",
-          COND, worst, ratio[0], ratio[1]);
+    CHECK(tail <= 1.0,
+          "the tail step turns R by exp((T - t*) w*^) to %g u at T = 1e4, 1e6, 1e9 (%d bodies), "
+          "not u T |w*|: worst %.3g of it",
+          ROUND_TAIL, BODIES_COUNT, tail);
+    CHECK(run <= 1.0,
+          "dist(R, R_ref)(T) <= TOL + the steps' round-off before the tail + %g u at T = 1e4, "
+          "1e6, 1e9: worst %.3g of it",
+          ROUND_TAIL, run);
 }
 
 /* ---- dense output and a constant w ---- */
@@ -476,7 +475,7 @@ static void constant_w_is_one_rotation(void)
     }
     const double w0[2] = {0.4, 0.5}, T = 123.25, v[3] = {T * w0[0], T * w0[1], 0.0};
     double R[3][3], Rx[3][3], w[3];
-    const long n = steps_to_w(&m, w0, 1e-12, T, R, w);
+    const long n = steps_to_w(&m, w0, 1e-12, T, R, w, NULL);
     sus_so3_exp(v, Rx);
     const double err = sus_so3_dist(R, Rx), bound = 1e-12 + COND * U * T * hypot(w0[0], w0[1]);
     CHECK(n == 1 && err <= bound && w[0] == w0[0] && w[1] == w0[1] && w[2] == 0.0,
