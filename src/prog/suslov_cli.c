@@ -213,16 +213,17 @@ static const suslov_cli_option OPTIONS[] = {
      "error tolerance, 2^-52 <= TOL < 1, for a tolerance-driven method (order\n"
      "tol in --method list), which then chooses its steps; with --time T, never\n"
      "with --eps, --steps or --every; a run stops (exit 3) after 10^6 steps\n"
-     "short of T. TOL bounds absolute errors: taylor-adaptive's estimate, in\n"
-     "each step, of the error of w and of the attitude quaternion (max norm;\n"
-     "over a run the steps' errors add up, and an error in w shifts the rest\n"
-     "of the motion in time, which the attitude carries: most where w starts\n"
-     "near the repelling steady rotation), exact-attitude's |R R_ref^T - I|_F\n"
-     "over the whole run (its w is the closed form). Both add a round-off in\n"
-     "proportion to T |w|, the angle turned, rounded in double: the problem's\n"
-     "own conditioning. Not relative ones: where |w| is far below TOL, TOL\n"
-     "promises nothing of the relative error of w, nor of lambda, computed\n"
-     "from w by (LagMult) and quadratic in w",
+     "short of T. TOL bounds absolute errors. taylor-adaptive: its estimate,\n"
+     "in each step, of the error of w and of the attitude quaternion (max\n"
+     "norm); over a run the steps' errors add up, an error in w shifts the\n"
+     "rest of the motion in time, which the attitude carries (most where w\n"
+     "starts near the repelling steady rotation), and the angle turned,\n"
+     "T |w|, is rounded in double. exact-attitude: |R R_ref^T - I|_F over\n"
+     "the whole run, to a few roundings a step: its w is the closed form and\n"
+     "its steady tail's angle formed in two doubles (a dense row in that tail:\n"
+     "2^-53 t |w| besides). Not relative ones: where |w| is far below TOL,\n"
+     "TOL promises nothing of the relative error of w, nor of lambda,\n"
+     "computed from w by (LagMult) and quadratic in w",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"
