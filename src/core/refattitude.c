@@ -240,10 +240,13 @@ static quad quad_sqrt(quad x)
  * the energy of w0: |w*| = |b| sqrt(<I_m w0, w0> / <I_m Jb, Jb>). Products of doubles are exact in
  * 113 bits, so the two quadratic forms lose nothing to a near-singular I_m. The axis w* / |w*|
  * needs no more than long double: an error in it does not grow with t. */
+/* |d|^2, exact in 113 bits. */
+static quad norm2_q(const double d[2]) { return (quad)d[0] * d[0] + (quad)d[1] * d[1]; }
+
 static quad steady_speed(const sus_exact *ex, const double d[2])
 {
     const double(*I)[3] = ex->model->I;
-    const quad nd = (quad)d[0] * d[0] + (quad)d[1] * d[1];
+    const quad nd = norm2_q(d);
     if (ex->fixed)
         return quad_sqrt(nd);
     const quad w0 = ex->w0[0], w1 = ex->w0[1],
@@ -266,7 +269,7 @@ static void steady_rotation(sus_refatt *ra)
     double d[2];
     steady_direction(ra->ex, d);
     const quad speed = steady_speed(ra->ex, d);
-    const long double n = sqrtl((long double)((quad)d[0] * d[0] + (quad)d[1] * d[1]));
+    const long double n = sqrtl((long double)norm2_q(d));
     ra->axis[0] = n > 0 ? d[0] / n : 1.0L;
     ra->axis[1] = n > 0 ? d[1] / n : 0.0L;
     ra->speed[0] = (long double)speed;

@@ -8,8 +8,8 @@
  *     steps' round-off;
  *   - the tail: a run to T = 1e6 takes as many steps as one to T = 1e3 (the tail is one step), and
  *     the tail step is the steady rotation to ROUND_TAIL u, at T = 1e4, 1e6 and 1e9 alike, against
- *     a rotation about w* derived here with its angle in 113 bits (the method forms the angle in
- *     two doubles: in one, its error would be u T |w_inf|);
+ *     a rotation about w* derived from I_m and b with its angle in 113 bits (check_steady.h; the
+ *     method forms the angle in two doubles: in one, its error would be u T |w_inf|);
  *   - dense output half way through a step is within the step's estimate, and at its end it is
  *     the step's own state; a body with I31 = I32 = 0 (w constant) is one step, the rotation
  *     exp(T w0^).
