@@ -3,18 +3,6 @@
 #include <math.h>
 #include <string.h>
 
-int sus_args_model_ready(const sus_model *m)
-{
-    if (!m)
-        return 0;
-    double I[9];
-    sus_model ref;
-    for (int i = 0; i < 9; i++)
-        I[i] = m->I[i / 3][i % 3];
-    /* sus_model holds doubles only, so it has no padding that could differ between the two. */
-    return sus_model_init(&ref, I, NULL, 0) == 0 && memcmp(&ref, m, sizeof ref) == 0;
-}
-
 int sus_args_finite2(const double w[2]) { return w && isfinite(w[0]) && isfinite(w[1]); }
 
 /* The pointers and the model every run needs. */
@@ -31,7 +19,7 @@ static const char *common(const void *cfg, const sus_model *model, const double 
         return "w0 is NULL";
     if (!sus_args_finite2(w0))
         return "w0 is not finite";
-    if (!sus_args_model_ready(model))
+    if (!sus_model_sealed(model))
         return "cfg->model is NULL, or not a model sus_model_init filled, or changed since";
     /* the first row's E and lambda (sus_model_start_overflow), refused as the CLI refuses them */
     const char *what = sus_model_start_overflow(model, w0);

@@ -10,9 +10,6 @@
 extern "C" {
 #endif
 
-/* 1 when m is exactly what sus_model_init makes of m->I: not NULL, initialised, and not changed
- * since (derived coefficients that disagree with I would make every step meaningless). */
-int sus_args_model_ready(const sus_model *m);
 /* 1 when w is not NULL and both its entries are finite. */
 int sus_args_finite2(const double w[2]);
 /* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is

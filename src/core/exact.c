@@ -48,7 +48,7 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
 {
     if (!ex)
         return -1;
-    if (!sus_args_model_ready(m) || !sus_args_finite2(w0)) {
+    if (!sus_model_sealed(m) || !sus_args_finite2(w0)) {
         *ex = (sus_exact){.model = NULL, .r = NAN, .k = NAN, .c0 = NAN, .w0 = {NAN, NAN}};
         return -1;
     }

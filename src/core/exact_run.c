@@ -7,7 +7,7 @@
 
 double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T)
 {
-    if (!sus_args_model_ready(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
+    if (!sus_model_sealed(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
         return -1.0;
     sus_exact ex;
     sus_refatt ra;

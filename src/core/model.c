@@ -3,6 +3,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 const double SUS_PAPER_INERTIA[9] = {1.0, 0.1, 0.2, 0.1, 1.0, 0.2, 0.2, 0.1, 1.0};
 const double SUS_PAPER_OMEGA0[2] = {0.4, 0.5};
@@ -89,14 +90,27 @@ static int check_im(const double I[9], char *err, size_t errlen)
     return check_definite(I, err, errlen);
 }
 
-int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
+/* The seal of the fields before it: the sum of their bit patterns, the i-th times the odd number
+ * (2i + 1) g, modulo 2^64. Changing one field changes the sum, as an odd factor is invertible
+ * modulo 2^64; other bytes match it by chance only, about once in 2^64. The products are
+ * independent, so this takes a few nanoseconds. */
+static unsigned long long seal_of(const sus_model *m)
 {
-    if (!err)
-        errlen = 0;
-    if (!m || !I) {
-        snprintf(err, errlen, "%s is NULL", m ? "the inertia" : "the model");
-        return -1;
+    const unsigned long long g = 0x9E3779B97F4A7C15ull; /* odd: 2^64 over the golden ratio */
+    const unsigned char *p = (const unsigned char *)m;
+    unsigned long long h = g; /* not 0: a model of zero bytes must not match */
+    for (size_t i = 0; i < offsetof(sus_model, seal) / sizeof h; i++) {
+        unsigned long long x;
+        memcpy(&x, p + i * sizeof h, sizeof h);
+        h += x * ((2 * i + 1) * g);
     }
+    return h;
+}
+
+int sus_model_sealed(const sus_model *m) { return m && m->seal == seal_of(m); }
+
+static int fill(sus_model *m, const double I[9], char *err, size_t errlen)
+{
     for (int i = 0; i < 9; i++) {
         if (!isfinite(I[i])) {
             snprintf(err, errlen, "inertia entry %d is not finite", i + 1);
@@ -119,6 +133,20 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
     m->o0c[1] = sus_cross_diff(I[7], I[3], I[6], I[4]); /* I32 I21 - I31 I22 */
     m->norm_b = hypot(m->b[0], m->b[1]) * (1.0 + 1e-15);
     return check_coefficients(m, err, errlen);
+}
+
+int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
+{
+    if (!err)
+        errlen = 0;
+    if (!m || !I) {
+        snprintf(err, errlen, "%s is NULL", m ? "the inertia" : "the model");
+        return -1;
+    }
+    *m = (sus_model){0}; /* every field defined, also where fill stops early */
+    const int rc = fill(m, I, err, errlen);
+    m->seal = seal_of(m) ^ (rc != 0); /* a failed fill: a seal that never matches */
+    return rc;
 }
 
 const char *sus_model_start_overflow(const sus_model *m, const double w[2])

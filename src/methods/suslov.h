@@ -6,7 +6,7 @@
  * libm.
  *
  * What a program uses:
- *   the body       sus_model, sus_model_init (model.h)
+ *   the body       sus_model, sus_model_init, sus_model_sealed (model.h)
  *   the methods    the registry: sus_step_method_by_name, _get, _count_all (registry.h)
  *   the runs       sus_run (fixed step), sus_run_tol (tolerance-driven), sus_run_exact (the
  *                  closed form), each handing rows (sus_row) to a callback (driver.h,

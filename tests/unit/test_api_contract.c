@@ -284,6 +284,28 @@ static void start_overflow_runs(void)
           rows_seen);
 }
 
+/* sus_model_sealed: a copy of a good model passes, and one bit changed anywhere in the 64-bit words
+ * it covers, or in the seal itself, fails it (bits 0, 31 and 63 of each). */
+static void model_seal(void)
+{
+    const size_t words = sizeof(sus_model) / 8;
+    int passed = 0;
+    for (size_t i = 0; i < words; i++)
+        for (int b = 0; b < 64; b += b < 31 ? 31 : 32) { /* 0, 31, 63 */
+            sus_model m = model;
+            unsigned long long x;
+            memcpy(&x, (unsigned char *)&m + 8 * i, 8);
+            x ^= 1ull << b;
+            memcpy((unsigned char *)&m + 8 * i, &x, 8);
+            passed += sus_model_sealed(&m);
+        }
+    const sus_model copy = model;
+    CHECK(passed == 0 && sus_model_sealed(&copy) && !sus_model_sealed(NULL),
+          "sus_model_sealed: %d of %zu models with one bit changed pass (none should); a copy "
+          "passes, NULL fails",
+          passed, 3 * words);
+}
+
 static void model_functions(void)
 {
     sus_model m;
@@ -295,6 +317,10 @@ static void model_functions(void)
           "sus_model_init(NULL inertia): -1, \"%s\"", err);
     CHECK(sus_model_init(&m, bad, NULL, 64) == -1 && sus_model_init(&m, bad, err, 0) == -1,
           "sus_model_init with a NULL err or errlen 0: -1, nothing written");
+    m = model;
+    CHECK(sus_model_sealed(&m) && sus_model_init(&m, bad, NULL, 0) == -1 && !sus_model_sealed(&m),
+          "a good model that sus_model_init then refuses is sealed no more");
+    model_seal();
     double f[2], J[2][2];
     sus_contdyn(NULL, W0, f);
     sus_contdyn(&model, W0, NULL);
