@@ -93,7 +93,7 @@ static int check_im(const double I[9], char *err, size_t errlen)
 /* The seal of the fields before it: the sum of their bit patterns, the i-th times the odd number
  * (2i + 1) g, modulo 2^64. Changing one field changes the sum, as an odd factor is invertible
  * modulo 2^64; other bytes match it by chance only, about once in 2^64. The products are
- * independent, so this takes a few nanoseconds. */
+ * independent of one another, so they overlap. */
 static unsigned long long seal_of(const sus_model *m)
 {
     const unsigned long long g = 0x9E3779B97F4A7C15ull; /* odd: 2^64 over the golden ratio */

@@ -28,7 +28,7 @@ typedef struct {
      * o0c[0] = I32 I11 - I31 I12 and o0c[1] = I32 I21 - I31 I22 */
     double o0c[2];
     /* Last: what sus_model_init leaves here tells a model it filled, unchanged since, from any
-     * other bytes (sus_model_sealed), in a few nanoseconds where filling it again takes tens. */
+     * other bytes (sus_model_sealed), far more cheaply than filling a copy and comparing. */
     unsigned long long seal;
 } sus_model;
 
