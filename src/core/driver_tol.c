@@ -47,13 +47,13 @@ static int emit_row(tol_run *r, sus_row *row, const sus_attitude *att, sus_emit_
  * (u = SUS_U / 2) is t_end: j every_time carries the roundings of every_time and of t_end as
  * given, of the product, and of j once past 2^53, so 3 x 0.7 = 2.0999999999999996 is the final
  * time 2.1, not a second row beside it. */
-static int dense_rows(tol_run *r, double t0, sus_emit_fn emit, void *ctx, sus_run_report *report)
+static int dense_rows(tol_run *r, sus_emit_fn emit, void *ctx, sus_run_report *report)
 {
     const double dt = r->cfg->every_time, last = r->cfg->t_end - 2.0 * SUS_U * r->cfg->t_end;
     for (double tj; (tj = (double)r->next_out * dt) <= r->row.t && tj < last; r->next_out++) {
         sus_row d = {.k = r->row.k, .t = tj};
         sus_attitude a = r->att;
-        r->ops->dense(r->wk, tj - t0, d.w, &d.lambda, &a);
+        r->ops->dense(r->wk, tj, d.w, &d.lambda, &a);
         const int rc = emit_row(r, &d, &a, emit, ctx, report);
         if (rc != SUS_RUN_OK)
             return rc;
@@ -96,7 +96,7 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
         }
         r.row.k++;
         r.h_last = r.row.t - t0;
-        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, t0, emit, ctx, report)) != SUS_RUN_OK)
+        if (cfg->every_time > 0.0 && (rc = dense_rows(&r, emit, ctx, report)) != SUS_RUN_OK)
             return rc;
         if (cfg->every_time <= 0.0 || r.row.t >= cfg->t_end)
             rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);

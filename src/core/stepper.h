@@ -97,10 +97,10 @@ typedef struct {
      * SUS_STEPPER_REJECTED (see above), leaving the state as it was. */
     int (*step)(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                 sus_attitude *att, sus_stepper_stats *st);
-    /* Dense output: the state at tau after the start of the last accepted step, 0 <= tau <= its
-     * length, from that step's own series and with the same structure as the steps keep. */
-    void (*dense)(const sus_tol_work *wk, double tau, double w[3], double *lambda,
-                  sus_attitude *att);
+    /* Dense output: the state at time t within the last accepted step (from its start to its
+     * end), from that step's own series and with the same structure as the steps keep. t, not
+     * the time into the step: a method may need t - t0 to more than a double's precision. */
+    void (*dense)(const sus_tol_work *wk, double t, double w[3], double *lambda, sus_attitude *att);
     void (*free)(sus_tol_work *wk);
     int (*order)(double tol); /* the order it uses at tol */
 } sus_tol_ops;

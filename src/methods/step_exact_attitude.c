@@ -20,9 +20,8 @@
  * formed in two doubles (tail_half_angle), from T - t* exactly and |w_inf| to 106 bits (the
  * reference's, refattitude.h), so it is right to a few roundings of pi however large. In one
  * double it would be off by u (T - t*) |w_inf|, an error growing with T that the inputs, exact
- * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step to 128 u at T = 1e4,
- * 1e6 and 1e9). Dense rows in the tail take their time from the driver as tau = t - t*, rounded,
- * so they keep an error of about u tau |w_inf|; the step's end does not.
+ * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step, and a dense row
+ * inside it, to 128 u at T = 1e4, 1e6 and 1e9). A dense row forms its t - t* exactly too.
  *
  * Steps: the Taylor series of w (the Cauchy recursion of (ContDyn) seeded by the closed form's
  * w(t), which is w's own series) and of q, to degree d, from taylor_series.h, over the longest step
@@ -95,7 +94,6 @@ struct sus_tol_work {
     const degree *deg;
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
-    double h_lo;      /* a tail step's length, t_end - t0 = h + h_lo exactly */
     double speed[2];  /* |w_inf| to 106 bits, speed[0] + speed[1]; set at the tail's step */
     taylor_series ts; /* its series (q's rows scaled to its length) */
 };
@@ -251,6 +249,10 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     return 0;
 }
 
+/* What b - a rounded to d = fl(b - a) leaves out, b - a - d, exactly for b >= a >= 0 (Fast2Sum):
+ * the tail turns by an angle proportional to its length, however long. */
+static double gap_lo(double b, double a, double d) { return (b - d) - a; }
+
 /* Half the angle (tau + tau_lo) |w_inf| reduced to [-pi, pi], to a few roundings whatever its
  * size: the product in two parts (fma gives the first's rounding error exactly), the multiple of
  * 2 pi (as hi + lo) taken off the high part by fma, which is exact there. A double angle would be
@@ -320,9 +322,8 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     memcpy(wk->q0, q, sizeof q);
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
-        wk->h_lo = (t_end - h) - *t; /* exact, as t_end >= *t */
         sus_refatt_steady_speed(&wk->ex, wk->speed);
-        tail_rotate(wk, h, wk->h_lo, q);
+        tail_rotate(wk, h, gap_lo(t_end, *t, h), q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {
         wk->kind = KIND_TAYLOR;
@@ -341,18 +342,20 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     return SUS_STEPPER_OK;
 }
 
-/* The state at tau into the last step: the steady rotation, or the step's Taylor polynomial at
- * tau / h; w and lambda from the closed form. */
-static void ea_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda,
+/* The state at t in the last step: the steady rotation over t - t0 to the bit (tau and what
+ * its rounding left out), or the step's Taylor polynomial at tau / h; w and lambda from the
+ * closed form. */
+static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lambda,
                      sus_attitude *att)
 {
     double q[4];
+    const double tau = t - wk->t0;
     memcpy(q, wk->q0, sizeof q);
-    if (wk->kind == KIND_TAIL) /* at the step's end, its own exact length */
-        tail_rotate(wk, tau, tau == wk->h ? wk->h_lo : 0.0, q);
+    if (wk->kind == KIND_TAIL)
+        tail_rotate(wk, tau, gap_lo(t, wk->t0, tau), q);
     else
         taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
-    state_at(wk, wk->t0 + tau, q, w, lambda, att);
+    state_at(wk, t, q, w, lambda, att);
 }
 
 static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free,

@@ -100,7 +100,7 @@ struct sus_tol_work {
     double tol, e0; /* the tolerance and E(w_0), the energy every step restores */
     const struct adaptive_order *order;
     double h_next;          /* the next step to try (0: none yet) */
-    double h;               /* the last accepted step */
+    double t0, h;           /* the last accepted step: its start and length */
     double q0[4];           /* the attitude quaternion at its start */
     taylor_series t;        /* its series, for dense output */
     double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
@@ -256,6 +256,7 @@ static void accept(sus_tol_work *wk, double h, double err, double t_next, double
     sus_quat_mul(q1, wk->q0, dq);
     sus_quat_to_attitude(q1, att);
     *lambda = sus_lagmult(wk->m, w);
+    wk->t0 = *t;
     *t = t_next;
     wk->h = h;
     wk->h_next = h * fmin(GROW, SAFETY * pow(wk->tol / err, 1.0 / (p + 1)));
@@ -327,6 +328,7 @@ static int settled_step(sus_tol_work *wk, double t_end, double *t, double w[3], 
     settled_attitude(wk, h, att);
     w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
     *lambda = sus_lagmult(wk->m, w);
+    wk->t0 = *t;
     *t = t_end;
     wk->h = h;
     *st = (sus_stepper_stats){.iterations = 0, .residual = 0.0, .scale = wk->tol, .det = h};
@@ -387,11 +389,13 @@ static int adaptive_step(sus_tol_work *wk, double t_end, double *t, double w[3],
     return SUS_STEPPER_OK;
 }
 
-/* The state at tau into the last step: the step's own polynomials at theta = tau / h (the
- * coefficients are scaled by h^n), w restored onto E(w_0), the quaternion normalised. */
-static void adaptive_dense(const sus_tol_work *wk, double tau, double w[3], double *lambda,
+/* The state at t in the last step, tau = t - t0 into it: the step's own polynomials at
+ * theta = tau / h (the coefficients are scaled by h^n), w restored onto E(w_0), the quaternion
+ * normalised. */
+static void adaptive_dense(const sus_tol_work *wk, double t, double w[3], double *lambda,
                            sus_attitude *att)
 {
+    const double tau = t - wk->t0;
     if (wk->settled) {
         settled_attitude(wk, tau, att);
         w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
