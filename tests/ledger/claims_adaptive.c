@@ -53,6 +53,11 @@
  *     1e-14 (R from a unit quaternion); |E - E0| <= 32 u kappa E0, kappa = |L|_F |L^{-1}|_F: E =
  *     |u|^2 / 2 with u = L^T w, and w's roundings (relative to r |L^{-1}|_F, above) reach E
  *     through L^T.
+ * A slow body (SLOW_*): a general body that starts near its repelling rotation and leaves it
+ * slowly, one of an independent check's random family. An error in w there moves the rest of the
+ * transient in time, and the attitude integrates the shift, so N local errors of at most TOL do
+ * not bound R's: a TOL_LOCAL method's line states that its error exceeds N TOL there (what
+ * --help says it may do), a TOL_GLOBAL method's that its bound holds there too.
  */
 #include "claims_adaptive.h"
 
@@ -96,6 +101,13 @@
  * shrinks as p grows with falling TOL (by ln(10) / 2 a decade), steepens R's slope by
  * 1.15 log10(k / |w|) and takes its ratio out of the two decades the lower bound allows. */
 #define RATE_RATIO_MIN 1.0
+/* The slow body (the top of the file): its inertia by rows, w0, the time and the tolerance. */
+static const double SLOW_I[9] = {3.7607657312547844,  -1.8500477600547198, -9.98946566513876,
+                                 -1.8500477600547198, 2.0012376008313595,  4.178285727568296,
+                                 -9.98946566513876,   4.178285727568296,   41.54591882545439};
+static const double SLOW_W0[2] = {0.005464358177027481, 0.013316269712168134};
+#define SLOW_T 1e3
+#define SLOW_TOL 1e-8
 
 typedef struct {
     const sus_model *m;
@@ -450,6 +462,42 @@ static void structure_claims(const tol_method *tm)
     energy_line(tm, en);
 }
 
+/* The slow body (the top of the file): R's error at SLOW_T against N TOL (TOL_LOCAL: at least, as
+ * --help says it may be) or against the run's bound (TOL_GLOBAL: at most). */
+static void slow_body_claim(const tol_method *tm)
+{
+    sus_model m;
+    sus_exact ex;
+    double w_ref[2], R_ref[3][3];
+    track_ctx c;
+    if (sus_model_init(&m, SLOW_I, NULL, 0) != 0 || sus_exact_init(&ex, &m, SLOW_W0) != 0)
+        ledger_die("the slow body of claims_adaptive.c");
+    sus_refatt_precise(&m, SLOW_W0, SLOW_T, w_ref, R_ref);
+    run_or_die(tm, &m, SLOW_W0, SLOW_TOL, SLOW_T, &c);
+    const int local = tm->eo->bounds != TOL_GLOBAL;
+    const double dist = sus_so3_dist(R_ref, c.R);
+    const double x =
+        local ? dist / (SLOW_TOL * (double)c.steps)
+              : dist / (SLOW_TOL + (ROUND_STEP * (double)c.steps + ROUND_TURN * c.turn) * U);
+    char id[96], text[1024], bound[96];
+    snprintf(bound, sizeof bound, "$\\mathrm{TOL} + (%g N + %g \\sum h |\\omega|) u$", ROUND_STEP,
+             ROUND_TURN);
+    snprintf(text, sizeof text,
+             "$\\mathrm{dist}(R, R_\\mathrm{ref})$ at $T = %s$ over %s, %s at $\\mathrm{TOL} = %s$ "
+             "($N = %ld$ steps), on a general body that starts near its repelling rotation and "
+             "leaves it slowly ($s_0 = %s$, $k = %s$, $|\\omega_0| = %s$): %s",
+             notation_g(SLOW_T, 6).s, local ? "$N\\,\\mathrm{TOL}$" : bound, tm->type->name,
+             notation_g(SLOW_TOL, 6).s, c.steps, notation_g(ex.s0, 2).s, notation_g(ex.k, 2).s,
+             notation_g(hypot(SLOW_W0[0], SLOW_W0[1]), 2).s,
+             local ? "$\\ge 1$: an error in $\\omega$ shifts the rest of the transient in time, "
+                     "the attitude carries the shift, and the error exceeds $N$ local errors of "
+                     "at most TOL, as the command's help says it may"
+                   : "$\\le 1$: its bound holds where an error in $\\omega$ would shift the "
+                     "transient, as $\\omega$ is the closed form");
+    snprintf(id, sizeof id, "%s-slow-body-R", tm->eo->key);
+    ledger_add_bound(id, "(extension)", text, x, 1.0, local, LEDGER_EXTENSION);
+}
+
 /* Every tolerance-driven method of the registry; one the table does not know fails a line. */
 void adaptive_claims(void)
 {
@@ -469,6 +517,7 @@ void adaptive_claims(void)
             global_claims(&tm);
         else
             local_claims(&tm);
+        slow_body_claim(&tm);
         structure_claims(&tm);
     }
 }
