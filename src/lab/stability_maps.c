@@ -2,6 +2,7 @@
 
 #include "workpool.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -69,4 +70,23 @@ int sus_lab_stability_maps(const sus_lab_stab_maps *s, sus_lab_stab_result *resu
     const int rc = sus_sys_pool_run(&pool, err, errlen);
     free(order);
     return rc;
+}
+
+void sus_lab_stability_onsets(const sus_lab_stab_result *map, const double *hs, int nh, int nangle,
+                              sus_lab_stab_onsets *o)
+{
+    for (int c = 0; c < SUS_LAB_STAB_NCLASS; c++) {
+        o->first_h[c] = INFINITY;
+        o->starts[c] = 0;
+    }
+    for (int a = 0; a < nangle; a++) {
+        int seen[SUS_LAB_STAB_NCLASS] = {0};
+        for (int i = 0; i < nh; i++) {
+            const int c = map[i * nangle + a].cls;
+            o->first_h[c] = fmin(o->first_h[c], hs[i]);
+            seen[c] = 1;
+        }
+        for (int c = 0; c < SUS_LAB_STAB_NCLASS; c++)
+            o->starts[c] += seen[c];
+    }
 }

@@ -27,6 +27,18 @@ typedef struct {
 int sus_lab_stability_maps(const sus_lab_stab_maps *s, sus_lab_stab_result *results, char *err,
                            size_t errlen);
 
+/* Where each class first appears in one method's map, map[i * nangle + a] for hs[i] and start a
+ * (sus_lab_stability_map; method m's rows of sus_lab_stability_maps from results + m * nh *
+ * nangle): first_h[c], the smallest hs[i] at which a run on any start is of class c (INFINITY when
+ * none is), and starts[c], on how many of the nangle starts a run is of class c at some h. What a
+ * caption states about the map it draws comes from here, never from numbers typed beside it. */
+typedef struct {
+    double first_h[SUS_LAB_STAB_NCLASS];
+    int starts[SUS_LAB_STAB_NCLASS];
+} sus_lab_stab_onsets;
+void sus_lab_stability_onsets(const sus_lab_stab_result *map, const double *hs, int nh, int nangle,
+                              sus_lab_stab_onsets *o);
+
 #ifdef __cplusplus
 }
 #endif

@@ -13,6 +13,7 @@
 #include "workpool.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -112,64 +113,120 @@ static int write_csv(const stab_fig *f, const char *dir)
     return 0;
 }
 
-/* The caption, with every method's linear stability limit. */
-static void caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t caplen)
+/* The caption under construction; what would not fit is cut and counted in len, which main
+ * checks against size. */
+typedef struct {
+    char *s;
+    size_t len, size;
+} capbuf;
+
+static void cat(capbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void cat(capbuf *b, const char *fmt, ...)
 {
-    char limits[1024] = "";
-    for (int m = 0, len = 0; m < f->nm && len < (int)sizeof limits; m++)
-        len += snprintf(limits + len, sizeof limits - (size_t)len, "%s%s %.6g", m ? ", " : "",
-                        sus_step_method_get(m)->type->name, f->limit[m]);
-    snprintf(cap, caplen,
-             "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
-             "src/lab/stability.h).\n"
-             "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = "
-             "%.4f the rate of\n"
-             "approach to the steady rotation for the paper's energy; w0 runs round that energy "
-             "ellipse (theta0,\n"
-             "every 10 degrees, in the Cholesky coordinates of I_m). h = 10^-3 .. 10^3, %d values; "
-             "each run "
-             "lasts\n"
-             "max(40/h, 10 h) + 50 steps (at most 40000); implicit steps are checked against "
-             "continuation in eps\n"
-             "for h >= %g. Classes: good = ends within 1%% of the exact steady rotation; wrong "
-             "limit = bounded,\n"
-             "ends elsewhere; blow-up = |w| > 100 |w0|; solver failure = the step's solve fails "
-             "other than at a\n"
-             "fold, or a Taylor step lies beyond its series' radius of convergence; regularity "
-             "lost = the branch\n"
-             "of the step equation continued from eps = 0 meets a fold (no root on it beyond), or "
-             "the (REGLOC)\n"
-             "block is singular or has changed sign. Each implicit step solves for that branch: "
-             "Newton from its\n"
-             "explicit prediction where that lands near it, continuation in eps elsewhere.\n"
-             "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the "
-             "eigenvalue -k, so\n"
-             "an explicit method is linearly stable only below the first h with |R(-h)| = 1 "
-             "(dashed lines; "
-             "checked\n"
-             "against bisection in the claims ledger). These limits, per method (inf: none up to h "
-             "= 1000; nan: "
-             "no\n"
-             "linear stability function): %s. Far from the rotation the nonlinear transient blows "
-             "up earlier (h ~ "
-             "1 for Euler).\n"
-             "Euler's 'wrong limit' band (h > ~0.02) is its O(h) energy drift. The midpoint rule "
-             "is A-stable and\n"
-             "conserves E, and its step equation keeps its branch: every run is good. The "
-             "variational step has\n"
-             "no linear limit either (its linearisation at the rotation has spectral radius < 1 "
-             "for all h\n"
-             "tested), and its step equation keeps its branch too, but its energy loss moves its "
-             "limit by more\n"
-             "than 1%% from h ~ 0.5 on (wrong limit). The compositions solve every step too, but "
-             "from h ~ 4 on\n"
-             "they end elsewhere (wrong limit; bounded, as each midpoint substep conserves E). "
-             "gauss4's step\n"
-             "equation meets a fold of its branch on one start (regularity lost): two roots meet "
-             "and vanish\n"
-             "(claims ledger, stability-fold-gauss4).\n"
-             "Data: data/stability.csv.\n",
-             paper->k, NH, SUS_LAB_STAB_BRANCH_H, limits);
+    va_list ap;
+    va_start(ap, fmt);
+    const int n = vsnprintf(b->len < b->size ? b->s + b->len : NULL,
+                            b->len < b->size ? b->size - b->len : 0, fmt, ap);
+    va_end(ap);
+    b->len += n > 0 ? (size_t)n : 0;
+}
+
+/* What the map is: the step, the starts, the runs and the classes (stability.h). */
+static void cap_setup(const stab_fig *f, const sus_exact *paper, capbuf *b)
+{
+    cat(b,
+        "Stability map. Regenerate: make figures (src/prog/figure_stability.c; classes in "
+        "src/lab/stability.h).\n"
+        "The field is homogeneous of degree 2, so the step that matters is h = eps k, k = %.4f "
+        "the rate of\napproach to the steady rotation for the paper's energy; w0 runs round that "
+        "energy ellipse (theta0,\nevery %g degrees, in the Cholesky coordinates of I_m). h = %g "
+        ".. %g, %d values; each run lasts\nmax(40/h, 10 h) + 50 steps (at most 40000); implicit "
+        "steps are checked against continuation in eps\nfor h >= %g. ",
+        paper->k, 360.0 / NANGLE, f->hs[0], f->hs[NH - 1], NH, SUS_LAB_STAB_BRANCH_H);
+    cat(b,
+        "Classes: good = ends within %g%% of the exact steady rotation; wrong limit = bounded,"
+        "\nends elsewhere; blow-up = |w| > %g |w0|; solver failure = the step's solve fails "
+        "other than at a\nfold, or a Taylor step lies beyond its series' radius of convergence; "
+        "regularity lost = the branch\nof the step equation continued from eps = 0 meets a fold "
+        "(no root on it beyond), or the (REGLOC)\nblock is singular or has changed sign. Each "
+        "implicit step solves for that branch: Newton from its\nexplicit prediction where that "
+        "lands near it, continuation in eps elsewhere.\n",
+        100.0 * SUS_LAB_STAB_GOOD_TOL, SUS_LAB_STAB_BLOWUP_FACTOR);
+}
+
+/* The linear stability limits (the dashed lines), one per method. */
+static void cap_limits(const stab_fig *f, capbuf *b)
+{
+    cat(b,
+        "Boundaries. Linearising psi' = k cos psi at the attracting rotation gives the "
+        "eigenvalue -k, so\nan explicit method is linearly stable only below the first h with "
+        "|R(-h)| = 1 (dashed lines; checked\nagainst bisection in the claims ledger). These "
+        "limits, per method (inf: none up to h = %g; nan: no\nlinear stability function): ",
+        f->hs[NH - 1]);
+    for (int m = 0; m < f->nm; m++)
+        cat(b, "%s%s %.6g", m ? ", " : "", sus_step_method_get(m)->type->name, f->limit[m]);
+    cat(b, ".\n");
+}
+
+/* Where each class first appears in each method's map, read from the map just drawn. */
+static void cap_onsets(const stab_fig *f, capbuf *b)
+{
+    cat(b,
+        "Where each class first appears, per method: the smallest h at which a run on any start "
+        "is of that\nclass, and on how many of the %d starts a run is of it at some h.\n",
+        NANGLE);
+    for (int m = 0; m < f->nm; m++) {
+        sus_lab_stab_onsets o;
+        sus_lab_stability_onsets(f->res[m], f->hs, NH, NANGLE, &o);
+        cat(b, "  %s:", sus_step_method_get(m)->type->name);
+        int failed = 0;
+        for (int c = SUS_LAB_STAB_GOOD + 1; c < SUS_LAB_STAB_NCLASS; c++)
+            if (o.starts[c] > 0)
+                cat(b, "%s %s from h = %.6g (%d of %d starts)", failed++ ? "," : "",
+                    SUS_LAB_STAB_NAMES[c], o.first_h[c], o.starts[c], NANGLE);
+        if (!failed)
+            cat(b, " every run good, up to h = %g", f->hs[NH - 1]);
+        cat(b, "\n");
+    }
+}
+
+/* Why the classes fall where they do: theory and the ledger's checks, no measured number. */
+static void cap_reading(capbuf *b)
+{
+    cat(b,
+        "Reading. A blow-up below a method's linear limit is the nonlinear transient far from "
+        "the rotation,\n"
+        "which the linearisation there does not see. Euler's wrong limits are its O(h) energy "
+        "drift. The\n"
+        "midpoint rule is A-stable and conserves E: it has no linear limit and its runs stay "
+        "bounded. The\n"
+        "variational step has no linear stability function, but a start 1e-6 off the rotation "
+        "returns to it\n"
+        "at every h tested (claims ledger, stability-boundary-variational): its wrong limits are "
+        "its energy\n"
+        "loss moving its limit by more than %g%%. Each midpoint substep of a composition "
+        "conserves E, so a\n"
+        "composition's runs stay bounded: they cannot blow up. The Taylor methods solve no "
+        "equation: their\n"
+        "solver failures are steps refused beyond their series' radius of convergence. Where "
+        "gauss4 loses\n"
+        "regularity, its step equation's branch meets a fold: two roots meet and vanish (claims "
+        "ledger,\n"
+        "stability-fold-gauss4).\n"
+        "Data: data/stability.csv.\n",
+        100.0 * SUS_LAB_STAB_GOOD_TOL);
+}
+
+/* The caption: the map's setup, the linear limits, where each class first appears, and why;
+ * every number in it computed here. Returns its length (>= caplen: cut short). */
+static size_t caption(const stab_fig *f, const sus_exact *paper, char *cap, size_t caplen)
+{
+    capbuf b = {cap, 0, caplen};
+    cap_setup(f, paper, &b);
+    cap_limits(f, &b);
+    cap_onsets(f, &b);
+    cap_reading(&b);
+    return b.len;
 }
 
 typedef struct {
@@ -284,8 +341,11 @@ int main(int argc, char **argv)
     }
     if (write_csv(f, argv[2]) != 0)
         return 1;
-    char cap[4096];
-    caption(f, &paper, cap, sizeof cap);
+    char cap[8192];
+    if (caption(f, &paper, cap, sizeof cap) >= sizeof cap) {
+        fprintf(stderr, "figure_stability: the caption is longer than its %zu bytes\n", sizeof cap);
+        return 1;
+    }
     return sus_plot_fig_write_figure(argv[1], "stability", 600, fig_height(f->nm), draw, f, cap) !=
            0;
 }
