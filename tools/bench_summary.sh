@@ -91,7 +91,9 @@ $1 != last { printf "\n## %s\n\n| level | ours (`suslov` args) | µs median (min
 ' "$tsv"
 printf '\n## Long runs\n\nAt T = 1e4, each of our methods at its first step or tolerance whose run ends within 1e-9 of\n'
 printf 'the reference attitude, against rk8pd at its loosest tolerance (four a decade) that does too;\n'
-printf 'then the row fastest against its peer, to T = 1e6 (medians of interleaved rounds).\n\n'
+printf 'then the row fastest against its peer, to T = 1e6 (medians of interleaved rounds). The last\n'
+printf 'row times that run to T = 1e4 again, interleaved with the run to T = 1e6 rather than with\n'
+printf 'the peers: two timings of the same run, so the spread between them is the machine'"'"'s.\n\n'
 printf '| ours | T | seconds | attitude error | GSL rk8pd (w,q): tol, seconds | ratio | rk8pd reduced (q): tol, seconds | ratio | target |\n'
 printf '|---|---|---|---|---|---|---|---|---|\n'
 awk -F'\t' 'function peer(tol, sec, ratio) { return sec == "inf" ? "none reaches it | " : sprintf("%s, %s | %s×", tol, sec, ratio) }

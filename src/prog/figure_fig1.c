@@ -202,7 +202,7 @@ static void caption(const fig1 *f, const sus_exact *ex, long N, char *cap, size_
     const size_t n = f->mid.n;
     snprintf(
         cap, len,
-        "Figure 1 (the paper's Figure 1, reproduced). Regenerate: "
+        "Figure 1 (the paper's Figure 1, redrawn). Regenerate: "
         "make figures (src/prog/figure_fig1.c).\n"
         "Run: midpoint DSP ((Discretization) with the midpoint "
         "l1, l2, lambda_{k+1} = lambda(w^{k+1})) and the\n"

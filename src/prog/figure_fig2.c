@@ -128,33 +128,32 @@ static int write_data(const fig2 *f, const sus_exact *ex, long N, const char *da
 static void caption(const fig2 *f, long N, char *cap, size_t len)
 {
     const size_t last = f->mid.n - 1;
-    snprintf(
-        cap, len,
-        "Figure 2 (the paper's Figure 2, reproduced; the measurements contradict its caption).\n"
-        "Regenerate: make figures (src/prog/figure_fig2.c).\n"
-        "Run: midpoint DSP (green circles) and variational "
-        "integrator (blue dots), eps = 1, t in [0, %g]\n"
-        "(%ld steps; the paper gives no interval), implicit "
-        "steps solved by Newton to round-off, inertia by\n"
-        "rows as printed, w(0) = (0.4, 0.5). Reference (red line): "
-        "the closed-form solution (the paper used RK4).\n"
-        "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; "
-        "(e) w3 = 0 exactly for both, plotted is the\n"
-        "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; "
-        "zeros are not drawn); (f) |w_k - w_inf|,\n"
-        "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
-        "Measured: the midpoint rule conserves E to %.1e "
-        "and ends %.1e from w_inf; the variational\n"
-        "integrator loses %.3g of E (%.2f%%) and ends %.2e "
-        "from w_inf, at a wrong steady rotation.\n"
-        "The paper's caption (variational better, mainly in "
-        "energy; midpoint decays fast) is not reproduced;\n"
-        "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
-        "Data: data/fig2.csv (every step).\n",
-        T_END, N, f->winf[0], f->winf[1],
-        sus_lab_series_maxdrift(&f->mid, offsetof(sus_lab_series, energy)), f->dist[1][last],
-        f->var.energy[0] - f->var.energy[last],
-        100.0 * (f->var.energy[0] - f->var.energy[last]) / f->var.energy[0], f->dist[2][last]);
+    snprintf(cap, len,
+             "Figure 2 (the paper's Figure 2, redrawn; the measurements contradict its caption).\n"
+             "Regenerate: make figures (src/prog/figure_fig2.c).\n"
+             "Run: midpoint DSP (green circles) and variational "
+             "integrator (blue dots), eps = 1, t in [0, %g]\n"
+             "(%ld steps; the paper gives no interval), implicit "
+             "steps solved by Newton to round-off, inertia by\n"
+             "rows as printed, w(0) = (0.4, 0.5). Reference (red line): "
+             "the closed-form solution (the paper used RK4).\n"
+             "(a) w1, (b) w2, (c) lambda, (d) E = 1/2 <I_m w, w>; "
+             "(e) w3 = 0 exactly for both, plotted is the\n"
+             "unreduced constraint |<e3, vee(R_k^T R_k w^_k)>| (round-off; "
+             "zeros are not drawn); (f) |w_k - w_inf|,\n"
+             "the distance to the exact steady rotation w_inf = (%.6f, %.6f).\n"
+             "Measured: the midpoint rule conserves E to %.1e "
+             "and ends %.1e from w_inf; the variational\n"
+             "integrator loses %.3g of E (%.2f%%) and ends %.2e "
+             "from w_inf, at a wrong steady rotation.\n"
+             "The paper's caption (variational better, mainly in "
+             "energy; midpoint decays fast) is not reproduced;\n"
+             "see figures/fig2_energy for the readings of the midpoint rule that were tried.\n"
+             "Data: data/fig2.csv (every step).\n",
+             T_END, N, f->winf[0], f->winf[1],
+             sus_lab_series_maxdrift(&f->mid, offsetof(sus_lab_series, energy)), f->dist[1][last],
+             f->var.energy[0] - f->var.energy[last],
+             100.0 * (f->var.energy[0] - f->var.energy[last]) / f->var.energy[0], f->dist[2][last]);
 }
 
 int main(int argc, char **argv)

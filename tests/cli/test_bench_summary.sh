@@ -20,7 +20,7 @@ Targets:
   MISS the driver adds <= 10 % to a taylor8 step (114.8 ns in a bare loop, fastest rounds): +12.4 %
   MISS the driver (sus_run_tol, one row) adds <= 10 % to a tolerance-driven run to t = 50, summed over its TOL grid (fastest rounds): +11.5 %
   MISS attitude accuracy 1e-04: no floor (none of our explicit methods reaches it)
-  MISS attitude accuracy 1e-06: our best 2.67e-06 s is within 1.15x of the floor 2.18e-06 s (fewest steps x cost per step): 1.22x
+  MISS attitude accuracy 1e-06: our best 2.67e-06 s is within 1.15x of the floor 2.18e-06 s (an estimate: fewest steps x cost per step, timed apart): 1.22x
   MISS attitude accuracy 1e-04 at t = 50: ours 1.96e-06 s (taylor10 (quaternion), eps 4.167) vs best peer on the full problem 2.22e-06 s (GSL rkck (w,q) driver h0 1, tol 0.00032, its timed runs' error 6.1e-05): 1.13x (target 1.8x)
   MISS attitude (reduced problem) accuracy 1e-14 at t = 50: ours 7.07e-06 s (taylor-adaptive (quaternion), tol 5.623e-14) vs best peer on the reduced problem 8.6e-06 s (Boost rkf78 reduced (q) abs, tol 3.2e-15, its timed runs' error 8.3e-15): 1.21x (target 1.5x)
   MISS attitude (reduced problem) accuracy 1e-12 at t = 50: none of our structure-preserving methods reaches it
