@@ -348,6 +348,14 @@ static void closed_form_scales(const sus_exact *ex, double *w_scale, double *kap
     *kappa = inv * sqrt(ex->l11 * ex->l11 + ex->l21 * ex->l21 + ex->l22 * ex->l22);
 }
 
+/* TOL_GLOBAL's bound on dist(R, R_ref) after a run (the top of the file), and how the lines
+ * write it (with ROUND_STEP, ROUND_TURN). */
+static double global_bound(double tol, const track_ctx *c)
+{
+    return tol + (ROUND_STEP * (double)c->steps + ROUND_TURN * c->turn) * U;
+}
+#define GLOBAL_BOUND_TEX "$\\mathrm{TOL} + (%g N + %g \\sum h |\\omega|) u$"
+
 typedef struct {
     double R, w;                 /* the worst ratios to the bounds */
     char R_body[16], w_body[16]; /* where */
@@ -365,8 +373,7 @@ static void global_body(const tol_method *tm, const claims_body *d, global_worst
         const double tol = pow(10.0, -4.0 - j);
         track_ctx c;
         run_or_die(tm, &d->m, d->b.w0, tol, T, &c);
-        const double round = (ROUND_STEP * (double)c.steps + ROUND_TURN * c.turn) * U;
-        const double r = sus_so3_dist(R_ref, c.R) / (tol + round);
+        const double r = sus_so3_dist(R_ref, c.R) / global_bound(tol, &c);
         const double v = hypot(c.w[0] - w_ref[0], c.w[1] - w_ref[1]) / (ROUND_W * U * scale);
         if (!g->R_body[0] || !(r <= g->R))
             g->R = r, snprintf(g->R_body, sizeof g->R_body, "%s", d->b.name);
@@ -385,8 +392,8 @@ static void global_claims(const tol_method *tm)
     key_number(tm, "TolRatioR", g.R);
     snprintf(
         text, sizeof text,
-        "largest $\\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50 " over $\\mathrm{TOL} + (%g N + %g "
-        "\\sum h |\\omega|) u$, " TOLS " ($N$ accepted steps), %s, %d bodies (%s): $\\le 1$ (step "
+        "largest $\\mathrm{dist}(R, R_\\mathrm{ref})$ at " T50 " over " GLOBAL_BOUND_TEX ", " TOLS
+        " ($N$ accepted steps), %s, %d bodies (%s): $\\le 1$ (step "
         "estimates summing to at most TOL; round-off of the steps and of the angles they turn)",
         ROUND_STEP, ROUND_TURN, name, BODIES_COUNT, g.R_body);
     snprintf(id, sizeof id, "%s-tol-R", key);
@@ -477,11 +484,9 @@ static void slow_body_claim(const tol_method *tm)
     const int local = tm->eo->bounds != TOL_GLOBAL;
     const double dist = sus_so3_dist(R_ref, c.R);
     const double x =
-        local ? dist / (SLOW_TOL * (double)c.steps)
-              : dist / (SLOW_TOL + (ROUND_STEP * (double)c.steps + ROUND_TURN * c.turn) * U);
+        local ? dist / (SLOW_TOL * (double)c.steps) : dist / global_bound(SLOW_TOL, &c);
     char id[96], text[1024], bound[96];
-    snprintf(bound, sizeof bound, "$\\mathrm{TOL} + (%g N + %g \\sum h |\\omega|) u$", ROUND_STEP,
-             ROUND_TURN);
+    snprintf(bound, sizeof bound, GLOBAL_BOUND_TEX, ROUND_STEP, ROUND_TURN);
     snprintf(text, sizeof text,
              "$\\mathrm{dist}(R, R_\\mathrm{ref})$ at $T = %s$ over %s, %s at $\\mathrm{TOL} = %s$ "
              "($N = %ld$ steps), on a general body that starts near its repelling rotation and "
