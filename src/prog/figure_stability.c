@@ -18,8 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NH 31     /* h = 10^(-3 + 0.2 i) */
-#define NANGLE 36 /* every 10 degrees */
+#define NH 31               /* h = 10^(-3 + 0.2 i) */
+#define NANGLE 36           /* every 10 degrees */
+#define CAPTION_COLUMNS 100 /* where the list of limits wraps, near its hand-broken lines */
 
 typedef struct {
     double hs[NH];
@@ -163,8 +164,16 @@ static void cap_limits(const stab_fig *f, capbuf *b)
         "|R(-h)| = 1 (dashed lines; checked\nagainst bisection in the claims ledger). These "
         "limits, per method (inf: none up to h = %g; nan: no\nlinear stability function): ",
         f->hs[NH - 1]);
-    for (int m = 0; m < f->nm; m++)
-        cat(b, "%s%s %.6g", m ? ", " : "", sus_step_method_get(m)->type->name, f->limit[m]);
+    size_t col = 28; /* the width of the line's text so far, "linear stability function): " */
+    for (int m = 0; m < f->nm; m++) {
+        char item[64];
+        const int n =
+            snprintf(item, sizeof item, "%s %.6g", sus_step_method_get(m)->type->name, f->limit[m]);
+        /* one column kept for the ',' or '.' that ends the line */
+        const int wrap = m > 0 && col + 2 + (size_t)n + 1 > CAPTION_COLUMNS;
+        cat(b, "%s%s", m == 0 ? "" : wrap ? ",\n" : ", ", item);
+        col = (wrap ? 0 : m == 0 ? col : col + 2) + (size_t)n;
+    }
     cat(b, ".\n");
 }
 
