@@ -127,34 +127,43 @@ static int quat_inverse(const double x[4], double y[4])
  * G = v_2 D^{-1} (v_2 and D commute) leaves
  *   Z_1 (1 - c11 v_1 - c12 c21 v_1 G) = 1 + c12 G.
  * A dozen quaternion products instead of an 8 x 8 elimination: the same collocation, cheaper.
- * The Gauss method keeps |q| (a quadratic invariant), so S is a unit quaternion up to
- * round-off. Returns -1 where the bracket is 0 (not for a monotone problem, which this is: the
- * flow of q keeps norms). */
-static int attitude_step(double eps, const double x[4], double q[4])
+ * The Gauss method keeps |q| (a quadratic invariant), so S is a unit quaternion up to round-off.
+ * Returns -1 where the bracket or D is not invertible: never in exact arithmetic, as a Gauss
+ * method's stage equations have one solution at every step for a flow that keeps norms (Hairer
+ * & Wanner, Solving ODEs II, IV.14). */
+static int collocation_increment(double eps, const double x[4], double S[4])
 {
     const double c = 0.5 * eps, v1[3] = {x[0], x[1], 0.0}, v2[3] = {x[2], x[3], 0.0};
+    const double c12 = c * A[0][1], c21 = c * A[1][0], v1q[4] = {0.0, x[0], x[1], 0.0};
     const double D[4] = {1.0, -c * A[1][1] * v2[0], -c * A[1][1] * v2[1], 0.0};
-    const double one[4] = {1.0, 0.0, 0.0, 0.0};
-    double Dinv[4], G[4], v1G[4], X[4], Xinv[4], Y[4], Z1[4], Z1v1[4], Z2[4], Z2v2[4], S[4], p[4];
+    double Dinv[4], G[4], v1G[4], X[4], Xinv[4], Y[4], Z1[4], Z1v1[4], Z2[4], Z2v2[4];
     if (quat_inverse(D, Dinv) != 0)
         return -1;
     sus_quat_mul_pure(G, Dinv, v2); /* D^{-1} v_2 = v_2 D^{-1} */
-    const double c12 = c * A[0][1], c21 = c * A[1][0], v1q[4] = {0.0, x[0], x[1], 0.0};
     sus_quat_mul(v1G, v1q, G);
     for (int i = 0; i < 4; i++) {
-        X[i] = one[i] - c * A[0][0] * v1q[i] - c12 * c21 * v1G[i];
-        Y[i] = one[i] + c12 * G[i];
+        X[i] = (i == 0) - c * A[0][0] * v1q[i] - c12 * c21 * v1G[i];
+        Y[i] = (i == 0) + c12 * G[i];
     }
     if (quat_inverse(X, Xinv) != 0)
         return -1;
     sus_quat_mul(Z1, Y, Xinv);
     sus_quat_mul_pure(Z1v1, Z1, v1);
     for (int i = 0; i < 4; i++)
-        Y[i] = one[i] + c21 * Z1v1[i];
+        Y[i] = (i == 0) + c21 * Z1v1[i];
     sus_quat_mul(Z2, Y, Dinv);
     sus_quat_mul_pure(Z2v2, Z2, v2);
     for (int i = 0; i < 4; i++)
-        S[i] = one[i] + c * (B[0] * Z1v1[i] + B[1] * Z2v2[i]);
+        S[i] = (i == 0) + c * (B[0] * Z1v1[i] + B[1] * Z2v2[i]);
+    return 0;
+}
+
+/* q <- q (x) S: the attitude's collocation step given the stages x = (W_1, W_2). */
+static int attitude_step(double eps, const double x[4], double q[4])
+{
+    double S[4], p[4];
+    if (collocation_increment(eps, x, S) != 0)
+        return -1;
     sus_quat_mul(p, q, S);
     for (int i = 0; i < 4; i++)
         q[i] = p[i];
