@@ -17,7 +17,7 @@
  * |w - w_inf| from t on (exact_tail.h; half: the quaternion's share) is at most tolq / 2, one step
  * jumps to t_end: q(T) = q(t*) (x) exp((T - t*) w_inf / 2), the steady rotation in closed form. So
  * the cost of a run stops growing with T, and so does its error: the angle (T - t*) |w_inf| is
- * formed in two doubles (tail_half_angle), from T - t* exactly and |w_inf| to 106 bits (the
+ * formed in two doubles (steady_turn.h), from T - t* exactly and |w_inf| to 106 bits (the
  * reference's, refattitude.h), so it is right to a few roundings of pi however large. In one
  * double it would be off by u (T - t*) |w_inf|, an error growing with T that the inputs, exact
  * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step, and a dense row
@@ -61,6 +61,7 @@
 #include "exact_tail.h"
 #include "quaternion.h"
 #include "refattitude.h"
+#include "steady_turn.h"
 #include "taylor_series.h"
 
 #include <math.h>
@@ -249,36 +250,6 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     return 0;
 }
 
-/* What b - a rounded to d = fl(b - a) leaves out, b - a - d, exactly for b >= a >= 0 (Fast2Sum):
- * the tail turns by an angle proportional to its length, however long. */
-static double gap_lo(double b, double a, double d) { return (b - d) - a; }
-
-/* Half the angle (tau + tau_lo) |w_inf| reduced to [-pi, pi], to a few roundings whatever its
- * size: the product in two parts (fma gives the first's rounding error exactly), the multiple of
- * 2 pi (as hi + lo) taken off the high part by fma, which is exact there. A double angle would be
- * off by u times itself, an error growing with T that the reference does not have. */
-static double tail_half_angle(const double speed[2], double tau, double tau_lo)
-{
-    const double two_pi = 6.283185307179586, two_pi_lo = 2.4492935982947064e-16;
-    const double p = tau * speed[0];
-    const double e = fma(tau, speed[0], -p) + (tau * speed[1] + tau_lo * speed[0]);
-    const double k = nearbyint(0.5 * p / two_pi);
-    return fma(-k, two_pi, 0.5 * p) - k * two_pi_lo + 0.5 * e;
-}
-
-/* The steady rotation over tau + tau_lo: q <- q (x) exp(tau w_inf / 2), the axis w_inf / |w_inf|
- * in double (its error does not grow with tau), the angle by tail_half_angle. */
-static void tail_rotate(const sus_tol_work *wk, double tau, double tau_lo, double q[4])
-{
-    const double n = hypot(wk->f.winf[0], wk->f.winf[1]);
-    double s, c, p[4];
-    sus_so3_sincos(tail_half_angle(wk->speed, tau, tau_lo), &s, &c);
-    const double f = n > 0.0 ? s / n : 0.5 * tau; /* sin(tau |w_inf| / 2) / |w_inf| */
-    const double dq[4] = {c, f * wk->f.winf[0], f * wk->f.winf[1], 0.0};
-    sus_quat_mul(p, q, dq);
-    memcpy(q, p, sizeof p);
-}
-
 /* w and lambda at t from the closed form, and the attitude from q. */
 static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3],
                      double *lambda, sus_attitude *att)
@@ -323,7 +294,7 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
         sus_refatt_steady_speed(&wk->ex, wk->speed);
-        tail_rotate(wk, h, gap_lo(t_end, *t, h), q);
+        sus_steady_turn(wk->f.winf, wk->speed, h, sus_steady_gap_lo(t_end, *t, h), q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {
         wk->kind = KIND_TAYLOR;
@@ -352,7 +323,7 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
     const double tau = t - wk->t0;
     memcpy(q, wk->q0, sizeof q);
     if (wk->kind == KIND_TAIL)
-        tail_rotate(wk, tau, gap_lo(t, wk->t0, tau), q);
+        sus_steady_turn(wk->f.winf, wk->speed, tau, sus_steady_gap_lo(t, wk->t0, tau), q);
     else
         taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
     state_at(wk, t, q, w, lambda, att);

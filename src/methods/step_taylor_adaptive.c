@@ -63,13 +63,13 @@
  * rest of the run is one such step there too, about that w (at_rest).
  *
  * Conditioning. The jump turns R by the angle (T - t*) |w_inf| (T = t_end, t* the jump's start),
- * formed in double: T - t* carries a rounding of T, |w_inf| and its direction about 3 rho u (rho
- * >= 1 the size of E's terms over E, which w_inf inherits) and the half angle's products a few u
- * more, so R(T) is off by up to about 16 rho u T |w_inf| (dist = sqrt 2 times the angle's error)
- * whatever tol is. Any method is: the field is homogeneous of degree 2, so a relative change e of
- * w_0's scale is one of the time (w_l(t) = l w(l t), R_l(t) = R(l t)) and moves R(T) by sqrt 2 e T
- * |w_inf|; with e = u, the rounding of w_0 itself, that is u T |w_inf|, the problem's own
- * conditioning, not the jump's (tests/unit/test_taylor_tail.c measures both at T = 1e4 and 1e6). */
+ * formed in two doubles (steady_turn.h): T - t* exactly, and |w_inf| to 106 bits from the closed
+ * form of w_0 (refattitude.h), so the angle is right to a few roundings however long the tail,
+ * and the run's error, like its cost, stops growing with T (tests/unit/test_taylor_tail.c: at
+ * T = 1e4, 1e6 and 1e9). The problem itself is conditioned by T |w_inf|: the field is homogeneous
+ * of degree 2, so a relative change e of w_0's scale is one of the time (w_l(t) = l w(l t), R_l(t)
+ * = R(l t)) and moves R(T) by sqrt 2 e T |w_inf|. The inputs are exact doubles, so this is what a
+ * change of them would do, not an error of the method. */
 #include "taylor.h"
 #include "taylor_series.h"
 
@@ -77,6 +77,8 @@
 #include "exact_tail.h"
 #include "quaternion.h"
 #include "reconstruct.h"
+#include "refattitude.h"
+#include "steady_turn.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -104,6 +106,8 @@ struct sus_tol_work {
     double q0[4];           /* the attitude quaternion at its start */
     taylor_series t;        /* its series, for dense output */
     double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
+    double w0[2];           /* the start, whose closed form gives the tail's speed */
+    double speed[2];        /* |w_inf| to 106 bits, speed[0] + speed[1]; set at the tail's step */
     double floor; /* w within this of w_inf settles at any tol: the rounding of w_inf itself */
     int settled;  /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
 };
@@ -221,7 +225,8 @@ static sus_tol_work *adaptive_alloc(const sus_model *m, double tol, const double
     sus_tol_work *wk = malloc(sizeof *wk);
     if (!wk)
         return NULL;
-    *wk = (sus_tol_work){.m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol)};
+    *wk = (sus_tol_work){
+        .m = m, .tol = tol, .e0 = sus_energy(m, w0), .order = order_for(tol), .w0 = {w0[0], w0[1]}};
     steady_rotation(wk, w0);
     return wk;
 }
@@ -298,24 +303,27 @@ static int settles(const sus_tol_work *wk, const double w[2])
  * truncation, about w as the run's w_inf. */
 static int at_rest(const sus_model *m, const double w[2]) { return sus_c(m, w) == 0.0; }
 
-/* exp(h (0, w)/2) for a constant w = (w1, w2, 0): the quaternion series of a steady rotation,
- * summed. */
-static void steady_increment(const double w[2], double h, double dq[4])
+/* The tail's speed |w_inf| to 106 bits: the closed form's from w_0 (refattitude.h), the speed of
+ * both steady rotations on E(w_0), so also of a w at rest on one of them; |w_inf| in double where
+ * the closed form refuses w_0. */
+static void tail_speed(sus_tol_work *wk)
 {
-    const double a = hypot(w[0], w[1]), th = 0.5 * h * a, sn = a > 0.0 ? sin(th) / a : 0.0;
-    dq[0] = cos(th);
-    dq[1] = sn * w[0];
-    dq[2] = sn * w[1];
-    dq[3] = 0.0;
+    sus_exact ex;
+    if (sus_exact_init(&ex, wk->m, wk->w0) == 0) {
+        sus_refatt_steady_speed(&ex, wk->speed);
+        return;
+    }
+    wk->speed[0] = hypot(wk->w_inf[0], wk->w_inf[1]);
+    wk->speed[1] = 0.0;
 }
 
-/* The attitude tau after the start of a settled step: q0 (x) exp(tau w_inf^/2). */
-static void settled_attitude(const sus_tol_work *wk, double tau, sus_attitude *att)
+/* The attitude at t in a settled step: q0 (x) exp((t - t0) w_inf^/2), t - t0 to the bit. */
+static void settled_attitude(const sus_tol_work *wk, double t, sus_attitude *att)
 {
-    double dq[4], qs[4];
-    steady_increment(wk->w_inf, tau, dq);
-    sus_quat_mul(qs, wk->q0, dq);
-    sus_quat_to_attitude(qs, att);
+    double q[4] = {wk->q0[0], wk->q0[1], wk->q0[2], wk->q0[3]};
+    const double tau = t - wk->t0, tau_lo = sus_steady_gap_lo(t, wk->t0, tau);
+    sus_steady_turn(wk->w_inf, wk->speed, tau, tau_lo, q);
+    sus_quat_to_attitude(q, att);
 }
 
 /* The rest of the run once w has settled: w = w_inf, the attitude by exp(h w_inf^/2), one step. */
@@ -324,11 +332,12 @@ static int settled_step(sus_tol_work *wk, double t_end, double *t, double w[3], 
 {
     const double h = t_end - *t;
     wk->settled = 1;
+    wk->t0 = *t;
+    tail_speed(wk);
     sus_quat_of_attitude(att, wk->q0);
-    settled_attitude(wk, h, att);
+    settled_attitude(wk, t_end, att);
     w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
     *lambda = sus_lagmult(wk->m, w);
-    wk->t0 = *t;
     *t = t_end;
     wk->h = h;
     *st = (sus_stepper_stats){.iterations = 0, .residual = 0.0, .scale = wk->tol, .det = h};
@@ -397,7 +406,7 @@ static void adaptive_dense(const sus_tol_work *wk, double t, double w[3], double
 {
     const double tau = t - wk->t0;
     if (wk->settled) {
-        settled_attitude(wk, tau, att);
+        settled_attitude(wk, t, att);
         w[0] = wk->w_inf[0], w[1] = wk->w_inf[1], w[2] = 0.0;
         *lambda = sus_lagmult(wk->m, w);
         return;

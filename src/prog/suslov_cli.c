@@ -218,11 +218,11 @@ static const suslov_cli_option OPTIONS[] = {
      "norm); over a run the steps' errors add up, an error in w shifts the\n"
      "rest of the motion in time, which the attitude carries: most where w\n"
      "starts near the repelling steady rotation, where the error can exceed\n"
-     "N TOL after N steps; and the angle turned, T |w|, is rounded in double.\n"
-     "exact-attitude: |R R_ref^T - I|_F over the whole run, as the sum of its\n"
-     "steps' estimates (checked on the test bodies, not proved), to a few\n"
-     "roundings a step: its w is the closed form and its steady tail's angle\n"
-     "formed in two doubles. Not relative ones: where |w| is far below TOL,\n"
+     "N TOL after N steps. exact-attitude: |R R_ref^T - I|_F over the whole\n"
+     "run, as the sum of its steps' estimates (checked on the test bodies, not\n"
+     "proved), to a few roundings a step: its w is the closed form. Both turn\n"
+     "R over the steady tail by an angle formed in two doubles, so the error\n"
+     "does not grow with T there. Not relative ones: where |w| is far below TOL,\n"
      "TOL promises nothing of the relative error of w, nor of lambda,\n"
      "computed from w by (LagMult) and quadratic in w",
      set_tol, NULL},

@@ -254,9 +254,12 @@ static void rotation_ld(const double w[2], double T, double R[3][3])
 /* A fast steady rotation, c(w*) = 0 exactly (w* = +-2^j (-I32, I31), |w*| in [2^10, 2^11)), the
  * repelling one (no tail jump), turned through T |w*| = 2^20 radians at TOL 1e-12 and 2^17 at TOL
  * 3e-16: a rest point of the series (step_taylor_adaptive.c's at_rest), so the run is one step,
- * exp(T w*^) in closed form whatever TOL, and R(T) is within ROUND_ANGLE u T |w*| of it (the angle
- * rounded relative to itself: step_taylor_adaptive.c's conditioning, rho = 1 as w stays w*
- * exactly) and one step's other roundings, ROUND_STEP u. */
+ * exp(T w*^) in closed form whatever TOL, and R(T) is within one step's roundings, ROUND_STEP u,
+ * of it (the method forms the angle in two doubles, steady_turn.h, so its error does not grow
+ * with T |w*|), plus the long-double reference's own, REF_ANGLE 2^-64 T |w*| (a few roundings of
+ * the angle in rotation_ld). An angle rounded in one double would be off by about u T |w*|, 2^9
+ * times that allowance. */
+#define REF_ANGLE 8.0
 #define ROUND_ANGLE 16.0
 /* dist per step: the product q (x) dq, the sums, the norm (test_exact_attitude's count) */
 #define ROUND_STEP 34.0
@@ -278,12 +281,12 @@ static void fast_steady_rotation(const sus_model *m, const double w0[2], const c
         const int rc = run(m, ws, tols[i], T, 0.0, &c, &rep);
         rotation_ld(ws, T, R);
         const double err = sus_so3_dist(R, c.last.R),
-                     bound = ROUND_ANGLE * SUS_U * turns[i] + ROUND_STEP * SUS_U;
+                     bound = REF_ANGLE * 0x1p-64 * turns[i] + ROUND_STEP * SUS_U;
         CHECK(rc == SUS_RUN_OK && sus_c(m, ws) == 0.0 && c.last.t == T && c.last.k == 1 &&
                   err <= bound,
               "%s: fast steady rotation |w*| = %.0f, T |w*| = 2^%d, TOL %.0e: %ld step, "
-              "dist(R, exp(T w*^)) = %.3g <= %g u T |w*| + %g u = %.3g",
-              name, hypot(ws[0], ws[1]), ilogb(turns[i]), tols[i], c.last.k, err, ROUND_ANGLE,
+              "dist(R, exp(T w*^)) = %.3g <= %g 2^-64 T |w*| + %g u = %.3g",
+              name, hypot(ws[0], ws[1]), ilogb(turns[i]), tols[i], c.last.k, err, REF_ANGLE,
               ROUND_STEP, bound);
     }
 }
