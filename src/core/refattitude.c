@@ -276,15 +276,6 @@ static void steady_rotation(sus_refatt *ra)
     ra->speed[1] = (long double)(speed - ra->speed[0]);
 }
 
-void sus_refatt_steady_speed(const sus_exact *ex, double speed[2])
-{
-    double d[2];
-    steady_direction(ex, d);
-    const quad s = steady_speed(ex, d);
-    speed[0] = (double)s;
-    speed[1] = (double)(s - speed[0]);
-}
-
 /* q (x) (cos(theta/2), sin(theta/2) a), theta = tau |w*|, a the axis (0 on the third): the steady
  * rotation over tau. Half the angle is formed and reduced modulo 2 pi (to 128 bits, hi + lo) in
  * 113 bits; beyond 2^100 the phase is lost to the rounding of t already, and any angle will do. */

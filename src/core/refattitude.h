@@ -84,11 +84,6 @@ void sus_refatt_at(sus_refatt *ra, double t1, double R[3][3]);
 void sus_refatt_precise(const sus_model *m, const double w0[2], double T, double w[2],
                         double R[3][3]);
 
-/* |w*|, the speed of the steady rotation the motion tends to, to 106 bits as speed[0] + speed[1]:
- * the reference's own, formed in 113 bits from the doubles (refattitude.c). For a method that
- * turns R by (t - t_s) |w*| in closed form, so that the angle's error does not grow with t. */
-void sus_refatt_steady_speed(const sus_exact *ex, double speed[2]);
-
 /* R(t0)^{-1} R(t1): the exact increment over one step, from the identity. */
 void sus_refatt_increment(const sus_exact *ex, double t0, double t1, double Phi[3][3]);
 

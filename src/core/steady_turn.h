@@ -1,15 +1,25 @@
 /* The attitude over the steady tail of the motion, R(t) = R(t*) exp((t - t*) w_inf^), in closed
  * form and to a few roundings however long the tail: the turn's angle is formed in two doubles,
- * from t - t* exactly (sus_steady_gap_lo) and |w_inf| to 106 bits (refattitude.h's
- * sus_refatt_steady_speed). In one double it would be off by u (t - t*) |w_inf|, an error growing
- * with t that the inputs, exact doubles, do not have. Used by the tolerance-driven methods,
- * whose tails are one step. */
+ * from t - t* exactly (sus_steady_gap_lo) and |w_inf| in two doubles (sus_steady_speed). In one
+ * double it would be off by u (t - t*) |w_inf|, an error growing with t that the inputs, exact
+ * doubles, do not have. Used by the tolerance-driven methods, whose tails are one step. */
 #ifndef SUS_STEADY_TURN_H
 #define SUS_STEADY_TURN_H
+
+#include "exact.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* |w_inf|, the speed of the steady rotation the motion of ex tends to (|w0| for a motion that
+ * stays where it is), as speed[0] + speed[1], formed in double-double arithmetic from the inputs:
+ * |w_inf| = |d| sqrt(<I_m w0, w0> / <I_m d, d>), d = (-I32, I31). Its relative error is a few
+ * 2^-104 times the size of the quadratic forms' terms over their values (up to cond(I_m)), so an
+ * angle turned at that speed is right to a rounding while that error times the angle stays below
+ * 2^-53. Independent of the reference attitude's own speed (refattitude.c, 113 bits), which the
+ * tests hold both methods to. */
+void sus_steady_speed(const sus_exact *ex, double speed[2]);
 
 /* What b - a rounded to d = fl(b - a) leaves out, b - a - d, exactly for b >= a >= 0 (Fast2Sum). */
 double sus_steady_gap_lo(double b, double a, double d);

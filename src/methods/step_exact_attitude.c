@@ -17,8 +17,8 @@
  * |w - w_inf| from t on (exact_tail.h; half: the quaternion's share) is at most tolq / 2, one step
  * jumps to t_end: q(T) = q(t*) (x) exp((T - t*) w_inf / 2), the steady rotation in closed form. So
  * the cost of a run stops growing with T, and so does its error: the angle (T - t*) |w_inf| is
- * formed in two doubles (steady_turn.h), from T - t* exactly and |w_inf| to 106 bits (the
- * reference's, refattitude.h), so it is right to a few roundings of pi however large. In one
+ * formed in two doubles (steady_turn.h), from T - t* exactly and |w_inf| in double-double, so it
+ * is right to a few roundings of pi however large. In one
  * double it would be off by u (T - t*) |w_inf|, an error growing with T that the inputs, exact
  * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step, and a dense row
  * inside it, to 128 u at T = 1e4, 1e6 and 1e9). A dense row forms its t - t* exactly too.
@@ -60,7 +60,6 @@
 #include "exact_fast.h"
 #include "exact_tail.h"
 #include "quaternion.h"
-#include "refattitude.h"
 #include "steady_turn.h"
 #include "taylor_series.h"
 
@@ -293,7 +292,7 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     memcpy(wk->q0, q, sizeof q);
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
-        sus_refatt_steady_speed(&wk->ex, wk->speed);
+        sus_steady_speed(&wk->ex, wk->speed);
         sus_steady_turn(wk->f.winf, wk->speed, h, sus_steady_gap_lo(t_end, *t, h), q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {

@@ -63,8 +63,8 @@
  * rest of the run is one such step there too, about that w (at_rest).
  *
  * Conditioning. The jump turns R by the angle (T - t*) |w_inf| (T = t_end, t* the jump's start),
- * formed in two doubles (steady_turn.h): T - t* exactly, and |w_inf| to 106 bits from the closed
- * form of w_0 (refattitude.h), so the angle is right to a few roundings however long the tail,
+ * formed in two doubles (steady_turn.h): T - t* exactly, and |w_inf| in double-double from the
+ * inputs, so the angle is right to a few roundings however long the tail,
  * and the run's error, like its cost, stops growing with T (tests/unit/test_taylor_tail.c: at
  * T = 1e4, 1e6 and 1e9). The problem itself is conditioned by T |w_inf|: the field is homogeneous
  * of degree 2, so a relative change e of w_0's scale is one of the time (w_l(t) = l w(l t), R_l(t)
@@ -77,7 +77,6 @@
 #include "exact_tail.h"
 #include "quaternion.h"
 #include "reconstruct.h"
-#include "refattitude.h"
 #include "steady_turn.h"
 
 #include <math.h>
@@ -303,14 +302,14 @@ static int settles(const sus_tol_work *wk, const double w[2])
  * truncation, about w as the run's w_inf. */
 static int at_rest(const sus_model *m, const double w[2]) { return sus_c(m, w) == 0.0; }
 
-/* The tail's speed |w_inf| to 106 bits: the closed form's from w_0 (refattitude.h), the speed of
- * both steady rotations on E(w_0), so also of a w at rest on one of them; |w_inf| in double where
- * the closed form refuses w_0. */
+/* The tail's speed |w_inf| in double-double (steady_turn.h), from the closed form's setup of w_0:
+ * the speed of both steady rotations on E(w_0), so also of a w at rest on one of them; |w_inf| in
+ * double where the closed form refuses w_0. */
 static void tail_speed(sus_tol_work *wk)
 {
     sus_exact ex;
     if (sus_exact_init(&ex, wk->m, wk->w0) == 0) {
-        sus_refatt_steady_speed(&ex, wk->speed);
+        sus_steady_speed(&ex, wk->speed);
         return;
     }
     wk->speed[0] = hypot(wk->w_inf[0], wk->w_inf[1]);
