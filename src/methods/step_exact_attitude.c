@@ -18,10 +18,10 @@
  * jumps to t_end: q(T) = q(t*) (x) exp((T - t*) w_inf / 2), the steady rotation in closed form. So
  * the cost of a run stops growing with T, and so does its error: the angle (T - t*) |w_inf| is
  * formed in two doubles (steady_turn.h), from T - t* exactly and |w_inf| in double-double, so it
- * is right to a few roundings of pi however large. In one
- * double it would be off by u (T - t*) |w_inf|, an error growing with T that the inputs, exact
- * doubles, do not have (tests/unit/test_exact_attitude.c holds the tail step, and a dense row
- * inside it, to 128 u at T = 1e4, 1e6 and 1e9). A dense row forms its t - t* exactly too.
+ * is right to a few roundings of pi however large. In one double it would be off by u (T - t*)
+ * |w_inf|, an error growing with T that the inputs, exact doubles, do not have
+ * (tests/unit/test_exact_attitude.c holds the tail step, and a dense row inside it, to 128 u at
+ * T = 1e4, 1e6 and 1e9). A dense row forms its t - t* exactly too.
  *
  * Steps: the Taylor series of w (the Cauchy recursion of (ContDyn) seeded by the closed form's
  * w(t), which is w's own series) and of q, to degree d, from taylor_series.h, over the longest step
@@ -94,7 +94,7 @@ struct sus_tol_work {
     const degree *deg;
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
-    double speed[2];  /* |w_inf| to 106 bits, speed[0] + speed[1]; set at the tail's step */
+    double speed[2];  /* |w_inf| in double-double, speed[0] + speed[1]; set at the tail's step */
     taylor_series ts; /* its series (q's rows scaled to its length) */
 };
 

@@ -64,9 +64,9 @@
  *
  * Conditioning. The jump turns R by the angle (T - t*) |w_inf| (T = t_end, t* the jump's start),
  * formed in two doubles (steady_turn.h): T - t* exactly, and |w_inf| in double-double from the
- * inputs, so the angle is right to a few roundings however long the tail,
- * and the run's error, like its cost, stops growing with T (tests/unit/test_taylor_tail.c: at
- * T = 1e4, 1e6 and 1e9). The problem itself is conditioned by T |w_inf|: the field is homogeneous
+ * inputs, so the angle is right to a few roundings however long the tail, and the run's error,
+ * like its cost, stops growing with T (tests/unit/test_taylor_tail.c: at T = 1e4, 1e6 and 1e9).
+ * The problem itself is conditioned by T |w_inf|: the field is homogeneous
  * of degree 2, so a relative change e of w_0's scale is one of the time (w_l(t) = l w(l t), R_l(t)
  * = R(l t)) and moves R(T) by sqrt 2 e T |w_inf|. The inputs are exact doubles, so this is what a
  * change of them would do, not an error of the method. */
@@ -106,7 +106,7 @@ struct sus_tol_work {
     taylor_series t;        /* its series, for dense output */
     double w_inf[2], k_inf; /* the attracting steady rotation on E(w_0) and its rate (0: none) */
     double w0[2];           /* the start, whose closed form gives the tail's speed */
-    double speed[2];        /* |w_inf| to 106 bits, speed[0] + speed[1]; set at the tail's step */
+    double speed[2];        /* |w_inf| in double-double, speed[0] + speed[1]; set at the tail */
     double floor; /* w within this of w_inf settles at any tol: the rounding of w_inf itself */
     int settled;  /* 1 once w is w_inf: the last step is exp(h w_inf^/2) */
 };
