@@ -6,8 +6,6 @@
 #include <math.h>
 #include <string.h>
 
-double sus_steady_gap_lo(double b, double a, double d) { return (b - d) - a; }
-
 /* Double-double numbers, hi + lo with |lo| <= ulp(hi) / 2, by error-free transformations (Dekker;
  * fma gives a product's rounding error exactly). */
 typedef struct {
@@ -97,13 +95,13 @@ static double half_angle(const double speed[2], double tau, double tau_lo)
     return fma(-k, two_pi, 0.5 * p) - k * two_pi_lo + 0.5 * e;
 }
 
-void sus_steady_turn(const double w_inf[2], const double speed[2], double tau, double tau_lo,
-                     double q[4])
+void sus_steady_turn(const double w_inf[2], const double speed[2], double t0, double t, double q[4])
 {
+    const dd tau = renorm(t, -t0); /* t - t0 exactly: t >= t0 >= 0 */
     const double n = hypot(w_inf[0], w_inf[1]);
     double s, c, p[4];
-    sus_so3_sincos(half_angle(speed, tau, tau_lo), &s, &c);
-    const double f = n > 0.0 ? s / n : 0.5 * tau; /* sin(tau |w_inf| / 2) / |w_inf| */
+    sus_so3_sincos(half_angle(speed, tau.hi, tau.lo), &s, &c);
+    const double f = n > 0.0 ? s / n : 0.5 * tau.hi; /* sin(tau |w_inf| / 2) / |w_inf| */
     const double dq[4] = {c, f * w_inf[0], f * w_inf[1], 0.0};
     sus_quat_mul(p, q, dq);
     memcpy(q, p, sizeof p);

@@ -293,7 +293,7 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
         sus_steady_speed(&wk->ex, wk->speed);
-        sus_steady_turn(wk->f.winf, wk->speed, h, sus_steady_gap_lo(t_end, *t, h), q);
+        sus_steady_turn(wk->f.winf, wk->speed, *t, t_end, q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {
         wk->kind = KIND_TAYLOR;
@@ -322,7 +322,7 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
     const double tau = t - wk->t0;
     memcpy(q, wk->q0, sizeof q);
     if (wk->kind == KIND_TAIL)
-        sus_steady_turn(wk->f.winf, wk->speed, tau, sus_steady_gap_lo(t, wk->t0, tau), q);
+        sus_steady_turn(wk->f.winf, wk->speed, wk->t0, t, q);
     else
         taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
     state_at(wk, t, q, w, lambda, att);

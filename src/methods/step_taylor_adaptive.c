@@ -320,8 +320,7 @@ static void tail_speed(sus_tol_work *wk)
 static void settled_attitude(const sus_tol_work *wk, double t, sus_attitude *att)
 {
     double q[4] = {wk->q0[0], wk->q0[1], wk->q0[2], wk->q0[3]};
-    const double tau = t - wk->t0, tau_lo = sus_steady_gap_lo(t, wk->t0, tau);
-    sus_steady_turn(wk->w_inf, wk->speed, tau, tau_lo, q);
+    sus_steady_turn(wk->w_inf, wk->speed, wk->t0, t, q);
     sus_quat_to_attitude(q, att);
 }
 
