@@ -155,6 +155,16 @@ static void cap_setup(const stab_fig *f, const sus_exact *paper, capbuf *b)
         100.0 * SUS_LAB_STAB_GOOD_TOL, SUS_LAB_STAB_BLOWUP_FACTOR);
 }
 
+/* The width of the caption's last line so far. */
+static size_t cap_column(const capbuf *b)
+{
+    const size_t end = b->len < b->size ? b->len : b->size; /* what was written */
+    size_t i = end;
+    while (i > 0 && b->s[i - 1] != '\n')
+        i--;
+    return end - i;
+}
+
 /* The linear stability limits (the dashed lines), one per method. */
 static void cap_limits(const stab_fig *f, capbuf *b)
 {
@@ -164,7 +174,7 @@ static void cap_limits(const stab_fig *f, capbuf *b)
         "|R(-h)| = 1 (dashed lines; checked\nagainst bisection in the claims ledger). These "
         "limits, per method (inf: none up to h = %g; nan: no\nlinear stability function): ",
         f->hs[NH - 1]);
-    size_t col = 28; /* the width of the line's text so far, "linear stability function): " */
+    size_t col = cap_column(b);
     for (int m = 0; m < f->nm; m++) {
         char item[64];
         const int n =
@@ -172,7 +182,7 @@ static void cap_limits(const stab_fig *f, capbuf *b)
         /* one column kept for the ',' or '.' that ends the line */
         const int wrap = m > 0 && col + 2 + (size_t)n + 1 > CAPTION_COLUMNS;
         cat(b, "%s%s", m == 0 ? "" : wrap ? ",\n" : ", ", item);
-        col = (wrap ? 0 : m == 0 ? col : col + 2) + (size_t)n;
+        col = wrap ? (size_t)n : col + (m > 0 ? 2 : 0) + (size_t)n;
     }
     cat(b, ".\n");
 }
