@@ -1,5 +1,7 @@
 #include "api_args.h"
 
+#include "exact_run.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -96,6 +98,9 @@ const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit
         return "cfg->t_end / cfg->every_time: more rows than a long counts";
     if (cfg->max_steps < 0)
         return "cfg->max_steps is negative";
+    if (!(sus_exact_turn_angle(cfg->model, w0, cfg->t_end) <= cfg->stepper->tol->max_angle))
+        return "cfg->t_end: the steady rotation turns the body by more than the method's "
+               "max_angle by then, beyond which its attitude does not keep its promise";
     return NULL;
 }
 

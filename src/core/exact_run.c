@@ -5,16 +5,35 @@
 
 #include <math.h>
 
-double sus_exact_reference_steps(const sus_model *m, const double w0[2], double T)
+double sus_exact_reference_steps(const sus_run_config *cfg, const double w0[2])
 {
-    if (!sus_model_sealed(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
+    if (!cfg || !sus_model_sealed(cfg->model) || !sus_args_finite2(w0) || !(cfg->eps > 0.0) ||
+        !isfinite(cfg->eps) || cfg->steps < 0 || cfg->every < 1)
+        return -1.0;
+    const double T = (double)cfg->steps * cfg->eps;
+    if (!isfinite(T))
         return -1.0;
     sus_exact ex;
     sus_refatt ra;
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    sus_exact_init(&ex, m, w0);
+    sus_exact_init(&ex, cfg->model, w0);
     sus_refatt_init(&ra, &ex, 0.0, I3);
-    return (double)(fminl(T, ra.t_s) / ra.h);
+    /* the rows k = 0, K, 2K, ... up to the last k with k eps <= min(T, t_s), and the row N */
+    const double last = fmin((double)cfg->steps, floor(ra.t_s / cfg->eps));
+    const double rows = floor(last / (double)cfg->every) + 1.0 +
+                        (last == (double)cfg->steps && cfg->steps % cfg->every != 0);
+    return (double)(fminl(T, ra.t_s) / ra.h) + rows;
+}
+
+double sus_exact_turn_angle(const sus_model *m, const double w0[2], double T)
+{
+    if (!sus_model_sealed(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
+        return -1.0;
+    sus_exact ex;
+    double w_inf[2];
+    sus_exact_init(&ex, m, w0);
+    sus_exact_limit(&ex, w_inf);
+    return T * hypot(w_inf[0], w_inf[1]);
 }
 
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
@@ -23,6 +42,11 @@ int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emi
     const char *bad = sus_args_run(cfg, w0, emit, report, 0);
     if (bad)
         return sus_args_refuse(report, bad);
+    if (!(sus_exact_turn_angle(cfg->model, w0, (double)cfg->steps * cfg->eps) <=
+          SUS_EXACT_MAX_ANGLE))
+        return sus_args_refuse(report, "cfg->steps * cfg->eps: the steady rotation turns the body "
+                                       "by more than SUS_EXACT_MAX_ANGLE = 2^60 radians by then, "
+                                       "beyond the reference attitude's stated accuracy");
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     sus_exact ex;
     sus_refatt ra;

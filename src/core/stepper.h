@@ -103,6 +103,9 @@ typedef struct {
     void (*dense)(const sus_tol_work *wk, double t, double w[3], double *lambda, sus_attitude *att);
     void (*free)(sus_tol_work *wk);
     int (*order)(double tol); /* the order it uses at tol */
+    /* The largest angle t_end |w_inf| (sus_exact_turn_angle) over which its attitude keeps its
+     * promise: sus_run_tol refuses a run beyond it. */
+    double max_angle;
 } sus_tol_ops;
 
 /* ---- the implicit step equation ---- */

@@ -328,8 +328,8 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
     state_at(wk, t, q, w, lambda, att);
 }
 
-static const sus_tol_ops EA_OPS = {ea_alloc, ea_step, ea_dense, ea_free,
-                                   sus_step_exact_attitude_order};
+static const sus_tol_ops EA_OPS = {
+    ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order, SUS_STEADY_TURN_MAX_ANGLE};
 
 const sus_stepper_type sus_step_exact_attitude_type = {
     .name = "exact-attitude",

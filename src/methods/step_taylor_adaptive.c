@@ -425,8 +425,12 @@ static void adaptive_dense(const sus_tol_work *wk, double t, double w[3], double
     sus_quat_to_attitude(q, att);
 }
 
-static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc, adaptive_step, adaptive_dense,
-                                         adaptive_free, sus_step_taylor_adaptive_order};
+static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc,
+                                         adaptive_step,
+                                         adaptive_dense,
+                                         adaptive_free,
+                                         sus_step_taylor_adaptive_order,
+                                         SUS_STEADY_TURN_MAX_ANGLE};
 
 const sus_stepper_type sus_step_taylor_adaptive_type = {
     .name = "taylor-adaptive",

@@ -188,7 +188,12 @@ static const suslov_cli_option OPTIONS[] = {
      "final time instead of --steps: T/H must be a whole number N (to 4\n"
      "rounding units of T), else it is refused with the nearest valid T; the\n"
      "last row's t is then N H (see OUTPUT, t), which may differ from T in\n"
-     "its last digits: --eps 0.1 --time 0.3 ends at t = 0.30000000000000004",
+     "its last digits: --eps 0.1 --time 0.3 ends at t = 0.30000000000000004.\n"
+     "exact and the --tol methods refuse a final time (T, or N H) by which the\n"
+     "steady rotation turns the body by more than their attitude keeps\n"
+     "accurate, |w_inf| T over 2^60 radians for exact and 2^50 for --tol,\n"
+     "naming the longest T; exact also refuses a run whose reference attitude\n"
+     "it estimates at over ten minutes (long slow approaches, many rows)",
      set_time, NULL},
     {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0,
      NULL},

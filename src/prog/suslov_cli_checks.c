@@ -183,6 +183,25 @@ static void check_start(const suslov_args *a, const suslov_args_given *g)
                    g->w0[0], g->w0[1], g->inertia_given ? "this" : "the paper's (default)");
 }
 
+/* The angle the steady rotation turns the body by at the final time, against the largest the
+ * run's attitude forms to its stated accuracy (exact_run.h, the method's max_angle): the library
+ * refuses the run, so it is refused here first, as bad input that says how far is possible. */
+static void check_angle(const suslov_args *a, const suslov_args_given *g, int exact)
+{
+    const sus_tol_ops *tol = a->method ? a->method->type->tol : NULL;
+    if (!exact && !tol)
+        return; /* a fixed-step method's error at any angle is what it computes */
+    const double limit = exact ? SUS_EXACT_MAX_ANGLE : tol->max_angle;
+    const double angle = sus_exact_turn_angle(&a->model, g->w0, a->t_end);
+    if (angle <= limit)
+        return;
+    suslov_cli_die("%s: by t = %.17g the steady rotation turns the body by %.4g radians, more "
+                   "than the %.4g (2^%d) to which its attitude keeps its accuracy: ask for a final "
+                   "time below %.4g",
+                   exact ? "--method exact" : a->method->type->name, a->t_end, angle, limit,
+                   ilogb(limit), a->t_end * (limit / angle));
+}
+
 void suslov_args_check(suslov_args *a, const suslov_args_given *g)
 {
     char err[1024];
@@ -199,12 +218,14 @@ void suslov_args_check(suslov_args *a, const suslov_args_given *g)
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const int exact = g->method && !a->method;
-    const double cost =
-        exact && a->t_end > 0.0 ? sus_exact_reference_steps(&a->model, g->w0, a->t_end) : 0.0;
+    check_angle(a, g, exact);
+    const sus_run_config cfg = {&a->model, NULL, a->recon, a->eps, a->steps, g->every};
+    const double cost = exact && a->t_end > 0.0 ? sus_exact_reference_steps(&cfg, g->w0) : 0.0;
     if (!(cost * EXACT_STEP_SECONDS <= EXACT_MAX_SECONDS))
-        suslov_cli_die("--method exact: this body and w0 approach the steady rotation so slowly "
-                       "that the reference attitude needs %.3g Taylor steps, roughly %.2g hours "
-                       "(at most %.3g, ten minutes): ask for a shorter final time",
+        suslov_cli_die("--method exact: the reference attitude needs %.3g Taylor steps (to the "
+                       "steady tail or the final time, and one for each row before the tail), "
+                       "roughly %.2g hours (at most %.3g, ten minutes): ask for a shorter final "
+                       "time, or fewer rows (--every)",
                        cost, cost * EXACT_STEP_SECONDS / 3600.0,
                        EXACT_MAX_SECONDS / EXACT_STEP_SECONDS);
     if (sus_sys_atomic_file_check(g->output, err, sizeof err) != 0)

@@ -140,7 +140,9 @@ static int failed(int rc, const sus_run_report *rep)
 {
     if (rc == SUS_RUN_OK)
         return 0;
-    if (rc == SUS_RUN_BAD_ARGUMENT) /* a start the library refuses: E or lambda overflows */
+    /* what the library refuses: a start whose E or lambda overflows, a final time past the
+     * attitude's angle limit (exact_run.h) */
+    if (rc == SUS_RUN_BAD_ARGUMENT)
         return snprintf(message, sizeof message, "%s", rep->message), 2;
     if (rc == SUS_RUN_BLOWUP)
         return say(

@@ -147,9 +147,19 @@ done
 t300=$(timeout 20 "$S" --no-header --method exact --eps 1e300 --steps 1 --omega0 1e-300,0 | tail -1)
 ref2=$(last 1 1,0)
 check "exact at t = 1e300, w0 = (1e-300, 0): R equals that at t = 1, w0 = (1, 0) to 1e-14" same "$t300" "$ref2" 1e-300 1e-14
-big=$(timeout 20 "$S" --no-header --method exact --eps 1e155 --steps 1 2>"$T/err" | tail -1); rc=$?
-check "exact at t = 1e155 (the old sus_so3_exp squared the rotation vector): finite, R orthogonal to 1e-14 ($(cat "$T/err"))" \
+# the largest final time the reference serves on the paper's body: the angle |w_inf| T, |w_inf| =
+# sqrt(0.05 * 0.45 / 0.046) (c(w) = 0 on the energy ellipse), just below 2^60
+big=$(timeout 20 "$S" --no-header --method exact --eps 1.64e18 --steps 1 2>"$T/err" | tail -1); rc=$?
+check "exact at t = 1.64e18, an angle just below 2^60: finite, R orthogonal to 1e-14 ($(cat "$T/err"))" \
     sh -c "echo '$big' | awk -F, '{ for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) { s = 0; for (l = 0; l < 3; l++) s += \$(8 + 3 * i + l) * \$(8 + 3 * j + l); d = s - (i == j); if (d * d > 1e-28) bad = 1 } } END { exit bad || NR != 1 }'"
+# ... and beyond it, the angle past the reference's 2^60 (1e155 once squared the rotation
+# vector in sus_so3_exp) or past the tolerance-driven methods' 2^50: refused, saying how far
+for run in "exact --eps 1e155 --steps 1:2^60" "exact --eps 1.66e18 --steps 1:2^60" \
+    "exact-attitude --tol 1e-6 --time 1e27:2^50" "taylor-adaptive --tol 1e-6 --time 1.62e15:2^50"; do
+    timeout 20 "$S" --method ${run%:*} >"$T/out" 2>"$T/err"; rc=$?
+    check "--method ${run%:*}: refused, the angle over ${run#*:} (exit $rc: $(cat "$T/err"))" \
+        sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'radians, more than the .* (${run#*:}) to which its attitude keeps its accuracy: ask for a final time below' '$T/err'"
+done
 a=$("$S" --no-header --method exact --eps 1e19 --steps 1 --omega0 1e-20,0 | tail -1)
 b=$("$S" --no-header --method exact --eps 0.1 --steps 1 --omega0 1,0 | tail -1)
 check "exact --eps 1e19 --omega0 1e-20,0 equals its scaled twin --eps 0.1 --omega0 1,0 (R11 = $(echo "$a" | cut -d, -f8))" \

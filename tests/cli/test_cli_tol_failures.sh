@@ -4,9 +4,11 @@
 #    lambda = 0 are finite (the input is valid), but the series' first term c_0 U_0 = I31 w1^2 (0, 1)
 #    is 1e400, which overflows whatever the step; the estimate is never a number, so every retry is
 #    rejected and the step fails after the bounded tries (step_taylor_adaptive.c's MAX_TRIES, 12).
+#    T = 1e-90: the steady rotation, |w_inf| = 1e100, turns the body by 1e10 radians by then,
+#    below the method's max_angle (a longer run is refused as bad input).
 # 2. The step budget (SUSLOV_TOL_MAX_STEPS, 10^6) is spent: |w0| = 1.3e154 needs steps near
-#    1e-165 (the tolerance is absolute), so T = 1 would take about 1e164 steps (the timeout: without
-#    the budget this run would not end).
+#    1e-163 (the tolerance is absolute), so T = 1e-140 (an angle of 1.3e14 radians) would take
+#    about 1e23 steps (the timeout: without the budget this run would not end).
 # Either way stdout keeps the rows before the failure and a last "# incomplete" line, and an
 # --output file is left as it was (the convention of every exit-3 path, suslov --help, OUTPUT).
 # Usage: test_cli_tol_failures.sh BUILD_DIR. Last line: "test_cli_tol_failures: N passed, N failed".
@@ -17,7 +19,7 @@ S="$B/suslov"
 one_line() { [ "$(wc -l <"$1")" -eq 1 ]; }
 no_nan() { ! grep -qi 'nan\|inf' "$1"; }
 
-"$S" --method taylor-adaptive --tol 1e-10 --time 1 --inertia 1,0,0,0,1,0,1e200,0,1 --omega0 1e100,0 \
+"$S" --method taylor-adaptive --tol 1e-10 --time 1e-90 --inertia 1,0,0,0,1,0,1e200,0,1 --omega0 1e100,0 \
     >"$T/over.csv" 2>"$T/over.err"
 rc=$?
 check "retries run out: exit 3 (got $rc)" [ $rc -eq 3 ]
@@ -29,10 +31,10 @@ check "retries run out: the output holds row 0 and the incomplete line" \
     sh -c "grep -c '^0,0,1e+100,0,0,' '$T/over.csv' | grep -qx 1 && tail -1 '$T/over.csv' | grep -q '^# incomplete'"
 
 echo previous >"$T/kept.csv"
-timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1 --omega0 1.3e154,0 --every-time 1 \
+timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1e-140 --omega0 1.3e154,0 --every-time 1 \
     --output "$T/kept.csv" 2>"$T/kept.err"
 rc_kept=$?
-timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1 --omega0 1.3e154,0 --every-time 1 \
+timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1e-140 --omega0 1.3e154,0 --every-time 1 \
     >"$T/long.csv" 2>"$T/long.err"
 rc=$?
 check "step budget: exit 3 (got $rc)" [ $rc -eq 3 ]

@@ -8,6 +8,7 @@
 #include "check.h"
 #include "suslov.h"
 
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <signal.h>
@@ -211,7 +212,8 @@ static void tol_runs(void)
 
 /* Legal but extreme: huge w0 (1e150: the energy, about |w0|^2, still a double), a tolerance of
  * 1e300, t_end = 0, steps = 0. Each ends with a status (a failure reported with its step, or
- * success), and every row it emits is finite. */
+ * success), and every row it emits is finite; a tolerance-driven run from 1e150 turns the body
+ * past its method's max_angle by t = 1, and is refused. */
 static int finite_rows(void *ctx, const sus_row *r)
 {
     *(int *)ctx &= sus_row_finite(r);
@@ -242,9 +244,14 @@ static void extreme_runs(void)
     rc = sus_run_tol(&zero, W0, count_rows, NULL, &rep);
     CHECK(rc == SUS_RUN_OK && rows_seen == 1, "sus_run_tol, t_end = 0: rc %d, %ld rows (1)", rc,
           rows_seen);
-    rc = sus_run_tol(&huge, big, finite_rows, &fin, &rep);
-    CHECK(fin && rc != SUS_RUN_OK && rc != SUS_RUN_BAD_ARGUMENT,
-          "sus_run_tol from |w0| = 1e150 with 1000 steps to t = 1: a failure reported, rc %d", rc);
+    rows_seen = 0;
+    refused("sus_run_tol from |w0| = 1e150 to t = 1", "max_angle",
+            sus_run_tol(&huge, big, count_rows, NULL, &rep), &rep);
+    const double fast[2] = {1e12, -1e12}; /* turns by some 1e12 rad to t = 1: below max_angle */
+    const sus_tol_config few = {&model, ta, 1e-8, 1.0, 0.25, 3};
+    rc = sus_run_tol(&few, fast, finite_rows, &fin, &rep);
+    CHECK(fin && rc == SUS_RUN_STEP_FAILED && rep.status == SUS_STEPPER_STEP_LIMIT,
+          "sus_run_tol from |w0| = 1e12 with 3 steps to t = 1: the budget spent, rc %d", rc);
     const sus_run_config none = {&model, NULL, SUS_RECON_CAYLEY, 0.5, 0, 1};
     rows_seen = 0;
     rc = sus_run_exact(&none, W0, count_rows, NULL, &rep);
@@ -357,15 +364,31 @@ static void exact_functions(void)
     sus_exact_limit(&ex, NULL);
     sus_exact_omega(&ex, 1.0, w);
     CHECK(isfinite(w[0]) && isfinite(w[1]), "control: w(1) finite");
-    const double s = sus_exact_reference_steps(&model, W0, 10.0);
-    const double nbad = (sus_exact_reference_steps(NULL, W0, 1.0) == -1.0) +
-                        (sus_exact_reference_steps(&model_zero, W0, 1.0) == -1.0) +
-                        (sus_exact_reference_steps(&model, W0_INF, 1.0) == -1.0) +
-                        (sus_exact_reference_steps(&model, W0, NAN) == -1.0) +
-                        (sus_exact_reference_steps(&model, W0, -1.0) == -1.0) +
-                        (sus_exact_reference_steps(&model, NULL, 1.0) == -1.0);
-    CHECK(nbad == 6 && s > 0.0 && isfinite(s),
-          "sus_exact_reference_steps: -1 for 6 bad arguments (%g), %g > 0 for a good one", nbad, s);
+    const sus_run_config ten = {&model, NULL, SUS_RECON_CAYLEY, 0.01, 1000, 1000};
+    const double s = sus_exact_reference_steps(&ten, W0);
+    double nbad = (sus_exact_reference_steps(NULL, W0) == -1.0) +
+                  (sus_exact_reference_steps(&ten, NULL) == -1.0) +
+                  (sus_exact_reference_steps(&ten, W0_INF) == -1.0);
+    const char *what;
+    for (int i = 0;; i++) {
+        sus_run_config c = ten;
+        const int kind = bad_fixed(i, &c, &what);
+        if (kind < 0)
+            break;
+        nbad += kind && sus_exact_reference_steps(&c, W0) == -1.0;
+    }
+    CHECK(nbad == 16 && s > 0.0 && isfinite(s),
+          "sus_exact_reference_steps: -1 for 16 bad arguments (%g), %g > 0 for a good one", nbad,
+          s);
+    /* t = 10 is before the paper's body's tail (w(10) is still 0.2 from w_inf, the tail starts
+     * within 2^-64 of it), so each of the rows 0, 1, ..., 1000 costs one partial step: 999 more
+     * than the rows 0 and 1000 */
+    const sus_run_config all_rows = {&model, NULL, SUS_RECON_CAYLEY, 0.01, 1000, 1};
+    const double d = sus_exact_reference_steps(&all_rows, W0) - s;
+    CHECK(fabs(d - 999.0) <= 1e-9,
+          "sus_exact_reference_steps counts the rows: %.17g more for "
+          "every row than for --every 1000 (999)",
+          d);
 }
 
 /* One step through sus_stepper_full: each bad argument gives SUS_STEPPER_BAD_ARGUMENT. */
@@ -479,6 +502,62 @@ static void row_functions(void)
     CHECK(sus_row_finite(NULL) == 0 && sus_row_finite(&r) == 1, "sus_row_finite(NULL): 0");
 }
 
+/* The angle limits (exact_run.h; a tolerance-driven method's max_angle, stepper.h): a run whose
+ * final time turns the body by more than its attitude's limit is refused, one just under it runs
+ * (1 % either side, far beyond the roundings of the angle). |w_inf| of the paper's body, apart
+ * from the library: the steady rotations are the w with c(w) = I31 w1 + I32 w2 = 0, w = s d with
+ * d = (-I32, I31), and the energy is conserved, so |w_inf|^2 = |d|^2 <I_m w0, w0> / <I_m d, d>
+ * = 0.05 * 0.45 / 0.046. */
+static void angle_limits(void)
+{
+    const double speed = sqrt(0.05 * 0.45 / 0.046);
+    const double a2 = sus_exact_turn_angle(&model, W0, 2.0);
+    /* some ten roundings in the closed form's limit, four in the line above */
+    CHECK(fabs(a2 - 2.0 * speed) <= 32 * DBL_EPSILON * a2,
+          "sus_exact_turn_angle(paper's body, t = 2) = %.17g, 2 |w_inf| = %.17g", a2, 2 * speed);
+    const int nbad = (sus_exact_turn_angle(NULL, W0, 1.0) == -1.0) +
+                     (sus_exact_turn_angle(&model_zero, W0, 1.0) == -1.0) +
+                     (sus_exact_turn_angle(&model, NULL, 1.0) == -1.0) +
+                     (sus_exact_turn_angle(&model, W0_NAN, 1.0) == -1.0) +
+                     (sus_exact_turn_angle(&model, W0, -1.0) == -1.0) +
+                     (sus_exact_turn_angle(&model, W0, NAN) == -1.0) +
+                     (sus_exact_turn_angle(&model, W0, INFINITY) == -1.0);
+    CHECK(nbad == 7, "sus_exact_turn_angle: -1 for 7 bad arguments (%d)", nbad);
+    sus_run_report rep;
+    for (int over = 0; over < 2; over++) {
+        const double f = over ? 1.01 : 0.99;
+        const sus_run_config c = {&model, NULL, SUS_RECON_CAYLEY, f * SUS_EXACT_MAX_ANGLE / speed,
+                                  1,      1};
+        rows_seen = 0;
+        const int rc = sus_run_exact(&c, W0, count_rows, NULL, &rep);
+        if (over)
+            refused("sus_run_exact, angle 1.01 SUS_EXACT_MAX_ANGLE", "SUS_EXACT_MAX_ANGLE", rc,
+                    &rep);
+        else
+            CHECK(rc == SUS_RUN_OK && rows_seen == 2,
+                  "sus_run_exact, angle 0.99 SUS_EXACT_MAX_ANGLE: rc %d, %ld rows (2)", rc,
+                  rows_seen);
+    }
+    for (int i = 0; i < sus_step_method_count_all(); i++) {
+        const sus_stepper_type *st = sus_step_method_get(i)->type;
+        if (!st->tol)
+            continue;
+        const double lim = st->tol->max_angle;
+        CHECK(lim >= 1.0 && isfinite(lim), "%s: max_angle %g is set", st->name, lim);
+        for (int over = 0; over < 2; over++) {
+            const double f = over ? 1.01 : 0.99;
+            const sus_tol_config c = {&model, st, 1e-8, f * lim / speed, 0.0, 100000};
+            rows_seen = 0;
+            const int rc = sus_run_tol(&c, W0, count_rows, NULL, &rep);
+            if (over)
+                refused(st->name, "max_angle", rc, &rep);
+            else
+                CHECK(rc == SUS_RUN_OK && rows_seen > 1,
+                      "%s, angle 0.99 max_angle: rc %d, %ld rows", st->name, rc, rows_seen);
+        }
+    }
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0); /* the lines before a crash are kept */
@@ -492,6 +571,7 @@ int main(void)
     start_overflow_runs();
     model_functions();
     exact_functions();
+    angle_limits();
     stepper_functions();
     reconstruct_functions();
     registry_functions();
