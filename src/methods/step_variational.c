@@ -1,6 +1,7 @@
 /* The nonholonomic variational integrator of Section 5.5: (taudyn) for w^{k+1}, solved by
  * Newton from an explicit prediction, and (taualg) for lambda_{k+1}, both as printed. */
 #include "implicit_step.h"
+#include "newton_core.h"
 #include "dsp.h"
 
 #include <math.h>
@@ -61,10 +62,14 @@ static const sus_step_equation TAUDYN = {.unknowns = 2,
                                          .guess = sus_step_predict,
                                          .result = sus_step_result_is_x};
 
+/* Newton inlined with (taudyn) (newton_core.h), as the midpoint step has it: the same operations
+ * as sus_step_implicit_solve's, without a call through a pointer for each residual. */
 static int variational_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
                              double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = sus_step_implicit_solve(&TAUDYN, m, eps, w, w_next, st);
+    double x[2];
+    const int status = newton_solve_branch(taudyn_residual, sus_step_predict, 2, m, eps, w, x, st);
+    w_next[0] = x[0], w_next[1] = x[1], w_next[2] = 0.0;
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
