@@ -12,6 +12,12 @@ extern "C" {
 
 /* 1 when w is not NULL and both its entries are finite. */
 int sus_args_finite2(const double w[2]);
+/* 1 when w0 is not 0 and its energy is below the normal doubles (|w0| below about 1e-154): the
+ * field is quadratic, so the tolerance-driven methods' series multiply w by w, products of the
+ * energy's size that are subnormal there and lose their bits (or vanish), and the attitude their
+ * steps carry with them. The motion is the same in scaled time (c w0 to time T / c), which a
+ * caller can use instead. sus_args_tol refuses such a w0. */
+int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
 /* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is
  * used) are good (driver.h lists what is checked), else the reason in one line. */
 const char *sus_args_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,

@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "suslov_cli_checks.h"
 
+#include "api_args.h"
 #include "atomic_file.h"
 #include "cli_options.h"
 #include "dsp.h"
@@ -183,6 +184,19 @@ static void check_start(const suslov_args *a, const suslov_args_given *g)
                    g->w0[0], g->w0[1], g->inertia_given ? "this" : "the paper's (default)");
 }
 
+/* A start the tolerance-driven methods cannot serve (api_args.h): refused as the library refuses
+ * it, with what to do instead. */
+static void check_tol_start(const suslov_args *a, const suslov_args_given *g)
+{
+    if (!a->method || !a->method->type->tol || !sus_args_tol_underflows(&a->model, g->w0))
+        return;
+    suslov_cli_die("--omega0: the energy at w0 = (%.17g, %.17g) is %.3g, below the normal doubles "
+                   "(%.3g), where the --tol methods' series, products of w and w, lose their bits: "
+                   "scale w0 up by a factor and --time down by it (the motion is the same in "
+                   "scaled time)",
+                   g->w0[0], g->w0[1], sus_energy(&a->model, g->w0), DBL_MIN);
+}
+
 /* The angle the steady rotation turns the body by at the final time, against the largest the
  * run's attitude forms to its stated accuracy (exact_run.h, the method's max_angle): the library
  * refuses the run, so it is refused here first, as bad input that says how far is possible. */
@@ -218,6 +232,7 @@ void suslov_args_check(suslov_args *a, const suslov_args_given *g)
     const int ignored = resolve_method(a, g);
     check_sweeps(a, g);
     const int exact = g->method && !a->method;
+    check_tol_start(a, g);
     check_angle(a, g, exact);
     const sus_run_config cfg = {&a->model, NULL, a->recon, a->eps, a->steps, g->every};
     const double cost = exact && a->t_end > 0.0 ? sus_exact_reference_steps(&cfg, g->w0) : 0.0;
