@@ -10,7 +10,8 @@ int sus_args_finite2(const double w[2]) { return w && isfinite(w[0]) && isfinite
 
 int sus_args_tol_underflows(const sus_model *m, const double w0[2])
 {
-    return (w0[0] != 0.0 || w0[1] != 0.0) && !(sus_energy(m, w0) >= DBL_MIN);
+    const double size = fmax(fabs(w0[0]), fabs(w0[1]));
+    return size > 0.0 && !(size >= 0x1p-500 && sus_energy(m, w0) >= DBL_MIN);
 }
 
 /* The pointers and the model every run needs. */
@@ -105,8 +106,9 @@ const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit
     if (cfg->max_steps < 0)
         return "cfg->max_steps is negative";
     if (sus_args_tol_underflows(cfg->model, w0))
-        return "w0: its energy is below the normal doubles, where the tolerance-driven methods' "
-               "series, products of w and w, lose their bits: scale w0 up and t_end down alike";
+        return "w0: below 2^-500, or its energy below the normal doubles, where the "
+               "tolerance-driven methods' series, products of w and w, lose their bits: scale w0 "
+               "up and t_end down alike";
     if (!(sus_exact_turn_angle(cfg->model, w0, cfg->t_end) <= cfg->stepper->tol->max_angle))
         return "cfg->t_end: the steady rotation turns the body by more than the method's "
                "max_angle by then, beyond which its attitude does not keep its promise";

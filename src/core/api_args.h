@@ -12,10 +12,13 @@ extern "C" {
 
 /* 1 when w is not NULL and both its entries are finite. */
 int sus_args_finite2(const double w[2]);
-/* 1 when w0 is not 0 and its energy is below the normal doubles (|w0| below about 1e-154): the
- * field is quadratic, so the tolerance-driven methods' series multiply w by w, products of the
- * energy's size that are subnormal there and lose their bits (or vanish), and the attitude their
- * steps carry with them. The motion is the same in scaled time (c w0 to time T / c), which a
+/* 1 when w0 is not 0 and either |w0| (max norm) is below 2^-500 or its energy below the normal
+ * doubles: the field is quadratic, so the tolerance-driven methods' series multiply w by w, and
+ * (ContDyn)'s coefficients I_ij / |I_m| by w; those are at least 2^-511 for any I_m whose
+ * determinant a double holds (entries below 2^511), so from |w| >= 2^-500 the products are normal
+ * doubles with 2^11 to spare, and below they are subnormal and lose their bits (or vanish), and
+ * the attitude the steps carry with them. taylor-adaptive restores the energy, which must be a
+ * normal double for that. The motion is the same in scaled time (c w0 to time T / c), which a
  * caller can use instead. sus_args_tol refuses such a w0. */
 int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
 /* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is

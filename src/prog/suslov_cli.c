@@ -229,9 +229,9 @@ static const suslov_cli_option OPTIONS[] = {
      "R over the steady tail by an angle formed in two doubles, so the error\n"
      "does not grow with T there. Not relative ones: where |w| is far below TOL,\n"
      "TOL promises nothing of the relative error of w, nor of lambda,\n"
-     "computed from w by (LagMult) and quadratic in w. A w0 whose energy is\n"
-     "below the normal doubles (|w0| under about 1e-154) is refused: the\n"
-     "series multiply w by w, and lose their bits there",
+     "computed from w by (LagMult) and quadratic in w. A w0 not 0 with |w0|\n"
+     "below 2^-500 (3e-151) or an energy below the normal doubles is refused:\n"
+     "the series multiply w by w, and lose their bits there",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"

@@ -190,11 +190,12 @@ static void check_tol_start(const suslov_args *a, const suslov_args_given *g)
 {
     if (!a->method || !a->method->type->tol || !sus_args_tol_underflows(&a->model, g->w0))
         return;
-    suslov_cli_die("--omega0: the energy at w0 = (%.17g, %.17g) is %.3g, below the normal doubles "
-                   "(%.3g), where the --tol methods' series, products of w and w, lose their bits: "
-                   "scale w0 up by a factor and --time down by it (the motion is the same in "
-                   "scaled time)",
-                   g->w0[0], g->w0[1], sus_energy(&a->model, g->w0), DBL_MIN);
+    suslov_cli_die(
+        "--omega0: w0 = (%.17g, %.17g), with energy %.3g, is too small for the --tol "
+        "methods, which need |w0| >= 2^-500 (%.3g) and an energy of at least %.3g (a "
+        "normal double): their series multiply w by w, and lose their bits below; scale "
+        "w0 up by a factor and --time down by it (the motion is the same in scaled time)",
+        g->w0[0], g->w0[1], sus_energy(&a->model, g->w0), 0x1p-500, DBL_MIN);
 }
 
 /* The angle the steady rotation turns the body by at the final time, against the largest the

@@ -160,25 +160,31 @@ for run in "exact --eps 1e155 --steps 1:2^60" "exact --eps 1.66e18 --steps 1:2^6
     check "--method ${run%:*}: refused, the angle over ${run#*:} (exit $rc: $(cat "$T/err"))" \
         sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'radians, more than the .* (${run#*:}) to which its attitude keeps its accuracy: ask for a final time below' '$T/err'"
 done
-# the --tol methods from the smallest w0 they take, |w0| ~ 1e-153 (its energy 1e-307, a normal
-# double): the scaling law holds to their promise (TOL for exact-attitude; 10 N TOL for
-# taylor-adaptive, N its steps, here under 10); from |w0| ~ 1e-155, whose energy is subnormal
-# (their series multiply w by w), they are refused
+# the --tol methods from about the smallest w0 they take, |w0| = 5e-151 (at least 2^-500, its
+# energy 1e-301 a normal double): the scaling law holds to their promise (TOL for exact-attitude;
+# 10 N TOL for taylor-adaptive, N its steps, here under 10). Below 2^-500, or with an energy
+# below the normal doubles (a body I scaled by 1e-100: E ~ 1e-320 at |w0| ~ 1e-110), their series
+# multiply w by w and lose bits, and they are refused; exact serves both
 same_R() { # same_R ROW_A ROW_B TOL: R_a = R_b to TOL
     awk -F, -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { split(a, x, ","); split(b, y, ","); bad = 0
         for (i = 8; i <= 16; i++) { d = x[i] - y[i]; if (d < 0) d = -d; if (d > tol || x[i] == "") bad = 1 }
         exit bad }'
 }
+small_I=1e-100,1e-101,2e-101,1e-101,1e-100,2e-101,2e-101,1e-101,1e-100
 for run in exact-attitude:1e-10 taylor-adaptive:1e-8; do
     m=${run%:*}
-    got=$(timeout 20 "$S" --no-header --method $m --tol 1e-10 --time 2.5e153 --every-time 2.5e153 \
-        --omega0 4e-154,5e-154 | tail -1)
-    check "$m at |w0| ~ 1e-153, t = 2.5e153: R equals the paper's at t = 2.5 to ${run#*:} (scaling law)" \
+    got=$(timeout 20 "$S" --no-header --method $m --tol 1e-10 --time 2.5e150 --every-time 2.5e150 \
+        --omega0 4e-151,5e-151 | tail -1)
+    check "$m at |w0| = 5e-151, t = 2.5e150: R equals the paper's at t = 2.5 to ${run#*:} (scaling law)" \
         same_R "$got" "$ref" "${run#*:}"
-    timeout 20 "$S" --method $m --tol 1e-10 --time 2.5e155 --omega0 4e-156,5e-156 >"$T/out" 2>"$T/err"; rc=$?
-    check "$m at |w0| ~ 1e-155, its energy subnormal: refused (exit $rc: $(cat "$T/err"))" \
-        sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'below the normal doubles' '$T/err'"
+    for start in "--omega0 4e-152,5e-152" "--omega0 4e-111,5e-111 --inertia $small_I"; do
+        timeout 20 "$S" --method $m --tol 1e-10 --time 1 $start >"$T/out" 2>"$T/err"; rc=$?
+        check "$m $start: too small, refused (exit $rc: $(cat "$T/err"))" \
+            sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'is too small for the --tol methods' '$T/err'"
+    done
 done
+got=$(timeout 20 "$S" --no-header --method exact --eps 2.5e110 --steps 1 --omega0 4e-111,5e-111 --inertia $small_I | tail -1)
+check "exact with I scaled by 1e-100 from |w0| ~ 1e-110: R equals the paper's at t = 2.5 to 1e-14" same_R "$got" "$ref" 1e-14
 a=$("$S" --no-header --method exact --eps 1e19 --steps 1 --omega0 1e-20,0 | tail -1)
 b=$("$S" --no-header --method exact --eps 0.1 --steps 1 --omega0 1,0 | tail -1)
 check "exact --eps 1e19 --omega0 1e-20,0 equals its scaled twin --eps 0.1 --omega0 1,0 (R11 = $(echo "$a" | cut -d, -f8))" \

@@ -202,10 +202,10 @@ static void tol_runs(void)
         rows_seen = 0;
         refused("sus_run_tol", what, sus_run_tol(&c, W0, count_rows, NULL, &rep), &rep);
     }
-    /* |w0| ~ 1e-155: its energy, 1e-310, is subnormal (api_args.h); 1e-153 and 0 are served */
-    static const double tiny[2] = {4e-156, 5e-156}, small[2] = {4e-154, 5e-154}, zero[2] = {0, 0};
+    /* |w0| ~ 1e-152, below 2^-500 = 3.05e-151 (api_args.h); 5e-151 and 0 are served */
+    static const double tiny[2] = {4e-152, 5e-152}, small[2] = {4e-151, 5e-151}, zero[2] = {0, 0};
     rows_seen = 0;
-    refused("sus_run_tol, |w0| ~ 1e-155", "w0: its energy",
+    refused("sus_run_tol, |w0| ~ 1e-152", "w0: below 2^-500",
             sus_run_tol(&good, tiny, count_rows, NULL, &rep), &rep);
     int served = 0;
     for (int i = 0; i < 2; i++) {
@@ -213,7 +213,7 @@ static void tol_runs(void)
         served += sus_run_tol(&good, i ? zero : small, count_rows, NULL, &rep) == SUS_RUN_OK &&
                   rows_seen == 5;
     }
-    CHECK(served == 2, "sus_run_tol from |w0| ~ 1e-153 and from 0: %d of 2 run", served);
+    CHECK(served == 2, "sus_run_tol from |w0| ~ 5e-151 and from 0: %d of 2 run", served);
     rows_seen = 0;
     refused("sus_run_tol", "cfg", sus_run_tol(NULL, W0, count_rows, NULL, &rep), &rep);
     refused("sus_run_tol", "w0", sus_run_tol(&good, W0_NAN, count_rows, NULL, &rep), &rep);
