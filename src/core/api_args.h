@@ -14,12 +14,13 @@ extern "C" {
 int sus_args_finite2(const double w[2]);
 /* 1 when w0 is not 0 and either |w0| (max norm) is below 2^-500 or its energy below the normal
  * doubles: the field is quadratic, so the tolerance-driven methods' series multiply w by w, and
- * (ContDyn)'s coefficients I_ij / |I_m| by w; those are at least 2^-511 for any I_m whose
- * determinant a double holds (entries below 2^511), so from |w| >= 2^-500 the products are normal
- * doubles with 2^11 to spare, and below they are subnormal and lose their bits (or vanish), and
- * the attitude the steps carry with them. taylor-adaptive restores the energy, which must be a
- * normal double for that. The motion is the same in scaled time (c w0 to time T / c), which a
- * caller can use instead. sus_args_tol refuses such a w0. */
+ * (ContDyn)'s coefficients I_ij / |I_m| by w. The largest of those, max(I11, I22) / |I_m| >=
+ * 1 / min(I11, I22), is above 2^-512 for any I_m whose determinant a double holds (I11 I22 below
+ * 2^1024), so from |w| >= 2^-500 the leading products are normal doubles with 2^10 to spare; below,
+ * they are subnormal and lose their bits (or vanish), and the attitude the steps carry with them.
+ * taylor-adaptive restores the energy, which must be a normal double for that. The motion is the
+ * same in scaled time (c w0 to time T / c), which a caller can use instead. sus_args_tol refuses
+ * such a w0. */
 int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
 /* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is
  * used) are good (driver.h lists what is checked), else the reason in one line. */
