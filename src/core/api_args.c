@@ -28,6 +28,9 @@ static const char *common(const void *cfg, const sus_model *model, const double 
         return "w0 is NULL";
     if (!sus_args_finite2(w0))
         return "w0 is not finite";
+    /* as the command refuses it: a subnormal has lost its precision, and w^2 vanishes */
+    if ((w0[0] != 0.0 && fabs(w0[0]) < DBL_MIN) || (w0[1] != 0.0 && fabs(w0[1]) < DBL_MIN))
+        return "w0 has a subnormal entry (nonzero, below 2^-1022): too small to be served";
     if (!sus_model_sealed(model))
         return "cfg->model is NULL, or not a model sus_model_init filled, or changed since";
     /* the first row's E and lambda (sus_model_start_overflow), refused as the CLI refuses them */

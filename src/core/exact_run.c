@@ -5,14 +5,27 @@
 
 #include <math.h>
 
+/* Why sus_run_exact refuses its arguments, or NULL. */
+static const char *refusal(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit,
+                           const sus_run_report *report)
+{
+    const char *bad = sus_args_run(cfg, w0, emit, report, 0);
+    if (bad)
+        return bad;
+    if (!(sus_exact_turn_angle(cfg->model, w0, (double)cfg->steps * cfg->eps) <=
+          SUS_EXACT_MAX_ANGLE))
+        return "cfg->steps * cfg->eps: the steady rotation turns the body by more than "
+               "SUS_EXACT_MAX_ANGLE = 2^60 radians by then, beyond the reference attitude's stated "
+               "accuracy";
+    return NULL;
+}
+
 double sus_exact_reference_steps(const sus_run_config *cfg, const double w0[2])
 {
-    if (!cfg || !sus_model_sealed(cfg->model) || !sus_args_finite2(w0) || !(cfg->eps > 0.0) ||
-        !isfinite(cfg->eps) || cfg->steps < 0 || cfg->every < 1)
+    const sus_run_report report = {0}; /* only its address is checked */
+    if (refusal(cfg, w0, sus_keep_last, &report) != NULL)
         return -1.0;
     const double T = (double)cfg->steps * cfg->eps;
-    if (!isfinite(T))
-        return -1.0;
     sus_exact ex;
     sus_refatt ra;
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -39,14 +52,9 @@ double sus_exact_turn_angle(const sus_model *m, const double w0[2], double T)
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                   sus_run_report *report)
 {
-    const char *bad = sus_args_run(cfg, w0, emit, report, 0);
+    const char *bad = refusal(cfg, w0, emit, report);
     if (bad)
         return sus_args_refuse(report, bad);
-    if (!(sus_exact_turn_angle(cfg->model, w0, (double)cfg->steps * cfg->eps) <=
-          SUS_EXACT_MAX_ANGLE))
-        return sus_args_refuse(report, "cfg->steps * cfg->eps: the steady rotation turns the body "
-                                       "by more than SUS_EXACT_MAX_ANGLE = 2^60 radians by then, "
-                                       "beyond the reference attitude's stated accuracy");
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     sus_exact ex;
     sus_refatt ra;

@@ -17,9 +17,9 @@
  * crashes, loops or returns a made-up number on bad ones:
  *   - the runs return SUS_RUN_BAD_ARGUMENT before emitting any row, with report->message
  *     naming the argument (driver.h lists what they check: NULL pointers, a model that
- *     sus_model_init did not make, non-finite w0 or one whose energy or lambda overflows,
- *     eps <= 0, steps < 0, every < 1, a method of the wrong kind, a tolerance or times that are
- *     not finite and positive, a final time by which the steady rotation turns the body past
+ *     sus_model_init did not make, a non-finite or subnormal entry of w0, a w0 whose energy or
+ *     lambda overflows, eps <= 0, steps < 0, every < 1, a method of the wrong kind, a tolerance
+ *     or times that are not finite and positive, a final time by which the steady rotation turns the body past
  *     what the attitude serves (exact_run.h, sus_exact_turn_angle), a tolerance-driven run from
  *     a w0 not 0 with |w0| below 2^-500 or an energy below the normal doubles, where its series
  *     lose their bits);

@@ -210,11 +210,16 @@ static void check_angle(const suslov_args *a, const suslov_args_given *g, int ex
     const double angle = sus_exact_turn_angle(&a->model, g->w0, a->t_end);
     if (angle <= limit)
         return;
-    suslov_cli_die("%s: by t = %.17g the steady rotation turns the body by %.4g radians, more "
-                   "than the %.4g (2^%d) to which its attitude keeps its accuracy: ask for a final "
-                   "time below %.4g",
+    /* the longest final time, rounded down to four digits so that the one suggested is taken */
+    const double longest = a->t_end * (limit / angle), unit = pow(10.0, floor(log10(longest)) - 3);
+    double suggest = floor(longest / unit) * unit;
+    if (sus_exact_turn_angle(&a->model, g->w0, suggest) > limit)
+        suggest -= unit;
+    suslov_cli_die("%s: by t = %.17g the steady rotation turns the body by %.7g radians, more "
+                   "than the %.7g (2^%d) to which its attitude keeps its accuracy: ask for a final "
+                   "time of at most %.4g",
                    exact ? "--method exact" : a->method->type->name, a->t_end, angle, limit,
-                   ilogb(limit), a->t_end * (limit / angle));
+                   ilogb(limit), suggest);
 }
 
 void suslov_args_check(suslov_args *a, const suslov_args_given *g)

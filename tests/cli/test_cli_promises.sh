@@ -158,7 +158,15 @@ for run in "exact --eps 1e155 --steps 1:2^60" "exact --eps 1.66e18 --steps 1:2^6
     "exact-attitude --tol 1e-6 --time 1e27:2^50" "taylor-adaptive --tol 1e-6 --time 1.62e15:2^50"; do
     timeout 20 "$S" --method ${run%:*} >"$T/out" 2>"$T/err"; rc=$?
     check "--method ${run%:*}: refused, the angle over ${run#*:} (exit $rc: $(cat "$T/err"))" \
-        sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'radians, more than the .* (${run#*:}) to which its attitude keeps its accuracy: ask for a final time below' '$T/err'"
+        sh -c "test $rc = 2 -a ! -s '$T/out' && grep -q 'radians, more than the .* (${run#*:}) to which its attitude keeps its accuracy: ask for a final time of at most' '$T/err'"
+    # ... and the final time it suggests is taken
+    longest=$(sed -n 's/.*of at most \([0-9.e+]*\) .*/\1/p' "$T/err")
+    case $run in
+    exact*--eps*) again="--method exact --eps $longest --steps 1" ;;
+    *) again="--method ${run%% --time*} --time $longest" ;;
+    esac
+    timeout 20 "$S" $again >/dev/null 2>"$T/err"; rc=$?
+    check "... the suggested $again runs (exit $rc $(cat "$T/err"))" test $rc = 0
 done
 # the --tol methods from about the smallest w0 they take, |w0| = 5e-151 (at least 2^-500, its
 # energy 1e-301 a normal double): the scaling law holds to their promise (TOL for exact-attitude;

@@ -55,6 +55,8 @@ static void refused(const char *fn, const char *what, int rc, const sus_run_repo
 static const double W0[2] = {0.4, 0.5};
 static const double W0_NAN[2] = {NAN, 0.5};
 static const double W0_INF[2] = {0.4, -INFINITY};
+static const double W0_SUB[2] = {0.4, 1e-310};  /* subnormal: refused, as the command refuses it */
+static const double W0_BIG[2] = {1e200, 1e200}; /* its energy overflows */
 
 /* Bad configuration number i of a fixed-step run (or -1: none left); `what` is the word the
  * message must hold. */
@@ -103,6 +105,7 @@ static void bad_pointers(const char *fn, fixed_run_fn run, const sus_run_config 
     refused(fn, "w0", run(good, NULL, count_rows, NULL, &rep), &rep);
     refused(fn, "w0", run(good, W0_NAN, count_rows, NULL, &rep), &rep);
     refused(fn, "w0", run(good, W0_INF, count_rows, NULL, &rep), &rep);
+    refused(fn, "subnormal", run(good, W0_SUB, count_rows, NULL, &rep), &rep);
     refused(fn, "emit", run(good, W0, NULL, NULL, &rep), &rep);
     const int rc = run(good, W0, count_rows, NULL, NULL);
     CHECK(rc == SUS_RUN_BAD_ARGUMENT && rows_seen == 0, "%s, NULL report: rc %d, %ld rows", fn, rc,
@@ -217,6 +220,7 @@ static void tol_runs(void)
     rows_seen = 0;
     refused("sus_run_tol", "cfg", sus_run_tol(NULL, W0, count_rows, NULL, &rep), &rep);
     refused("sus_run_tol", "w0", sus_run_tol(&good, W0_NAN, count_rows, NULL, &rep), &rep);
+    refused("sus_run_tol", "subnormal", sus_run_tol(&good, W0_SUB, count_rows, NULL, &rep), &rep);
     refused("sus_run_tol", "emit", sus_run_tol(&good, W0, NULL, NULL, &rep), &rep);
     rc = sus_run_tol(&good, W0, count_rows, NULL, NULL);
     CHECK(rc == SUS_RUN_BAD_ARGUMENT && rows_seen == 0, "sus_run_tol, NULL report: rc %d", rc);
@@ -380,7 +384,9 @@ static void exact_functions(void)
     const double s = sus_exact_reference_steps(&ten, W0);
     double nbad = (sus_exact_reference_steps(NULL, W0) == -1.0) +
                   (sus_exact_reference_steps(&ten, NULL) == -1.0) +
-                  (sus_exact_reference_steps(&ten, W0_INF) == -1.0);
+                  (sus_exact_reference_steps(&ten, W0_INF) == -1.0) +
+                  (sus_exact_reference_steps(&ten, W0_SUB) == -1.0) +
+                  (sus_exact_reference_steps(&ten, W0_BIG) == -1.0);
     const char *what;
     for (int i = 0;; i++) {
         sus_run_config c = ten;
@@ -389,9 +395,10 @@ static void exact_functions(void)
             break;
         nbad += kind && sus_exact_reference_steps(&c, W0) == -1.0;
     }
-    CHECK(nbad == 16 && s > 0.0 && isfinite(s),
-          "sus_exact_reference_steps: -1 for 16 bad arguments (%g), %g > 0 for a good one", nbad,
-          s);
+    CHECK(nbad == 18 && s > 0.0 && isfinite(s),
+          "sus_exact_reference_steps: -1 for the 18 bad arguments sus_run_exact refuses (%g), "
+          "%g > 0 for a good one",
+          nbad, s);
     /* t = 10 is before the paper's body's tail (w(10) is still 0.2 from w_inf, the tail starts
      * within 2^-64 of it), so each of the rows 0, 1, ..., 1000 costs one partial step: 999 more
      * than the rows 0 and 1000 */
