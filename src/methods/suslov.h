@@ -19,10 +19,10 @@
  *     naming the argument (driver.h lists what they check: NULL pointers, a model that
  *     sus_model_init did not make, a non-finite or subnormal entry of w0, a w0 whose energy or
  *     lambda overflows, eps <= 0, steps < 0, every < 1, a method of the wrong kind, a tolerance
- *     or times that are not finite and positive, a final time by which the steady rotation turns the body past
- *     what the attitude serves (exact_run.h, sus_exact_turn_angle), a tolerance-driven run from
- *     a w0 not 0 with |w0| below 2^-500 or an energy below the normal doubles, where its series
- *     lose their bits);
+ *     or times that are not finite and positive, a final time by which the steady rotation
+ *     turns the body past what the attitude serves (exact_run.h, sus_exact_turn_angle), a
+ *     tolerance-driven run from a w0 not 0 with |w0| below 2^-500 or an energy below the normal
+ *     doubles, where its series lose their bits);
  *   - functions returning int return a negative value (sus_model_init, sus_exact_init,
  *     sus_recon_by_name, sus_step_method_index, sus_step_methods_write_tsv) or a
  *     documented status (sus_stepper_full: SUS_STEPPER_BAD_ARGUMENT);
