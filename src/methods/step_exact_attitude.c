@@ -23,9 +23,9 @@
  * (tests/unit/test_exact_attitude.c holds the tail step, and a dense row inside it, to 128 u at
  * T = 1e4, 1e6 and 1e9). A dense row forms its t - t* exactly too.
  *
- * Steps: the Taylor series of w (the Cauchy recursion of (ContDyn) seeded by the closed form's
- * w(t), which is w's own series) and of q, to degree d, from taylor_series.h, over the longest step
- * allowed, H = rho(t) / 2 with rho(t) = |s(t) + i pi/2| / k the distance from t to w's nearest
+ * Steps: the Taylor series of w (the closed form's own, closed_series below) and of q (the
+ * recursion of taylor_series.h), to degree d, over the longest step allowed, H = rho(t) / 2 with
+ * rho(t) = |s(t) + i pi/2| / k the distance from t to w's nearest
  * complex singularity (sech and tanh of s = s0 + sigma k t have poles at s = i pi/2 + i pi n). The
  * sum through d (the degree-(d-1) sum locally extrapolated) is off by the terms past d. Over a step
  * s H they fall, from one degree to the next, by at most a s with a = H max(1 / rho, |w|_max /
@@ -77,10 +77,12 @@
 
 typedef enum { KIND_TAYLOR, KIND_TAIL } step_kind;
 
-/* One degree of the series: series_of computes the rows to degree order over a step h from w. */
+/* One degree of the series: series_of computes the rows to degree order over a step h from t,
+ * where w is w(t). */
 typedef struct {
     int order; /* N + 1, the degree of the sums */
-    void (*series_of)(const sus_model *m, double h, const double w[2], taylor_series *ts);
+    void (*series_of)(const sus_exact_fast *f, double h, double t, const double w[2],
+                      taylor_series *ts);
 } degree;
 
 struct sus_tol_work {
@@ -100,10 +102,46 @@ struct sus_tol_work {
 
 /* ---- the degree by TOL ---- */
 
+/* (exact.h) w's rows from the closed form's own series, and q's from them. w = c + M (z, y) with
+ * (z, y) = (sech s, tanh s), s = s0 + ks t, and z' = -ks z y, y' = ks z^2; so with the rows V_n =
+ * (Z_n, Y_n) h^n and S = sum_j Z_j V_{n-j},
+ *     V_{n+1} = ks h / (n + 1) (-S_2, S_1),   W_{n+1} = M V_{n+1}.
+ * Not (ContDyn)'s recursion from w (taylor_series.h): that seeds it with c(w) = I31 w1 + I32 w2 of
+ * the rounded w, which near the steady rotation is a rounding u |b| |w| of terms that cancel, and
+ * on a near-singular I_m (ContDyn) multiplies it by 1 / |I_m|: with I12 = 1 - 1e-12 and I3 = (-1,
+ * -1) that put R 5e-7 off at TOL 1e-12. Here |z|, |y| <= 1 and every row is a few roundings of |M|
+ * times its own terms. */
+static inline __attribute__((always_inline)) void closed_series(const sus_exact_fast *f,
+                                                                const int p, const double h,
+                                                                const double t, const double w[2],
+                                                                taylor_series *ts)
+{
+    v2d V[SUS_STEP_TAYLOR_MAX_ORDER + 1];
+    double st[2];
+    sus_exact_fast_st(f, t, st);
+    V[0] = (v2d){st[0], st[1]};
+    ts->W[0] = (v2d){w[0], w[1]};
+    ts->P[0] = (v2d){1.0, 0.0};
+    ts->M[0] = (v2d){0.0, 0.0};
+    const v2d m0 = {f->M[0][0], f->M[1][0]}, m1 = {f->M[0][1], f->M[1][1]};
+#pragma GCC unroll 32
+    for (int n = 0; n < p; n++) {
+        const double g = f->ks * h / (double)(n + 1);
+        v2d S = {0.0, 0.0};
+#pragma GCC unroll 32
+        for (int j = 0; j <= n; j++)
+            S += V[j][0] * V[n - j];
+        V[n + 1] = (v2d){-g * S[1], g * S[0]};
+        ts->W[n + 1] = m0 * V[n + 1][0] + m1 * V[n + 1][1];
+        q_row(ts, n, 0.5 * h / (double)(n + 1));
+    }
+}
+
 #define SERIES(N)                                                                                  \
-    static void series##N(const sus_model *m, double h, const double w[2], taylor_series *ts)      \
+    static void series##N(const sus_exact_fast *f, double h, double t, const double w[2],          \
+                          taylor_series *ts)                                                       \
     {                                                                                              \
-        series(m, N, h, w, 1, ts);                                                                 \
+        closed_series(f, N, h, t, w, ts);                                                          \
     }
 SERIES(11)
 SERIES(13)
@@ -225,7 +263,7 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
 {
     const int d = wk->deg->order;
     const double rho = radius(wk, t), H = fmin(stop - t, RADIUS_SHARE * rho);
-    wk->deg->series_of(wk->m, H, w, &wk->ts);
+    wk->deg->series_of(&wk->f, H, t, w, &wk->ts);
     const double a = decay_per_degree(wk, H, rho, d);
     const double q1 = quat_row(&wk->ts, d - 1), q0 = quat_row(&wk->ts, d);
     const double B = envelope(&wk->ts, d, a);

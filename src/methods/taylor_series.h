@@ -28,6 +28,29 @@ typedef struct {
 /* (a, b) -> (-b, a). */
 static inline v2d rot90(v2d v) { return (v2d){-v[1], v[0]}; }
 
+/* Q_{n+1} = g sum_{j<=n} Q_j (x) (0, W_{n-j}), g = h/(2(n+1)), from Q_0..Q_n and W_0..W_n (see
+ * series below: the pair sums, newest terms last, the exact zeros P_1 and M_0 left out). */
+static inline __attribute__((always_inline)) void q_row(taylor_series *t, const int n,
+                                                        const double g)
+{
+    const v2d Wn = t->W[n];
+    v2d xp = {0.0, 0.0}, yp = {0.0, 0.0}, xm = {0.0, 0.0}, ym = {0.0, 0.0};
+#pragma GCC unroll 32
+    for (int j = n; j >= 1; j--) { /* j = n (newest Q) ... j = 1 */
+        const v2d Wk = t->W[n - j];
+        if (j >= 2) {
+            xp += Wk[0] * t->P[j];
+            yp += Wk[1] * t->P[j];
+        }
+        xm += Wk[0] * t->M[j];
+        ym += Wk[1] * t->M[j];
+    }
+    xp += Wn[0] * t->P[0]; /* j = 0 (newest W) */
+    yp += Wn[1] * t->P[0];
+    t->M[n + 1] = g * (xp + rot90(yp));
+    t->P[n + 1] = g * (rot90(ym) - xm);
+}
+
 /* The coefficients up to degree p over a step h from w; with_q also those of the increment q(t),
  * q(0) = 1. With u = A w (A = fA, the printed (ContDyn) coefficients over |I_m|) and c = I_3i w_i:
  *   W_{n+1} = h/(n+1) sum_j c_j U_{n-j};
@@ -75,25 +98,8 @@ static inline __attribute__((always_inline)) void series(const sus_model *m, con
         const v2d Wn1 = t->W[n + 1];
         C[n + 1] = m->b[0] * Wn1[0] + m->b[1] * Wn1[1];
         U[n + 1] = a0 * Wn1[0] + a1 * Wn1[1];
-        if (!with_q)
-            continue;
-        v2d xp = {0.0, 0.0}, yp = {0.0, 0.0}, xm = {0.0, 0.0}, ym = {0.0, 0.0};
-#pragma GCC unroll 32
-        for (int j = n; j >= 1;
-             j--) { /* j = n (newest Q) ... j = 1; the exact zeros P_1, M_0 left out */
-            const v2d Wk = t->W[n - j];
-            if (j >= 2) {
-                xp += Wk[0] * t->P[j];
-                yp += Wk[1] * t->P[j];
-            }
-            xm += Wk[0] * t->M[j];
-            ym += Wk[1] * t->M[j];
-        }
-        xp += Wn[0] * t->P[0]; /* j = 0 (newest W) */
-        yp += Wn[1] * t->P[0];
-        const double g = 0.5 * f;
-        t->M[n + 1] = g * (xp + rot90(yp));
-        t->P[n + 1] = g * (rot90(ym) - xm);
+        if (with_q)
+            q_row(t, n, 0.5 * f);
     }
 }
 

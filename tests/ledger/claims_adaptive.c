@@ -50,9 +50,12 @@
  *     moving w by at most about u times that scale (|d(sech s, tanh s)/ds| <= 1, |s| e^{-|s|} <=
  * 1/e);
  *   - structure to T k = 1e4 k_paper, the steady tail included: w3 = 0 exactly; |R^T R - I| <=
- *     1e-14 (R from a unit quaternion); |E - E0| <= 32 u kappa E0, kappa = |L|_F |L^{-1}|_F: E =
- *     |u|^2 / 2 with u = L^T w, and w's roundings (relative to r |L^{-1}|_F, above) reach E
- *     through L^T.
+ *     1e-14 (R from a unit quaternion); |E - E0| <= (32 kappa E0 + 6 e) u, kappa = |L|_F
+ *     |L^{-1}|_F: E = |u|^2 / 2 with u = L^T w, and w's roundings (16 u r |L^{-1}|_F, as in the
+ *     tests of the closed form) reach E through L^T, 2 r |L|_F 16 u r |L^{-1}|_F = 32 u kappa E0;
+ *     and E's own evaluation at w and at w0 rounds each by 3 u of its terms' size e (the largest
+ *     over the rows, e = 1/2 sum |w_i I_ij w_j|), which on a near-singular I_m is up to kappa^2 E0
+ *     where the terms cancel.
  * A slow body (SLOW_*): a general body that starts near its repelling rotation and leaves it
  * slowly, one of an independent check's random family. An error in w there moves the rest of the
  * transient in time, and the attitude integrates the shift, so N local errors of at most TOL do
@@ -91,7 +94,9 @@
 #define ROUND_STEP 34.0 /* TOL_GLOBAL: round-off per step, in u (above) */
 #define ROUND_TURN 32.0 /* and per radian turned */
 #define ROUND_W 64.0
+/* |E - E0|: w's share and E's own evaluation (the top of the file) */
 #define ENERGY_KAPPA 32.0
+#define ENERGY_EVAL 6.0
 /* The attitude's share of the tolerance. A step is as long as the jet's largest coefficients
  * allow: w's scale as (h k)^n (its rate of approach), the attitude's as (h |w|)^n (its rate of
  * turn). Where |w| < k the attitude's truncation error lies a factor (|w| / k)^(p+1) below the
@@ -417,11 +422,13 @@ static void energy_line(const tol_method *tm, double en)
     if (tm->eo->bounds == TOL_GLOBAL)
         snprintf(
             text, sizeof text,
-            "$\\max |E - E_0| / (u E_0 \\kappa)$, $\\kappa = |L|_F |L^{-1}|_F$ ($I_m = L "
-            "L^\\top$), over every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d bodies; bound "
-            "%g ($\\omega$ is the closed form, $|L^\\top \\omega| = r$: its roundings reach $E$ "
-            "through $L^\\top$)",
-            tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT, ENERGY_KAPPA);
+            "$\\max |E - E_0| / ((%g \\kappa E_0 + %g e) u)$, $\\kappa = |L|_F |L^{-1}|_F$ "
+            "($I_m = L L^\\top$), $e = \\max \\frac{1}{2} \\sum |\\omega_i I_{ij} \\omega_j|$, "
+            "over "
+            "every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d bodies: $\\le 1$ ($\\omega$ "
+            "is the closed form, $|L^\\top \\omega| = r$: its roundings reach $E$ through "
+            "$L^\\top$; $E$'s own evaluation rounds by a few $u e$)",
+            ENERGY_KAPPA, ENERGY_EVAL, tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     else
         snprintf(
             text, sizeof text,
@@ -431,8 +438,8 @@ static void energy_line(const tol_method *tm, double en)
             "no accumulation)",
             tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     snprintf(id, sizeof id, "%s-energy", tm->eo->key);
-    ledger_add_bound(id, "(extension)", text, en, tm->eo->bounds == TOL_GLOBAL ? ENERGY_KAPPA : 8.0,
-                     0, LEDGER_EXTENSION);
+    ledger_add_bound(id, "(extension)", text, en, tm->eo->bounds == TOL_GLOBAL ? 1.0 : 8.0, 0,
+                     LEDGER_EXTENSION);
 }
 
 static void structure_claims(const tol_method *tm)
@@ -448,7 +455,9 @@ static void structure_claims(const tol_method *tm)
         run_or_die(tm, &d->m, d->b.w0, TOL_STRUCT, body_time(d, T_STRUCT), &c);
         w3 = fmax(w3, c.w3);
         orth = fmax(orth, c.orth);
-        en = fmax(en, c.energy / (U * (tm->eo->bounds == TOL_GLOBAL ? kappa * c.e0 : c.eterms)));
+        en = fmax(en, c.energy / (U * (tm->eo->bounds == TOL_GLOBAL
+                                           ? ENERGY_KAPPA * kappa * c.e0 + ENERGY_EVAL * c.eterms
+                                           : c.eterms)));
         steps += c.steps;
     }
     char id[96], text[640];

@@ -59,13 +59,21 @@ static const sus_tol_ops *ops(void) { return sus_step_exact_attitude_type.tol; }
 /* The family's bodies, then two of the paper's own altered to stress the step rule: "slow" with a
  * third row a tenth of the paper's (k ten times smaller: steps so long that the rotation over a
  * step, not w's singularity, bounds the series' terms) and "fast" with w0 eight times the paper's
- * (k and the rotation eight times larger). */
-#define TEST_BODIES (BODIES_COUNT + 2)
+ * (k and the rotation eight times larger); then two with I_m nearer singular than the family's
+ * (I12 = 1 - 1e-9 and 1 - 1e-12, conditions 2e9 and 2e12) and a third row (-1, -1), w0 = (1, 1):
+ * |w| grows to 4e4 and 1.4e6 along I_m's soft axis, where c(w) = -(w1 + w2) at the rounded w is
+ * a cancellation that (ContDyn) multiplies by 1 / |I_m|. */
+#define TEST_BODIES (BODIES_COUNT + 4)
 
 static void test_body(int j, body *b)
 {
     if (j < BODIES_COUNT) {
         body_get(j, b);
+        return;
+    }
+    if (j >= BODIES_COUNT + 2) { /* I12 = I21 = 1 - d */
+        const double d = j == BODIES_COUNT + 2 ? 1e-9 : 1e-12;
+        *b = (body){{1.0, 1.0 - d, 0.0, 1.0 - d, 1.0, 0.0, -1.0, -1.0, 1.0}, {1.0, 1.0}, "sing"};
         return;
     }
     body_get(0, b);

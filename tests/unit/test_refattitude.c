@@ -98,22 +98,39 @@ static void start_from_w0(const sus_model *m, const sus_exact *ex, const char *n
           name, d, bound);
 }
 
-/* sus_refatt_at restarted at t0 = 3 from R(3) as the run from 0 gives it lands where that run does
- * at t = 5 (3 is a grid point of both): they differ only by the roundings of the restart (w(3) from
- * the closed form, R(3) in double), a few u carried over two time units: 1e-14. */
-static void restart_at(const sus_exact *ex, const char *name)
+/* sus_refatt_at restarted at t0 = 3 tau from R(3 tau) as the run from 0 gives it lands where that
+ * run does at t = 5 tau: they differ only by the roundings of the restart (R(3 tau) in double, u(3
+ * tau) in long double), a few u carried over the stretch: 1e-14. tau = 1 on the family's bodies (3
+ * is a grid point of both runs); on the near-singular ones below it is inside their transient,
+ * where u(t0) formed as L^T of the double closed form w(t0) would carry r |L| |L^{-1}| u. */
+static void restart_at(const sus_exact *ex, const char *name, double tau)
 {
     double I3[3][3], R3[3][3], R5[3][3], Rr[3][3];
     sus_mat3_identity(I3);
     sus_refatt a, b;
     sus_refatt_init(&a, ex, 0.0, I3);
-    sus_refatt_at(&a, 3.0, R3);
-    sus_refatt_at(&a, 5.0, R5);
-    sus_refatt_init(&b, ex, 3.0, R3);
-    sus_refatt_at(&b, 5.0, Rr);
+    sus_refatt_at(&a, 3.0 * tau, R3);
+    sus_refatt_at(&a, 5.0 * tau, R5);
+    sus_refatt_init(&b, ex, 3.0 * tau, R3);
+    sus_refatt_at(&b, 5.0 * tau, Rr);
     const double d = sus_mat3_dist(R5, Rr);
-    CHECK(d <= 1e-14, "%s: R(5) restarted at t0 = 3 is %.1e from the run from 0 (bound 1e-14)",
-          name, d);
+    CHECK(d <= 1e-14,
+          "%s: R(5 tau) restarted at t0 = 3 tau is %.1e from the run from 0, tau = %g (bound "
+          "1e-14)",
+          name, d, tau);
+}
+
+/* I12 = I21 = 1 - d, third row (-1, -1), w0 = (1, 1): |w| grows to about 2 / sqrt(2 d) along I_m's
+ * soft axis, with tau = 0.3 / k. */
+static void restart_near_singular(double d, const char *name)
+{
+    body b = {{1.0, 1.0 - d, 0.0, 1.0 - d, 1.0, 0.0, -1.0, -1.0, 1.0}, {1.0, 1.0}, ""};
+    sus_model m;
+    sus_exact ex;
+    snprintf(b.name, sizeof b.name, "%s", name);
+    if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0))
+        return;
+    restart_at(&ex, b.name, 0.3 / ex.k);
 }
 
 /* The reference's Cholesky coordinates (refattitude.c) in long double, with |I_m| and v2's
@@ -152,12 +169,14 @@ int main(void)
         if (check_body_exact(k, &b, &m, &ex))
             continue;
         start_from_w0(&m, &ex, b.name);
-        restart_at(&ex, b.name);
+        restart_at(&ex, b.name, 1.0);
         cholesky_coordinates(&ex, b.name);
         if (k == 1) { /* neither edge depends on the body: once, on a general one */
             nonunit_quaternion(&ex);
             too_long_stretch(&m, b.w0);
         }
     }
+    restart_near_singular(1e-9, "I12 = 1 - 1e-9");
+    restart_near_singular(1e-12, "I12 = 1 - 1e-12");
     return check_summary("test_refattitude");
 }
