@@ -56,11 +56,16 @@
  *     and E's own evaluation at w and at w0 rounds each by 3 u of its terms' size e (the largest
  *     over the rows, e = 1/2 sum |w_i I_ij w_j|), which on a near-singular I_m is up to kappa^2 E0
  *     where the terms cancel.
- * A slow body (SLOW_*): a general body that starts near its repelling rotation and leaves it
- * slowly, one of an independent check's random family. An error in w there moves the rest of the
- * transient in time, and the attitude integrates the shift, so N local errors of at most TOL do
- * not bound R's: a TOL_LOCAL method's line states that its error exceeds N TOL there (what
- * --help says it may do), a TOL_GLOBAL method's that its bound holds there too.
+ * Two hard bodies (HARD_BODIES), where N local errors of at most TOL do not bound R's: a TOL_LOCAL
+ * method's line states that its error exceeds N TOL there (what --help says it may do), a
+ * TOL_GLOBAL method's that its bound holds there too.
+ *   - slow: a general body that starts near its repelling rotation and leaves it slowly, one of an
+ *     independent check's random family. An error in w there moves the rest of the transient in
+ *     time, and the attitude integrates the shift.
+ *   - sing: I_m nearly singular (|I_m| = 2e-9) with a third row of size 1, so |w| grows to 4.5e4
+ *     along I_m's soft axis; the Taylor series' proved radius (step_taylor.c) shrinks with |I_m|
+ *     and holds every step far below what TOL would allow, and the roundings of many short steps
+ *     add up.
  */
 #include "claims_adaptive.h"
 
@@ -106,13 +111,39 @@
  * shrinks as p grows with falling TOL (by ln(10) / 2 a decade), steepens R's slope by
  * 1.15 log10(k / |w|) and takes its ratio out of the two decades the lower bound allows. */
 #define RATE_RATIO_MIN 1.0
-/* The slow body (the top of the file): its inertia by rows, w0, the time and the tolerance. */
-static const double SLOW_I[9] = {3.7607657312547844,  -1.8500477600547198, -9.98946566513876,
-                                 -1.8500477600547198, 2.0012376008313595,  4.178285727568296,
-                                 -9.98946566513876,   4.178285727568296,   41.54591882545439};
-static const double SLOW_W0[2] = {0.005464358177027481, 0.013316269712168134};
-#define SLOW_T 1e3
-#define SLOW_TOL 1e-8
+/* The hard bodies (the top of the file): inertia by rows, w0, the time, the tolerance, and what
+ * the line says of the body and of each kind of method. */
+typedef struct {
+    const char *key; /* the line's id: KEY-<key>-body-R */
+    double I[9], w0[2], T, tol;
+    const char *body, *local, *global;
+} hard_body;
+
+static const hard_body HARD_BODIES[] = {
+    {"slow",
+     {3.7607657312547844, -1.8500477600547198, -9.98946566513876, -1.8500477600547198,
+      2.0012376008313595, 4.178285727568296, -9.98946566513876, 4.178285727568296,
+      41.54591882545439},
+     {0.005464358177027481, 0.013316269712168134},
+     1e3,
+     1e-8,
+     "a general body that starts near its repelling rotation and leaves it slowly",
+     "an error in $\\omega$ shifts the rest of the transient in time, the attitude carries the "
+     "shift, and the error exceeds $N$ local errors of at most TOL, as the command's help says it "
+     "may",
+     "its bound holds where an error in $\\omega$ would shift the transient, as $\\omega$ is the "
+     "closed form"},
+    {"sing",
+     {1.0, 1.0 - 1e-9, 0.0, 1.0 - 1e-9, 1.0, 0.0, -1.0, -1.0, 1.0},
+     {1.0, 1.0},
+     1e-2,
+     1e-12,
+     "a body with a nearly singular $I_m$ ($I_{12} = 1 - 10^{-9}$, $I_{11} = I_{22} = 1$, third "
+     "row $(-1, -1)$, $\\omega_0 = (1, 1)$)",
+     "its steps are held short by the series' proved radius, which shrinks with $|I_m|$, and "
+     "their roundings add up past $N$ TOL, as the command's help says",
+     "its bound holds there too, as $\\omega$ is the closed form"},
+};
 
 typedef struct {
     const sus_model *m;
@@ -478,37 +509,31 @@ static void structure_claims(const tol_method *tm)
     energy_line(tm, en);
 }
 
-/* The slow body (the top of the file): R's error at SLOW_T against N TOL (TOL_LOCAL: at least, as
- * --help says it may be) or against the run's bound (TOL_GLOBAL: at most). */
-static void slow_body_claim(const tol_method *tm)
+/* A hard body (the top of the file): R's error at T against N TOL (TOL_LOCAL: at least, as --help
+ * says it may be) or against the run's bound (TOL_GLOBAL: at most). */
+static void hard_body_claim(const tol_method *tm, const hard_body *hb)
 {
     sus_model m;
     sus_exact ex;
     double w_ref[2], R_ref[3][3];
     track_ctx c;
-    if (sus_model_init(&m, SLOW_I, NULL, 0) != 0 || sus_exact_init(&ex, &m, SLOW_W0) != 0)
-        ledger_die("the slow body of claims_adaptive.c");
-    sus_refatt_precise(&m, SLOW_W0, SLOW_T, w_ref, R_ref);
-    run_or_die(tm, &m, SLOW_W0, SLOW_TOL, SLOW_T, &c);
+    if (sus_model_init(&m, hb->I, NULL, 0) != 0 || sus_exact_init(&ex, &m, hb->w0) != 0)
+        ledger_die("a hard body of claims_adaptive.c");
+    sus_refatt_precise(&m, hb->w0, hb->T, w_ref, R_ref);
+    run_or_die(tm, &m, hb->w0, hb->tol, hb->T, &c);
     const int local = tm->eo->bounds != TOL_GLOBAL;
     const double dist = sus_so3_dist(R_ref, c.R);
-    const double x =
-        local ? dist / (SLOW_TOL * (double)c.steps) : dist / global_bound(SLOW_TOL, &c);
+    const double x = local ? dist / (hb->tol * (double)c.steps) : dist / global_bound(hb->tol, &c);
     char id[96], text[1024], bound[96];
     snprintf(bound, sizeof bound, GLOBAL_BOUND_TEX, ROUND_STEP, ROUND_TURN);
     snprintf(text, sizeof text,
              "$\\mathrm{dist}(R, R_\\mathrm{ref})$ at $T = %s$ over %s, %s at $\\mathrm{TOL} = %s$ "
-             "($N = %ld$ steps), on a general body that starts near its repelling rotation and "
-             "leaves it slowly ($s_0 = %s$, $k = %s$, $|\\omega_0| = %s$): %s",
-             notation_g(SLOW_T, 6).s, local ? "$N\\,\\mathrm{TOL}$" : bound, tm->type->name,
-             notation_g(SLOW_TOL, 6).s, c.steps, notation_g(ex.s0, 2).s, notation_g(ex.k, 2).s,
-             notation_g(hypot(SLOW_W0[0], SLOW_W0[1]), 2).s,
-             local ? "$\\ge 1$: an error in $\\omega$ shifts the rest of the transient in time, "
-                     "the attitude carries the shift, and the error exceeds $N$ local errors of "
-                     "at most TOL, as the command's help says it may"
-                   : "$\\le 1$: its bound holds where an error in $\\omega$ would shift the "
-                     "transient, as $\\omega$ is the closed form");
-    snprintf(id, sizeof id, "%s-slow-body-R", tm->eo->key);
+             "($N = %ld$ steps), on %s ($s_0 = %s$, $k = %s$, $|\\omega_0| = %s$): %s: %s",
+             notation_g(hb->T, 6).s, local ? "$N\\,\\mathrm{TOL}$" : bound, tm->type->name,
+             notation_g(hb->tol, 6).s, c.steps, hb->body, notation_g(ex.s0, 2).s,
+             notation_g(ex.k, 2).s, notation_g(hypot(hb->w0[0], hb->w0[1]), 2).s,
+             local ? "$\\ge 1$" : "$\\le 1$", local ? hb->local : hb->global);
+    snprintf(id, sizeof id, "%s-%s-body-R", tm->eo->key, hb->key);
     ledger_add_bound(id, "(extension)", text, x, 1.0, local, LEDGER_EXTENSION);
 }
 
@@ -531,7 +556,8 @@ void adaptive_claims(void)
             global_claims(&tm);
         else
             local_claims(&tm);
-        slow_body_claim(&tm);
+        for (size_t j = 0; j < sizeof HARD_BODIES / sizeof HARD_BODIES[0]; j++)
+            hard_body_claim(&tm, &HARD_BODIES[j]);
         structure_claims(&tm);
     }
 }
