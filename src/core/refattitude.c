@@ -92,12 +92,12 @@ static void closed_u(const sus_refatt_closed *cf, long double t, long double u[2
  * quaternion kinematics q' = 1/2 q (x) (0, w), w = L^{-T} u, whose sum advances q. u's own series
  * is needed only for its coefficients below order P, which feed q's: it is not summed, as every
  * step starts from u of the closed form (integrate, grid_state). Coefficients are scaled,
- * U_n = u_n h^n. */
-static void precise_step(const sus_refatt_chol *co, long double h, const long double u[2],
+ * U_n = u_n h^n. P <= SUS_REFATT_ORDER is the step's order (order_for). */
+static void precise_step(const sus_refatt_chol *co, long double h, int P, const long double u[2],
                          long double q[4])
 {
-    enum { P = SUS_REFATT_ORDER };
-    long double U[P][2], W[P][2], Q[P + 1][4], C[P];
+    long double U[SUS_REFATT_ORDER][2], W[SUS_REFATT_ORDER][2], Q[SUS_REFATT_ORDER + 1][4],
+        C[SUS_REFATT_ORDER];
     U[0][0] = u[0];
     U[0][1] = u[1];
     for (int i = 0; i < 4; i++)
@@ -163,11 +163,17 @@ static void no_answer(double R[3][3])
  * rotation (ex->fixed) w is the constant w0: g = 1 and M = |w0|. */
 #define REFATT_TAIL 0x1p-64 /* one rounding of a long double */
 
-static double step_on_disc(double rho, double M, double g)
+/* A proved step and its disc: h = x rho, and W = max(g, exp(M rho / sqrt2)), which bounds the n-th
+ * scaled terms of a step h' <= h by |q| W (h' / rho)^n (and u's by r W (h' / rho)^n). */
+typedef struct {
+    double h, rho, W;
+} disc_step;
+
+static disc_step step_on_disc(double rho, double M, double g)
 {
     const double worst = fmax(g, exp(M * rho / sqrt(2.0)));
     const double x = fmin(0.5, pow(REFATT_TAIL / (2.0 * worst), 1.0 / (SUS_REFATT_ORDER + 1)));
-    return x * rho;
+    return (disc_step){x * rho, rho, worst};
 }
 
 /* |L^{-1}|_F, a bound of |L^{-T}|_2. */
@@ -177,13 +183,13 @@ static double inverse_norm(const sus_exact *ex)
     return sqrt(a * a + b * b + c * c);
 }
 
-long double sus_refatt_step(const sus_exact *ex)
+static disc_step proved_step(const sus_exact *ex)
 {
     const double half_pi = 1.5707963267948966, w0 = hypot(ex->w0[0], ex->w0[1]);
     if (ex->fixed && !(w0 > 0.0))
-        return INFINITY; /* w = 0: q is constant */
+        return (disc_step){INFINITY, INFINITY, 1.0}; /* w = 0: q is constant */
     const double k = ex->fixed ? 0.0 : ex->k, scale = ex->fixed ? w0 : inverse_norm(ex) * ex->r;
-    double best = 0.0;
+    disc_step best = {0.0, INFINITY, 1.0};
     /* candidates: rho = 2^j sqrt2 / scale (the exponential's scale) and Y = k rho on a grid of
      * (0, pi/2) (the strip's); each is kept only where its Y is inside the strip */
     for (int i = 0; i < 48 + 63; i++) {
@@ -194,9 +200,30 @@ long double sus_refatt_step(const sus_exact *ex)
             continue;
         const double c = cos(Y), t = tan(Y),
                      g = ex->fixed ? 1.0 : sqrt(1.0 / (c * c) + fmax(1.0, t * t));
-        best = fmax(best, step_on_disc(rho, scale * g, g));
+        const disc_step d = step_on_disc(rho, scale * g, g);
+        if (d.h > best.h)
+            best = d;
     }
     return best;
+}
+
+long double sus_refatt_step(const sus_exact *ex) { return proved_step(ex).h; }
+
+/* The order a step h <= the proved one needs: the least m with 2 W (h / rho)^(m+1) <= REFATT_TAIL,
+ * the bound the proved step meets at SUS_REFATT_ORDER (or it, when rounding leaves that bound a
+ * hair above). A partial step far shorter than the grid's (a row at a small --eps) needs few
+ * terms; at h = 1e-250 the terms it leaves out would be long-double subnormals, each operation on
+ * them a hundred times slower. */
+static int order_for(const sus_refatt *ra, long double h)
+{
+    const double y = (double)(h / ra->rho);
+    double tail = 2.0 * ra->W * y;
+    int m = 0;
+    while (m < SUS_REFATT_ORDER && !(tail <= REFATT_TAIL)) {
+        tail *= y;
+        m++;
+    }
+    return m;
 }
 
 /* The steady tail. With a = sigma s = sigma s0 + k t (exact.h), (cos psi, sin psi) - (0, 1) has
@@ -307,8 +334,9 @@ static void integrate(sus_refatt *ra, double t1)
     }
     const long n = (long)steps;
     const long double h = n > 0 ? ((long double)t1 - ra->t) / n : 0.0L;
+    const int order = order_for(ra, h);
     for (long k = 0; k < n; k++) {
-        precise_step(&ra->chol, h, ra->u, ra->q);
+        precise_step(&ra->chol, h, order, ra->u, ra->q);
         closed_u(&ra->closed, ra->t + (k + 1) * h, ra->u); /* u's own series is not carried on */
     }
     ra->t = t1;
@@ -320,7 +348,10 @@ void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const doubl
     ra->ex = ex;
     chol_init(&ra->chol, ex->model);
     closed_init(&ra->closed, &ra->chol, ex);
-    ra->h = sus_refatt_step(ex);
+    const disc_step d = proved_step(ex);
+    ra->h = d.h;
+    ra->rho = d.rho;
+    ra->W = d.W;
     ra->t = t0;
     ra->t0 = t0;
     ra->grid = 0.0;
@@ -376,13 +407,13 @@ static int grid_state(sus_refatt *ra, double t1, long double q[4])
     if (!(whole < 0x1p62L))
         return -1;
     for (; ra->grid < whole; ra->grid++) {
-        precise_step(&ra->chol, ra->h, ra->u, ra->q);
+        precise_step(&ra->chol, ra->h, order_for(ra, ra->h), ra->u, ra->q);
         closed_u(&ra->closed, ra->t0 + (ra->grid + 1) * ra->h, ra->u);
     }
     memcpy(q, ra->q, sizeof ra->q);
     const long double rest = span - ra->grid * ra->h;
     if (rest > 0.0L)
-        precise_step(&ra->chol, rest, ra->u, q);
+        precise_step(&ra->chol, rest, order_for(ra, rest), ra->u, q);
     return 0;
 }
 

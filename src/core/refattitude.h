@@ -53,6 +53,7 @@ typedef struct {
     sus_refatt_chol chol;
     sus_refatt_closed closed; /* u at every grid point, where each step starts */
     long double h;            /* the proved step, sus_refatt_step */
+    double rho, W; /* its disc: the n-th scaled terms of a step h' <= h are within W (h' / rho)^n */
     double t;
     long double u[2], q[4]; /* u = L^T w(t) and the attitude as a quaternion (not normalised) */
     double t0, grid;        /* sus_refatt_at: the start, and the whole grid steps taken from it */

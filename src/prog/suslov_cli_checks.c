@@ -21,7 +21,8 @@
 /* The reference attitude of --method exact (refattitude.h) costs one long-double Taylor step of
  * order SUS_REFATT_ORDER = P per step h: its Cauchy products sum P (P + 1) / 2 = 406 terms of
  * about 20 long-double operations each, some 1e4 operations, about 1e-5 s at 1e9 operations a
- * second (x87; several times slower where long double is a software quad). A run is refused
+ * second (x87; several times slower where long double is a software quad). A row's partial step
+ * costs at most that: its order falls with its length (refattitude.c). A run is refused
  * beyond a budget of ten minutes, and one beyond a few seconds (the guide's threshold for a
  * progress report) is announced on stderr, since its rows may come minutes apart. */
 #define EXACT_STEP_SECONDS 1e-5
