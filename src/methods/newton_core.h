@@ -253,6 +253,18 @@ newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_mode
     return rc;
 }
 
+/* An implicit w-step's Newton, inlined: w_next = (x1, x2, 0) with x the branch's solution of G = 0
+ * in two unknowns from w. */
+static inline __attribute__((always_inline)) int
+newton_w_step(sus_residual_fn G, sus_guess_fn guess, const sus_model *m, double eps,
+              const double w[3], double w_next[3], sus_stepper_stats *st)
+{
+    double x[2];
+    const int status = newton_solve_branch(G, guess, 2, m, eps, w, x, st);
+    w_next[0] = x[0], w_next[1] = x[1], w_next[2] = 0.0;
+    return status;
+}
+
 #ifdef __cplusplus
 }
 #endif

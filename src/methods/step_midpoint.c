@@ -40,10 +40,7 @@ static const sus_step_equation MID_EQUATION = {.unknowns = 2,
 int sus_step_midpoint_solve(const sus_model *m, double eps, const double w[3], double w_next[3],
                             sus_stepper_stats *st)
 {
-    double x[2];
-    const int status = newton_solve_branch(mid_residual, sus_step_predict, 2, m, eps, w, x, st);
-    w_next[0] = x[0], w_next[1] = x[1], w_next[2] = 0.0;
-    return status;
+    return newton_w_step(mid_residual, sus_step_predict, m, eps, w, w_next, st);
 }
 
 static int midpoint_apply(const sus_model *m, double eps, const double w[3], double w_next[3],

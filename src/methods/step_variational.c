@@ -67,9 +67,7 @@ static const sus_step_equation TAUDYN = {.unknowns = 2,
 static int variational_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
                              double *lambda_next, sus_stepper_stats *st)
 {
-    double x[2];
-    const int status = newton_solve_branch(taudyn_residual, sus_step_predict, 2, m, eps, w, x, st);
-    w_next[0] = x[0], w_next[1] = x[1], w_next[2] = 0.0;
+    const int status = newton_w_step(taudyn_residual, sus_step_predict, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }

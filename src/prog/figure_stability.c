@@ -174,15 +174,13 @@ static void cap_limits(const stab_fig *f, capbuf *b)
         "|R(-h)| = 1 (dashed lines; checked\nagainst bisection in the claims ledger). These "
         "limits, per method (inf: none up to h = %g; nan: no\nlinear stability function): ",
         f->hs[NH - 1]);
-    size_t col = cap_column(b);
     for (int m = 0; m < f->nm; m++) {
         char item[64];
         const int n =
             snprintf(item, sizeof item, "%s %.6g", sus_step_method_get(m)->type->name, f->limit[m]);
         /* one column kept for the ',' or '.' that ends the line */
-        const int wrap = m > 0 && col + 2 + (size_t)n + 1 > CAPTION_COLUMNS;
+        const int wrap = m > 0 && cap_column(b) + 2 + (size_t)n + 1 > CAPTION_COLUMNS;
         cat(b, "%s%s", m == 0 ? "" : wrap ? ",\n" : ", ", item);
-        col = wrap ? (size_t)n : col + (m > 0 ? 2 : 0) + (size_t)n;
     }
     cat(b, ".\n");
 }
