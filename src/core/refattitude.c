@@ -356,9 +356,9 @@ void sus_refatt_init(sus_refatt *ra, const sus_exact *ex, double t0, const doubl
     ra->t0 = t0;
     ra->grid = 0.0;
     /* u(t0): L^T w0 itself at t0 = 0 (the closed form there, an ulp off, would be 3e-15 in R(50));
-     * else the closed form in long double. Not L^T of the double closed form w(t0): that w is
-     * within a few u r |L^{-1}| of the motion's, and L^T cancels it to u's r |L| |L^{-1}| u: 1e-10
-     * of r with I12 = 1 - 1e-12, R 1e-12 off after one step. */
+     * else the closed form in long double. Not L^T of the double closed form w(t0): that w carries
+     * a few roundings of r |L^{-1}|, which L^T turns into a few roundings of r |L| |L^{-1}| in u,
+     * whose size is r: on a near-singular I_m, far above u's own rounding (test_refattitude). */
     if (t0 == 0.0)
         memcpy(ra->u, ra->closed.u0, sizeof ra->u);
     else

@@ -108,9 +108,9 @@ struct sus_tol_work {
  *     V_{n+1} = ks h / (n + 1) (-S_2, S_1),   W_{n+1} = M V_{n+1}.
  * Not (ContDyn)'s recursion from w (taylor_series.h): that seeds it with c(w) = I31 w1 + I32 w2 of
  * the rounded w, which near the steady rotation is a rounding u |b| |w| of terms that cancel, and
- * on a near-singular I_m (ContDyn) multiplies it by 1 / |I_m|: with I12 = 1 - 1e-12 and I3 = (-1,
- * -1) that put R 5e-7 off at TOL 1e-12. Here |z|, |y| <= 1 and every row is a few roundings of |M|
- * times its own terms. */
+ * on a near-singular I_m (ContDyn) multiplies it by 1 / |I_m|, far past any TOL (the
+ * near-singular bodies of tests/unit/test_exact_attitude.c). Here |z|, |y| <= 1 and every row is a
+ * few roundings of |M| times its own terms. */
 static inline __attribute__((always_inline)) void closed_series(const sus_exact_fast *f,
                                                                 const int p, const double h,
                                                                 const double t, const double w[2],

@@ -1,5 +1,6 @@
 /* The Taylor recursion of (ContDyn) and of the attitude quaternion, shared by the fixed-step
- * Taylor methods (step_taylor.c) and the tolerance-driven one (step_taylor_adaptive.c); the
+ * Taylor methods (step_taylor.c) and the tolerance-driven one (step_taylor_adaptive.c), and the
+ * quaternion's alone (q_row) by exact-attitude, whose w rows come from the closed form; the
  * equations are described at the top of step_taylor.c. Private to src/methods: everything here is
  * static inline, always inlined with the order p a constant, so each caller gets the unrolled
  * recursion of its own orders. */

@@ -455,10 +455,9 @@ static void energy_line(const tol_method *tm, double en)
             text, sizeof text,
             "$\\max |E - E_0| / ((%g \\kappa E_0 + %g e) u)$, $\\kappa = |L|_F |L^{-1}|_F$ "
             "($I_m = L L^\\top$), $e = \\max \\frac{1}{2} \\sum |\\omega_i I_{ij} \\omega_j|$, "
-            "over "
-            "every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d bodies: $\\le 1$ ($\\omega$ "
-            "is the closed form, $|L^\\top \\omega| = r$: its roundings reach $E$ through "
-            "$L^\\top$; $E$'s own evaluation rounds by a few $u e$)",
+            "over every step to " T1E4 ", %s at $\\mathrm{TOL} = %s$, %d bodies: $\\le 1$ "
+            "($\\omega$ is the closed form, $|L^\\top \\omega| = r$: its roundings reach $E$ "
+            "through $L^\\top$; $E$'s own evaluation rounds by a few $u e$)",
             ENERGY_KAPPA, ENERGY_EVAL, tm->type->name, notation_g(TOL_STRUCT, 6).s, BODIES_COUNT);
     else
         snprintf(
