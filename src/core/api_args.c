@@ -14,6 +14,17 @@ int sus_args_tol_underflows(const sus_model *m, const double w0[2])
     return size > 0.0 && !(size >= 0x1p-500 && sus_energy(m, w0) >= DBL_MIN);
 }
 
+int sus_args_start_unresolved(const sus_model *m, const double w0[2])
+{
+    if (!m || !w0)
+        return 0;
+    const double c = sus_cross_diff(m->b[0], w0[0], -m->b[1], w0[1]);
+    const double terms = fabs(m->b[0] * w0[0]) + fabs(m->b[1] * w0[1]);
+    const double u0 = m->fA[0][0] * w0[0] + m->fA[0][1] * w0[1],
+                 u1 = m->fA[1][0] * w0[0] + m->fA[1][1] * w0[1];
+    return c != 0.0 && fabs(c) <= 0x1p-53 * terms && m->b[0] * u0 + m->b[1] * u1 > 0.0;
+}
+
 /* The pointers and the model every run needs. */
 static const char *common(const void *cfg, const sus_model *model, const double w0[2],
                           sus_emit_fn emit, const sus_run_report *report)

@@ -139,6 +139,7 @@ typedef struct {
     int lambda_order;           /* s, or -1 where the paper proves the multiplier inconsistent */
     int implicit;               /* 1 when a step solves an equation (its own, or in its substeps) */
     int conserves_energy;       /* E = 1/2 <I_m w, w> exact up to round-off */
+    int w_closed_form;          /* 1 when w comes from the closed form (exact.h), not from steps */
     sus_attitude_form attitude; /* what apply_full (or the tolerance step) carries */
     int follows_recon;          /* 1 when the requested reconstruction is used */
     int substeps;               /* base steps per step: the round-off accumulates per substep */

@@ -369,8 +369,10 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
 static const sus_tol_ops EA_OPS = {
     ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order, SUS_STEADY_TURN_MAX_ANGLE};
 
-const sus_stepper_type sus_step_exact_attitude_type = {
-    .name = "exact-attitude",
-    .tol = &EA_OPS,
-    .desc = {
-        .conserves_energy = 1, .attitude = SUS_ATTITUDE_QUAT, .substeps = 1, .source = __FILE__}};
+const sus_stepper_type sus_step_exact_attitude_type = {.name = "exact-attitude",
+                                                       .tol = &EA_OPS,
+                                                       .desc = {.conserves_energy = 1,
+                                                                .w_closed_form = 1,
+                                                                .attitude = SUS_ATTITUDE_QUAT,
+                                                                .substeps = 1,
+                                                                .source = __FILE__}};

@@ -195,8 +195,13 @@ static const suslov_cli_option OPTIONS[] = {
      "naming the longest T; exact also refuses a run whose reference attitude\n"
      "it estimates at over ten minutes (long slow approaches, many rows)",
      set_time, NULL},
-    {"--omega0", "W1,W2", "initial body angular velocity (w3 = 0); default 0.4,0.5", set_omega0,
-     NULL},
+    {"--omega0", "W1,W2",
+     "initial body angular velocity (w3 = 0); default 0.4,0.5. A w0 within a\n"
+     "rounding of the repelling steady rotation (I31 w1 + I32 w2 below the\n"
+     "rounding of its terms, not 0) is warned of for a method that steps w:\n"
+     "it stays there, or leaves when its roundings say (exact, exact-attitude\n"
+     "follow the motion)",
+     set_omega0, NULL},
     {"--inertia", "I11,...,I33",
      "inertia tensor by rows, as printed in the paper (only I_m and the\n"
      "third row enter); I_m must be symmetric positive definite, its\n"

@@ -199,6 +199,21 @@ static void check_tol_start(const suslov_args *a, const suslov_args_given *g)
         g->w0[0], g->w0[1], sus_energy(&a->model, g->w0), 0x1p-500, DBL_MIN);
 }
 
+/* A start within a rounding of the repelling steady rotation (api_args.h): a run is still made,
+ * since it is right up to the time the motion leaves, but a method that steps w stays there. */
+static void check_unresolved_start(const suslov_args *a, const suslov_args_given *g)
+{
+    if (!a->method || a->method->type->desc.w_closed_form ||
+        !sus_args_start_unresolved(&a->model, g->w0))
+        return;
+    suslov_cli_warn("--omega0: c(w0) = I31 w1 + I32 w2 = %.3g is below the rounding of its terms, "
+                    "so to %s w0 is the repelling steady rotation: it stays there, or leaves when "
+                    "its roundings say, not when c(w0) says; exact and exact-attitude follow the "
+                    "closed form",
+                    sus_cross_diff(a->model.b[0], g->w0[0], -a->model.b[1], g->w0[1]),
+                    a->method->type->name);
+}
+
 /* The angle the steady rotation turns the body by at the final time, against the largest the
  * run's attitude forms to its stated accuracy (exact_run.h, the method's max_angle): the library
  * refuses the run, so it is refused here first, as bad input that says how far is possible. */
@@ -257,6 +272,7 @@ void suslov_args_check(suslov_args *a, const suslov_args_given *g)
     if (ignored)
         suslov_cli_warn("--reconstruct %s is ignored: %s carries its own attitude", g->recon,
                         a->method->type->name);
+    check_unresolved_start(a, g);
     const char *np = getenv("NO_PROGRESS");
     if (cost * EXACT_STEP_SECONDS > EXACT_NOTE_SECONDS && !g->quiet && !(np && *np))
         suslov_cli_note("--method exact: the reference attitude needs %.3g Taylor steps, roughly "

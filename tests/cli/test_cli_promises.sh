@@ -284,4 +284,36 @@ timeout 20 "$S" --method rk4 $LONG --output "$T/ch/loop_a" >"$T/out" 2>"$T/err";
 check "--output into a loop of links: refused before the run, exit $rc (2), one line ($(cat "$T/err"))" \
     sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 && grep -q 'symbolic links' '$T/err'"
 
+# 13. a start within a rounding of the repelling steady rotation: I31 w1 + I32 w2 = 0.3 w1 + 0.7 w2
+# is 7.4e-23 exactly at this w0 (the doubles' exact product), below the rounding of its terms
+# (1e-16), and c' = g c with g > 0 there. The motion leaves it for the attracting rotation, -w0 up
+# to c(w0), as exact and exact-attitude show with no warning; a method that
+# steps w stays at w0 and says so in one warning line; the mirrored start (-w0, attracting side) and
+# the paper's body warn of nothing.
+UI=1.0,0.1,0.05,0.1,1.0,-0.03,0.3,0.7,1.0 UW=0.7000093300886674,-0.3000039986094289
+last_w1() { awk -F, '/^[0-9]/ { w = $3 } END { print w }' "$1"; }
+for m in "taylor-adaptive --tol 1e-10 --time 300" "rk4 --eps 1 --steps 300" \
+         "exact-attitude --tol 1e-10 --time 300" "exact --eps 1 --steps 300"; do
+    "$S" --method $m --inertia $UI --omega0 $UW >"$T/out" 2>"$T/err"; rc=$?
+    w1=$(last_w1 "$T/out")
+    case $m in
+    exact*) check "--method $m from w0 within a rounding of the repelling rotation: exit $rc, no warning, w1(300) = $w1 (the motion left: -0.70001)" \
+                sh -c "test $rc = 0 -a ! -s '$T/err' && awk 'BEGIN { exit !($w1 < -0.70000) }'" ;;
+    *) check "--method $m from the same w0: exit $rc, one warning naming the repelling rotation, w1(300) = $w1 (here it stayed at 0.70001)" \
+           sh -c "test $rc = 0 -a \$(wc -l <'$T/err') = 1 && grep -q 'warning: --omega0: .*repelling steady rotation' '$T/err' &&
+                  awk 'BEGIN { exit !($w1 > 0.70000) }'" ;;
+    esac
+done
+for w in =-0.7000093300886674,0.3000039986094289 " 0.4,0.5"; do
+    "$S" --method rk4 --eps 1 --steps 3 --inertia $UI --omega0$w >/dev/null 2>"$T/err"; rc=$?
+    check "--method rk4 --omega0$w (not near the repelling rotation): exit $rc, no warning" test $rc = 0 -a ! -s "$T/err"
+done
+# the edge, a few ulps away (c / (u (|I31 w1| + |I32 w2|)) in exact rational arithmetic, u = 2^-53):
+# 0.357 of a rounding is warned of, 2.14 roundings are not
+for wc in 0.7000093300886671,-0.3000039986094287:1 0.7000093300886677,-0.3000039986094289:0; do
+    "$S" --method rk4 --eps 1 --steps 3 --inertia $UI --omega0 ${wc%:*} >/dev/null 2>"$T/err"; rc=$?
+    check "--method rk4 --omega0 ${wc%:*}: exit $rc, $(test ${wc#*:} = 1 && echo 'a warning' || echo 'no warning') ($(cat "$T/err"))" \
+        sh -c "test $rc = 0 -a \$(wc -l <'$T/err') = ${wc#*:}"
+done
+
 done_tests test_cli_promises
