@@ -18,11 +18,9 @@ int sus_args_start_unresolved(const sus_model *m, const double w0[2])
 {
     if (!m || !w0)
         return 0;
-    const double c = sus_cross_diff(m->b[0], w0[0], -m->b[1], w0[1]);
+    const double c = sus_c_accurate(m, w0);
     const double terms = fabs(m->b[0] * w0[0]) + fabs(m->b[1] * w0[1]);
-    const double u0 = m->fA[0][0] * w0[0] + m->fA[0][1] * w0[1],
-                 u1 = m->fA[1][0] * w0[0] + m->fA[1][1] * w0[1];
-    return c != 0.0 && fabs(c) <= 0x1p-53 * terms && m->b[0] * u0 + m->b[1] * u1 > 0.0;
+    return c != 0.0 && fabs(c) <= 0x1p-53 * terms && sus_contdyn_rate(m, w0) > 0.0;
 }
 
 /* The pointers and the model every run needs. */

@@ -68,7 +68,7 @@ int sus_exact_init(sus_exact *ex, const sus_model *m, const double w0[2])
     const double v2 = sus_cross_diff(I[0][0], bs[1], I[1][0], bs[0]) / (ex->l11 * sd);
     const double vn = hypot(v1, v2), rs = hypot(u1, u2);
     ex->r = ldexp(rs, ew);
-    ex->c0 = sus_cross_diff(b[0], w0[0], -b[1], w0[1]);
+    ex->c0 = sus_c_accurate(m, w0);
     if (rs == 0.0 || vn == 0.0)
         return 0;
     /* C = <v, u> / (|v| r) = c(w0) / (|v| r), as <v, u> = b^T L^{-T} L^T w0: c(w0) formed to about

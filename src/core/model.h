@@ -68,6 +68,22 @@ static inline double sus_c_unchecked(const sus_model *m, const double w[2])
     return m->b[0] * w[0] + m->b[1] * w[1];
 }
 
+/* c(w) to about one rounding of itself however much its two terms cancel (sus_cross_diff), where
+ * sus_c_unchecked is off by a rounding of the terms: near a steady rotation c is far below them. */
+static inline double sus_c_accurate(const sus_model *m, const double w[2])
+{
+    return sus_cross_diff(m->b[0], w[0], -m->b[1], w[1]);
+}
+
+/* g(w) = c(fA w): along (ContDyn) c' = g(w) c, and g is linear in w; g > 0 near the repelling
+ * steady rotation, g < 0 near the attracting one. */
+static inline double sus_contdyn_rate(const sus_model *m, const double w[2])
+{
+    const double u0 = m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
+                 u1 = m->fA[1][0] * w[0] + m->fA[1][1] * w[1];
+    return m->b[0] * u0 + m->b[1] * u1;
+}
+
 /* c(w), NaN for a NULL m or w. */
 static inline double sus_c(const sus_model *m, const double w[2])
 {

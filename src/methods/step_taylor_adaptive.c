@@ -180,14 +180,6 @@ static const adaptive_order *order_for(double tol)
 
 int sus_step_taylor_adaptive_order(double tol) { return order_for(tol)->p; }
 
-/* g(w) = c(fA w): c' = g(w) c along (ContDyn), and g is linear in w. */
-static double rate(const sus_model *m, const double w[2])
-{
-    const double u0 = m->fA[0][0] * w[0] + m->fA[0][1] * w[1],
-                 u1 = m->fA[1][0] * w[0] + m->fA[1][1] * w[1];
-    return m->b[0] * u0 + m->b[1] * u1;
-}
-
 /* The size of the terms E(w) sums, 1/2 sum |w_i I_ij w_j|, over E(w): the factor by which E's
  * rounding exceeds u (up to cond(I_m) for a w along I_m's soft direction). */
 static double energy_terms_ratio(const sus_model *m, const double w[2], double e)
@@ -210,10 +202,10 @@ static void steady_rotation(sus_tol_work *wk, const double w0[2])
     const double d[2] = {-m->b[1], m->b[0]}, ed = sus_energy(m, d);
     if (!(ed > 0.0) || !(wk->e0 > 0.0))
         return;
-    const double s = rate(m, d) > 0.0 ? -sqrt(wk->e0 / ed) : sqrt(wk->e0 / ed);
+    const double s = sus_contdyn_rate(m, d) > 0.0 ? -sqrt(wk->e0 / ed) : sqrt(wk->e0 / ed);
     wk->w_inf[0] = s * d[0];
     wk->w_inf[1] = s * d[1];
-    const double k = -rate(m, wk->w_inf);
+    const double k = -sus_contdyn_rate(m, wk->w_inf);
     wk->k_inf = k > 0.0 && isfinite(k) ? k : 0.0;
     const double terms = fmax(energy_terms_ratio(m, w0, wk->e0), energy_terms_ratio(m, d, ed));
     wk->floor = SETTLE_FLOOR * SUS_U * hypot(wk->w_inf[0], wk->w_inf[1]) * fmax(1.0, terms);
@@ -290,7 +282,7 @@ static int settles(const sus_tol_work *wk, const double w[2])
     const double dev = hypot(w[0] - wk->w_inf[0], w[1] - wk->w_inf[1]);
     if (dev <= wk->floor)
         return 1;
-    if (!(rate(wk->m, w) < 0.0) || !(dev <= wk->tol))
+    if (!(sus_contdyn_rate(wk->m, w) < 0.0) || !(dev <= wk->tol))
         return 0;
     return tail_error(wk, w) <= wk->tol;
 }

@@ -210,8 +210,7 @@ static void check_unresolved_start(const suslov_args *a, const suslov_args_given
                     "so to %s w0 is the repelling steady rotation: it stays there, or leaves when "
                     "its roundings say, not when c(w0) says; exact and exact-attitude follow the "
                     "closed form",
-                    sus_cross_diff(a->model.b[0], g->w0[0], -a->model.b[1], g->w0[1]),
-                    a->method->type->name);
+                    sus_c_accurate(&a->model, g->w0), a->method->type->name);
 }
 
 /* The angle the steady rotation turns the body by at the final time, against the largest the
