@@ -24,58 +24,6 @@ static void wide_mul(wide *w, double f)
 /* |a| > |b|, exactly: the exponents decide unless they are equal (a NaN: no). */
 static int wide_abs_greater(wide a, wide b) { return ldexp(fabs(a.m), a.e - b.e) > fabs(b.m); }
 
-static int in_range(double x) { return fabs(x) >= DBL_MIN && fabs(x) <= DBL_MAX; }
-
-/* The row 1-norms of J into r. Their product bounds the sum of |terms| of det J's Leibniz
- * expansion (expanding the product gives every term of it and more): times 4 n u, the yardstick
- * for the round-off in det J, on the safe side. */
-static void row_norms(const double *J, int n, double *r)
-{
-    for (int i = 0; i < n; i++) {
-        r[i] = 0.0;
-        for (int j = 0; j < n; j++)
-            r[i] += fabs(J[i * n + j]);
-    }
-}
-
-/* P J = L U in place by Gaussian elimination with partial pivoting: U on and above the diagonal,
- * L's multipliers below it (only the condition number reads them), perm[k] the row of J that is
- * row k of P J; the same eliminations applied to b. Returns det P (+-1). */
-static double lu_factor(int n, double *J, double *b, int *perm)
-{
-    double sign = 1.0;
-    for (int k = 0; k < n; k++)
-        perm[k] = k;
-    for (int k = 0; k < n; k++) {
-        int p = k;
-        for (int i = k + 1; i < n; i++)
-            if (fabs(J[i * n + k]) > fabs(J[p * n + k]))
-                p = i;
-        if (p != k) { /* a row swap changes the determinant's sign */
-            for (int j = 0; j < n; j++) {
-                const double t = J[k * n + j];
-                J[k * n + j] = J[p * n + j];
-                J[p * n + j] = t;
-            }
-            const double t = b[k];
-            const int q = perm[k];
-            b[k] = b[p], b[p] = t;
-            perm[k] = perm[p], perm[p] = q;
-            sign = -sign;
-        }
-        if (J[k * n + k] == 0.0)
-            continue;
-        for (int i = k + 1; i < n; i++) {
-            const double f = J[i * n + k] / J[k * n + k];
-            J[i * n + k] = f;
-            for (int j = k + 1; j < n; j++)
-                J[i * n + j] -= f * J[k * n + j];
-            b[i] -= f * b[k];
-        }
-    }
-    return sign;
-}
-
 /* The condition number of J with its rows scaled to unit 1-norm (D J, D = diag(1/r)), in the
  * max norm: kappa = |D J| |(D J)^-1| = max_i sum_j |(J^-1)_ij| r_j, unchanged by scaling any row.
  * J^-1 column by column from the factors of lu_factor; NaN or infinite for a zero pivot. */
@@ -125,34 +73,24 @@ static int det_small(int n, const double *U, double sign, const double *r, doubl
     return !wide_abs_greater(wd, wb);
 }
 
-/* n = 2 by the closed form (newton_core.h: the (REGLOC) block); larger n by Gaussian elimination
- * with partial pivoting, on the stack. Written here rather than taken from GSL: the WebAssembly
- * build of the methods has no GSL, and GSL's LU, timed on an 8 x 8 system gauss4 once solved for
- * its attitude, was most of that step's cost. */
-int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+int sus_step_linear_singular(int n, const double *LU, const int *perm, double sign, const double *r,
+                             double *det)
 {
-    if (n == 2)
-        return newton_solve_2x2(J, g, dx, det);
-    double b[SUS_MAX_UNKNOWNS], r[SUS_MAX_UNKNOWNS];
-    int perm[SUS_MAX_UNKNOWNS];
-    row_norms(J, n, r);
-    for (int i = 0; i < n; i++)
-        b[i] = g[i];
-    const double sign = lu_factor(n, J, b, perm);
     /* The determinant test is cheap but, beyond n = 2, strict: it falls with the product of the
      * small singular values (gauss4's J on a near-singular I_m has two, one from each block I_m).
      * Where it fails, the condition number decides: the solve's relative error is about
      * 4 n u kappa, and J is singular to working precision only where that reaches 1. */
-    if (det_small(n, J, sign, r, det) &&
-        !(4.0 * n * SUS_U * equilibrated_cond(n, J, perm, r) < 1.0))
-        return -1;
-    for (int i = n - 1; i >= 0; i--) {
-        double s = b[i];
-        for (int j = i + 1; j < n; j++)
-            s -= J[i * n + j] * dx[j];
-        dx[i] = s / J[i * n + i];
-    }
-    return 0;
+    return det_small(n, LU, sign, r, det) &&
+           !(4.0 * n * SUS_U * equilibrated_cond(n, LU, perm, r) < 1.0);
+}
+
+/* n = 2 by the closed form (newton_core.h: the (REGLOC) block); larger n by newton_core.h's
+ * Gaussian elimination. Written here rather than taken from GSL: the WebAssembly build of the
+ * methods has no GSL, and GSL's LU, timed on an 8 x 8 system gauss4 once solved for its attitude,
+ * was most of that step's cost. */
+int sus_step_linear_solve(int n, double *J, const double *g, double *dx, double *det)
+{
+    return n == 2 ? newton_solve_2x2(J, g, dx, det) : newton_solve_lu(n, J, g, dx, det);
 }
 
 int sus_step_newton_solve(sus_residual_fn G, int n, const sus_model *m, double eps,

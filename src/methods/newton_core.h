@@ -7,6 +7,7 @@
 
 #include "newton.h"
 
+#include <float.h>
 #include <math.h>
 
 #ifdef __cplusplus
@@ -24,10 +25,117 @@ static inline int newton_solve_2x2(const double *J, const double *g, double *dx,
     return 0;
 }
 
-/* dx = J^{-1} g: the closed form for n = 2 here, so that it inlines; larger n out of line. */
+/* Is x a normal double (not 0, subnormal, inf or NaN)? */
+static inline int in_range(double x) { return fabs(x) >= DBL_MIN && fabs(x) <= DBL_MAX; }
+
+/* The row 1-norms of J into r. Their product bounds the sum of |terms| of det J's Leibniz
+ * expansion (expanding the product gives every term of it and more): times 4 n u, the yardstick
+ * for the round-off in det J, on the safe side. */
+static inline __attribute__((always_inline)) void row_norms(const double *J, const int n, double *r)
+{
+#pragma GCC unroll 8
+    for (int i = 0; i < n; i++) {
+        r[i] = 0.0;
+#pragma GCC unroll 8
+        for (int j = 0; j < n; j++)
+            r[i] += fabs(J[i * n + j]);
+    }
+}
+
+/* P J = L U in place by Gaussian elimination with partial pivoting: U on and above the diagonal,
+ * L's multipliers below it (only the condition number reads them), perm[k] the row of J that is
+ * row k of P J; the same eliminations applied to b. Returns det P (+-1). */
+static inline __attribute__((always_inline)) double lu_factor(const int n, double *J, double *b,
+                                                              int *perm)
+{
+    double sign = 1.0;
+#pragma GCC unroll 8
+    for (int k = 0; k < n; k++)
+        perm[k] = k;
+#pragma GCC unroll 8
+    for (int k = 0; k < n; k++) {
+        int p = k;
+#pragma GCC unroll 8
+        for (int i = k + 1; i < n; i++)
+            if (fabs(J[i * n + k]) > fabs(J[p * n + k]))
+                p = i;
+        if (p != k) { /* a row swap changes the determinant's sign */
+#pragma GCC unroll 8
+            for (int j = 0; j < n; j++) {
+                const double t = J[k * n + j];
+                J[k * n + j] = J[p * n + j];
+                J[p * n + j] = t;
+            }
+            const double t = b[k];
+            const int q = perm[k];
+            b[k] = b[p], b[p] = t;
+            perm[k] = perm[p], perm[p] = q;
+            sign = -sign;
+        }
+        if (J[k * n + k] == 0.0)
+            continue;
+#pragma GCC unroll 8
+        for (int i = k + 1; i < n; i++) {
+            const double f = J[i * n + k] / J[k * n + k];
+            J[i * n + k] = f;
+#pragma GCC unroll 8
+            for (int j = k + 1; j < n; j++)
+                J[i * n + j] -= f * J[k * n + j];
+            b[i] -= f * b[k];
+        }
+    }
+    return sign;
+}
+
+/* sus_step_linear_solve's singularity test (newton.h) on the factors of lu_factor; *det as it
+ * says. Out of line: newton_solve_lu below settles the common case without it. */
+int sus_step_linear_singular(int n, const double *LU, const int *perm, double sign, const double *r,
+                             double *det);
+
+/* sus_step_linear_solve for n > 2 by Gaussian elimination with partial pivoting, on the stack;
+ * inlined, with n a constant, for gauss4's n = 4 (the out-of-line solve with n a variable was
+ * most of its Newton iteration). Where det J and its yardstick are normal doubles and |det J|
+ * exceeds the yardstick, J is regular without further test; else sus_step_linear_singular, which
+ * forms the same products first, decides. */
+static inline __attribute__((always_inline)) int
+newton_solve_lu(const int n, double *J, const double *g, double *dx, double *det)
+{
+    double b[SUS_MAX_UNKNOWNS], r[SUS_MAX_UNKNOWNS];
+    int perm[SUS_MAX_UNKNOWNS];
+    if (n > SUS_MAX_UNKNOWNS) /* newton.h's bound, for the compiler's unrolled loops */
+        __builtin_unreachable();
+    row_norms(J, n, r);
+#pragma GCC unroll 8
+    for (int i = 0; i < n; i++)
+        b[i] = g[i];
+    const double sign = lu_factor(n, J, b, perm);
+    double d = sign, p = 1.0;
+#pragma GCC unroll 8
+    for (int k = 0; k < n; k++)
+        d *= J[k * n + k], p *= r[k];
+    const double bound = 4.0 * n * SUS_U * p;
+    *det = d;
+    if (!(in_range(d) && in_range(bound) && fabs(d) > bound) &&
+        sus_step_linear_singular(n, J, perm, sign, r, det))
+        return -1;
+#pragma GCC unroll 8
+    for (int i = n - 1; i >= 0; i--) {
+        double s = b[i];
+#pragma GCC unroll 8
+        for (int j = i + 1; j < n; j++)
+            s -= J[i * n + j] * dx[j];
+        dx[i] = s / J[i * n + i];
+    }
+    return 0;
+}
+
+/* dx = J^{-1} g: the closed forms for n = 2 and n = 4 (gauss4) here, so that they inline; other n
+ * out of line. */
 static inline int newton_linear(int n, double *J, const double *g, double *dx, double *det)
 {
-    return n == 2 ? newton_solve_2x2(J, g, dx, det) : sus_step_linear_solve(n, J, g, dx, det);
+    if (n == 2)
+        return newton_solve_2x2(J, g, dx, det);
+    return n == 4 ? newton_solve_lu(4, J, g, dx, det) : sus_step_linear_solve(n, J, g, dx, det);
 }
 
 /* NaN when an entry is NaN (a max that drops NaN would call an overflowed residual 0). The max

@@ -12,7 +12,7 @@
  * Numerical Integration, Thm. IV.2.1): E = 1/2 <I_m w, w> and |q|. Its stability function is
  * the (2,2) Pade approximant of exp, |R(-h)| < 1 for every h > 0. Tableau: c = 1/2 -+ sqrt(3)/6,
  * A = [[1/4, 1/4 - sqrt(3)/6], [1/4 + sqrt(3)/6, 1/4]], b = (1/2, 1/2). */
-#include "newton.h"
+#include "newton_core.h"
 #include "implicit_step.h"
 #include "quaternion.h"
 
@@ -46,14 +46,19 @@ static void gauss4_residual(const sus_model *m, double eps, const double w[2], c
     const double sI = fabs(I[0][0]) + fabs(I[0][1]) + fabs(I[1][0]) + fabs(I[1][1]);
     const double sl = fabs(l[0][0]) + fabs(l[0][1]) + fabs(l[1][0]) + fabs(l[1][1]);
     *scale = 0.0;
+    /* every loop unrolled: G and J in straight-line code, inlined into the Newton loop */
+#pragma GCC unroll 4
     for (int i = 0; i < 2; i++) {
         const double *W = x + 2 * i, d0 = W[0] - w[0], d1 = W[1] - w[1];
         const double r[2] = {eps * (A[i][0] * l[0][0] + A[i][1] * l[1][0]),
                              eps * (A[i][0] * l[0][1] + A[i][1] * l[1][1])};
         g[2 * i] = I[0][0] * d0 + I[0][1] * d1 - r[0];
         g[2 * i + 1] = I[1][0] * d0 + I[1][1] * d1 - r[1];
+#pragma GCC unroll 4
         for (int a = 0; a < 2; a++)
+#pragma GCC unroll 4
             for (int j = 0; j < 2; j++)
+#pragma GCC unroll 4
                 for (int k = 0; k < 2; k++)
                     J[(2 * i + a) * 4 + 2 * j + k] =
                         (i == j ? I[a][k] : 0.0) - eps * A[i][j] * dl[j][a][k];
@@ -88,12 +93,12 @@ static double gauss4_stability(double z)
 }
 
 /* The stages x = (W_1, W_2) on the branch continued from eps = 0 (newton.h), w^{k+1} and
- * lambda_{k+1} from them. */
+ * lambda_{k+1} from them: the Newton loop of newton_core.h with this residual and its 4 x 4 solve
+ * inlined. */
 static int gauss4_stages(const sus_model *m, double eps, const double w[3], double x[4],
                          double w_next[3], double *lambda_next, sus_stepper_stats *st)
 {
-    const int status =
-        sus_step_newton_solve_branch(gauss4_residual, gauss4_guess, 4, m, eps, w, x, st);
+    const int status = newton_solve_branch(gauss4_residual, gauss4_guess, 4, m, eps, w, x, st);
     gauss4_result(m, eps, w, x, w_next);
     w_next[2] = 0.0;
     *lambda_next = sus_lagmult(m, w_next);
