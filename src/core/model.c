@@ -151,6 +151,8 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen)
 
 const char *sus_model_start_overflow(const sus_model *m, const double w[2])
 {
+    if (!w || !sus_model_sealed(m))
+        return "no model";
     return !isfinite(sus_energy(m, w))    ? "energy"
            : !isfinite(sus_lagmult(m, w)) ? "multiplier lambda"
                                           : NULL;

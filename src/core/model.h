@@ -54,7 +54,8 @@ int sus_model_init(sus_model *m, const double I[9], char *err, size_t errlen);
  * no field has changed since; 0 for a NULL m, a failed sus_model_init and any other bytes. */
 int sus_model_sealed(const sus_model *m);
 /* NULL when the energy and the multiplier lambda at w (w3 = 0) are finite numbers, as the first
- * row of a run must be; else what overflows there: "energy" or "multiplier lambda". A body's
+ * row of a run must be; else what overflows there: "energy" or "multiplier lambda"; "no model" for
+ * a NULL w, or an m that is NULL or not what sus_model_init filled (sus_model_sealed). A body's
  * coefficients may be finite while their products at a w are not (I31 = I32 = 1e300 at
  * |w| ~ 1): the run functions refuse such a start, and so does the suslov command. */
 const char *sus_model_start_overflow(const sus_model *m, const double w[2]);

@@ -27,6 +27,8 @@ int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps,
 
 double sus_step_end(double t, double h, double stop)
 {
+    if (!(t >= 0.0 && h > 0.0 && stop > t)) /* outside its contract, or a NaN: no end */
+        return NAN;
     if (!(h < stop - t))
         return stop;
     double end = t + h;

@@ -29,7 +29,7 @@ enum {
     SUS_STEPPER_REJECTED = 4,
     SUS_STEPPER_NO_MEMORY = 5,
     SUS_STEPPER_STEP_LIMIT = 6,
-    SUS_STEPPER_BAD_ARGUMENT = 7 /* sus_stepper_full: a NULL pointer, a bad recon or eps */
+    SUS_STEPPER_BAD_ARGUMENT = 7 /* sus_stepper_full: its refusals, stated where it is declared */
 };
 
 typedef struct {
@@ -178,7 +178,8 @@ int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps,
  * while below 2^53 ulp(t), in particular whenever end <= 2t (Sterbenz). Only a step longer than t
  * (the first few of a run: each more than doubles t) or a last step to stop from below stop/2 may
  * round h', by at most u h': a rounding of the step's own length, where adding h to t in place
- * rounds by u t, which summed over N steps grows like N u t. */
+ * rounds by u t, which summed over N steps grows like N u t. NaN for a NaN argument, t < 0, h <= 0
+ * or t >= stop. */
 double sus_step_end(double t, double h, double stop);
 
 #ifdef __cplusplus

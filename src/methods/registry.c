@@ -134,5 +134,6 @@ int sus_step_methods_write_tsv(FILE *fp)
                 t->desc.stability != NULL, SUS_RECON_NAMES[me->recon],
                 me->paper_ref ? me->paper_ref : "-", t->desc.source, me->about);
     }
-    return ferror(fp) ? -1 : 0;
+    /* flushed first: a write that fails in the buffer sets the error only when it reaches fp */
+    return fflush(fp) != 0 || ferror(fp) ? -1 : 0;
 }

@@ -121,7 +121,8 @@ void suslov_cli_list(const char *opt, const char *s, double *out, int n)
 {
     char buf[1024];
     if (strlen(s) >= sizeof buf)
-        suslov_cli_die("%s: list too long", opt);
+        suslov_cli_die("%s: the list is %zu characters long, more than the %zu it may have", opt,
+                       strlen(s), sizeof buf - 1);
     int i = 0;
     for (const char *p = s;; i++) {
         const char *comma = strchr(p, ',');

@@ -89,6 +89,20 @@ static void validation(void)
     bad[7] = NAN;
     CHECK(sus_model_init(&m, bad, err, sizeof err) != 0 && strstr(err, "not finite"),
           "a NaN entry is rejected: %s", err);
+    /* the start check of a run: no model is not an overflowing energy */
+    const double w[2] = {0.4, 0.5};
+    sus_model zero;
+    memset(&zero, 0, sizeof zero);
+    const char *says[3] = {sus_model_start_overflow(NULL, w), sus_model_start_overflow(&zero, w),
+                           "no model"};
+    CHECK(sus_model_init(&m, SUS_PAPER_INERTIA, err, sizeof err) == 0, "the paper's body");
+    says[2] = sus_model_start_overflow(&m, NULL);
+    int no_model = 1;
+    for (int i = 0; i < 3; i++)
+        no_model &= says[i] && strcmp(says[i], "no model") == 0;
+    CHECK(no_model && sus_model_start_overflow(&m, w) == NULL,
+          "sus_model_start_overflow: \"no model\" for a NULL or zeroed model or a NULL w, NULL at "
+          "the paper's start");
 }
 
 /* What double precision cannot hold is refused by sus_model_init itself, in the words the suslov

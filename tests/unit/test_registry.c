@@ -153,6 +153,33 @@ static void check_labels(void)
     }
 }
 
+/* build/methods.tsv: a header and one row per method, each found again by index. */
+static void check_tsv(void)
+{
+    FILE *fp = tmpfile();
+    int rows = -1, ok = fp && sus_step_methods_write_tsv(fp) == 0;
+    char line[1024];
+    if (fp) {
+        rewind(fp);
+        while (fgets(line, sizeof line, fp)) {
+            const sus_step_method *me = sus_step_method_get(rows);
+            ok &= rows < 0 ? strncmp(line, "name\tfamily\torder\t", 18) == 0
+                           : me && strncmp(line, me->type->name, strlen(me->type->name)) == 0;
+            rows++;
+        }
+        fclose(fp);
+    }
+    CHECK(ok && rows == sus_step_method_count_all(),
+          "methods.tsv: a header and %d rows for %d methods", rows, sus_step_method_count_all());
+    /* a device that takes no byte: the error surfaces when the buffer is flushed, within the call
+     */
+    FILE *full = fopen("/dev/full", "w");
+    if (full) {
+        CHECK(sus_step_methods_write_tsv(full) == -1, "methods.tsv to /dev/full: -1");
+        fclose(full);
+    }
+}
+
 int main(void)
 {
     char err[256];
@@ -178,22 +205,7 @@ int main(void)
               "%s: %d substeps = %d stages", comp[i].type->name, comp[i].type->desc.substeps,
               sus_step_composition_stages(comp[i].table));
 
-    /* build/methods.tsv: a header and one row per method, each found again by index. */
-    FILE *fp = tmpfile();
-    int rows = -1, ok = fp && sus_step_methods_write_tsv(fp) == 0;
-    char line[1024];
-    if (fp) {
-        rewind(fp);
-        while (fgets(line, sizeof line, fp)) {
-            const sus_step_method *me = sus_step_method_get(rows);
-            ok &= rows < 0 ? strncmp(line, "name\tfamily\torder\t", 18) == 0
-                           : me && strncmp(line, me->type->name, strlen(me->type->name)) == 0;
-            rows++;
-        }
-        fclose(fp);
-    }
-    CHECK(ok && rows == sus_step_method_count_all(),
-          "methods.tsv: a header and %d rows for %d methods", rows, sus_step_method_count_all());
+    check_tsv();
     /* The fixed-step methods first, each with a step of given eps; the tolerance-driven ones after;
      * each has exactly one of the two interfaces. */
     for (int i = 0; i < sus_step_method_count_all(); i++) {

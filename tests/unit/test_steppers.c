@@ -364,9 +364,24 @@ static void hooks_null(const sus_model *m)
           "sus_step_predict(NULL model), sus_step_result_is_x(NULL x): NaN");
 }
 
+/* sus_step_end (stepper.h): the clock's end of a step, and NaN outside its contract. */
+static void step_end_contract(void)
+{
+    CHECK(sus_step_end(0.0, 1.0, 2.0) == 1.0 && sus_step_end(0.0, INFINITY, 2.0) == 2.0 &&
+              sus_step_end(1.5, 1.0, 2.0) == 2.0,
+          "sus_step_end: t + h, or stop when h reaches it");
+    const double bad[][3] = {{NAN, 1, 2}, {0, NAN, 2}, {0, 1, NAN}, {0, -1, 2},
+                             {0, 0, 2},   {-5, 1, 2},  {2, 1, 2},   {3, 1, 2}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        CHECK(isnan(sus_step_end(bad[i][0], bad[i][1], bad[i][2])),
+              "sus_step_end(%g, %g, %g): NaN, outside t >= 0, h > 0, t < stop", bad[i][0],
+              bad[i][1], bad[i][2]);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    step_end_contract();
     char err[256];
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
