@@ -129,8 +129,8 @@ newton_solve_lu(const int n, double *J, const double *g, double *dx, double *det
     return 0;
 }
 
-/* dx = J^{-1} g: the closed forms for n = 2 and n = 4 (gauss4) here, so that they inline; other n
- * out of line. */
+/* dx = J^{-1} g: the 2 x 2 closed form and gauss4's 4 x 4 elimination here, so that they inline;
+ * other n out of line. */
 static inline int newton_linear(int n, double *J, const double *g, double *dx, double *det)
 {
     if (n == 2)
