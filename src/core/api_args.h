@@ -23,12 +23,11 @@ int sus_args_finite2(const double w[2]);
  * such a w0. */
 int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
 /* 1 when w0 lies off the repelling steady rotation by less than a rounding: c(w0) = I31 w1 + I32 w2
- * is not 0 (to one rounding of itself, sus_cross_diff) but at most u (|I31 w1| + |I32 w2|), the
- * rounding of c at w0, and c grows from there, c' = g(w) c with g(w0) = c(fA w0) > 0 ((ContDyn)).
- * A method that steps w from w0 cannot tell w0 from that rotation, whose c is 0 to the same
- * rounding: it stays there, or leaves when its roundings say, not when c(w0) says; the closed form
- * (exact.h) follows the motion.
- * 0 for a NULL m or w0. */
+ * is not 0 (to one rounding of itself, sus_cross_diff) but at most 2^-53 (|I31 w1| + |I32 w2|),
+ * half of SUS_U: the rounding of c at w0, and c grows from there, c' = g(w) c with g(w0) = c(fA w0)
+ * > 0 ((ContDyn)). A method that steps w from w0 cannot tell w0 from that rotation, whose c is 0 to
+ * the same rounding: it stays there, or leaves when its roundings say, not when c(w0) says; the
+ * closed form (exact.h) follows the motion. 0 for a NULL m or w0. */
 int sus_args_start_unresolved(const sus_model *m, const double w0[2]);
 /* NULL when the arguments of sus_run (with_stepper = 1) or sus_run_exact (0: no stepper is
  * used) are good (driver.h lists what is checked), else the reason in one line. */
