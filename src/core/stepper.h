@@ -165,7 +165,11 @@ typedef struct {
  * reconstruction of the given kind. Returns SUS_STEPPER_*; SUS_STEPPER_BAD_ARGUMENT, with nothing
  * written but *stats zeroed, for a NULL pointer, a tolerance-driven or apply-less stepper, a
  * recon not among sus_recon's values, an eps that is not finite, or a w whose w[0], w[1] are not
- * finite (the model is not checked here, at every step: the run drivers check it). */
+ * finite (the model is not checked here, at every step: the run drivers check it). The steps
+ * write w_next[2] = 0 and read w[0], w[1] alone; a reconstruction (algo) reads all of w, so a w[2]
+ * off the constraint w3 = 0 turns R about e3 (the ledger's positive control of the constraint
+ * injects one). A negative eps is a step back in time, as the methods are written (0: w
+ * unchanged); the run drivers take eps > 0 only. */
 int sus_stepper_full(const sus_stepper_type *st, const sus_model *m, double eps, sus_recon recon,
                      sus_attitude *att, const double w[3], double w_next[3], double *lambda_next,
                      sus_stepper_stats *stats);

@@ -59,9 +59,12 @@ void suslov_args_header(const suslov_args *a, int argc, char **argv, FILE *fp)
         fputc(' ', fp);
         put_arg(fp, i ? argv[i] : "suslov");
     }
-    if (a->method)
+    if (a->method && a->tol > 0.0) /* a --tol method's order is the one it chose for TOL */
+        fprintf(fp, "\n# method: %s (%s, order %d at this TOL), ", a->method->type->name,
+                a->method->family, a->method->type->tol->order(a->tol));
+    else if (a->method)
         fprintf(fp, "\n# method: %s (%s, order %d), ", a->method->type->name, a->method->family,
-                a->tol > 0.0 ? a->method->type->tol->order(a->tol) : a->method->type->desc.order);
+                a->method->type->desc.order);
     if (a->method && a->method->type->desc.follows_recon)
         fprintf(fp, "reconstruction %s\n", SUS_RECON_NAMES[a->recon]);
     else if (a->method) /* what --method list calls "own" */

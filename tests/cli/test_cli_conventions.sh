@@ -132,6 +132,10 @@ check "header: version, command line, method, eps, inertia, omega0, units before
            grep -q '^# eps: 0.25, steps: 2, every: 1, final time: 0.5$' '$T/h.csv' && grep -q '^# inertia' '$T/h.csv' &&
            grep -q '^# omega0: 0.29999999999999999,-0.20000000000000001,0$' '$T/h.csv' && grep -q '^# units' '$T/h.csv' &&
            test \"\$(grep -v '^#' '$T/h.csv' | head -1 | cut -d, -f1-3)\" = k,t,omega1"
+# a --tol method's order is the one it chose for that TOL, and the header says so
+"$S" --method exact-attitude --tol 1e-6 --time 1 >"$T/h.csv"
+check "header: a --tol method's order is the one for its TOL" \
+    grep -q '^# method: exact-attitude (closed form, order [0-9]* at this TOL), attitude: own' "$T/h.csv"
 # a method that carries its own attitude (--method list: reconstruct "own") says so in its header,
 # with the attitude form it declares (--help's --reconstruct block: "NAMES: none, their own FORM
 # attitude", from the method's self-description), never a reconstruction it does not use;
