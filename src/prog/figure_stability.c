@@ -80,8 +80,12 @@ static void draw(cairo_t *cr, void *vctx)
             char lab[64];
             snprintf(lab, sizeof lab, "linear limit h = %.4g", f->limit[m]);
             sus_plot_text(cr, ax.x + 4, ax.y + 10, lab, 8.0, 0.0, 0.5, 0);
-        } else {
-            sus_plot_text(cr, ax.x + 4, ax.y + 10, "no linear stability limit", 8.0, 0.0, 0.5, 0);
+        } else { /* inf: |R(-h)| <= 1 up to the last h; NaN: the method states no stability
+                  * function R (its desc.stability is NULL), so it has no limit to draw */
+            sus_plot_text(cr, ax.x + 4, ax.y + 10,
+                          isnan(f->limit[m]) ? "no linear stability function"
+                                             : "no linear stability limit",
+                          8.0, 0.0, 0.5, 0);
         }
     }
 }
