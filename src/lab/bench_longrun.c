@@ -147,7 +147,7 @@ static int rk8pd_matching(const sus_lab_bench *b, int reduced, sus_lab_bench_pee
         const int rc = reduced ? sus_lab_peer_open_reduced(&g->p, &b->pb.red, gsl_odeiv2_step_rk8pd,
                                                            SUS_LAB_PEER_DRIVER, *tol, *tol, 1e-2)
                                : sus_lab_peer_open(&g->p, &b->pb.model, gsl_odeiv2_step_rk8pd, 6,
-                                                   SUS_LAB_PEER_DRIVER, *tol, 1e-3);
+                                                   SUS_LAB_PEER_DRIVER, *tol, *tol, 1e-3);
         if (rc != 0)
             sus_lab_bench_die("GSL allocation failed");
         sus_lab_bench_peer_fn(g);

@@ -79,10 +79,10 @@ static int peer_alloc(sus_lab_peer *p)
 }
 
 int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type,
-                      size_t dim, sus_lab_peer_api api, double tol, double hstart)
+                      size_t dim, sus_lab_peer_api api, double tol, double rel, double hstart)
 {
     *p = (sus_lab_peer){
-        .type = type, .api = api, .dim = dim, .tol = tol, .rel = tol, .hstart = hstart};
+        .type = type, .api = api, .dim = dim, .tol = tol, .rel = rel, .hstart = hstart};
     int (*rhs)(double, const double[], double[], void *) = dim == 11  ? sus_lab_peer_rhs_wR
                                                            : dim == 6 ? sus_lab_peer_rhs_wq
                                                                       : sus_lab_peer_rhs_w;

@@ -49,9 +49,10 @@ typedef struct {
  * allows, where the step shrinks without end): it fails instead of running for hours. */
 #define SUS_LAB_PEER_MAX_STEPS 200000UL
 
-/* Returns 0, or -1 when GSL cannot allocate. abs = rel = tol. */
+/* Returns 0, or -1 when GSL cannot allocate. Absolute tolerance tol and relative tolerance rel
+ * (GSL's y control: rel = tol is abs = rel, rel = 0 the absolute error alone). */
 int sus_lab_peer_open(sus_lab_peer *p, const sus_model *m, const gsl_odeiv2_step_type *type,
-                      size_t dim, sus_lab_peer_api api, double tol, double hstart);
+                      size_t dim, sus_lab_peer_api api, double tol, double rel, double hstart);
 /* The reduced problem along r (which must outlive p), abs tolerance tol and rel tolerance rel. */
 int sus_lab_peer_open_reduced(sus_lab_peer *p, const sus_exact_fast *r,
                               const gsl_odeiv2_step_type *type, sus_lab_peer_api api, double tol,

@@ -6,11 +6,12 @@
  * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]), at
  * abs = rel tolerance 1e-3 ... 1e-15 (four a decade): GSL odeiv2 rk8pd and rkck through
  * gsl_odeiv2_driver_apply and through a gsl_odeiv2_evolve_apply loop, each from initial step
- * 1e-3, 1e-2, 0.1 and 1; rkf45 and msadams (driver, 1e-3); Boost.Odeint runge_kutta_fehlberg78
- * (make_controlled) and bulirsch_stoer (integrate_adaptive) when built with SUSLOV_WITH_ODEINT
- * (make bench does). Each on three formulations: (w1, w2, R) with R' = R w^ (11 unknowns),
- * (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the end (6 unknowns), and, for the
- * w accuracies only, (w1, w2) alone (2 unknowns; our Taylor methods get the same choice,
+ * 1e-3, 1e-2, 0.1 and 1, and (rk8pd, rkck, attitude formulations, initial step 1) with the
+ * absolute error alone, as on the reduced problem; rkf45 and msadams (driver, 1e-3); Boost.Odeint
+ * runge_kutta_fehlberg78 (make_controlled) and bulirsch_stoer (integrate_adaptive) when built with
+ * SUSLOV_WITH_ODEINT (make bench does). Each on three formulations: (w1, w2, R) with R' = R w^ (11
+ * unknowns), (w1, w2, q) with q' = 1/2 q (x) (0, w) and R = R(q/|q|) at the end (6 unknowns), and,
+ * for the w accuracies only, (w1, w2) alone (2 unknowns; our Taylor methods get the same choice,
  * "(w only)"). Every run of a configuration starts from the same state, its step size included
  * (src/lab/peers.c), and the error credited to a point is the one its timed runs end with. The
  * "best peer" at an accuracy is the fastest configuration whose timed runs reach it.

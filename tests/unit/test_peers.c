@@ -27,7 +27,7 @@ static int open_peer(sus_lab_peer *p, const sus_model *m, const sus_exact_fast *
                      double hstart)
 {
     return dim == 4 ? sus_lab_peer_open_reduced(p, red, type, api, TOL, TOL, hstart)
-                    : sus_lab_peer_open(p, m, type, dim, api, TOL, hstart);
+                    : sus_lab_peer_open(p, m, type, dim, api, TOL, TOL, hstart);
 }
 
 static int same_run(const sus_model *m, const sus_exact_fast *red, const gsl_odeiv2_step_type *type,
@@ -115,6 +115,26 @@ static void check_reduced(void)
     }
 }
 
+/* The full problem's error control: abs = rel = TOL, or (rel 0) the absolute error alone. |y| is
+ * of order one, so GSL's tolerance D = abs + rel |y| about halves without rel and the run takes
+ * more steps: a rel that did not reach GSL would give the same run. */
+static void check_abs_only(const sus_model *m)
+{
+    long steps[2] = {0, 0};
+    for (int c = 0; c < 2; c++) {
+        sus_lab_peer p;
+        double y[11];
+        if (sus_lab_peer_open(&p, m, gsl_odeiv2_step_rk8pd, 6, SUS_LAB_PEER_DRIVER, TOL,
+                              c ? 0.0 : TOL, 1.0) == 0)
+            sus_lab_peer_run(&p, SUS_PAPER_OMEGA0, T_END, y, &steps[c]);
+        sus_lab_peer_close(&p);
+    }
+    CHECK(steps[0] > 0 && steps[1] > steps[0],
+          "GSL rk8pd (w,q) driver: the absolute error alone takes more steps (%ld) than abs = rel "
+          "(%ld)",
+          steps[1], steps[0]);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -137,5 +157,6 @@ int main(void)
                           "run equals a fresh run, bit for bit",
                           types[k]->name, dims[d], api ? "evolve" : "driver", hstarts[h]);
     check_reduced();
+    check_abs_only(&m);
     return check_summary("test_peers");
 }
