@@ -105,7 +105,7 @@ static void draw(cairo_t *cr, void *vctx)
     }
     sus_plot_pad(&lo, &hi, 1);
     sus_plot_axes_cell(&ax, cr, W, H, 1, 2, 1, 0, T_END, lo, hi, 0, 1);
-    sus_plot_frame(&ax, "t", "dist(R, R_ref), rows every 0.5", "(b)");
+    sus_plot_frame(&ax, "t", "attitude error dist(R(t), R\xe2\x82\x96)", "(b)");
     for (int i = 0; i < NTOL; i++) {
         const sus_plot_style e = sus_plot_style_of(colour(i), 1.2, 0, SUS_PLOT_NONE, 0, NULL);
         const sus_plot_style tl = sus_plot_style_of(colour(i), 0.8, 2, SUS_PLOT_NONE, 0, NULL);
@@ -178,7 +178,7 @@ int main(int argc, char **argv)
              "(a) the length of each accepted step against its start (the last one ends "
              "at t = 50), for TOL = %.0e, %.0e, %.0e (orders %d, %d, %d), and the\n"
              "radius its series is proved to converge in (dashed grey; no step may exceed it).\n"
-             "(b) the attitude error dist(R, R_ref) of rows every 0.5 "
+             "(b) the attitude error dist(R(t), R_k) of rows R_k every 0.5 "
              "time units (dense output from each step's series)\n"
              "against the long-double reference; dotted: TOL.\n"
              "Data: data/adaptive_steps.csv (the steps).\n",
