@@ -1,7 +1,7 @@
 #!/bin/sh
 # What a bench run says, from its directory alone (tools/bench.sh writes it: data/bench-run for
 # make bench, data/bench-recorded for make bench-record):
-#   md   a Markdown summary for the docs: the machine, the targets' PASS/MISS lines (from
+#   md   a Markdown summary for the docs: the machine, the targets' PASS/MISS/UNDECIDED lines (from
 #        bench.txt) and the tables: at each accuracy our fastest method and the best peer on the
 #        full problem, on the reduced one, and for w alone (what_to_use.tsv, with each point's
 #        fastest and slowest round from bench.csv), then the long runs (longruns.tsv)
@@ -12,8 +12,9 @@
 #        \BenchRunCores, \BenchRunLoad, \BenchRunNote (empty, or "; " and the note),
 #        \BenchRunSeconds), from machine.txt
 #   misses  the targets' count and the misses for the software note (\BenchTargetCount: the
-#        PASS and MISS lines of bench.txt; \BenchMissCount; \BenchMisses: each MISS line said
-#        short, its measured value and its target, separated by semicolons), from bench.txt
+#        PASS, MISS and UNDECIDED lines of bench.txt; \BenchMissCount; \BenchMisses: each MISS
+#        line said short, its measured value and its target, separated by semicolons;
+#        \BenchUndecidedCount and \BenchUndecided likewise), from bench.txt
 # Usage: bench_summary.sh DIR md|tex|misses [NAME] (to stdout; NAME: the directory's name to
 # print, if DIR is where it is being written)
 set -eu
@@ -55,7 +56,7 @@ EOF
 [ -z "$(field note)" ] || printf '| note | %s |\n' "$(field note)"
 printf '\nTimes are the CPU time of the bench'"'"'s thread (the wall-clock targets excepted); ratios\n'
 printf 'measured in one run are what carries from machine to machine.\n\n## Targets\n\n'
-grep -E '^  (PASS|MISS) ' "$D/bench.txt" | sed 's/^  \(PASS\|MISS\) /- **\1** /'
+grep -E '^  (PASS|MISS|UNDECIDED) ' "$D/bench.txt" | sed -E 's/^  (PASS|MISS|UNDECIDED) /- **\1** /'
 printf '\n## Information\n\n'
 grep -E '^  info ' "$D/bench.txt" | sed 's/^  info /- /'
 tsv=$D/what_to_use.tsv csv=$D/bench.csv

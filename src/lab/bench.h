@@ -154,6 +154,10 @@ typedef struct {
     char name[64];
     double orth, energy,
         w3; /* max over the run of |R^T R - I| (||q| - 1| for (w, q)), |E - E0|, |w3| */
+    /* Where E is kept by solving each substep's equation: sqrt(n) u E0 over the run's n substeps,
+     * the size of a random walk of one rounding of E per substep (u = 2^-53), the scale below
+     * which no such run can be expected to stay; NAN for the other methods. */
+    double e_scale;
     int ours;
     size_t dim; /* a peer's formulation */
 } sus_lab_bench_longrun;

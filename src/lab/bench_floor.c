@@ -12,8 +12,9 @@ int sus_lab_bench_is_ours_preserving(const sus_lab_bench_series *s)
     return s->ours && s->preserves;
 }
 
-sus_lab_bench_best sus_lab_bench_fastest(const sus_lab_bench *b, double level, int which,
-                                         int (*want)(const sus_lab_bench_series *))
+/* The fastest point by the median of its rounds (by_min 0) or by its fastest round (by_min 1). */
+static sus_lab_bench_best fastest_by(const sus_lab_bench *b, double level, int which,
+                                     int (*want)(const sus_lab_bench_series *), int by_min)
 {
     sus_lab_bench_best best = {INFINITY, -1, -1};
     for (int i = 0; i < b->nseries; i++) {
@@ -21,12 +22,18 @@ sus_lab_bench_best sus_lab_bench_fastest(const sus_lab_bench *b, double level, i
         if (!want(s))
             continue;
         for (int j = 0; j < s->n; j++) {
-            const double e = which ? s->err_R[j] : s->err_w[j];
-            if (e <= level && s->sec[j] < best.sec)
-                best = (sus_lab_bench_best){s->sec[j], i, j};
+            const double e = which ? s->err_R[j] : s->err_w[j], t = by_min ? s->smin[j] : s->sec[j];
+            if (e <= level && t < best.sec)
+                best = (sus_lab_bench_best){t, i, j};
         }
     }
     return best;
+}
+
+sus_lab_bench_best sus_lab_bench_fastest(const sus_lab_bench *b, double level, int which,
+                                         int (*want)(const sus_lab_bench_series *))
+{
+    return fastest_by(b, level, which, want, 0);
 }
 
 /* The points (time and error) of the peers that want selects into sec and err; returns how
@@ -113,23 +120,33 @@ sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b, sus_lab_
 {
     const double level = SUS_LAB_BENCH_LEVELS[l];
     const int which = c != SUS_LAB_BENCH_W_INFO;
-    sus_lab_bench_level v = {
-        sus_lab_bench_fastest(b, level, which, sus_lab_bench_is_ours_preserving),
-        sus_lab_bench_fastest(b, level, which,
-                              c == SUS_LAB_BENCH_ATT_REDUCED ? sus_lab_bench_is_reduced_peer
-                                                             : sus_lab_bench_is_peer),
-        INFINITY,
-        0.0,
-        c == SUS_LAB_BENCH_ATT_FULL      ? SUS_LAB_BENCH_LEVEL_TARGET[l]
-        : c == SUS_LAB_BENCH_ATT_REDUCED ? SUS_LAB_BENCH_REDUCED_TARGET
-                                         : NAN,
-        0};
+    int (*peer)(const sus_lab_bench_series *) =
+        c == SUS_LAB_BENCH_ATT_REDUCED ? sus_lab_bench_is_reduced_peer : sus_lab_bench_is_peer;
+    sus_lab_bench_level v = {fastest_by(b, level, which, sus_lab_bench_is_ours_preserving, 0),
+                             fastest_by(b, level, which, peer, 0),
+                             INFINITY,
+                             0.0,
+                             0.0,
+                             c == SUS_LAB_BENCH_ATT_FULL      ? SUS_LAB_BENCH_LEVEL_TARGET[l]
+                             : c == SUS_LAB_BENCH_ATT_REDUCED ? SUS_LAB_BENCH_REDUCED_TARGET
+                                                              : NAN,
+                             0,
+                             1};
     if (v.ours.series < 0)
         return v;
     v.floor = sus_lab_bench_floor_seconds(b, level, which);
     v.ratio = v.peer.series < 0 ? INFINITY : v.peer.sec / v.ours.sec;
+    const sus_lab_bench_best fo = fastest_by(b, level, which, sus_lab_bench_is_ours_preserving, 1),
+                             fp = fastest_by(b, level, which, peer, 1);
+    v.ratio_fast = fp.series < 0 ? INFINITY : fp.sec / fo.sec;
     v.pass = v.ratio >= v.target;
+    v.decided = isnan(v.target) || v.pass == (v.ratio_fast >= v.target);
     return v;
+}
+
+const char *sus_lab_bench_level_word(const sus_lab_bench_level *v)
+{
+    return isnan(v->target) ? "info" : !v->decided ? "UNDECIDED" : v->pass ? "PASS" : "MISS";
 }
 
 double sus_lab_bench_rk4_speedup(const sus_lab_bench *b)

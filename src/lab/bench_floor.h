@@ -49,11 +49,18 @@ typedef struct {
     double floor; /* sus_lab_bench_floor_seconds, when ours reach the level */
     /* the peer's seconds over ours: 0 when ours do not reach it, inf when no peer does */
     double ratio;
+    /* the same by the fastest rounds: each side's fastest point by its fastest round, over that
+     * round's seconds. A second estimate of the ratio from the same run, with no threshold of
+     * its own: where it falls on the other side of the target the verdict is undecided. */
+    double ratio_fast;
     double target; /* NAN: information only */
     int pass;      /* ratio >= target */
+    int decided;   /* ratio_fast gives the verdict pass gives (always, when there is no target) */
 } sus_lab_bench_level;
 sus_lab_bench_level sus_lab_bench_level_verdict(const sus_lab_bench *b, sus_lab_bench_comparison c,
                                                 int l);
+/* The verdict's word: "PASS", "MISS", "UNDECIDED" (the two estimates disagree) or "info". */
+const char *sus_lab_bench_level_word(const sus_lab_bench_level *v);
 /* "attitude", "attitude-reduced" or "omega": the comparison's name in the data files. */
 const char *sus_lab_bench_comparison_name(sus_lab_bench_comparison c);
 

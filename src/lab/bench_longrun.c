@@ -86,6 +86,16 @@ static int point_at_1e10(const sus_lab_bench_series *s)
     return -1;
 }
 
+/* sus_lab_bench_longrun's e_scale for point j of s: fixed steps of an implicit method. */
+static double rounding_scale(const sus_lab_bench_series *s, int j, double E0)
+{
+    if (!s->ours || s->tol_driven || !s->me->type->desc.implicit)
+        return NAN;
+    const sus_stepper_desc *d = &s->me->type->desc;
+    const double n = (double)lround(T_LONG / s->param[j]) * (d->substeps > 0 ? d->substeps : 1);
+    return sqrt(n) * 0x1p-53 * fabs(E0);
+}
+
 void sus_lab_bench_long_runs(sus_lab_bench *b)
 {
     const double E0 = sus_energy(&b->pb.model, b->pb.ex.w0);
@@ -102,6 +112,7 @@ void sus_lab_bench_long_runs(sus_lab_bench *b)
         L->orth = a.orth;
         L->energy = a.energy;
         L->w3 = a.w3;
+        L->e_scale = rounding_scale(s, j, E0);
         L->ours = s->ours;
         L->dim = s->dim;
     }

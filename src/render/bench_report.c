@@ -102,12 +102,6 @@ static void print_floor(int l, const sus_lab_bench_level *v)
                v->ours.sec / v->floor);
 }
 
-/* The line's head: PASS or MISS against a target, "info" for a comparison without one. */
-static const char *verdict(const sus_lab_bench_level *v)
-{
-    return isnan(v->target) ? "info" : v->pass ? "PASS" : "MISS";
-}
-
 static const char *const WHAT[SUS_LAB_BENCH_NCOMP] = {"attitude", "attitude (reduced problem)",
                                                       "w"};
 static const char *const AGAINST[SUS_LAB_BENCH_NCOMP] = {
@@ -125,8 +119,9 @@ static void print_level(const sus_lab_bench *b, sus_lab_bench_comparison c, int 
     const sus_lab_bench_series *os = b->S[v.ours.series];
     if (c == SUS_LAB_BENCH_ATT_FULL)
         print_floor(l, &v);
-    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) ", verdict(&v), WHAT[c],
-           LEVELS[l], v.ours.sec, os->name, sus_lab_bench_param_name(os), os->param[v.ours.point]);
+    printf("  %s %s accuracy %.0e at t = 50: ours %.3g s (%s, %s %.4g) ",
+           sus_lab_bench_level_word(&v), WHAT[c], LEVELS[l], v.ours.sec, os->name,
+           sus_lab_bench_param_name(os), os->param[v.ours.point]);
     if (v.peer.series < 0) {
         printf("; no peer configuration reaches it\n");
         return;
@@ -138,7 +133,7 @@ static void print_level(const sus_lab_bench *b, sus_lab_bench_comparison c, int 
     if (isnan(v.target))
         printf(" (no target: the closed form gives w(t) in %.3g ns)\n", b->cost.ns_exact);
     else
-        printf(" (target %gx)\n", v.target);
+        printf(" (target %gx; fastest rounds %.2fx)\n", v.target, v.ratio_fast);
 }
 
 void sus_plot_bench_costs_and_targets(const sus_lab_bench *b)
@@ -158,8 +153,11 @@ void sus_plot_bench_long_runs(const sus_lab_bench *b)
         if (L->ours) {
             const int ok = L->orth <= 1e-13 && L->energy <= 1e-13 && L->w3 == 0.0;
             printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g "
-                   "(targets 1e-13, 1e-13, 0)\n",
+                   "(targets 1e-13, 1e-13, 0)",
                    ok ? "PASS" : "MISS", L->name, L->orth, L->energy, L->w3);
+            if (isfinite(L->e_scale))
+                printf("; one rounding of E per substep, as a random walk: %.2g", L->e_scale);
+            printf("\n");
         } else {
             printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: "
                    "%s = %.2g, |E - E0| = %.2g\n",

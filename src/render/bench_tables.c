@@ -102,9 +102,9 @@ static void tex_levels(FILE *fp, const sus_lab_bench *b)
                                   vD = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_REDUCED, l),
                                   vw = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, l);
         tex_ratio(fp, "BenchRatioR", LVL[l], vR.ratio, 2);
-        fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], pass_word(vR.pass));
+        fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vR));
         tex_ratio(fp, "BenchRatioRed", LVL[l], vD.ratio, 2);
-        fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s}\n", LVL[l], pass_word(vD.pass));
+        fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vD));
         tex_ratio(fp, "BenchRatioW", LVL[l], vw.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", LVL[l], vR.target);
     }
@@ -177,8 +177,7 @@ static void write_what_to_use(FILE *fp, const sus_lab_bench *b)
                     sus_lab_bench_comparison_name((sus_lab_bench_comparison)c), LEVELS[l], os->name,
                     v.ours.sec, ps ? ps->name : "none reaches it",
                     ps ? sus_lab_bench_param_name(ps) : "none", ps ? ps->param[v.peer.point] : NAN,
-                    ps ? v.peer.sec : NAN, v.ratio, v.target,
-                    isnan(v.target) ? "info" : pass_word(v.pass), args);
+                    ps ? v.peer.sec : NAN, v.ratio, v.target, sus_lab_bench_level_word(&v), args);
         }
 }
 

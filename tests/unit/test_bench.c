@@ -125,6 +125,29 @@ static void check_implicit(sus_lab_bench *b)
           "a step with no measured cost (NaN) is a MISS, not a PASS");
 }
 
+/* The second estimate: each side's fastest round. Where it lands on the other side of the target
+ * the verdict is UNDECIDED; where both land on the same side, PASS or MISS as the medians say. */
+static void check_undecided(sus_lab_bench *b)
+{
+    const double target = SUS_LAB_BENCH_LEVEL_TARGET[0]; /* the medians give 3x: a PASS */
+    b->S[1]->smin[0] = 0.99 * target * b->S[0]->smin[0];
+    sus_lab_bench_level v = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_FULL, 0);
+    CHECK(v.pass && !v.decided && strcmp(sus_lab_bench_level_word(&v), "UNDECIDED") == 0 &&
+              fabs(v.ratio_fast - 0.99 * target) < 1e-12,
+          "a PASS by the medians that the fastest rounds put below the target is UNDECIDED "
+          "(fastest rounds %g)",
+          v.ratio_fast);
+    b->S[0]->smin[0] *= 0.9;
+    v = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_FULL, 0);
+    CHECK(v.pass && v.decided && strcmp(sus_lab_bench_level_word(&v), "PASS") == 0,
+          "the fastest rounds on the same side as the medians: PASS (fastest rounds %g)",
+          v.ratio_fast);
+    b->S[0]->smin[0] = b->S[0]->sec[0], b->S[1]->smin[0] = b->S[1]->sec[0];
+    const sus_lab_bench_level w = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, 0);
+    CHECK(w.decided && strcmp(sus_lab_bench_level_word(&w), "info") == 0,
+          "a comparison without a target is information, never undecided");
+}
+
 static int same_series(const sus_lab_bench_series *a, const sus_lab_bench_series *b)
 {
     const double rel = 1e-5; /* bench.csv prints errors and seconds to 6 digits */
@@ -227,6 +250,7 @@ int main(void)
     check_verdicts(&b);
     check_round_trip(&b);
     check_implicit(&b);
+    check_undecided(&b);
     sus_lab_bench_free(&b);
     return check_summary("test_bench");
 }
