@@ -93,8 +93,9 @@ static void tex_ratio(FILE *fp, const char *name, const char *suffix, double r, 
         fprintf(fp, "\\newcommand{\\%s%s}{%.*f}\n", name, suffix, digits, r);
 }
 
-/* Two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict. The
- * w ratios are information (no target, no verdict). */
+/* Two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict. Each
+ * attitude ratio also by the fastest rounds (sus_lab_bench_level: the verdict's second estimate).
+ * The w ratios are information (no target, no verdict). */
 static void tex_levels(FILE *fp, const sus_lab_bench *b)
 {
     for (int l = 0; l < NLEVELS; l++) {
@@ -102,8 +103,10 @@ static void tex_levels(FILE *fp, const sus_lab_bench *b)
                                   vD = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_ATT_REDUCED, l),
                                   vw = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, l);
         tex_ratio(fp, "BenchRatioR", LVL[l], vR.ratio, 2);
+        tex_ratio(fp, "BenchRatioFastR", LVL[l], vR.ratio_fast, 2);
         fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vR));
         tex_ratio(fp, "BenchRatioRed", LVL[l], vD.ratio, 2);
+        tex_ratio(fp, "BenchRatioFastRed", LVL[l], vD.ratio_fast, 2);
         fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vD));
         tex_ratio(fp, "BenchRatioW", LVL[l], vw.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", LVL[l], vR.target);

@@ -14,10 +14,11 @@
  *      over the window, and the caller asserts it within WINDOW_ORDER_TOL of the order.
  *   2. Where no run has one slope (an order so high that the error reaches round-off before its
  *      asymptotic regime: the slope still rises as eps falls), the fit is over the smallest-eps
- *      candidates, back to an octave (at least 3 points), the end nearest that regime. That slope
- *      is a lower estimate, and the caller asserts only order >= p / 2: what breaks a method of
- *      order p built from a second-order map (a weight that misses the order conditions, a
- *      dropped substep) leaves order 2 or less, a series truncated at half its degree order p/2.
+ *      candidates, back to an octave or, where fewer remain, all of them (at least 3 points),
+ *      the end nearest that regime. That slope is a lower estimate, and the caller asserts only
+ *      order >= p / 2: what breaks a method of order p built from a second-order map (a weight
+ *      that misses the order conditions, a dropped substep) leaves order 2 or less, a series
+ *      truncated at half its degree order p/2.
  *      It cannot tell p from p - 1.
  *
  * Why the numbers. The first neglected term of the error expansion bends the log-log slope by a
