@@ -215,7 +215,7 @@ static void draw_key(cairo_t *cr, double x0, int H, double fs)
     }
 }
 
-static void label_frame(uint32_t *px, int W, int H, double time)
+static void label_frame(uint32_t *px, int W, int H, double time, int with_key)
 {
     cairo_surface_t *s =
         cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
@@ -235,7 +235,8 @@ static void label_frame(uint32_t *px, int W, int H, double time)
     cairo_set_font_size(cr, 0.9 * fs);
     cairo_move_to(cr, 0.6 * fs, H - 0.6 * fs);
     cairo_show_text(cr, buf);
-    draw_key(cr, 6.0 * fs, H, 0.45 * fs);
+    if (with_key)
+        draw_key(cr, 6.0 * fs, H, 0.45 * fs);
     cairo_destroy(cr);
     cairo_surface_flush(s);
     cairo_surface_destroy(s);
@@ -326,26 +327,33 @@ static int draw_frame(frames *fr, sus_refatt *ra, int f, const char *figdir, FIL
         sus_plot_scene_draw(&fr->sc, &fr->body[b], b * (W / 3), 0, W / 3, H, 0);
     }
     glFinish();
-    label_frame(fr->px, W, H, time);
+    /* the filmstrip's frames without the key: the strip prints one key, large enough to read */
+    while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9) {
+        uint32_t *dst = fr->strip + (size_t)(fr->strip_next++) * W * H;
+        memcpy(dst, fr->px, (size_t)W * H * sizeof(uint32_t));
+        label_frame(dst, W, H, time, 0);
+    }
+    label_frame(fr->px, W, H, time, 1);
     snprintf(path, sizeof path, "%s/attitude/frame_%04d.png", figdir, f);
     if (write_png(fr->px, W, H, path) != 0)
         return -1;
     suslov_video_frame(video, fr->px, W, H);
-    while (fr->strip && fr->strip_next < 6 && time >= STRIP[fr->strip_next] * cfg->t_end - 1e-9)
-        memcpy(fr->strip + (size_t)(fr->strip_next++) * W * H, fr->px,
-               (size_t)W * H * sizeof(uint32_t));
     return 0;
 }
 
-/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times. No title: the caption that
- * prints it (attitude.txt, the software note) says what it shows. */
+/* The filmstrip: 2 columns x 3 rows of frames at the STRIP times, and below them one key for all
+ * six, its text as tall as the frames' time labels (which the software note prints at 7 pt). No
+ * title: the caption that prints it (attitude.txt, the software note) says what it shows. */
 static int write_filmstrip(const frames *fr, const char *figdir)
 {
-    const int W = fr->W, H = fr->H, SW = 2 * W, SH = 3 * H;
+    const int W = fr->W, H = fr->H, SW = 2 * W;
+    const double fs = 0.9 * H / 18.0; /* label_frame's time label */
+    const int SH = 3 * H + (int)ceil(5.5 * fs);
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, SW, SH);
     cairo_t *cr = cairo_create(s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_source_rgb(cr, 0.97, 0.97, 0.95); /* the frames' background */
     cairo_paint(cr);
+    draw_key(cr, 0.6 * fs, SH, fs);
     for (int i = 0; i < 6; i++) {
         cairo_surface_t *f = cairo_image_surface_create_for_data(
             (unsigned char *)(fr->strip + (size_t)i * W * H), CAIRO_FORMAT_ARGB32, W, H, 4 * W);
@@ -356,8 +364,8 @@ static int write_filmstrip(const frames *fr, const char *figdir)
     cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
     cairo_set_line_width(cr, 2.0);
     cairo_move_to(cr, W, 0);
-    cairo_line_to(cr, W, SH);
-    for (int r = 1; r < 3; r++) {
+    cairo_line_to(cr, W, 3 * H);
+    for (int r = 1; r <= 3; r++) {
         cairo_move_to(cr, 0, r * H);
         cairo_line_to(cr, SW, r * H);
     }

@@ -4,9 +4,48 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-/* Series i's colour: ours take hues around the wheel, peers grey (on the reduced problem a
- * bluer grey). */
+/* Whether series a and b of ours run the same method: their names start with it ("comp6-kl +
+ * cayley-mid", "taylor8 (w only)"), in a live run and in one read back from bench.csv alike. */
+static int same_method(const sus_lab_bench_series *a, const sus_lab_bench_series *b)
+{
+    const size_t n = strcspn(a->name, " ");
+    return a->ours && b->ours && n == strcspn(b->name, " ") && strncmp(a->name, b->name, n) == 0;
+}
+
+/* Whether series j is the first of ours to run its method. */
+static int first_of_method(const sus_lab_bench *b, int j)
+{
+    if (!b->S[j]->ours)
+        return 0;
+    for (int k = 0; k < j; k++)
+        if (same_method(b->S[k], b->S[j]))
+            return 0;
+    return 1;
+}
+
+/* Series i's method among ours (0, 1, ... in order of first appearance; *nmethods in all) and, in
+ * *nth, how many of that method's series come before it: the variants of a method (another
+ * reconstruction, w alone) share its hue and marker and differ by dash, so that the legend's
+ * series need half as many hues. */
+static int method_slot(const sus_lab_bench *b, int i, int *nth, int *nmethods)
+{
+    int slot = 0, seen = 0;
+    *nth = *nmethods = 0;
+    for (int j = 0; j < b->nseries; j++) {
+        const int same = same_method(b->S[j], b->S[i]);
+        *nmethods += first_of_method(b, j);
+        if (same && j < i)
+            (*nth)++;
+        if (same && !seen)
+            slot = *nmethods - 1, seen = 1;
+    }
+    return slot;
+}
+
+/* Series i's colour: ours take hues around the wheel, one per method; peers grey (on the reduced
+ * problem a bluer grey). */
 static void series_colour(const sus_lab_bench *b, int i, double rgb[3])
 {
     if (!b->S[i]->ours) {
@@ -15,13 +54,8 @@ static void series_colour(const sus_lab_bench *b, int i, double rgb[3])
             rgb[0] = rgb[1] = 0.66, rgb[2] = 0.82;
         return;
     }
-    int k = 0, n = 0;
-    for (int j = 0; j < b->nseries; j++)
-        if (b->S[j]->ours) {
-            if (j == i)
-                k = n;
-            n++;
-        }
+    int nth, n;
+    const int k = method_slot(b, i, &nth, &n);
     const double h = 6.0 * (double)k / (double)n, x = 1.0 - fabs(fmod(h, 2.0) - 1.0), v = 0.85;
     /* the hue's sector: which of r, g, b is full, which is x */
     static const int full[6] = {0, 1, 1, 2, 2, 0}, part[6] = {1, 0, 2, 1, 0, 2};
@@ -40,18 +74,19 @@ static void series_colour(const sus_lab_bench *b, int i, double rgb[3])
 #define WP_PANEL_H 230.0
 #define WP_LEGEND_Y (28.0 + WP_PANEL_H + 30.0)
 
-/* The styles of the series: ours with markers in turn, peers as grey dots without a label (on the
- * reduced problem, dashed). */
+/* The styles of the series: ours with a marker per method in turn, a method's first series solid
+ * and its others dashed; peers as grey dots without a label (on the reduced problem, dashed). */
 static void wp_styles(const sus_lab_bench *b, sus_plot_style *st, double (*rgb)[3])
 {
     static const int mk[6] = {SUS_PLOT_CIRCLE,  SUS_PLOT_SQUARE, SUS_PLOT_TRIANGLE,
                               SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
-    int k = 0;
     for (int i = 0; i < b->nseries; i++) {
         const sus_lab_bench_series *s = b->S[i];
         series_colour(b, i, rgb[i]);
-        st[i] = sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, s->reduced,
-                                  s->ours ? mk[k++ % 6] : SUS_PLOT_DOT, s->ours ? 3.5 : 2.0,
+        int nth = 0, n = 0;
+        const int k = s->ours ? method_slot(b, i, &nth, &n) : 0;
+        st[i] = sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, s->ours ? nth > 0 : s->reduced,
+                                  s->ours ? mk[k % 6] : SUS_PLOT_DOT, s->ours ? 3.5 : 2.0,
                                   s->ours ? s->name : NULL);
     }
 }
