@@ -104,12 +104,15 @@ if [ "$cf" != clang-format ]; then
 fi
 # run FILE: the commands of FILE, quiet unless they fail
 run_block() { sh -e "$1" >run.log 2>&1 || { sed 's/^/    /' run.log; return 1; }; }
+# what to do when a new file is there already: the tree holds the guide's own example
+HELD=" (it exists: this tree already holds the guide's example; undo it, or follow"
+HELD="$HELD $GUIDE under another name, as it says)"
 k=1
 while [ "$k" -le "$n" ]; do
     set -- $(cat "steps/$k.how")
     how=${1:-} file=${2:-} list=${3:-}
     case $how in
-        new) check "step $k: $file is new" test ! -e "$file" && mkdir -p "$(dirname "$file")" &&
+        new) check "step $k: $file is new$HELD" test ! -e "$file" && mkdir -p "$(dirname "$file")" &&
             cp "steps/$k" "$file" ;;
         list) cp "steps/$k" "$S/add"
             check "step $k: the list $list in $file takes the lines" list_add "$file" "$list" ;;
