@@ -347,7 +347,7 @@ $(BUILD)/fuzz: $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(wildcard tests/cli/fuzz*
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_LDFLAGS) $^ -o $@
 
-# Speed and accuracy: the PASS/MISS lines of the speed targets (never a failing test). make bench
+# Speed and accuracy: the PASS/MISS/UNDECIDED lines of the speed targets (never a failing test). make bench
 # writes a fresh run, whole or not at all, into data/bench-run/ and its figures into
 # $(BUILD)/bench-run/; make bench-record writes the run the companion and the docs quote into
 # data/bench-recorded/ (committed: a deliberate step, the only one that writes there; BENCH_NOTE

@@ -1,6 +1,6 @@
 /* make bench: work-precision of every registered method against library integrators, the cost of
  * one step, the long-run structure errors, and the speed targets of the benchmark, printed as
- * PASS/MISS lines (never a failing test: the machine is shared and noisy).
+ * PASS, MISS or UNDECIDED lines (never a failing test: the machine is shared and noisy).
  * Usage: bench FIGDIR DATADIR, or bench --plot FIGDIR DATADIR
  *
  * Peers, each given the same problem (the paper's body, w(0) = (0.4, 0.5), t in [0, 50]), at
