@@ -155,8 +155,8 @@ typedef struct {
     double orth, energy,
         w3; /* max over the run of |R^T R - I| (||q| - 1| for (w, q)), |E - E0|, |w3| */
     /* Where E is kept by solving each substep's equation: sqrt(n) u E0 over the run's n substeps,
-     * the size of a random walk of one rounding of E per substep (u = 2^-53), the scale below
-     * which no such run can be expected to stay; NAN for the other methods. */
+     * the size a random walk of one rounding of E per substep reaches (u = 2^-53): a run's
+     * |E - E0| near it is rounding, one far above it a steady drift. NAN for the other methods. */
     double e_scale;
     int ours;
     size_t dim; /* a peer's formulation */
