@@ -11,8 +11,8 @@
 const double SUS_LAB_BENCH_LEVELS[SUS_LAB_BENCH_NLEVELS] = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
 /* Set before the methods that use the closed form were built, from a prototype's ceilings: Magnus6
  * steps along the cheap closed-form w at the loose levels (1e-4, 1e-6; that Magnus6 is timed here
- * as a peer on the reduced problem, magnus6.h), and at the others the ratios the Taylor methods
- * had already reached, kept. */
+ * as a peer on the reduced problem, magnus6.h), and at the others a little below the ratios the
+ * Taylor methods had already reached, as a guard. */
 const double SUS_LAB_BENCH_LEVEL_TARGET[SUS_LAB_BENCH_NLEVELS] = {1.8, 2.4, 2.2, 3.0, 3.7, 4.5};
 
 int sus_lab_bench_init(sus_lab_bench *b, void (*progress)(const char *what))
