@@ -49,9 +49,9 @@ function wall(what, t,    secs, tg) {
     return what ", $" secs "$\\,s " tg
 }
 
-# T = 1e4, NAME: |R^T R - I| = a, |E - E0| = b, |w3| = c (targets ta, tb, tc)[; ... random walk:
-# s]: each quantity over its target, and the rounding scale s where the line gives it.
-function longrun(t,    name, v, tg, sym, i, o, rw) {
+# T = 1e4, NAME: |R^T R - I| = a, |E - E0| = b, |w3| = c (targets ta, tb, tc)[; |E - E0| by T/2:
+# h]: each quantity over its target, and the energy error by half the run where the line gives it.
+function longrun(t,    name, v, tg, sym, i, o, half) {
     name = between(t, "T = 1e4, ", ": |R^T R - I|")
     v[1] = between(t, "|R^T R - I| = ", ",")
     v[2] = between(t, "|E - E0| = ", ",")
@@ -63,9 +63,9 @@ function longrun(t,    name, v, tg, sym, i, o, rw) {
         if (v[i] + 0 > tg[i] + 0)
             o = o (o == "" ? "" : " and ") "$" sym[i] "=" num(v[i]) "$ (target~$\\le " \
                 num(tg[i]) "$)"
-    rw = between(t, "as a random walk: ", "")
-    if (rw != "")
-        o = o ", where one rounding of $E$ per substep as a random walk comes to $" num(rw) "$"
+    half = between(t, "|E - E0| by T/2: ", "")
+    if (half != "")
+        o = o ", $" num(half) "$ already by $T/2$"
     return "\\cmd{" latex_esc(name) "} at $T=10^{4}$, " o
 }
 

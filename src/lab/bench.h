@@ -154,10 +154,9 @@ typedef struct {
     char name[64];
     double orth, energy,
         w3; /* max over the run of |R^T R - I| (||q| - 1| for (w, q)), |E - E0|, |w3| */
-    /* Where E is kept by solving each substep's equation: sqrt(n) u E0 over the run's n substeps,
-     * the size a random walk of one rounding of E per substep reaches (u = 2^-53): a run's
-     * |E - E0| near it is rounding, one far above it a steady drift. NAN for the other methods. */
-    double e_scale;
+    /* max |E - E0| over the first half of the run (ours): equal to energy where the error was
+     * made early (in the transient) and then stayed, below it where E still drifts. */
+    double energy_half;
     int ours;
     size_t dim; /* a peer's formulation */
 } sus_lab_bench_longrun;

@@ -17,14 +17,17 @@
 
 typedef struct {
     const sus_model *m;
-    double e0, orth, energy, w3;
+    double e0, orth, energy, w3, energy_half;
 } lr_acc;
 
 static int lr_emit(void *vctx, const sus_row *row)
 {
     lr_acc *a = vctx;
+    const double de = fabs(sus_energy(a->m, row->w) - a->e0);
     a->orth = fmax(a->orth, sus_so3_orth_defect(row->R));
-    a->energy = fmax(a->energy, fabs(sus_energy(a->m, row->w) - a->e0));
+    a->energy = fmax(a->energy, de);
+    if (row->t <= 0.5 * T_LONG)
+        a->energy_half = fmax(a->energy_half, de);
     a->w3 = fmax(a->w3, fabs(row->w[2]));
     return 0;
 }
@@ -86,16 +89,6 @@ static int point_at_1e10(const sus_lab_bench_series *s)
     return -1;
 }
 
-/* sus_lab_bench_longrun's e_scale for point j of s: fixed steps of an implicit method. */
-static double rounding_scale(const sus_lab_bench_series *s, int j, double E0)
-{
-    if (!s->ours || s->tol_driven || !s->me->type->desc.implicit)
-        return NAN;
-    const sus_stepper_desc *d = &s->me->type->desc;
-    const double n = (double)lround(T_LONG / s->param[j]) * (d->substeps > 0 ? d->substeps : 1);
-    return sqrt(n) * 0x1p-53 * fabs(E0);
-}
-
 void sus_lab_bench_long_runs(sus_lab_bench *b)
 {
     const double E0 = sus_energy(&b->pb.model, b->pb.ex.w0);
@@ -107,12 +100,12 @@ void sus_lab_bench_long_runs(sus_lab_bench *b)
             continue;
         sus_lab_bench_longrun *L = &b->LR[b->nlr++];
         snprintf(L->name, sizeof L->name, "%.63s", s->name);
-        lr_acc a = {&b->pb.model, E0, 0.0, 0.0, 0.0};
+        lr_acc a = {&b->pb.model, E0, 0.0, 0.0, 0.0, 0.0};
         (s->ours ? long_run_ours : long_run_peer)(b, s, j, &a);
         L->orth = a.orth;
         L->energy = a.energy;
         L->w3 = a.w3;
-        L->e_scale = rounding_scale(s, j, E0);
+        L->energy_half = a.energy_half;
         L->ours = s->ours;
         L->dim = s->dim;
     }

@@ -184,7 +184,7 @@ static void draw_key(cairo_t *cr, double x0, int H, double fs)
         {SUS_PLOT_SCENE_RGB_AXES, 0, 0, 1, "e\xe2\x82\x81, e\xe2\x82\x82: the other body axes"},
         {SUS_PLOT_SCENE_RGB_STAND, 0, 0, 2, "the stand, with the fixed point at its top"},
         {SUS_PLOT_SCENE_RGB_OMEGA, 0, 1, 0, "\xcf\x89, the angular velocity, drawn in space"},
-        {SUS_PLOT_SCENE_RGB_BOX, 1, 1, 1, "the body: the principal axes of I"},
+        {SUS_PLOT_SCENE_RGB_BOX, 1, 1, 1, "the body: the principal axes of I's symmetric part"},
     };
     enum { N = sizeof KEY / sizeof KEY[0] };
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
