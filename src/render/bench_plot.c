@@ -44,18 +44,16 @@ static int method_slot(const sus_lab_bench *b, int i, int *nth, int *nmethods)
     return slot;
 }
 
-/* Series i's colour: ours take hues around the wheel, one per method; peers grey (on the reduced
- * problem a bluer grey). */
-static void series_colour(const sus_lab_bench *b, int i, double rgb[3])
+/* A series' colour: ours take hues around the wheel, the k-th of n methods the k-th hue; peers
+ * grey (on the reduced problem a bluer grey). */
+static void series_colour(const sus_lab_bench_series *s, int k, int n, double rgb[3])
 {
-    if (!b->S[i]->ours) {
+    if (!s->ours) {
         rgb[0] = rgb[1] = rgb[2] = 0.62;
-        if (b->S[i]->reduced)
+        if (s->reduced)
             rgb[0] = rgb[1] = 0.66, rgb[2] = 0.82;
         return;
     }
-    int nth, n;
-    const int k = method_slot(b, i, &nth, &n);
     const double h = 6.0 * (double)k / (double)n, x = 1.0 - fabs(fmod(h, 2.0) - 1.0), v = 0.85;
     /* the hue's sector: which of r, g, b is full, which is x */
     static const int full[6] = {0, 1, 1, 2, 2, 0}, part[6] = {1, 0, 2, 1, 0, 2};
@@ -82,9 +80,9 @@ static void wp_styles(const sus_lab_bench *b, sus_plot_style *st, double (*rgb)[
                               SUS_PLOT_DIAMOND, SUS_PLOT_CROSS,  SUS_PLOT_DOT};
     for (int i = 0; i < b->nseries; i++) {
         const sus_lab_bench_series *s = b->S[i];
-        series_colour(b, i, rgb[i]);
         int nth = 0, n = 0;
         const int k = s->ours ? method_slot(b, i, &nth, &n) : 0;
+        series_colour(s, k, n, rgb[i]);
         st[i] = sus_plot_style_of(rgb[i], s->ours ? 1.1 : 0.5, s->ours ? nth > 0 : s->reduced,
                                   s->ours ? mk[k % 6] : SUS_PLOT_DOT, s->ours ? 3.5 : 2.0,
                                   s->ours ? s->name : NULL);

@@ -153,9 +153,8 @@ void sus_plot_bench_long_runs(const sus_lab_bench *b)
         if (L->ours) {
             const int ok = L->orth <= 1e-13 && L->energy <= 1e-13 && L->w3 == 0.0;
             printf("  %s T = 1e4, %s: |R^T R - I| = %.2g, |E - E0| = %.2g, |w3| = %.2g "
-                   "(targets 1e-13, 1e-13, 0)",
-                   ok ? "PASS" : "MISS", L->name, L->orth, L->energy, L->w3);
-            printf("; |E - E0| by T/2: %.2g\n", L->energy_half);
+                   "(targets 1e-13, 1e-13, 0); |E - E0| by T/2: %.2g\n",
+                   ok ? "PASS" : "MISS", L->name, L->orth, L->energy, L->w3, L->energy_half);
         } else {
             printf("  (peer) T = 1e4, %s at the tolerance reaching 1e-10 at t = 50: "
                    "%s = %.2g, |E - E0| = %.2g\n",

@@ -50,8 +50,8 @@ extern const double SUS_PLOT_RED[3], SUS_PLOT_BLUE[3], SUS_PLOT_GREEN[3], SUS_PL
     SUS_PLOT_PURPLE[3], SUS_PLOT_GREY[3], SUS_PLOT_BLACK[3];
 /* Colours for one curve per method: Okabe-Ito first (told apart by colour-blind readers), then
  * dark red, black, brown, slate blue, dark green, olive and magenta (one colour for each of the
- * thirteen methods of a convergence figure), and no grey (reference curves are
- * grey); markers tell the rest apart. Curve i takes SUS_PLOT_PALETTE[i % SUS_PLOT_PALETTE_N]. */
+ * thirteen methods of a convergence figure), and no grey (reference curves are grey); markers
+ * tell the rest apart. Curve i takes SUS_PLOT_PALETTE[i % SUS_PLOT_PALETTE_N]. */
 #define SUS_PLOT_PALETTE_N 13
 extern const double SUS_PLOT_PALETTE[SUS_PLOT_PALETTE_N][3];
 sus_plot_style sus_plot_style_of(const double rgb[3], double width, int dash, int marker,
