@@ -85,7 +85,7 @@ endif
 # programs that draw (figures, animation, bench, and the unit tests that include a header of
 # src/render) also Cairo and OSMesa (LIBS_DRAW). A linker that keeps every library it is given
 # (clang's default) would otherwise map Cairo, OSMesa and LLVM into suslov.
-PKGS       = gsl cairo osmesa
+PKGS       = gsl cairo osmesa libpng
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 LIBS_RUN   = $(shell pkg-config --libs gsl) -lm
 LIBS_DRAW  = $(shell pkg-config --libs $(PKGS)) -lm

@@ -38,7 +38,7 @@ have make || missing="$missing make"
 have clang-format-14 || missing="$missing clang-format-14"
 have pkg-config || missing="$missing pkg-config"
 # pkg-config module:Debian package
-for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev; do
+for pair in gsl:libgsl-dev cairo:libcairo2-dev osmesa:libosmesa6-dev libpng:libpng-dev; do
     mod=${pair%%:*} pkg=${pair#*:}
     { have pkg-config && pkg-config --exists "$mod"; } || missing="$missing $pkg"
 done

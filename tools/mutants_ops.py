@@ -254,7 +254,7 @@ class Scratch:
         # which a sanitizer's shadow reservations exceed, as under SAN=1
         self.env["SUSLOV_SAN"] = "1"
         self.b = "build/mut"
-        pkg = ["pkg-config", "--cflags", "gsl", "cairo", "osmesa"]
+        pkg = ["pkg-config", "--cflags", "gsl", "cairo", "osmesa", "libpng"]
         self.pkg_cflags = subprocess.run(pkg, capture_output=True, text=True).stdout.split()
         pkg[1] = "--libs"
         self.pkg_libs = subprocess.run(pkg, capture_output=True, text=True).stdout.split()

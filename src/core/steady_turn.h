@@ -14,8 +14,8 @@ extern "C" {
 
 /* The angle's error is a few 2^-104 of it (the speed's two-double rounding, times its condition,
  * sus_steady_speed; 2 pi's and the product's, 2^-106 each): below 2^50 radians that is still a
- * few roundings u = 2^-53, the accuracy the methods' tails promise. The methods' max_angle
- * (stepper.h): sus_run_tol refuses longer runs. */
+ * few roundings of 2^-53 (u/2) each, the accuracy the methods' tails promise. The methods'
+ * max_angle (stepper.h): sus_run_tol refuses longer runs. */
 #define SUS_STEADY_TURN_MAX_ANGLE 0x1p50
 
 /* |w_inf|, the speed of the steady rotation the motion of ex tends to (|w0| for a motion that

@@ -15,6 +15,7 @@
 #include "driver.h"
 #include "exact.h"
 #include "fig_output.h"
+#include "frame_png.h"
 #include "gl_context.h"
 #include "mat3.h"
 #include "progress.h"
@@ -253,13 +254,15 @@ static int write_surface_png(cairo_surface_t *s, const char *path)
     return 0;
 }
 
+/* A frame through frame_png.h's fast writer: frames are many and never committed. */
 static int write_png(const uint32_t *px, int W, int H, const char *path)
 {
-    cairo_surface_t *s =
-        cairo_image_surface_create_for_data((unsigned char *)px, CAIRO_FORMAT_ARGB32, W, H, 4 * W);
-    const int r = write_surface_png(s, path);
-    cairo_surface_destroy(s);
-    return r;
+    char err[512];
+    if (sus_plot_write_frame_png(px, W, H, path, err, sizeof err) != 0) {
+        fprintf(stderr, "animation: %s\n", err);
+        return -1;
+    }
+    return 0;
 }
 
 /* Times of the filmstrip frames, as fractions of t_end. */

@@ -9,10 +9,11 @@
  *   - R(50) from the doubles against the reference: the stated accuracy, max entry <= 2^-51;
  *   - R(50) from the decimals against R(50) from the doubles: the effect of reading the inputs
  *     one way or the other. Theory, before measuring: each rounded input (I12 = I21 = I32 = 0.1,
- *     I31 = 0.2, w01 = 0.4) is off by at most u = 2^-53 relative; the motion is a rotation by
+ *     I31 = 0.2, w01 = 0.4) is off by at most u/2 relative (u = SUS_U = 2^-52, as in every bound of
+ *     the ledger); the motion is a rotation by
  *     the angle Theta(T) = int_0^T |w| dt, whose rate depends on each input with a relative
  *     condition of about one (w scales with w0; the rate k and the direction of the limit with
- *     I's entries), so R(T) moves by at most about 5 u Theta; tolerance 8 u Theta, with Theta
+ *     I's entries), so R(T) moves by at most about 5 (u/2) Theta; tolerance 4 u Theta, with Theta
  *     bounded by T |w|max on the energy ellipse, |w|max = sqrt(2 E / lambda_min(I_m)).
  * The series: the field is quadratic, so the coefficients follow by Cauchy products; the nearest
  * singularity of w(t) on the paper's body is ~10.8 time units off the real axis, so at the step
@@ -30,7 +31,7 @@ typedef __float128 qreal;
 #define QN 40
 #define QSTEPS 200 /* steps of 1/4 to T */
 #define T_END 50.0
-#define U_DOUBLE 0x1p-53
+#define HALF_U (SUS_U / 2.0) /* a correctly rounded input's relative error, at most */
 
 typedef struct {
     qreal I11, I12, I21, I22, I31, I32, det;
@@ -147,7 +148,7 @@ void inputs_claims(const sus_model *m)
     const qreal I_dec[9] = {1, tenth, 2 * tenth, tenth, 1, 2 * tenth, 2 * tenth, tenth, 1};
     const qreal w_dec[2] = {4 * tenth, 5 * tenth};
     for (int i = 0; i < 9; i++)
-        if (qabs(I_dec[i] - I_dbl[i]) > U_DOUBLE * qabs(I_dbl[i]))
+        if (qabs(I_dec[i] - I_dbl[i]) > HALF_U * qabs(I_dbl[i]))
             ledger_die("the paper's decimals against SUS_PAPER_INERTIA");
     if (I_dec[1] == I_dbl[1] || w_dec[0] == w_dbl[0])
         ledger_die("forming 0.1 and 0.4 in binary128 (they equal the doubles)");
@@ -167,14 +168,14 @@ void inputs_claims(const sus_model *m)
                "binary128 Taylor integration of \\eqref{ContDyn} and the quaternion, both from the "
                "doubles nearest the paper's inputs; the stated accuracy, $\\le 2^{-51}$",
                max_entry_diff(R_refq, R_dbl), 0.0, 0x1p-51, LEDGER_EXTENSION);
-    /* theory's bound (above): 8 u Theta, Theta <= T sqrt(2 E / lambda_min(I_m)) */
+    /* theory's bound (above): 4 u Theta, Theta <= T sqrt(2 E / lambda_min(I_m)) */
     const double a = m->I[0][0], c = m->I[1][1], off = m->I[0][1];
     const double lmin = (a + c) / 2 - hypot((a - c) / 2, off);
     const double theta = T_END * sqrt(2.0 * sus_energy(m, SUS_PAPER_OMEGA0) / lmin);
     ledger_add("reference-inputs-decimal", "(method)",
                "$\\max_{ij} |R_\\mathrm{dec}(50) - R_\\mathrm{dbl}(50)|_{ij}$ in binary128: the "
                "paper's inputs read as exact decimals against the doubles nearest them (each off "
-               "by $\\le u = 2^{-53}$ relative); bound $8\\,u\\,\\Theta$, "
+               "by $\\le u/2$ relative, $u = 2^{-52}$); bound $4\\,u\\,\\Theta$, "
                "$\\Theta = T |\\omega|_{\\max}$ the angle turned",
-               max_entry_diff(R_dec, R_dbl), 0.0, 8.0 * U_DOUBLE * theta, LEDGER_EXTENSION);
+               max_entry_diff(R_dec, R_dbl), 0.0, 4.0 * SUS_U * theta, LEDGER_EXTENSION);
 }

@@ -3,14 +3,17 @@
  * problem's for the other, never a peer given w(t) for the w race, never a w-only one for the
  * attitude), the implicit steps' cost verdicts, and the data file the figures are drawn from
  * (src/render/bench_tables.c writes bench.csv, src/lab/bench_load.c reads it back: the same
- * series, points and step costs). */
+ * series, points and step costs); and, on one real run to T = 1e4, the long-run line's energy
+ * error by T/2. */
 #define _POSIX_C_SOURCE 200809L
 #include "bench.h"
 #include "bench_floor.h"
 #include "bench_load.h"
+#include "bench_longrun.h"
 #include "bench_tables.h"
 #include "check.h"
 #include "composition.h"
+#include "driver.h"
 #include "dsp.h"
 
 #include <math.h>
@@ -243,6 +246,48 @@ static void check_round_trip(const sus_lab_bench *b)
     rmdir(dir);
 }
 
+/* Row by row of a long run: max |E - E0| over the rows by T/2 and over all of them. */
+typedef struct {
+    const sus_model *m;
+    double e0, half, all;
+} energy_acc;
+
+static int energy_row(void *ctx, const sus_row *row)
+{
+    energy_acc *a = ctx;
+    const double de = fabs(sus_energy(a->m, row->w) - a->e0);
+    a->all = fmax(a->all, de);
+    if (row->t <= 0.5 * SUS_LAB_BENCH_T_LONG)
+        a->half = fmax(a->half, de);
+    return 0;
+}
+
+/* The long-run line's |E - E0| by T/2 (bench_longrun.c), on a composition whose energy error
+ * still grows at T = 1e4 (comp6-kl): it is the maximum over the rows up to T/2 of the same run
+ * taken here through the public driver, and below the maximum over the whole run. A line that
+ * took the whole run, or the second half, for the first would fail one of the two. */
+static void check_energy_half(sus_lab_bench *b)
+{
+    const double eps = 0.5;
+    const long N = lround(SUS_LAB_BENCH_T_LONG / eps);
+    sus_lab_bench_series *s = one_point(b, "comp6-kl + exp-mid", 1, 0, 0, 1e-12, 1e-11, 1e-6);
+    s->me = sus_step_method_by_name("comp6-kl");
+    s->recon = SUS_RECON_EXP_MID;
+    s->param[0] = eps;
+    for (int i = 0; i < b->nseries - 1; i++) /* only this series reaches 1e-10 */
+        b->S[i]->err_R[0] = INFINITY;
+    sus_lab_bench_long_runs(b);
+    const sus_run_config cfg = {&b->pb.model, s->me->type, SUS_RECON_EXP_MID, eps, N, N / 1000};
+    energy_acc a = {&b->pb.model, sus_energy(&b->pb.model, b->pb.ex.w0), 0.0, 0.0};
+    sus_run_report rep;
+    const int rc = sus_run(&cfg, b->pb.ex.w0, energy_row, &a, &rep);
+    const sus_lab_bench_longrun *L = b->nlr == 1 ? &b->LR[0] : NULL;
+    CHECK(rc == SUS_RUN_OK && L && L->energy_half == a.half && L->energy == a.all && a.half < a.all,
+          "long run of comp6-kl + exp-mid to T = 1e4: |E - E0| by T/2 %.3g (the driver's rows: "
+          "%.3g), at T %.3g (%.3g); below it",
+          L ? L->energy_half : NAN, a.half, L ? L->energy : NAN, a.all);
+}
+
 int main(void)
 {
     sus_lab_bench b;
@@ -251,6 +296,7 @@ int main(void)
     check_round_trip(&b);
     check_implicit(&b);
     check_undecided(&b);
+    check_energy_half(&b);
     sus_lab_bench_free(&b);
     return check_summary("test_bench");
 }
