@@ -199,7 +199,7 @@ static void draw_key(cairo_t *cr, double x0, int H, double fs)
             col1 = te.x_advance;
     }
     for (int i = 0; i < N; i++) {
-        const double x = x0 + (KEY[i].col ? col1 + 4.0 * fs : 0.0),
+        const double x = x0 + (KEY[i].col ? col1 + 2.5 * fs : 0.0),
                      y = H - (2.6 - KEY[i].row) * 1.5 * fs;
         cairo_set_source_rgb(cr, KEY[i].rgb[0], KEY[i].rgb[1], KEY[i].rgb[2]);
         if (KEY[i].square) {
