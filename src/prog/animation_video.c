@@ -59,8 +59,8 @@ static FILE *start_video(int W, int H, int fps, const char *out)
         close(fd[0]);
         close(fd[1]);
         /* x264's veryfast preset at crf 21 keeps its default preset's fidelity to the frames (PSNR)
-         * in half the encoding time, for a slightly larger file: the video is most of the CPU
-         * time of make figures after figure_stability */
+         * in much less encoding time, for a somewhat larger file: after figure_stability, the
+         * video is the largest part of the CPU time of make figures */
         execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pixel_format",
                "bgra", "-video_size", size, "-framerate", rate, "-i", "-", "-c:v", "libx264",
                "-preset", "veryfast", "-crf", "21", "-pix_fmt", "yuv420p", out, (char *)NULL);

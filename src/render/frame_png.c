@@ -9,7 +9,7 @@
 
 /* No row filter and zlib's level 3: on the animation's frames (large flat areas, few colours),
  * filtering buys little and libpng's adaptive choice among all five filters costs more than the
- * compression itself; a higher level takes several times longer for files a fifth smaller. */
+ * compression itself; a higher level takes much longer for files only somewhat smaller. */
 #define FRAME_ZLIB_LEVEL 3
 
 /* Is every pixel of the frame opaque? */

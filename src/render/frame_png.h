@@ -1,6 +1,7 @@
 /* The animation's frames as PNG files, written for speed: a frame is written hundreds of times a
- * run and never committed, so it takes the fast settings (frame_png.c) where Cairo's PNG writer,
- * which the committed figures keep, spends most of the animation's time choosing filters. */
+ * run and never committed, so it takes the fast settings of frame_png.c, where Cairo's PNG writer
+ * (which the committed figures keep) spends much of the animation's time on adaptive row filters
+ * and compression. */
 #ifndef SUS_PLOT_FRAME_PNG_H
 #define SUS_PLOT_FRAME_PNG_H
 
