@@ -70,10 +70,11 @@ static void draw(cairo_t *cr, void *vctx)
     sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 2, 0.5, NSWEEP + 0.5, 1e-12, 1e-1, 0, 1);
     sus_plot_frame(&ax, "fixed-point sweeps n",
                    "|E\xe2\x82\x99 \xe2\x88\x92 E\xe2\x82\x80| at t = 200", "(c)");
+    /* black, by shape: the colours of (a) and (b) name sweep counts, which (c) spans */
     const sus_plot_style decay =
-        sus_plot_style_of(SUS_PLOT_PURPLE, 0, 0, SUS_PLOT_DOT, 5, "energy lost (decay)");
+        sus_plot_style_of(SUS_PLOT_BLACK, 0, 0, SUS_PLOT_DOT, 5, "energy lost (decay)");
     const sus_plot_style grow =
-        sus_plot_style_of(SUS_PLOT_ORANGE, 0, 0, SUS_PLOT_SQUARE, 5, "energy gained");
+        sus_plot_style_of(SUS_PLOT_BLACK, 0, 0, SUS_PLOT_SQUARE, 5, "energy gained");
     double xd[NSWEEP], yd[NSWEEP], xg[NSWEEP], yg[NSWEEP];
     int nd = 0, ng = 0;
     for (int i = 0; i < NSWEEP; i++) {
