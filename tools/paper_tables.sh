@@ -20,8 +20,8 @@ head_row() { # file caption label colspec header
 }
 # Table 1 is one float page: a tabular, not a longtable, so that it is never cut across pages.
 { printf '%s\n' '\begin{table}[p]' '\centering\footnotesize\setlength{\tabcolsep}{3pt}' \
-    '\caption{The findings, one row per independent finding, with the number of ledger lines it rests on and the tests that measure them; Table~\ref{tab:summary} (Appendix~\ref{sec:appendix}) gives each line with its finding, and the software note every line. E1--E9: the errata of Table~\ref{tab:errata}; $O_0$: the constant of the proof of Proposition~\PaperNum{PropoFinal}, the last term of \eqref{LagMult}. Program: the claims ledger, \repolink{claims.c} (\cmd{make ledger}); data: \href{../build/claims.tsv}{\texttt{build/claims.tsv}}.}\label{tab:findings}' \
-    '\begin{tabular}{@{}>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.22\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.6\linewidth}@{}}' \
+    '\caption{The findings, one row per independent finding, with the number of ledger lines it rests on and the tests that measure them (each line: Table~\ref{tab:summary}, Appendix~\ref{sec:appendix}; E1--E9: Table~\ref{tab:errata}; $O_0$: the last term of \eqref{LagMult}). Program: the claims ledger, \repolink{claims.c} (\cmd{make ledger}); data: \href{../build/claims.tsv}{\texttt{build/claims.tsv}}.}\label{tab:findings}' \
+    '\begin{tabular}{@{}>{\raggedright}p{0.04\linewidth} >{\raggedright}p{0.21\linewidth} >{\raggedright}p{0.1\linewidth} >{\raggedright\arraybackslash}p{0.61\linewidth}@{}}' \
     '\toprule & finding & verdict & what we measure\\' '\midrule'; } >"$O/findings.tex"
 # An erratum finding names the row of the errata table that corrects it (erratum (E1)).
 # Each row links the test files its lines come from (the source column of the ledger, file:line).
