@@ -437,7 +437,7 @@ WEB_IN    := $(wildcard src/*/*.c src/*/*.h tests/*/*.c tests/*/*.h tests/*/*.sh
 web: $(WEB)/index.html
 
 # The integrators for the browser (the live pages): the library's C sources that reach no GSL,
-# Cairo, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with
+# Cairo, libpng, OpenGL or signal header (tools/web/wasm_sources.sh), compiled to WebAssembly with
 # clang --target=wasm32-wasi and Debian's wasi-libc (make web-deps installs them), linked through
 # an archive so that the module holds only what src/wasm_api.c reaches. A method left out (its
 # source needs GSL) fails the link by name.

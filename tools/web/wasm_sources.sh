@@ -1,9 +1,9 @@
 #!/bin/sh
 # The C sources of src/ (any depth) that the WebAssembly build can compile: those that include,
-# directly or through the project's own headers, no GSL, Cairo, OpenGL or signal header, and
-# define no main. Prints them one a line, sorted.
+# directly or through the project's own headers, no GSL, Cairo, libpng, OpenGL or signal header,
+# and define no main. Prints them one a line, sorted.
 set -eu
-libs='^#include <(gsl/|cairo|GL/|signal\.h)'
+libs='^#include <(gsl/|cairo|GL/|png\.h|signal\.h)'
 # project headers that reach such a header, found by repeating the rule until nothing changes
 bad=$(grep -rlE "$libs" --include='*.h' src | xargs -r -n1 basename | sort -u)
 while :; do
