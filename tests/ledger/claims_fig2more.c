@@ -5,7 +5,8 @@
  * fig2-much-factor-one judges every ratio here at factor 1, the weakest reading of "faster" and
  * "more accurate", where no larger factor can hold either (fig2-much-factor-one-ranges the two of
  * claims_fig2_ranges.c). Every statement of Figure 2 is then
- * evaluated under the printed labels and with the two methods' labels swapped. Figure 2's image
+ * evaluated under the printed labels and with the two methods' labels swapped, and under one more
+ * reading of what was run (the midpoint equation solved by one sweep). Figure 2's image
  * is not in the paper's source (\includegraphics{ } with an empty argument, for Figure 1 too):
  * only the caption and the text can be checked. */
 #include "claims_fig2more.h"
@@ -89,13 +90,6 @@ static run_result run(const sus_model *m, const sus_exact *ex, const sus_stepper
                         worst};
 }
 
-/* The four statements of Figure 2 under the printed labels (A = variational, B = midpoint) and
- * swapped (A = midpoint): energy kept better by A; A converges faster (t = 10); A more accurate
- * long-term (t = 200); A "works quite well" at eps = 1. The first three compare the two methods
- * and need no threshold. The fourth needs one the paper does not give: we read it as "within tau
- * of |w0| all along [0, 200]", and since any single tau would be our choice, the count is shown
- * for every tau = 1 %, ..., 20 % (ledger numbers), and the lines assert only what holds over the
- * whole range. */
 /* How many of the three statements that need no threshold hold for A against B at factor one:
  * the energy kept better in size (|loss| at t = 200), the error at t = 10, the error at t = 200;
  * a[] and b[] hold the runs to 200, 10 and 200. */
@@ -104,6 +98,13 @@ static int comparisons_hold(const run_result *a, const run_result *b)
     return (fabs(a[0].loss) < fabs(b[0].loss)) + (a[1].err < b[1].err) + (a[2].err < b[2].err);
 }
 
+/* The four statements of Figure 2 under the printed labels (A = variational, B = midpoint) and
+ * swapped (A = midpoint): energy kept better by A; A converges faster (t = 10); A more accurate
+ * long-term (t = 200); A "works quite well" at eps = 1. The first three compare the two methods
+ * and need no threshold. The fourth needs one the paper does not give: we read it as "within tau
+ * of |w0| all along [0, 200]", and since any single tau would be our choice, the count is shown
+ * for every tau = 1 %, ..., 20 % (ledger numbers), and the lines assert only what holds over the
+ * whole range. */
 static void swap_claims(const run_result v10, const run_result m10, const run_result v200,
                         const run_result m200, double r0)
 {
