@@ -194,12 +194,27 @@ static int same_group(const ledger_row *a, const ledger_row *b, const char *key)
            strcmp(a->ref, b->ref) == 0 && strcmp(a->verdict, b->verdict) == 0 && a->pass == b->pass;
 }
 
-/* A claim tested on several methods: the count, the worst deviation |m - e| and the tolerances
- * of its lines. */
+/* A claim tested on several methods: the count, the worst deviation |m - e|, the tolerances of its
+ * lines, and whether any is near its threshold. */
 typedef struct {
     int n;
     double worst, tmin, tmax;
+    int near;
 } summary_group;
+
+/* Is the line's verdict within a tenth of its threshold of turning: |m - e| within a tenth of the
+ * tolerance of it, or a one-sided m within a tenth of its bound? A rule of presentation, fixed
+ * before looking at the rows: such a verdict would turn were the threshold a tenth tighter or
+ * looser, and the table marks it so that the text is read with that in mind. */
+static int near_threshold(const ledger_row *r)
+{
+    const double d = fabs(r->measured - r->expected);
+    if (r->none_found || !isfinite(d))
+        return 0;
+    if (r->kind == ROW_WITHIN)
+        return r->tol > 0.0 && fabs(d - r->tol) < 0.1 * r->tol;
+    return r->expected != 0.0 && d < 0.1 * fabs(r->expected);
+}
 
 /* One row of the summary: a line, or the lines of one claim (n > 1). */
 static void summary_row(FILE *fp, const ledger_row *r, const char *key, const summary_group *g)
@@ -230,7 +245,8 @@ static void summary_row(FILE *fp, const ledger_row *r, const char *key, const su
     const char *verdict = strcmp(r->verdict, "reproduced") == 0 ? "yes"
                           : strcmp(r->verdict, "erratum") == 0  ? "erratum"
                                                                 : "\\textbf{no}";
-    fprintf(fp, " & %s%s\\\\\n", verdict, r->pass ? "" : " \\textbf{(check FAILS)}");
+    fprintf(fp, " & %s%s%s\\\\\n", verdict, g->near ? "$^\\ddagger$" : "",
+            r->pass ? "" : " \\textbf{(check FAILS)}");
 }
 
 static const char SUMMARY_HEAD[] =
@@ -240,7 +256,8 @@ static const char SUMMARY_HEAD[] =
     "\\caption{Every ledger line that tests a statement of the paper, one row per claim; "
     "a claim tested on $n$ methods of the registry is one row ($\\times n$). $m$: measured; $e$, "
     "$t$: expected value and tolerance; $b$: the bound of a one-sided claim, usually the other "
-    "method's value.}\\label{tab:summary}\\\\\n"
+    "method's value. $\\ddagger$: within a tenth of its threshold of turning (a tolerance or bound "
+    "a tenth tighter or looser would turn it).}\\label{tab:summary}\\\\\n"
     "\\toprule claim (ledger lines) & in the paper & measured $m$ & test & repro\\-duced?\\\\\n"
     "\\midrule\\endfirsthead\n"
     "\\toprule claim (ledger lines) & in the paper & measured $m$ & test & repro\\-duced?\\\\\n"
@@ -262,7 +279,7 @@ static void write_summary(FILE *fp, const ledger_state *s)
             strcmp(r->verdict, "by construction") == 0)
             continue;
         group_key(r->id, key, sizeof key);
-        summary_group g = {0, 0.0, INFINITY, -INFINITY};
+        summary_group g = {0, 0.0, INFINITY, -INFINITY, 0};
         for (int j = i; j < s->nrows; j++)
             if (!done[j] && (j == i || same_group(r, &s->rows[j], key))) {
                 done[j] = 1;
@@ -270,6 +287,7 @@ static void write_summary(FILE *fp, const ledger_state *s)
                 g.worst = fmax(g.worst, fabs(s->rows[j].measured - s->rows[j].expected));
                 g.tmin = fmin(g.tmin, s->rows[j].tol);
                 g.tmax = fmax(g.tmax, s->rows[j].tol);
+                g.near |= near_threshold(&s->rows[j]);
             }
         summary_row(fp, r, key, &g);
     }
