@@ -5,7 +5,6 @@
 
 #include <png.h>
 #include <stdio.h>
-#include <string.h>
 
 /* No row filter and zlib's level 3: on the animation's frames (large flat areas, few colours),
  * filtering buys little and libpng's adaptive choice among all five filters costs more than the
@@ -37,15 +36,12 @@ static int encode(FILE *fp, const uint32_t *px, int W, int H)
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     /* 0xAARRGGBB in memory is B, G, R, A on a little-endian machine, A, R, G, B on a big one */
-    const uint32_t probe = 1;
-    uint8_t first;
-    memcpy(&first, &probe, 1);
-    if (first) {
-        png_set_bgr(png);
-        png_set_filler(png, 0, PNG_FILLER_AFTER);
-    } else {
-        png_set_filler(png, 0, PNG_FILLER_BEFORE);
-    }
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    png_set_bgr(png);
+    png_set_filler(png, 0, PNG_FILLER_AFTER);
+#else
+    png_set_filler(png, 0, PNG_FILLER_BEFORE);
+#endif
     for (int y = 0; y < H; y++)
         png_write_row(png, (png_const_bytep)(px + (size_t)y * (size_t)W));
     png_write_end(png, info);
