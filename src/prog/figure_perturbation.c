@@ -56,13 +56,6 @@ static void die(const char *what, int status)
     exit(status);
 }
 
-static const double *colour(int i)
-{
-    const double *c[] = {SUS_PLOT_ORANGE, SUS_PLOT_GREEN, SUS_PLOT_PURPLE, SUS_PLOT_BLUE,
-                         SUS_PLOT_RED,    SUS_PLOT_BLACK, SUS_PLOT_GREY};
-    return c[i % 7];
-}
-
 /* Panel c, the size of the perturbation against eps for every method; the legend in a strip above
  * the lines, where a curve that a later one covers says so. */
 static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
@@ -90,8 +83,10 @@ static void panel_sizes(cairo_t *cr, const pert_fig *f, double W, double H)
             drawn += isfinite(f->g[m][j]);
         if (drawn < 2) /* at round-off for every eps: said in the caption */
             continue;
-        /* dashed where the colours come round again */
-        leg[nl] = sus_plot_style_of(colour(m), 1.0, (m / 7) % 2, mk[m % 6], 3.5, f->names[m]);
+        /* method m's colour in every per-method figure (convergence_plot.c): one each, so no two
+         * curves here share a colour, and none is dashed like the grey reference slopes */
+        leg[nl] = sus_plot_style_of(SUS_PLOT_PALETTE[m % SUS_PLOT_PALETTE_N], 1.0, 0, mk[m % 6],
+                                    3.5, f->names[m]);
         sus_plot_series(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
         sus_plot_markers(&ax, f->eps, f->g[m], NE, 1, &leg[nl]);
         shown[nl++] = m;
@@ -154,9 +149,10 @@ static void draw(cairo_t *cr, void *vctx)
         sus_plot_axes_cell(&ax, cr, W, H, 2, 2, 3, f->eps[NE_SO3 - 1], f->eps[0], lo, hi, 1, 1);
         sus_plot_frame(&ax, "\xce\xb5",
                        "sup |(R\xe1\xb5\x80R\xe2\x80\xb2)\xcb\x87 \xe2\x88\x92 \xcf\x89|", "(d)");
+        const double *const colour[SUS_RECON_COUNT] = {SUS_PLOT_BLUE, SUS_PLOT_RED, SUS_PLOT_BLACK};
         sus_plot_style leg[SUS_RECON_COUNT];
         for (int r = 0; r < SUS_RECON_COUNT; r++) {
-            leg[r] = sus_plot_style_of(colour(r + 3), 1.0, r == 2, SUS_PLOT_CIRCLE + r, 4.0,
+            leg[r] = sus_plot_style_of(colour[r], 1.0, r == 2, SUS_PLOT_CIRCLE + r, 4.0,
                                        SUS_RECON_NAMES[r]);
             sus_plot_series(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
             sus_plot_markers(&ax, f->eps, f->att[r], NE_SO3, 1, &leg[r]);
