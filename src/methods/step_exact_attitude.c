@@ -40,9 +40,18 @@
  * with a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms) and 2 B s^d <= rate
  * H, so that est(s) <= rate s H: one series a step, never a retry.
  *
+ * The series in E. Past the inflection of the transient, E = e^{-(sigma s0 + k t)} < 1, one power
+ * series in E gives q at every later time (attitude_series.h): it converges for |E| < 1, where a
+ * series in t stops at w's nearest singularity. So once E(t) is small enough that the series'
+ * degree for the budget left, by the terms' fall alone, log(budget) / log(E), is at most
+ * SERIES_TERMS, one step of it takes the rest of the way to t_stop, with the whole budget left as
+ * its share. A start past the inflection is then one step to t_stop; before it, Taylor steps
+ * cross the inflection first.
+ *
  * The degree, by TOL (DEGREES): the one with the least measured time to t = 50 over the paper's,
  * the general and the stiff bodies of tests/unit/bodies.h (geometric mean of time over the best
- * degree's), decade by decade; within two degrees of it the time changes little. A Magnus6 step
+ * degree's), decade by decade, measured before the series in E took over past the inflection;
+ * within two degrees of it the time changes little. A Magnus6 step
  * (Blanes, Casas & Ros; three Gauss nodes) on the same closed-form w was measured beside these:
  * with an error estimate worth the name (step doubling: two halves against one whole step) a pair
  * of half steps costs as much as a Taylor step of low degree and advances less far than a step of
@@ -56,6 +65,7 @@
  * closed form at every step's end (|E - E0| a few u: w = L^{-T} u with |u| = r), w3 = 0. */
 #include "exact_attitude.h"
 
+#include "attitude_series.h"
 #include "exact.h"
 #include "exact_fast.h"
 #include "exact_tail.h"
@@ -74,8 +84,11 @@
 /* The terms the envelope is projected from (top of the file): on the stiff test bodies the terms
  * dip for four degrees running, so the last three or four can all lie in one dip. */
 #define ENVELOPE_TERMS 5
+/* The series in E is tried where its degree for the budget left, log(budget) / log(E) (the terms'
+ * fall alone), would be at most this: so many degrees cost about two Taylor steps. */
+#define SERIES_TERMS 40
 
-typedef enum { KIND_TAYLOR, KIND_TAIL } step_kind;
+typedef enum { KIND_TAYLOR, KIND_SERIES, KIND_TAIL } step_kind;
 
 /* One degree of the series: series_of computes the rows to degree order over a step h from t,
  * where w is w(t). */
@@ -96,8 +109,10 @@ struct sus_tol_work {
     const degree *deg;
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
-    double speed[2];  /* |w_inf| in double-double, speed[0] + speed[1]; set at the tail's step */
-    taylor_series ts; /* its series (q's rows scaled to its length) */
+    double speed[2];       /* |w_inf| in double-double, speed[0] + speed[1]; set at alloc */
+    double e_try;          /* the series in E is tried from E(t) <= e_try on */
+    taylor_series ts;      /* its series (q's rows scaled to its length) */
+    sus_att_series series; /* or its series in E */
 };
 
 /* ---- the degree by TOL ---- */
@@ -287,6 +302,26 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
     return 0;
 }
 
+/* The rest of the way to stop in one step of the series in E (attitude_series.h), from where E(t)
+ * is small enough for its degree to stay near SERIES_TERMS; 1 when taken, with its estimate (the
+ * whole budget left, rate (stop - t), is its share). A series that declines is tried again only
+ * once E has halved. */
+static int series_step(sus_tol_work *wk, double t, double stop, double rate, double q[4], double *h,
+                       double *est)
+{
+    const double E = sus_att_series_E(&wk->f, t), left = rate * (stop - t);
+    if (!(E <= wk->e_try) || !(log(0.5 * left) / log(E) <= SERIES_TERMS))
+        return 0;
+    *est = sus_att_series_build(&wk->series, &wk->f, t, q, left);
+    if (*est < 0.0) {
+        wk->e_try = 0.5 * E;
+        return 0;
+    }
+    sus_att_series_at(&wk->series, &wk->f, wk->speed, stop, q);
+    *h = stop - t;
+    return 1;
+}
+
 /* w and lambda at t from the closed form, and the attitude from q. */
 static void state_at(const sus_tol_work *wk, double t, const double q[4], double w[3],
                      double *lambda, sus_attitude *att)
@@ -306,12 +341,13 @@ static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2]
     sus_tol_work *wk = malloc(sizeof *wk);
     if (!wk)
         return NULL;
-    *wk = (sus_tol_work){.m = m, .tolq = tol / DIST_PER_Q, .deg = degree_for(tol)};
+    *wk = (sus_tol_work){.m = m, .tolq = tol / DIST_PER_Q, .deg = degree_for(tol), .e_try = 1.0};
     if (sus_exact_init(&wk->ex, m, w0) != 0 || sus_exact_fast_init(&wk->f, &wk->ex) != 0) {
         free(wk);
         return NULL;
     }
     const sus_exact *ex = &wk->ex;
+    sus_steady_speed(ex, wk->speed);
     const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
     wk->w_max = sqrt(a * a + b * b + c * c) * ex->r;
     /* half the bound is the quaternion's error; that half at most the tail's share of tolq */
@@ -330,13 +366,17 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
     memcpy(wk->q0, q, sizeof q);
     if (*t >= wk->t_tail) {
         wk->kind = KIND_TAIL;
-        sus_steady_speed(&wk->ex, wk->speed);
         sus_steady_turn(wk->f.winf, wk->speed, *t, t_end, q);
         est = 0.5 * sus_exact_tail_bound(&wk->ex, *t);
     } else {
-        wk->kind = KIND_TAYLOR;
+        const double stop = stop_of(wk, t_end);
         rate = rate_of(wk, *t, t_end);
-        failed = taylor_step(wk, *t, stop_of(wk, t_end), rate, w, q, &h, &t_next, &est);
+        wk->kind = KIND_SERIES;
+        t_next = stop;
+        if (!series_step(wk, *t, stop, rate, q, &h, &est)) {
+            wk->kind = KIND_TAYLOR;
+            failed = taylor_step(wk, *t, stop, rate, w, q, &h, &t_next, &est);
+        }
     }
     *st =
         (sus_stepper_stats){.residual = DIST_PER_Q * est, .scale = DIST_PER_Q * rate * h, .det = h};
@@ -361,6 +401,8 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
     memcpy(q, wk->q0, sizeof q);
     if (wk->kind == KIND_TAIL)
         sus_steady_turn(wk->f.winf, wk->speed, wk->t0, t, q);
+    else if (wk->kind == KIND_SERIES)
+        sus_att_series_at(&wk->series, &wk->f, wk->speed, t, q);
     else
         taylor_sum(&wk->ts, wk->deg->order, wk->h > 0.0 ? tau / wk->h : 0.0, q);
     state_at(wk, t, q, w, lambda, att);

@@ -1,0 +1,173 @@
+/* The attitude as a series in E = e^{-(sigma s0 + k t)} (src/core/attitude_series.h), against the
+ * long-double reference attitude (refattitude.h), on every body of tests/unit/bodies.h and two of
+ * the paper's altered ("slow": a third row a tenth of the paper's, so the coefficients grow
+ * fastest; "fast": w0 eight times the paper's):
+ *   - each of the two sums the series takes is truncated by at most half its estimate: from t_a,
+ *     where E = E_a, to t_f = t_a + 40 / k, where E(t_f) = e^{-40} E_a leaves the later sum's
+ *     truncation far below round-off, the error is the earlier sum's alone. Expected: the
+ *     reference's q(t_f); E_a from 0.05 to 0.7, budgets 1e-3 ... 1e-13, wherever the series
+ *     accepts the budget;
+ *   - it declines a start before the inflection (E >= 1);
+ *   - in exact-attitude (src/methods/step_exact_attitude.c) it takes the rest of a run in one
+ *     step from a start past the inflection: from E(0) <= 1/2 its degree for TOL 1e-6 by the
+ *     terms' fall alone is log(TOL / (4 sqrt2)) / log(1/2) = 22, within the method's
+ *     SERIES_TERMS (40), so a run to t = 50 is that step and, where the tail starts before
+ *     t = 50, the tail's.
+ * Round-off allowance, fixed from counts of roundings before measuring: ROUND_STEP = 34 u and
+ * COND = 32 u per radian the steady rotation turns between t_a and t_f, as for a step of
+ * exact-attitude (tests/unit/test_exact_attitude.c gives the reasons), in |dq| divided by
+ * 2 sqrt2. */
+#include "attitude_series.h"
+#include "check.h"
+#include "check_body.h"
+#include "driver.h"
+#include "exact_attitude.h"
+#include "quaternion.h"
+#include "refattitude.h"
+#include "so3.h"
+#include "steady_turn.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#define U SUS_U
+#define ROUND_STEP 34.0
+#define COND 32.0
+#define DIST_PER_Q 2.8284271247461903 /* dist(R, R') <= 2 sqrt2 |q - q'| */
+
+/* The family's bodies, then "slow" and "fast" (the top of the file). */
+static void series_body(int j, body *b)
+{
+    if (j < BODIES_COUNT) {
+        body_get(j, b);
+        return;
+    }
+    body_get(0, b);
+    if (j == BODIES_COUNT) {
+        b->I[6] *= 0.1;
+        b->I[7] *= 0.1;
+        snprintf(b->name, sizeof b->name, "slow");
+    } else {
+        b->w0[0] *= 8.0;
+        b->w0[1] *= 8.0;
+        snprintf(b->name, sizeof b->name, "fast");
+    }
+}
+
+/* The worst (error - round-off) / (estimate / 2) at t_f over the budgets, from t_a where E = Ea;
+ * counts the series built. */
+static double one_start(const sus_exact *ex, const sus_exact_fast *f, double Ea, int *built)
+{
+    const double ta = (-ex->sigma * ex->s0 - log(Ea)) / ex->k, tf = ta + 40.0 / ex->k;
+    const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    double Ra[3][3], Rf[3][3], qa[4], speed[2], worst = 0.0, winf[2];
+    if (!(ta >= 0.0))
+        return 0.0;
+    sus_refatt ra;
+    sus_refatt_init(&ra, ex, 0.0, I3);
+    sus_refatt_advance(&ra, ta, Ra);
+    sus_refatt_advance(&ra, tf, Rf);
+    sus_quat_from_rotation(Ra, qa);
+    sus_steady_speed(ex, speed);
+    sus_exact_limit(ex, winf);
+    const double round = (ROUND_STEP + COND * (tf - ta) * hypot(winf[0], winf[1])) * U;
+    for (int d = 3; d <= 13; d++) {
+        static sus_att_series s;
+        const double est = sus_att_series_build(&s, f, ta, qa, pow(10.0, -d));
+        if (est < 0.0)
+            continue;
+        double q[4], R[3][3];
+        sus_att_series_at(&s, f, speed, tf, q);
+        sus_quat_unit_rotation(q, R);
+        const double excess = sus_so3_dist(R, Rf) - round;
+        worst = fmax(worst, excess / (DIST_PER_Q * 0.5 * est));
+        (*built)++;
+    }
+    return worst;
+}
+
+static void each_sum_within_half(void)
+{
+    static const double EA[] = {0.05, 0.1, 0.2, 0.35, 0.5, 0.7};
+    double worst = 0.0;
+    int built = 0, bodies = 0;
+    for (int k = 0; k < BODIES_COUNT + 2; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        sus_exact_fast f;
+        series_body(k, &b);
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, b.w0) != 0 || ex.fixed ||
+            sus_exact_fast_init(&f, &ex) != 0)
+            continue;
+        bodies++;
+        for (size_t e = 0; e < sizeof EA / sizeof EA[0]; e++)
+            worst = fmax(worst, one_start(&ex, &f, EA[e], &built));
+    }
+    CHECK(built >= 100 && worst <= 1.0,
+          "each sum of the series in E is truncated by at most half its estimate (+ %g u + %g u "
+          "per radian): worst (error - round-off) / (estimate / 2) %.3g over %d series, %d "
+          "bodies, E_a 0.05 ... 0.7, budgets 1e-3 ... 1e-13",
+          ROUND_STEP, COND, worst, built, bodies);
+}
+
+static void declines_before_the_inflection(void)
+{
+    int tried = 0, declined = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        sus_exact_fast f;
+        if (check_body_exact(k, &b, &m, &ex) || ex.fixed || sus_exact_fast_init(&f, &ex) != 0 ||
+            !(exp(-ex.sigma * ex.s0) >= 1.0))
+            continue;
+        static sus_att_series s;
+        const double q[4] = {1.0, 0.0, 0.0, 0.0};
+        tried++;
+        declined += sus_att_series_build(&s, &f, 0.0, q, 1.0) < 0.0;
+    }
+    CHECK(tried >= 2 && declined == tried,
+          "a start before the inflection (E(0) >= 1) is declined: %d of %d bodies", declined,
+          tried);
+}
+
+static int count_row(void *ctx, const sus_row *row)
+{
+    (void)row;
+    (*(long *)ctx)++;
+    return 0;
+}
+
+static void one_step_from_past_the_inflection(void)
+{
+    int bodies = 0;
+    long most = 0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model m;
+        sus_exact ex;
+        if (check_body_exact(k, &b, &m, &ex) || ex.fixed || !(exp(-ex.sigma * ex.s0) <= 0.5))
+            continue;
+        sus_run_report rep;
+        long rows = 0; /* row 0 and one a step */
+        const sus_tol_config tc = {&m, &sus_step_exact_attitude_type, 1e-6, 50.0, 0.0, 0};
+        const int rc = sus_run_tol(&tc, b.w0, count_row, &rows, &rep);
+        const long steps = rc == SUS_RUN_OK ? rows - 1 : 99; /* a failed run fails the check */
+        if (steps > most)
+            most = steps;
+        bodies++;
+    }
+    CHECK(bodies >= 3 && most <= 2,
+          "exact-attitude from a start past the inflection (E(0) <= 1/2, %d bodies): a run to "
+          "t = 50 at TOL 1e-6 takes at most 2 steps, the series in E and the tail: at most %ld",
+          bodies, most);
+}
+
+int main(void)
+{
+    each_sum_within_half();
+    declines_before_the_inflection();
+    one_step_from_past_the_inflection();
+    return check_summary("test_attitude_series");
+}
