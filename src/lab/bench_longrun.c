@@ -8,6 +8,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -113,9 +114,13 @@ void sus_lab_bench_long_runs(sus_lab_bench *b)
 
 /* ---- at T = 1e4 and equal error: our methods against rk8pd, and the cost to T = 1e6 ---- */
 
-/* Each run is milliseconds long: ROUNDS interleaved rounds of ours and the peer's (or of the two
- * lengths of one run), the median of each. */
+/* ROUNDS interleaved rounds of ours and the peer's (or of the two lengths of one run), the median
+ * of each. A run shorter than EQ_BATCH seconds is repeated within its round (the batch's time over
+ * its calls), as the work-precision points are: timed alone, a run of microseconds right after a
+ * peer's milliseconds starts with the caches and predictors the peer left, and takes several times
+ * as long as the same run timed warm. */
 #define EQ_ROUNDS 5
+#define EQ_BATCH 1e-3
 
 typedef struct {
     void (*fn)(void *);
@@ -123,14 +128,23 @@ typedef struct {
     double t[EQ_ROUNDS];
 } timed_run;
 
-/* The median seconds of each of n runs, timed in interleaved rounds, into sec. */
+/* The median seconds of each of n runs, timed in interleaved rounds of batches, into sec; one
+ * untimed call of each first sets its batch. */
 static void time_interleaved(timed_run *r, int n, double *sec)
 {
+    long reps[n];
+    for (int i = 0; i < n; i++) {
+        const double t0 = sus_lab_bench_now();
+        r[i].fn(r[i].ctx);
+        const double once = sus_lab_bench_now() - t0;
+        reps[i] = once >= EQ_BATCH ? 1 : (long)ceil(EQ_BATCH / fmax(once, 1e-9));
+    }
     for (int k = 0; k < EQ_ROUNDS; k++)
         for (int i = 0; i < n; i++) {
             const double t0 = sus_lab_bench_now();
-            r[i].fn(r[i].ctx);
-            r[i].t[k] = sus_lab_bench_now() - t0;
+            for (long c = 0; c < reps[i]; c++)
+                r[i].fn(r[i].ctx);
+            r[i].t[k] = (sus_lab_bench_now() - t0) / (double)reps[i];
         }
     for (int i = 0; i < n; i++) {
         gsl_sort(r[i].t, 1, EQ_ROUNDS);

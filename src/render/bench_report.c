@@ -97,7 +97,7 @@ static void print_floor(int l, const sus_lab_bench_level *v)
                LEVELS[l]);
     else
         printf("  %s attitude accuracy %.0e: our best %.3g s is within 1.15x of the floor %.3g s "
-               "(an estimate: fewest steps x cost per step, timed apart): %.2fx\n",
+               "(an estimate: fewest steps x cost per step, timed apart): %.3fx\n",
                v->ours.sec <= 1.15 * v->floor ? "PASS" : "MISS", LEVELS[l], v->ours.sec, v->floor,
                v->ours.sec / v->floor);
 }
