@@ -235,11 +235,12 @@ static const suslov_cli_option OPTIONS[] = {
      "run, as the sum of its steps' estimates (checked on the test bodies, not\n"
      "proved), to a few roundings a step: its w is the closed form. Both turn\n"
      "R over the steady tail by an angle formed in two doubles, so the error\n"
-     "does not grow with T there. Not relative ones: where |w| is far below TOL,\n"
-     "TOL promises nothing of the relative error of w, nor of lambda,\n"
-     "computed from w by (LagMult) and quadratic in w. A w0 not 0 with |w0|\n"
-     "below 2^-500 (3e-151) or an energy below the normal doubles is refused:\n"
-     "the series multiply w by w, and lose their bits there",
+     "against the inputs as given does not grow with T there. Not relative\n"
+     "ones: where |w| is far below TOL, TOL promises nothing of the relative\n"
+     "error of w, nor of lambda, computed from w by (LagMult) and quadratic\n"
+     "in w. A w0 not 0 with |w0| below 2^-500 (3e-151) or an energy below the\n"
+     "normal doubles is refused: the series multiply w by w, and lose their\n"
+     "bits there",
      set_tol, NULL},
     {"--every-time", "DT",
      "with --tol: write rows at t = 0, DT, 2 DT, ... and T, by the\n"

@@ -174,8 +174,10 @@ static double first_failure(const sus_exact *paper, const sus_stepper_type *st, 
     return INFINITY;
 }
 
-/* Solvability on the ledger's map (12 angles): every implicit step is asserted solvable on its
- * branch far beyond the paper's eps = 1 (h = 0.145): from h = 1, 7x the paper's step, at least.
+/* Solvability on the ledger's map (12 angles; the figure's 36 for a method whose fold that document
+ * places on the figure's map, so that this line sees the fold the figure shows): every implicit
+ * step is asserted solvable on its branch far beyond the paper's eps = 1 (h = 0.145): from h = 1,
+ * 7x the paper's step, at least.
  * Where docs/explanation/where-methods-fail.md states that no run fails up to the largest h tested
  * (expected_orders.c: solvable_h = INFINITY), the line asserts exactly that (a failure at h = 1000
  * itself fails it). The steps solve for the branch themselves (newton.h), so a failure here is the
@@ -187,15 +189,16 @@ void stability_solvable_claims(const sus_exact *paper, int m)
     if (!me->type->desc.implicit)
         return;
     sus_lab_stab_result failed;
-    const double first = first_failure(paper, me->type, 12, 0.0, &failed);
     const expected_order *eo = expected_order_of(me->type->name);
+    const int nangle = eo && eo->fold_on_map ? 36 : 12;
+    const double first = first_failure(paper, me->type, nangle, 0.0, &failed);
     const int none_stated = eo && isinf(eo->solvable_h);
     snprintf(id, sizeof id, "stability-solvable-%s", me->type->name);
     snprintf(
         q, sizeof q,
-        "smallest $h$ at which a %s run (12 angles, $h$ from 0.01 to 1000) meets a fold of its "
+        "smallest $h$ at which a %s run (%d angles, $h$ from 0.01 to 1000) meets a fold of its "
         "step equation's branch continued from $\\varepsilon = 0$, or fails to solve it: %s",
-        me->type->name,
+        me->type->name, nangle,
         none_stated ? "none up to $h = 1000$, as where-methods-fail.md states"
                     : "at least 1 ($7\\times$ the paper's $\\varepsilon = 1$)");
     ledger_add_none_found(id, "(extension)", q, first, none_stated ? H_MAX * (1.0 + 1e-12) : 1.0,
