@@ -7,6 +7,7 @@
 #include "dsp.h"
 #include "fig_output.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #define NLEVELS SUS_LAB_BENCH_NLEVELS
@@ -93,6 +94,14 @@ static void tex_ratio(FILE *fp, const char *name, const char *suffix, double r, 
         fprintf(fp, "\\newcommand{\\%s%s}{%.*f}\n", name, suffix, digits, r);
 }
 
+/* A verdict whose ratio lies within a tenth of its target (either side) is marked: a move of the
+ * target by that much, or the ratio's own move between runs, would turn it. The companion marks
+ * its near-threshold verdicts by the same rule, fixed before looking. */
+static const char *near_mark(const sus_lab_bench_level *v)
+{
+    return isfinite(v->target) && fabs(v->ratio / v->target - 1.0) <= 0.1 ? "$^\\ddagger$" : "";
+}
+
 /* Two decimals: a ratio of 1.96 must not print as "2", nor 1.30 as "1.3", beside its verdict. Each
  * attitude ratio also by the fastest rounds (sus_lab_bench_level: the verdict's second estimate).
  * The w ratios are information (no target, no verdict). */
@@ -104,10 +113,12 @@ static void tex_levels(FILE *fp, const sus_lab_bench *b)
                                   vw = sus_lab_bench_level_verdict(b, SUS_LAB_BENCH_W_INFO, l);
         tex_ratio(fp, "BenchRatioR", LVL[l], vR.ratio, 2);
         tex_ratio(fp, "BenchRatioFastR", LVL[l], vR.ratio_fast, 2);
-        fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vR));
+        fprintf(fp, "\\newcommand{\\BenchPassR%s}{%s%s}\n", LVL[l], sus_lab_bench_level_word(&vR),
+                near_mark(&vR));
         tex_ratio(fp, "BenchRatioRed", LVL[l], vD.ratio, 2);
         tex_ratio(fp, "BenchRatioFastRed", LVL[l], vD.ratio_fast, 2);
-        fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s}\n", LVL[l], sus_lab_bench_level_word(&vD));
+        fprintf(fp, "\\newcommand{\\BenchPassRed%s}{%s%s}\n", LVL[l], sus_lab_bench_level_word(&vD),
+                near_mark(&vD));
         tex_ratio(fp, "BenchRatioW", LVL[l], vw.ratio, 2);
         fprintf(fp, "\\newcommand{\\BenchTarget%s}{%.2g}\n", LVL[l], vR.target);
     }
