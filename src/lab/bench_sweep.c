@@ -22,7 +22,9 @@ static double next_N(double Nd, int fine, int high)
 /* A sweep stops once the errors are below SWEEP_FLOOR, ten times below the finest target level,
  * or once they are below ROUNDOFF_ZONE and 1.4 times as many steps no longer halve them (which
  * any method of order >= 2 does while truncation dominates): more steps then only add round-off
- * (the compositions' floor is above 1e-15). */
+ * (the compositions' floor is above 1e-15). Not for a tolerance-driven method, whose steps need
+ * not grow with accuracy (exact-attitude's series in E takes the rest of a run in one step
+ * whatever TOL): it is swept over the peers' whole TOL grid, as they are. */
 #define SWEEP_FLOOR 1e-15
 #define ROUNDOFF_ZONE 1e-12
 
@@ -46,7 +48,7 @@ static int sweep_done(const sus_lab_bench_series *s)
     const double e = worst_err(s, i);
     if (e < SWEEP_FLOOR)
         return 1;
-    if (e > ROUNDOFF_ZONE)
+    if (e > ROUNDOFF_ZONE || s->tol_driven)
         return 0;
     for (int j = i - 1; j >= 0; j--)
         if ((double)s->steps[j] * 1.4 <= (double)s->steps[i])
