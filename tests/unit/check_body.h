@@ -45,6 +45,24 @@ static inline double check_body_time(const sus_model *m, const double w0[2])
     return paper.k / ex.k;
 }
 
+/* The paper's body altered to stress a step rule (test_exact_attitude, test_attitude_series):
+ * "slow" (slow 1) with a third row a tenth of the paper's, so k is ten times smaller and a step
+ * long in time; "fast" (slow 0) with w0 eight times the paper's, so k and the rotation are eight
+ * times larger. */
+static inline void check_body_paper_variant(int slow, body *b)
+{
+    body_get(0, b);
+    if (slow) {
+        b->I[6] *= 0.1;
+        b->I[7] *= 0.1;
+        snprintf(b->name, sizeof b->name, "slow");
+    } else {
+        b->w0[0] *= 8.0;
+        b->w0[1] *= 8.0;
+        snprintf(b->name, sizeof b->name, "fast");
+    }
+}
+
 /* The slow body: I_m = I, I31 = I32 = 1e-5, w0 = (1000, -999), whose k is far below |w0|, so a
  * run to SLOW_T is a slow transient on a fast rotation, many steps long for any method. Its model
  * and closed form, and the long-double reference attitude at SLOW_T (R(0) = I): 0, or nonzero

@@ -42,16 +42,7 @@ static void series_body(int j, body *b)
         body_get(j, b);
         return;
     }
-    body_get(0, b);
-    if (j == BODIES_COUNT) {
-        b->I[6] *= 0.1;
-        b->I[7] *= 0.1;
-        snprintf(b->name, sizeof b->name, "slow");
-    } else {
-        b->w0[0] *= 8.0;
-        b->w0[1] *= 8.0;
-        snprintf(b->name, sizeof b->name, "fast");
-    }
+    check_body_paper_variant(j == BODIES_COUNT, b);
 }
 
 /* The worst (error - round-off) / (estimate / 2) at t_f over the budgets, from t_a where E = Ea;

@@ -76,16 +76,7 @@ static void test_body(int j, body *b)
         *b = (body){{1.0, 1.0 - d, 0.0, 1.0 - d, 1.0, 0.0, -1.0, -1.0, 1.0}, {1.0, 1.0}, "sing"};
         return;
     }
-    body_get(0, b);
-    if (j == BODIES_COUNT) {
-        b->I[6] *= 0.1;
-        b->I[7] *= 0.1;
-        snprintf(b->name, sizeof b->name, "slow");
-    } else {
-        b->w0[0] *= 8.0;
-        b->w0[1] *= 8.0;
-        snprintf(b->name, sizeof b->name, "fast");
-    }
+    check_body_paper_variant(j == BODIES_COUNT, b);
 }
 
 /* |L^{-1}|_F r: the scale of w and of its roundings (exact.h's Cholesky factor). */
