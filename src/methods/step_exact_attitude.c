@@ -391,8 +391,8 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
 }
 
 /* The state at t in the last step: the steady rotation over t - t0 to the bit (tau and what
- * its rounding left out), or the step's Taylor polynomial at tau / h; w and lambda from the
- * closed form. */
+ * its rounding left out), the series in E at t, or the step's Taylor polynomial at tau / h; w and
+ * lambda from the closed form. */
 static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lambda,
                      sus_attitude *att)
 {

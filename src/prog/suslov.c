@@ -150,7 +150,7 @@ static void failure_message(char *msg, size_t len, const char *name, int rc,
         snprintf(
             msg, len,
             "stopped before step %ld at t = %.17g: a --tol run takes at most %ld steps (the last "
-            "was %.3g long; a shorter --time or smaller --omega0 needs fewer)",
+            "was %.3g long; a shorter --time, a looser --tol or a smaller --omega0 needs fewer)",
             rep->step, rep->t, SUSLOV_TOL_MAX_STEPS, st->det);
     else if (rep->status == SUS_STEPPER_NO_MEMORY)
         snprintf(msg, len, "step %ld (t = %.17g) failed: out of memory for the method's workspace",
