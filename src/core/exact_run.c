@@ -38,32 +38,15 @@ double sus_exact_reference_steps(const sus_run_config *cfg, const double w0[2])
     return (double)(fminl(T, ra.t_s) / ra.h) + rows;
 }
 
-/* <I_m x, x> of x scaled by its largest entry, and that scale. */
-static double form_scaled(const sus_model *m, const double x[2], double *scale)
-{
-    *scale = fmax(fabs(x[0]), fabs(x[1]));
-    if (!(*scale > 0.0))
-        return 0.0;
-    const double v[2] = {x[0] / *scale, x[1] / *scale};
-    const double(*I)[3] = m->I;
-    return I[0][0] * v[0] * v[0] + (I[0][1] + I[1][0]) * v[0] * v[1] + I[1][1] * v[1] * v[1];
-}
-
-/* |w_inf| T without the closed form: the steady rotations are the multiples of d = (-I32, I31)
- * (c(w) = 0), and the energy is conserved, so |w_inf| = |d| sqrt(<I_m w0, w0> / <I_m d, d>);
- * w0 itself where d = 0 (w stays w0). Each vector scaled by its largest entry first, so that no
- * square overflows or underflows; I_m is positive definite, so the forms are positive. A check's
- * yardstick: a few roundings of the forms, times cond(I_m) at worst, against the closed form's. */
 double sus_exact_turn_angle(const sus_model *m, const double w0[2], double T)
 {
     if (!sus_model_sealed(m) || !sus_args_finite2(w0) || !(T >= 0.0) || !isfinite(T))
         return -1.0;
-    const double d[2] = {-m->I[2][1], m->I[2][0]};
-    double sw, sd;
-    const double fw = form_scaled(m, w0, &sw), fd = form_scaled(m, d, &sd);
-    const double speed =
-        sd > 0.0 ? sw * hypot(d[0] / sd, d[1] / sd) * sqrt(fw / fd) : hypot(w0[0], w0[1]);
-    return T * speed;
+    sus_exact ex;
+    double w_inf[2];
+    sus_exact_init(&ex, m, w0);
+    sus_exact_limit(&ex, w_inf);
+    return T * hypot(w_inf[0], w_inf[1]);
 }
 
 int sus_run_exact(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
