@@ -1,7 +1,5 @@
 #include "api_args.h"
 
-#include "exact_run.h"
-
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -121,9 +119,6 @@ const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit
         return "w0: below 2^-500, or its energy below the normal doubles, where the "
                "tolerance-driven methods' series, products of w and w, lose their bits: scale w0 "
                "up and t_end down alike";
-    if (!(sus_exact_turn_angle(cfg->model, w0, cfg->t_end) <= cfg->stepper->tol->max_angle))
-        return "cfg->t_end: the steady rotation turns the body by more than the method's "
-               "max_angle by then, beyond which its attitude does not keep its promise";
     return NULL;
 }
 

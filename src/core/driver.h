@@ -98,7 +98,9 @@ int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, voi
  * It refuses with SUS_RUN_BAD_ARGUMENT (above) a stepper without tol (a fixed-step method) or
  * without its alloc, step and free (and dense, for every_time > 0); a tol that is not finite
  * and > 0; a t_end or every_time that is not finite and >= 0; more rows every_time apart than
- * it can count (t_end / every_time >= 2^62); and max_steps < 0. */
+ * it can count (t_end / every_time >= 2^62); max_steps < 0; and a t_end by which the steady
+ * rotation turns the body past the method's max_angle (stepper.h; checked once its workspace is
+ * allocated, which may build the closed form that answers it). */
 int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                 sus_run_report *report);
 

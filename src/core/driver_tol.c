@@ -4,6 +4,7 @@
 #include "driver.h"
 
 #include "api_args.h"
+#include "exact_run.h"
 
 #include <math.h>
 
@@ -16,6 +17,16 @@ typedef struct {
     long next_out; /* the next output time is next_out * every_time */
     double h_last; /* the last accepted step */
 } tol_run;
+
+/* Whether the steady rotation turns the body by at most the method's max_angle by t_end, its
+ * attitude's promise; from the method's own closed form when its workspace holds one. */
+static int within_angle(const tol_run *r, const double w0[2])
+{
+    const double T = r->cfg->t_end;
+    const double angle = r->ops->turn_angle ? r->ops->turn_angle(r->wk, T)
+                                            : sus_exact_turn_angle(r->cfg->model, w0, T);
+    return angle <= r->ops->max_angle;
+}
 
 static int fail(tol_run *r, sus_run_report *report, int rc, long step, double t,
                 const sus_stepper_stats *st)
@@ -75,6 +86,12 @@ int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit,
     if (!(r.wk = r.ops->alloc(cfg->model, cfg->tol, w0))) {
         report->status = SUS_STEPPER_NO_MEMORY;
         return SUS_RUN_STEP_FAILED;
+    }
+    if (!within_angle(&r, w0)) {
+        r.ops->free(r.wk);
+        return sus_args_refuse(report, "cfg->t_end: the steady rotation turns the body by more "
+                                       "than the method's max_angle by then, beyond which its "
+                                       "attitude does not keep its promise");
     }
     int rc = emit_row(&r, &r.row, &r.att, emit, ctx, report);
     while (rc == SUS_RUN_OK && r.row.t < cfg->t_end) {

@@ -106,6 +106,9 @@ typedef struct {
     /* The largest angle t_end |w_inf| (sus_exact_turn_angle) over which its attitude keeps its
      * promise: sus_run_tol refuses a run beyond it. */
     double max_angle;
+    /* Optional: that angle at T from the workspace, for a method whose alloc already built the
+     * closed form (exact.h); NULL has the driver build it (sus_exact_turn_angle) once more. */
+    double (*turn_angle)(const sus_tol_work *wk, double T);
 } sus_tol_ops;
 
 /* ---- the implicit step equation ---- */

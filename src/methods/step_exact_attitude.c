@@ -357,6 +357,14 @@ static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2]
 
 static void ea_free(sus_tol_work *wk) { free(wk); }
 
+/* sus_exact_turn_angle from the closed form alloc built */
+static double ea_turn_angle(const sus_tol_work *wk, double T)
+{
+    double w_inf[2];
+    sus_exact_limit(&wk->ex, w_inf);
+    return T * hypot(w_inf[0], w_inf[1]);
+}
+
 static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], double *lambda,
                    sus_attitude *att, sus_stepper_stats *st)
 {
@@ -408,8 +416,13 @@ static void ea_dense(const sus_tol_work *wk, double t, double w[3], double *lamb
     state_at(wk, t, q, w, lambda, att);
 }
 
-static const sus_tol_ops EA_OPS = {
-    ea_alloc, ea_step, ea_dense, ea_free, sus_step_exact_attitude_order, SUS_STEADY_TURN_MAX_ANGLE};
+static const sus_tol_ops EA_OPS = {ea_alloc,
+                                   ea_step,
+                                   ea_dense,
+                                   ea_free,
+                                   sus_step_exact_attitude_order,
+                                   SUS_STEADY_TURN_MAX_ANGLE,
+                                   ea_turn_angle};
 
 const sus_stepper_type sus_step_exact_attitude_type = {.name = "exact-attitude",
                                                        .tol = &EA_OPS,

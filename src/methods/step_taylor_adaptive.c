@@ -422,7 +422,8 @@ static const sus_tol_ops ADAPTIVE_OPS = {adaptive_alloc,
                                          adaptive_dense,
                                          adaptive_free,
                                          sus_step_taylor_adaptive_order,
-                                         SUS_STEADY_TURN_MAX_ANGLE};
+                                         SUS_STEADY_TURN_MAX_ANGLE,
+                                         NULL};
 
 const sus_stepper_type sus_step_taylor_adaptive_type = {
     .name = "taylor-adaptive",
