@@ -45,7 +45,7 @@ void sus_lab_bench_free(sus_lab_bench *b)
     free(c->ns_direct);
     free(c->ns_full_min);
     free(c->newton);
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 4; k++) {
         free(b->env[k].sec);
         free(b->env[k].err);
     }

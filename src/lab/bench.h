@@ -169,8 +169,10 @@ typedef struct {
     sus_lab_bench_point *points;
     int npoints;
     sus_lab_bench_costs cost;
-    sus_lab_bench_envelope env[3]; /* the full problem's peers 0: w, 1: attitude; 2: reduced */
-    sus_lab_bench_longrun *LR;     /* nseries at most */
+    /* the full problem's peers 0: w, 1: attitude; 2: the peers on the reduced problem, attitude;
+     * 3: ours, attitude (the same staircase over our points) */
+    sus_lab_bench_envelope env[4];
+    sus_lab_bench_longrun *LR; /* nseries at most */
     int nlr;
     sus_lab_bench_equal_error *EQ; /* nseries at most */
     int neq;

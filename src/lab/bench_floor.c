@@ -7,6 +7,8 @@
 
 int sus_lab_bench_is_peer(const sus_lab_bench_series *s) { return !s->ours && !s->reduced; }
 int sus_lab_bench_is_reduced_peer(const sus_lab_bench_series *s) { return !s->ours && s->reduced; }
+/* Ours with an attitude (not w alone). */
+static int is_ours_attitude(const sus_lab_bench_series *s) { return s->ours && !s->w_only; }
 int sus_lab_bench_is_ours_preserving(const sus_lab_bench_series *s)
 {
     return s->ours && s->preserves;
@@ -36,10 +38,10 @@ sus_lab_bench_best sus_lab_bench_fastest(const sus_lab_bench *b, double level, i
     return fastest_by(b, level, which, want, 0);
 }
 
-/* The points (time and error) of the peers that want selects into sec and err; returns how
+/* The points (time and error) of the series that want selects into sec and err; returns how
  * many. */
-static int peer_points(const sus_lab_bench *b, int which, int (*want)(const sus_lab_bench_series *),
-                       double *sec, double *err)
+static int series_points(const sus_lab_bench *b, int which,
+                         int (*want)(const sus_lab_bench_series *), double *sec, double *err)
 {
     int n = 0;
     for (int i = 0; i < b->nseries; i++)
@@ -61,7 +63,7 @@ static void build_envelope(const sus_lab_bench *b, int which,
     size_t *idx = sus_lab_bench_calloc(np, sizeof *idx);
     e->sec = sus_lab_bench_calloc(np, sizeof *e->sec);
     e->err = sus_lab_bench_calloc(np, sizeof *e->err);
-    const int n = peer_points(b, which, want, sec, err);
+    const int n = series_points(b, which, want, sec, err);
     gsl_sort_index(idx, sec, 1, (size_t)n);
     e->n = 0;
     double best = INFINITY;
@@ -84,6 +86,7 @@ void sus_lab_bench_envelopes(sus_lab_bench *b)
     build_envelope(b, 0, sus_lab_bench_is_peer, &b->env[0]);
     build_envelope(b, 1, sus_lab_bench_is_peer, &b->env[1]);
     build_envelope(b, 1, sus_lab_bench_is_reduced_peer, &b->env[2]);
+    build_envelope(b, 1, is_ours_attitude, &b->env[3]);
 }
 
 /* Implicit steps are left out: their Newton iterations, hence their cost, depend on the step. A

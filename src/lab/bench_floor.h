@@ -25,8 +25,8 @@ int sus_lab_bench_is_ours_preserving(const sus_lab_bench_series *s);
 sus_lab_bench_best sus_lab_bench_fastest(const sus_lab_bench *b, double level, int which,
                                          int (*want)(const sus_lab_bench_series *));
 
-/* b->env[0] and b->env[1] (the full problem's peers), b->env[2] (the reduced problem's, attitude),
- * from the timed points. */
+/* b->env[0] and b->env[1] (the full problem's peers), b->env[2] (the reduced problem's, attitude)
+ * and b->env[3] (ours, attitude), from the timed points. */
 void sus_lab_bench_envelopes(sus_lab_bench *b);
 
 /* The floor at a level: the fewest steps any of our explicit structure-preserving methods needs

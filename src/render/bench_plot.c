@@ -101,8 +101,20 @@ static sus_plot_style envelope_style(int reduced)
  * attitude error, not of w alone. */
 static int in_panel(const sus_lab_bench_series *s, int p) { return p ? !s->w_only : !s->reduced; }
 
-/* Panel p: (a) the w error, (b) the attitude error. */
-static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_style *st)
+/* The dotted lines at the target accuracies. */
+static void level_lines(const sus_plot_axes *ax)
+{
+    const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_GREY, 0.3, 2, SUS_PLOT_NONE, 0, NULL);
+    for (int l = 0; l < SUS_LAB_BENCH_NLEVELS; l++) {
+        const double yy[2] = {SUS_LAB_BENCH_LEVELS[l], SUS_LAB_BENCH_LEVELS[l]},
+                     xx[2] = {ax->x0, ax->x1};
+        sus_plot_series(ax, xx, yy, 2, 1, &ls);
+    }
+}
+
+/* The axes of panel p ((a) the w error, (b) the attitude error) at (x, y): every point it draws. */
+static void wp_axes(cairo_t *cr, const sus_lab_bench *b, int p, double x, double y,
+                    sus_plot_axes *ax)
 {
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < b->nseries; i++) {
@@ -111,14 +123,21 @@ static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_
         sus_plot_extend(&x0, &x1, b->S[i]->sec, (size_t)b->S[i]->n, 1, 1);
         sus_plot_extend(&y0, &y1, p ? b->S[i]->err_R : b->S[i]->err_w, (size_t)b->S[i]->n, 1, 1);
     }
+    sus_plot_axes_init(ax, cr, x, y, WP_W / 2 - 75, WP_PANEL_H, x0, x1, fmax(y0, 1e-17),
+                       fmin(y1, 1.0), 1, 1);
+    sus_plot_pad(&ax->x0, &ax->x1, 1);
+    sus_plot_pad(&ax->y0, &ax->y1, 1);
+}
+
+#define ATT_LABEL "attitude error dist(R(50), R\xe2\x82\x99)"
+
+/* Panel p: (a) the w error, (b) the attitude error. */
+static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_style *st)
+{
     sus_plot_axes ax;
-    sus_plot_axes_init(&ax, cr, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, WP_PANEL_H, x0, x1,
-                       fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
-    sus_plot_pad(&ax.x0, &ax.x1, 1);
-    sus_plot_pad(&ax.y0, &ax.y1, 1);
+    wp_axes(cr, b, p, 58 + p * (WP_W / 2), 28, &ax);
     sus_plot_frame(&ax, "seconds per run",
-                   p ? "attitude error dist(R(50), R\xe2\x82\x99)"
-                     : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
+                   p ? ATT_LABEL : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
                    p ? "(b)" : "(a)");
     for (int pass = 0; pass < 2; pass++) /* peers first, underneath */
         for (int i = 0; i < b->nseries; i++) {
@@ -132,12 +151,45 @@ static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_
     sus_plot_series(&ax, b->env[p].sec, b->env[p].err, (size_t)b->env[p].n, 1, &es);
     if (p)
         sus_plot_series(&ax, b->env[2].sec, b->env[2].err, (size_t)b->env[2].n, 1, &er);
-    for (int l = 0; l < SUS_LAB_BENCH_NLEVELS; l++) { /* the target accuracies */
-        const double yy[2] = {SUS_LAB_BENCH_LEVELS[l], SUS_LAB_BENCH_LEVELS[l]},
-                     xx[2] = {ax.x0, ax.x1};
-        const sus_plot_style ls = sus_plot_style_of(SUS_PLOT_GREY, 0.3, 2, SUS_PLOT_NONE, 0, NULL);
-        sus_plot_series(&ax, xx, yy, 2, 1, &ls);
+    level_lines(&ax);
+}
+
+/* Whether one of series s's attitude points lies on our lower envelope e. */
+static int on_envelope(const sus_lab_bench_series *s, const sus_lab_bench_envelope *e)
+{
+    for (int j = 0; j < s->n; j++)
+        for (int k = 0; k < e->n; k++)
+            if (s->sec[j] == e->sec[k] && s->err_R[j] == e->err[k])
+                return 1;
+    return 0;
+}
+
+/* Panel (c), at the top y: (b) with only our best, the series of ours with a point on our lower
+ * envelope (bench_floor.h), over the peers' two envelopes; its legend to the right. */
+static void best_panel(cairo_t *cr, const sus_lab_bench *b, const sus_plot_style *st, double y)
+{
+    sus_plot_axes ax;
+    wp_axes(cr, b, 1, 58, y, &ax);
+    sus_plot_frame(&ax, "seconds per run", ATT_LABEL, "(c)");
+    const sus_plot_style es = envelope_style(0), er = envelope_style(1);
+    sus_plot_series(&ax, b->env[1].sec, b->env[1].err, (size_t)b->env[1].n, 1, &es);
+    sus_plot_series(&ax, b->env[2].sec, b->env[2].err, (size_t)b->env[2].n, 1, &er);
+    sus_plot_style *leg = sus_lab_bench_calloc((size_t)b->nseries + 2, sizeof *leg);
+    int n = 0;
+    for (int i = 0; i < b->nseries; i++) {
+        const sus_lab_bench_series *s = b->S[i];
+        if (!s->ours || s->w_only || !on_envelope(s, &b->env[3]))
+            continue;
+        leg[n] = st[i];
+        leg[n].width = 2.0; /* the few lines of this panel, drawn as the envelopes are */
+        sus_plot_series(&ax, s->sec, s->err_R, (size_t)s->n, 1, &leg[n]);
+        sus_plot_markers(&ax, s->sec, s->err_R, (size_t)s->n, 1, &leg[n]);
+        n++;
     }
+    level_lines(&ax);
+    leg[n++] = es, leg[n++] = er;
+    sus_plot_legend_packed(cr, 12 + WP_W / 2, y + 10, leg, n, 1);
+    free(leg);
 }
 
 static void draw_wp(cairo_t *cr, void *vctx)
@@ -149,8 +201,8 @@ static void draw_wp(cairo_t *cr, void *vctx)
     wp_styles(b, st, rgb);
     for (int p = 0; p < 2; p++)
         wp_panel(cr, b, p, st);
-    /* legend: ours and the peers' two envelopes in two columns below the panels; what the peers
-     * were given is in the caption (paper/methods.tex), not a box of text in the figure */
+    /* legend of (a) and (b): ours and the peers' two envelopes in two columns below the panels;
+     * what the peers were given is in the caption (paper/methods.tex), not a box of text */
     int nours = 0;
     for (int i = 0; i < b->nseries; i++)
         if (b->S[i]->ours)
@@ -158,6 +210,7 @@ static void draw_wp(cairo_t *cr, void *vctx)
     ours[nours++] = envelope_style(0);
     ours[nours++] = envelope_style(1);
     sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
+    best_panel(cr, b, st, WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 34.0);
     free(st);
     free(ours);
     free(rgb);
@@ -240,8 +293,9 @@ int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir)
     int nours = 2; /* the two envelopes */
     for (int i = 0; i < b->nseries; i++)
         nours += b->S[i]->ours;
-    /* tall enough for the legend's two columns and no more */
-    const double wp_h = WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 6.0;
+    /* tall enough for the legend's two columns and panel (c) below them, and no more */
+    const double wp_h =
+        WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 34.0 + WP_PANEL_H + 34.0;
     if (sus_plot_write(path, WP_W, wp_h, draw_wp, (void *)b, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;

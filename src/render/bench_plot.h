@@ -1,8 +1,9 @@
 /* make bench's figures: work_precision (seconds per run against the w and the attitude error at
  * t = 50, our methods in colour over the peers in grey, the peers' lower envelopes in black, solid
- * on the full problem and dashed on the reduced one, the target levels dotted) and step_cost (the
- * cost of one step of every method, GSL's rk4 and the closed form). Drawn from what
- * sus_lab_bench_load reads back of a run (bench_load.h). */
+ * on the full problem and dashed on the reduced one, the target levels dotted; and the attitude
+ * again with only the series that make our lower envelope) and step_cost (the cost of one step
+ * of every method, GSL's rk4 and the closed form). Drawn from what sus_lab_bench_load reads back
+ * of a run (bench_load.h). */
 #ifndef SUS_PLOT_BENCH_PLOT_H
 #define SUS_PLOT_BENCH_PLOT_H
 
