@@ -1,9 +1,9 @@
 /* figures/longrun: the structure over a long run, T = 1e4. Our high-order methods and
  * GSL's rk8pd, each run at the step or tolerance that reaches attitude error 1e-10 at t = 50
  * (matched accuracy), sampled 500 times: (a) |R^T R - I| (for rk8pd on (w, q), where R = R(q/|q|)
- * is orthogonal by construction, the drift ||q| - 1| instead), (b) |E - E0|. w3 is exactly 0 for
- * every curve (ours never compute it; the peers integrate w1, w2 only), stated in the caption.
- * Usage: figure_longrun FIGDIR DATADIR */
+ * is orthogonal by construction, the drift ||q| - 1| instead; ours as one band), (b) |E - E0|.
+ * w3 is exactly 0 for every curve (ours never compute it; the peers integrate w1, w2 only),
+ * stated in the caption. Usage: figure_longrun FIGDIR DATADIR */
 #include "driver.h"
 #include "exact.h"
 #include "fig_output.h"
@@ -134,11 +134,36 @@ static void peer(size_t dim)
     gsl_odeiv2_driver_free(d);
 }
 
+/* Panel (a)'s band: at each sample, the least and the largest over our methods of the largest
+ * |R^T R - I| each has reached so far. Our curves are round-off, a tangle of lines at one level;
+ * what (a) asks is whether they stay there. */
+static void ours_band(double lo[NS + 1], double hi[NS + 1], double t[NS + 1])
+{
+    double so_far[nc > 0 ? nc : 1];
+    for (int i = 0; i < nc; i++)
+        so_far[i] = 0.0;
+    for (int k = 0; k <= NS; k++) {
+        lo[k] = INFINITY, hi[k] = 0.0;
+        for (int i = 0; i < nc; i++) {
+            if (!C[i].ours)
+                continue;
+            so_far[i] = fmax(so_far[i], C[i].orth[k]);
+            lo[k] = fmin(lo[k], so_far[i]);
+            hi[k] = fmax(hi[k], so_far[i]);
+            t[k] = C[i].t[k];
+        }
+    }
+}
+
+#define BAND_LABEL "ours, in (a): range of max |R\xe1\xb5\x80R \xe2\x88\x92 I| up to t"
+
 static void draw(cairo_t *cr, void *vctx)
 {
     (void)vctx;
-    const double W = LR_W;
-    sus_plot_style st[nc > 0 ? nc : 1];
+    const double W = LR_W, band_rgb[3] = {0.55, 0.75, 0.95};
+    double lo[NS + 1], hi[NS + 1], t[NS + 1];
+    ours_band(lo, hi, t);
+    sus_plot_style st[nc + 1];
     int k = 0;
     for (int i = 0; i < nc; i++)
         st[i] = C[i].ours ? sus_plot_style_of(SUS_PLOT_PALETTE[k++ % SUS_PLOT_PALETTE_N], 1.1, 0,
@@ -153,10 +178,14 @@ static void draw(cairo_t *cr, void *vctx)
                                : "|R\xe1\xb5\x80R \xe2\x88\x92 I|  "
                                  "(peer on (\xcf\x89, q): ||q| \xe2\x88\x92 1|)";
         sus_plot_frame(&ax, "t", ylabel, p ? "(b)" : "(a)");
+        if (!p)
+            sus_plot_band(&ax, t + 1, lo + 1, hi + 1, NS, band_rgb);
         for (int i = 0; i < nc; i++)
-            sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
+            if (p || !C[i].ours)
+                sus_plot_series(&ax, C[i].t + 1, (p ? C[i].energy : C[i].orth) + 1, NS, 1, &st[i]);
     }
-    sus_plot_legend_columns(cr, 12, LR_LEGEND_Y, W - 8, st, nc);
+    st[nc] = sus_plot_style_of(band_rgb, 4.0, 0, SUS_PLOT_NONE, 0, BAND_LABEL);
+    sus_plot_legend_columns(cr, 12, LR_LEGEND_Y, W - 8, st, nc + 1);
 }
 
 /* One row per curve and sample. */
@@ -195,7 +224,10 @@ static void caption(char *cap, size_t size)
         "at t = 50 against the long-double reference; 500 samples. (a) |R^T R - I| (for rk8pd "
         "on (w, q) the\n"
         "attitude R(q/|q|) is orthogonal by construction; its drift ||q| - 1| is drawn "
-        "instead); (b) |E - E0|.\n"
+        "instead); ours as one band,\n"
+        "from the least to the largest over the methods of each one's max |R^T R - I| up to t "
+        "(the curves\n"
+        "themselves are round-off, in data/longrun.csv); (b) |E - E0|.\n"
         "Exact zeros are drawn at 1e-17. w3 is exactly 0 for every curve: ours never compute "
         "it, the peers\n"
         "integrate w1, w2 only. Curves (data/longrun.csv, column curve):\n");
@@ -234,7 +266,7 @@ int main(int argc, char **argv)
     char cap[8192];
     caption(cap, sizeof cap);
     const double h =
-        LR_LEGEND_Y + 11.0 * ((nc + 1) / 2) + 20.0; /* two legend columns of 11-unit rows */
+        LR_LEGEND_Y + 11.0 * ((nc + 2) / 2) + 20.0; /* two legend columns of 11-unit rows */
     const int rc = sus_plot_fig_write_figure(argv[1], "longrun", LR_W, h, draw, NULL, cap) != 0;
     free(C);
     return rc;

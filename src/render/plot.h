@@ -85,6 +85,10 @@ void sus_plot_markers(const sus_plot_axes *ax, const double *x, const double *y,
 /* A filled rectangle [x0, x1] x [y0, y1] in data coordinates (a cell of a map), clipped. */
 void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, double y1,
                    const double rgb[3]);
+/* The region between the curves (x, lo) and (x, hi), filled, clipped; points that are not
+ * visible on the axes (a zero on a log axis, a NaN) are left out. */
+void sus_plot_band(const sus_plot_axes *ax, const double *x, const double *lo, const double *hi,
+                   size_t n, const double rgb[3]);
 /* A legend box: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right, 4 middle-left,
  * 5 middle-right. */
 void sus_plot_legend(const sus_plot_axes *ax, const sus_plot_style *st, int n, int corner);

@@ -129,6 +129,25 @@ void sus_plot_rect(const sus_plot_axes *ax, double x0, double x1, double y0, dou
     cairo_restore(cr);
 }
 
+void sus_plot_band(const sus_plot_axes *ax, const double *x, const double *lo, const double *hi,
+                   size_t n, const double rgb[3])
+{
+    cairo_t *cr = ax->cr;
+    cairo_save(cr);
+    clip_to(ax);
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_new_path(cr);
+    for (size_t i = 0; i < n; i++) /* along hi, then back along lo */
+        if (visible(ax, x[i], hi[i]) && visible(ax, x[i], lo[i]))
+            cairo_line_to(cr, sus_plot_map_x(ax, x[i]), sus_plot_map_y(ax, hi[i]));
+    for (size_t i = n; i-- > 0;)
+        if (visible(ax, x[i], hi[i]) && visible(ax, x[i], lo[i]))
+            cairo_line_to(cr, sus_plot_map_x(ax, x[i]), sus_plot_map_y(ax, lo[i]));
+    cairo_close_path(cr);
+    cairo_fill(cr);
+    cairo_restore(cr);
+}
+
 int sus_plot_hidden_under(const sus_plot_axes *ax, const double *x, const double *ya,
                           const double *yb, size_t n, double tol)
 {

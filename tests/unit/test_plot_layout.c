@@ -3,13 +3,43 @@
  * points per decade, a factor 1 + 1e-3 moves a point by 10 log10(1.001) = 0.004 pt (hidden at
  * 1.5 pt) and a factor 1.5 by 1.8 pt (not hidden); a point the other curve does not draw, or a
  * curve that draws nothing, is never hidden. No text, scripts included, is set below the size that
- * prints at 7 pt. */
+ * prints at 7 pt. A band fills what lies between its two curves and nothing beyond them. */
 #include "check.h"
 #include "plot.h"
 
 #include <math.h>
+#include <stdint.h>
 
 #define N 8
+
+/* Whether the pixel at page point (x, y) is black, the band's colour on a white page. */
+static int dark(cairo_surface_t *s, double x, double y)
+{
+    cairo_surface_flush(s);
+    const unsigned char *px = cairo_image_surface_get_data(s);
+    const uint32_t v =
+        *(const uint32_t *)(px + (int)y * cairo_image_surface_get_stride(s) + 4 * (int)x);
+    return (v & 0xffffff) == 0;
+}
+
+/* The band between 1e-6 and 1e-4 on log axes at page (10, 10), 150 x 100 points, of x in
+ * [1e-3, 1] and y in [1e-10, 1]: x = 10^a lies at 10 + 50 (a + 3), y = 10^b at 10 - 10 b. Filled
+ * at (1e-2, 1e-5), page (60, 60); white at 1e-2 and 1e-8 above and below it, page y 30 and 90; a
+ * NaN on the upper curve at x = 1 leaves that point out, so the band ends at x = 0.1 (page 110)
+ * and page (145, 60), x = 0.5, stays white. */
+static void band(cairo_t *cr, cairo_surface_t *s)
+{
+    sus_plot_axes ax;
+    sus_plot_axes_init(&ax, cr, 10, 10, 150, 100, 1e-3, 1.0, 1e-10, 1.0, 1, 1);
+    const double x[4] = {1e-3, 1e-2, 1e-1, 1.0}, lo[4] = {1e-6, 1e-6, 1e-6, 1e-6},
+                 hi[4] = {1e-4, 1e-4, 1e-4, NAN};
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    sus_plot_band(&ax, x, lo, hi, 4, (const double[3]){0, 0, 0});
+    CHECK(dark(s, 60, 60), "a band fills between its curves");
+    CHECK(!dark(s, 60, 30) && !dark(s, 60, 90), "and nothing above or below them");
+    CHECK(!dark(s, 145, 60), "a point it cannot draw is left out: the band ends before it");
+}
 
 int main(void)
 {
@@ -49,6 +79,7 @@ int main(void)
     const double r1 = sus_plot_legend_height(2) - sus_plot_legend_height(1);
     CHECK(r1 > 0.0 && fabs(sus_plot_legend_height(3) - sus_plot_legend_height(2) - r1) < 1e-12,
           "a legend grows by one line height per row (%g pt)", r1);
+    band(cr, s);
     cairo_destroy(cr);
     cairo_surface_destroy(s);
     return check_summary("test_plot_layout");
