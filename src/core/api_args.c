@@ -104,8 +104,11 @@ const char *sus_args_tol(const sus_tol_config *cfg, const double w0[2], sus_emit
         why = tol_stepper(cfg->stepper, cfg->every_time);
     if (why)
         return why;
-    if (!(cfg->tol > 0.0) || !isfinite(cfg->tol))
-        return "cfg->tol is not a finite tolerance > 0";
+    /* from 1 on, an error bound of an attitude (|dq| <= 2) says nothing: the CLI's --tol refuses
+     * it too; a tol below the rounding of the state is the methods' to refuse, at their first
+     * step (SUS_STEPPER_REJECTED) */
+    if (!(cfg->tol > 0.0 && cfg->tol < 1.0))
+        return "cfg->tol is not in (0, 1)";
     if (!(cfg->t_end >= 0.0) || !isfinite(cfg->t_end))
         return "cfg->t_end is not a finite time >= 0";
     if (!(cfg->every_time >= 0.0) || !isfinite(cfg->every_time))

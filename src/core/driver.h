@@ -21,10 +21,10 @@ typedef struct {
     long every; /* K: rows for k = 0, K, 2K, ... and always k = N */
 } sus_run_config;
 
-/* The run of a tolerance-driven stepper (stepper->tol set): tol > 0, the run ends at t_end, and
- * rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the method's
- * dense output; a time within 4u t_end of t_end is t_end), or at the end of every accepted step
- * (every_time = 0). A row's k is the index of the accepted step that reaches its t: the row at
+/* The run of a tolerance-driven stepper (stepper->tol set): tol in (0, 1), the run ends at
+ * t_end, and rows come at t = 0, every_time, 2 every_time, ... and t_end (every_time > 0, by the
+ * method's dense output; a time within 4u t_end of t_end is t_end), or at the end of every accepted
+ * step (every_time = 0). A row's k is the index of the accepted step that reaches its t: the row at
  * t_{k-1} < t <= t_k, t_k the end of the k-th accepted step, has k (row 0 has 0), so rows
  * every_time apart that fall in one step share its k, and before t_k only k - 1 steps are
  * accepted. The number of steps is known only as they are taken (it grows with |w0| t_end), so
@@ -96,11 +96,12 @@ int sus_run(const sus_run_config *cfg, const double w0[2], sus_emit_fn emit, voi
 /* The same for a tolerance-driven stepper (sus_run refuses one with SUS_RUN_BAD_ARGUMENT, as it
  * has no tolerance): report->step is the step that failed, report->t the time it started from.
  * It refuses with SUS_RUN_BAD_ARGUMENT (above) a stepper without tol (a fixed-step method) or
- * without its alloc, step and free (and dense, for every_time > 0); a tol that is not finite
- * and > 0; a t_end or every_time that is not finite and >= 0; more rows every_time apart than
- * it can count (t_end / every_time >= 2^62); max_steps < 0; and a t_end by which the steady
- * rotation turns the body past the method's max_angle (stepper.h; checked once its workspace is
- * allocated, which may build the closed form that answers it). */
+ * without its alloc, step and free (and dense, for every_time > 0); a tol not in (0, 1) (a tol
+ * below the rounding of the state fails at its first step instead); a t_end or every_time that is
+ * not finite and >= 0; more rows every_time apart than it can count (t_end / every_time >= 2^62);
+ * max_steps < 0; and a t_end by which the steady rotation turns the body past the method's
+ * max_angle (stepper.h; checked once its workspace is allocated, which may build the closed form
+ * that answers it). */
 int sus_run_tol(const sus_tol_config *cfg, const double w0[2], sus_emit_fn emit, void *ctx,
                 sus_run_report *report);
 

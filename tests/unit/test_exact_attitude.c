@@ -549,7 +549,7 @@ static int count_row(void *ctx, const sus_row *row)
     return 0;
 }
 
-/* A tolerance far below round-off (the library takes any tol > 0): its steps would be shorter
+/* A tolerance far below round-off (the library takes any tol in (0, 1)): its steps would be shorter
  * than a rounding of the longest allowed, and a run to t = 10 would take ~1e20 of them. It fails
  * at its first step instead (SUS_RUN_STEP_FAILED), as taylor-adaptive does; 2^-52, the CLI's
  * least, still runs. */
