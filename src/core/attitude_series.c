@@ -8,13 +8,16 @@
 
 #define ENVELOPE_TERMS 5 /* as the Taylor steps' envelope (step_exact_attitude.c) */
 
-double sus_att_series_E(const sus_exact_fast *f, double t)
+/* E(t)^dir, formed as one exponential: e^{-dir sigma s}. */
+static double variable(const sus_exact_fast *f, int dir, double t)
 {
     if (f->fixed || !(f->ks != 0.0))
         return 1.0;
     const double sigma = f->ks > 0.0 ? 1.0 : -1.0;
-    return exp(-sigma * (f->s0 + f->ks * t));
+    return exp(-dir * sigma * (f->s0 + f->ks * t));
 }
+
+double sus_att_series_E(const sus_exact_fast *f, double t) { return variable(f, 1, t); }
 
 static double quat_norm(const double q[4])
 {
@@ -64,11 +67,11 @@ static double tail_estimate(const double *T, int n, double a)
     return B / (1.0 - a);
 }
 
-/* The frame's terms of f's motion. */
-static frame_terms frame_of(const sus_exact_fast *f, double ew[2])
+/* The frame's terms of f's motion about the limit wlim. */
+static frame_terms frame_of(const sus_exact_fast *f, const double wlim[2], double ew[2])
 {
-    const double speed = hypot(f->winf[0], f->winf[1]);
-    ew[0] = f->winf[0] / speed, ew[1] = f->winf[1] / speed;
+    const double speed = hypot(wlim[0], wlim[1]);
+    ew[0] = wlim[0] / speed, ew[1] = wlim[1] / speed;
     const double a0 = 2.0 * f->M[0][0], a1 = 2.0 * f->M[1][0];
     return (frame_terms){a0 * ew[0] + a1 * ew[1], a1 * ew[0] - a0 * ew[1], 2.0 * speed, speed};
 }
@@ -112,7 +115,8 @@ static double coefficients(sus_att_series *s, const frame_terms *c, double k, do
 }
 
 /* P(E) in the body's frame: Horner's rule in the series' frame to the degree past which the terms,
- * at most mass (E / E_a)^j each, sum below u / 4, then the vector part turned back. */
+ * at most mass (E / E_a)^j each (E_a the variable's largest value), sum below u / 4, then the
+ * vector part turned back. */
 static void sum_at(const sus_att_series *s, double E, double p[4])
 {
     const double r = E / s->Ea, cut = ceil(log(0.25 * SUS_U * (1.0 - r) / s->mass) / log(r));
@@ -128,21 +132,25 @@ static void sum_at(const sus_att_series *s, double E, double p[4])
     p[3] = x[3];
 }
 
-double sus_att_series_build(sus_att_series *s, const sus_exact_fast *f, double ta,
+double sus_att_series_build(sus_att_series *s, const sus_exact_fast *f, double ta, double tb,
                             const double qa[4], double budget)
 {
-    const double E = sus_att_series_E(f, ta), k = fabs(f->ks);
-    if (!(E < 1.0))
+    const double Ea = sus_att_series_E(f, ta), k = fabs(f->ks);
+    s->dir = Ea < 1.0 ? 1 : -1;
+    /* the variable's largest value on [ta, tb]: at ta past the inflection, at tb before it */
+    const double X = s->dir > 0 ? Ea : variable(f, -1, tb);
+    if (!(X < 1.0) || !(tb >= ta))
         return -1.0;
-    const frame_terms c = frame_of(f, s->ew);
+    s->wlim[0] = s->dir * f->winf[0], s->wlim[1] = s->dir * f->winf[1];
+    const frame_terms c = frame_of(f, s->wlim, s->ew);
     const double alpha = (hypot(f->M[0][0], f->M[1][0]) + hypot(f->M[0][1], f->M[1][1])) / (2 * k);
-    const double est = coefficients(s, &c, k, alpha, E, budget);
+    const double est = coefficients(s, &c, s->dir * k, alpha, X, budget);
     if (est < 0.0)
         return est;
     double p[4], pinv[4];
     s->ta = ta;
-    s->Ea = E;
-    sum_at(s, E, p);
+    s->Ea = X;
+    sum_at(s, variable(f, s->dir, ta), p);
     const double n2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3];
     pinv[0] = p[0] / n2;
     for (int i = 1; i < 4; i++)
@@ -156,7 +164,7 @@ void sus_att_series_at(const sus_att_series *s, const sus_exact_fast *f, const d
 {
     double p[4], x[4];
     memcpy(x, s->left, sizeof x);
-    sus_steady_turn(f->winf, speed, s->ta, t, x);
-    sum_at(s, sus_att_series_E(f, t), p);
+    sus_steady_turn(s->wlim, speed, s->ta, t, x);
+    sum_at(s, variable(f, s->dir, t), p);
     sus_quat_mul(q, x, p);
 }

@@ -29,6 +29,14 @@
  * hold every step to it (tests/unit/test_exact_attitude.c). Both sums are cut at the same degree,
  * and the later one's E is smaller, so q carries at most twice that.
  *
+ * Before the inflection (E > 1) the same holds in the variable 1 / E = e^{sigma s0 + k t} < 1,
+ * which grows with t: w is the same rational function of it with w_inf replaced by w_-inf =
+ * -w_inf, the repelling steady rotation (sigma tanh s = -(1 - E^-2) / (1 + E^-2)), and k by -k
+ * (d(1/E)/dt = k / E). Its left side is then -k n and -k n - w_-inf x, invertible as before, and
+ * q(t) = q(t_a) (x) P(1/E(t_a))^{-1} (x) exp((t - t_a) w_-inf / 2) (x) P(1/E(t)) as long as 1 / E
+ * stays below 1: up to a t_b before the inflection, where 1 / E is largest, so the degree is
+ * chosen there, and the estimate made there bounds both sums.
+ *
  * Round-off: the sums add terms whose sizes sum to at most SUS_ATT_SERIES_MASS (P is a unit
  * quaternion, so more is cancellation), so each carries a few roundings of that. */
 #ifndef SUS_ATTITUDE_SERIES_H
@@ -45,9 +53,11 @@ extern "C" {
 
 typedef struct {
     int n;                               /* the degree: P_0 .. P_n */
+    int dir;                             /* 1: the series in E; -1: in 1 / E (above) */
     double P[SUS_ATT_SERIES_MAX + 1][4]; /* the coefficients */
-    double ta, Ea;                       /* where the series starts, and E there */
-    double ew[2];                        /* w_inf / |w_inf|: the series' frame (the .c file) */
+    double ta, Ea;                       /* where it starts; the variable's largest value */
+    double wlim[2];                      /* w_inf, or w_-inf = -w_inf for dir = -1 */
+    double ew[2];                        /* wlim / |wlim|: the series' frame (the .c file) */
     double mass;                         /* sum of |P_n| Ea^n: the sums' scale */
     double left[4];                      /* q(t_a) (x) P(E(t_a))^{-1} */
 } sus_att_series;
@@ -56,14 +66,16 @@ typedef struct {
  * that stays where it is: k = 0). */
 double sus_att_series_E(const sus_exact_fast *f, double t);
 
-/* The series from q(ta) = qa, to the degree at which twice its estimate (above) is at most
- * budget, in |dq|. Returns that twice the estimate, or -1 when it declines: E(ta) >= 1, no degree
- * up to SUS_ATT_SERIES_MAX meets the budget, the terms' sizes sum past SUS_ATT_SERIES_MASS, or a
- * term is not finite. */
-double sus_att_series_build(sus_att_series *s, const sus_exact_fast *f, double ta,
+/* The series from q(ta) = qa for t in [ta, tb], to the degree at which twice its estimate (above)
+ * is at most budget, in |dq|: in E past the inflection (E(ta) < 1; tb may be infinite), in 1 / E
+ * before it (E(ta) > 1, and 1 / E(tb) < 1: tb before the inflection too). Returns that twice the
+ * estimate, or -1 when it declines: E(ta) = 1, tb < ta, tb at or past the inflection for a
+ * start before it, no degree up to SUS_ATT_SERIES_MAX meets the budget, the terms' sizes sum past
+ * SUS_ATT_SERIES_MASS, or a term is not finite. */
+double sus_att_series_build(sus_att_series *s, const sus_exact_fast *f, double ta, double tb,
                             const double qa[4], double budget);
 
-/* q(t), t >= s->ta, by the formula above; speed = |w_inf| as steady_turn.h has it. */
+/* q(t), t in [s->ta, tb], by the formula above; speed = |w_inf| as steady_turn.h has it. */
 void sus_att_series_at(const sus_att_series *s, const sus_exact_fast *f, const double speed[2],
                        double t, double q[4]);
 

@@ -45,8 +45,10 @@
  * series in t stops at w's nearest singularity. So once E(t) is small enough that the series'
  * degree for the budget left, by the terms' fall alone, log(budget) / log(E), is at most
  * SERIES_TERMS, one step of it takes the rest of the way to t_stop, with the whole budget left as
- * its share. A start past the inflection is then one step to t_stop; before it, Taylor steps
- * cross the inflection first.
+ * its share. A start past the inflection is then one step to t_stop. Before it, where 1 / E < 1 is
+ * small, one step of the series in 1 / E (attitude_series.h) goes to where 1 / E has grown to
+ * about the same size, with its share of the budget like a Taylor step, and Taylor steps cross
+ * the inflection between the two series' disks.
  *
  * The degree, by TOL (DEGREES): the one with the least measured time to t = 50 over the paper's,
  * the general and the stiff bodies of tests/unit/bodies.h (geometric mean of time over the best
@@ -87,6 +89,9 @@
 /* The series in E is tried where its degree for the budget left, log(budget) / log(E) (the terms'
  * fall alone), would be at most this: so many degrees cost about two Taylor steps. */
 #define SERIES_TERMS 40
+/* A step of the series in 1 / E is tried where it spans at least this much of s (ln 4): less, and
+ * a Taylor step, whose length is a fraction of the distance |s + i pi/2| / k, goes as far. */
+#define BACK_MIN_LOG 1.3862943611198906
 
 typedef enum { KIND_TAYLOR, KIND_SERIES, KIND_TAIL } step_kind;
 
@@ -111,6 +116,7 @@ struct sus_tol_work {
     double t0, h, q0[4];
     double speed[2];       /* |w_inf| in double-double, speed[0] + speed[1]; set at alloc */
     double e_try;          /* the series in E is tried from E(t) <= e_try on */
+    int back_declined;     /* the series in 1 / E declined once: not tried again */
     taylor_series ts;      /* its series (q's rows scaled to its length) */
     sus_att_series series; /* or its series in E */
 };
@@ -312,13 +318,41 @@ static int series_step(sus_tol_work *wk, double t, double stop, double rate, dou
     const double E = sus_att_series_E(&wk->f, t), left = rate * (stop - t);
     if (!(E <= wk->e_try) || !(log(0.5 * left) / log(E) <= SERIES_TERMS))
         return 0;
-    *est = sus_att_series_build(&wk->series, &wk->f, t, q, left);
+    *est = sus_att_series_build(&wk->series, &wk->f, t, stop, q, left);
     if (*est < 0.0) {
         wk->e_try = 0.5 * E;
         return 0;
     }
     sus_att_series_at(&wk->series, &wk->f, wk->speed, stop, q);
     *h = stop - t;
+    return 1;
+}
+
+/* Before the inflection: one step of the series in 1 / E (attitude_series.h) from t, where 1 / E
+ * = X, to where 1 / E reaches the X_b at which the degree for the step's share, by the terms'
+ * fall alone, is about SERIES_TERMS (or to stop), with its share of the budget, rate h; tried
+ * only where that step is at least BACK_MIN_LOG / k long (shorter, a Taylor step or two would do)
+ * and not after the series has declined once. 1 when taken, t_next the step's end. */
+static int back_series_step(sus_tol_work *wk, double t, double stop, double rate, double q[4],
+                            double *h, double *t_next, double *est)
+{
+    const double X = 1.0 / sus_att_series_E(&wk->f, t), k = wk->ex.k;
+    if (wk->back_declined || !(X < 1.0))
+        return 0;
+    /* X_b from the share of the step to X_b = left^(1/SERIES_TERMS), the most the share can be */
+    const double x0 = pow(0.5 * rate * (stop - t), 1.0 / SERIES_TERMS);
+    const double share = rate * fmin(stop - t, log(x0 / X) / k);
+    const double xb = pow(0.5 * share, 1.0 / SERIES_TERMS);
+    if (!(log(xb / X) >= BACK_MIN_LOG))
+        return 0;
+    *t_next = sus_step_end(t, log(xb / X) / k, stop);
+    *h = *t_next - t;
+    *est = sus_att_series_build(&wk->series, &wk->f, t, *t_next, q, rate * *h);
+    if (*est < 0.0) {
+        wk->back_declined = 1;
+        return 0;
+    }
+    sus_att_series_at(&wk->series, &wk->f, wk->speed, *t_next, q);
     return 1;
 }
 
@@ -381,7 +415,8 @@ static int ea_step(sus_tol_work *wk, double t_end, double *t, double w[3], doubl
         rate = rate_of(wk, *t, t_end);
         wk->kind = KIND_SERIES;
         t_next = stop;
-        if (!series_step(wk, *t, stop, rate, q, &h, &est)) {
+        if (!series_step(wk, *t, stop, rate, q, &h, &est) &&
+            !back_series_step(wk, *t, stop, rate, q, &h, &t_next, &est)) {
             wk->kind = KIND_TAYLOR;
             failed = taylor_step(wk, *t, stop, rate, w, q, &h, &t_next, &est);
         }
