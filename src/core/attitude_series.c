@@ -115,11 +115,11 @@ static double coefficients(sus_att_series *s, const frame_terms *c, double k, do
 }
 
 /* P(E) in the body's frame: Horner's rule in the series' frame to the degree past which the terms,
- * at most mass (E / E_a)^j each (E_a the variable's largest value), sum below u / 4, then the
+ * at most mass (E / Xmax)^j each (Xmax the variable's largest value), sum below u / 4, then the
  * vector part turned back. */
 static void sum_at(const sus_att_series *s, double E, double p[4])
 {
-    const double r = E / s->Ea, cut = ceil(log(0.25 * SUS_U * (1.0 - r) / s->mass) / log(r));
+    const double r = E / s->Xmax, cut = ceil(log(0.25 * SUS_U * (1.0 - r) / s->mass) / log(r));
     const int n = r < 1.0 && cut < s->n ? (int)cut : s->n;
     double x[4];
     memcpy(x, s->P[n], sizeof x);
@@ -149,7 +149,7 @@ double sus_att_series_build(sus_att_series *s, const sus_exact_fast *f, double t
         return est;
     double p[4], pinv[4];
     s->ta = ta;
-    s->Ea = X;
+    s->Xmax = X;
     sum_at(s, variable(f, s->dir, ta), p);
     const double n2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3];
     pinv[0] = p[0] / n2;

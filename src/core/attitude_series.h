@@ -55,11 +55,11 @@ typedef struct {
     int n;                               /* the degree: P_0 .. P_n */
     int dir;                             /* 1: the series in E; -1: in 1 / E (above) */
     double P[SUS_ATT_SERIES_MAX + 1][4]; /* the coefficients */
-    double ta, Ea;                       /* where it starts; the variable's largest value */
+    double ta, Xmax;                     /* where it starts; the variable's largest value on it */
     double wlim[2];                      /* w_inf, or w_-inf = -w_inf for dir = -1 */
     double ew[2];                        /* wlim / |wlim|: the series' frame (the .c file) */
-    double mass;                         /* sum of |P_n| Ea^n: the sums' scale */
-    double left[4];                      /* q(t_a) (x) P(E(t_a))^{-1} */
+    double mass;                         /* sum of |P_n| Xmax^n: the sums' scale */
+    double left[4];                      /* q(t_a) (x) P(X(t_a))^{-1}, X = E or 1 / E */
 } sus_att_series;
 
 /* E(t) = e^{-(sigma s0 + k t)} for f's motion; 1 or more before the inflection (and for a motion
