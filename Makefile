@@ -122,8 +122,9 @@ FIGS     := $(FIG_SRC:src/prog/figure_%.c=%)
 FIG_BIN  := $(FIGS:%=$(BUILD)/figure_%)
 # The bench's figures, drawn from the recorded run (make bench-record, below)
 BENCH_REC  := data/bench-recorded
-BENCH_FIGS := figures/work_precision.pdf figures/work_precision.png figures/step_cost.pdf \
-              figures/step_cost.png
+BENCH_FIGS := figures/work_precision.pdf figures/work_precision.png \
+              figures/work_precision_best.pdf figures/work_precision_best.png \
+              figures/step_cost.pdf figures/step_cost.png
 TESTS    := $(patsubst tests/unit/%.c,$(BUILD)/%,$(wildcard tests/unit/test_*.c))
 RENDER_H := $(notdir $(wildcard src/render/*.h))
 # (stdin from /dev/null: in a tree without src/render, grep gets no pattern and would read it)
@@ -368,7 +369,7 @@ bench-record: all $(BUILD)/bench_boost
 .PRECIOUS: $(BENCH_FIGS)
 $(BENCH_FIGS) &: $(BUILD)/bench $(BENCH_REC)/bench.csv
 	@mkdir -p figures
-	$(call say,FIG,figures/work_precision figures/step_cost)
+	$(call say,FIG,figures/work_precision figures/work_precision_best figures/step_cost)
 	$(Q)$(BUILD)/bench --plot figures $(BENCH_REC)
 
 CXXWARN := -std=c++17 -Wall -Wextra -Wshadow $(filter -Werror,$(WARN))
@@ -394,7 +395,8 @@ PAPER_IN := paper/companion.tex paper/methods.tex paper/preamble.tex paper/bibli
             $(BUILD)/summary.tex $(BUILD)/sensitivity.tex $(BENCH_REC)/bench.tex $(BENCH_REC)/machine.tex \
             $(BENCH_REC)/bench.txt tools/bench_summary.sh tools/bench_misses.awk tools/latex.sh \
             tools/latex_esc.awk \
-            $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/attitude_filmstrip.png \
+            $(FIGS:%=figures/%.pdf) figures/work_precision.pdf figures/work_precision_best.pdf \
+            figures/attitude_filmstrip.png \
             $(wildcard src/*/*.c src/*/*.h) tools/paper.sh tools/snippet.sh tools/eqmap.sh \
             tools/paper_numbers.sh tools/paper_refs.sh tools/repro.sh tools/figsplit.sh \
             tools/paper_coverage.sh tools/paper_tables.sh tools/paper_layout.sh \

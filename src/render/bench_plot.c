@@ -112,8 +112,9 @@ static void level_lines(const sus_plot_axes *ax)
     }
 }
 
-/* The axes of panel p ((a) the w error, (b) the attitude error) at (x, y): every point it draws. */
-static void wp_axes(cairo_t *cr, const sus_lab_bench *b, int p, double x, double y,
+/* The axes of panel p ((a) the w error, (b) the attitude error) at (x, y), w wide: every point
+ * it draws. */
+static void wp_axes(cairo_t *cr, const sus_lab_bench *b, int p, double x, double y, double w,
                     sus_plot_axes *ax)
 {
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
@@ -123,8 +124,7 @@ static void wp_axes(cairo_t *cr, const sus_lab_bench *b, int p, double x, double
         sus_plot_extend(&x0, &x1, b->S[i]->sec, (size_t)b->S[i]->n, 1, 1);
         sus_plot_extend(&y0, &y1, p ? b->S[i]->err_R : b->S[i]->err_w, (size_t)b->S[i]->n, 1, 1);
     }
-    sus_plot_axes_init(ax, cr, x, y, WP_W / 2 - 75, WP_PANEL_H, x0, x1, fmax(y0, 1e-17),
-                       fmin(y1, 1.0), 1, 1);
+    sus_plot_axes_init(ax, cr, x, y, w, WP_PANEL_H, x0, x1, fmax(y0, 1e-17), fmin(y1, 1.0), 1, 1);
     sus_plot_pad(&ax->x0, &ax->x1, 1);
     sus_plot_pad(&ax->y0, &ax->y1, 1);
 }
@@ -135,7 +135,7 @@ static void wp_axes(cairo_t *cr, const sus_lab_bench *b, int p, double x, double
 static void wp_panel(cairo_t *cr, const sus_lab_bench *b, int p, const sus_plot_style *st)
 {
     sus_plot_axes ax;
-    wp_axes(cr, b, p, 58 + p * (WP_W / 2), 28, &ax);
+    wp_axes(cr, b, p, 58 + p * (WP_W / 2), 28, WP_W / 2 - 75, &ax);
     sus_plot_frame(&ax, "seconds per run",
                    p ? ATT_LABEL : "|\xcf\x89(50) \xe2\x88\x92 \xcf\x89\xe2\x82\x99|",
                    p ? "(b)" : "(a)");
@@ -164,13 +164,20 @@ static int on_envelope(const sus_lab_bench_series *s, const sus_lab_bench_envelo
     return 0;
 }
 
-/* Panel (c), at the top y: (b) with only our best, the series of ours with a point on our lower
+/* The panel of work_precision_best: wider than (b)'s, its legend (about 190 points) beside it. */
+#define BEST_W (WP_W - 58 - 200)
+
+/* work_precision_best: (b) with only our best, the series of ours with a point on our lower
  * envelope (bench_floor.h), over the peers' two envelopes; its legend to the right. */
-static void best_panel(cairo_t *cr, const sus_lab_bench *b, const sus_plot_style *st, double y)
+static void draw_best(cairo_t *cr, void *vctx)
 {
+    const sus_lab_bench *b = vctx;
+    sus_plot_style *st = sus_lab_bench_calloc((size_t)b->nseries, sizeof *st);
+    double(*rgb)[3] = sus_lab_bench_calloc((size_t)b->nseries, sizeof *rgb);
+    wp_styles(b, st, rgb);
     sus_plot_axes ax;
-    wp_axes(cr, b, 1, 58, y, &ax);
-    sus_plot_frame(&ax, "seconds per run", ATT_LABEL, "(c)");
+    wp_axes(cr, b, 1, 58, 14, BEST_W, &ax);
+    sus_plot_frame(&ax, "seconds per run", ATT_LABEL, NULL);
     const sus_plot_style es = envelope_style(0), er = envelope_style(1);
     sus_plot_series(&ax, b->env[1].sec, b->env[1].err, (size_t)b->env[1].n, 1, &es);
     sus_plot_series(&ax, b->env[2].sec, b->env[2].err, (size_t)b->env[2].n, 1, &er);
@@ -188,8 +195,10 @@ static void best_panel(cairo_t *cr, const sus_lab_bench *b, const sus_plot_style
     }
     level_lines(&ax);
     leg[n++] = es, leg[n++] = er;
-    sus_plot_legend_packed(cr, 12 + WP_W / 2, y + 10, leg, n, 1);
+    sus_plot_legend_packed(cr, 58 + BEST_W + 12, 24, leg, n, 1);
     free(leg);
+    free(st);
+    free(rgb);
 }
 
 static void draw_wp(cairo_t *cr, void *vctx)
@@ -210,7 +219,6 @@ static void draw_wp(cairo_t *cr, void *vctx)
     ours[nours++] = envelope_style(0);
     ours[nours++] = envelope_style(1);
     sus_plot_legend_columns(cr, 12, WP_LEGEND_Y, WP_W - 8, ours, nours);
-    best_panel(cr, b, st, WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 34.0);
     free(st);
     free(ours);
     free(rgb);
@@ -293,10 +301,15 @@ int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir)
     int nours = 2; /* the two envelopes */
     for (int i = 0; i < b->nseries; i++)
         nours += b->S[i]->ours;
-    /* tall enough for the legend's two columns and panel (c) below them, and no more */
-    const double wp_h =
-        WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 34.0 + WP_PANEL_H + 34.0;
+    /* tall enough for the legend's two columns and no more */
+    const double wp_h = WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 6.0;
     if (sus_plot_write(path, WP_W, wp_h, draw_wp, (void *)b, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/work_precision_best", figdir);
+    if (sus_plot_write(path, WP_W, 14 + WP_PANEL_H + 34.0, draw_best, (void *)b, err, sizeof err) !=
+        0) {
         fprintf(stderr, "bench: %s\n", err);
         return -1;
     }

@@ -29,7 +29,8 @@ check "every \\Bench macro of paper/*.tex is defined by the recorded run (missin
     test -z "$missing"
 mkdir -p "$T/a" "$T/b"
 check "bench --plot draws the figures from the recorded data" "$B/bench" --plot "$T/a" "$R"
-for f in work_precision.pdf work_precision.png step_cost.pdf step_cost.png; do
+for f in work_precision.pdf work_precision.png work_precision_best.pdf work_precision_best.png \
+    step_cost.pdf step_cost.png; do
     check "bench --plot wrote $f" test -s "$T/a/$f"
 done
 "$B/bench" --plot "$T/b" "$R" >/dev/null 2>&1
