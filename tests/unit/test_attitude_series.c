@@ -54,13 +54,35 @@ static void series_body(int j, body *b)
     check_body_paper_variant(j == BODIES_COUNT, b);
 }
 
-/* The worst (error - round-off) / (estimate / 2) at t_f over the budgets, from t_a where E = Ea;
- * counts the series built. */
+/* The worst (error - round-off) / (estimate / 2) at tf of the series from q(ta) = qa on [ta, tb]
+ * over the budgets 1e-3 ... 1e-13, against the reference Rf; counts the series built. */
+static double over_budgets(const sus_exact *ex, const sus_exact_fast *f, double ta, double tb,
+                           const double qa[4], double tf, const double Rf[3][3], int *built)
+{
+    double speed[2], winf[2], worst = 0.0;
+    sus_steady_speed(ex, speed);
+    sus_exact_limit(ex, winf);
+    const double round = (ROUND_STEP + COND * (tf - ta) * hypot(winf[0], winf[1])) * U;
+    for (int d = 3; d <= 13; d++) {
+        static sus_att_series s;
+        const double est = sus_att_series_build(&s, f, ta, tb, qa, pow(10.0, -d));
+        if (est < 0.0)
+            continue;
+        double q[4], R[3][3];
+        sus_att_series_at(&s, f, speed, tf, q);
+        sus_quat_unit_rotation(q, R);
+        worst = fmax(worst, (sus_so3_dist(R, Rf) - round) / (DIST_PER_Q * 0.5 * est));
+        (*built)++;
+    }
+    return worst;
+}
+
+/* over_budgets at t_f of the series in E from t_a where E = Ea. */
 static double one_start(const sus_exact *ex, const sus_exact_fast *f, double Ea, int *built)
 {
     const double ta = (-ex->sigma * ex->s0 - log(Ea)) / ex->k, tf = ta + 40.0 / ex->k;
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    double Ra[3][3], Rf[3][3], qa[4], speed[2], worst = 0.0, winf[2];
+    double Ra[3][3], Rf[3][3], qa[4];
     if (!(ta >= 0.0))
         return 0.0;
     sus_refatt ra;
@@ -68,22 +90,7 @@ static double one_start(const sus_exact *ex, const sus_exact_fast *f, double Ea,
     sus_refatt_advance(&ra, ta, Ra);
     sus_refatt_advance(&ra, tf, Rf);
     sus_quat_from_rotation(Ra, qa);
-    sus_steady_speed(ex, speed);
-    sus_exact_limit(ex, winf);
-    const double round = (ROUND_STEP + COND * (tf - ta) * hypot(winf[0], winf[1])) * U;
-    for (int d = 3; d <= 13; d++) {
-        static sus_att_series s;
-        const double est = sus_att_series_build(&s, f, ta, INFINITY, qa, pow(10.0, -d));
-        if (est < 0.0)
-            continue;
-        double q[4], R[3][3];
-        sus_att_series_at(&s, f, speed, tf, q);
-        sus_quat_unit_rotation(q, R);
-        const double excess = sus_so3_dist(R, Rf) - round;
-        worst = fmax(worst, excess / (DIST_PER_Q * 0.5 * est));
-        (*built)++;
-    }
-    return worst;
+    return over_budgets(ex, f, ta, INFINITY, qa, tf, Rf, built);
 }
 
 static void each_sum_within_half(void)
@@ -126,30 +133,16 @@ static int moved_back(int j, double X0, sus_model *m, sus_exact *ex, sus_exact_f
     return 0;
 }
 
-/* The worst (error - round-off) / (estimate / 2) at t_b over the budgets; counts the series. */
+/* over_budgets at t_b of the series in 1 / E from t = 0 to t_b, where 1 / E = Xb. */
 static double one_back(const sus_exact *ex, const sus_exact_fast *f, double Xb, int *built)
 {
     const double tb = (log(Xb) - ex->sigma * ex->s0) / ex->k;
     const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, q0[4] = {1, 0, 0, 0};
-    double Rb[3][3], speed[2], winf[2], worst = 0.0;
+    double Rb[3][3];
     sus_refatt ra;
     sus_refatt_init(&ra, ex, 0.0, I3);
     sus_refatt_advance(&ra, tb, Rb);
-    sus_steady_speed(ex, speed);
-    sus_exact_limit(ex, winf);
-    const double round = (ROUND_STEP + COND * tb * hypot(winf[0], winf[1])) * U;
-    for (int d = 3; d <= 13; d++) {
-        static sus_att_series s;
-        const double est = sus_att_series_build(&s, f, 0.0, tb, q0, pow(10.0, -d));
-        if (est < 0.0)
-            continue;
-        double q[4], R[3][3];
-        sus_att_series_at(&s, f, speed, tb, q);
-        sus_quat_unit_rotation(q, R);
-        worst = fmax(worst, (sus_so3_dist(R, Rb) - round) / (DIST_PER_Q * 0.5 * est));
-        (*built)++;
-    }
-    return worst;
+    return over_budgets(ex, f, 0.0, tb, q0, tb, Rb, built);
 }
 
 static void back_sum_within_half(void)
