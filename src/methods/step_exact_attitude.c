@@ -89,9 +89,12 @@
 /* The series in E is tried where its degree for the budget left, log(budget) / log(E) (the terms'
  * fall alone), would be at most this: so many degrees cost about two Taylor steps. */
 #define SERIES_TERMS 40
-/* A step of the series in 1 / E is tried where it spans at least this much of s (ln 4): less, and
- * a Taylor step, whose length is a fraction of the distance |s + i pi/2| / k, goes as far. */
-#define BACK_MIN_LOG 1.3862943611198906
+/* A step of the series in 1 / E from 1 / E = X to X_b is tried where ln X / ln X_b is at least
+ * this: a Taylor step goes half way to w's nearest singularity, at least half way in s to the
+ * inflection, so from X the Taylor steps reach X_b in at most about log2(ln X / ln X_b) + 1 steps,
+ * and the series, about two Taylor steps' cost (SERIES_TERMS), pays where they would take three
+ * or more. */
+#define BACK_MIN_RATIO 8.0
 
 typedef enum { KIND_TAYLOR, KIND_SERIES, KIND_TAIL } step_kind;
 
@@ -331,8 +334,8 @@ static int series_step(sus_tol_work *wk, double t, double stop, double rate, dou
 /* Before the inflection: one step of the series in 1 / E (attitude_series.h) from t, where 1 / E
  * = X, to where 1 / E reaches the X_b at which the degree for the step's share, by the terms'
  * fall alone, is about SERIES_TERMS (or to stop), with its share of the budget, rate h; tried
- * only where that step is at least BACK_MIN_LOG / k long (shorter, a Taylor step or two would do)
- * and not after the series has declined once. 1 when taken, t_next the step's end. */
+ * only where it saves Taylor steps (BACK_MIN_RATIO) and not after the series has declined once.
+ * 1 when taken, t_next the step's end. */
 static int back_series_step(sus_tol_work *wk, double t, double stop, double rate, double q[4],
                             double *h, double *t_next, double *est)
 {
@@ -343,7 +346,7 @@ static int back_series_step(sus_tol_work *wk, double t, double stop, double rate
     const double x0 = pow(0.5 * rate * (stop - t), 1.0 / SERIES_TERMS);
     const double share = rate * fmin(stop - t, log(x0 / X) / k);
     const double xb = pow(0.5 * share, 1.0 / SERIES_TERMS);
-    if (!(log(xb / X) >= BACK_MIN_LOG))
+    if (!(log(X) <= BACK_MIN_RATIO * log(xb)))
         return 0;
     *t_next = sus_step_end(t, log(xb / X) / k, stop);
     *h = *t_next - t;
