@@ -294,29 +294,28 @@ static void draw_cost(cairo_t *cr, void *vctx)
     free(v2);
 }
 
-int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir)
+/* FIGDIR/NAME.{pdf,png}, w x h, drawn by draw from b; 0, or -1 with a message on stderr. */
+static int write_fig(const char *figdir, const char *name, double w, double h,
+                     void (*draw)(cairo_t *, void *), const sus_lab_bench *b)
 {
     char err[256], path[4096];
-    snprintf(path, sizeof path, "%s/work_precision", figdir);
+    snprintf(path, sizeof path, "%s/%s", figdir, name);
+    if (sus_plot_write(path, w, h, draw, (void *)b, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+int sus_plot_bench_figures(const sus_lab_bench *b, const char *figdir)
+{
     int nours = 2; /* the two envelopes */
     for (int i = 0; i < b->nseries; i++)
         nours += b->S[i]->ours;
     /* tall enough for the legend's two columns and no more */
     const double wp_h = WP_LEGEND_Y + sus_plot_legend_height((nours + 1) / 2) + 6.0;
-    if (sus_plot_write(path, WP_W, wp_h, draw_wp, (void *)b, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
+    if (write_fig(figdir, "work_precision", WP_W, wp_h, draw_wp, b) != 0 ||
+        write_fig(figdir, "work_precision_best", WP_W, 14 + WP_PANEL_H + 34.0, draw_best, b) != 0)
         return -1;
-    }
-    snprintf(path, sizeof path, "%s/work_precision_best", figdir);
-    if (sus_plot_write(path, WP_W, 14 + WP_PANEL_H + 34.0, draw_best, (void *)b, err, sizeof err) !=
-        0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return -1;
-    }
-    snprintf(path, sizeof path, "%s/step_cost", figdir);
-    if (sus_plot_write(path, cost_width(b), COST_H, draw_cost, (void *)b, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return -1;
-    }
-    return 0;
+    return write_fig(figdir, "step_cost", cost_width(b), COST_H, draw_cost, b);
 }
