@@ -1,5 +1,7 @@
 #include "api_args.h"
 
+#include "exact.h"
+
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -46,6 +48,10 @@ static const char *common(const void *cfg, const sus_model *model, const double 
         return strcmp(what, "energy") == 0
                    ? "the energy at w0 overflows with this inertia"
                    : "the multiplier lambda at w0 overflows with this inertia";
+    /* and lambda along the motion (sus_exact_lambda_max), as the CLI refuses it */
+    sus_exact ex;
+    if (sus_exact_init(&ex, model, w0) == 0 && isinf(sus_exact_lambda_max(&ex)))
+        return "the multiplier lambda overflows along the motion from w0 with this inertia";
     return NULL;
 }
 

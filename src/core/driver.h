@@ -82,7 +82,8 @@ int sus_row_finite(const sus_row *r);
  * report->message (nothing emitted; with a NULL report it writes nothing): cfg, w0, emit and
  * report are not NULL; cfg->model is a model sus_model_init filled and nothing changed since
  * (a NULL, uninitialised or altered one is refused); w0 is finite, and so are the energy and
- * lambda there (sus_model_start_overflow: row 0 must be finite). sus_run and sus_run_exact
+ * lambda there (sus_model_start_overflow: row 0 must be finite), and lambda along the motion
+ * from w0 (sus_exact_lambda_max: every row prints it). sus_run and sus_run_exact
  * also want eps finite and > 0, steps >= 0, every >= 1 and steps * eps finite; sus_run a
  * fixed-step stepper (stepper->tol NULL) with apply or apply_full, and a recon among
  * sus_recon's values. sus_run_exact ignores cfg->stepper and cfg->recon. */

@@ -2,6 +2,7 @@
 
 #include "api_args.h"
 
+#include <float.h>
 #include <math.h>
 
 /* x scaled by a power of two to a largest entry in [1/2, 1): exact (save entries far below the
@@ -155,4 +156,33 @@ void sus_exact_limit(const sus_exact *ex, double w[2])
         return;
     }
     omega_from_psi(ex, 0.0, 1.0, w);
+}
+
+/* (LagMult) at the point (z, y) = (sech s, tanh s) of the motion, in long double, whose range
+ * holds any product of a few doubles: w = L^{-T} u, u = sigma r Rot(beta) (z, y), c = sigma cmax
+ * z (omega_from_psi, sus_exact_c). */
+static long double lambda_at(const sus_exact *ex, long double z, long double y)
+{
+    const double(*I)[3] = ex->model->I;
+    const long double g = ex->sigma * (long double)ex->r;
+    const long double u1 = g * (ex->cb * z - ex->sb * y), u2 = g * (ex->sb * z + ex->cb * y);
+    const long double w1 = u2 / ex->l22, w0 = (u1 - ex->l21 * w1) / ex->l11;
+    const long double c = ex->sigma * (long double)ex->cmax * z;
+    return w0 * (I[1][0] * w0 + I[1][1] * w1) - w1 * (I[0][0] * w0 + I[0][1] * w1) +
+           c * ex->model->inv_det_m * (ex->model->o0c[1] * w1 + ex->model->o0c[0] * w0);
+}
+
+/* (exact.h) lambda is a quadratic form in (z, y), which runs over the half circle z > 0 (sech^2 +
+ * tanh^2 = 1) and, the form being even, comes as near its largest size on the whole circle: its
+ * spectral radius, from its values at (1, 0), (0, 1) and (1, 1). */
+double sus_exact_lambda_max(const sus_exact *ex)
+{
+    if (!ex || !ex->model)
+        return NAN;
+    if (ex->fixed)
+        return fabs(sus_lagmult_c(ex->model, ex->w0, ex->c0));
+    const long double a = lambda_at(ex, 1.0L, 0.0L), c = lambda_at(ex, 0.0L, 1.0L);
+    const long double b = 0.5L * (lambda_at(ex, 1.0L, 1.0L) - a - c);
+    const long double sup = fabsl(0.5L * (a + c)) + hypotl(0.5L * (a - c), b);
+    return sup > DBL_MAX ? INFINITY : (double)sup;
 }

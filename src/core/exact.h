@@ -57,6 +57,10 @@ void sus_exact_limit(const sus_exact *ex, double w[2]);
 /* c(w(t)) = I31 w1 + I32 w2 along the motion, from the closed form (above): c(w0) at t = 0 and
  * for a fixed motion; NaN for a NULL or refused ex. */
 double sus_exact_c(const sus_exact *ex, double t);
+/* The largest |lambda| of (LagMult) along the motion (its supremum over t), formed in long double:
+ * inf where it passes the largest double (every run refuses that start: api_args.h), |lambda(w0)|
+ * for a fixed motion, NaN for a NULL or refused ex. */
+double sus_exact_lambda_max(const sus_exact *ex);
 
 #ifdef __cplusplus
 }

@@ -115,7 +115,10 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
  * rounded w cancels near the steady rotation. */
 static inline double sus_o0_with_c(const sus_model *m, const double w[2], double c)
 {
-    return c * m->inv_det_m * (m->o0c[1] * w[1] + m->o0c[0] * w[0]);
+    const double ci = c * m->inv_det_m, p = m->o0c[1] * w[1] + m->o0c[0] * w[0];
+    /* c / |I_m| first, as printed; where that alone overflows (a near-singular I_m, a large c) and
+     * the whole need not, c (p / |I_m|) */
+    return isfinite(ci) ? ci * p : c * (m->inv_det_m * p);
 }
 
 /* The last term of (LagMult); it equals I31 w1' + I32 w2' along (ContDyn), and it is the

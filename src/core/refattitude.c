@@ -45,9 +45,13 @@ static void w_of_u(const sus_refatt_chol *c, const long double u[2], long double
     w[0] = (u[0] - c->l21 * w[1]) / c->l11;
 }
 
-static void u_of_w(const sus_refatt_chol *c, const double w[2], long double u[2])
+/* u1 = (I11 w1 + I21 w2) / l11 with its numerator to one rounding (cross_diff): on a near-singular
+ * I_m, w along its soft axis makes l11 w1 and l21 w2 cancel to a part in 1 / |w|, and their
+ * long-double roundings would then be that much larger relative to u1, to r, k and w_inf. */
+static void u_of_w(const sus_refatt_chol *c, const double (*I)[3], const double w[2],
+                   long double u[2])
 {
-    u[0] = c->l11 * w[0] + c->l21 * w[1];
+    u[0] = cross_diff(I[0][0], w[0], -I[1][0], w[1]) / c->l11;
     u[1] = c->l22 * w[1];
 }
 
@@ -57,7 +61,7 @@ static void u_of_w(const sus_refatt_chol *c, const double w[2], long double u[2]
 static void closed_init(sus_refatt_closed *cf, const sus_refatt_chol *co, const sus_exact *ex)
 {
     const double *b = ex->model->b, *w0 = ex->w0;
-    u_of_w(co, w0, cf->u0);
+    u_of_w(co, ex->model->I, w0, cf->u0);
     const long double u1 = cf->u0[0], u2 = cf->u0[1], vn = hypotl(co->v[0], co->v[1]);
     cf->r = hypotl(u1, u2);
     cf->fixed = ex->fixed || !(cf->r > 0.0L) || !(vn > 0.0L);

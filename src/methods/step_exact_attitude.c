@@ -25,20 +25,24 @@
  *
  * Steps: the Taylor series of w (the closed form's own, closed_series below) and of q (the
  * recursion of taylor_series.h), to degree d, over the longest step allowed, H = rho(t) / 2 with
- * rho(t) = |s(t) + i pi/2| / k the distance from t to w's nearest
- * complex singularity (sech and tanh of s = s0 + sigma k t have poles at s = i pi/2 + i pi n). The
- * sum through d (the degree-(d-1) sum locally extrapolated) is off by the terms past d. Over a step
- * s H they fall, from one degree to the next, by at most a s with a = H max(1 / rho, |w|_max /
- * (2 (d + 2))): the nearest singularity's ratio, and the rotation's, whose terms go like x^n / n!,
- * x = h |w| / 2. Projected from each of the last five terms (a conjugate pair of singularities
- * makes the terms oscillate about their envelope and dip, on a stiff body for several degrees
- * running, so the last few alone can mislead), the terms past d are estimated to sum to at most
- * est(s) = s^{d+1} B / (1 - a s),   B = max_{j < 5} |Q_{d-j}| a^{j+1}, with h folded into the
- * coefficients (X_n = x_n H^n, so the step s H has X_n s^n). An estimate, not a proof (the ratio
- * a holds for the envelope only as n grows): tests/unit/test_exact_attitude.c holds every step's
- * local error to it, on every test body at TOL every half decade. The step takes the largest s <= 1
- * with a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms) and 2 B s^d <= rate
- * H, so that est(s) <= rate s H: one series a step, never a retry.
+ * rho(t) = |s(t) + i pi/2| / k the distance from t to w's nearest complex singularity (sech and
+ * tanh of s = s0 + sigma k t have poles at s = i pi/2 + i pi n). The sum through d (the
+ * degree-(d-1) sum locally extrapolated) is off by the terms past d. Over a step s H they fall,
+ * from one degree to the next, by at most a s with a = H max(g / rho, |w|_max / (2 (d + 2))): the
+ * nearest singularity's ratio, and the rotation's, whose terms go like x^n / n!, x = h |w| / 2.
+ * At w's pole q has a branch point, q ~ (t - t_p)^-beta (pole_exponent), so its terms grow like
+ * n^(beta - 1) rho^-n, by (n + beta) / (n + 1) per degree beyond 1 / rho: g is that factor at n =
+ * d - 4, the earliest term projected. Projected from each of the last five terms (a conjugate
+ * pair of singularities makes the terms oscillate about their envelope and dip, on a stiff body
+ * for several degrees running, so the last few alone can mislead), the terms past d are estimated
+ * to sum to at most
+ *     est(s) = s^{d+1} B / (1 - a s),   B = max_{j < 5} |Q_{d-j}| a^{j+1},
+ * with h folded into the coefficients (X_n = x_n H^n, so the step s H has X_n s^n). An estimate,
+ * not a proof (the ratio a holds for the envelope only as n grows): test_exact_attitude holds
+ * every step's local error to it, on every test body, from its own start at TOL every half
+ * decade and from just before the inflection (1 / E = 1/2) every decade. The step takes the
+ * largest s <= 1 with a s <= 1/2, |Q_d| s <= |Q_{d-1}| / 2 (past the rotation's rising terms) and
+ * 2 B s^d <= rate H, so that est(s) <= rate s H: one series a step, never a retry.
  *
  * The series in E. Past the inflection of the transient, E = e^{-(sigma s0 + k t)} < 1, one power
  * series in E gives q at every later time (attitude_series.h): it converges for |E| < 1, where a
@@ -118,6 +122,7 @@ struct sus_tol_work {
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
     double speed[2];       /* |w_inf| in double-double, speed[0] + speed[1]; set at alloc */
+    double beta;           /* q's growth exponent at w's poles (pole_exponent) */
     double e_try;          /* the series in E is tried from E(t) <= e_try on */
     int back_declined;     /* the series in 1 / E declined once: not tried again */
     taylor_series ts;      /* its series (q's rows scaled to its length) */
@@ -274,7 +279,9 @@ static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4]
  * file): the nearest singularity's H / rho, or the rotation's x / (d + 2), x = H |w|_max / 2. */
 static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int d)
 {
-    return H * fmax(1.0 / rho, wk->w_max / (2.0 * (d + 2)));
+    const int n = d - (ENVELOPE_TERMS - 1);
+    const double g = fmax(1.0, (n + wk->beta) / (n + 1));
+    return H * fmax(g / rho, wk->w_max / (2.0 * (d + 2)));
 }
 
 /* A step from (t, w, q) to at most stop whose estimate is at most rate h (top of the file): the
@@ -373,6 +380,20 @@ static void state_at(const sus_tol_work *wk, double t, const double q[4], double
 
 /* ---- the tolerance-driven operations ---- */
 
+/* q's growth exponent at w's nearest poles (top of the file). Near a pole t_p, w ~ R / (t - t_p)
+ * with R = M (-i, 1) / ks (sech s ~ -i / e, tanh s ~ 1 / e at s = i pi/2 + e), and q' = 1/2 q (x)
+ * (0, w) has q ~ (t - t_p)^(+-mu), mu = i sqrt(R.R) / 2; the branch with Re(-mu) = -beta < 0 has
+ * Taylor terms from t growing like n^(beta - 1) rho^-n. beta = |Im sqrt(R.R)| / 2. */
+static double pole_exponent(const sus_exact_fast *f)
+{
+    double re = 0.0, im = 0.0; /* R.R ks^2 */
+    for (int i = 0; i < 2; i++) {
+        re += f->M[i][1] * f->M[i][1] - f->M[i][0] * f->M[i][0];
+        im -= 2.0 * f->M[i][0] * f->M[i][1];
+    }
+    return 0.5 * sqrt(0.5 * (hypot(re, im) - re)) / fabs(f->ks);
+}
+
 static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2])
 {
     sus_tol_work *wk = malloc(sizeof *wk);
@@ -385,6 +406,7 @@ static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2]
     }
     const sus_exact *ex = &wk->ex;
     sus_steady_speed(ex, wk->speed);
+    wk->beta = ex->fixed ? 0.0 : pole_exponent(&wk->f);
     const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
     wk->w_max = sqrt(a * a + b * b + c * c) * ex->r;
     /* half the bound is the quaternion's error; that half at most the tail's share of tolq */

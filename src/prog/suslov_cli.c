@@ -206,7 +206,8 @@ static const suslov_cli_option OPTIONS[] = {
      "inertia tensor by rows, as printed in the paper (only I_m and the\n"
      "third row enter); I_m must be symmetric positive definite, its\n"
      "determinant resolved and the coefficients of (ContDyn) and\n"
-     "(LagMult) finite in double precision (else refused, saying which);\n"
+     "(LagMult) finite in double precision, and lambda along the motion\n"
+     "from w0 too (else refused, saying which);\n"
      "default 1,0.1,0.2,0.1,1,0.2,0.2,0.1,1",
      set_inertia, NULL},
     {"--reconstruct", "R",

@@ -7,6 +7,7 @@
 #include "atomic_file.h"
 #include "cli_options.h"
 #include "dsp.h"
+#include "exact.h"
 #include "exact_run.h"
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
@@ -171,17 +172,22 @@ static void check_fixed_steps(suslov_args *a, const suslov_args_given *g)
     a->t_end = (double)a->steps * a->eps;
 }
 
-/* E and lambda at w0 must be finite numbers (row 0 prints them). They depend on w0 and the body
- * alike, so the message names the options that were given: the default of the other is not the
- * user's doing. */
+/* E and lambda at w0 must be finite numbers (row 0 prints them), and lambda along the motion (every
+ * row prints it; sus_exact_lambda_max). They depend on w0 and the body alike, so the message
+ * names the options that were given: the default of the other is not the user's doing. */
 static void check_start(const suslov_args *a, const suslov_args_given *g)
 {
-    const char *what = sus_model_start_overflow(&a->model, g->w0);
+    const char *what = sus_model_start_overflow(&a->model, g->w0), *where = "at";
+    sus_exact ex;
+    if (!what && sus_exact_init(&ex, &a->model, g->w0) == 0 && isinf(sus_exact_lambda_max(&ex))) {
+        what = "multiplier lambda";
+        where = "along the motion from";
+    }
     if (!what)
         return;
     const char *opts =
         g->inertia_given ? (g->omega0_given ? "--omega0 and --inertia" : "--inertia") : "--omega0";
-    suslov_cli_die("%s: the %s at w0 = (%.17g, %.17g) overflows with %s inertia", opts, what,
+    suslov_cli_die("%s: the %s %s w0 = (%.17g, %.17g) overflows with %s inertia", opts, what, where,
                    g->w0[0], g->w0[1], g->inertia_given ? "this" : "the paper's (default)");
 }
 

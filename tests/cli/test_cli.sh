@@ -156,6 +156,13 @@ bad_says "the energy at w0 overflows: the line names --omega0 only" \
 bad_says "the multiplier at the default w0 overflows with this inertia: the line names --inertia, not --omega0" \
     '^suslov: error: --inertia: the multiplier lambda at w0 = (0.40000000000000002, 0.5) overflows with this inertia' \
     --method midpoint --eps 0.1 --steps 5 --inertia 1,0,0,0,1,0,1e300,1e300,1
+# finite at w0, but not along the motion from it (test_exact_run derives where): refused by
+# every method alike, not a blow-up whose step depends on the method and TOL
+for m in "exact --eps 0.1 --steps 3" "exact-attitude --tol 1e-13 --time 10" "rk4 --eps 0.1 --steps 3"; do
+    bad_says "lambda overflows along the motion from the default w0 ($m)" \
+        '^suslov: error: --inertia: the multiplier lambda along the motion from w0 = (0.40000000000000002, 0.5) overflows with this inertia' \
+        --method $m --inertia 1,0,0,0,1e-300,0,1,1,1
+done
 # what double precision cannot hold is refused for that reason, not called indefinite or put on w0
 bad_says "I_m positive definite but lost to cancellation" "too ill-conditioned for double precision" \
     --method rk4 --eps 0.1 --steps 3 --inertia 1,0.99999999999999989,0,0.99999999999999989,1,0,0,0,1

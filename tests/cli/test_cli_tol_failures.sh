@@ -1,11 +1,12 @@
 #!/bin/sh
 # suslov --tol's two ways to stop short of --time, each exit 3 with one line saying where:
-# 1. The retries run out. Body I_m = I, (I31, I32) = (1e200, 0), w0 = (1e100, 0): E = 5e199 and
-#    lambda = 0 are finite (the input is valid), but the series' first term c_0 U_0 = I31 w1^2 (0, 1)
-#    is 1e400, which overflows whatever the step; the estimate is never a number, so every retry is
-#    rejected and the step fails after the bounded tries (step_taylor_adaptive.c's MAX_TRIES, 12).
-#    T = 1e-90: the steady rotation, |w_inf| = 1e100, turns the body by 1e10 radians by then,
-#    below the method's max_angle (a longer run is refused as bad input).
+# 1. The retries run out. Body I_m = I, (I31, I32) = (1.2, 0), w0 = (1.3e154, 0): E = 8.45e307 is
+#    finite, and so is lambda along the motion, I31^2 w1 w2 <= 1.44 1.69e308 / 2 = 1.2e308 (the
+#    input is valid), but the series' first term c_0 U_0 = I31 w1^2 (0, 1) is 2.03e308, which
+#    overflows whatever the step; the estimate is never a number, so every retry is rejected and
+#    the step fails after the bounded tries (step_taylor_adaptive.c's MAX_TRIES, 12).
+#    T = 1e-140: the steady rotation, |w_inf| = 1.56e154, turns the body by 1.6e14 radians by
+#    then, below the method's max_angle (a longer run is refused as bad input).
 # 2. The step budget (SUSLOV_TOL_MAX_STEPS, 10^6) is spent: |w0| = 1.3e154 needs steps near
 #    1e-163 (the tolerance is absolute), so T = 1e-140 (an angle of 1.3e14 radians) would take
 #    about 1e23 steps (the timeout: without the budget this run would not end).
@@ -19,7 +20,7 @@ S="$B/suslov"
 one_line() { [ "$(wc -l <"$1")" -eq 1 ]; }
 no_nan() { ! grep -qi 'nan\|inf' "$1"; }
 
-"$S" --method taylor-adaptive --tol 1e-10 --time 1e-90 --inertia 1,0,0,0,1,0,1e200,0,1 --omega0 1e100,0 \
+"$S" --method taylor-adaptive --tol 1e-10 --time 1e-140 --inertia 1,0,0,0,1,0,1.2,0,1 --omega0 1.3e154,0 \
     >"$T/over.csv" 2>"$T/over.err"
 rc=$?
 check "retries run out: exit 3 (got $rc)" [ $rc -eq 3 ]
@@ -28,7 +29,7 @@ check "retries run out: it names step 1, t = 0 and the 12 tries" \
     grep -q 'step 1 (t = 0) failed: its error estimate was not a finite number .* after 12 tries' "$T/over.err"
 check "retries run out: no NaN printed" no_nan "$T/over.err"
 check "retries run out: the output holds row 0 and the incomplete line" \
-    sh -c "grep -c '^0,0,1e+100,0,0,' '$T/over.csv' | grep -qx 1 && tail -1 '$T/over.csv' | grep -q '^# incomplete'"
+    sh -c "grep -c '^0,0,1.2999999999999999e+154,0,0,' '$T/over.csv' | grep -qx 1 && tail -1 '$T/over.csv' | grep -q '^# incomplete'"
 
 echo previous >"$T/kept.csv"
 timeout 60 "$S" --method taylor-adaptive --tol 1e-10 --time 1e-140 --omega0 1.3e154,0 --every-time 1 \

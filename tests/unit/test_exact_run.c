@@ -168,8 +168,88 @@ static void proved_step(const body *b)
           b->name, ex.k * h, d, 128.0L * 0x1p-64L);
 }
 
+/* |lambda| along one body's motion, sampled at s = -40 ... 40 in steps of 1/64 (s = s0 + sigma k
+ * t), against sus_exact_lambda_max. The motion's (z, y) = (sech s, tanh s) = (cos phi, sin phi)
+ * turns by dphi = sech s ds <= 1/64 a sample, and lambda = m + R cos 2(phi - phi0) with R <=
+ * lambda_max, so the best sample is within 2 R (1/128)^2 < 2^-12 lambda_max of it (the ends,
+ * s = +-40, within 4 e^-40 of phi = +-pi/2). No sample exceeds it by more than its rounding: w
+ * within 16 u of its scale enters the quadratic terms twice, and the products and sums round
+ * under 32 u more, so 64 u of the terms' sizes. Returns the best sample / lambda_max, or -1 for a
+ * sample past it. */
+static double lambda_sampled(const sus_model *m, const sus_exact *ex)
+{
+    const double(*I)[3] = m->I, lmax = sus_exact_lambda_max(ex);
+    double best = 0.0;
+    for (int j = -40 * 64; j <= 40 * 64; j++) {
+        const double t = (j / 64.0 - ex->s0) / (ex->sigma * ex->k);
+        double w[2];
+        sus_exact_omega(ex, t, w);
+        const double c = sus_exact_c(ex, t), l = fabs(sus_lagmult_c(m, w, c));
+        const double terms = fabs(w[0]) * (fabs(I[1][0] * w[0]) + fabs(I[1][1] * w[1])) +
+                             fabs(w[1]) * (fabs(I[0][0] * w[0]) + fabs(I[0][1] * w[1])) +
+                             fabs(sus_o0_with_c(m, w, c));
+        if (!(l <= lmax + 64.0 * DBL_EPSILON / 2 * terms))
+            return -1.0;
+        best = fmax(best, l);
+    }
+    return best / lmax;
+}
+
+/* (LagMult) along the motion. On every test body its largest size against samples (above). On I =
+ * diag(1, 1e-300) with I31 = I32 = 1: L = diag(1, 1e-150), v = L^{-1} b = (1, 1e150), so cmax = r
+ * |v| = 1e150 r and w2 reaches r / l22 = 1e150 r, while |w1| <= r; o0c = (1, -1e-300), so
+ * lambda's last term c / |I_m| (w1 - 1e-300 w2) is about 1e300 cmax r = 1e450 r^2 at its peak.
+ * From the paper's w0 (r = 0.4) that is past the range: refused before row 0, with the command's
+ * reason. From |w0| = 1e-100 it is 1e250, but c / |I_m| alone reaches 1e350 in the transient
+ * (near t = 3.5e-198): every row finite all the same. */
+static void lambda_along_the_motion(void)
+{
+    double worst = 2.0;
+    for (int k = 0; k < BODIES_COUNT; k++) {
+        body b;
+        sus_model mb;
+        sus_exact ex;
+        body_get(k, &b);
+        check_body_model(&b, &mb);
+        sus_exact_init(&ex, &mb, b.w0);
+        worst = fmin(worst, ex.fixed ? 1.0 : lambda_sampled(&mb, &ex));
+    }
+    CHECK(worst >= 1.0 - 0x1p-12 && isnan(sus_exact_lambda_max(NULL)),
+          "sus_exact_lambda_max on %d bodies: no sample of |lambda| along the motion above it by "
+          "more than its rounding, and the best within 2^-12 below: worst best / max %.9g (-1: "
+          "one above); NaN for a NULL closed form",
+          BODIES_COUNT, worst);
+    const double I[9] = {1, 0, 0, 0, 1e-300, 0, 1, 1, 1}, far[2] = {0.4, 0.5};
+    const double near[2] = {1e-100, 1e-100};
+    sus_model m;
+    sus_exact ex;
+    char err[256] = "";
+    CHECK(sus_model_init(&m, I, err, sizeof err) == 0, "I22 = 1e-300 is a body: %s", err);
+    sus_exact_init(&ex, &m, far);
+    const double lfar = sus_exact_lambda_max(&ex);
+    sus_run_config cfg = {&m, NULL, SUS_RECON_CAYLEY, 1e-150, 4, 1};
+    keep_ctx c = {0, -1, {{0}}};
+    sus_run_report rep;
+    int rc = sus_run_exact(&cfg, far, keep, &c, &rep);
+    CHECK(isinf(lfar) && rc == SUS_RUN_BAD_ARGUMENT && c.rows == 0 &&
+              strstr(rep.message, "overflows along the motion"),
+          "from w0 = (0.4, 0.5) on I = diag(1, 1e-300), I31 = I32 = 1: lambda overflows along the "
+          "motion (largest %g), the run refused (rc %d, %ld rows: %s)",
+          lfar, rc, c.rows, rep.message ? rep.message : "");
+    sus_exact_init(&ex, &m, near);
+    const double lnear = sus_exact_lambda_max(&ex);
+    cfg.eps = 1e-199;
+    cfg.steps = 80; /* rows every 1e-199 to 8e-198, across the transient */
+    rc = sus_run_exact(&cfg, near, keep, &c, &rep);
+    CHECK(lnear > 1e249 && lnear < 1e251 && rc == SUS_RUN_OK && c.rows == 81,
+          "from |w0| = 1e-100 its largest is %.3g (1e250 to a factor 10): the run writes its 81 "
+          "rows, all finite (rc %d, %ld)",
+          lnear, rc, c.rows);
+}
+
 int main(void)
 {
+    lambda_along_the_motion();
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
         body_get(k, &b);

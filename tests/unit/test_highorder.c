@@ -4,6 +4,7 @@
  * computation; the steps on the paper's body and on the seeded general bodies
  * (tests/unit/bodies.h). */
 #include "check_body.h"
+#include "check_steady.h"
 #include "composition.h"
 #include "dsp.h"
 #include "exact.h"
@@ -155,6 +156,33 @@ static void reference_against_magnus(const sus_exact *ex, double k_paper, const 
           name, t_s, n, 2 * n, sus_so3_dist(Rr, Rm));
 }
 
+/* The reference's radius r = |L^T w0| against r^2 = w0^T I_m w0 in 113 bits (check_steady.h), on
+ * I_m with I12 = 1 - d and w0 along its soft axis, (-a, a + 1.4) with a = 1e6: l11 w1 and l21 w2
+ * cancel to a part in 1e6, so a long-double rounding of either would move r by 1e6 2^-64. The
+ * bound, 8 2^-64 relative on r^2: u1 and u2 carry a few long-double roundings each (refattitude.c),
+ * r^2 twice their relative error; quad_form's own rounding is far below. */
+static void reference_radius_on_soft_axis(void)
+{
+    double worst = 0.0;
+    for (int j = 0; j < 2; j++) {
+        const double d = j ? 1e-12 : 1e-9, w0[2] = {-1e6, 1e6 + 1.4};
+        const body b = {{1.0, 1.0 - d, 0.0, 1.0 - d, 1.0, 0.0, -1.0, -1.0, 1.0}, {0, 0}, "sing"};
+        sus_model m;
+        sus_exact ex;
+        sus_refatt ra;
+        const double I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        if (check_body_model(&b, &m) || sus_exact_init(&ex, &m, w0))
+            continue;
+        sus_refatt_init(&ra, &ex, 0.0, I3);
+        const quad r2 = quad_form(&m, w0[0], w0[1]), rr = ra.closed.r;
+        worst = fmax(worst, fabs((double)((rr * rr - r2) / r2)) / 0x1p-64);
+    }
+    CHECK(worst <= 8.0,
+          "the reference's r on a near-singular I_m (I12 = 1 - 1e-9, 1 - 1e-12), w0 along its "
+          "soft axis, |w0| = 1.4e6: r^2 within %.3g 2^-64 of w0^T I_m w0 in 113 bits (<= 8)",
+          worst);
+}
+
 /* |L^{-1}|_F r (exact.h): the largest |w| on the energy ellipse is at most this. */
 static double ellipse_bound(const sus_exact *ex)
 {
@@ -254,6 +282,7 @@ int main(void)
     tables();
     exponential();
     quaternions();
+    reference_radius_on_soft_axis();
     double k_paper = 0.0;
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
