@@ -1,7 +1,7 @@
 #!/bin/sh
 # Rewrites the block of docs/reference/cli.md between "<!-- suslov --help -->" and
 # "<!-- end suslov --help -->" with the output of SUSLOV --help, in a code fence
-# (tests/cli/test_cli_conventions.sh fails until they agree). Run it after a change to the
+# (tests/cli/test_cli_methods.sh fails until they agree). Run it after a change to the
 # options or to the registry of methods, which --help lists.
 # Usage: tools/readme_help.sh [SUSLOV] (default build/suslov).
 set -eu

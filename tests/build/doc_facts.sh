@@ -6,7 +6,7 @@
 #     paper/findings.tsv with those verdicts (by their ids, F12, ...);
 #   - README.md is a front door: at most 150 lines, and its first 40 say what was found, show
 #     a figure and give the two commands.
-# (suslov --help and its copy in docs/reference/cli.md: tests/cli/test_cli_conventions.sh.)
+# (suslov --help and its copy in docs/reference/cli.md: tests/cli/test_cli_methods.sh.)
 # Usage: doc_facts.sh. Last line: "doc_facts: N passed, N failed".
 set -u
 cd "$(dirname "$0")/../.." || exit 2

@@ -153,8 +153,8 @@ rc=$?
 check "test_attitude_order passes with $name ($(grep -c "^PASS $name," att.log) of its lines)" \
     sh -c "test $rc = 0 && grep -q '^PASS $name, w:' att.log"
 grep '^FAIL' att.log
-check "the --help copy in docs/reference/cli.md and the other conventions hold" \
-    sh -c 'sh tests/cli/test_cli_conventions.sh build >conv.log 2>&1'
+check "the --help copy in docs/reference/cli.md and what suslov says of its methods hold" \
+    sh -c 'sh tests/cli/test_cli_methods.sh build >conv.log 2>&1'
 grep '^FAIL' conv.log
 check "tests/build/mutants stays fresh" sh -c 'sh tests/build/mutants_fresh.sh >fresh.log 2>&1'
 grep '^FAIL' fresh.log

@@ -258,10 +258,10 @@ check "control: the same FILE at mode 644 is replaced (exit $rc, $(wc -l <"$T/r4
 # a --method exact run estimated over 5 s is announced on one note line before it starts (its
 # rows may come minutes apart; the progress line shows on a terminal only); not under --quiet
 SLOW="--method exact --eps 1e6 --steps 3 --inertia 1,0,0,0,1,0,1e-12,0,1 --no-header"
-NO_PROGRESS= timeout 1 "$S" $SLOW >/dev/null 2>"$T/err"
+NO_PROGRESS= timeout 0.5 "$S" $SLOW >/dev/null 2>"$T/err"
 check "a --method exact run estimated over 5 s: a note first ($(head -1 "$T/err"))" \
     sh -c "head -1 '$T/err' | grep -q '^suslov: note: --method exact: the reference attitude needs [0-9.e+]* Taylor steps, roughly [0-9]* s\$'"
-NO_PROGRESS= timeout 1 "$S" $SLOW --quiet >/dev/null 2>"$T/err"
+NO_PROGRESS= timeout 0.5 "$S" $SLOW --quiet >/dev/null 2>"$T/err"
 check "... and none under --quiet ($(cat "$T/err"))" test ! -s "$T/err"
 NO_PROGRESS= "$S" --method exact --eps 0.1 --steps 25 >/dev/null 2>"$T/err"; rc=$?
 check "no note for a short --method exact run (exit $rc: $(cat "$T/err"))" test "$rc" = 0 -a ! -s "$T/err"
