@@ -23,6 +23,19 @@ int sus_args_start_unresolved(const sus_model *m, const double w0[2])
     return c != 0.0 && fabs(c) <= 0x1p-53 * terms && sus_contdyn_rate(m, w0) > 0.0;
 }
 
+int sus_args_lambda_overflows(const sus_model *m, const double w0[2])
+{
+    if (!m || !w0)
+        return 0;
+    const double(*I)[3] = m->I, w2 = 2.0 * sus_energy(m, w0) * m->norm_fA;
+    const double rows = fabs(I[1][0]) + fabs(I[1][1]) + fabs(I[0][0]) + fabs(I[0][1]);
+    const double o0 = m->norm_b * fabs(m->inv_det_m) * (fabs(m->o0c[0]) + fabs(m->o0c[1]));
+    if ((rows + o0) * w2 <= 0x1p-8 * DBL_MAX) /* 2^-8: far more than these few roundings */
+        return 0;
+    sus_exact ex;
+    return sus_exact_init(&ex, m, w0) == 0 && isinf(sus_exact_lambda_max(&ex));
+}
+
 /* The pointers and the model every run needs. */
 static const char *common(const void *cfg, const sus_model *model, const double w0[2],
                           sus_emit_fn emit, const sus_run_report *report)
@@ -48,9 +61,8 @@ static const char *common(const void *cfg, const sus_model *model, const double 
         return strcmp(what, "energy") == 0
                    ? "the energy at w0 overflows with this inertia"
                    : "the multiplier lambda at w0 overflows with this inertia";
-    /* and lambda along the motion (sus_exact_lambda_max), as the CLI refuses it */
-    sus_exact ex;
-    if (sus_exact_init(&ex, model, w0) == 0 && isinf(sus_exact_lambda_max(&ex)))
+    /* and lambda along the motion, as the CLI refuses it */
+    if (sus_args_lambda_overflows(model, w0))
         return "the multiplier lambda overflows along the motion from w0 with this inertia";
     return NULL;
 }

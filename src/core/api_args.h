@@ -22,6 +22,12 @@ int sus_args_finite2(const double w[2]);
  * same in scaled time (c w0 to time T / c), which a caller can use instead. sus_args_tol refuses
  * such a w0. */
 int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
+/* 1 when lambda of (LagMult) overflows along the motion from w0 (sus_exact_lambda_max), which a
+ * start's own check (sus_model_start_overflow) cannot see. First a bound of lambda's terms from
+ * the model alone, |w|^2 <= 2E ||I_m^-1|| and |c| <= |b| |w|: below the largest double with room
+ * to spare for its roundings (the common case) the closed form is not built, so the check costs
+ * a run a few products. 0 for a NULL m or w0. */
+int sus_args_lambda_overflows(const sus_model *m, const double w0[2]);
 /* 1 when w0 lies off the repelling steady rotation by less than a rounding: c(w0) = I31 w1 + I32 w2
  * is not 0 (to one rounding of itself, sus_cross_diff) but at most 2^-53 (|I31 w1| + |I32 w2|),
  * half of SUS_U: the rounding of c at w0, and c grows from there, c' = g(w) c with g(w0) = c(fA w0)

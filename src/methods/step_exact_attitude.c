@@ -122,7 +122,7 @@ struct sus_tol_work {
     step_kind kind; /* the last accepted step, for dense output: its kind, start, length, q0 */
     double t0, h, q0[4];
     double speed[2];       /* |w_inf| in double-double, speed[0] + speed[1]; set at alloc */
-    double beta;           /* q's growth exponent at w's poles (pole_exponent) */
+    double beta;           /* q's growth exponent at w's poles (pole_exponent); < 0: not yet */
     double e_try;          /* the series in E is tried from E(t) <= e_try on */
     int back_declined;     /* the series in 1 / E declined once: not tried again */
     taylor_series ts;      /* its series (q's rows scaled to its length) */
@@ -275,6 +275,22 @@ static void taylor_sum(const taylor_series *ts, int d, double theta, double q[4]
     turn(q, &y, d);
 }
 
+/* q's growth exponent at w's nearest poles (top of the file). Near a pole t_p, w ~ R / (t - t_p)
+ * with R = M (-i, 1) / ks (sech s ~ -i / e, tanh s ~ 1 / e at s = i pi/2 + e), and q' = 1/2 q (x)
+ * (0, w) has q ~ (t - t_p)^(+-mu), mu = i sqrt(R.R) / 2; the branch with Re(-mu) = -beta < 0 has
+ * Taylor terms from t growing like n^(beta - 1) rho^-n. beta = |Im sqrt(R.R)| / 2. */
+static double pole_exponent(const sus_exact_fast *f)
+{
+    if (f->fixed) /* w constant: no poles */
+        return 0.0;
+    double re = 0.0, im = 0.0; /* R.R ks^2 */
+    for (int i = 0; i < 2; i++) {
+        re += f->M[i][1] * f->M[i][1] - f->M[i][0] * f->M[i][0];
+        im -= 2.0 * f->M[i][0] * f->M[i][1];
+    }
+    return 0.5 * sqrt(0.5 * (hypot(re, im) - re)) / fabs(f->ks);
+}
+
 /* The bound, per degree, on how the terms past the last fall over a step H from t (top of the
  * file): the nearest singularity's H / rho, or the rotation's x / (d + 2), x = H |w|_max / 2. */
 static double decay_per_degree(const sus_tol_work *wk, double H, double rho, int d)
@@ -293,6 +309,8 @@ static int taylor_step(sus_tol_work *wk, double t, double stop, double rate, con
                        double q[4], double *h, double *t_next, double *est)
 {
     const int d = wk->deg->order;
+    if (wk->beta < 0.0) /* at the first Taylor step: a run of series steps alone needs none */
+        wk->beta = pole_exponent(&wk->f);
     const double rho = radius(wk, t), H = fmin(stop - t, RADIUS_SHARE * rho);
     wk->deg->series_of(&wk->f, H, t, w, &wk->ts);
     const double a = decay_per_degree(wk, H, rho, d);
@@ -380,33 +398,19 @@ static void state_at(const sus_tol_work *wk, double t, const double q[4], double
 
 /* ---- the tolerance-driven operations ---- */
 
-/* q's growth exponent at w's nearest poles (top of the file). Near a pole t_p, w ~ R / (t - t_p)
- * with R = M (-i, 1) / ks (sech s ~ -i / e, tanh s ~ 1 / e at s = i pi/2 + e), and q' = 1/2 q (x)
- * (0, w) has q ~ (t - t_p)^(+-mu), mu = i sqrt(R.R) / 2; the branch with Re(-mu) = -beta < 0 has
- * Taylor terms from t growing like n^(beta - 1) rho^-n. beta = |Im sqrt(R.R)| / 2. */
-static double pole_exponent(const sus_exact_fast *f)
-{
-    double re = 0.0, im = 0.0; /* R.R ks^2 */
-    for (int i = 0; i < 2; i++) {
-        re += f->M[i][1] * f->M[i][1] - f->M[i][0] * f->M[i][0];
-        im -= 2.0 * f->M[i][0] * f->M[i][1];
-    }
-    return 0.5 * sqrt(0.5 * (hypot(re, im) - re)) / fabs(f->ks);
-}
-
 static sus_tol_work *ea_alloc(const sus_model *m, double tol, const double w0[2])
 {
     sus_tol_work *wk = malloc(sizeof *wk);
     if (!wk)
         return NULL;
-    *wk = (sus_tol_work){.m = m, .tolq = tol / DIST_PER_Q, .deg = degree_for(tol), .e_try = 1.0};
+    *wk = (sus_tol_work){
+        .m = m, .tolq = tol / DIST_PER_Q, .deg = degree_for(tol), .beta = -1.0, .e_try = 1.0};
     if (sus_exact_init(&wk->ex, m, w0) != 0 || sus_exact_fast_init(&wk->f, &wk->ex) != 0) {
         free(wk);
         return NULL;
     }
     const sus_exact *ex = &wk->ex;
     sus_steady_speed(ex, wk->speed);
-    wk->beta = ex->fixed ? 0.0 : pole_exponent(&wk->f);
     const double a = 1.0 / ex->l11, b = 1.0 / ex->l22, c = ex->l21 / (ex->l11 * ex->l22);
     wk->w_max = sqrt(a * a + b * b + c * c) * ex->r;
     /* half the bound is the quaternion's error; that half at most the tail's share of tolq */

@@ -7,7 +7,6 @@
 #include "atomic_file.h"
 #include "cli_options.h"
 #include "dsp.h"
-#include "exact.h"
 #include "exact_run.h"
 #include "inertia_check.h"
 #include "midpoint_sweeps.h"
@@ -173,13 +172,12 @@ static void check_fixed_steps(suslov_args *a, const suslov_args_given *g)
 }
 
 /* E and lambda at w0 must be finite numbers (row 0 prints them), and lambda along the motion (every
- * row prints it; sus_exact_lambda_max). They depend on w0 and the body alike, so the message
+ * row prints it; sus_args_lambda_overflows). They depend on w0 and the body alike, so the message
  * names the options that were given: the default of the other is not the user's doing. */
 static void check_start(const suslov_args *a, const suslov_args_given *g)
 {
     const char *what = sus_model_start_overflow(&a->model, g->w0), *where = "at";
-    sus_exact ex;
-    if (!what && sus_exact_init(&ex, &a->model, g->w0) == 0 && isinf(sus_exact_lambda_max(&ex))) {
+    if (!what && sus_args_lambda_overflows(&a->model, g->w0)) {
         what = "multiplier lambda";
         where = "along the motion from";
     }
