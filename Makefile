@@ -80,15 +80,17 @@ ifeq ($(SAN),1)
 BUILD   := build/san
 SANFLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
-# Deferred (=) so that pkg-config runs after `deps` has installed the packages. A program links
+# Deferred (=) so that pkg-config runs after `deps` has installed the packages, and then once: the
+# first use replaces each with its value (a make -n plans ~100 recipes, and a process costs
+# milliseconds on a small VM). A program links
 # only what it uses: suslov, the claims ledger and most unit tests GSL and libm (LIBS_RUN); the
 # programs that draw (figures, animation, bench, and the unit tests that include a header of
 # src/render) also Cairo and OSMesa (LIBS_DRAW). A linker that keeps every library it is given
 # (clang's default) would otherwise map Cairo, OSMesa and LLVM into suslov.
 PKGS       = gsl cairo osmesa libpng
-PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
-LIBS_RUN   = $(shell pkg-config --libs gsl) -lm
-LIBS_DRAW  = $(shell pkg-config --libs $(PKGS)) -lm
+PKG_CFLAGS = $(eval PKG_CFLAGS := $$(shell pkg-config --cflags $$(PKGS)))$(PKG_CFLAGS)
+LIBS_RUN   = $(eval LIBS_RUN := $$(shell pkg-config --libs gsl) -lm)$(LIBS_RUN)
+LIBS_DRAW  = $(eval LIBS_DRAW := $$(shell pkg-config --libs $$(PKGS)) -lm)$(LIBS_DRAW)
 ALL_LDFLAGS = $(LDFLAGS) $(SANFLAGS)
 
 # The layers of src/, lowest first (tests/build/layers.sh checks the order). Each layer is

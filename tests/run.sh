@@ -108,11 +108,11 @@ prog() { # prog NAME COMMAND...
 
 if [ "$mode" != ledger ]; then
     stage "unit tests"
-    for t in "$@"; do prog "$(basename "$t")" "$t"; done
+    for t in "$@"; do prog "${t##*/}" "$t"; done
     end_stage what_programs
     # every CLI test script, found by name (tools/mutants.sh finds them the same way)
     stage "CLI tests"
-    for c in tests/cli/test_*.sh; do prog "$(basename "$c" .sh)" sh "$c" "$B"; done
+    for c in tests/cli/test_*.sh; do n=${c##*/}; prog "${n%.sh}" sh "$c" "$B"; done
     end_stage what_scripts
     stage "build checks"
     prog make_deps sh tests/build/make_deps.sh "$B"

@@ -11,8 +11,10 @@ S="$B/suslov"
 bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, one line matching PATTERN, nothing on stdout
     d=$1 pat=$2; shift 2
     "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
-    check "$d: exit 2, one line ($(cat "$T/err"))" \
-        sh -c "test $rc = 2 -a \$(wc -l <'$T/err') = 1 -a ! -s '$T/out' && grep -q -- '$pat' '$T/err'"
+    one=0
+    one_line "$T/err" && one=1
+    check "$d: exit 2, one line ($line1${line2:+ / $line2})" \
+        eval 'test $rc = 2 -a $one = 1 -a ! -s "$T/out" && grep -q -- "$pat" "$T/err"'
 }
 
 # --version: "suslov COMMIT", the commit this checkout is at when built from git, else unknown
@@ -44,17 +46,18 @@ for cmd in "--method euler --eps -1 --steps 1" "--method taylor-adaptive --tol 5
     "--method euler --eps 0.1 --steps 1 --output $T/none/x.csv"; do
     "$S" $cmd >"$T/out" 2>"$T/want"; rc=$?
     wrong=""
-    [ "$rc" = 2 ] && [ "$(wc -l <"$T/want")" = 1 ] || wrong=" [without them: exit $rc]"
+    [ "$rc" = 2 ] && one_line "$T/want" || wrong=" [without them: exit $rc]"
+    want=$line1
     for show in --help --man --version; do
         for at in before after; do
             if [ $at = before ]; then set -- $show $cmd; else set -- $cmd $show; fi
             "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
-            [ "$rc" = 2 ] && [ ! -s "$T/out" ] && cmp -s "$T/want" "$T/err" ||
+            [ "$rc" = 2 ] && [ ! -s "$T/out" ] && one_line "$T/err" && [ "$line1" = "$want" ] ||
                 wrong="$wrong [$show $at: exit $rc, $(head -c 80 "$T/err")]"
         done
     done
     d="$cmd, with --help, --man or --version before or after it: exit 2 and its line"
-    check "$d ($(cat "$T/want"))${wrong:+; wrong:$wrong}" test -z "$wrong"
+    check "$d ($want)${wrong:+; wrong:$wrong}" test -z "$wrong"
 done
 # without --method, the options given are checked for the kind of run they describe
 bad "--eps -1 --help" "^suslov: error: --eps must be positive" --eps -1 --help
