@@ -1,6 +1,6 @@
 #include "implicit_step.h"
 
-#include "newton.h"
+#include "newton_core.h"
 
 #include <math.h>
 
@@ -29,19 +29,13 @@ int sus_step_branch_root(const sus_step_equation *eq, const sus_model *m, double
 
 void sus_step_predict(const sus_model *m, double eps, const double w[2], double x[2])
 {
-    double f[2], mid[2];
     if (!x)
         return;
     if (!m || !w) {
         x[0] = x[1] = NAN;
         return;
     }
-    sus_contdyn(m, w, f);
-    mid[0] = w[0] + 0.5 * eps * f[0];
-    mid[1] = w[1] + 0.5 * eps * f[1];
-    sus_contdyn(m, mid, f);
-    x[0] = w[0] + eps * f[0];
-    x[1] = w[1] + eps * f[1];
+    newton_predict(m, eps, w, x);
 }
 
 void sus_step_result_is_x(const sus_model *m, double eps, const double w[2], const double *x,

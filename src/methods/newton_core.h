@@ -361,6 +361,20 @@ newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_mode
     return rc;
 }
 
+/* sus_step_predict (implicit_step.h) without its checks of NULL: the explicit midpoint
+ * prediction, inlined where a step's Newton is (the compositions start one every substep). */
+static inline __attribute__((always_inline)) void newton_predict(const sus_model *m, double eps,
+                                                                 const double w[2], double x[2])
+{
+    double f[2], mid[2];
+    sus_contdyn(m, w, f);
+    mid[0] = w[0] + 0.5 * eps * f[0];
+    mid[1] = w[1] + 0.5 * eps * f[1];
+    sus_contdyn(m, mid, f);
+    x[0] = w[0] + eps * f[0];
+    x[1] = w[1] + eps * f[1];
+}
+
 /* An implicit w-step's Newton, inlined: w_next = (x1, x2, 0) with x the branch's solution of G = 0
  * in two unknowns from w. */
 static inline __attribute__((always_inline)) int

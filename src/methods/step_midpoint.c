@@ -43,7 +43,7 @@ static const sus_step_equation MID_EQUATION = {.unknowns = 2,
 int sus_step_midpoint_solve(const sus_model *m, double eps, const double w[3], double w_next[3],
                             sus_stepper_stats *st)
 {
-    return newton_w_step(mid_residual, sus_step_predict, m, eps, w, w_next, st);
+    return newton_w_step(mid_residual, newton_predict, m, eps, w, w_next, st);
 }
 
 static int midpoint_apply(const sus_model *m, double eps, const double w[3], double w_next[3],

@@ -15,9 +15,12 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
     q[1] = y[1] * s;
 }
 
-/* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block). */
-static void taudyn_residual(const sus_model *m, double eps, const double w[2], const double *x,
-                            double *g, double *J, double *scale)
+/* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block); inlined
+ * into its Newton loop, as the midpoint's residual is. */
+static inline __attribute__((always_inline)) void taudyn_residual(const sus_model *m, double eps,
+                                                                  const double w[2],
+                                                                  const double *x, double *g,
+                                                                  double *J, double *scale)
 {
     const double(*I)[3] = m->I;
     const double *b = m->b;
@@ -67,7 +70,7 @@ static const sus_step_equation TAUDYN = {.unknowns = 2,
 static int variational_apply(const sus_model *m, double eps, const double w[3], double w_next[3],
                              double *lambda_next, sus_stepper_stats *st)
 {
-    const int status = newton_w_step(taudyn_residual, sus_step_predict, m, eps, w, w_next, st);
+    const int status = newton_w_step(taudyn_residual, newton_predict, m, eps, w, w_next, st);
     *lambda_next = taualg(m, w_next, w);
     return status;
 }
