@@ -12,7 +12,8 @@ impl=$(awk '
     FNR == 1 { pending = "" }
     /^\/\* \([A-Za-z][A-Za-z0-9]*\)/ { match($0, /\([A-Za-z][A-Za-z0-9]*\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
     pending != "" && /^[a-z].*[a-z_0-9]+\(/ && (FILENAME ~ /\.c$/ || /^static inline/) {
-        line = $0; sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
+        line = $0; gsub(/__attribute__\(\([^)]*\)\) */, "", line)
+        sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
         printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }
     pending != "" && !/^ \*/ && !/^\/\*/ { pending = "" }
 ' src/*/*.c src/*/*.h | sort -u)
@@ -26,11 +27,12 @@ named=$(awk '{ s = $0
 tests_of() { printf '%s\n' "$named" | awk -F'\t' -v l="$1" '$1 == l { printf "%s ", $2 }'; }
 impl_labels=" $(printf '%s\n' "$impl" | cut -f1 | tr '\n' ' ') "
 named_labels=" $(printf '%s\n' "$named" | cut -f1 | tr '\n' ' ') "
+has() { case $1 in *" $2 "*) return 0 ;; esac; return 1; } # has " A B " B
 fail=0 pass=0
 for l in $declared; do
-    if case $impl_labels in *" $l "*) false ;; esac; then
+    if ! has "$impl_labels" "$l"; then
         echo "FAIL eqmap: ($l) is declared in paper/equations.txt but no function is marked /* ($l) */"; fail=$((fail + 1))
-    elif case $named_labels in *" $l "*) false ;; esac; then
+    elif ! has "$named_labels" "$l"; then
         echo "FAIL eqmap: ($l) has no test that names it"; fail=$((fail + 1))
     else
         pass=$((pass + 1))
@@ -41,6 +43,16 @@ for l in $(printf '%s\n' "$impl" | cut -f1 | sort -u); do
         echo "FAIL eqmap: ($l) is implemented but not declared in paper/equations.txt"; fail=$((fail + 1))
     fi
 done
+# the name read off each marked definition is the function's, not a word of its declaration
+# (an attribute, a qualifier) that the reading above failed to skip
+bad_names=$(printf '%s\n' "$impl" | awk -F'\t' '$3 !~ /^[a-z][a-z0-9_]*$/ ||
+    $3 ~ /^(static|inline|const|void|int|double|long|unsigned|char|struct|extern)$/ {
+        printf " %s:%s", $2, $3 }')
+if [ -n "$bad_names" ]; then
+    echo "FAIL eqmap: a marked definition read as no function name:$bad_names"; fail=$((fail + 1))
+else
+    pass=$((pass + 1))
+fi
 if [ "$mode" = tex ]; then
     out=$2
     {
