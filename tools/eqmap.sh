@@ -11,7 +11,7 @@ mode=${1:-check}
 impl=$(awk '
     FNR == 1 { pending = "" }
     /^\/\* \([A-Za-z][A-Za-z0-9]*\)/ { match($0, /\([A-Za-z][A-Za-z0-9]*\)/); pending = substr($0, RSTART + 1, RLENGTH - 2); next }
-    pending != "" && /^[a-z].*[a-z_0-9]+\(/ && (FILENAME ~ /\.c$/ || /^static inline/) {
+    pending != "" && /^[A-Za-z].*[a-z_0-9]+\(/ && (FILENAME ~ /\.c$/ || /^static inline/) {
         line = $0; gsub(/__attribute__\(\([^)]*\)\) */, "", line)
         sub(/\(.*/, "", line); n = split(line, w, /[ *]+/)
         printf "%s\t%s\t%s\n", pending, FILENAME, w[n]; pending = ""; next }

@@ -14,6 +14,11 @@
 extern "C" {
 #endif
 
+/* A step's residual (or guess) defined with this is inlined into the Newton loop that calls it,
+ * which the compositions run for every substep; an out-of-line copy remains where its address is
+ * taken (the continuation, the stability checks). */
+#define NEWTON_INLINE static inline __attribute__((always_inline))
+
 /* n = 2 by the closed form (the (REGLOC) block, bit for bit as it has always been solved). */
 static inline int newton_solve_2x2(const double *J, const double *g, double *dx, double *det)
 {
@@ -363,8 +368,7 @@ newton_solve_branch(sus_residual_fn G, sus_guess_fn guess, int n, const sus_mode
 
 /* sus_step_predict (implicit_step.h) without its checks of NULL: the explicit midpoint
  * prediction, inlined where a step's Newton is (the compositions start one every substep). */
-static inline __attribute__((always_inline)) void newton_predict(const sus_model *m, double eps,
-                                                                 const double w[2], double x[2])
+NEWTON_INLINE void newton_predict(const sus_model *m, double eps, const double w[2], double x[2])
 {
     double f[2], mid[2];
     sus_contdyn(m, w, f);

@@ -11,12 +11,9 @@
 
 #include <math.h>
 
-/* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. Inlined
- * into its Newton loop (the compositions call that loop for every substep), and out of line
- * where its address is taken (the continuation, the stability checks). */
-static inline __attribute__((always_inline)) void mid_residual(const sus_model *m, double eps,
-                                                               const double w[2], const double *x,
-                                                               double *g, double *J, double *scale)
+/* (Discretization) residual with the midpoint l1, l2, and its Jacobian in x = w^{k+1}. */
+NEWTON_INLINE void mid_residual(const sus_model *m, double eps, const double w[2], const double *x,
+                                double *g, double *J, double *scale)
 {
     const double(*I)[3] = m->I;
     const double mid[2] = {0.5 * (x[0] + w[0]), 0.5 * (x[1] + w[1])};

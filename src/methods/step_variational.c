@@ -15,12 +15,9 @@ static void quartic_term(const double (*I)[3], const double y[2], double q[2])
     q[1] = y[1] * s;
 }
 
-/* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block); inlined
- * into its Newton loop, as the midpoint's residual is. */
-static inline __attribute__((always_inline)) void taudyn_residual(const sus_model *m, double eps,
-                                                                  const double w[2],
-                                                                  const double *x, double *g,
-                                                                  double *J, double *scale)
+/* (taudyn): G(x) with x = w^{k+1}, and its Jacobian (the (REGLOC)/(RegCond) block). */
+NEWTON_INLINE void taudyn_residual(const sus_model *m, double eps, const double w[2],
+                                   const double *x, double *g, double *J, double *scale)
 {
     const double(*I)[3] = m->I;
     const double *b = m->b;
