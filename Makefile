@@ -133,6 +133,7 @@ RENDER_H := $(notdir $(wildcard src/render/*.h))
 TESTS_DRAW := $(patsubst tests/unit/%.c,$(BUILD)/%,$(shell grep -lF $(RENDER_H:%=-e '"%"') \
                   tests/unit/test_*.c </dev/null 2>/dev/null))
 CLAIMS   := $(BUILD)/claims
+LEDGER_INPROC := $(BUILD)/ledger-inproc/claims.out
 TIMED    := $(BUILD)/timed
 
 # Stamps that change only when their text does: the compile flags (a change of CFLAGS, WERROR or
@@ -298,10 +299,10 @@ SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
 test: all
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
-ledger: $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
+ledger: $(BUILD)/claims.out $(LEDGER_INPROC)
 	@sh tests/run.sh $(BUILD) ledger
 
-check: all $(BUILD)/claims.out $(BUILD)/ledger-j1/claims.out
+check: all $(BUILD)/claims.out $(LEDGER_INPROC)
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
 # The ledger runs suslov on the recorded bench's settings (tests/ledger/claims_recommended.c): it
@@ -315,27 +316,30 @@ LEDGER_SUSLOV := $(BUILD)/obj/prog/suslov.o \
 # starts), and the web edition's claims_tex.tsv (each line's quantity and test in that LaTeX),
 # and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
-# grouped rule is whichever target asked for it: the table's path is spelled out.)
+# grouped rule is whichever target asked for it: the tables' paths are spelled out.)
+# The ledger runs each section in a process of its own, on every core (tests/ledger/ledger_jobs.h),
+# and is the same byte for byte as a run of one section after the other in one process: the
+# claims program with --in-process writes its files into $(BUILD)/ledger-inproc, and tests/run.sh
+# compares them. The two runs go at once, in one recipe, so that a plain `make check` waits for
+# the longer of them, not for their sum: the in-process run on a core of its own, the sections on
+# the others (one at a time on a 2-core machine).
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
               $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
-$(BUILD)/claims.out $(LEDGER_OUT) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV) \
-    | $(TIMED) $(BUILD)/suslov
-	$(call say,LEDGER,$(BUILD)/claims.tsv)
-	$(Q)out=$(BUILD)/claims.out; $(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp \
-	    $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv; \
+$(BUILD)/claims.out $(LEDGER_OUT) $(LEDGER_INPROC) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv \
+    $(LEDGER_SUSLOV) | $(TIMED) $(BUILD)/suslov
+	$(call say,LEDGER,$(BUILD)/claims.tsv and $(BUILD)/ledger-inproc/)
+	$(Q)out=$(BUILD)/claims.out one=$(LEDGER_INPROC); mkdir -p $(BUILD)/ledger-inproc; \
+	    n=$$(nproc 2>/dev/null || echo 2); n=$$((n > 1 ? n - 1 : 1)); \
+	    $(SAN_ENV) $(TIMED) --output $$one.tmp $(BUILD)/timings/ledger-inproc.txt $(CLAIMS) \
+	        --in-process $(BUILD)/ledger-inproc/claims.tsv & \
+	    $(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp \
+	        $(BUILD)/timings/ledger.txt $(CLAIMS) -j $$n $(BUILD)/claims.tsv; \
+	    wait $$!; ok=1; \
 	    if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
-	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
-
-# The ledger runs its sections on every core (tests/ledger/ledger_jobs.h), and is the same byte for
-# byte as a run of one section after the other in one process: the claims program with -j1 writes
-# its files into $(BUILD)/ledger-j1 (beside the parallel run, under make -j), and tests/run.sh
-# compares them.
-$(BUILD)/ledger-j1/claims.out: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV) \
-    | $(TIMED) $(BUILD)/suslov
-	$(call say,LEDGER,$(BUILD)/ledger-j1/claims.tsv (-j1))
-	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-j1.txt $(CLAIMS) -j1 \
-	    $(@D)/claims.tsv; if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
-	    else cat $@.tmp; rm -f $@.tmp; echo "ledger -j1: the claims program stopped early"; exit 1; fi
+	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); ok=0; echo "ledger: the claims program stopped early"; fi; \
+	    if grep -q '^claims: [0-9]* passed' $$one.tmp; then mv $$one.tmp $$one; \
+	    else cat $$one.tmp; rm -f $$one.tmp; ok=0; echo "ledger --in-process: the claims program stopped early"; fi; \
+	    [ $$ok = 1 ]
 
 # The fuzzer (tests/cli/fuzz*.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the

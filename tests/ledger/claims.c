@@ -1,8 +1,9 @@
 /* The claims program: every section of the ledger, in the order of its lines, run on the
  * available cores (ledger_jobs.h) once what they share is made; then the lines that compare
  * the reference attitude with what the sections fitted, and the files.
- * Usage: claims [-j JOBS] [--method NAME] [CLAIMS_TSV]   (JOBS: default the processors online; 1
- * runs the sections one after the other in this process, the run every other is compared with;
+ * Usage: claims [-j JOBS | --in-process] [--method NAME] [CLAIMS_TSV]   (JOBS: default the
+ * processors online; --in-process runs the sections one after the other in this process, the run
+ * every other is compared with;
  * --method NAME: only the per-method sections, for that method alone, as a new method's first
  * check: tests/build/scaffold_method.sh) */
 #include "atomic_file.h"
@@ -197,7 +198,8 @@ static void parse_method(int argc, char **argv, int *i)
     *i += 2;
 }
 
-/* -j JOBS (or -jJOBS), --method NAME and the path; bad arguments: one line and exit 2. */
+/* -j JOBS (or -jJOBS) or --in-process (jobs 0), --method NAME and the path; bad arguments: one
+ * line and exit 2. */
 static int parse_args(int argc, char **argv)
 {
     int jobs = ledger_jobs_online(), i = 1;
@@ -212,10 +214,13 @@ static int parse_args(int argc, char **argv)
         }
         jobs = (int)j;
         i++;
+    } else if (i < argc && strcmp(argv[i], "--in-process") == 0) {
+        jobs = 0;
+        i++;
     }
     parse_method(argc, argv, &i);
     if (argc - i > 1 || (i < argc && argv[i][0] == '-')) {
-        fprintf(stderr, "usage: claims [-j JOBS] [--method NAME] [CLAIMS_TSV]\n");
+        fprintf(stderr, "usage: claims [-j JOBS | --in-process] [--method NAME] [CLAIMS_TSV]\n");
         exit(2);
     }
     if (i < argc)

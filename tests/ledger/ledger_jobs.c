@@ -100,7 +100,7 @@ static int reap(const ledger_task *tasks, const pid_t *pid, int n, int *failed)
 
 void ledger_run_tasks(const ledger_task *tasks, int n, int jobs)
 {
-    if (jobs <= 1) {
+    if (jobs <= 0) {
         for (int i = 0; i < n; i++)
             tasks[i].run(tasks[i].arg);
         return;

@@ -2,8 +2,9 @@
  * that made what the sections share, so that a section starts from that state and never from
  * another section's; their lines come back in the order of the list, whatever the order they end
  * in. The ledger is therefore the same, byte for byte, however many run at once; make check
- * compares it with a run of one section after the other in a single process (claims -j1, into
- * build/ledger-j1), which a section leaning on another's state would fail. */
+ * compares it with a run of one section after the other in a single process (claims
+ * --in-process, into build/ledger-inproc), which a section leaning on another's state would
+ * fail. */
 #ifndef SUSLOV_LEDGER_JOBS_H
 #define SUSLOV_LEDGER_JOBS_H
 
@@ -13,10 +14,10 @@ typedef struct {
     int arg;
 } ledger_task;
 
-/* Runs tasks[0..n) on up to jobs processes at once (jobs = 1: one after the other, in this
- * process) and records their lines, their numbers and their minima (ledger_keep_min) here, in
- * the order of the array. A section that stops (ledger_die) or crashes stops the ledger, exit 2,
- * once the running ones have ended. */
+/* Runs tasks[0..n) on up to jobs processes at once (jobs = 0: one after the other, in this
+ * process; 1: one after the other, each in a process of its own) and records their lines, their
+ * numbers and their minima (ledger_keep_min) here, in the order of the array. A section that stops
+ * (ledger_die) or crashes stops the ledger, exit 2, once the running ones have ended. */
 void ledger_run_tasks(const ledger_task *tasks, int n, int jobs);
 
 /* The processors online: the default number of jobs. */
