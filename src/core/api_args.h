@@ -26,11 +26,10 @@ int sus_args_tol_underflows(const sus_model *m, const double w0[2]);
  * start's own check (sus_model_start_overflow) cannot see. First a bound of lambda's terms from
  * the model alone, |w|^2 <= 2E ||I_m^-1|| and |c| <= |b| |w|: below the largest double with room
  * to spare for its roundings (the common case) the closed form is not built, so the check costs
- * a run a few products. 0 for a NULL m or w0. It judges lambda's value, not the terms a row sums
- * in double: a motion whose largest lambda lies within a few percent of the largest double can
- * still overflow in one of them, which the run reports as a blow-up (exit 3); and on a
- * near-singular I_m the largest lambda carries the closed form's cancellation in its last digits,
- * so a start whose lambda comes that close to the limit is refused or not by its roundings. */
+ * a run a few products. 0 for a NULL m or w0. It judges lambda's value, as a row's lambda is
+ * formed (a term that overflows is summed scaled: model.h); on a near-singular I_m the largest
+ * lambda carries the closed form's cancellation in its last digits, so a start whose lambda comes
+ * that close to the limit is refused or not by its roundings. */
 int sus_args_lambda_overflows(const sus_model *m, const double w0[2]);
 /* 1 when w0 lies off the repelling steady rotation by less than a rounding: c(w0) = I31 w1 + I32 w2
  * is not 0 (to one rounding of itself, sus_cross_diff) but at most 2^-53 (|I31 w1| + |I32 w2|),

@@ -177,13 +177,21 @@ void sus_contdyn_jacobian(const sus_model *m, const double w[2], double J[2][2])
     J[1][1] = (I[1][0] * c + q * m->b[1]) / d;
 }
 
-/* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). */
+/* 2 E = <I_m w, w>, term by term. */
+static double twice_energy(const double (*I)[3], const double w[2])
+{
+    return w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
+}
+
+/* E(w) = 1/2 <I_m w, w>; the paper's displayed E_l drops the 1/2 (a factor-2 slip). Scaled as
+ * (LagMult) is (model.h: SUS_QUAD_SCALE) where 2 E or a term overflows and E need not. */
 double sus_energy(const sus_model *m, const double w[2])
 {
     if (!m || !w)
         return NAN;
-    const double(*I)[3] = m->I;
-    const double e2 =
-        w[0] * (I[0][0] * w[0] + I[0][1] * w[1]) + w[1] * (I[1][0] * w[0] + I[1][1] * w[1]);
-    return 0.5 * e2;
+    const double e = 0.5 * twice_energy(m->I, w);
+    if (isfinite(e) || !isfinite(w[0]) || !isfinite(w[1]))
+        return e;
+    const double ws[2] = {ldexp(w[0], -SUS_QUAD_SCALE), ldexp(w[1], -SUS_QUAD_SCALE)};
+    return ldexp(0.5 * twice_energy(m->I, ws), 2 * SUS_QUAD_SCALE);
 }

@@ -130,15 +130,30 @@ static inline double sus_lagmult_o0(const sus_model *m, const double w[2])
     return sus_o0_with_c(m, w, sus_c(m, w));
 }
 
-/* (LagMult) at w with its factor c = I_3i w_i given, not formed from w: term by term as printed.
- * NaN for a NULL m or w. */
+/* (LagMult)'s terms, as printed and summed in that order. */
+static inline double sus_lagmult_terms(const sus_model *m, const double w[2], double c)
+{
+    const double(*I)[3] = m->I;
+    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1]) - w[1] * (I[0][0] * w[0] + I[0][1] * w[1]) +
+           sus_o0_with_c(m, w, c);
+}
+
+/* lambda and E are quadratic in (w, c): q(w, c) = 2^(2 s) q(2^-s w, 2^-s c), exactly, as a power of
+ * two scales without rounding (away from the subnormals). Where a term overflows and the sum need
+ * not (within a few percent of the largest double), the sum is formed at 2^-SUS_QUAD_SCALE. */
+#define SUS_QUAD_SCALE 32
+
+/* (LagMult) at w with its factor c = I_3i w_i given, not formed from w: term by term as printed,
+ * and scaled (above) where a term overflows: inf only where lambda does. NaN for a NULL m or w. */
 static inline double sus_lagmult_c(const sus_model *m, const double w[2], double c)
 {
     if (!m || !w)
         return NAN;
-    const double(*I)[3] = m->I;
-    return w[0] * (I[1][0] * w[0] + I[1][1] * w[1]) - w[1] * (I[0][0] * w[0] + I[0][1] * w[1]) +
-           sus_o0_with_c(m, w, c);
+    const double l = sus_lagmult_terms(m, w, c);
+    if (isfinite(l) || !isfinite(w[0]) || !isfinite(w[1]) || !isfinite(c))
+        return l;
+    const double ws[2] = {ldexp(w[0], -SUS_QUAD_SCALE), ldexp(w[1], -SUS_QUAD_SCALE)};
+    return ldexp(sus_lagmult_terms(m, ws, ldexp(c, -SUS_QUAD_SCALE)), 2 * SUS_QUAD_SCALE);
 }
 
 /* (LagMult): lambda(w), term by term as printed (inline: the DSPs evaluate it every step). */

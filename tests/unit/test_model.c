@@ -36,16 +36,23 @@ static int contdyn_printed(double t, const double y[], double f[], void *p)
 }
 
 /* (LagMult) as printed, from the rows of I, likewise in long double with |I_m| and O_0's
- * coefficients I32 I21 - I31 I22 and I32 I11 - I31 I12 exact. */
-static long double lagmult_printed(const double *I, const double w[2])
+ * coefficients I32 I21 - I31 I22 and I32 I11 - I31 I12 exact; its three terms in t. */
+static long double lagmult_printed_terms(const double *I, const double w[2], long double t[3])
 {
     const long double det = check_cross_diff_exact(I[0], I[4], I[1], I[3]);
     const long double c = (long double)I[6] * w[0] + (long double)I[7] * w[1];
     const long double o2 = check_cross_diff_exact(I[7], I[3], I[6], I[4]);
     const long double o1 = check_cross_diff_exact(I[7], I[0], I[6], I[1]);
-    return w[0] * ((long double)I[3] * w[0] + (long double)I[4] * w[1]) -
-           w[1] * ((long double)I[0] * w[0] + (long double)I[1] * w[1]) +
-           c / det * (o2 * w[1] + o1 * w[0]);
+    t[0] = w[0] * ((long double)I[3] * w[0] + (long double)I[4] * w[1]);
+    t[1] = -w[1] * ((long double)I[0] * w[0] + (long double)I[1] * w[1]);
+    t[2] = c / det * (o2 * w[1] + o1 * w[0]);
+    return t[0] + t[1] + t[2];
+}
+
+static long double lagmult_printed(const double *I, const double w[2])
+{
+    long double t[3];
+    return lagmult_printed_terms(I, w, t);
 }
 
 /* max |w_exact(t) - w_rk8pd(t)| on t = 0, 0.5 s, ..., 100 s, rk8pd on contdyn_printed of the body
@@ -141,6 +148,44 @@ static void extreme_bodies(void)
               "extreme body %zu refused as the CLI refuses it (\"%s\"), its control accepted (%s)",
               i, err, err_ok);
     }
+}
+
+/* lambda and E within a few percent of the largest double, where a term of their sums overflows
+ * in double and the sum does not: finite, and as near the printed formulas in long double as
+ * anywhere, since scaling by a power of two rounds nothing: (LagMult) within 6 u L (the bound of
+ * model_vs_printed, below), E within 4 u of its terms' sizes (two products of two-term sums and
+ * their sum, 3 u, and the printed side's 2^-64); at twice that w, where they overflow themselves,
+ * +inf (not NaN). The body and the direction of w are those of an exact run that once ended as a
+ * blow-up at step 54, lambda at 1.78e308. */
+static void near_overflow(void)
+{
+    static const double I[9] = {2, -0.7, 0, -0.7, 0.5, 0, -3, -5, 0};
+    const double d[2] = {1.3088771230301911, 1.6825184306904665}, u = SUS_U;
+    sus_model m;
+    sus_model_init(&m, I, NULL, 0);
+    long double t[3];
+    /* both quadratic in w: q(s d) = s^2 q(d), s putting lambda at 0.99 and E at 0.75 of DBL_MAX */
+    const long double sl = sqrtl(0.99L * DBL_MAX / fabsl(lagmult_printed(I, d)));
+    const double w[2] = {(double)(sl * d[0]), (double)(sl * d[1])}, w2[2] = {2 * w[0], 2 * w[1]};
+    const long double lw = lagmult_printed_terms(I, w, t);
+    const long double L = fabsl(t[0]) + fabsl(t[1]) + fabsl(t[2]);
+    const double l = sus_lagmult(&m, w), l2 = sus_lagmult(&m, w2);
+    CHECK(fabsl(t[2]) > DBL_MAX && fabsl(lw) < DBL_MAX && isfinite(l) &&
+              fabsl(l - lw) <= 6 * u * L && isinf(l2) && (l2 > 0) == (lw > 0),
+          "(LagMult) at |lambda| = %.4Lg, its last term %.4Lg past the largest double: %.17g "
+          "(%.2Lg of 6 u L); at 2 w: %g",
+          lw, t[2], l, fabsl(l - lw) / (6 * u * L), l2);
+    const long double e2d = d[0] * ((long double)I[0] * d[0] + (long double)I[1] * d[1]) +
+                            d[1] * ((long double)I[3] * d[0] + (long double)I[4] * d[1]);
+    const long double se = sqrtl(0.75L * DBL_MAX / (0.5L * e2d));
+    const double v[2] = {(double)(se * d[0]), (double)(se * d[1])}, v2[2] = {2 * v[0], 2 * v[1]};
+    const long double a = v[0] * ((long double)I[0] * v[0] + (long double)I[1] * v[1]),
+                      b = v[1] * ((long double)I[3] * v[0] + (long double)I[4] * v[1]);
+    const double e = sus_energy(&m, v), e2 = sus_energy(&m, v2);
+    CHECK(a + b > DBL_MAX && isfinite(e) &&
+              fabsl(e - 0.5L * (a + b)) <= 4 * u * (fabsl(a) + fabsl(b)) && isinf(e2) && e2 > 0,
+          "E at %.4Lg, 2 E = %.4Lg past the largest double: %.17g; at 2 w: %g", 0.5L * (a + b),
+          a + b, e, e2);
 }
 
 /* Absolute values at the paper's body, by hand. */
@@ -471,6 +516,7 @@ int main(void)
     char err[256], about[200];
     validation();
     extreme_bodies();
+    near_overflow();
     printf("bodies: seed %u\n", BODIES_SEED);
     for (int k = 0; k < BODIES_COUNT; k++) {
         body b;
