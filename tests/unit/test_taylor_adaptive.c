@@ -11,7 +11,7 @@
  *   - a steady rotation (c(w) = 0 exactly in double) is a rest point of the series: one step, w
  *     stays exactly w*, R is the rotation exp(t w*^) (so3.h) to its rounding, also when fast; from
  *     the closed form's steady rotation (c(w*) u-small) w and R stay within N TOL;
- *   - over some 1e5 steps of a slow transient on a fast rotation, R stays within the steps'
+ *   - over some 2.5e4 steps of a slow transient on a fast rotation, R stays within the steps'
  *     estimates and round-off of the long-double reference (the clock: t advances by the step the
  *     series is summed over);
  *   - dense output at the step's ends equals the step's states, and rows come at the requested
@@ -292,7 +292,7 @@ static void fast_steady_rotation(const sus_model *m, const double w0[2], const c
 }
 
 /* The clock over many steps: a slow transient on a fast rotation (check_body.h's slow body; some
- * 1e5 steps, none at rest, no tail), against the long-double reference: R(T) within the steps'
+ * 2.5e4 steps, none at rest, no tail), against the long-double reference: R(T) within the steps'
  * estimates summed, 2 sqrt2 N TOL (each step's quaternion error at most its estimate, the flow
  * keeping norms, dist <= 2 sqrt2 |dq|), plus ROUND_ANGLE u T |w0| (every step's angle rounded; |w|
  * = |w0| on this I_m) and the steps' other roundings as a random walk, 3 ROUND_STEP u sqrt N
