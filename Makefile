@@ -5,6 +5,7 @@
 #   make            build build/suslov, the figure programs and the test programs
 #   make test       unit, CLI and build tests (seconds); make ledger: the claims ledger
 #   make check      both: tests + claims ledger (build/claims.tsv); last line "N passed, N failed"
+#   make ledger-inproc  the ledger in one process, the same bytes as make check's (CI runs it)
 #   make figures    every figure: figures/NAME.{pdf,png,txt} and data/NAME.csv, and the animation
 #   make animation  the animation alone: figures/attitude.mp4, figures/attitude/, the filmstrip
 #   make bench      work-precision and per-step cost against GSL and Boost: a fresh run in
@@ -150,7 +151,7 @@ endef
 $(eval $(call STAMP_RULE,$(BUILD)/flags.stamp,$(CC) $(WARN) $(CFLAGS) $(SANFLAGS) $(LDFLAGS) | $(CXX)))
 $(foreach l,$(LIB_LAYERS),$(eval $(call STAMP_RULE,$(BUILD)/libsus_$(l).list,$(call obj_of,$(l)))))
 
-.PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger check figures animation bench bench-record paper clean distclean
+.PHONY: FORCE all deps deps-figures deps-paper deps-bench test ledger ledger-inproc check figures animation bench bench-record paper clean distclean
 all: $(BUILD)/suslov $(BUILD)/man/suslov.1 $(BUILD)/bench $(BUILD)/animation $(FIG_BIN) $(TESTS) $(CLAIMS) \
      $(TIMED)
 
@@ -299,10 +300,10 @@ SAN_ENV = SUSLOV_SAN=$(filter 1,$(SAN)) \
 test: all
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/test.txt sh tests/run.sh $(BUILD) test $(TESTS)
 
-ledger: $(BUILD)/claims.out $(LEDGER_INPROC)
+ledger: $(BUILD)/claims.out
 	@sh tests/run.sh $(BUILD) ledger
 
-check: all $(BUILD)/claims.out $(LEDGER_INPROC)
+check: all $(BUILD)/claims.out
 	@$(SAN_ENV) $(TIMED) $(BUILD)/timings/check.txt sh tests/run.sh $(BUILD) check $(TESTS)
 
 # The ledger runs suslov on the recorded bench's settings (tests/ledger/claims_recommended.c): it
@@ -317,29 +318,30 @@ LEDGER_SUSLOV := $(BUILD)/obj/prog/suslov.o \
 # and prints its table (claims.out). A run that does not reach its summary line
 # (a crash, a measurement that could not be made) leaves no output, so it runs again. ($@ of a
 # grouped rule is whichever target asked for it: the tables' paths are spelled out.)
-# The ledger runs each section in a process of its own, on every core (tests/ledger/ledger_jobs.h),
-# and is the same byte for byte as a run of one section after the other in one process: the
-# claims program with --in-process writes its files into $(BUILD)/ledger-inproc, and tests/run.sh
-# compares them. The two runs go at once, in one recipe, so that a plain `make check` waits for
-# the longer of them, not for their sum: the in-process run on a core of its own, the sections on
-# the others (one at a time on a 2-core machine).
+# The ledger runs each section in a process of its own, on every core (tests/ledger/ledger_jobs.h).
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
               $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
-$(BUILD)/claims.out $(LEDGER_OUT) $(LEDGER_INPROC) &: $(CLAIMS) $(BENCH_REC)/what_to_use.tsv \
-    $(LEDGER_SUSLOV) | $(TIMED) $(BUILD)/suslov
-	$(call say,LEDGER,$(BUILD)/claims.tsv and $(BUILD)/ledger-inproc/)
-	$(Q)out=$(BUILD)/claims.out one=$(LEDGER_INPROC); mkdir -p $(BUILD)/ledger-inproc; \
-	    n=$$(nproc 2>/dev/null || echo 2); n=$$((n > 1 ? n - 1 : 1)); \
-	    $(SAN_ENV) $(TIMED) --output $$one.tmp $(BUILD)/timings/ledger-inproc.txt $(CLAIMS) \
-	        --in-process $(BUILD)/ledger-inproc/claims.tsv & \
-	    $(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp \
-	        $(BUILD)/timings/ledger.txt $(CLAIMS) -j $$n $(BUILD)/claims.tsv; \
-	    wait $$!; ok=1; \
-	    if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
-	    else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); ok=0; echo "ledger: the claims program stopped early"; fi; \
-	    if grep -q '^claims: [0-9]* passed' $$one.tmp; then mv $$one.tmp $$one; \
-	    else cat $$one.tmp; rm -f $$one.tmp; ok=0; echo "ledger --in-process: the claims program stopped early"; fi; \
-	    [ $$ok = 1 ]
+LEDGER_IN := $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV)
+$(BUILD)/claims.out $(LEDGER_OUT) &: $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
+	$(call say,LEDGER,$(BUILD)/claims.tsv)
+	$(Q)out=$(BUILD)/claims.out; \
+	$(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp $(BUILD)/timings/ledger.txt \
+	    $(CLAIMS) $(BUILD)/claims.tsv; \
+	if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
+	else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
+
+# The ledger is the same byte for byte as a run of one section after the other in one process
+# (claims --in-process, into $(BUILD)/ledger-inproc), which a section leaning on another's state
+# would fail (tests/build/ledger_inproc.sh). CI checks it; make check does not, as it would double
+# the ledger's time.
+ledger-inproc: $(LEDGER_INPROC) $(BUILD)/claims.out
+	@sh tests/build/ledger_inproc.sh $(BUILD)
+$(LEDGER_INPROC): $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
+	$(call say,LEDGER,$(BUILD)/ledger-inproc/ in one process)
+	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-inproc.txt \
+	    $(CLAIMS) --in-process $(@D)/claims.tsv; \
+	if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
+	else cat $@.tmp; rm -f $@.tmp; echo "ledger --in-process: the claims program stopped early"; exit 1; fi
 
 # The fuzzer (tests/cli/fuzz*.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the

@@ -166,18 +166,6 @@ ledger_stage() {
     else
         echo "claims_no_nan: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
     fi
-    # The same files, byte for byte, from one section after the other in one process (claims
-    # --in-process, which make ran into $B/ledger-inproc): the sections lean on no other's state.
-    differ=""
-    for f in claims.out claims.tsv methods.tsv numbers.tex ledger.tex summary.tex sensitivity.tex \
-        claims_tex.tsv; do cmp -s "$B/ledger-inproc/$f" "$B/$f" || differ="$differ $f"; done
-    if [ -z "$differ" ]; then
-        echo "ledger_inproc: 1 passed, 0 failed" >>"$sum"; st_pass=$((st_pass + 1))
-    else
-        echo "FAIL the ledger in one process ($B/ledger-inproc) differs from the run of a process per section in:$differ" \
-            >>"$st_out"
-        echo "ledger_inproc: 0 passed, 1 failed" >>"$sum"; st_fail=$((st_fail + 1))
-    fi
     lines=$(awk 'END { print NR - 1 }' "$B/claims.tsv")
     st_end "claims ledger" "$lines lines, table in $B/claims.out"
 }

@@ -31,19 +31,14 @@ cat "$tmp/bench.txt"
 t1=$(date +%s.%N)
 secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
 # make check's work, timed whole: the tests, and the ledger run afresh (make reruns it only when
-# its program changed) as make runs it, a process per section beside one in-process run, into a
-# scratch directory: the ledger writes numbers.tex, ledger.tex, summary.tex and methods.tsv beside
-# its TSV, and build/'s are the ones make made
+# its program changed) as make runs it, a process per section on every core, into a scratch
+# directory: the ledger writes numbers.tex, ledger.tex, summary.tex and methods.tsv beside its TSV,
+# and build/'s are the ones make made
 scratch=$(mktemp -d)
-mkdir -p "$scratch/inproc"
-n=$(nproc 2>/dev/null || echo 2)
 c0=$(date +%s.%N)
 checked=1
-{ sh tests/run.sh "$B" test "$B"/test_* && {
-    "$B/claims" --in-process "$scratch/inproc/claims.tsv" &
-    "$B/claims" -j $((n > 1 ? n - 1 : 1)) "$scratch/claims.tsv"; s=$?
-    wait $! && [ "$s" = 0 ]
-}; } >/dev/null 2>&1 || checked=0
+{ sh tests/run.sh "$B" test "$B"/test_* && "$B/claims" "$scratch/claims.tsv"; } >/dev/null 2>&1 ||
+    checked=0
 c1=$(date +%s.%N)
 rm -rf "$scratch"
 scratch=$(mktemp -d)

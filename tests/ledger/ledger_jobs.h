@@ -1,10 +1,10 @@
 /* The ledger's sections on every core: each section a process of its own, forked from the one
  * that made what the sections share, so that a section starts from that state and never from
  * another section's; their lines come back in the order of the list, whatever the order they end
- * in. The ledger is therefore the same, byte for byte, however many run at once; make check
- * compares it with a run of one section after the other in a single process (claims
- * --in-process, into build/ledger-inproc), which a section leaning on another's state would
- * fail. */
+ * in. The ledger is therefore the same, byte for byte, however many run at once; make
+ * ledger-inproc (CI) compares it with a run of one section after the other in a single process
+ * (claims --in-process, into build/ledger-inproc), which a section leaning on another's state
+ * would fail. */
 #ifndef SUSLOV_LEDGER_JOBS_H
 #define SUSLOV_LEDGER_JOBS_H
 
