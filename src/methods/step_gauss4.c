@@ -72,8 +72,8 @@ static void gauss4_residual(const sus_model *m, double eps, const double w[2], c
 /* The stages from the explicit midpoint prediction to each node c_i eps. */
 static void gauss4_guess(const sus_model *m, double eps, const double w[2], double *x)
 {
-    sus_step_predict(m, C[0] * eps, w, x);
-    sus_step_predict(m, C[1] * eps, w, x + 2);
+    newton_predict(m, C[0] * eps, w, x);
+    newton_predict(m, C[1] * eps, w, x + 2);
 }
 
 static void gauss4_result(const sus_model *m, double eps, const double w[2], const double *x,
