@@ -10,13 +10,8 @@ cd "$(dirname "$0")/../.." || exit 2
 pass=0 fail=0
 tmp=""
 . tools/on_exit.sh
-on_exit 'rm -f "$tmp"'
+on_exit 'rm -f "$tmp" "$tmp.anchors" "$tmp.out"'
 tmp=$(mktemp)
-# The anchors of a markdown file, one a line.
-anchors() {
-    awk '/^```/ { code = !code; next } !code && /^#+ / { sub(/^#+ +/, ""); print }' "$1" |
-        tr 'A-Z' 'a-z' | tr -d '!"#$%&'"'"'()*+,./:;<=>?@[\\]^`{|}~' | tr ' ' '-'
-}
 # FILE LINE TARGET for every link of a file, outside fenced code and inline code spans.
 links() {
     awk -v f="$1" '
@@ -35,21 +30,48 @@ links() {
         }' "$1"
 }
 for doc in README.md $(find docs -name '*.md' | sort); do links "$doc"; done >"$tmp"
+: >"$tmp.anchors"
 while read -r doc line target; do
     case $target in http://* | https://* | mailto:*) continue ;; esac
     path=${target%%#*}
     anchor=""
     case $target in *'#'*) anchor=${target#*#} ;; esac
-    if [ -z "$path" ]; then file=$doc; else file=$(dirname "$doc")/$path; fi
+    case $doc in */*) file=${doc%/*}/$path ;; *) file=$path ;; esac
+    [ -n "$path" ] || file=$doc
     if [ ! -e "$file" ]; then
         echo "FAIL doc_links: $doc:$line: $target: no file $file"
         fail=$((fail + 1))
-    elif [ -n "$anchor" ] && ! anchors "$file" | grep -qxF "$anchor"; then
-        echo "FAIL doc_links: $doc:$line: $target: no heading of $file has the anchor #$anchor"
-        fail=$((fail + 1))
+    elif [ -n "$anchor" ]; then
+        printf '%s %s %s %s\n' "$file" "$anchor" "$doc:$line" "$target" >>"$tmp.anchors"
     else
         pass=$((pass + 1))
     fi
 done <"$tmp"
+# Each #anchor against the headings of its file, outside fenced code, as GitHub derives anchors
+# from them: lowercased, punctuation dropped but - and _, spaces as -. Each file read once.
+awk -v punct='!"#$%&'"'"'()*+,./:;<=>?@[\]^`{|}~' '
+    function read_anchors(f,   l, code, a, i, c) {
+        while ((getline l <f) > 0) {
+            if (l ~ /^```/) { code = !code; continue }
+            if (code || l !~ /^#+ /) continue
+            sub(/^#+ +/, "", l); l = tolower(l); a = ""
+            for (i = 1; i <= length(l); i++) {
+                c = substr(l, i, 1)
+                if (!index(punct, c)) a = a (c == " " ? "-" : c)
+            }
+            has[f, a] = 1
+        }
+        close(f); seen[f] = 1
+    }
+    !($1 in seen) { read_anchors($1) }
+    ($1, $2) in has { ok++; next }
+    { printf "FAIL doc_links: %s: %s: no heading of %s has the anchor #%s\n", $3, $4, $1, $2; bad++ }
+    END { print "counts", ok + 0, bad + 0 }' "$tmp.anchors" >"$tmp.out"
+while IFS= read -r l; do
+    case $l in
+        'counts '*) set -- $l; pass=$((pass + $2)) fail=$((fail + $3)) ;;
+        *) printf '%s\n' "$l" ;;
+    esac
+done <"$tmp.out"
 echo "doc_links: $pass passed, $fail failed"
 [ "$fail" = 0 ]
