@@ -29,11 +29,9 @@ check "installed: bin/suslov, lib/libsuslov.a, include/suslov/suslov.h, lib/pkgc
 inst=$(cd "$P/include/suslov" && ls | tr '\n' ' ')
 check "include/suslov holds the public headers only ($inst)" \
     test "$inst" = "driver.h exact.h exact_run.h model.h reconstruct.h registry.h stepper.h suslov.h "
-nolink=""
-for h in "$P"/include/suslov/*.h src/util/*.h src/core/*.h src/methods/*.h src/lab/*.h; do
-    case $h in */suslov.h) continue ;; esac # it only includes the others
-    grep -q 'extern "C"' "$h" || nolink="$nolink $h"
-done
+# (suslov.h only includes the others)
+nolink=$(grep -L 'extern "C"' "$P"/include/suslov/*.h src/util/*.h src/core/*.h src/methods/*.h \
+    src/lab/*.h | grep -v '/suslov\.h$' | tr '\n' ' ')
 check "every installed header and every header of src/{util,core,methods,exp} declares C linkage for C++:${nolink:- yes}" \
     test -z "$nolink"
 
