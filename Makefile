@@ -143,7 +143,7 @@ TIMED    := $(BUILD)/timed
 # date; otherwise it gets one that rewrites it. Nothing is written while the Makefile is read,
 # so `make -n` and `make -q` change nothing, and `make -q all` answers truthfully.
 define STAMP_RULE
-ifneq ($$(strip $$(shell cat $(1) 2>/dev/null)),$$(strip $(2)))
+ifneq ($$(strip $$(file <$(1))),$$(strip $(2)))
 $(1): FORCE
 	@mkdir -p $$(@D); echo '$$(strip $(2))' >$$@
 endif
