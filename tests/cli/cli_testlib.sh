@@ -30,6 +30,14 @@ one_line() {
     line1="" line2=""
     { IFS= read -r line1 || return 1; ! IFS= read -r line2 && [ -z "$line2" ]; } <"$1"
 }
+# has_tmp DIR...: does a name in a DIR hold ".tmp."? By the shell's globs, not ls and grep: the
+# scripts ask it in polling loops.
+has_tmp() {
+    for d in "$@"; do
+        for f in "$d"/*.tmp.* "$d"/.*.tmp.* "$d"/.tmp.*; do [ -e "$f" ] && return 0; done
+    done
+    return 1
+}
 done_tests() {
     echo "$1: $pass passed, $fail failed"
     [ "$fail" = 0 ]

@@ -81,7 +81,7 @@ if env --default-signal true 2>/dev/null; then
             exec env --default-signal "$S" --method rk4 $LONG --output "$T/sig/s.csv") 2>/dev/null &
         pid=$!
         i=0
-        while [ $i -lt 500 ] && ! ls -A "$T/sig" | grep -q '^\.tmp\.'; do sleep 0.02; i=$((i + 1)); done
+        while [ $i -lt 500 ] && ! has_tmp "$T/sig"; do sleep 0.02; i=$((i + 1)); done
         kill -$n $pid; { wait $pid; } 2>/dev/null; rc=$?
         want=$((128 + n))
         left=$(ls -A "$T/sig" | tr '\n' ' ')
@@ -109,7 +109,7 @@ if [ -x "$B/figure_fig1" ] && env --default-signal true 2>/dev/null; then
         rm -rf "$T/fig" "$T/dat"; mkdir -p "$T/fig" "$T/dat"
         (SUSLOV_NO_O_TMPFILE=1 exec env --default-signal "$B/figure_fig1" "$T/fig" "$T/dat") >/dev/null 2>&1 &
         pid=$!
-        while kill -0 $pid 2>/dev/null && ! ls -A "$T/fig" "$T/dat" 2>/dev/null | grep -q '\.tmp\.'; do :; done
+        while kill -0 $pid 2>/dev/null && ! has_tmp "$T/fig" "$T/dat"; do :; done
         caught=$(ls -A "$T/fig" "$T/dat" | grep -c '\.tmp\.')
         kill -INT $pid 2>/dev/null; { wait $pid; } 2>/dev/null; rc=$?
     done
