@@ -9,21 +9,25 @@ HEADER='k,t,omega1,omega2,omega3,lambda,energy,R11,R12,R13,R21,R22,R23,R31,R32,R
 
 # --help documents every option and exits 0
 "$S" --help >"$T/help" 2>&1; rc=$?
-missing=""
-for o in --method --eps --steps --time --omega0 --inertia --reconstruct --every --output --help \
-         exact euler midpoint rk4 variational cayley cayley-mid; do
-    grep -q -- "$o" "$T/help" || missing="$missing $o"
-done
+missing=$(awk 'BEGIN { n = split("--method --eps --steps --time --omega0 --inertia --reconstruct " \
+                                 "--every --output --help exact euler midpoint rk4 variational " \
+                                 "cayley cayley-mid", o, " ") }
+               { for (k = 1; k <= n; k++) if (index($0, o[k])) f[k] = 1 }
+               END { for (k = 1; k <= n; k++) if (!f[k]) printf " %s", o[k] }' "$T/help")
 check "--help exits 0 and documents every option and value${missing:+ (missing:$missing)}" \
     test "$rc" = 0 -a -z "$missing"
 
+# rows_are FILE "K ...": the first line of FILE is the CSV header, and the rest are rows of 16
+# fields whose first column reads K ... (each followed by a space)
+rows_are() {
+    awk -F, -v h="$HEADER" -v want="$2" 'NR == 1 { ok = $0 == h; next }
+        { got = got $1 " "; if (NF != 16) ok = 0 } END { exit !(ok && got == want) }' "$1"
+}
 # exact header, row count with --every and the last row, %.17g numbers, 16 fields
 for m in exact euler midpoint rk4 variational; do
     "$S" --no-header --method $m --eps 0.1 --steps 25 --every 10 >"$T/$m.csv" 2>"$T/err"; rc=$?
-    rows=$(tail -n +2 "$T/$m.csv" | cut -d, -f1 | tr '\n' ' ')
-    nf=$(awk -F, 'NR > 1 && NF != 16 { bad++ } END { print bad + 0 }' "$T/$m.csv")
     check "$m: exit 0, exact header, rows k = 0 10 20 25, 16 fields" \
-        test "$rc" = 0 -a "$(head -1 "$T/$m.csv")" = "$HEADER" -a "$rows" = "0 10 20 25 " -a "$nf" = 0
+        eval '[ "$rc" = 0 ] && rows_are "$T/$m.csv" "0 10 20 25 "'
 done
 check "numbers are printed with %.17g (t = 2.5 at k = 25, w1(0) = 0.40000000000000002)" \
     grep -q '^25,2.5,' "$T/rk4.csv"
@@ -43,9 +47,12 @@ for case in "euler 0.1 0.3 3 0.30000000000000004" "exact 0.1 0.7 7 0.70000000000
     "rk4 0.1 1 10 1"; do
     set -- $case
     "$S" --method "$1" --eps "$2" --time "$3" >"$T/tk.csv"
-    last=$(tail -1 "$T/tk.csv" | cut -d, -f1,2)
-    fin=$(sed -n 's/^# eps: .*, final time: //p' "$T/tk.csv")
-    off=$(grep -v '^#' "$T/tk.csv" | awk -F, -v h="$2" 'NR > 1 && $2 != sprintf("%.17g", $1 * h)' | wc -l)
+    # the last row's k,t; the header's final time; the rows whose t is not k H
+    r=$(awk -F, -v h="$2" 'sub(/^# eps: .*, final time: /, "") { fin = $0; next } /^#/ { next }
+                           ++n > 1 && $2 != sprintf("%.17g", $1 * h) { off++ }
+                           { last = $1 "," $2 } END { print last, fin, off + 0 }' "$T/tk.csv")
+    last=${r%% *} r=${r#* }
+    fin=${r%% *} off=${r#* }
     check "--method $1 --eps $2 --time $3: every t = k H, the last row $4,$5 and final time $5 ($last; $fin; $off rows off)" \
         test "$last" = "$4,$5" -a "$fin" = "$5" -a "$off" = 0
 done
@@ -309,13 +316,21 @@ for e in 700 1000 1300 1700; do
         for K in 1 7; do
             "$S" --no-header --method gauss4 --eps $e --steps 3000 --every $K --omega0=$w >"$T/pf.csv" 2>"$T/err"; rc=$?
             [ "$rc" = 0 ] && continue
-            step=$(sed -n 's/^suslov: error: gauss4 step \([0-9]*\) (t = \([^)]*\)) failed: .*residual.*/\1/p' "$T/err")
-            tt=$(sed -n 's/^suslov: error: gauss4 step [0-9]* (t = \([^)]*\)) failed: .*/\1/p' "$T/err")
-            want=$(awk -v S="$step" -v K=$K 'BEGIN { for (k = 0; k < S; k++) if (k % K == 0 || k == S - 1) printf "%d ", k }')
-            got=$(tail -n +2 "$T/pf.csv" | cut -d, -f1 | tr '\n' ' ')
-            nf=$(awk -F, 'NR > 1 && NF != 16 { bad++ } END { print bad + 0 }' "$T/pf.csv")
-            if [ "$rc" = 3 ] && [ "$(wc -l <"$T/err")" = 1 ] && [ -n "$step" ] && [ "$got" = "$want" ] && [ "$nf" = 0 ] &&
-               awk -v t="$tt" -v S="$step" -v e=$e 'BEGIN { exit !(t == S * e) }'; then
+            # the one line: "suslov: error: gauss4 step S (t = TT) failed: ...residual..."
+            step="" tt=""
+            if one_line "$T/err"; then
+                case $line1 in
+                    "suslov: error: gauss4 step "*" (t = "*") failed: "*residual*)
+                        step=${line1#suslov: error: gauss4 step } tt=${line1#*(t = }
+                        step=${step%% *} tt=${tt%%)*} ;;
+                esac
+            fi
+            case $step in '' | *[!0-9]*) step="" ;; esac
+            # rows k < S, every K-th and the last good step S-1, of 16 fields; t = S eps
+            if [ "$rc" = 3 ] && [ -n "$step" ] &&
+               awk -F, -v S="$step" -v K=$K -v e=$e -v t="$tt" 'NR > 1 { got = got $1 " "; if (NF != 16) bad = 1 }
+                   END { for (k = 0; k < S; k++) if (k % K == 0 || k == S - 1) want = want k " "
+                         exit !(!bad && got == want && t == S * e) }' "$T/pf.csv"; then
                 nfail=$((nfail + 1))
                 [ "$step" -gt 7 ] && nlate=$((nlate + 1))
             else
