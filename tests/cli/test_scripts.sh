@@ -58,22 +58,18 @@ fi
 
 # Every test script that makes a scratch file cleans it up on a signal: through cli_testlib.sh,
 # through tools/on_exit.sh, or with its own INT TERM HUP trap.
-missing=""
-for f in tests/run.sh tests/cli/test_*.sh tests/build/*.sh; do
-    grep -q 'mktemp' "$f" || continue
-    grep -q '^\. .*cli_testlib\.sh"$' "$f" || grep -q "^on_exit '" "$f" ||
-        grep -q 'for sig in INT TERM HUP' "$f" || missing="$missing $f"
-done
+missing=$(awk 'function judge() { if (mk && !clean) printf " %s", f }
+    FNR == 1 { if (NR > 1) judge(); f = FILENAME; mk = clean = 0 }
+    /mktemp/ { mk = 1 }
+    /^\. .*cli_testlib\.sh"$/ || /^on_exit '"'"'/ || /for sig in INT TERM HUP/ { clean = 1 }
+    END { if (NR) judge() }' tests/run.sh tests/cli/test_*.sh tests/build/*.sh)
 check "every test script with a scratch file cleans it up on INT, TERM and HUP${missing:+ (not:$missing)}" \
     test -z "$missing"
 
 # The build directory: cli_testlib.sh makes it absolute before a script uses it, so that the two
 # forms behave the same. Every script sources it before its first use of $B ...
-early=""
-for f in tests/cli/test_*.sh; do
-    awk '/^\. .*cli_testlib\.sh"$/ { exit 0 } /\$B|\$\{B/ && !/^B=\$\{1:-build\}$/ { exit 1 }' "$f" ||
-        early="$early $f"
-done
+early=$(awk 'FNR == 1 { sourced = 0 } sourced { next } /^\. .*cli_testlib\.sh"$/ { sourced = 1; next }
+             /\$B|\$\{B/ && !/^B=\$\{1:-build\}$/ { printf " %s", FILENAME; sourced = 1 }' tests/cli/test_*.sh)
 check "every CLI script sources cli_testlib.sh before it uses \$B${early:+ (not:$early)}" test -z "$early"
 # ... and a script given either form runs the same checks with the same results
 rel=$(realpath --relative-to="$PWD" "$B")
