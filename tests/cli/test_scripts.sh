@@ -73,9 +73,9 @@ early=$(awk 'FNR == 1 { sourced = 0 } sourced { next } /^\. .*cli_testlib\.sh"$/
 check "every CLI script sources cli_testlib.sh before it uses \$B${early:+ (not:$early)}" test -z "$early"
 # ... and a script given either form runs the same checks with the same results
 rel=$(realpath --relative-to="$PWD" "$B")
-sh tests/cli/test_cli_sweeps.sh "$rel" >"$T/rel" 2>&1; rc1=$?
-sh tests/cli/test_cli_sweeps.sh "$B" >"$T/abs" 2>&1; rc2=$?
-check "test_cli_sweeps.sh with the build directory as $rel and as $B: both pass, the same lines" \
+sh tests/cli/test_figure_stability.sh "$rel" >"$T/rel" 2>&1; rc1=$?
+sh tests/cli/test_figure_stability.sh "$B" >"$T/abs" 2>&1; rc2=$?
+check "test_figure_stability.sh with the build directory as $rel and as $B: both pass, the same lines" \
     sh -c "test $rc1 = 0 -a $rc2 = 0 && cmp -s '$T/rel' '$T/abs'"
 
 done_tests test_scripts
