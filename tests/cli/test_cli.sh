@@ -396,9 +396,10 @@ if env --default-signal true 2>/dev/null; then
             SUSLOV_NO_O_TMPFILE=$nt env --default-signal "$S" --no-header --method rk4 --eps 1e-9 --steps 9000000000000 \
                 --every 1000000000000 --output "$T/kill/sig.csv" 2>/dev/null &
             pid=$!
-            # wait (up to 10 s) until the run has its temporary: named, or an fd in $T/kill
+            # wait (up to 10 s) until the run has its temporary: named, or an fd in $T/kill (a look a
+            # hundredth of a second: the run computes at full speed until its signal)
             i=0
-            while [ $i -lt 100 ] && ! ls -l /proc/$pid/fd 2>/dev/null | grep -q "$T/kill/"; do sleep 0.1; i=$((i + 1)); done
+            while [ $i -lt 1000 ] && ! ls -l /proc/$pid/fd 2>/dev/null | grep -q "$T/kill/"; do sleep 0.01; i=$((i + 1)); done
             kill -s $sig $pid; wait $pid; rc=$?
             case $sig in HUP) n=1 ;; INT) n=2 ;; KILL) n=9 ;; PIPE) n=13 ;; TERM) n=15 ;; esac
             want=$((128 + n))
