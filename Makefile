@@ -322,13 +322,15 @@ LEDGER_SUSLOV := $(BUILD)/obj/prog/suslov.o \
 LEDGER_OUT := $(BUILD)/claims.tsv $(BUILD)/methods.tsv $(BUILD)/numbers.tex $(BUILD)/ledger.tex $(BUILD)/summary.tex \
               $(BUILD)/sensitivity.tex $(BUILD)/claims_tex.tsv
 LEDGER_IN := $(CLAIMS) $(BENCH_REC)/what_to_use.tsv $(LEDGER_SUSLOV)
+# ledger_keep OUT,ALSO,NAME: OUT.tmp becomes OUT when the claims program reached its summary line;
+# else it is shown, removed with ALSO, and the recipe fails
+ledger_keep = if grep -q '^claims: [0-9]* passed' $(1).tmp; then mv $(1).tmp $(1); \
+    else cat $(1).tmp; rm -f $(1).tmp $(2); echo "$(3): the claims program stopped early"; exit 1; fi
 $(BUILD)/claims.out $(LEDGER_OUT) &: $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
 	$(call say,LEDGER,$(BUILD)/claims.tsv)
-	$(Q)out=$(BUILD)/claims.out; \
-	$(SAN_ENV) $(TIMED) --progress ledger --output $$out.tmp $(BUILD)/timings/ledger.txt \
-	    $(CLAIMS) $(BUILD)/claims.tsv; \
-	if grep -q '^claims: [0-9]* passed' $$out.tmp; then mv $$out.tmp $$out; \
-	else cat $$out.tmp; rm -f $$out.tmp $(LEDGER_OUT); echo "ledger: the claims program stopped early"; exit 1; fi
+	$(Q)$(SAN_ENV) $(TIMED) --progress ledger --output $(BUILD)/claims.out.tmp \
+	    $(BUILD)/timings/ledger.txt $(CLAIMS) $(BUILD)/claims.tsv; \
+	$(call ledger_keep,$(BUILD)/claims.out,$(LEDGER_OUT),ledger)
 
 # The ledger is the same byte for byte as a run of one section after the other in one process
 # (claims --in-process, into $(BUILD)/ledger-inproc), which a section leaning on another's state
@@ -340,8 +342,7 @@ $(LEDGER_INPROC): $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
 	$(call say,LEDGER,$(BUILD)/ledger-inproc/ in one process)
 	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-inproc.txt \
 	    $(CLAIMS) --in-process $(@D)/claims.tsv; \
-	if grep -q '^claims: [0-9]* passed' $@.tmp; then mv $@.tmp $@; \
-	else cat $@.tmp; rm -f $@.tmp; echo "ledger --in-process: the claims program stopped early"; exit 1; fi
+	$(call ledger_keep,$@,,ledger --in-process)
 
 # The fuzzer (tests/cli/fuzz*.c): random and hostile argument vectors against $(BUILD)/suslov for T
 # seconds with the fixed seed SEED (printed, for replay), checking every promise of the
