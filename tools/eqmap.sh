@@ -38,8 +38,9 @@ for l in $declared; do
         pass=$((pass + 1))
     fi
 done
+declared_labels=" $(printf '%s ' $declared)"
 for l in $(printf '%s\n' "$impl" | cut -f1 | sort -u); do
-    if ! printf '%s\n' "$declared" | grep -qx "$l"; then
+    if ! has "$declared_labels" "$l"; then
         echo "FAIL eqmap: ($l) is implemented but not declared in paper/equations.txt"; fail=$((fail + 1))
     fi
 done
