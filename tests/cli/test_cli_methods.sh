@@ -83,7 +83,6 @@ check "header and --help: own-attitude methods say 'attitude: own' with their de
 # --help, the manual page and docs/reference/cli.md tell the same: the manual page is written from
 # the option table --help prints, and docs/reference/cli.md quotes --help verbatim between its
 # markers (tools/readme_help.sh rewrites its copy)
-"$S" --help >"$T/help"
 "$S" --man >"$T/man"
 # an option's entry: a line ".B", ".BI", a space and a quote optional, then the option with its
 # hyphens escaped (\-), then a space or the line's end
