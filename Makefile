@@ -337,7 +337,7 @@ $(BUILD)/claims.out $(LEDGER_OUT) &: $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
 # would fail (tests/build/ledger_inproc.sh). CI checks it; make check does not, as it would double
 # the ledger's time.
 ledger-inproc: $(LEDGER_INPROC) $(BUILD)/claims.out
-	@sh tests/build/ledger_inproc.sh $(BUILD)
+	@sh tests/build/ledger_inproc.sh $(BUILD) $(notdir $(BUILD)/claims.out $(LEDGER_OUT))
 $(LEDGER_INPROC): $(LEDGER_IN) | $(TIMED) $(BUILD)/suslov
 	$(call say,LEDGER,$(BUILD)/ledger-inproc/ in one process)
 	$(Q)mkdir -p $(@D); $(SAN_ENV) $(TIMED) --output $@.tmp $(BUILD)/timings/ledger-inproc.txt \
