@@ -3,6 +3,7 @@
 #   test    run exactly the given unit test programs, then the CLI and build tests below
 #   ledger  the claims ledger's table (whole) and checks, on what make kept in BUILD_DIR/claims.out
 #   check   both
+#   unit    run exactly the given programs, and nothing else
 # One line per stage (unit tests, CLI tests, build checks, the ledger, the paper's checks): PASS or
 # FAIL, what ran and its counts. A failure is shown in full under its stage: the FAIL lines of each
 # program that failed, or all its output when it printed no summary (a crash). Every program's
@@ -42,31 +43,52 @@ clear_line() {
     [ "$live" = 1 ] || return 0
     if [ "${TERM:-}" = dumb ] || [ -n "${NO_COLOR:-}" ]; then printf '\r%79s\r' ''; else printf '\r\033[K'; fi
 }
-# count NAME LOG [STATUS]: the program's summary line into the stage and the summary file; a log
-# with none is a failure shown whole, and so is a failing exit STATUS beside no failed check
-count() {
-    line=$(grep -E "^$1: [0-9]+ passed, [0-9]+ failed" "$2" | tail -1)
-    if [ -z "$line" ]; then
-        { echo "$1: no summary line (crashed?); its output:"; sed 's/^/    /' "$2"; } >>"$st_out"
-        line="$1: 0 passed, 1 failed"
-    elif [ "${3:-0}" != 0 ] && [ "$(echo "$line" | awk '{ print $4 }')" = 0 ]; then
-        { echo "$1: exit status $3 after no failed check; its output:"
-          sed 's/^/    /' "$2"; } >>"$st_out"
-        line=$(echo "$line" | awk '{ $4 = 1; print }')
-    fi
-    echo "$line" >>"$sum"
-    set -- $line
-    st_pass=$((st_pass + $2)) st_fail=$((st_fail + $4))
+# The digest of a program's log, made by its job as soon as it ends, so that the runner reads it
+# in its turn with the shell's own read: "F LINE" for the stage's failures (the log's FAIL lines;
+# then the whole log when it has no summary line, or when the exit status fails beside no failed
+# check), "K LINE" for each SKIP line, "S LINE" the summary line "NAME: N passed, N failed", and
+# "D SECONDS" the run time when the job gives its start and end (t0, t1).
+# shellcheck disable=SC2016 # awk's
+digest='function whole(why, i) {
+        print "F " name ": " why "; its output:"
+        for (i = 1; i <= NR; i++) print "F     " out[i]
+    }
+    { out[NR] = $0 }
+    /^FAIL/ { print "F " $0 }
+    /^SKIP/ { print "K " $0 }
+    $0 ~ ("^" name ": [0-9]+ passed, [0-9]+ failed") { line = $0 }
+    END {
+        if (line == "") { whole("no summary line (crashed?)"); line = name ": 0 passed, 1 failed" }
+        else if (rc != 0) {
+            $0 = line
+            if ($4 == 0) { whole("exit status " rc " after no failed check"); $4 = 1; line = $0 }
+        }
+        print "S " line
+        if (t1 != "") print "D " (t1 - t0)
+    }'
+# took NAME: the digest $L/NAME.res of a program that ran into the stage: its failures, its SKIP
+# lines into skipped.txt, its counts into the stage and the summary file, its time into durations
+took() {
+    st_names="$st_names $1" st_k=$((st_k + 1)) summed=0
+    [ -f "$L/$1.res" ] && while IFS= read -r l; do
+        case $l in
+            F\ *) printf '%s\n' "${l#F }" >>"$st_out" ;;
+            K\ *) printf '%s\n' "${l#K }" >>"$L/skipped.txt"; st_skip=$((st_skip + 1)) ;;
+            S\ *) tally "${l#S }"; summed=1 ;;
+            D\ *) durations="$durations$1 ${l#D }
+" ;;
+        esac
+    done <"$L/$1.res"
+    rm -f "$L/$1.res"
+    [ "$summed" = 1 ] && return
+    echo "$1: no digest of its output in $L/$1.res" >>"$st_out"
+    tally "$1: 0 passed, 1 failed"
 }
-# done_prog NAME STATUS: a program that ran, its output in its log: its FAIL lines into the stage's
-# failures, its SKIP lines into skipped.txt, its counts into the stage
-done_prog() {
-    st_names="$st_names $1" st_k=$((st_k + 1))
-    grep -E '^FAIL' "$L/$1.log" >>"$st_out"
-    n=$(grep -cE '^SKIP' "$L/$1.log")
-    grep -E '^SKIP' "$L/$1.log" >>"$L/skipped.txt"
-    st_skip=$((st_skip + n))
-    count "$1" "$L/$1.log" "$2"
+# tally "NAME: N passed, N failed": into the summary file and the stage's counts
+tally() {
+    echo "$1" >>"$sum"
+    set -- $1
+    st_pass=$((st_pass + $2)) st_fail=$((st_fail + $4))
 }
 # st_end TITLE WHAT: the stage's line, then its failures
 st_end() {
@@ -110,6 +132,8 @@ if [ "$mode" != ledger ]; then
     stage "unit tests"
     for t in "$@"; do prog "${t##*/}" "$t"; done
     end_stage what_programs
+fi
+if [ "$mode" != ledger ] && [ "$mode" != unit ]; then
     # every CLI test script, found by name (tools/mutants.sh finds them the same way)
     stage "CLI tests"
     for c in tests/cli/test_*.sh; do n=${c##*/}; prog "${n%.sh}" sh "$c" "$B"; done
@@ -134,14 +158,14 @@ ledger_stage() {
     # under "checks that failed:" each failing line again, then the findings. The table is printed
     # whole by make ledger and with V=1; a failing line always, in full, under the stage's line.
     cp "$B/claims.out" "$L/claims.log"
-    st_names=claims
     if [ "$mode" = ledger ] || [ "${V:-0}" = 1 ]; then
         awk '/^checks that failed:$/ || /^findings of / { exit } { print }' "$B/claims.out"
     fi
     awk '/^checks that failed:$/ { on = 1; next } /^findings of / { exit } on && NF' \
         "$B/claims.out" >>"$st_out"
     grep -q '^claims: [0-9]* passed, 0 failed' "$B/claims.out" || status=1
-    count claims "$B/claims.out"
+    awk -v name=claims -v rc=0 "$digest" "$B/claims.out" >"$L/claims.res"
+    took claims
     # claims.tsv is the TSV (its header first), not the printed table
     want='^id	paper_ref	quantity	measured	expected	tolerance	verdict'
     if head -1 "$B/claims.tsv" | grep -q "$want"; then
@@ -176,7 +200,7 @@ findings() {
     echo "the whole ledger: $B/claims.out (each line's check and finding) and $B/claims.tsv;" \
         "make ledger, or make check V=1, prints it"
 }
-if [ "$mode" != test ]; then
+if [ "$mode" != test ] && [ "$mode" != unit ]; then
     fn ledger_stage
     stage "paper checks"
     # Every numbered statement of the paper is in the ledger or in paper/not_tested.tsv.
@@ -200,14 +224,18 @@ order=$(k=1; while [ $k -le $q_n ]; do
 durations=""
 # A program runs in a process group of its own (setsid), so that an interrupt can end it whole: a
 # background job of a script ignores SIGINT, and its children would outlive it. It writes
-# $L/NAME.rc ("STATUS START END", the times from /proc/uptime when there is one), then its number
-# into the pool's pipe (fd 3), which the runner reads to learn that a slot is free.
+# the digest of its log, $L/NAME.res (its times from /proc/uptime when there is one), then its
+# number into the pool's pipe (fd 3), which the runner reads to learn that a slot is free. A TERM
+# to the group ends the program (the trap leaves it the default action) but not its job until it
+# has reaped it: an orphan would be left to init, which may reap it late, while the runner waits
+# for the group to be gone.
 # shellcheck disable=SC2016 # expanded by the job's shell
-job='L=$1 name=$2 k=$3; shift 3
+job='trap : TERM; L=$1 name=$2 k=$3 digest=$4; shift 4
 read -r t0 x </proc/uptime 2>/dev/null || t0=0
 "$@" </dev/null >"$L/$name.log" 2>&1 3>&-; rc=$?
 read -r t1 x </proc/uptime 2>/dev/null || t1=0
-echo "$rc $t0 $t1" >"$L/$name.rc"; echo "$k" >&3'
+awk -v name="$name" -v rc=$rc -v t0=$t0 -v t1=$t1 "$digest" "$L/$name.log" >"$L/$name.res"
+echo "$k" >&3'
 setsid=""
 command -v setsid >/dev/null 2>&1 && setsid=setsid
 active=0
@@ -215,7 +243,7 @@ start_next() {
     set -- $order
     k=$1; shift; order=$*
     eval "name=\$q_name_$k c=\$q_cmd_$k"
-    eval "$setsid sh -c \"\$job\" job \"\$L\" \"\$name\" $k $c &"
+    eval "$setsid sh -c \"\$job\" job \"\$L\" \"\$name\" $k \"\$digest\" $c &"
     eval "q_pid_$k=\$! q_started_$k=1"
     active=$((active + 1))
 }
@@ -286,11 +314,7 @@ take() {
         F) eval "\$q_fn_$1" ;;
         P) eval "d=\$q_done_$1 name=\$q_name_$1"
            [ "$d" = 1 ] || return 1
-           read -r rc t0 t1 <"$L/$name.rc"
-           rm -f "$L/$name.rc"
-           durations="$durations$name $(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
-"
-           done_prog "$name" "$rc" ;;
+           took "$name" ;;
     esac
     return 0
 }

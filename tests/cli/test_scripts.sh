@@ -1,8 +1,9 @@
 #!/bin/sh
 # The test scripts' own promises: an interrupted test (INT, TERM or HUP, as make test gets from a
 # terminal or a job control) leaves no scratch file behind and dies of the signal, under dash
-# too, which runs no EXIT trap on a signal; and every CLI script works the same from a relative
-# or an absolute build directory. Usage: test_scripts.sh BUILD_DIR
+# too, which runs no EXIT trap on a signal; the runner reports what its programs did; and every
+# CLI script works the same from a relative or an absolute build directory.
+# Usage: test_scripts.sh BUILD_DIR
 set -u
 B=${1:-build}
 . "$(dirname "$0")/cli_testlib.sh"
@@ -55,6 +56,30 @@ EOF
 else
     skip "interrupts: needs setsid and env --default-signal"
 fi
+
+# The runner's report (its header): a failure is shown under its stage, in the order of the
+# programs: the FAIL lines of a program that failed; all the output of one that printed no summary
+# line (a crash), or that exited with a failing status beside no failed check, each then counted
+# as one failed check. SKIP lines are counted and kept in skipped.txt, the counts in the summary
+# file; the last line is the total, and the status fails.
+mkdir -p "$T/u"
+stand_in() { printf '#!/bin/sh\n%s\n' "$2" >"$T/u/$1" && chmod +x "$T/u/$1"; } # stand_in NAME BODY
+stand_in ok 'echo "PASS a"; echo "SKIP b: no tool"; echo "ok: 3 passed, 0 failed"'
+stand_in bad 'echo "FAIL x"; echo "  why"; echo "bad: 4 passed, 1 failed"; exit 1'
+stand_in crash 'echo "PASS y"; echo two'
+stand_in quiet 'echo "quiet: 2 passed, 0 failed"; exit 3'
+sh tests/run.sh "$T/u" unit "$T/u/ok" "$T/u/bad" "$T/u/crash" "$T/u/quiet" >"$T/u/out" 2>&1; rc=$?
+printf '%s\n' \
+    "FAIL  unit tests     4 programs: 9 passed, 3 failed, 1 skipped (see $T/u/tests/skipped.txt)" \
+    "      FAIL x" "      crash: no summary line (crashed?); its output:" "          PASS y" \
+    "          two" "      quiet: exit status 3 after no failed check; its output:" \
+    "          quiet: 2 passed, 0 failed" "9 passed, 3 failed" >"$T/u/want"
+printf '%s\n' "ok: 3 passed, 0 failed" "bad: 4 passed, 1 failed" "crash: 0 passed, 1 failed" \
+    "quiet: 2 passed, 1 failed" >"$T/u/want-summary"
+check "tests/run.sh reports a failed check, a crash, a failing status, a skip: status 1 ($rc)" \
+    sh -c "test $rc = 1 && cmp -s '$T/u/out' '$T/u/want' &&
+        cmp -s '$T/u/unit-summary.txt' '$T/u/want-summary' &&
+        test \"\$(cat '$T/u/tests/skipped.txt')\" = 'SKIP b: no tool'"
 
 # Every test script that makes a scratch file cleans it up on a signal: through cli_testlib.sh,
 # through tools/on_exit.sh, or with its own INT TERM HUP trap.
