@@ -18,13 +18,13 @@ check "machine.txt says when, from which commit, and how loaded the machine was"
 check "summary.md lists the targets' verdicts" grep -q '^- \*\*\(PASS\|MISS\)\*\*' "$R/summary.md"
 # every \Bench... macro the companion's sources use is defined by the recorded run (its misses by
 # tools/bench_summary.sh from its bench.txt, as make paper has them)
-used=$(grep -oh '\\Bench[A-Za-z]*' paper/*.tex | sort -u)
 sh tools/bench_summary.sh "$R" misses >"$T/misses.tex"
-missing=""
-for m in $used; do
-    grep -q "\\\\newcommand{\\$m}" "$R/bench.tex" "$R/machine.tex" "$T/misses.tex" ||
-        missing="$missing $m"
-done
+missing=$(awk 'FNR == 1 { used = FILENAME ~ /^paper\// }
+    !used { s = $0; while (match(s, /\\newcommand\{\\Bench[A-Za-z]*\}/)) {
+                def[substr(s, RSTART + 12, RLENGTH - 13)] = 1; s = substr(s, RSTART + RLENGTH) } }
+    used { s = $0; while (match(s, /\\Bench[A-Za-z]*/)) {
+               m = substr(s, RSTART, RLENGTH); if (!(m in def) && !seen[m]++) printf " %s", m
+               s = substr(s, RSTART + RLENGTH) } }' "$R/bench.tex" "$R/machine.tex" "$T/misses.tex" paper/*.tex)
 check "every \\Bench macro of paper/*.tex is defined by the recorded run (missing:${missing:- none})" \
     test -z "$missing"
 mkdir -p "$T/a" "$T/b"

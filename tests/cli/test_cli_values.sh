@@ -30,8 +30,8 @@ near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d
 # products of size <= 0.25: round-off a few u, so 1e-15.
 for m in exact euler midpoint rk4 variational; do
     "$S" --no-header --method "$m" --eps 0.5 --steps 1 >"$tmp/$m.csv" 2>"$tmp/err" || true
-    row0=$(sed -n 2p "$tmp/$m.csv")
-    lam=$(echo "$row0" | cut -d, -f6) E=$(echo "$row0" | cut -d, -f7)
+    lam="" E="" # row 0's fields 6 and 7, read by the shell itself
+    { read -r _ && IFS=, read -r _ _ _ _ _ lam E _; } <"$tmp/$m.csv"
     result "$(near "$lam" -0.017272727272727273 1e-15)" "$m: row 0 lambda = $lam, by hand -19/1100"
     result "$(near "$E" 0.225 1e-15)" "$m: row 0 energy = $E, by hand 0.225"
 done
@@ -44,7 +44,10 @@ for w0 in 0.4,0.5 1,1e-15; do
     for mo in exact:- $("$S" --method list | tail -n +3 | cut -f1,3 | tr '\t' :); do
         m=${mo%:*} args="--eps 0.5 --steps 1"
         [ "${mo#*:}" = tol ] && args="--tol 1e-10 --time 0.5" # a tolerance-driven method
-        rows="$rows$("$S" --no-header --method "$m" $args --omega0 "$w0" | sed -n 2p)
+        "$S" --no-header --method "$m" $args --omega0 "$w0" >"$tmp/row0.csv"
+        r="" # row 0
+        { read -r _ && read -r r; } <"$tmp/row0.csv"
+        rows="$rows$r
 "
     done
     distinct=$(printf '%s' "$rows" | sort -u | wc -l)

@@ -15,7 +15,7 @@ check "$DOC holds a program between its markers ($(wc -l <"$T/prog.c") lines)" \
 cp "$T/prog.c" "$T/prog.cpp"
 # <suslov/suslov.h> as make install lays it out: the headers of core and methods in one folder
 mkdir -p "$T/include/suslov"
-for h in src/core/*.h src/methods/*.h; do ln -s "$PWD/$h" "$T/include/suslov/"; done
+ln -s "$PWD"/src/core/*.h "$PWD"/src/methods/*.h "$T/include/suslov/"
 san=""; [ -n "${SUSLOV_SAN:-}" ] && san="-fsanitize=address,undefined"
 libs="$B/libsus_methods.a $B/libsus_core.a -lm"
 want=$("$B/suslov" --no-header --method midpoint --eps 0.1 --steps 200 --every 50 \
