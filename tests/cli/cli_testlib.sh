@@ -38,6 +38,14 @@ has_tmp() {
     done
     return 1
 }
+# entries DIR: the names in DIR (those of ls -A, in the order of the shell's globs), each followed
+# by a space, into $entries
+entries() {
+    entries=""
+    for f in "$1"/* "$1"/.[!.]* "$1"/..?*; do
+        [ -e "$f" ] || [ -L "$f" ] && entries="$entries${f##*/} "
+    done
+}
 done_tests() {
     echo "$1: $pass passed, $fail failed"
     [ "$fail" = 0 ]

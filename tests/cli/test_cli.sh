@@ -403,13 +403,15 @@ if env --default-signal true 2>/dev/null; then
             kill -s $sig $pid; wait $pid; rc=$?
             case $sig in HUP) n=1 ;; INT) n=2 ;; KILL) n=9 ;; PIPE) n=13 ;; TERM) n=15 ;; esac
             want=$((128 + n))
-            left=$(ls -A "$T/kill" | tr '\n' ' ')
-            if [ "$rc" = "$want" ] && [ "$left" = "sig.csv " ] && [ "$(cat "$T/kill/sig.csv")" = previous ]; then
+            entries "$T/kill"
+            left=$entries
+            if [ "$rc" = "$want" ] && [ "$left" = "sig.csv " ] && one_line "$T/kill/sig.csv" &&
+                [ "$line1" = previous ]; then
                 kres="$kres $mode/$sig:ok"
             else
                 kres="$kres $mode/$sig:FAILED(rc=$rc,left=$left)"
+                rm -f "$T/kill/sig.csv.tmp."*
             fi
-            rm -f "$T/kill/sig.csv.tmp."*
         done
     done
     check "killed --output runs leave only the untouched previous file, status 128+signo:$kres" \

@@ -84,13 +84,15 @@ if env --default-signal true 2>/dev/null; then
         while [ $i -lt 500 ] && ! has_tmp "$T/sig"; do sleep 0.02; i=$((i + 1)); done
         kill -$n $pid; { wait $pid; } 2>/dev/null; rc=$?
         want=$((128 + n))
-        left=$(ls -A "$T/sig" | tr '\n' ' ')
-        if [ "$rc" = "$want" ] && [ "$left" = "s.csv " ] && [ "$(cat "$T/sig/s.csv")" = previous ]; then
+        entries "$T/sig"
+        left=$entries
+        if [ "$rc" = "$want" ] && [ "$left" = "s.csv " ] && one_line "$T/sig/s.csv" &&
+            [ "$line1" = previous ]; then
             kres="$kres $sig"
         else
             kres="$kres $sig:FAILED(rc=$rc,want=$want,left=$left)"
+            rm -f "$T/sig/".tmp.*
         fi
-        rm -f "$T/sig/".tmp.*
     done
     check "named fallback: every catchable fatal signal leaves only the previous file, status 128+n:$kres" \
         sh -c "! echo '$kres' | grep -q FAILED"

@@ -26,7 +26,8 @@ interrupted() {
     kill -s "$sig" -- "-$pid"
     { wait "$pid"; } 2>/dev/null; rc=$?
     case $sig in HUP) want=129 ;; INT) want=130 ;; TERM) want=143 ;; esac
-    left=$(ls -A "$X" | tr '\n' ' ')
+    entries "$X"
+    left=$entries
     check "$d, interrupted by SIG$sig: status $rc ($want), nothing left in TMPDIR (${left:-empty})" \
         test -e "$ready" -a "$rc" = "$want" -a -z "$left"
 }
