@@ -8,13 +8,13 @@ set -u
 B=${1:-build}
 . "$(dirname "$0")/cli_testlib.sh"
 S="$B/suslov"
-bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, one line matching PATTERN, nothing on stdout
+bad() { # bad DESCRIPTION GLOB ARGS...: exit 2, one line that GLOB matches, nothing on stdout
     d=$1 pat=$2; shift 2
     "$S" "$@" >"$T/out" 2>"$T/err"; rc=$?
     one=0
-    one_line "$T/err" && one=1
+    one_line "$T/err" && case $line1 in $pat) one=1 ;; esac
     check "$d: exit 2, one line ($line1${line2:+ / $line2})" \
-        eval 'test $rc = 2 -a $one = 1 -a ! -s "$T/out" && grep -q -- "$pat" "$T/err"'
+        eval 'test $rc = 2 -a $one = 1 -a ! -s "$T/out"'
 }
 
 # --version: "suslov COMMIT", the commit this checkout is at when built from git, else unknown
@@ -26,15 +26,15 @@ check "--version prints 'suslov <commit>' ($v; HEAD $head)" \
 # --help, --man and --version act once the whole command line is read: whatever stands before or
 # after them, bad input is exit 2 and one line, with nothing printed on stdout
 for first in --help --man --version; do
-    bad "$first --bogus" "^suslov: error: unknown option .--bogus." $first --bogus
-    bad "$first --eps abc" "^suslov: error: --eps: .abc. is not a number" $first --eps abc
-    bad "$first --eps (no value)" "^suslov: error: --eps needs a value" $first --eps
-    bad "$first, then an operand" "^suslov: error: unexpected argument .x." $first x
-    bad "--bogus $first" "^suslov: error: unknown option .--bogus." --bogus $first
-    bad "$first twice" "^suslov: error: $first is given twice" $first $first
+    bad "$first --bogus" "suslov: error: unknown option ?--bogus?*" $first --bogus
+    bad "$first --eps abc" "suslov: error: --eps: ?abc? is not a number*" $first --eps abc
+    bad "$first --eps (no value)" "suslov: error: --eps needs a value*" $first --eps
+    bad "$first, then an operand" "suslov: error: unexpected argument ?x?*" $first x
+    bad "--bogus $first" "suslov: error: unknown option ?--bogus?*" --bogus $first
+    bad "$first twice" "suslov: error: $first is given twice*" $first $first
 done
-bad "--help --version" "^suslov: error: --help and --version are both given" --help --version
-bad "--version --man" "^suslov: error: --version and --man are both given" --version --man
+bad "--help --version" "suslov: error: --help and --version are both given*" --help --version
+bad "--version --man" "suslov: error: --version and --man are both given*" --version --man
 # Every option given is checked before --help, --man or --version acts, as a run checks it: a
 # command line refused without them is refused with them, before or after them, by the very line
 # it gets without them (the expected line comes from that run, which must itself be refused).
@@ -60,11 +60,11 @@ for cmd in "--method euler --eps -1 --steps 1" "--method taylor-adaptive --tol 5
     check "$d ($want)${wrong:+; wrong:$wrong}" test -z "$wrong"
 done
 # without --method, the options given are checked for the kind of run they describe
-bad "--eps -1 --help" "^suslov: error: --eps must be positive" --eps -1 --help
-bad "--help --tol 0" "^suslov: error: --tol must be in" --help --tol 0
-bad "--eps 0.1 --tol 1e-6 --man" "not --eps or --steps" --eps 0.1 --tol 1e-6 --man
-bad "--version --sweeps 9" "^suslov: error: --sweeps must be at most 8" --version --sweeps 9
-bad "--reconstruct cay --help" "^suslov: error: unknown reconstruction .cay." \
+bad "--eps -1 --help" "suslov: error: --eps must be positive*" --eps -1 --help
+bad "--help --tol 0" "suslov: error: --tol must be in*" --help --tol 0
+bad "--eps 0.1 --tol 1e-6 --man" "*not --eps or --steps*" --eps 0.1 --tol 1e-6 --man
+bad "--version --sweeps 9" "suslov: error: --sweeps must be at most 8*" --version --sweeps 9
+bad "--reconstruct cay --help" "suslov: error: unknown reconstruction ?cay?*" \
     --reconstruct cay --help
 # but none is required, and no warning is given for a run that is not made: the help, exit 0
 "$S" --help >"$T/help0"
@@ -81,40 +81,40 @@ check "--output FILE --help creates no FILE" test ! -e "$T/new.csv"
 # -- ends the options; nothing may follow (suslov takes no operands)
 "$S" --no-header --method euler --eps 0.1 --steps 1 -- >"$T/o"; rc=$?
 check "-- at the end is accepted" test "$rc" = 0 -a "$(wc -l <"$T/o")" = 3
-bad "an argument after --" "unexpected argument .--eps" --method euler --eps 0.1 --steps 1 -- --eps
+bad "an argument after --" "*unexpected argument ?--eps*" --method euler --eps 0.1 --steps 1 -- --eps
 
 # --method list takes no other option, valid or not: exit 2, one line, nothing written
 for extra in "--eps -1" "--eps 0.1" "--output $T/lst.csv" "--help" "--no-header"; do
-    bad "--method list $extra" "^suslov: error: --method list takes no other options" --method list $extra
+    bad "--method list $extra" "suslov: error: --method list takes no other options*" --method list $extra
 done
-bad "--eps -1 --method=list (either order, either spelling)" "takes no other options" --eps -1 --method=list
+bad "--eps -1 --method=list (either order, either spelling)" "*takes no other options*" --eps -1 --method=list
 check "--method list --output FILE creates no FILE" test ! -e "$T/lst.csv"
 
 # one number grammar: counts accept 1e6 and 0x10 when whole numbers
 a=$("$S" --no-header --method exact --eps 1e-6 --steps 1e6 --every 1e6 | tail -1 | cut -d, -f1)
 b=$("$S" --no-header --method exact --eps 1e-6 --steps 0x10 --every 2e0 | tail -1 | cut -d, -f1)
 check "--steps 1e6 is 1000000 and --steps 0x10 is 16 ($a, $b)" test "$a" = 1000000 -a "$b" = 16
-bad "--steps 2.5" "not a whole number" --method euler --eps 0.1 --steps 2.5
-bad "--every 1e19 (beyond 2^63 - 1)" "out of range" --method euler --eps 0.1 --steps 1 --every 1e19
-bad "a number with a leading blank" "not a number" --method euler --eps ' 0.1' --steps 1
+bad "--steps 2.5" "*not a whole number*" --method euler --eps 0.1 --steps 2.5
+bad "--every 1e19 (beyond 2^63 - 1)" "*out of range*" --method euler --eps 0.1 --steps 1 --every 1e19
+bad "a number with a leading blank" "*not a number*" --method euler --eps ' 0.1' --steps 1
 
 # a repeated option is an error; so are both --header and --no-header
-bad "--eps twice" "given twice" --method euler --eps 0.1 --eps 0.2 --steps 1
-bad "--header with --no-header" "both given" --method euler --eps 0.1 --steps 1 --header --no-header
+bad "--eps twice" "*given twice*" --method euler --eps 0.1 --eps 0.2 --steps 1
+bad "--header with --no-header" "*both given*" --method euler --eps 0.1 --steps 1 --header --no-header
 
 # options that do not apply: an error with exact, a one-line warning with a Taylor method
-bad "--reconstruct with exact" "does not apply" --method exact --eps 0.1 --steps 1 --reconstruct cayley
+bad "--reconstruct with exact" "*does not apply*" --method exact --eps 0.1 --steps 1 --reconstruct cayley
 "$S" --method taylor8 --eps 0.1 --steps 1 --reconstruct cayley >/dev/null 2>"$T/err"; rc=$?
 check "--reconstruct with taylor8: exit 0 and one warning line ($(cat "$T/err"))" \
     sh -c "test $rc = 0 -a \$(wc -l <'$T/err') = 1 && grep -q '^suslov: warning: --reconstruct cayley is ignored' '$T/err'"
-bad "--reconstruct with taylor8 and a bad --output (the warning waits for the checks)" "does not exist" \
+bad "--reconstruct with taylor8 and a bad --output (the warning waits for the checks)" "*does not exist*" \
     --method taylor8 --eps 0.1 --steps 1 --reconstruct cayley --output "$T/missing/x.csv"
 "$S" --method midpoint --eps 0.1 --steps 1 --reconstruct exp-mid >/dev/null 2>"$T/err"
 check "--reconstruct with midpoint: no warning" test ! -s "$T/err"
 
 # a long option with = never swallows the next argument
 long="--$(printf '%070d' 0)=1"
-bad "a 72-character option with =" "unknown option .--0000" --method euler --eps 0.1 --steps 1 "$long" --quiet
+bad "a 72-character option with =" "*unknown option ?--0000*" --method euler --eps 0.1 --steps 1 "$long" --quiet
 
 # --header (default): # lines with version, command, method, eps, inertia, omega0, units, then
 # the CSV header; --no-header: the CSV header first
@@ -171,7 +171,7 @@ for opt in --steps --every --sweeps; do
         case $opt in --sweeps) args="--method midpoint --eps 0.1 --steps 2 --sweeps $v" ;;
                      --every) args="--method exact --eps 0.1 --steps 3 --every $v" ;;
                      *) args="--method exact --eps 0.1 --steps $v --every 1e18" ;; esac
-        bad "$opt $v" "not a whole number" $args
+        bad "$opt $v" "*not a whole number*" $args
     done
 done
 for v in 9007199254740993e0 9007199254740993 0x20000000000001 900719925474099.3e1 90071992547409930e-1; do
@@ -182,9 +182,9 @@ k=$("$S" --no-header --method exact --eps 0.1 --steps 1.5e1 --every 0x5 | tail -
 check "--steps 1.5e1 --every 0x5: rows 0 5 10 15 ($k)" test "$k" = "0 5 10 15 "
 k=$("$S" --no-header --method exact --eps 0.1 --steps 0x1.8p1 --every 0x.8p1 | tail -n +2 | cut -d, -f1 | tr '\n' ' ')
 check "--steps 0x1.8p1 --every 0x.8p1 (3 and 1): rows 0 1 2 3 ($k)" test "$k" = "0 1 2 3 "
-bad "--steps 922337203685477580.8e1 (2^63)" "out of range" --method exact --eps 1 --steps 922337203685477580.8e1
-bad "--steps 1e400" "out of range" --method exact --eps 1 --steps 1e400
-bad "--every -0x10" "must be positive" --method exact --eps 1 --steps 1 --every -0x10
+bad "--steps 922337203685477580.8e1 (2^63)" "*out of range*" --method exact --eps 1 --steps 922337203685477580.8e1
+bad "--steps 1e400" "*out of range*" --method exact --eps 1 --steps 1e400
+bad "--every -0x10" "*must be positive*" --method exact --eps 1 --steps 1 --every -0x10
 
 # --every-time: k is the row's index, strictly increasing, t = k DT (the driver's k, the accepted
 # step, repeats there: several rows fall in one step)
