@@ -30,17 +30,21 @@ fi
 cat "$tmp/bench.txt"
 t1=$(date +%s.%N)
 secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
-# make check's work, timed whole: the tests, and the ledger run afresh (make reruns it only when
-# its program changed) as make runs it, a process per section on every core, into a scratch
+# make check's work, timed whole, three times (the median judges; this VM's speed varies between
+# runs by more than a target's margin): the tests, and the ledger run afresh (make reruns it only
+# when its program changed) as make runs it, a process per section on every core, into a scratch
 # directory: the ledger writes numbers.tex, ledger.tex, summary.tex and methods.tsv beside its TSV,
-# and build/'s are the ones make made
-scratch=$(mktemp -d)
-c0=$(date +%s.%N)
-checked=1
-{ sh tests/run.sh "$B" test "$B"/test_* && "$B/claims" "$scratch/claims.tsv"; } >/dev/null 2>&1 ||
-    checked=0
-c1=$(date +%s.%N)
-rm -rf "$scratch"
+# and build/'s are the ones make made. A failing run ends the timing: its time says nothing.
+checked=1 ctimes=""
+for run in 1 2 3; do
+    scratch=$(mktemp -d)
+    c0=$(date +%s.%N)
+    { sh tests/run.sh "$B" test "$B"/test_* && "$B/claims" "$scratch/claims.tsv"; } >/dev/null 2>&1 ||
+        checked=0
+    ctimes="$ctimes $(secs "$c0" "$(date +%s.%N)")"
+    rm -rf "$scratch"
+    [ "$checked" = 1 ] || break
+done
 scratch=$(mktemp -d)
 # figure_stability alone, on every core (its own target); then make -j2 figures' work: every figure
 # program and the animation two at a time, the two long ones first, as the Makefile lists them
@@ -57,15 +61,20 @@ for f in "$B/figure_stability" "$B/animation" "$B"/figure_*; do
 done | awk '!seen[$0]++' | xargs -d '\n' -P 2 -n 1 sh -c "$run_one" "$scratch" >/dev/null 2>&1
 f1=$(date +%s.%N)
 rm -rf "$scratch"
-awk -v c="$(secs "$c0" "$c1")" -v f="$(secs "$f0" "$f1")" -v s="${stab:-nan}" -v n="$(nproc)" \
+awk -v ct="$ctimes" -v f="$(secs "$f0" "$f1")" -v s="${stab:-nan}" -v n="$(nproc)" \
     -v ok="$checked" -v logs="$B/tests" 'BEGIN {
+    k = split(ct, t, " ") # the make check times (at most three), the last, then sorted
+    last = t[k]
+    for (i = 2; i <= k; i++)
+        for (j = i; j > 1 && t[j - 1] + 0 > t[j] + 0; j--) { x = t[j]; t[j] = t[j - 1]; t[j - 1] = x }
+    c = t[int((k + 1) / 2)]
     printf "Wall-clock targets (this machine, as loaded as it was):\n"
     printf "  %s figure_stability on %d cores in %s s (target <= 10 s)\n", (s != "nan" && s <= 10 ? "PASS" : "MISS"), n, s
     printf "  %s make -j2 figures (every figure program and the animation, built, two at a time) in %s s (target <= 25 s)\n", (f <= 25 ? "PASS" : "MISS"), f
     if (ok)
-        printf "  %s make check (the tests and the claims ledger run afresh, built) in %s s (target <= 40 s)\n", (c <= 40 ? "PASS" : "MISS"), c
+        printf "  %s make check (the tests and the claims ledger run afresh, built; the median of %d runs, %s to %s s) in %s s (target <= 40 s)\n", (c <= 40 ? "PASS" : "MISS"), k, t[1], t[k], c
     else # a failing test ends the run early: its time says nothing of make check
-        printf "  MISS make check (the tests and the claims ledger run afresh, built): a test failed after %s s, so there is no time to judge (the logs: %s/)\n", c, logs
+        printf "  MISS make check (the tests and the claims ledger run afresh, built): a test failed after %s s, so there is no time to judge (the logs: %s/)\n", last, logs
 }' | tee -a "$tmp/bench.txt"
 load1=$(load)
 commit=$(git rev-parse HEAD 2>/dev/null || echo "not a git checkout")
