@@ -35,6 +35,10 @@
 
 # `make` alone is `make all`: the stamp rules below come first and would otherwise be the goal.
 .DEFAULT_GOAL := all
+# Every rule is written here: make's search of its built-in rules for each file would be a third
+# of the time of every make, and the tests run make dozens of times.
+MAKEFLAGS += --no-builtin-rules
+.SUFFIXES:
 # Output for people: one short line per step, as the Linux kernel's build prints it
 # ("  CC      src/core/model.c"), and the commands themselves with V=1. make -s prints neither.
 # A recipe line is $(call say,WHAT,FILE) followed by the command prefixed with $(Q).
